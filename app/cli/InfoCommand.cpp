@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: MIT
+// `volpost info MODEL`: counts, bounds, fields and defects of a model, as text.
+#include "CliSupport.hpp"
+#include "Commands.hpp"
+
+#include <QCommandLineParser>
+
+#include <cstdio>
+
+namespace volpost::app {
+namespace {
+
+void printFields(const Model& model) {
+  std::printf("fields:   %zu\n", model.fields.size());
+  for (const auto& f : model.fields) {
+    const Quantity headline = quantitiesOf(*f).front();
+    std::printf("  %-16s %-4s  %s (%d component%s), %zu step%s\n", f->name().c_str(), toString(f->location()),
+                toString(f->kind()), f->components(), f->components() == 1 ? "" : "s", f->stepCount(),
+                f->stepCount() == 1 ? "" : "s");
+    for (std::size_t s = 0; s < f->stepCount(); ++s) {
+      if (f->stepCount() > 12 && s == 5) {
+        std::printf("      ... %zu more steps ...\n", f->stepCount() - 10);
+        s = f->stepCount() - 5;
+      }
+      try {
+        const ValueRange r = rangeOf(evaluate(*f, headline, s));
+        const std::string& label = f->steps()[s].label;
+        std::printf("      %-14s %s [%.6g, %.6g]", label.empty() ? "" : label.c_str(),
+                    headline.displayName().c_str(), r.min, r.max);
+        if (r.nanCount) std::printf("  (%zu NaN/inf values)", r.nanCount);
+        std::printf("\n");
+      } catch (const std::exception& e) {
+        std::printf("      step %zu: cannot be read: %s\n", s + 1, e.what());
+      }
+    }
+  }
+}
+
+}  // namespace
+
+int runInfo(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Prints the node and cell counts, bounds, fields and defects of a model.");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  parser.addHelpOption();
+  parser.process(QStringList{"volpost info"} + args);
+  if (parser.positionalArguments().size() != 1) {
+    printError("info needs exactly one MODEL file (volpost info MODEL)");
+    return 2;
+  }
+  const std::string path = parser.positionalArguments().first().toStdString();
+  auto plugins = loadPluginsForCli();
+  try {
+    const auto model = plugins->readers().load(path, terminalProgress("reading"));
+    const Mesh& mesh = model->mesh;
+    std::printf("file:     %s\nformat:   %s\n", path.c_str(), model->formatName.c_str());
+    if (!model->title.empty()) std::printf("title:    %s\n", model->title.c_str());
+    std::printf("nodes:    %zu\ncells:    %zu\n", mesh.nodeCount(), mesh.cellCount());
+    for (const auto& [type, count] : mesh.countsByType())
+      std::printf("  %-9s %zu\n", std::string(cellTypeName(type)).c_str(), count);
+    const Bounds b = mesh.bounds();
+    if (b.valid)
+      std::printf("bounds:   x [%.6g, %.6g]  y [%.6g, %.6g]  z [%.6g, %.6g]\n", b.min.x, b.max.x, b.min.y, b.max.y,
+                  b.min.z, b.max.z);
+    else
+      std::printf("bounds:   (empty model)\n");
+    printFields(*model);
+    std::printf("defects:  %s\n", model->diagnostics.empty() ? "none found" : "");
+    for (const Diagnostic& d : model->diagnostics)
+      std::printf("  %-7s %-22s %s\n", d.severity == Severity::Warning ? "warning" : "info", d.code.c_str(),
+                  d.message.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 1;
+  }
+}
+
+int runPlugins(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Lists the plugins found, what they provide, and why any was refused.");
+  parser.addHelpOption();
+  parser.process(QStringList{"volpost plugins"} + args);
+  PluginManager plugins;
+  const QStringList dirs = PluginManager::defaultSearchPaths();
+  plugins.loadFrom(dirs);
+  std::printf("searched: %s\n", qPrintable(dirs.join(", ")));
+  for (const PluginRecord& r : plugins.records()) {
+    if (r.loaded)
+      std::printf("  loaded   %-12s %-8s sdk %-4s provides %s  (%s)\n", qPrintable(r.id), qPrintable(r.version),
+                  qPrintable(r.sdkVersion), qPrintable(r.provides.join(", ")), qPrintable(r.path));
+    else
+      std::printf("  refused  %s: %s\n", qPrintable(r.path), qPrintable(r.error));
+  }
+  std::printf("readers:");
+  for (const MeshReader* reader : plugins.readers().readers()) std::printf(" [%s]", reader->formatName().c_str());
+  std::printf("\n");
+  return 0;
+}
+
+}  // namespace volpost::app

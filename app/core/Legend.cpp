@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+#include "Legend.hpp"
+
+#include <QFontMetrics>
+#include <QLinearGradient>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace volpost::app {
+
+std::vector<double> niceTicks(double min, double max, int target) {
+  std::vector<double> ticks;
+  if (!(max > min) || !std::isfinite(min) || !std::isfinite(max)) {
+    ticks.push_back(min);
+    return ticks;
+  }
+  const double rough = (max - min) / std::max(1, target - 1);
+  const double mag = std::pow(10.0, std::floor(std::log10(rough)));
+  double step = mag;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * mag >= rough) {
+      step = m * mag;
+      break;
+    }
+  for (double t = std::ceil(min / step - 1e-9) * step; t <= max + step * 1e-9; t += step)
+    ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
+  return ticks;
+}
+
+void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& c) {
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing, true);
+  QFont font = painter.font();
+  font.setPixelSize(std::clamp(area.height() / 32, 8, 14));
+  painter.setFont(font);
+  const QFontMetrics fm(font);
+  const int barWidth = std::max(8, area.width() / 40);
+  const int top = area.top() + fm.height() * 3, bottom = area.bottom() - fm.height() * 2;
+  if (bottom - top < 20) {
+    painter.restore();
+    return;
+  }
+  const auto ticks = niceTicks(c.min, c.max);
+  int labelWidth = 0;
+  for (double t : ticks) labelWidth = std::max(labelWidth, fm.horizontalAdvance(QString::number(t, 'g', 4)));
+  const int barRight = area.right() - labelWidth - 12;
+  const QRect bar(barRight - barWidth, top, barWidth, bottom - top);
+
+  QLinearGradient gradient(bar.bottomLeft(), bar.topLeft());
+  for (int i = 0; i <= 32; ++i) {
+    const auto rgb = map.at(i / 32.0);
+    gradient.setColorAt(i / 32.0, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+  }
+  painter.fillRect(bar, gradient);
+  painter.setPen(QColor(40, 40, 40));
+  painter.drawRect(bar);
+
+  const double span = c.max > c.min ? c.max - c.min : 1.0;
+  for (double t : ticks) {
+    const int y = bar.bottom() - int(std::lround((t - c.min) / span * bar.height()));
+    painter.drawLine(bar.right(), y, bar.right() + 4, y);
+    painter.drawText(QPoint(bar.right() + 7, y + fm.ascent() / 2 - 1), QString::number(t, 'g', 4));
+  }
+  const int textRight = area.right() - 4;
+  const QRect titleRect(area.left(), area.top() + 4, textRight - area.left(), fm.height());
+  painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
+  painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
+  const QString rangeText = QString("min %1  max %2").arg(c.min, 0, 'g', 5).arg(c.max, 0, 'g', 5);
+  painter.drawText(QRect(area.left(), bar.bottom() + 4, textRight - area.left(), fm.height()),
+                   Qt::AlignRight | Qt::AlignVCenter, rangeText);
+  if (c.noValueCount)
+    painter.drawText(QRect(area.left(), bar.bottom() + 4 + fm.height(), textRight - area.left(), fm.height()),
+                     Qt::AlignRight | Qt::AlignVCenter, QString("%1 without value (gray)").arg(c.noValueCount));
+  painter.restore();
+}
+
+}  // namespace volpost::app

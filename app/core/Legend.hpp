@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// The color legend drawn over the view (window and PNG alike).
+#pragma once
+
+#include <volpost/core/ColorMap.hpp>
+
+#include <QRect>
+#include <QString>
+
+class QPainter;
+
+namespace volpost::app {
+
+struct LegendContent {
+  QString title;      ///< quantity, e.g. "S von Mises"
+  QString subtitle;   ///< step label and location, e.g. "step 1 · per node"
+  double min = 0.0, max = 1.0;
+  std::size_t noValueCount = 0;  ///< NaN values, drawn in the no-value color
+};
+
+/// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.
+void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& content);
+
+/// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
+std::vector<double> niceTicks(double min, double max, int target = 6);
+
+}  // namespace volpost::app

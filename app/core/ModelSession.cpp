@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#include "ModelSession.hpp"
+
+#include <stdexcept>
+
+namespace volpost::app {
+
+std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
+                                                 const Progress& progress) {
+  auto session = std::make_shared<ModelSession>();
+  Progress readProgress([&](double f, const std::string&) {
+    progress.report(0.8 * f);
+    return true;
+  });
+  session->model_ = readers.load(path, readProgress);
+  Progress boundaryProgress([&](double f, const std::string&) {
+    progress.report(0.8 + 0.2 * f);
+    return true;
+  });
+  session->surface_ = std::make_shared<BoundarySurface>(extractBoundary(session->model_->mesh, boundaryProgress));
+  return session;
+}
+
+std::vector<Quantity> ModelSession::quantities() const {
+  std::vector<Quantity> out;
+  for (const auto& f : model_->fields)
+    for (const auto& q : quantitiesOf(*f)) out.push_back(q);
+  return out;
+}
+
+std::optional<Quantity> ModelSession::defaultQuantity() const {
+  for (FieldKind kind : {FieldKind::SymTensor, FieldKind::Vector, FieldKind::Scalar})
+    for (const auto& f : model_->fields)
+      if (f->kind() == kind && f->stepCount() > 0) return quantitiesOf(*f).front();
+  return std::nullopt;
+}
+
+Quantity ModelSession::findQuantity(const std::string& key) const {
+  for (const auto& f : model_->fields)
+    if (auto q = parseQuantity(key, *f)) return *q;
+  std::string known;
+  for (const auto& q : quantities()) known += (known.empty() ? "" : ", ") + q.key();
+  throw std::invalid_argument("no field or quantity named '" + key + "' in " + model_->sourcePath +
+                              (known.empty() ? " (the model has no result fields)" : " (available: " + known + ")"));
+}
+
+const Field& ModelSession::fieldOf(const Quantity& q) const {
+  const Field* f = model_->findField(q.field);
+  if (!f) throw std::invalid_argument("no field named " + q.field);
+  return *f;
+}
+
+ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
+  const Field& f = fieldOf(q);
+  if (step >= f.stepCount())
+    throw std::invalid_argument("field " + f.name() + " has " + std::to_string(f.stepCount()) + " step(s); step " +
+                                std::to_string(step + 1) + " does not exist");
+  ScalarView view;
+  view.quantity = q;
+  view.location = f.location();
+  view.values = volpost::evaluate(f, q, step);
+  view.range = rangeOf(view.values);
+  view.stepLabel = f.steps()[step].label;
+  return view;
+}
+
+}  // namespace volpost::app

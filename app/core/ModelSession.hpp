@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// What the user is looking at: the model, its boundary, the chosen quantity and step.
+// Shared by the window and the command line so both show the same thing.
+#pragma once
+
+#include <volpost/core/BoundarySurface.hpp>
+#include <volpost/core/Model.hpp>
+#include <volpost/core/Quantity.hpp>
+#include <volpost/core/ReaderRegistry.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+struct ScalarView {
+  Quantity quantity;
+  FieldLocation location = FieldLocation::Node;
+  std::vector<double> values;  ///< one per node or per cell
+  ValueRange range;
+  std::string stepLabel;
+};
+
+class ModelSession {
+ public:
+  /// Reads, checks and extracts the boundary (the long part, runs on a worker thread).
+  static std::shared_ptr<ModelSession> load(const ReaderRegistry& readers, const std::string& path,
+                                            const Progress& progress = {});
+
+  const Model& model() const { return *model_; }
+  const BoundarySurface& surface() const { return *surface_; }
+
+  /// All quantities of all fields, in field order.
+  std::vector<Quantity> quantities() const;
+  /// The quantity an analyst wants first: a stress's von Mises, else the first field.
+  std::optional<Quantity> defaultQuantity() const;
+  /// Finds a quantity by its written form ("S.mises", "U.x", "T"). Throws
+  /// std::invalid_argument listing the valid names when there is none.
+  Quantity findQuantity(const std::string& key) const;
+  const Field& fieldOf(const Quantity& q) const;
+
+  /// Values of the quantity at a step (0-based), with their range.
+  ScalarView evaluate(const Quantity& q, std::size_t step) const;
+
+ private:
+  std::shared_ptr<Model> model_;
+  std::shared_ptr<BoundarySurface> surface_;
+};
+
+}  // namespace volpost::app

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// Draws a ModelSession (boundary surface colored by the active quantity). Used by the
+// window's viewport and by the headless `volpost render`; holds GL objects, so
+// initialize() and release() need the context current.
+#pragma once
+
+#include "ModelSession.hpp"
+
+#include <volpost/core/ColorMap.hpp>
+#include <volpost/render/SurfaceRenderer.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <memory>
+
+namespace volpost::app {
+
+struct DisplayRange {
+  double min = 0.0, max = 1.0;
+};
+
+class SceneRenderer {
+ public:
+  void initialize();
+  void release();
+  bool initialized() const { return initialized_; }
+
+  void setSession(std::shared_ptr<const ModelSession> session);
+  /// Colors by the view's values; nullptr shows the plain surface.
+  void setScalars(const ScalarView* view, DisplayRange range);
+  void setColorMap(const ColorMap& map) { surface_.setColorMap(map); }
+  void setShowEdges(bool show) { surface_.setShowEdges(show); }
+  void setLighting(bool on) { surface_.setLighting(on); }
+
+  /// Clears ctx.framebuffer to the background and draws.
+  void render(const RenderContext& ctx);
+
+  glm::vec3 background{0.96f, 0.96f, 0.97f};
+
+ private:
+  SurfaceRenderer surface_;
+  std::shared_ptr<const ModelSession> session_;
+  bool initialized_ = false;
+};
+
+/// The range a view maps onto the color map: its own, or a tiny span around a constant.
+DisplayRange autoRange(const ScalarView& view);
+
+}  // namespace volpost::app

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// volpost: the window (no verb) or a command-line verb (info, render, plugins).
+#include "cli/Commands.hpp"
+#include "gui/MainWindow.hpp"
+#include "gui/Viewport.hpp"
+
+#include <volpost/core/Version.hpp>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QGuiApplication>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include <cstdio>
+#include <cstring>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace {
+
+void printUsage() {
+  std::printf(
+      "volpost %s - finite-element post-processing and volume rendering\n\n"
+      "usage:\n"
+      "  volpost [MODEL] [--field Q]       open the window (optionally on MODEL, colored by Q)\n"
+      "  volpost info MODEL                counts, bounds, fields and defects of MODEL\n"
+      "  volpost render MODEL -o OUT.png   render MODEL headless (see volpost render --help)\n"
+      "  volpost plugins                   list plugins and why any was refused\n"
+      "  volpost --version | --help\n",
+      VOLPOST_VERSION);
+}
+
+QStringList argsAfter(int argc, char** argv, int first) {
+  QStringList out;
+  for (int i = first; i < argc; ++i) out << QString::fromLocal8Bit(argv[i]);
+  return out;
+}
+
+int runWindow(int argc, char** argv) {
+  QSurfaceFormat format;
+  format.setVersion(4, 5);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setDepthBufferSize(24);
+  format.setSamples(4);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  QApplication::setApplicationName("volpost");
+  QApplication::setApplicationVersion(VOLPOST_VERSION);
+  QCommandLineParser parser;
+  parser.addPositionalArgument("MODEL", "model to open");
+  const QCommandLineOption field("field", "quantity to color by, e.g. S.mises", "Q");
+  parser.addOption(field);
+  parser.addHelpOption();
+  parser.process(app);
+
+  volpost::PluginManager plugins;
+  plugins.loadFrom(volpost::PluginManager::defaultSearchPaths());
+  volpost::app::MainWindow window(plugins);
+  window.show();
+  if (!parser.positionalArguments().isEmpty()) {
+    const QString wanted = parser.value(field);
+    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted](bool ok) {
+      if (ok && !wanted.isEmpty() && !window.selectQuantity(wanted))
+        std::fprintf(stderr, "volpost: warning: no quantity '%s' in this model\n", qPrintable(wanted));
+    });
+    window.openFile(parser.positionalArguments().first());
+  }
+  return app.exec();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* verb = argc >= 2 ? argv[1] : "";
+  if (!std::strcmp(verb, "--help") || !std::strcmp(verb, "-h") || !std::strcmp(verb, "help")) {
+    printUsage();
+    return 0;
+  }
+  if (!std::strcmp(verb, "--version")) {
+    std::printf("volpost %s (SDK %s)\n", VOLPOST_VERSION, VOLPOST_SDK_VERSION);
+    return 0;
+  }
+  if (!std::strcmp(verb, "info") || !std::strcmp(verb, "plugins")) {
+    QCoreApplication app(argc, argv);
+    const QStringList args = argsAfter(argc, argv, 2);
+    return !std::strcmp(verb, "info") ? volpost::app::runInfo(args) : volpost::app::runPlugins(args);
+  }
+  if (!std::strcmp(verb, "render")) {
+    // Rendering uses EGL, never a display; Qt is only needed for the legend's text.
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {  // what Qt would pick, without its warning
+      const QByteArray dir = "/tmp/runtime-" + QByteArray::number(getuid());
+      mkdir(dir.constData(), 0700);
+      qputenv("XDG_RUNTIME_DIR", dir);
+    }
+    QGuiApplication app(argc, argv);
+    return volpost::app::runRender(argsAfter(argc, argv, 2));
+  }
+  return runWindow(argc, argv);
+}

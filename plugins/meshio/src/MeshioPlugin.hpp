@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// The meshio plugin: hands the host its file readers.
+#pragma once
+
+#include "VtkLegacyReader.hpp"
+#include "VtuReader.hpp"
+
+#include <volpost/plugin/PluginInterfaces.hpp>
+
+#include <QObject>
+
+namespace volpost::meshio {
+
+class MeshioPlugin : public QObject, public ReaderPlugin {
+  Q_OBJECT
+  Q_PLUGIN_METADATA(IID VOLPOST_READER_PLUGIN_IID FILE "meshio.meta.json")
+  Q_INTERFACES(volpost::ReaderPlugin)
+
+ public:
+  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_}; }
+
+ private:
+  VtuReader vtu_;
+  VtkLegacyReader legacy_;
+};
+
+}  // namespace volpost::meshio

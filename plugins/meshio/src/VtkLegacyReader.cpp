@@ -1,0 +1,414 @@
+// SPDX-License-Identifier: MIT
+#include "VtkLegacyReader.hpp"
+
+#include "FileBytes.hpp"
+#include "NumericType.hpp"
+#include "VtkCells.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace volpost::meshio {
+namespace {
+
+std::string decodeName(std::string_view raw) {  // VTK writes spaces in names as %20
+  std::string out;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] == '%' && i + 2 < raw.size()) {
+      int v = 0;
+      if (std::from_chars(raw.data() + i + 1, raw.data() + i + 3, v, 16).ec == std::errc()) {
+        out += char(v);
+        i += 2;
+        continue;
+      }
+    }
+    out += raw[i];
+  }
+  return out;
+}
+
+class LegacyParser {
+ public:
+  LegacyParser(std::shared_ptr<const std::string> bytes, std::string path)
+      : bytesPtr_(std::move(bytes)), b_(*bytesPtr_), path_(std::move(path)) {}
+
+  bool binary = false;
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw ReadError::atLine(path_, lineAt(b_, tokenStart_), message);
+  }
+
+  std::string_view line() {
+    tokenStart_ = pos_;
+    const std::size_t end = std::min(b_.find('\n', pos_), b_.size());
+    std::string_view l(b_.data() + pos_, end - pos_);
+    pos_ = std::min(end + 1, b_.size());
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    return l;
+  }
+
+  std::string_view token() {
+    while (pos_ < b_.size() && std::isspace(static_cast<unsigned char>(b_[pos_]))) ++pos_;
+    tokenStart_ = pos_;
+    while (pos_ < b_.size() && !std::isspace(static_cast<unsigned char>(b_[pos_]))) ++pos_;
+    return std::string_view(b_.data() + tokenStart_, pos_ - tokenStart_);
+  }
+
+  std::string_view peekToken() {
+    const std::size_t save = pos_, saveStart = tokenStart_;
+    const auto t = token();
+    pos_ = save;
+    tokenStart_ = saveStart;
+    return t;
+  }
+
+  std::int64_t integer(const char* what) {
+    const auto t = token();
+    std::int64_t v = 0;
+    const auto r = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (t.empty()) fail(std::string("file ends where ") + what + " was expected (truncated)");
+    if (r.ec != std::errc() || r.ptr != t.data() + t.size())
+      fail(std::string("expected ") + what + ", found '" + std::string(t.substr(0, 40)) + "'");
+    return v;
+  }
+
+  std::size_t count(const char* what) {
+    const std::int64_t v = integer(what);
+    if (v < 0 || v > std::int64_t(1) << 40) fail(std::string(what) + " " + std::to_string(v) + " is out of range");
+    return std::size_t(v);
+  }
+
+  NumericType type() {
+    const auto t = token();
+    const auto type = numericTypeFromLegacy(t);
+    if (!type) fail("unknown data type '" + std::string(t) + "'");
+    return *type;
+  }
+
+  /// Binary data starts after the newline that ends its header line.
+  void toDataStart() {
+    if (!binary) return;
+    const std::size_t nl = b_.find('\n', pos_);
+    pos_ = nl == std::string::npos ? b_.size() : nl + 1;
+  }
+
+  /// Binary: byte offset of `count` values and skips them. ASCII: nothing (use values()).
+  std::size_t skipBinary(std::size_t count, NumericType t, const std::string& what) {
+    toDataStart();
+    const std::size_t need = count * sizeOf(t);
+    if (b_.size() - pos_ < need)
+      throw ReadError::atOffset(path_, pos_, "file ends inside the " + what + " data (truncated): " +
+                                                 std::to_string(need) + " bytes needed, " +
+                                                 std::to_string(b_.size() - pos_) + " left");
+    const std::size_t at = pos_;
+    pos_ += need;
+    return at;
+  }
+
+  std::vector<double> values(std::size_t count, NumericType t, const std::string& what) {
+    if (binary) {
+      const std::size_t at = skipBinary(count, t, what);
+      return toDoubles(reinterpret_cast<const std::uint8_t*>(b_.data() + at), count, t, true);
+    }
+    std::vector<double> out(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto tok = token();
+      if (tok.empty())
+        fail("file ends inside the " + what + " data (truncated): " + std::to_string(i) + " of " +
+             std::to_string(count) + " values read");
+      const auto r = std::from_chars(tok.data(), tok.data() + tok.size(), out[i]);
+      if (r.ec == std::errc::result_out_of_range) out[i] = tok[0] == '-' ? -HUGE_VAL : HUGE_VAL;
+      else if (r.ec != std::errc() || r.ptr != tok.data() + tok.size())
+        fail("in the " + what + " data: expected value " + std::to_string(i + 1) + " of " +
+             std::to_string(count) + ", found '" + std::string(tok.substr(0, 40)) + "'");
+    }
+    return out;
+  }
+
+  std::vector<std::int64_t> integers(std::size_t count, NumericType t, const std::string& what) {
+    if (isFloating(t)) fail(what + " must be integers, the file says " + std::string(t == NumericType::Float32 ? "float" : "double"));
+    if (binary) {
+      const std::size_t at = skipBinary(count, t, what);
+      return toIntegers(reinterpret_cast<const std::uint8_t*>(b_.data() + at), count, t, true);
+    }
+    std::vector<std::int64_t> out(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto tok = token();
+      if (tok.empty())
+        fail("file ends inside the " + what + " data (truncated): " + std::to_string(i) + " of " +
+             std::to_string(count) + " integers read");
+      const auto r = std::from_chars(tok.data(), tok.data() + tok.size(), out[i]);
+      if (r.ec != std::errc() || r.ptr != tok.data() + tok.size())
+        fail("in the " + what + " data: expected integer " + std::to_string(i + 1) + " of " +
+             std::to_string(count) + ", found '" + std::string(tok.substr(0, 40)) + "'");
+    }
+    return out;
+  }
+
+  /// A field array: values now (ASCII) or a lazy loader over the shared bytes (binary).
+  StepLoader array(std::size_t count, NumericType t, const std::string& what) {
+    if (!binary) {
+      auto v = std::make_shared<std::vector<double>>(values(count, t, what));
+      return [v](std::size_t) { return *v; };
+    }
+    const std::size_t at = skipBinary(count, t, what);
+    auto bytes = bytesPtr_;
+    return [bytes, at, count, t](std::size_t) {
+      return toDoubles(reinterpret_cast<const std::uint8_t*>(bytes->data() + at), count, t, true);
+    };
+  }
+
+  bool atEnd() {
+    while (pos_ < b_.size() && std::isspace(static_cast<unsigned char>(b_[pos_]))) ++pos_;
+    return pos_ >= b_.size();
+  }
+  std::size_t position() const { return pos_; }
+  std::size_t size() const { return b_.size(); }
+
+ private:
+  std::shared_ptr<const std::string> bytesPtr_;
+  const std::string& b_;
+  std::string path_;
+  std::size_t pos_ = 0;
+  std::size_t tokenStart_ = 0;
+};
+
+struct PendingArray {
+  std::string name;
+  FieldLocation location;
+  int components;
+  std::size_t tuples;
+  StepLoader loader;
+};
+
+// Full 3x3 tensors are stored as their symmetric part, in volpost's xx yy zz xy yz zx order.
+StepLoader symmetricPart(StepLoader full) {
+  return [full](std::size_t step) {
+    const auto v = full(step);
+    std::vector<double> out(v.size() / 9 * 6);
+    for (std::size_t i = 0; i < v.size() / 9; ++i) {
+      const double* t = v.data() + 9 * i;
+      double* s = out.data() + 6 * i;
+      s[0] = t[0]; s[1] = t[4]; s[2] = t[8];
+      s[3] = 0.5 * (t[1] + t[3]); s[4] = 0.5 * (t[5] + t[7]); s[5] = 0.5 * (t[2] + t[6]);
+    }
+    return out;
+  };
+}
+
+class LegacyReading {
+ public:
+  LegacyReading(std::shared_ptr<const std::string> bytes, const std::string& path, const Progress& progress)
+      : p_(bytes, path), path_(path), progress_(progress) {}
+
+  std::unique_ptr<Model> run() {
+    auto model = std::make_unique<Model>();
+    header(*model);
+    std::size_t pointCount = 0;
+    bool haveCells = false;
+    VtkCellMapping mapping;
+    FieldLocation location = FieldLocation::Node;
+    std::size_t sectionCount = 0;
+    bool inSection = false;
+    while (!p_.atEnd()) {
+      const std::string key(p_.token());
+      if (key == "POINTS") {
+        pointCount = p_.count("the number of points");
+        const NumericType t = p_.type();
+        const auto xyz = p_.values(pointCount * 3, t, "POINTS");
+        model->mesh.nodes.resize(pointCount);
+        for (std::size_t i = 0; i < pointCount; ++i)
+          model->mesh.nodes[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+        progress_.report(0.4);
+      } else if (key == "CELLS") {
+        cells_ = readCells();
+      } else if (key == "CELL_TYPES") {
+        const std::size_t n = p_.count("the number of cell types");
+        if (n + 1 != cells_.offsets.size())
+          p_.fail("CELL_TYPES lists " + std::to_string(n) + " cells, CELLS has " +
+                  std::to_string(cells_.offsets.empty() ? 0 : cells_.offsets.size() - 1));
+        cells_.types = p_.integers(n, NumericType::Int32, "CELL_TYPES");
+        mapping = addVtkCells(cells_, pointCount, model->mesh, [this](const std::string& m) { p_.fail(m); });
+        haveCells = true;
+        if (mapping.skipped)
+          model->diagnostics.push_back({Severity::Info, "skipped-cells",
+                                        std::to_string(mapping.skipped) + " lower-dimensional cells (points, lines, faces) skipped", {}});
+        progress_.report(0.7);
+      } else if (key == "POINT_DATA" || key == "CELL_DATA") {
+        location = key == "POINT_DATA" ? FieldLocation::Node : FieldLocation::Cell;
+        sectionCount = p_.count("the number of values");
+        const std::size_t expected = location == FieldLocation::Node ? pointCount : mapping.modelCell.size();
+        if (sectionCount != expected)
+          p_.fail(key + " " + std::to_string(sectionCount) + " does not match the " + std::to_string(expected) +
+                  (location == FieldLocation::Node ? " points" : " cells"));
+        inSection = true;
+      } else if (key == "SCALARS" || key == "VECTORS" || key == "NORMALS" || key == "TENSORS" ||
+                 key == "TENSORS6" || key == "FIELD" || key == "COLOR_SCALARS" ||
+                 key == "TEXTURE_COORDINATES" || key == "LOOKUP_TABLE") {
+        if (!inSection && key != "FIELD" && key != "LOOKUP_TABLE")
+          p_.fail(key + " before POINT_DATA or CELL_DATA");
+        attribute(key, location, sectionCount, inSection);
+      } else if (key == "METADATA") {
+        skipMetadata();
+      } else {
+        p_.fail("unexpected keyword '" + key.substr(0, 40) + "'");
+      }
+    }
+    if (!haveCells) p_.fail(cells_.offsets.empty() ? "no CELLS section" : "CELLS without CELL_TYPES");
+    for (auto& a : arrays_) addField(*model, a, mapping);
+    return model;
+  }
+
+ private:
+  void header(Model& model) {
+    const auto first = p_.line();
+    if (first.rfind("# vtk DataFile Version", 0) != 0) p_.fail("not a legacy VTK file (no '# vtk DataFile Version' line)");
+    model.title = std::string(p_.line());
+    const auto format = p_.token();
+    if (format == "BINARY") p_.binary = true;
+    else if (format != "ASCII") p_.fail("third line must be ASCII or BINARY, found '" + std::string(format.substr(0, 40)) + "'");
+    if (p_.token() != "DATASET") p_.fail("expected DATASET");
+    const auto dataset = p_.token();
+    if (dataset != "UNSTRUCTURED_GRID")
+      p_.fail("DATASET " + std::string(dataset.substr(0, 40)) + " is not a mesh of cells; volpost reads UNSTRUCTURED_GRID");
+  }
+
+  VtkCellArrays readCells() {
+    VtkCellArrays cells;
+    const std::size_t a = p_.count("the number of cells"), b = p_.count("the CELLS size");
+    if (p_.peekToken() == "OFFSETS") {  // format 5.x: OFFSETS and CONNECTIVITY arrays
+      p_.token();
+      cells.offsets = p_.integers(a, p_.type(), "OFFSETS");
+      if (p_.token() != "CONNECTIVITY") p_.fail("expected CONNECTIVITY after OFFSETS");
+      cells.connectivity = p_.integers(b, p_.type(), "CONNECTIVITY");
+      if (cells.offsets.empty() || cells.offsets.front() != 0) p_.fail("OFFSETS must start at 0");
+      for (std::size_t i = 1; i < cells.offsets.size(); ++i)
+        if (cells.offsets[i] < cells.offsets[i - 1] || std::uint64_t(cells.offsets[i]) > b)
+          p_.fail("OFFSETS entry " + std::to_string(i) + " is out of order or beyond CONNECTIVITY");
+      return cells;
+    }
+    const auto packed = p_.integers(b, NumericType::Int32, "CELLS");
+    cells.offsets.reserve(a + 1);
+    cells.offsets.push_back(0);
+    cells.connectivity.reserve(b - std::min(a, b));
+    std::size_t i = 0;
+    for (std::size_t c = 0; c < a; ++c) {
+      if (i >= packed.size())
+        p_.fail("CELLS says " + std::to_string(a) + " cells, but its " + std::to_string(b) +
+                " values hold only " + std::to_string(c));
+      const std::int64_t n = packed[i++];
+      if (n < 0 || std::uint64_t(n) > packed.size() - i)
+        p_.fail("CELLS: cell " + std::to_string(c) + " claims " + std::to_string(n) +
+                " points, more than the CELLS size " + std::to_string(b) + " leaves");
+      cells.connectivity.insert(cells.connectivity.end(), packed.begin() + std::ptrdiff_t(i),
+                                packed.begin() + std::ptrdiff_t(i + std::size_t(n)));
+      i += std::size_t(n);
+      cells.offsets.push_back(std::int64_t(cells.connectivity.size()));
+    }
+    if (i != packed.size())
+      p_.fail("CELLS size is " + std::to_string(b) + " but its " + std::to_string(a) + " cells use " + std::to_string(i) + " values");
+    return cells;
+  }
+
+  void attribute(const std::string& key, FieldLocation location, std::size_t n, bool inSection) {
+    if (key == "FIELD") {
+      p_.token();  // field-data name
+      const std::size_t arrays = p_.count("the number of FIELD arrays");
+      for (std::size_t k = 0; k < arrays; ++k) {
+        const std::string name = decodeName(p_.token());
+        const int comps = int(p_.count("the number of components"));
+        const std::size_t tuples = p_.count("the number of tuples");
+        const NumericType t = p_.type();
+        if (comps < 1) p_.fail("FIELD array " + name + " has no components");
+        auto loader = p_.array(tuples * std::size_t(comps), t, "FIELD array " + name);
+        if (p_.peekToken() == "METADATA") { p_.token(); skipMetadata(); }
+        if (inSection) arrays_.push_back({name, location, comps, tuples, std::move(loader)});
+      }
+      return;
+    }
+    if (key == "LOOKUP_TABLE") {  // a color table of its own: read past it
+      p_.token();
+      const std::size_t size = p_.count("the lookup-table size");
+      if (p_.binary) p_.skipBinary(size * 4, NumericType::UInt8, "LOOKUP_TABLE");
+      else p_.values(size * 4, NumericType::Float32, "LOOKUP_TABLE");
+      return;
+    }
+    const std::string name = decodeName(p_.token());
+    if (key == "COLOR_SCALARS") {
+      const std::size_t comps = p_.count("the number of color components");
+      if (p_.binary) p_.skipBinary(n * comps, NumericType::UInt8, "COLOR_SCALARS");
+      else p_.values(n * comps, NumericType::Float32, "COLOR_SCALARS");
+      return;
+    }
+    if (key == "TEXTURE_COORDINATES") {
+      const std::size_t dim = p_.count("the texture dimension");
+      p_.array(n * dim, p_.type(), key);
+      return;
+    }
+    const NumericType t = p_.type();
+    int comps = key == "SCALARS" ? 1 : key == "TENSORS" ? 9 : key == "TENSORS6" ? 6 : 3;
+    if (key == "SCALARS") {
+      const auto next = p_.peekToken();
+      if (!next.empty() && std::isdigit(static_cast<unsigned char>(next[0]))) comps = int(p_.count("the number of components"));
+      if (p_.peekToken() == "LOOKUP_TABLE") { p_.token(); p_.token(); }
+    }
+    if (comps < 1 || comps > 4096) p_.fail("SCALARS " + name + ": bad number of components");
+    auto loader = p_.array(n * std::size_t(comps), t, key + " " + name);
+    if (comps == 9) {
+      loader = symmetricPart(std::move(loader));
+      comps = 6;
+    }
+    arrays_.push_back({name, location, comps, n, std::move(loader)});
+  }
+
+  void skipMetadata() {  // METADATA blocks end at an empty line
+    while (!p_.atEnd()) {
+      const auto l = p_.line();
+      if (l.find_first_not_of(" \t\r") == std::string_view::npos) break;
+    }
+  }
+
+  void addField(Model& model, PendingArray& a, const VtkCellMapping& mapping) {
+    const std::size_t expected = a.location == FieldLocation::Node ? model.mesh.nodeCount() : mapping.modelCell.size();
+    if (a.tuples != expected) {
+      model.diagnostics.push_back({Severity::Warning, "field-dropped",
+                                   "field " + a.name + " dropped: " + std::to_string(a.tuples) + " values for " +
+                                       std::to_string(expected) + (a.location == FieldLocation::Node ? " points" : " cells"),
+                                   {}});
+      return;
+    }
+    StepLoader loader = a.loader;
+    std::size_t entities = a.tuples;
+    if (a.location == FieldLocation::Cell && mapping.skipped) {
+      const int comps = a.components;
+      loader = [inner = a.loader, comps, mapping](std::size_t s) { return selectModelCells(inner(s), comps, mapping); };
+      entities = model.mesh.cellCount();
+    }
+    model.fields.push_back(std::make_shared<Field>(a.name, a.location, a.components, entities,
+                                                   std::vector<Step>{{"", 0.0}}, std::move(loader)));
+  }
+
+  LegacyParser p_;
+  std::string path_;
+  const Progress& progress_;
+  VtkCellArrays cells_;
+  std::vector<PendingArray> arrays_;
+};
+
+}  // namespace
+
+int VtkLegacyReader::sniff(std::string_view head) const {
+  return head.rfind("# vtk DataFile Version", 0) == 0 ? 100 : 0;
+}
+
+std::unique_ptr<Model> VtkLegacyReader::read(const std::string& path, const Progress& progress) const {
+  auto bytes = readFileBytes(path, progress);
+  auto model = LegacyReading(bytes, path, progress).run();
+  model->formatName = formatName();
+  progress.report(1.0);
+  return model;
+}
+
+}  // namespace volpost::meshio

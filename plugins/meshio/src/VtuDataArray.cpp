@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: MIT
+#include "VtuDataArray.hpp"
+
+#include "Base64.hpp"
+
+#include <zlib.h>
+
+#include <charconv>
+#include <cctype>
+#include <cmath>
+#include <string_view>
+
+namespace volpost::meshio {
+namespace {
+
+[[noreturn]] void fail(const VtuArraySource& src, const std::string& message) {
+  throw VtuArrayError{"DataArray \"" + src.name + "\": " + message};
+}
+
+std::uint64_t headerValue(const std::uint8_t* p, const VtuEncoding& enc) {
+  return std::uint64_t(toIntegers(p, 1, enc.headerType, enc.bigEndian)[0]);
+}
+
+// The bytes the array's binary data starts with: its header, then (compressed) blocks.
+struct BinaryView {
+  std::vector<std::uint8_t> decoded;  // owned bytes when base64 was decoded
+  const std::uint8_t* data = nullptr;
+  std::size_t size = 0;
+};
+
+BinaryView binaryBytes(const VtuArraySource& src) {
+  BinaryView view;
+  const std::string& f = *src.file;
+  if (src.format == VtuArraySource::Format::Appended) {
+    if (src.appendedOffset >= src.end - src.begin)
+      fail(src, "offset " + std::to_string(src.appendedOffset) + " is beyond the appended data (" +
+                    std::to_string(src.end - src.begin) + " bytes; the file is truncated?)");
+    const std::size_t at = src.begin + src.appendedOffset;
+    if (!src.appendedBase64) {
+      view.data = reinterpret_cast<const std::uint8_t*>(f.data() + at);
+      view.size = src.end - at;
+      return view;
+    }
+    auto d = decodeBase64(std::string_view(f.data() + at, src.end - at));
+    if (!d) fail(src, "invalid base64 in the appended data");
+    view.decoded = std::move(*d);
+  } else {
+    std::size_t err = 0;
+    auto d = decodeBase64(std::string_view(f.data() + src.begin, src.end - src.begin), &err);
+    if (!d) fail(src, "invalid base64 data (character " + std::to_string(err) + ")");
+    view.decoded = std::move(*d);
+  }
+  view.data = view.decoded.data();
+  view.size = view.decoded.size();
+  return view;
+}
+
+struct BlockLayout {
+  std::uint64_t blocks = 0, blockSize = 0, lastSize = 0;
+  std::size_t headerBytes = 0;
+  std::uint64_t rawBytes = 0;
+};
+
+BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const BinaryView& v) {
+  const std::size_t h = sizeOf(enc.headerType);
+  BlockLayout b;
+  if (!enc.compressed) {
+    if (v.size < h) fail(src, "data ends inside its header (truncated)");
+    b.headerBytes = h;
+    b.rawBytes = headerValue(v.data, enc);
+    return b;
+  }
+  if (v.size < 3 * h) fail(src, "data ends inside its compression header (truncated)");
+  b.blocks = headerValue(v.data, enc);
+  b.blockSize = headerValue(v.data + h, enc);
+  b.lastSize = headerValue(v.data + 2 * h, enc);
+  if (b.blocks > (v.size / h)) fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks (corrupt or truncated)");
+  b.headerBytes = (3 + b.blocks) * h;
+  if (v.size < b.headerBytes) fail(src, "data ends inside its compression header (truncated)");
+  b.rawBytes = b.blocks == 0 ? 0 : (b.blocks - 1) * b.blockSize + (b.lastSize ? b.lastSize : b.blockSize);
+  return b;
+}
+
+std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding& enc) {
+  const BinaryView v = binaryBytes(src);
+  const BlockLayout b = blockLayout(src, enc, v);
+  if (!enc.compressed) {
+    if (v.size - b.headerBytes < b.rawBytes)
+      fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
+                    std::to_string(v.size - b.headerBytes) + " are there (truncated)");
+    return {v.data + b.headerBytes, v.data + b.headerBytes + b.rawBytes};
+  }
+  std::vector<std::uint8_t> out(b.rawBytes);
+  const std::size_t h = sizeOf(enc.headerType);
+  std::size_t in = b.headerBytes, done = 0;
+  for (std::uint64_t k = 0; k < b.blocks; ++k) {
+    const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);
+    const std::uint64_t usize = (k + 1 == b.blocks && b.lastSize) ? b.lastSize : b.blockSize;
+    if (csize > v.size - in) fail(src, "compressed block " + std::to_string(k) + " runs past the end of the data (truncated)");
+    uLongf destLen = uLongf(usize);
+    const int rc = uncompress(out.data() + done, &destLen, v.data + in, uLong(csize));
+    if (rc != Z_OK || destLen != usize)
+      fail(src, "zlib block " + std::to_string(k) + " does not decompress (" + (rc == Z_OK ? "wrong size" : zError(rc)) + ")");
+    in += csize;
+    done += usize;
+  }
+  return out;
+}
+
+std::vector<double> asciiValues(const VtuArraySource& src) {
+  const std::string& f = *src.file;
+  std::vector<double> out;
+  std::size_t i = src.begin;
+  while (i < src.end) {
+    while (i < src.end && std::isspace(static_cast<unsigned char>(f[i]))) ++i;
+    if (i >= src.end) break;
+    std::size_t j = i;
+    while (j < src.end && !std::isspace(static_cast<unsigned char>(f[j]))) ++j;
+    double v = 0.0;
+    const auto r = std::from_chars(f.data() + i, f.data() + j, v);
+    if (r.ec == std::errc::result_out_of_range) v = f[i] == '-' ? -HUGE_VAL : HUGE_VAL;
+    else if (r.ec != std::errc() || r.ptr != f.data() + j)
+      fail(src, "value " + std::to_string(out.size() + 1) + " is '" + f.substr(i, std::min<std::size_t>(j - i, 40)) + "', not a number");
+    out.push_back(v);
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc) {
+  if (src.format == VtuArraySource::Format::Ascii) return asciiValues(src).size();
+  const BinaryView v = binaryBytes(src);
+  const BlockLayout b = blockLayout(src, enc, v);
+  if (b.rawBytes % sizeOf(src.type)) fail(src, "byte count " + std::to_string(b.rawBytes) + " is not a whole number of values");
+  return std::size_t(b.rawBytes / sizeOf(src.type));
+}
+
+std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc) {
+  if (src.format == VtuArraySource::Format::Ascii) return asciiValues(src);
+  const auto raw = rawBytes(src, enc);
+  return toDoubles(raw.data(), raw.size() / sizeOf(src.type), src.type, enc.bigEndian);
+}
+
+std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc) {
+  if (isFloating(src.type)) fail(src, "must hold integers, its type is floating point");
+  if (src.format == VtuArraySource::Format::Ascii) {
+    const auto d = asciiValues(src);
+    std::vector<std::int64_t> out(d.size());
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      if (d[i] != std::floor(d[i]) || !std::isfinite(d[i])) fail(src, "value " + std::to_string(i + 1) + " is not an integer");
+      out[i] = std::int64_t(d[i]);
+    }
+    return out;
+  }
+  const auto raw = rawBytes(src, enc);
+  return toIntegers(raw.data(), raw.size() / sizeOf(src.type), src.type, enc.bigEndian);
+}
+
+}  // namespace volpost::meshio

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// Decoding one <DataArray> of a VTK XML file, in any of its encodings.
+#pragma once
+
+#include "NumericType.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace volpost::meshio {
+
+struct VtuEncoding {
+  bool bigEndian = false;
+  bool compressed = false;     ///< vtkZLibDataCompressor
+  NumericType headerType = NumericType::UInt32;
+};
+
+/// Where an array's bytes are and how they are stored; cheap to copy into lazy loaders.
+struct VtuArraySource {
+  std::string name;
+  NumericType type = NumericType::Float64;
+  int components = 1;
+  enum class Format { Ascii, Binary, Appended } format = Format::Ascii;
+  std::shared_ptr<const std::string> file;  ///< the whole file
+  /// Byte range in `file`: the element's text (ascii, binary), the appended block (raw),
+  /// or this array's own run of the appended block (base64).
+  std::size_t begin = 0, end = 0;
+  std::size_t appendedOffset = 0;           ///< offset attribute (appended)
+  bool appendedBase64 = false;
+  std::size_t textLine = 0;                 ///< line of the DataArray element, for messages
+};
+
+/// Thrown with a message only; the reader adds the file name and line.
+struct VtuArrayError {
+  std::string message;
+};
+
+/// Number of values (tuples x components) the array holds, read from its header without
+/// decompressing (ascii arrays are parsed to count).
+std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc);
+std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc);
+std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc);
+
+}  // namespace volpost::meshio

@@ -1,0 +1,312 @@
+// SPDX-License-Identifier: MIT
+#include "VtuReader.hpp"
+
+#include "FileBytes.hpp"
+#include "VtkCells.hpp"
+#include "VtuDataArray.hpp"
+
+#include <pugixml.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+
+namespace volpost::meshio {
+namespace {
+
+struct AppendedBlock {
+  bool present = false;
+  bool base64 = false;
+  std::size_t begin = 0, end = 0;  // data bytes in the file
+};
+
+class VtuReading {
+ public:
+  VtuReading(std::shared_ptr<const std::string> bytes, std::string path, const Progress& progress)
+      : bytes_(std::move(bytes)), path_(std::move(path)), progress_(progress) {}
+
+  std::unique_ptr<Model> run() {
+    splitAppended();
+    pugi::xml_document doc;
+    const auto parsed = doc.load_buffer(xml_.data(), xml_.size());
+    if (!parsed)
+      throw ReadError::atLine(path_, lineAt(xml_, std::size_t(parsed.offset)),
+                              std::string("malformed XML: ") + parsed.description());
+    const pugi::xml_node root = doc.child("VTKFile");
+    if (!root) throw ReadError(path_, "no <VTKFile> element: not a VTK XML file");
+    readEncoding(root);
+    const pugi::xml_node grid = root.child("UnstructuredGrid");
+    if (!grid) throw ReadError(path_, "this VTK XML file holds a " + std::string(root.attribute("type").as_string("?")) +
+                                          "; volpost reads UnstructuredGrid (.vtu)");
+    auto model = std::make_unique<Model>();
+    std::size_t pieces = 0;
+    for (pugi::xml_node piece : grid.children("Piece")) {
+      readPiece(piece, *model);
+      ++pieces;
+    }
+    if (pieces == 0) throw ReadError(path_, "<UnstructuredGrid> has no <Piece>");
+    finishFields(*model);
+    return model;
+  }
+
+ private:
+  [[noreturn]] void failAt(const pugi::xml_node& node, const std::string& message) const {
+    throw ReadError::atLine(path_, lineAt(xml_, std::size_t(node.offset_debug())), message);
+  }
+
+  // Raw appended data is not XML: cut it out before parsing and remember where it is.
+  void splitAppended() {
+    const std::string& b = *bytes_;
+    const std::size_t tag = b.find("<AppendedData");
+    if (tag == std::string::npos) {
+      xml_ = b;
+      return;
+    }
+    const std::size_t tagEnd = b.find('>', tag);
+    if (tagEnd == std::string::npos) throw ReadError::atOffset(path_, tag, "<AppendedData> tag is not closed (truncated)");
+    const std::string tagText = b.substr(tag, tagEnd - tag);
+    appended_.present = true;
+    appended_.base64 = tagText.find("\"base64\"") != std::string::npos;
+    const std::size_t underscore = b.find('_', tagEnd);
+    if (underscore == std::string::npos) throw ReadError::atOffset(path_, tagEnd, "appended data has no '_' marker (truncated)");
+    const std::size_t close = b.rfind("</AppendedData>");
+    if (close == std::string::npos || close < underscore)
+      throw ReadError::atOffset(path_, b.size(), "file ends inside the appended data: no </AppendedData> (truncated)");
+    appended_.begin = underscore + 1;
+    appended_.end = close;
+    xml_ = b.substr(0, tagEnd + 1) + b.substr(close);
+  }
+
+  void readEncoding(const pugi::xml_node& root) {
+    const std::string order = root.attribute("byte_order").as_string("LittleEndian");
+    if (order != "LittleEndian" && order != "BigEndian") failAt(root, "byte_order \"" + order + "\" is neither LittleEndian nor BigEndian");
+    enc_.bigEndian = order == "BigEndian";
+    const std::string header = root.attribute("header_type").as_string("UInt32");
+    if (header == "UInt64") enc_.headerType = NumericType::UInt64;
+    else if (header != "UInt32") failAt(root, "header_type \"" + header + "\" is not UInt32 or UInt64");
+    const std::string compressor = root.attribute("compressor").as_string("");
+    if (compressor == "vtkZLibDataCompressor") enc_.compressed = true;
+    else if (!compressor.empty())
+      failAt(root, "compressor " + compressor + " is not supported (volpost reads zlib-compressed and uncompressed files)");
+  }
+
+  VtuArraySource source(const pugi::xml_node& array) {
+    VtuArraySource s;
+    s.name = array.attribute("Name").as_string("");
+    const std::string typeName = array.attribute("type").as_string("");
+    const auto type = numericTypeFromXml(typeName);
+    if (!type) failAt(array, "DataArray \"" + s.name + "\" has unknown type \"" + typeName + "\"");
+    s.type = *type;
+    s.components = array.attribute("NumberOfComponents").as_int(1);
+    if (s.components < 1 || s.components > 4096) failAt(array, "DataArray \"" + s.name + "\" has a bad NumberOfComponents");
+    const std::string format = array.attribute("format").as_string("ascii");
+    if (format == "appended") {
+      if (!appended_.present) failAt(array, "DataArray \"" + s.name + "\" is appended but the file has no <AppendedData>");
+      s.format = VtuArraySource::Format::Appended;
+      s.file = bytes_;
+      s.begin = appended_.begin;
+      s.end = appended_.end;
+      s.appendedOffset = std::size_t(array.attribute("offset").as_ullong(0));
+      s.appendedBase64 = appended_.base64;
+    } else if (format == "binary" || format == "ascii") {
+      s.format = format == "ascii" ? VtuArraySource::Format::Ascii : VtuArraySource::Format::Binary;
+      s.file = std::make_shared<const std::string>(array.child_value());
+      s.begin = 0;
+      s.end = s.file->size();
+    } else {
+      failAt(array, "DataArray \"" + s.name + "\" has unknown format \"" + format + "\"");
+    }
+    return s;
+  }
+
+  template <typename F>
+  auto guarded(const pugi::xml_node& node, F&& f) -> decltype(f()) {
+    try {
+      return f();
+    } catch (const VtuArrayError& e) {
+      failAt(node, e.message);
+    }
+  }
+
+  pugi::xml_node arrayNamed(const pugi::xml_node& parent, const char* name) {
+    for (pugi::xml_node a : parent.children("DataArray"))
+      if (std::strcmp(a.attribute("Name").as_string(), name) == 0) return a;
+    failAt(parent, std::string("<") + parent.name() + "> has no DataArray \"" + name + "\"");
+  }
+
+  std::vector<std::int64_t> integers(const pugi::xml_node& node) {
+    const VtuArraySource s = source(node);
+    return guarded(node, [&] { return vtuIntegers(s, enc_); });
+  }
+
+  void readPiece(const pugi::xml_node& piece, Model& model) {
+    const long long points = piece.attribute("NumberOfPoints").as_llong(-1);
+    const long long cellCount = piece.attribute("NumberOfCells").as_llong(-1);
+    if (points < 0 || cellCount < 0) failAt(piece, "<Piece> needs NumberOfPoints and NumberOfCells");
+    const std::size_t nodeBase = model.mesh.nodeCount();
+
+    if (points > 0) {
+      const pugi::xml_node pts = piece.child("Points").child("DataArray");
+      if (!pts) failAt(piece, "<Piece> has no <Points> DataArray");
+      const VtuArraySource s = source(pts);
+      if (s.components != 3) failAt(pts, "Points must have 3 components, not " + std::to_string(s.components));
+      const auto xyz = guarded(pts, [&] { return vtuDoubles(s, enc_); });
+      if (xyz.size() != std::size_t(points) * 3)
+        failAt(pts, "Points holds " + std::to_string(xyz.size() / 3) + " points, NumberOfPoints says " + std::to_string(points));
+      for (std::size_t i = 0; i < std::size_t(points); ++i)
+        model.mesh.nodes.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+    }
+    progress_.report(0.4);
+
+    VtkCellArrays cells;
+    if (cellCount > 0) {
+      const pugi::xml_node cellsNode = piece.child("Cells");
+      if (!cellsNode) failAt(piece, "<Piece> has cells but no <Cells>");
+      const pugi::xml_node offsetsNode = arrayNamed(cellsNode, "offsets");
+      const pugi::xml_node typesNode = arrayNamed(cellsNode, "types");
+      cells.connectivity = integers(arrayNamed(cellsNode, "connectivity"));
+      auto offsets = integers(offsetsNode);
+      cells.types = integers(typesNode);
+      const std::size_t n = std::size_t(cellCount);
+      if (cells.types.size() != n)
+        failAt(typesNode, "types holds " + std::to_string(cells.types.size()) + " cells, NumberOfCells says " + std::to_string(n));
+      if (offsets.size() == n + 1 && offsets.front() == 0) offsets.erase(offsets.begin());
+      if (offsets.size() != n)
+        failAt(offsetsNode, "offsets holds " + std::to_string(offsets.size()) + " cells, NumberOfCells says " + std::to_string(n));
+      cells.offsets.reserve(n + 1);
+      cells.offsets.push_back(0);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (offsets[i] < cells.offsets.back() || std::uint64_t(offsets[i]) > cells.connectivity.size())
+          failAt(offsetsNode, "offset of cell " + std::to_string(i) + " (" + std::to_string(offsets[i]) +
+                                  ") is out of order or beyond the " + std::to_string(cells.connectivity.size()) +
+                                  " connectivity entries");
+        cells.offsets.push_back(offsets[i]);
+      }
+      for (auto& c : cells.connectivity) c += std::int64_t(nodeBase);
+    }
+    const std::size_t pointTotal = nodeBase + std::size_t(points);
+    const pugi::xml_node cellsNode = piece.child("Cells");
+    VtkCellMapping mapping = addVtkCells(cells, pointTotal, model.mesh, [&](const std::string& m) {
+      failAt(cellsNode ? cellsNode : piece, m);
+    });
+    if (mapping.skipped)
+      model.diagnostics.push_back({Severity::Info, "skipped-cells",
+                                   std::to_string(mapping.skipped) + " lower-dimensional cells (points, lines, faces) skipped", {}});
+    progress_.report(0.7);
+    collectArrays(piece.child("PointData"), FieldLocation::Node, std::size_t(points), nullptr, model);
+    collectArrays(piece.child("CellData"), FieldLocation::Cell, std::size_t(cellCount), &mapping, model);
+    ++pieceCount_;
+  }
+
+  struct PieceArray {
+    VtuArraySource source;
+    std::shared_ptr<VtkCellMapping> mapping;  // cell arrays of pieces with skipped cells
+  };
+  struct FieldParts {
+    FieldLocation location;
+    int components;
+    std::vector<PieceArray> parts;
+    std::size_t firstPiece;
+    bool dropped = false;
+  };
+
+  void collectArrays(const pugi::xml_node& data, FieldLocation location, std::size_t count,
+                     const VtkCellMapping* mapping, Model& model) {
+    if (!data) return;
+    for (pugi::xml_node array : data.children("DataArray")) {
+      VtuArraySource s = source(array);
+      if (s.name.empty()) failAt(array, "DataArray without a Name");
+      if (s.appendedBase64) narrowBase64(s);
+      const std::size_t values = guarded(array, [&] { return vtuValueCount(s, enc_); });
+      const std::string key = std::string(location == FieldLocation::Node ? "n:" : "c:") + s.name;
+      auto [it, inserted] = fields_.try_emplace(key, FieldParts{location, s.components, {}, pieceCount_});
+      FieldParts& f = it->second;
+      if (f.dropped) continue;
+      if (values != count * std::size_t(s.components) || f.components != s.components ||
+          f.firstPiece + f.parts.size() != pieceCount_) {
+        model.diagnostics.push_back({Severity::Warning, "field-dropped",
+                                     "field " + s.name + " dropped: " + std::to_string(values / std::size_t(s.components)) +
+                                         " values for " + std::to_string(count) +
+                                         (location == FieldLocation::Node ? " points" : " cells") + " (line " +
+                                         std::to_string(lineAt(xml_, std::size_t(array.offset_debug()))) + ")",
+                                     {}});
+        f.dropped = true;
+        continue;
+      }
+      std::shared_ptr<VtkCellMapping> m;
+      if (mapping && mapping->skipped) m = std::make_shared<VtkCellMapping>(*mapping);
+      f.parts.push_back({std::move(s), std::move(m)});
+      if (inserted) order_.push_back(key);
+    }
+  }
+
+  // A base64 appended array's run ends where the next array's begins.
+  void narrowBase64(VtuArraySource& s) {
+    if (base64Offsets_.empty()) {
+      // Collect every offset once; pugixml already parsed them, re-scan the XML cheaply.
+      for (std::size_t at = xml_.find("offset=\""); at != std::string::npos; at = xml_.find("offset=\"", at + 8))
+        base64Offsets_.push_back(std::strtoull(xml_.c_str() + at + 8, nullptr, 10));
+      std::sort(base64Offsets_.begin(), base64Offsets_.end());
+    }
+    const auto next = std::upper_bound(base64Offsets_.begin(), base64Offsets_.end(), s.appendedOffset);
+    const std::size_t runEnd = next == base64Offsets_.end() ? s.end - s.begin : std::min<std::size_t>(*next, s.end - s.begin);
+    s.end = s.begin + runEnd;
+  }
+
+  void finishFields(Model& model) {
+    for (const std::string& key : order_) {
+      FieldParts& f = fields_[key];
+      if (f.dropped || f.parts.size() != pieceCount_) continue;
+      const std::string name = key.substr(2);
+      const std::size_t entities = f.location == FieldLocation::Node ? model.mesh.nodeCount() : model.mesh.cellCount();
+      auto parts = std::make_shared<std::vector<PieceArray>>(std::move(f.parts));
+      const VtuEncoding enc = enc_;
+      const int comps = f.components;
+      StepLoader loader = [parts, enc, comps](std::size_t) {
+        std::vector<double> all;
+        for (const PieceArray& p : *parts) {
+          std::vector<double> v;
+          try {
+            v = vtuDoubles(p.source, enc);
+          } catch (const VtuArrayError& e) {
+            throw std::runtime_error(e.message);
+          }
+          if (p.mapping) v = selectModelCells(v, comps, *p.mapping);
+          all.insert(all.end(), v.begin(), v.end());
+        }
+        return all;
+      };
+      model.fields.push_back(std::make_shared<Field>(name, f.location, f.components, entities,
+                                                     std::vector<Step>{{"", 0.0}}, std::move(loader)));
+    }
+  }
+
+  std::shared_ptr<const std::string> bytes_;
+  std::string path_;
+  const Progress& progress_;
+  std::string xml_;
+  AppendedBlock appended_;
+  VtuEncoding enc_;
+  std::size_t pieceCount_ = 0;
+  std::map<std::string, FieldParts> fields_;
+  std::vector<std::string> order_;
+  std::vector<std::size_t> base64Offsets_;
+};
+
+}  // namespace
+
+int VtuReader::sniff(std::string_view head) const {
+  const auto xml = head.find("<VTKFile");
+  if (xml == std::string_view::npos) return 0;
+  return head.find("UnstructuredGrid", xml) != std::string_view::npos ? 100 : 30;
+}
+
+std::unique_ptr<Model> VtuReader::read(const std::string& path, const Progress& progress) const {
+  auto bytes = readFileBytes(path, progress);
+  auto model = VtuReading(bytes, path, progress).run();
+  model->formatName = formatName();
+  progress.report(1.0);
+  return model;
+}
+
+}  // namespace volpost::meshio

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// The outer boundary of a volume mesh as a triangle surface (OpenMesh), extracted once.
+#pragma once
+
+#include <volpost/core/Mesh.hpp>
+#include <volpost/core/Progress.hpp>
+
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace volpost {
+
+using SurfaceMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+/// Boundary faces are the cell faces that no other cell shares. Quadrilaterals and the
+/// faces of quadratic cells are split into triangles through their midside nodes, so
+/// nodal results are drawn with every node the solver computed.
+struct BoundarySurface {
+  /// Positions are float model coordinates minus `origin` (keeps float precision on
+  /// models far from the origin).
+  SurfaceMesh mesh;
+  glm::dvec3 origin{0.0};
+  OpenMesh::VPropHandleT<NodeIndex> nodeOfVertex;      ///< mesh node of each surface vertex
+  OpenMesh::FPropHandleT<std::uint32_t> cellOfFace;    ///< cell each triangle comes from
+  /// Element edges on the boundary (pairs of mesh node indices, through midside nodes).
+  std::vector<std::array<NodeIndex, 2>> edges;
+  std::size_t boundaryFaceCount = 0;      ///< cell faces (tri or quad) on the boundary
+  std::size_t nonManifoldFaceCount = 0;   ///< faces OpenMesh could not attach, split off
+};
+
+BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress = {});
+
+}  // namespace volpost

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// Result fields: values per node or per cell, for one or more steps, read lazily.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace volpost {
+
+enum class FieldLocation { Node, Cell };
+/// Scalar: 1 component; Vector: 3 (x y z); SymTensor: 6 (xx yy zz xy yz zx, VTK/CalculiX
+/// order); Array: any other number of components.
+enum class FieldKind { Scalar, Vector, SymTensor, Array };
+
+const char* toString(FieldLocation location);
+const char* toString(FieldKind kind);
+FieldKind kindForComponents(int components);
+
+/// One load case or time step of a field.
+struct Step {
+  std::string label;  ///< e.g. "step 1", "t = 0.5", "mode 3"
+  double time = 0.0;
+};
+
+/// Produces the values of one step: entityCount x components doubles, row-major.
+/// Throws on failure (a lazy read of a damaged file).
+using StepLoader = std::function<std::vector<double>(std::size_t step)>;
+
+class Field {
+ public:
+  Field(std::string name, FieldLocation location, int components, std::size_t entityCount,
+        std::vector<Step> steps, StepLoader loader);
+  /// A field whose values are already in memory (one vector per step).
+  static std::shared_ptr<Field> fromValues(std::string name, FieldLocation location,
+                                           int components,
+                                           std::vector<std::vector<double>> stepValues,
+                                           std::vector<Step> steps = {});
+
+  const std::string& name() const { return name_; }
+  FieldLocation location() const { return location_; }
+  FieldKind kind() const { return kindForComponents(components_); }
+  int components() const { return components_; }
+  std::size_t entityCount() const { return entityCount_; }
+  const std::vector<Step>& steps() const { return steps_; }
+  std::size_t stepCount() const { return steps_.size(); }
+
+  /// Values of a step, loaded on first use and kept. Thread-safe.
+  const std::vector<double>& values(std::size_t step) const;
+  bool isLoaded(std::size_t step) const;
+
+ private:
+  std::string name_;
+  FieldLocation location_;
+  int components_;
+  std::size_t entityCount_;
+  std::vector<Step> steps_;
+  StepLoader loader_;
+  mutable std::mutex mutex_;
+  mutable std::vector<std::unique_ptr<std::vector<double>>> cache_;
+};
+
+}  // namespace volpost

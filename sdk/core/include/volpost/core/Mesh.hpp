@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// The finite-element mesh: nodes in double precision and cells of mixed types.
+#pragma once
+
+#include <volpost/core/CellType.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <span>
+#include <vector>
+
+namespace volpost {
+
+using NodeIndex = std::uint32_t;
+
+struct Bounds {
+  glm::dvec3 min{0.0};
+  glm::dvec3 max{0.0};
+  bool valid = false;
+  glm::dvec3 center() const { return (min + max) * 0.5; }
+  glm::dvec3 size() const { return max - min; }
+  double diagonal() const;
+  void extend(const glm::dvec3& p);
+};
+
+class Mesh {
+ public:
+  /// Node positions, model units. Index = 0-based node index used by the cells.
+  std::vector<glm::dvec3> nodes;
+  /// Node ids as the source file numbered them (empty when the file has none).
+  std::vector<std::int64_t> nodeIds;
+  /// Element ids as the source file numbered them (empty when the file has none).
+  std::vector<std::int64_t> cellIds;
+
+  void reserveCells(std::size_t cells, std::size_t connectivityEntries);
+  /// Appends a cell; `cellNodes` has topology(type).nodeCount entries.
+  void addCell(CellType type, std::span<const NodeIndex> cellNodes);
+
+  std::size_t nodeCount() const { return nodes.size(); }
+  std::size_t cellCount() const { return types_.size(); }
+  CellType cellType(std::size_t cell) const { return types_[cell]; }
+  std::span<const NodeIndex> cellNodes(std::size_t cell) const {
+    return {connectivity_.data() + offsets_[cell], offsets_[cell + 1] - offsets_[cell]};
+  }
+  std::span<const CellType> cellTypes() const { return types_; }
+  std::span<const NodeIndex> connectivity() const { return connectivity_; }
+  /// Replaces every node index n in the cells by map[n] (used to merge coincident nodes).
+  void remapNodes(const std::vector<NodeIndex>& map);
+
+  std::map<CellType, std::size_t> countsByType() const;
+  /// Bounds of the nodes that cells use (points no cell uses are ignored).
+  Bounds bounds() const;
+  /// Bounds of every node, used or not.
+  Bounds allNodeBounds() const;
+
+ private:
+  std::vector<CellType> types_;
+  std::vector<std::size_t> offsets_{0};
+  std::vector<NodeIndex> connectivity_;
+};
+
+/// Signed volume of a cell from its corner faces (negative = inverted or mirrored).
+double signedCellVolume(const Mesh& mesh, std::size_t cell);
+
+}  // namespace volpost

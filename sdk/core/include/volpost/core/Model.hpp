@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// A loaded FE model: the mesh, its result fields and what was found wrong with it.
+#pragma once
+
+#include <volpost/core/Diagnostics.hpp>
+#include <volpost/core/Field.hpp>
+#include <volpost/core/Mesh.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace volpost {
+
+struct Model {
+  std::string sourcePath;
+  std::string formatName;   ///< e.g. "VTK XML unstructured grid"
+  std::string title;        ///< header/title line of the file, if any
+  Mesh mesh;
+  std::vector<std::shared_ptr<Field>> fields;
+  std::vector<Diagnostic> diagnostics;
+
+  const Field* findField(const std::string& name) const;
+};
+
+}  // namespace volpost

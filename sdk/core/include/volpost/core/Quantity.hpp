@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// Scalar quantities derived from fields: components, magnitude, von Mises, principal values.
+#pragma once
+
+#include <volpost/core/Field.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volpost {
+
+enum class ScalarOp { Component, Magnitude, VonMises, Principal1, Principal2, Principal3 };
+
+/// A scalar the user can color by. Written as "NAME" for a scalar field, "NAME.x",
+/// "NAME.magnitude" for vectors, "NAME.xx", "NAME.mises", "NAME.p1" (largest principal)
+/// for symmetric tensors, "NAME.2" for generic arrays.
+struct Quantity {
+  std::string field;
+  ScalarOp op = ScalarOp::Component;
+  int component = 0;
+  FieldKind fieldKind = FieldKind::Scalar;  ///< kind of the source field (names components)
+
+  std::string key() const;         ///< the written form above
+  std::string displayName() const; ///< e.g. "S von Mises", "U magnitude"
+  bool operator==(const Quantity&) const = default;
+};
+
+/// Every quantity a field offers, in menu order (magnitude / von Mises first).
+std::vector<Quantity> quantitiesOf(const Field& field);
+/// Parses the written form; nullopt if the suffix does not fit the field's kind.
+std::optional<Quantity> parseQuantity(const std::string& text, const Field& field);
+
+/// Evaluates the quantity for all entities of one step. NaN inputs give NaN.
+std::vector<double> evaluate(const Field& field, const Quantity& quantity, std::size_t step);
+
+/// Principal values of the symmetric tensor (xx yy zz xy yz zx), sorted descending.
+std::array<double, 3> principalValues(const double* t);
+double vonMises(const double* t);
+
+struct ValueRange {
+  double min = 0.0, max = 0.0;
+  std::size_t finiteCount = 0;
+  std::size_t nanCount = 0;  ///< NaN or infinite values, ignored by min/max
+  bool valid() const { return finiteCount > 0; }
+};
+ValueRange rangeOf(const std::vector<double>& values);
+
+}  // namespace volpost

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/BoundarySurface.hpp>
+
+// GCC 12 reports a false -Warray-bounds inside std::sort's insertion sort at -O2.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#endif
+
+#include <algorithm>
+#include <limits>
+
+namespace volpost {
+namespace {
+
+struct FaceRecord {
+  std::array<NodeIndex, 4> key;  // sorted corner nodes, padded with the largest index
+  std::uint32_t cell;
+  std::uint8_t face;
+  bool operator<(const FaceRecord& o) const { return key < o.key; }
+};
+
+std::vector<FaceRecord> collectFaces(const Mesh& mesh) {
+  std::vector<FaceRecord> faces;
+  std::size_t total = 0;
+  for (CellType t : mesh.cellTypes()) total += topology(t).faces.size();
+  faces.reserve(total);
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto nodes = mesh.cellNodes(c);
+    const auto& topo = topology(mesh.cellType(c));
+    for (std::size_t f = 0; f < topo.faces.size(); ++f) {
+      FaceRecord r{{}, std::uint32_t(c), std::uint8_t(f)};
+      r.key.fill(std::numeric_limits<NodeIndex>::max());
+      const CellFace& face = topo.faces[f];
+      for (int k = 0; k < face.size; ++k) r.key[k] = nodes[face.corners[k]];
+      std::sort(r.key.begin(), r.key.begin() + face.size);
+      faces.push_back(r);
+    }
+  }
+  return faces;
+}
+
+int midsideNode(const CellTopology& topo, int a, int b) {
+  for (const CellEdge& e : topo.edges)
+    if ((e.a == a && e.b == b) || (e.a == b && e.b == a)) return e.mid;
+  return -1;
+}
+
+class SurfaceBuilder {
+ public:
+  SurfaceBuilder(const Mesh& mesh, BoundarySurface& out) : mesh_(mesh), out_(out) {
+    out_.mesh.add_property(out_.nodeOfVertex, "volpost:node");
+    out_.mesh.add_property(out_.cellOfFace, "volpost:cell");
+    vertexOfNode_.assign(mesh.nodeCount(), SurfaceMesh::VertexHandle());
+  }
+
+  void addCellFace(std::uint32_t cell, const CellFace& face) {
+    const auto nodes = mesh_.cellNodes(cell);
+    const auto& topo = topology(mesh_.cellType(cell));
+    NodeIndex corner[4], mid[4];
+    bool quadratic = topo.quadratic;
+    for (int k = 0; k < face.size; ++k) {
+      corner[k] = nodes[face.corners[k]];
+      if (quadratic) {
+        const int m = midsideNode(topo, face.corners[k], face.corners[(k + 1) % face.size]);
+        quadratic = m >= 0;
+        mid[k] = quadratic ? nodes[m] : 0;
+      }
+    }
+    for (int k = 0; k < face.size; ++k) {
+      if (quadratic) {
+        addEdge(corner[k], mid[k]);
+        addEdge(mid[k], corner[(k + 1) % face.size]);
+      } else {
+        addEdge(corner[k], corner[(k + 1) % face.size]);
+      }
+    }
+    if (!quadratic && face.size == 3) {
+      addTriangle(cell, corner[0], corner[1], corner[2]);
+    } else if (!quadratic) {
+      addTriangle(cell, corner[0], corner[1], corner[2]);
+      addTriangle(cell, corner[0], corner[2], corner[3]);
+    } else if (face.size == 3) {
+      addTriangle(cell, corner[0], mid[0], mid[2]);
+      addTriangle(cell, mid[0], corner[1], mid[1]);
+      addTriangle(cell, mid[2], mid[1], corner[2]);
+      addTriangle(cell, mid[0], mid[1], mid[2]);
+    } else {
+      for (int k = 0; k < 4; ++k) addTriangle(cell, mid[(k + 3) % 4], corner[k], mid[k]);
+      addTriangle(cell, mid[0], mid[1], mid[3]);
+      addTriangle(cell, mid[1], mid[2], mid[3]);
+    }
+  }
+
+  void finish() {
+    auto& e = out_.edges;
+    std::sort(e.begin(), e.end());
+    e.erase(std::unique(e.begin(), e.end()), e.end());
+  }
+
+ private:
+  SurfaceMesh::VertexHandle newVertex(NodeIndex node) {
+    const glm::dvec3 p = mesh_.nodes[node] - out_.origin;
+    auto v = out_.mesh.add_vertex(SurfaceMesh::Point(float(p.x), float(p.y), float(p.z)));
+    out_.mesh.property(out_.nodeOfVertex, v) = node;
+    return v;
+  }
+
+  SurfaceMesh::VertexHandle vertexOf(NodeIndex node) {
+    if (!vertexOfNode_[node].is_valid()) vertexOfNode_[node] = newVertex(node);
+    return vertexOfNode_[node];
+  }
+
+  void addTriangle(std::uint32_t cell, NodeIndex a, NodeIndex b, NodeIndex c) {
+    auto f = out_.mesh.add_face(vertexOf(a), vertexOf(b), vertexOf(c));
+    if (!f.is_valid()) {
+      // Non-manifold configuration (e.g. a fin of faces on one edge): keep the triangle
+      // with vertices of its own so it is still drawn.
+      f = out_.mesh.add_face(newVertex(a), newVertex(b), newVertex(c));
+      ++out_.nonManifoldFaceCount;
+    }
+    if (f.is_valid()) out_.mesh.property(out_.cellOfFace, f) = cell;
+  }
+
+  void addEdge(NodeIndex a, NodeIndex b) { out_.edges.push_back({std::min(a, b), std::max(a, b)}); }
+
+  const Mesh& mesh_;
+  BoundarySurface& out_;
+  std::vector<SurfaceMesh::VertexHandle> vertexOfNode_;
+};
+
+}  // namespace
+
+BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress) {
+  BoundarySurface out;
+  const Bounds b = mesh.bounds();
+  out.origin = b.valid ? b.center() : glm::dvec3(0.0);
+  std::vector<FaceRecord> faces = collectFaces(mesh);
+  progress.report(0.2);
+  std::sort(faces.begin(), faces.end());
+  progress.report(0.5);
+  SurfaceBuilder builder(mesh, out);
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
+    if (j - i == 1) {
+      const auto& topo = topology(mesh.cellType(faces[i].cell));
+      builder.addCellFace(faces[i].cell, topo.faces[faces[i].face]);
+      ++out.boundaryFaceCount;
+    }
+    if ((i & 0xffff) == 0) progress.report(0.5 + 0.45 * double(i) / double(faces.size()));
+    i = j;
+  }
+  builder.finish();
+  out.mesh.request_face_normals();
+  out.mesh.update_face_normals();
+  progress.report(1.0);
+  return out;
+}
+
+}  // namespace volpost

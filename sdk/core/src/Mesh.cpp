@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/Mesh.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cassert>
+
+namespace volpost {
+
+double Bounds::diagonal() const { return valid ? glm::length(max - min) : 0.0; }
+
+void Bounds::extend(const glm::dvec3& p) {
+  if (!valid) {
+    min = max = p;
+    valid = true;
+    return;
+  }
+  min = glm::min(min, p);
+  max = glm::max(max, p);
+}
+
+void Mesh::reserveCells(std::size_t cells, std::size_t connectivityEntries) {
+  types_.reserve(cells);
+  offsets_.reserve(cells + 1);
+  connectivity_.reserve(connectivityEntries);
+}
+
+void Mesh::addCell(CellType type, std::span<const NodeIndex> cellNodes) {
+  assert(static_cast<int>(cellNodes.size()) == topology(type).nodeCount);
+  types_.push_back(type);
+  connectivity_.insert(connectivity_.end(), cellNodes.begin(), cellNodes.end());
+  offsets_.push_back(connectivity_.size());
+}
+
+void Mesh::remapNodes(const std::vector<NodeIndex>& map) {
+  for (NodeIndex& n : connectivity_) n = map[n];
+}
+
+std::map<CellType, std::size_t> Mesh::countsByType() const {
+  std::map<CellType, std::size_t> counts;
+  for (CellType t : types_) ++counts[t];
+  return counts;
+}
+
+Bounds Mesh::bounds() const {
+  std::vector<char> used(nodes.size(), 0);
+  for (NodeIndex n : connectivity_)
+    if (n < used.size()) used[n] = 1;
+  Bounds b;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (used[i]) b.extend(nodes[i]);
+  return b;
+}
+
+Bounds Mesh::allNodeBounds() const {
+  Bounds b;
+  for (const auto& p : nodes) b.extend(p);
+  return b;
+}
+
+double signedCellVolume(const Mesh& mesh, std::size_t cell) {
+  const auto& topo = topology(mesh.cellType(cell));
+  const auto nodes = mesh.cellNodes(cell);
+  glm::dvec3 centroid(0.0);
+  for (int i = 0; i < topo.cornerCount; ++i) centroid += mesh.nodes[nodes[i]];
+  centroid /= double(topo.cornerCount);
+  // Sum of tets (centroid, face triangle); quads are fanned from their first corner,
+  // so warped faces contribute consistently and mirrored cells come out negative.
+  double volume = 0.0;
+  for (const CellFace& face : topo.faces) {
+    const glm::dvec3 a = mesh.nodes[nodes[face.corners[0]]] - centroid;
+    for (int k = 1; k + 1 < face.size; ++k) {
+      const glm::dvec3 b = mesh.nodes[nodes[face.corners[k]]] - centroid;
+      const glm::dvec3 c = mesh.nodes[nodes[face.corners[k + 1]]] - centroid;
+      volume += glm::dot(a, glm::cross(b, c)) / 6.0;
+    }
+  }
+  return volume;
+}
+
+}  // namespace volpost

@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/MeshChecks.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace volpost {
+namespace {
+
+constexpr std::size_t kMaxItems = 1000;  // a diagnostic lists at most this many entities
+
+void add(Model& model, std::string code, std::size_t count, const std::string& what,
+         std::vector<std::size_t> items, Severity severity = Severity::Warning) {
+  if (count == 0) return;
+  if (items.size() > kMaxItems) items.resize(kMaxItems);
+  std::ostringstream msg;
+  msg << count << ' ' << what;
+  if (!items.empty()) {
+    msg << " (first: ";
+    for (std::size_t i = 0; i < std::min<std::size_t>(items.size(), 5); ++i)
+      msg << (i ? ", " : "") << items[i];
+    msg << ")";
+  }
+  model.diagnostics.push_back({severity, std::move(code), msg.str(), std::move(items)});
+}
+
+bool finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+void checkNodes(Model& model) {
+  const Mesh& mesh = model.mesh;
+  std::vector<char> used(mesh.nodeCount(), 0);
+  for (NodeIndex n : mesh.connectivity()) used[n] = 1;
+  std::vector<std::size_t> nonFinite, unused;
+  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+    if (!finite(mesh.nodes[i])) nonFinite.push_back(i);
+    if (!used[i]) unused.push_back(i);
+  }
+  add(model, "nonfinite-coordinates", nonFinite.size(), "nodes with NaN or infinite coordinates",
+      nonFinite);
+  add(model, "unused-nodes", unused.size(), "nodes used by no cell (ignored for bounds)", unused,
+      Severity::Info);
+}
+
+struct CoordHash {
+  std::size_t operator()(const glm::dvec3& p) const {
+    const std::hash<double> h;
+    return h(p.x) ^ (h(p.y) * 31u) ^ (h(p.z) * 1000003u);
+  }
+};
+
+// Coincident nodes that cells do not share make every face look like boundary; they are
+// merged (cells re-pointed to the first node at that position) and reported.
+void mergeCoincidentNodes(Model& model) {
+  Mesh& mesh = model.mesh;
+  std::unordered_map<glm::dvec3, NodeIndex, CoordHash> first;
+  first.reserve(mesh.nodeCount());
+  std::vector<NodeIndex> map(mesh.nodeCount());
+  std::vector<std::size_t> merged;
+  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+    map[i] = NodeIndex(i);
+    if (!finite(mesh.nodes[i])) continue;
+    auto [it, inserted] = first.try_emplace(mesh.nodes[i], NodeIndex(i));
+    if (!inserted) {
+      map[i] = it->second;
+      merged.push_back(i);
+    }
+  }
+  if (merged.empty()) return;
+  mesh.remapNodes(map);
+  add(model, "duplicate-nodes", merged.size(),
+      "nodes at the same position as an earlier node, merged so cells share faces", merged);
+}
+
+double faceWarp(const Mesh& mesh, std::span<const NodeIndex> nodes, const CellFace& f) {
+  const glm::dvec3 a = mesh.nodes[nodes[f.corners[0]]], b = mesh.nodes[nodes[f.corners[1]]],
+                   c = mesh.nodes[nodes[f.corners[2]]], d = mesh.nodes[nodes[f.corners[3]]];
+  const glm::dvec3 n = glm::cross(c - a, d - b);  // normal of the quad's mean plane
+  const double len = glm::length(n);
+  const double size = std::max(glm::length(c - a), glm::length(d - b));
+  if (len == 0.0 || size == 0.0) return 0.0;
+  // Distance of the diagonals from each other relative to the face size.
+  return std::abs(glm::dot(b - a, n) / len) / size;
+}
+
+bool faceTwisted(const Mesh& mesh, std::span<const NodeIndex> nodes, const CellFace& f) {
+  glm::dvec3 p[4];
+  for (int k = 0; k < 4; ++k) p[k] = mesh.nodes[nodes[f.corners[k]]];
+  // A bow-tie (or strongly non-convex) quad: corner normals disagree in sign.
+  const glm::dvec3 ref = glm::cross(p[2] - p[0], p[3] - p[1]);
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 n = glm::cross(p[(k + 1) % 4] - p[k], p[(k + 3) % 4] - p[k]);
+    if (glm::dot(n, ref) < 0.0) return true;
+  }
+  return false;
+}
+
+void checkCells(Model& model) {
+  const Mesh& mesh = model.mesh;
+  const double scale = mesh.bounds().diagonal();
+  const double tinyVolume = 1e-12 * scale * scale * scale;
+  std::vector<std::size_t> inverted, degenerate, repeated, warped, twisted;
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto nodes = mesh.cellNodes(c);
+    const auto& topo = topology(mesh.cellType(c));
+    std::vector<NodeIndex> sorted(nodes.begin(), nodes.end());
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      repeated.push_back(c);
+      continue;
+    }
+    bool ok = true;
+    for (NodeIndex n : nodes) ok = ok && finite(mesh.nodes[n]);
+    if (!ok) continue;
+    const double v = signedCellVolume(mesh, c);
+    if (std::abs(v) <= tinyVolume) degenerate.push_back(c);
+    else if (v < 0.0) inverted.push_back(c);
+    bool isWarped = false, isTwisted = false;
+    for (const CellFace& f : topo.faces) {
+      if (f.size != 4) continue;
+      isTwisted = isTwisted || faceTwisted(mesh, nodes, f);
+      isWarped = isWarped || faceWarp(mesh, nodes, f) > 1e-3;
+    }
+    if (isTwisted) twisted.push_back(c);
+    else if (isWarped) warped.push_back(c);
+  }
+  add(model, "inverted-cells", inverted.size(), "inverted cells (negative volume)", inverted);
+  add(model, "degenerate-cells", degenerate.size(), "cells with zero or near-zero volume", degenerate);
+  add(model, "repeated-node-cells", repeated.size(), "cells that use one node twice (degenerate)",
+      repeated);
+  add(model, "twisted-faces", twisted.size(), "cells with self-intersecting (bow-tie) faces", twisted);
+  add(model, "warped-faces", warped.size(), "cells with non-planar quadrilateral faces", warped);
+}
+
+void checkDuplicateCells(Model& model) {
+  const Mesh& mesh = model.mesh;
+  std::vector<std::pair<std::vector<NodeIndex>, std::size_t>> keys(mesh.cellCount());
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto nodes = mesh.cellNodes(c);
+    keys[c].first.assign(nodes.begin(), nodes.end());
+    std::sort(keys[c].first.begin(), keys[c].first.end());
+    keys[c].second = c;
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> dup;
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].first == keys[i - 1].first) dup.push_back(keys[i].second);
+  std::sort(dup.begin(), dup.end());
+  add(model, "duplicate-cells", dup.size(), "cells that repeat another cell's nodes", dup);
+}
+
+}  // namespace
+
+void checkModel(Model& model) {
+  checkNodes(model);
+  mergeCoincidentNodes(model);
+  checkCells(model);
+  checkDuplicateCells(model);
+}
+
+}  // namespace volpost

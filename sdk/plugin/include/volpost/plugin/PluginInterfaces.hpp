@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: MIT
+// The Qt plugin interfaces of volpost. Each IID carries the SDK's major version: a plugin
+// built against another major version does not cast to these interfaces, and the host
+// refuses it from its metadata before loading it (see PluginManager).
+#pragma once
+
+#include <volpost/core/MeshReader.hpp>
+#include <volpost/core/Model.hpp>
+#include <volpost/core/Quantity.hpp>
+
+#include <QtPlugin>
+#include <QList>
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+#include <optional>
+
+class QWidget;
+
+namespace volpost {
+
+class Renderer;
+
+/// Provides mesh readers. The readers live as long as the plugin instance.
+class ReaderPlugin {
+ public:
+  virtual ~ReaderPlugin() = default;
+  virtual QList<const MeshReader*> readers() const = 0;
+};
+
+/// Provides renderers (they draw into a RenderContext; see volpost/render/Renderer.hpp).
+class RendererPlugin {
+ public:
+  virtual ~RendererPlugin() = default;
+  virtual QStringList rendererNames() const = 0;
+  /// A new renderer; the caller initializes it with a current GL context.
+  virtual std::unique_ptr<Renderer> createRenderer(const QString& name) const = 0;
+};
+
+/// What a panel may ask of the host window.
+class PanelHost {
+ public:
+  virtual ~PanelHost() = default;
+  virtual const Model* model() const = 0;
+  virtual std::optional<Quantity> activeQuantity() const = 0;
+  virtual std::size_t activeStep() const = 0;
+  virtual void requestRender() = 0;
+};
+
+/// Provides a dock panel (e.g. the transfer-function editor). Only real editors ship widgets.
+class PanelPlugin {
+ public:
+  virtual ~PanelPlugin() = default;
+  virtual QString panelTitle() const = 0;
+  virtual QWidget* createPanel(PanelHost& host, QWidget* parent) = 0;
+  /// Called by the host when the model, quantity or step changed.
+  virtual void hostChanged() {}
+};
+
+}  // namespace volpost
+
+#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/1"
+#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/1"
+#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/1"
+
+Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
+Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)
+Q_DECLARE_INTERFACE(volpost::PanelPlugin, VOLPOST_PANEL_PLUGIN_IID)

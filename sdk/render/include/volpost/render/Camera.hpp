@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// An orbit camera around a target point: rotate, pan, zoom, fit, standard views.
+#pragma once
+
+#include <volpost/core/Mesh.hpp>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace volpost {
+
+enum class StandardView { PlusX, MinusX, PlusY, MinusY, PlusZ, MinusZ, Isometric };
+/// "+x" looks from +x toward the target (down the -x axis), likewise "-x", "+y", ...; "iso".
+std::optional<StandardView> standardViewFromName(const std::string& name);
+
+class Camera {
+ public:
+  enum class Projection { Perspective, Orthographic };
+
+  /// Places the target at the bounds' center and backs off so the bounding sphere fits.
+  void fit(const Bounds& bounds);
+  void setView(StandardView view);
+  /// Turntable rotation: azimuth about the up axis, elevation about the screen's x axis (deg).
+  void orbit(double azimuthDeg, double elevationDeg);
+  /// Moves the target in the screen plane by a fraction of the view height.
+  void pan(double dxFraction, double dyFraction);
+  /// factor > 1 moves closer (perspective) or magnifies (orthographic).
+  void zoom(double factor);
+
+  void setProjection(Projection p) { projection_ = p; }
+  Projection projection() const { return projection_; }
+  void setFieldOfView(double degrees) { fovY_ = degrees; }
+
+  glm::dvec3 target() const { return target_; }
+  glm::dvec3 eye() const;
+  glm::dvec3 up() const;
+  glm::dvec3 viewDirection() const;  ///< unit vector from the eye toward the target
+  double distance() const { return distance_; }
+  double viewHeight() const;         ///< height of the view at the target's depth
+
+  /// View and projection matrices relative to `origin` (the model's center): GPU data is
+  /// stored relative to it in float, so far-from-origin models keep their precision.
+  glm::dmat4 viewMatrix(const glm::dvec3& origin = glm::dvec3(0.0)) const;
+  glm::dmat4 projectionMatrix(double aspect) const;
+
+ private:
+  glm::dvec3 target_{0.0};
+  glm::dquat rotation_{1.0, 0.0, 0.0, 0.0};  ///< camera-to-world rotation
+  double distance_ = 1.0;
+  double radius_ = 1.0;  ///< scene radius, sets clip planes
+  double fovY_ = 30.0;
+  Projection projection_ = Projection::Perspective;
+};
+
+}  // namespace volpost

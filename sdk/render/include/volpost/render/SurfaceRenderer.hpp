@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+// Draws the model's boundary surface colored by a scalar result, with element edges.
+#pragma once
+
+#include <volpost/core/BoundarySurface.hpp>
+#include <volpost/core/ColorMap.hpp>
+#include <volpost/core/Field.hpp>
+#include <volpost/render/GlObjects.hpp>
+#include <volpost/render/Renderer.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <span>
+
+namespace volpost {
+
+class SurfaceRenderer : public Renderer {
+ public:
+  std::string name() const override { return "surface"; }
+  void initialize() override;
+  void release() override;
+  void render(const RenderContext& ctx) override;
+
+  /// Uploads the triangles and edges (once per model).
+  void setSurface(const BoundarySurface& surface);
+  /// Uploads one value per node or per cell (only this changes with the field or step).
+  /// Non-finite values are drawn in noValueColor. [min, max] maps onto the color map.
+  void setScalars(FieldLocation location, std::span<const double> values, double min, double max);
+  /// No result: the surface is drawn in a neutral gray.
+  void clearScalars();
+  void setColorMap(const ColorMap& map);
+  void setShowEdges(bool show) { showEdges_ = show; }
+  bool showEdges() const { return showEdges_; }
+  /// Shading off draws exact color-map colors (used by the image tests).
+  void setLighting(bool on) { lighting_ = on; }
+
+  glm::vec3 noValueColor{0.55f, 0.55f, 0.55f};
+  glm::vec3 edgeColor{0.1f, 0.1f, 0.1f};
+  glm::vec3 plainColor{0.8f, 0.8f, 0.8f};
+
+ private:
+  gl::Program surfaceProgram_, edgeProgram_;
+  gl::VertexArray surfaceVao_, edgeVao_;
+  gl::Buffer surfaceVbo_, edgeVbo_, scalars_;
+  gl::Texture colorMap_;
+  GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
+  int location_ = -1;  ///< -1 none, 0 node, 1 cell
+  float min_ = 0.f, max_ = 1.f;
+  bool showEdges_ = true, lighting_ = true;
+};
+
+}  // namespace volpost

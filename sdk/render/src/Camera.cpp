@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/render/Camera.hpp>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace volpost {
+namespace {
+
+glm::dquat lookRotation(const glm::dvec3& viewDir, const glm::dvec3& up) {
+  const glm::dvec3 z = -glm::normalize(viewDir);
+  const glm::dvec3 x = glm::normalize(glm::cross(up, z));
+  const glm::dvec3 y = glm::cross(z, x);
+  return glm::quat_cast(glm::dmat3(x, y, z));
+}
+
+}  // namespace
+
+std::optional<StandardView> standardViewFromName(const std::string& name) {
+  if (name == "+x") return StandardView::PlusX;
+  if (name == "-x") return StandardView::MinusX;
+  if (name == "+y") return StandardView::PlusY;
+  if (name == "-y") return StandardView::MinusY;
+  if (name == "+z") return StandardView::PlusZ;
+  if (name == "-z") return StandardView::MinusZ;
+  if (name == "iso") return StandardView::Isometric;
+  return std::nullopt;
+}
+
+void Camera::fit(const Bounds& bounds) {
+  target_ = bounds.valid ? bounds.center() : glm::dvec3(0.0);
+  radius_ = bounds.valid ? std::max(0.5 * bounds.diagonal(), 1e-30) : 1.0;
+  const double halfFov = glm::radians(fovY_) * 0.5;
+  distance_ = radius_ / std::sin(halfFov) * 1.02;
+}
+
+void Camera::setView(StandardView view) {
+  const glm::dvec3 zUp(0, 0, 1), yUp(0, 1, 0);
+  switch (view) {
+    case StandardView::PlusX: rotation_ = lookRotation({-1, 0, 0}, zUp); break;
+    case StandardView::MinusX: rotation_ = lookRotation({1, 0, 0}, zUp); break;
+    case StandardView::PlusY: rotation_ = lookRotation({0, -1, 0}, zUp); break;
+    case StandardView::MinusY: rotation_ = lookRotation({0, 1, 0}, zUp); break;
+    case StandardView::PlusZ: rotation_ = lookRotation({0, 0, -1}, yUp); break;
+    case StandardView::MinusZ: rotation_ = lookRotation({0, 0, 1}, yUp); break;
+    case StandardView::Isometric: rotation_ = lookRotation({-1, -1, -1}, zUp); break;
+  }
+}
+
+void Camera::orbit(double azimuthDeg, double elevationDeg) {
+  // Rotations about the camera's own axes: dragging always turns the model the way the
+  // mouse moves, whatever the current orientation.
+  rotation_ = glm::normalize(rotation_ * glm::angleAxis(glm::radians(-azimuthDeg), glm::dvec3(0, 1, 0)) *
+                             glm::angleAxis(glm::radians(-elevationDeg), glm::dvec3(1, 0, 0)));
+}
+
+void Camera::pan(double dxFraction, double dyFraction) {
+  const double h = viewHeight();
+  target_ -= rotation_ * glm::dvec3(dxFraction * h, dyFraction * h, 0.0);
+}
+
+void Camera::zoom(double factor) {
+  if (factor > 0.0 && std::isfinite(factor)) distance_ = std::max(distance_ / factor, radius_ * 1e-6);
+}
+
+glm::dvec3 Camera::eye() const { return target_ + rotation_ * glm::dvec3(0, 0, distance_); }
+glm::dvec3 Camera::up() const { return rotation_ * glm::dvec3(0, 1, 0); }
+glm::dvec3 Camera::viewDirection() const { return rotation_ * glm::dvec3(0, 0, -1); }
+
+double Camera::viewHeight() const { return 2.0 * distance_ * std::tan(glm::radians(fovY_) * 0.5); }
+
+glm::dmat4 Camera::viewMatrix(const glm::dvec3& origin) const {
+  return glm::lookAt(eye() - origin, target_ - origin, up());
+}
+
+glm::dmat4 Camera::projectionMatrix(double aspect) const {
+  const double far = distance_ + 2.0 * radius_;
+  if (projection_ == Projection::Orthographic) {
+    const double h = 0.5 * viewHeight(), w = h * aspect;
+    return glm::ortho(-w, w, -h, h, distance_ - 2.0 * radius_, far);
+  }
+  const double near = std::max(distance_ - 2.0 * radius_, far * 1e-4);
+  return glm::perspective(glm::radians(fovY_), aspect, near, far);
+}
+
+}  // namespace volpost

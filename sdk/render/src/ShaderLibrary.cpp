@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/render/ShaderLibrary.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+namespace volpost::gl {
+namespace detail {
+const std::map<std::string, std::string_view>& embeddedShaders();  // generated
+}
+
+namespace {
+
+std::string rawSource(const std::string& name) {
+  if (const char* dir = std::getenv("VOLPOST_SHADER_DIR")) {
+    std::ifstream in(std::filesystem::path(dir) / name);
+    if (in) return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto& files = detail::embeddedShaders();
+  const auto it = files.find(name);
+  if (it == files.end()) throw std::runtime_error("no shader file named " + name);
+  return std::string(it->second);
+}
+
+std::string resolveIncludes(const std::string& name, std::set<std::string>& seen) {
+  if (!seen.insert(name).second) return "";  // each file once (include guards for free)
+  std::istringstream in(rawSource(name));
+  std::ostringstream out;
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto pos = line.find("#include");
+    if (pos != std::string::npos && line.find_first_not_of(" \t") == pos) {
+      const auto a = line.find('"'), b = line.rfind('"');
+      if (a == std::string::npos || b <= a) throw std::runtime_error(name + ": bad #include line: " + line);
+      out << resolveIncludes(line.substr(a + 1, b - a - 1), seen);
+    } else {
+      out << line << '\n';
+    }
+  }
+  return out.str();
+}
+
+GLenum stageOf(const std::string& file) {
+  const std::string ext = std::filesystem::path(file).extension().string();
+  if (ext == ".vert") return GL_VERTEX_SHADER;
+  if (ext == ".frag") return GL_FRAGMENT_SHADER;
+  if (ext == ".geom") return GL_GEOMETRY_SHADER;
+  if (ext == ".comp") return GL_COMPUTE_SHADER;
+  throw std::runtime_error("unknown shader stage for " + file);
+}
+
+std::string numbered(const std::string& source) {
+  std::istringstream in(source);
+  std::ostringstream out;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) out << n << ": " << line << '\n';
+  return out.str();
+}
+
+}  // namespace
+
+std::string shaderSource(const std::string& name) {
+  std::set<std::string> seen;
+  return resolveIncludes(name, seen);
+}
+
+std::vector<std::string> shaderNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, _] : detail::embeddedShaders()) names.push_back(name);
+  return names;
+}
+
+Program buildProgram(const std::vector<std::string>& stageFiles) {
+  Program program(glCreateProgram());
+  std::vector<GLuint> shaders;
+  for (const std::string& file : stageFiles) {
+    const std::string src = shaderSource(file);
+    const GLuint shader = glCreateShader(stageOf(file));
+    const char* text = src.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      char log[4096];
+      glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+      glDeleteShader(shader);
+      for (GLuint s : shaders) glDeleteShader(s);
+      throw std::runtime_error("compiling " + file + ":\n" + log + "\nsource:\n" + numbered(src));
+    }
+    glAttachShader(program.id(), shader);
+    shaders.push_back(shader);
+  }
+  glLinkProgram(program.id());
+  for (GLuint s : shaders) glDeleteShader(s);
+  GLint ok = 0;
+  glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetProgramInfoLog(program.id(), sizeof log, nullptr, log);
+    std::string names;
+    for (const auto& f : stageFiles) names += f + " ";
+    throw std::runtime_error("linking " + names + ":\n" + log);
+  }
+  return program;
+}
+
+}  // namespace volpost::gl

@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/render/SurfaceRenderer.hpp>
+
+#include <volpost/render/ShaderLibrary.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <unordered_map>
+#include <vector>
+
+namespace volpost {
+namespace {
+
+struct SurfaceVertex {
+  float position[3];
+  float normal[3];
+  std::uint32_t node;
+  std::uint32_t cell;
+};
+static_assert(sizeof(SurfaceVertex) == 32);
+
+// Non-finite results are uploaded as this value; the shader draws them in noValueColor.
+// (A sentinel rather than NaN: interpolation and comparisons of NaN are not portable.)
+constexpr float kNoValue = 3.0e38f;
+constexpr int kColorMapTexels = 256;
+
+}  // namespace
+
+void SurfaceRenderer::initialize() {
+  surfaceProgram_ = gl::buildProgram({"surface.vert", "surface.frag"});
+  edgeProgram_ = gl::buildProgram({"edges.vert", "edges.frag"});
+  surfaceVao_ = gl::createVertexArray();
+  edgeVao_ = gl::createVertexArray();
+  surfaceVbo_ = gl::createBuffer();
+  edgeVbo_ = gl::createBuffer();
+  scalars_ = gl::createBuffer();
+  colorMap_ = gl::createTexture(GL_TEXTURE_1D);
+  glTextureStorage1D(colorMap_.id(), 1, GL_RGBA8, kColorMapTexels);
+  glTextureParameteri(colorMap_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(colorMap_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(colorMap_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  setColorMap(ColorMap::named("cool-warm"));
+
+  const GLuint vao = surfaceVao_.id();
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(SurfaceVertex, position));
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(SurfaceVertex, normal));
+  glEnableVertexArrayAttrib(vao, 2);
+  glVertexArrayAttribIFormat(vao, 2, 1, GL_UNSIGNED_INT, offsetof(SurfaceVertex, node));
+  glEnableVertexArrayAttrib(vao, 3);
+  glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, offsetof(SurfaceVertex, cell));
+  for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vao, a, 0);
+  glEnableVertexArrayAttrib(edgeVao_.id(), 0);
+  glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(edgeVao_.id(), 0, 0);
+  // An empty buffer still needs storage to be bound as an SSBO.
+  const float none = kNoValue;
+  glNamedBufferData(scalars_.id(), sizeof none, &none, GL_DYNAMIC_DRAW);
+  gl::check("SurfaceRenderer::initialize");
+}
+
+void SurfaceRenderer::release() {
+  surfaceProgram_.reset();
+  edgeProgram_.reset();
+  surfaceVao_.reset();
+  edgeVao_.reset();
+  surfaceVbo_.reset();
+  edgeVbo_.reset();
+  scalars_.reset();
+  colorMap_.reset();
+  triangleVertices_ = edgeVertices_ = 0;
+}
+
+void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
+  const SurfaceMesh& m = surface.mesh;
+  std::vector<SurfaceVertex> vertices;
+  vertices.reserve(m.n_faces() * 3);
+  for (const auto f : m.faces()) {
+    const auto n = m.normal(f);
+    const std::uint32_t cell = m.property(surface.cellOfFace, f);
+    for (const auto v : f.vertices()) {
+      const auto p = m.point(v);
+      vertices.push_back({{p[0], p[1], p[2]}, {n[0], n[1], n[2]}, m.property(surface.nodeOfVertex, v), cell});
+    }
+  }
+  triangleVertices_ = GLsizei(vertices.size());
+  glNamedBufferData(surfaceVbo_.id(), GLsizeiptr(vertices.size() * sizeof(SurfaceVertex)),
+                    vertices.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(surfaceVao_.id(), 0, surfaceVbo_.id(), 0, sizeof(SurfaceVertex));
+
+  // Edge endpoints come from the mesh nodes through the vertex property.
+  std::vector<glm::vec3> positionOfNode;
+  std::vector<float> edgeData;
+  edgeData.reserve(surface.edges.size() * 6);
+  std::unordered_map<NodeIndex, glm::vec3> nodePos;
+  nodePos.reserve(m.n_vertices());
+  for (const auto v : m.vertices()) {
+    const auto p = m.point(v);
+    nodePos[m.property(surface.nodeOfVertex, v)] = glm::vec3(p[0], p[1], p[2]);
+  }
+  for (const auto& e : surface.edges)
+    for (NodeIndex n : e) {
+      const auto it = nodePos.find(n);
+      if (it == nodePos.end()) continue;
+      edgeData.insert(edgeData.end(), {it->second.x, it->second.y, it->second.z});
+    }
+  edgeVertices_ = GLsizei(edgeData.size() / 3);
+  glNamedBufferData(edgeVbo_.id(), GLsizeiptr(edgeData.size() * sizeof(float)), edgeData.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 3 * sizeof(float));
+  gl::check("SurfaceRenderer::setSurface");
+}
+
+void SurfaceRenderer::setScalars(FieldLocation location, std::span<const double> values, double min, double max) {
+  std::vector<float> data(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    data[i] = std::isfinite(values[i]) ? float(values[i]) : kNoValue;
+  if (data.empty()) data.push_back(kNoValue);
+  glNamedBufferData(scalars_.id(), GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_DYNAMIC_DRAW);
+  location_ = location == FieldLocation::Node ? 0 : 1;
+  min_ = float(min);
+  max_ = float(max);
+  gl::check("SurfaceRenderer::setScalars");
+}
+
+void SurfaceRenderer::clearScalars() { location_ = -1; }
+
+void SurfaceRenderer::setColorMap(const ColorMap& map) {
+  const auto texels = map.rgba8(kColorMapTexels);
+  glTextureSubImage1D(colorMap_.id(), 0, 0, kColorMapTexels, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+}
+
+void SurfaceRenderer::render(const RenderContext& ctx) {
+  if (triangleVertices_ == 0) return;
+  const glm::mat4 view(ctx.camera.viewMatrix(ctx.origin));
+  const glm::mat4 proj(ctx.camera.projectionMatrix(ctx.aspect()));
+  const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;
+
+  const GLuint p = surfaceProgram_.id();
+  glUseProgram(p);
+  glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "modelView"), 1, GL_FALSE, glm::value_ptr(view));
+  glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "projection"), 1, GL_FALSE, glm::value_ptr(proj));
+  glProgramUniform1i(p, glGetUniformLocation(p, "scalarLocation"), location_);
+  glProgramUniform1f(p, glGetUniformLocation(p, "valueMin"), min_);
+  glProgramUniform1f(p, glGetUniformLocation(p, "valueMax"), max_);
+  glProgramUniform1i(p, glGetUniformLocation(p, "lighting"), lighting_ ? 1 : 0);
+  glProgramUniform1i(p, glGetUniformLocation(p, "orthographic"), ortho ? 1 : 0);
+  glProgramUniform3fv(p, glGetUniformLocation(p, "noValueColor"), 1, glm::value_ptr(noValueColor));
+  glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
+  glProgramUniform1i(p, glGetUniformLocation(p, "colorMap"), 0);
+  glBindTextureUnit(0, colorMap_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scalars_.id());
+  glBindVertexArray(surfaceVao_.id());
+  // Push the faces back a little so element edges drawn on them are not z-fighting.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+
+  if (showEdges_ && edgeVertices_ > 0) {
+    const GLuint e = edgeProgram_.id();
+    glUseProgram(e);
+    glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "modelView"), 1, GL_FALSE, glm::value_ptr(view));
+    glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "projection"), 1, GL_FALSE, glm::value_ptr(proj));
+    glProgramUniform3fv(e, glGetUniformLocation(e, "color"), 1, glm::value_ptr(edgeColor));
+    glBindVertexArray(edgeVao_.id());
+    glDrawArrays(GL_LINES, 0, edgeVertices_);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+  gl::check("SurfaceRenderer::render");
+}
+
+}  // namespace volpost

@@ -1,0 +1,12 @@
+// Maps a scalar onto the 1D color-map texture. Values at or above NO_VALUE are missing
+// results (NaN in the file) and get the no-value color.
+const float NO_VALUE = 1.0e38;
+
+vec3 colorForValue(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor) {
+  if (!(value < NO_VALUE)) return noValueColor;
+  float t = vmax > vmin ? (value - vmin) / (vmax - vmin) : 0.5;
+  t = clamp(t, 0.0, 1.0);
+  // Sample at texel centres so t = 0 and t = 1 hit the map's end colors exactly.
+  float n = float(textureSize(colorMap, 0));
+  return texture(colorMap, (t * (n - 1.0) + 0.5) / n).rgb;
+}

@@ -1,0 +1,29 @@
+#version 450 core
+#include "common/colormap.glsl"
+
+in vec3 vViewPosition;
+in vec3 vViewNormal;
+in float vValue;
+
+uniform sampler1D colorMap;
+uniform float valueMin;
+uniform float valueMax;
+uniform int scalarLocation;
+uniform bool lighting;
+uniform bool orthographic;
+uniform vec3 noValueColor;
+uniform vec3 plainColor;
+
+out vec4 fragColor;
+
+void main() {
+  vec3 base = scalarLocation < 0 ? plainColor
+                                 : colorForValue(colorMap, vValue, valueMin, valueMax, noValueColor);
+  if (lighting) {
+    // Headlight, two-sided: a face seen head-on shows the exact color-map color.
+    vec3 toEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
+    float diffuse = abs(dot(normalize(vViewNormal), toEye));
+    base *= 0.35 + 0.65 * diffuse;
+  }
+  fragColor = vec4(base, 1.0);
+}

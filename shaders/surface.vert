@@ -1,0 +1,25 @@
+#version 450 core
+// Boundary surface: positions relative to the model center, one scalar per node or cell
+// fetched from an SSBO so that changing the result re-uploads only the scalars.
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in uint node;
+layout(location = 3) in uint cell;
+
+layout(std430, binding = 0) readonly buffer Scalars { float scalars[]; };
+
+uniform mat4 modelView;
+uniform mat4 projection;
+uniform int scalarLocation;  // -1 none, 0 per node, 1 per cell
+
+out vec3 vViewPosition;
+out vec3 vViewNormal;
+out float vValue;
+
+void main() {
+  vec4 viewPos = modelView * vec4(position, 1.0);
+  vViewPosition = viewPos.xyz;
+  vViewNormal = mat3(modelView) * normal;  // rotation + translation only: no inverse needed
+  vValue = scalarLocation == 0 ? scalars[node] : scalarLocation == 1 ? scalars[cell] : 0.0;
+  gl_Position = projection * viewPos;
+}
