@@ -4,6 +4,7 @@
 in vec3 vViewPosition;
 in vec3 vViewNormal;
 in float vValue;
+in float vMissing;
 
 uniform sampler1D colorMap;
 uniform float valueMin;
@@ -18,6 +19,7 @@ out vec4 fragColor;
 
 void main() {
   vec3 base = scalarLocation < 0 ? plainColor
+             : vMissing > 0.0    ? noValueColor
                                  : colorForValue(colorMap, vValue, valueMin, valueMax, noValueColor);
   if (lighting) {
     // Headlight, two-sided: a face seen head-on shows the exact color-map color.

@@ -3,6 +3,7 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QImage>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -34,6 +35,7 @@ void Viewport::initializeGL() {
   connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanupGL, Qt::UniqueConnection);
   try {
     scene_.initialize();
+    overlay_.initialize();
     scene_.setSession(session_);
     scene_.setColorMap(colorMap_);
     scene_.setScalars(view_ ? &*view_ : nullptr, range_);
@@ -47,6 +49,7 @@ void Viewport::cleanupGL() {
   if (!scene_.initialized()) return;
   makeCurrent();
   scene_.release();
+  overlay_.release();
   doneCurrent();
 }
 
@@ -54,6 +57,7 @@ void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   view_.reset();
   withContext([&] { scene_.setSession(session_); });
+  camera_.setView(StandardView::Isometric);
   fit();
 }
 
@@ -109,14 +113,27 @@ void Viewport::paintGL() {
     emit renderFailed(e.what());
     return;
   }
-  if (showLegend_ && view_) {
-    QPainter painter(this);
-    LegendContent legend{QString::fromStdString(view_->quantity.displayName()),
-                         QString("%1%2").arg(QString::fromStdString(view_->stepLabel),
-                                             view_->location == FieldLocation::Node ? "  per node" : "  per cell"),
-                         range_.min, range_.max, view_->range.nanCount};
+  if (showLegend_ && view_) drawLegend(ctx.width, ctx.height);
+}
+
+// The legend is painted on the CPU (same code as the PNG export) and drawn as a texture:
+// no QPainter on the GL context, so the core-profile state stays ours.
+void Viewport::drawLegend(int w, int h) {
+  QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
+  image.setDevicePixelRatio(devicePixelRatioF());
+  image.fill(Qt::transparent);
+  {
+    QPainter painter(&image);
+    const LegendContent legend{QString::fromStdString(view_->quantity.displayName()),
+                               QString("%1%2").arg(QString::fromStdString(view_->stepLabel),
+                                                   view_->location == FieldLocation::Node ? "  per node" : "  per cell"),
+                               range_.min, range_.max, view_->range.nanCount};
     paintLegend(painter, rect(), colorMap_, legend);
   }
+  overlay_.setImage(w, h, {image.constBits(), std::size_t(image.sizeInBytes())});
+  glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
+  glViewport(0, 0, w, h);
+  overlay_.render();
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) { lastMouse_ = event->position().toPoint(); }

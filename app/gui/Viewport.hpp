@@ -7,6 +7,8 @@
 #include "../core/Legend.hpp"
 #include "../core/SceneRenderer.hpp"  // brings in epoxy before any Qt GL header
 
+#include <volpost/render/OverlayRenderer.hpp>
+
 #include <QOpenGLWidget>
 #include <QPoint>
 
@@ -49,7 +51,10 @@ class Viewport : public QOpenGLWidget {
   template <typename F>
   void withContext(F&& f);
 
+  void drawLegend(int width, int height);
+
   SceneRenderer scene_;
+  OverlayRenderer overlay_;
   std::shared_ptr<const ModelSession> session_;
   std::optional<ScalarView> view_;
   DisplayRange range_;

@@ -61,7 +61,8 @@ glm::dvec3 ColorMap::at(double t) const {
 std::vector<unsigned char> ColorMap::rgba8(int count) const {
   std::vector<unsigned char> out(std::size_t(count) * 4);
   for (int i = 0; i < count; ++i) {
-    const glm::dvec3 c = at((i + 0.5) / count);
+    // Texel i holds t = i / (count - 1); shaders sample texel centres accordingly.
+    const glm::dvec3 c = at(count > 1 ? double(i) / (count - 1) : 0.0);
     for (int k = 0; k < 3; ++k)
       out[std::size_t(i) * 4 + k] = (unsigned char)std::lround(std::clamp(c[k], 0.0, 1.0) * 255.0);
     out[std::size_t(i) * 4 + 3] = 255;

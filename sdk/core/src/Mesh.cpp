@@ -4,8 +4,14 @@
 #include <glm/geometric.hpp>
 
 #include <cassert>
+#include <cmath>
 
 namespace volpost {
+namespace {
+
+bool isFinite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+}  // namespace
 
 double Bounds::diagonal() const { return valid ? glm::length(max - min) : 0.0; }
 
@@ -48,13 +54,14 @@ Bounds Mesh::bounds() const {
     if (n < used.size()) used[n] = 1;
   Bounds b;
   for (std::size_t i = 0; i < nodes.size(); ++i)
-    if (used[i]) b.extend(nodes[i]);
+    if (used[i] && isFinite(nodes[i])) b.extend(nodes[i]);
   return b;
 }
 
 Bounds Mesh::allNodeBounds() const {
   Bounds b;
-  for (const auto& p : nodes) b.extend(p);
+  for (const auto& p : nodes)
+    if (isFinite(p)) b.extend(p);
   return b;
 }
 

@@ -88,22 +88,27 @@ double faceWarp(const Mesh& mesh, std::span<const NodeIndex> nodes, const CellFa
   return std::abs(glm::dot(b - a, n) / len) / size;
 }
 
+// A quad is self-intersecting (bow-tie) or non-convex when the two triangles of one of
+// its diagonal splits face opposite ways. Warped but convex quads pass.
 bool faceTwisted(const Mesh& mesh, std::span<const NodeIndex> nodes, const CellFace& f) {
   glm::dvec3 p[4];
   for (int k = 0; k < 4; ++k) p[k] = mesh.nodes[nodes[f.corners[k]]];
-  // A bow-tie (or strongly non-convex) quad: corner normals disagree in sign.
-  const glm::dvec3 ref = glm::cross(p[2] - p[0], p[3] - p[1]);
-  for (int k = 0; k < 4; ++k) {
-    const glm::dvec3 n = glm::cross(p[(k + 1) % 4] - p[k], p[(k + 3) % 4] - p[k]);
-    if (glm::dot(n, ref) < 0.0) return true;
+  for (int d = 0; d < 2; ++d) {
+    const glm::dvec3 a = p[d], b = p[d + 1], c = p[d + 2], e = p[(d + 3) % 4];
+    if (glm::dot(glm::cross(b - a, c - a), glm::cross(c - a, e - a)) < 0.0) return true;
   }
   return false;
 }
 
+double longestEdge(const Mesh& mesh, std::span<const NodeIndex> nodes, const CellTopology& topo) {
+  double longest = 0.0;
+  for (const CellEdge& e : topo.edges)
+    longest = std::max(longest, glm::length(mesh.nodes[nodes[e.a]] - mesh.nodes[nodes[e.b]]));
+  return longest;
+}
+
 void checkCells(Model& model) {
   const Mesh& mesh = model.mesh;
-  const double scale = mesh.bounds().diagonal();
-  const double tinyVolume = 1e-12 * scale * scale * scale;
   std::vector<std::size_t> inverted, degenerate, repeated, warped, twisted;
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
     const auto nodes = mesh.cellNodes(c);
@@ -118,7 +123,9 @@ void checkCells(Model& model) {
     for (NodeIndex n : nodes) ok = ok && finite(mesh.nodes[n]);
     if (!ok) continue;
     const double v = signedCellVolume(mesh, c);
-    if (std::abs(v) <= tinyVolume) degenerate.push_back(c);
+    // Relative to the cell's own size, so slivers are caught in tiny and huge models alike.
+    const double edge = longestEdge(mesh, nodes, topo);
+    if (std::abs(v) <= 1e-6 * edge * edge * edge) degenerate.push_back(c);
     else if (v < 0.0) inverted.push_back(c);
     bool isWarped = false, isTwisted = false;
     for (const CellFace& f : topo.faces) {

@@ -23,7 +23,7 @@ class ColorMap {
 
   const std::string& name() const { return name_; }
   glm::dvec3 at(double t) const;  ///< t clamped to [0, 1]
-  /// `count` RGBA8 texels sampled at texel centres, for a 1D texture.
+  /// `count` RGBA8 texels for a 1D texture; texel i holds the color at t = i / (count - 1).
   std::vector<unsigned char> rgba8(int count) const;
 
  private:

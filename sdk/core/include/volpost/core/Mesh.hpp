@@ -51,7 +51,7 @@ class Mesh {
   void remapNodes(const std::vector<NodeIndex>& map);
 
   std::map<CellType, std::size_t> countsByType() const;
-  /// Bounds of the nodes that cells use (points no cell uses are ignored).
+  /// Bounds of the nodes that cells use (unused and non-finite points are ignored).
   Bounds bounds() const;
   /// Bounds of every node, used or not.
   Bounds allNodeBounds() const;

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// `volpost info` and `volpost render` as processes: output, exit codes, messages.
+#include "../TestSupport.hpp"
+#include "ProcessRunner.hpp"
+
+#include <QImage>
+
+using volpost::test::dataFile;
+using volpost::test::runVolpost;
+
+TEST(InfoCommand, PrintsCountsFieldsAndRanges) {
+  const auto r = runVolpost("info " + dataFile("bar/bar_tet4.vtu"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* text : {"nodes:    3091", "cells:    12431", "tet4      12431", "x [0, 10]", "symmetric tensor",
+                           "S von Mises [58.5463, 102.712]", "region           cell", "defects:  none found"})
+    EXPECT_NE(r.output.find(text), std::string::npos) << "missing '" << text << "' in\n" << r.output;
+}
+
+TEST(InfoCommand, ListsDefectsOfAFlaggedFile) {
+  const auto r = runVolpost("info " + dataFile("bad/inverted_tets.vtu"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("inverted-cells"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("5 inverted cells"), std::string::npos) << r.output;
+}
+
+TEST(InfoCommand, BadFileGivesExitCode1AndALocatedMessage) {
+  const auto r = runVolpost("info " + dataFile("bad/index_out_of_range.vtu"));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("index_out_of_range.vtu:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("cell 3 uses point 608"), std::string::npos) << r.output;
+  const auto missing = runVolpost("info /no/such/model.vtu");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.output.find("cannot open"), std::string::npos) << missing.output;
+  EXPECT_EQ(runVolpost("info").exitCode, 2);
+}
+
+TEST(RenderCommand, WritesAPngOfTheRequestedSize) {
+  const std::string out = (std::filesystem::temp_directory_path() / "volpost_cli_render.png").string();
+  std::filesystem::remove(out);
+  const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --field S.mises --size 96x64 --camera iso,az=30 -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find(out), std::string::npos) << "prints the image path";
+  const QImage image(QString::fromStdString(out));
+  ASSERT_FALSE(image.isNull());
+  EXPECT_EQ(image.size(), QSize(96, 64));
+}
+
+TEST(RenderCommand, ExplainsBadArguments) {
+  const std::string model = dataFile("bar/bar_tet4.vtu");
+  const auto noField = runVolpost("render " + model + " --field S.bogus -o /tmp/x.png");
+  EXPECT_EQ(noField.exitCode, 1);
+  EXPECT_NE(noField.output.find("available: U.magnitude"), std::string::npos) << noField.output;
+  const auto badSize = runVolpost("render " + model + " --size 0x5 -o /tmp/x.png");
+  EXPECT_EQ(badSize.exitCode, 2);
+  EXPECT_NE(badSize.output.find("--size 0x5"), std::string::npos) << badSize.output;
+  const auto badCamera = runVolpost("render " + model + " --camera sideways -o /tmp/x.png");
+  EXPECT_EQ(badCamera.exitCode, 1);
+  EXPECT_NE(badCamera.output.find("unknown item 'sideways'"), std::string::npos) << badCamera.output;
+  const auto badStep = runVolpost("render " + model + " --field S11 --step 3 -o /tmp/x.png");
+  EXPECT_EQ(badStep.exitCode, 1);
+  EXPECT_NE(badStep.output.find("step 3 does not exist"), std::string::npos) << badStep.output;
+  EXPECT_EQ(runVolpost("render " + model).exitCode, 2);
+  const auto unwritable = runVolpost("render " + model + " -o /no/such/folder/x.png");
+  EXPECT_EQ(unwritable.exitCode, 1);
+  EXPECT_NE(unwritable.output.find("cannot write"), std::string::npos) << unwritable.output;
+}

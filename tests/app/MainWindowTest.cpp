@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: MIT
+// The window under a (virtual) X display: open a model, switch the result, take a
+// screenshot, fail to open a bad file without losing the model.
+#include "gui/MainWindow.hpp"
+#include "gui/Viewport.hpp"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QSignalSpy>
+#include <QSurfaceFormat>
+#include <QTest>
+#include <QTimer>
+
+#include <cstdlib>
+
+using namespace volpost;
+using namespace volpost::app;
+
+class MainWindowTest : public QObject {
+  Q_OBJECT
+
+ private:
+  std::unique_ptr<PluginManager> plugins_;
+  std::unique_ptr<MainWindow> window_;
+
+  bool open(const QString& path) {
+    QSignalSpy finished(window_.get(), &MainWindow::loadFinished);
+    window_->openFile(path);
+    if (!finished.wait(30000)) return false;
+    return finished.first().first().toBool();
+  }
+
+  // Counts pixels that are not background, and a checksum of the picture.
+  static std::pair<int, quint64> summarize(const QImage& image) {
+    int drawn = 0;
+    quint64 sum = 0;
+    const QRgb background = image.pixel(2, image.height() - 3);
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width() / 2; ++x) {  // leave the legend out
+        const QRgb p = image.pixel(x, y);
+        drawn += p != background;
+        sum += quint64(p) * quint64(x + 7 * y + 1);
+      }
+    return {drawn, sum};
+  }
+
+ private slots:
+  void initTestCase() {
+    if (QGuiApplication::platformName() == "offscreen" || QGuiApplication::platformName() == "minimal")
+      QSKIP("not run: needs an X display (run under xvfb-run)");
+    plugins_ = std::make_unique<PluginManager>();
+    plugins_->loadFrom({VOLPOST_PLUGIN_DIR});
+    QVERIFY(!plugins_->readers().readers().empty());
+    window_ = std::make_unique<MainWindow>(*plugins_);
+    window_->resize(900, 600);
+    window_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(window_.get()));
+  }
+
+  void opensAModelAndColorsItByStress() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    auto* box = window_->findChild<QComboBox*>("quantityBox");
+    QVERIFY(box);
+    QCOMPARE(box->currentData().toString(), QString("S.mises"));
+    QCOMPARE(window_->session()->model().mesh.cellCount(), std::size_t(12431));
+    const QImage image = window_->viewport()->grabFramebuffer();
+    const auto [drawn, sum] = summarize(image);
+    QVERIFY2(drawn > image.width() / 2 * image.height() / 50, "the model covers part of the view");
+    if (const char* shot = std::getenv("VOLPOST_SCREENSHOT")) window_->grab().save(shot);
+  }
+
+  void switchingTheResultChangesThePicture() {
+    const auto before = summarize(window_->viewport()->grabFramebuffer());
+    QVERIFY(window_->selectQuantity("U.magnitude"));
+    QCOMPARE(window_->activeQuantity()->key(), std::string("U.magnitude"));
+    const auto after = summarize(window_->viewport()->grabFramebuffer());
+    QCOMPARE(after.first, before.first);  // same geometry...
+    QVERIFY(after.second != before.second);  // ...other colors
+  }
+
+  void standardViewsAndProjectionMoveTheCamera() {
+    const auto iso = summarize(window_->viewport()->grabFramebuffer());
+    window_->viewport()->setStandardView(StandardView::PlusX);  // looking down the bar's axis
+    const auto end = summarize(window_->viewport()->grabFramebuffer());
+    QVERIFY(end.first < iso.first);
+    window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
+  void aBadFileLeavesTheModelAsItWas() {
+    const auto before = window_->session();
+    QTimer closer;  // dismiss the error box the window shows
+    connect(&closer, &QTimer::timeout, [] {
+      if (QWidget* modal = QApplication::activeModalWidget()) modal->close();
+    });
+    closer.start(50);
+    QVERIFY(!open(VOLPOST_TEST_DATA "/bad/truncated_appended.vtu"));
+    closer.stop();
+    QCOMPARE(window_->session(), before);
+  }
+
+  void cleanupTestCase() { window_.reset(); }
+};
+
+int main(int argc, char** argv) {
+  QSurfaceFormat format;
+  format.setVersion(4, 5);
+  format.setProfile(QSurfaceFormat::CoreProfile);
+  format.setDepthBufferSize(24);
+  QSurfaceFormat::setDefaultFormat(format);
+  QApplication app(argc, argv);
+  MainWindowTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "MainWindowTest.moc"

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// Runs the volpost executable as a user would and captures what it prints.
+#pragma once
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace volpost::test {
+
+struct RunResult {
+  int exitCode = -1;
+  std::string output;  ///< stdout and stderr together
+};
+
+inline RunResult runVolpost(const std::string& args) {
+  const std::string command = std::string(VOLPOST_EXECUTABLE) + " " + args + " 2>&1";
+  RunResult r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+}  // namespace volpost::test

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/ColorMap.hpp>
+#include <volpost/render/Camera.hpp>
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+using namespace volpost;
+
+TEST(ColorMap, EndsAndMiddleOfEveryMap) {
+  for (const auto& name : ColorMap::names()) {
+    const ColorMap m = ColorMap::named(name);
+    const auto texels = m.rgba8(256);
+    EXPECT_EQ(texels.size(), 1024u);
+    EXPECT_EQ(m.at(-5.0), m.at(0.0)) << name;
+    EXPECT_EQ(m.at(7.0), m.at(1.0)) << name;
+    EXPECT_EQ(m.at(std::nan("")), m.at(0.0)) << name;
+  }
+  EXPECT_EQ(ColorMap::named("grayscale").at(0.25), glm::dvec3(0.25));
+  EXPECT_THROW(ColorMap::named("jet2"), std::invalid_argument);
+}
+
+TEST(Camera, FitCentersTheModelAndStandardViewsLookAlongAxes) {
+  Camera c;
+  Bounds b;
+  b.extend({0, 0, 0});
+  b.extend({10, 1, 1});
+  c.setView(StandardView::PlusX);
+  c.fit(b);
+  EXPECT_EQ(c.target(), glm::dvec3(5, 0.5, 0.5));
+  EXPECT_GT(c.eye().x, 10.0);
+  EXPECT_NEAR(glm::length(c.viewDirection() - glm::dvec3(-1, 0, 0)), 0.0, 1e-12);
+  // The target projects to the image center.
+  const glm::dvec4 clip = c.projectionMatrix(1.5) * c.viewMatrix() * glm::dvec4(c.target(), 1.0);
+  EXPECT_NEAR(clip.x / clip.w, 0.0, 1e-12);
+  EXPECT_NEAR(clip.y / clip.w, 0.0, 1e-12);
+  // Every corner of the box is inside the view after fit.
+  for (double x : {0.0, 10.0})
+    for (double y : {0.0, 1.0})
+      for (double z : {0.0, 1.0}) {
+        const glm::dvec4 p = c.projectionMatrix(1.0) * c.viewMatrix() * glm::dvec4(x, y, z, 1.0);
+        for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(p[k] / p.w), 1.0);
+      }
+}
+
+TEST(Camera, OrbitKeepsDistanceAndZoomMovesCloser) {
+  Camera c;
+  Bounds b;
+  b.extend({-1, -1, -1});
+  b.extend({1, 1, 1});
+  c.fit(b);
+  const double d = glm::length(c.eye() - c.target());
+  c.orbit(37.0, -12.0);
+  EXPECT_NEAR(glm::length(c.eye() - c.target()), d, 1e-9);
+  c.zoom(2.0);
+  EXPECT_NEAR(glm::length(c.eye() - c.target()), d / 2.0, 1e-9);
+  c.pan(0.5, 0.0);
+  EXPECT_GT(glm::length(c.target()), 0.0);
+}

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// The meshio readers in a registry, as the host assembles them from the plugin.
+#pragma once
+
+#include "VtkLegacyReader.hpp"
+#include "VtuReader.hpp"
+
+#include <volpost/core/ReaderRegistry.hpp>
+
+namespace volpost::test {
+
+inline const ReaderRegistry& meshioReaders() {
+  static const meshio::VtuReader vtu;
+  static const meshio::VtkLegacyReader legacy;
+  static const ReaderRegistry registry = [] {
+    ReaderRegistry r;
+    r.add(&vtu);
+    r.add(&legacy);
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace volpost::test

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/Version.hpp>
+#include <volpost/plugin/PluginManager.hpp>
+
+#include <gtest/gtest.h>
+
+using namespace volpost;
+
+TEST(PluginManager, LoadsTheBundledReaderPlugin) {
+  PluginManager plugins;
+  plugins.loadFrom({VOLPOST_PLUGIN_DIR});
+  bool found = false;
+  for (const PluginRecord& r : plugins.records())
+    if (r.id == "meshio") {
+      found = true;
+      EXPECT_TRUE(r.loaded) << r.error.toStdString();
+      EXPECT_EQ(r.sdkVersion.toStdString(), VOLPOST_SDK_VERSION);
+      EXPECT_TRUE(r.provides.contains("reader"));
+    }
+  EXPECT_TRUE(found);
+  EXPECT_EQ(plugins.readers().readers().size(), 2u);
+}
+
+TEST(PluginManager, RefusesOtherSdkVersionsAndNonPluginsWithReasons) {
+  PluginManager plugins;
+  plugins.loadFrom({REFUSED_PLUGIN_DIR});
+  ASSERT_EQ(plugins.records().size(), 2u);
+  for (const PluginRecord& r : plugins.records()) {
+    EXPECT_FALSE(r.loaded);
+    if (r.path.contains("oldsdk"))
+      EXPECT_NE(r.error.toStdString().find("built against volpost SDK 0.9"), std::string::npos) << r.error.toStdString();
+    else
+      EXPECT_NE(r.error.toStdString().find("not a Qt plugin"), std::string::npos) << r.error.toStdString();
+  }
+  EXPECT_TRUE(plugins.readers().readers().empty());
+}
+
+TEST(PluginManager, SameIdTwiceIsRefusedTheSecondTime) {
+  PluginManager plugins;
+  plugins.loadFrom({VOLPOST_PLUGIN_DIR, VOLPOST_PLUGIN_DIR});
+  int loaded = 0, refused = 0;
+  for (const PluginRecord& r : plugins.records())
+    if (r.id == "meshio") (r.loaded ? loaded : refused)++;
+  EXPECT_EQ(loaded, 1);
+  EXPECT_EQ(refused, 1);
+}
+
+TEST(PluginManager, MissingFoldersAreIgnored) {
+  PluginManager plugins;
+  plugins.loadFrom({"/no/such/folder"});
+  EXPECT_TRUE(plugins.records().empty());
+}
