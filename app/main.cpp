@@ -24,7 +24,8 @@ void printUsage() {
   std::printf(
       "volpost %s - finite-element post-processing and volume rendering\n\n"
       "usage:\n"
-      "  volpost [MODEL] [--field Q]       open the window (optionally on MODEL, colored by Q)\n"
+      "  volpost [MODEL] [--field Q] [--screenshot FILE]\n"
+      "                                    open the window (optionally on MODEL, colored by Q)\n"
       "  volpost info MODEL                counts, bounds, fields and defects of MODEL\n"
       "  volpost render MODEL -o OUT.png   render MODEL headless (see volpost render --help)\n"
       "  volpost plugins                   list plugins and why any was refused\n"
@@ -51,7 +52,9 @@ int runWindow(int argc, char** argv) {
   QCommandLineParser parser;
   parser.addPositionalArgument("MODEL", "model to open");
   const QCommandLineOption field("field", "quantity to color by, e.g. S.mises", "Q");
+  const QCommandLineOption screenshot("screenshot", "save the window to FILE once MODEL is shown, then quit", "FILE");
   parser.addOption(field);
+  parser.addOption(screenshot);
   parser.addHelpOption();
   parser.process(app);
 
@@ -60,10 +63,15 @@ int runWindow(int argc, char** argv) {
   volpost::app::MainWindow window(plugins);
   window.show();
   if (!parser.positionalArguments().isEmpty()) {
-    const QString wanted = parser.value(field);
-    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted](bool ok) {
+    const QString wanted = parser.value(field), shot = parser.value(screenshot);
+    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted, shot](bool ok) {
       if (ok && !wanted.isEmpty() && !window.selectQuantity(wanted))
         std::fprintf(stderr, "volpost: warning: no quantity '%s' in this model\n", qPrintable(wanted));
+      if (shot.isEmpty()) return;
+      QTimer::singleShot(300, &window, [&window, shot] {
+        if (!window.grab().save(shot)) std::fprintf(stderr, "volpost: error: cannot write %s\n", qPrintable(shot));
+        QApplication::exit(window.grab().isNull() ? 1 : 0);
+      });
     });
     window.openFile(parser.positionalArguments().first());
   }

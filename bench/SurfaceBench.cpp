@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// Loading and surface rendering on the real meshes: read, check, boundary extraction,
+// and frame time of the boundary view at 512x512 along an orbit. Prints a Markdown table.
+//   volpost_bench [--frames N] [--size N]
+#include "core/ModelSession.hpp"
+#include "core/SceneRenderer.hpp"
+
+#include "VtkLegacyReader.hpp"
+#include "VtuReader.hpp"
+
+#include <volpost/core/MeshChecks.hpp>
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <sys/resource.h>
+
+using namespace volpost;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+struct Case {
+  const char* name;
+  const char* file;  // relative to ../shared/data, or tests/data when shared is absent
+  const char* quantity;
+};
+
+const Case kCases[] = {
+    {"bar tet4", "bar/tet4/bar_tet4.vtu", "S.mises"},       {"bar hex8", "bar/hex8/bar_hex8.vtu", "S.mises"},
+    {"bar wedge6", "bar/wedge6/bar_wedge6.vtu", "S.mises"}, {"bar tet10", "bar/tet10/bar_tet10.vtu", "S.mises"},
+    {"wheel tet4", "wheel/tet4/wheel_tet4.vtu", "S.mises"}, {"wheel mixed", "wheel/mixed/wheel_mixed.vtu", "S.mises"},
+    {"bracket tet10", "bracket/tet10/bracket_tet10.vtu", "T"},
+    {"post coarse", "post/coarse/post_coarse.vtu", "pressure"}, {"post fine", "post/fine/post_fine.vtu", "pressure"},
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int frames = 30, size = 512;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--frames")) frames = std::max(3, std::atoi(argv[i + 1]));
+    if (!std::strcmp(argv[i], "--size")) size = std::max(16, std::atoi(argv[i + 1]));
+  }
+  meshio::VtuReader vtu;
+  meshio::VtkLegacyReader legacy;
+  ReaderRegistry readers;
+  readers.add(&vtu);
+  readers.add(&legacy);
+
+  HeadlessContext context;
+  std::printf("device: %s\nframes: %d at %dx%d, orbiting 360 degrees\n\n", gl::describeContext().c_str(), frames, size, size);
+  std::printf("| mesh | cells | boundary tris | read ms | checks ms | boundary ms | frame ms min / median / max | Mtri/s |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  const bool shared = std::filesystem::exists(VOLPOST_SHARED_DATA);
+  if (!shared) std::fprintf(stderr, "../shared/data is absent: only the bundled bar is measured\n");
+  for (const Case& c : kCases) {
+    std::string path = std::string(VOLPOST_SHARED_DATA) + "/" + c.file;
+    if (!shared) {
+      if (std::strcmp(c.name, "bar tet4")) continue;
+      path = std::string(VOLPOST_TEST_DATA) + "/bar/bar_tet4.vtu";
+    }
+    const auto t0 = Clock::now();
+    auto model = readers.choose(path).read(path, {});
+    const auto t1 = Clock::now();
+    checkModel(*model);
+    const auto t2 = Clock::now();
+    std::shared_ptr<Model> sharedModel(std::move(model));
+    const BoundarySurface surface = extractBoundary(sharedModel->mesh);
+    const auto t3 = Clock::now();
+
+    const auto session = app::ModelSession::load(readers, path);
+    const app::ScalarView view = session->evaluate(session->findQuantity(c.quantity), 0);
+    OffscreenTarget target(size, size);
+    app::SceneRenderer scene;
+    scene.initialize();
+    scene.setSession(session);
+    scene.setScalars(&view, app::autoRange(view));
+    Camera camera;
+    camera.setView(StandardView::Isometric);
+    camera.fit(session->model().mesh.bounds());
+    std::vector<double> times;
+    for (int f = 0; f < frames; ++f) {
+      RenderContext ctx;
+      ctx.camera = camera;
+      ctx.width = ctx.height = size;
+      ctx.framebuffer = target.framebuffer();
+      const auto a = Clock::now();
+      scene.render(ctx);
+      glFinish();
+      times.push_back(ms(a, Clock::now()));
+      camera.orbit(360.0 / frames, 0.0);
+    }
+    scene.release();
+    std::sort(times.begin(), times.end());
+    const double median = times[times.size() / 2];
+    std::printf("| %s | %zu | %zu | %.1f | %.1f | %.1f | %.2f / %.2f / %.2f | %.1f |\n", c.name,
+                sharedModel->mesh.cellCount(), std::size_t(surface.mesh.n_faces()), ms(t0, t1), ms(t1, t2), ms(t2, t3),
+                times.front(), median, times.back(), double(surface.mesh.n_faces()) / median / 1e3);
+  }
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("\npeak resident memory: %.0f MiB\n", usage.ru_maxrss / 1024.0);
+  return 0;
+}
