@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <volpost/render/Camera.hpp>
+#include <volpost/core/Camera.hpp>
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/ColorMap.hpp>
-#include <volpost/render/Camera.hpp>
+#include <volpost/core/Camera.hpp>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // Everything a renderer needs to draw one frame, and nothing of the window it draws in.
 #pragma once
 
-#include <volpost/render/Camera.hpp>
+#include <volpost/core/Camera.hpp>
 #include <volpost/render/GL.hpp>
 
 #include <glm/vec4.hpp>

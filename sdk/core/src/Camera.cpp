@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/render/Camera.hpp>
+#include <volpost/core/Camera.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
