@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/optics/ReferenceRenderer.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace volpost::optics {
+namespace {
+
+struct Interval {
+  double t0, t1;
+  std::uint32_t tet;
+  bool operator<(const Interval& o) const { return t0 < o.t0 || (t0 == o.t0 && t1 < o.t1); }
+};
+
+// Restricts [t0, t1] to where A + t B > 0 (or == 0 on the inside of the perturbation).
+// Returns false when nothing is left.
+bool clipHalfSpace(double a, double b, bool tieInside, double& t0, double& t1) {
+  if (b == 0.0) return a > 0.0 || (a == 0.0 && tieInside);
+  const double t = -a / b;
+  if (b > 0.0) t0 = std::max(t0, t);
+  else t1 = std::min(t1, t);
+  return t0 < t1;
+}
+
+// Intervals of the ray inside each tet and the clip half-spaces, sorted front to back.
+std::vector<Interval> intervals(const TetVolume& volume, const glm::dvec3& o, const glm::dvec3& d, double tMin,
+                                double tMax, const RaySettings& settings) {
+  std::vector<Interval> out;
+  volume.forEachCandidate(o, d, tMin, tMax, [&](std::uint32_t index) {
+    const PreparedTet& tet = volume.tet(index);
+    double t0 = tMin, t1 = tMax;
+    for (const TetPlane& p : tet.planes)
+      if (!clipHalfSpace(glm::dot(p.normal, o) - p.offset, glm::dot(p.normal, d), p.tieInside, t0, t1)) return;
+    for (const ClipPlane& c : settings.clipPlanes) {
+      const glm::dvec3 point = c.point - volume.origin();
+      if (!clipHalfSpace(glm::dot(c.normal, o - point), glm::dot(c.normal, d), true, t0, t1)) return;
+    }
+    out.push_back({t0, t1, index});
+  });
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+struct LocalRay {
+  glm::dvec3 o, d;
+  double tMin, tMax;
+};
+
+LocalRay localRay(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {
+  const double len = glm::length(direction);
+  return {origin - volume.origin(), direction / len, tMin, tMax};
+}
+
+}  // namespace
+
+SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
+                          double tMin, double tMax, const RaySettings& settings) {
+  const LocalRay r = localRay(volume, origin, direction, tMin, tMax);
+  SegmentLight total;
+  for (const Interval& i : intervals(volume, r.o, r.d, r.tMin, r.tMax, settings)) {
+    const PreparedTet& tet = volume.tet(i.tet);
+    const double sFront = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t0 * r.d);
+    const double sBack = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t1 * r.d);
+    compositeBehind(total, integrateSegment(tf, sFront, sBack, i.t1 - i.t0));
+    if (total.transmittance < settings.terminationTransmittance) break;
+  }
+  return total;
+}
+
+double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
+                    const RaySettings& settings) {
+  const LocalRay r = localRay(volume, origin, direction, tMin, tMax);
+  double length = 0.0;
+  for (const Interval& i : intervals(volume, r.o, r.d, r.tMin, r.tMax, settings)) length += i.t1 - i.t0;
+  return length;
+}
+
+ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& tf, const Camera& camera, int width,
+                               int height, const RaySettings& settings, const Progress& progress, int threads) {
+  ReferenceImage image{width, height, std::vector<glm::dvec4>(std::size_t(width) * std::size_t(height))};
+  const double aspect = double(width) / double(height);
+  const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
+  const bool ortho = camera.projection() == Camera::Projection::Orthographic;
+  const auto unproject = [&](double x, double y, double z) {
+    const glm::dvec4 p = toModel * glm::dvec4(x, y, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  std::atomic<int> nextRow{0}, rowsDone{0};
+  std::atomic<bool> stop{false};
+  std::exception_ptr failure;
+  std::mutex failureMutex;
+  const auto work = [&](bool reports) {
+    try {
+      for (int y; !stop && (y = nextRow++) < height;) {
+        for (int x = 0; x < width; ++x) {
+          const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
+          // The ray through the pixel centre, from the near plane to the far plane.
+          const glm::dvec3 nearPoint = unproject(nx, ny, -1.0), farPoint = unproject(nx, ny, 1.0);
+          const glm::dvec3 start = ortho ? nearPoint : camera.eye();
+          const glm::dvec3 dir = farPoint - start;
+          const double length = glm::length(dir);
+          const double tStart = ortho ? 0.0 : glm::length(nearPoint - start);
+          const SegmentLight light = integrateRay(volume, tf, start, dir, tStart, length, settings);
+          image.pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
+              glm::dvec4(light.color, 1.0 - light.transmittance);
+        }
+        const int done = ++rowsDone;
+        if (reports) progress.report(double(done) / height);
+      }
+    } catch (...) {
+      std::lock_guard lock(failureMutex);
+      if (!failure) failure = std::current_exception();
+      stop = true;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int i = 1; i < threads; ++i) pool.emplace_back(work, false);
+  work(true);
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return image;
+}
+
+}  // namespace volpost::optics

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/core/optics/TetVolume.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace volpost::optics {
+namespace {
+
+// Sign of dot(n, delta) for the infinitesimal displacement delta = (e, e^2, e^3): every
+// point exactly on a plane is pushed to the same side by every tet that uses the plane.
+bool perturbedPositive(const glm::dvec3& n) {
+  if (n.x != 0.0) return n.x > 0.0;
+  if (n.y != 0.0) return n.y > 0.0;
+  return n.z > 0.0;
+}
+
+constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // face i is opposite vertex i
+
+}  // namespace
+
+TetVolume::TetVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+  const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
+  if (values.size() != expected)
+    throw std::invalid_argument("volume rendering: " + std::to_string(values.size()) + " values for " +
+                                std::to_string(expected) + (location == FieldLocation::Node ? " nodes" : " cells"));
+  for (const auto& [type, count] : mesh.countsByType())
+    if (type != CellType::Tet4 && type != CellType::Tet10)
+      throw std::invalid_argument("volume rendering needs tetrahedra; this mesh has " + std::to_string(count) + " " +
+                                  std::string(cellTypeName(type)) + " cells (split them into tetrahedra first)");
+  const Bounds b = mesh.bounds();
+  origin_ = b.valid ? b.center() : glm::dvec3(0.0);
+  std::vector<std::array<glm::dvec3, 2>> boxes;
+  tets_.reserve(mesh.cellCount());
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto nodes = mesh.cellNodes(c);
+    glm::dvec3 p[4];
+    double s[4];
+    bool finite = true;
+    for (int k = 0; k < 4; ++k) {
+      p[k] = mesh.nodes[nodes[k]] - origin_;
+      s[k] = location == FieldLocation::Node ? values[nodes[k]] : values[c];
+      finite = finite && std::isfinite(s[k]) && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z);
+    }
+    const glm::dmat3 edges(p[1] - p[0], p[2] - p[0], p[3] - p[0]);
+    const double det = glm::determinant(edges);
+    if (!finite || det == 0.0) {
+      ++skipped_;
+      continue;
+    }
+    PreparedTet tet;
+    for (int f = 0; f < 4; ++f) {
+      // The plane through the face's vertices taken in ascending global id order: the
+      // neighbour across this face computes bit-identical numbers.
+      std::array<int, 3> v = {kFaces[f][0], kFaces[f][1], kFaces[f][2]};
+      std::sort(v.begin(), v.end(), [&](int a, int bb) { return nodes[a] < nodes[bb]; });
+      const glm::dvec3 n = glm::cross(p[v[1]] - p[v[0]], p[v[2]] - p[v[0]]);
+      const double offset = glm::dot(n, p[v[0]]);
+      const double side = glm::dot(n, p[f]) - offset;  // the opposite vertex is inside
+      const double sign = side > 0.0 ? 1.0 : -1.0;
+      tet.planes[f] = {n * sign, offset * sign, perturbedPositive(n * sign)};
+    }
+    // Gradient from the edge differences: edges^T g = (s1 - s0, s2 - s0, s3 - s0).
+    const glm::dvec3 ds(s[1] - s[0], s[2] - s[0], s[3] - s[0]);
+    tet.gradient = glm::inverse(glm::transpose(edges)) * ds;
+    if (location == FieldLocation::Cell) tet.gradient = glm::dvec3(0.0);
+    tet.valueAtOrigin = s[0] - glm::dot(tet.gradient, p[0]);
+    tets_.push_back(tet);
+    glm::dvec3 lo = glm::min(glm::min(p[0], p[1]), glm::min(p[2], p[3]));
+    glm::dvec3 hi = glm::max(glm::max(p[0], p[1]), glm::max(p[2], p[3]));
+    const glm::dvec3 pad = (hi - lo) * 1e-9 + 1e-300;  // boxes only select candidates: be generous
+    boxes.push_back({lo - pad, hi + pad});
+  }
+  buildBvh(boxes);
+}
+
+void TetVolume::buildBvh(std::vector<std::array<glm::dvec3, 2>>& boxes) {
+  order_.resize(tets_.size());
+  std::iota(order_.begin(), order_.end(), 0u);
+  if (tets_.empty()) return;
+  nodes_.reserve(2 * tets_.size() / 4 + 2);
+  struct Task {
+    std::uint32_t node, first, count;
+  };
+  std::vector<Task> tasks;
+  nodes_.push_back({});
+  tasks.push_back({0, 0, std::uint32_t(tets_.size())});
+  while (!tasks.empty()) {
+    const Task t = tasks.back();
+    tasks.pop_back();
+    glm::dvec3 lo(INFINITY), hi(-INFINITY), clo(INFINITY), chi(-INFINITY);
+    for (std::uint32_t i = t.first; i < t.first + t.count; ++i) {
+      const auto& box = boxes[order_[i]];
+      lo = glm::min(lo, box[0]);
+      hi = glm::max(hi, box[1]);
+      const glm::dvec3 c = 0.5 * (box[0] + box[1]);
+      clo = glm::min(clo, c);
+      chi = glm::max(chi, c);
+    }
+    nodes_[t.node].lo = lo;
+    nodes_[t.node].hi = hi;
+    const glm::dvec3 extent = chi - clo;
+    if (t.count <= 4 || (extent.x == 0.0 && extent.y == 0.0 && extent.z == 0.0)) {
+      nodes_[t.node].first = t.first;
+      nodes_[t.node].count = t.count;
+      continue;
+    }
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const auto begin = order_.begin() + t.first, mid = begin + t.count / 2, end = begin + t.count;
+    std::nth_element(begin, mid, end, [&](std::uint32_t a, std::uint32_t b) {
+      return boxes[a][0][axis] + boxes[a][1][axis] < boxes[b][0][axis] + boxes[b][1][axis];
+    });
+    const std::uint32_t children = std::uint32_t(nodes_.size());
+    nodes_.push_back({});
+    nodes_.push_back({});
+    nodes_[t.node].first = children;
+    nodes_[t.node].count = 0;
+    tasks.push_back({children, t.first, t.count / 2});
+    tasks.push_back({children + 1, t.first + t.count / 2, t.count - t.count / 2});
+  }
+}
+
+bool TetVolume::hitsBox(const Node& n, const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax) {
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0.0) {
+      if (o[k] < n.lo[k] || o[k] > n.hi[k]) return false;
+      continue;
+    }
+    double t0 = (n.lo[k] - o[k]) / d[k], t1 = (n.hi[k] - o[k]) / d[k];
+    if (t0 > t1) std::swap(t0, t1);
+    tMin = std::max(tMin, t0);
+    tMax = std::min(tMax, t1);
+    if (tMin > tMax) return false;
+  }
+  return true;
+}
+
+}  // namespace volpost::optics
