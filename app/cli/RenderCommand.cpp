@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 // `volpost render MODEL --field Q -o out.png`: an image with no window and no X server.
 #include "../core/ImageRender.hpp"
+#include "../core/VolumeImage.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
 
+#include <QFile>
+
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 namespace volpost::app {
 namespace {
@@ -19,6 +24,28 @@ bool parseSize(const QString& text, int& w, int& h) {
   w = parts[0].toInt(&okW);
   h = parts[1].toInt(&okH);
   return okW && okH && w > 0 && h > 0 && w <= 16384 && h <= 16384;
+}
+
+// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
+bool parseClip(const QString& text, ClipPlane& plane) {
+  const QStringList parts = text.split(',');
+  if (parts.size() != 6) return false;
+  double v[6];
+  for (int i = 0; i < 6; ++i) {
+    bool ok = false;
+    v[i] = parts[i].toDouble(&ok);
+    if (!ok) return false;
+  }
+  plane = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  return plane.normal != glm::dvec3(0.0);
+}
+
+std::string readText(const QString& path) {
+  std::ifstream in(path.toStdString());
+  if (!in) throw std::runtime_error("cannot open " + path.toStdString());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 bool parseRange(const QString& text, DisplayRange& range) {
@@ -48,7 +75,16 @@ int runRender(const QStringList& args) {
   const QCommandLineOption noEdges("no-edges", "Hide element edges.");
   const QCommandLineOption noLegend("no-legend", "Hide the color legend.");
   const QCommandLineOption output(QStringList{"o", "output"}, "Output PNG file.", "FILE");
-  parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output});
+  const QCommandLineOption renderer("renderer", "surface (default): the boundary colored by the result; "
+                                                "reference: exact CPU volume rendering (tetrahedra).", "NAME", "surface");
+  const QCommandLineOption tfFile("tf", "Transfer function (volpost TF JSON) for volume rendering; default: a "
+                                        "cool-warm ramp over the result's range.", "FILE");
+  const QCommandLineOption clip("clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
+                                        "(repeatable; volume rendering).", "PLANE");
+  const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
+  const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
+  parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, tfFile, clip,
+                     floatOut, threads});
   parser.process(QStringList{"volpost render"} + args);
 
   if (parser.positionalArguments().size() != 1) {
@@ -84,12 +120,45 @@ int runRender(const QStringList& args) {
   request.edges = !parser.isSet(noEdges);
   request.legend = !parser.isSet(noLegend);
 
+  const QString rendererName = parser.value(renderer);
+  if (rendererName != "surface" && rendererName != "reference") {
+    printError(QString("--renderer %1 is not one of: surface, reference").arg(rendererName));
+    return 2;
+  }
+  std::vector<ClipPlane> clipPlanes;
+  for (const QString& c : parser.values(clip)) {
+    ClipPlane plane;
+    if (!parseClip(c, plane)) {
+      printError(QString("--clip %1 is not px,py,pz,nx,ny,nz with a non-zero normal").arg(c));
+      return 2;
+    }
+    clipPlanes.push_back(plane);
+  }
+  if (rendererName == "reference" && !parser.isSet(field)) {
+    printError("--renderer reference needs --field (the quantity to render)");
+    return 2;
+  }
+
   const QString path = parser.positionalArguments().first();
   auto plugins = loadPluginsForCli();
   try {
     const auto session = ModelSession::load(plugins->readers(), path.toStdString(), terminalProgress("reading"));
     if (parser.isSet(field)) request.quantity = session->findQuantity(parser.value(field).toStdString());
-    const QImage image = renderImage(*session, request);
+    QImage image;
+    if (rendererName == "reference") {
+      VolumeRequest volume{*request.quantity, request.step, request.camera, request.width, request.height, {}, clipPlanes,
+                           parser.value(threads).toInt()};
+      if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
+      const auto reference = renderVolumeReference(*session, volume, terminalProgress("rendering"));
+      const glm::dvec3 background(1.0);
+      image = toQImage(reference, background);
+      if (parser.isSet(floatOut) && !writePfm(reference, background, parser.value(floatOut).toStdString())) {
+        printError(QString("cannot write %1").arg(parser.value(floatOut)));
+        return 1;
+      }
+    } else {
+      image = renderImage(*session, request);
+    }
     const QString out = parser.value(output);
     if (!image.save(out, "PNG")) {
       printError(QString("cannot write %1 (check the folder exists and is writable)").arg(out));

@@ -64,3 +64,31 @@ TEST(RenderCommand, ExplainsBadArguments) {
   EXPECT_EQ(unwritable.exitCode, 1);
   EXPECT_NE(unwritable.output.find("cannot write"), std::string::npos) << unwritable.output;
 }
+
+TEST(RenderCommand, ReferenceVolumeRendererWritesPngAndFloatImages) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string png = (dir / "volpost_ref.png").string(), pfm = (dir / "volpost_ref.pfm").string();
+  std::filesystem::remove(png);
+  std::filesystem::remove(pfm);
+  const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                            " --renderer reference --field S.xx --size 64x48 --clip 5,0,0,-1,0,0 -o " + png + " --float " + pfm);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(QImage(QString::fromStdString(png)).size(), QSize(64, 48));
+  // PFM: header, then 64 x 48 x 3 floats.
+  EXPECT_EQ(std::filesystem::file_size(pfm), std::string("PF\n64 48\n-1.0\n").size() + 64u * 48u * 3u * 4u);
+}
+
+TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
+  const auto hex = runVolpost("render " + dataFile("bad/ref_hex_block.vtu") + " --renderer reference --field x -o /tmp/x.png");
+  EXPECT_EQ(hex.exitCode, 1);
+  const auto noField = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference -o /tmp/x.png");
+  EXPECT_EQ(noField.exitCode, 2);
+  EXPECT_NE(noField.output.find("needs --field"), std::string::npos) << noField.output;
+  const auto badClip = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --clip 1,2,3 -o /tmp/x.png");
+  EXPECT_EQ(badClip.exitCode, 2);
+  EXPECT_NE(badClip.output.find("--clip 1,2,3"), std::string::npos) << badClip.output;
+  const auto badTf = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --tf " +
+                                dataFile("bar/analytic_check.json") + " -o /tmp/x.png");
+  EXPECT_EQ(badTf.exitCode, 1);
+  EXPECT_NE(badTf.output.find("not a volpost transfer function"), std::string::npos) << badTf.output;
+}
