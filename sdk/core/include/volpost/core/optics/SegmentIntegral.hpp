@@ -19,9 +19,9 @@ namespace volpost::optics {
 double zeta(double tf, double tb);
 
 /// psi(tf, tb) for tf, tb >= 0 in double precision, stable from 0 to 1e4 and for nearly
-/// equal arguments: expm1 when tf == tb, otherwise Gauss-Legendre quadrature of the
-/// (monotone, positive) integrand on panels of equal optical depth, cut where it falls
-/// below 1e-17. No closed form with erf/erfi (unstable) is used. Worst relative error
+/// equal arguments: expm1 when tf == tb, a 9-term series for thin segments (optical depth
+/// <= 0.1), otherwise Gauss-Legendre quadrature of the (monotone, positive) integrand on
+/// panels of bounded optical depth and slope, cut where it falls below 1e-17. No closed form with erf/erfi (unstable) is used. Worst relative error
 /// measured against a 113-bit adaptive quadrature: see docs/optics.md and PsiTest.
 double psi(double tf, double tb);
 
