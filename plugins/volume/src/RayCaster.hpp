@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// GPU ray casting through tetrahedra (compute shader, one invocation per pixel), drawn
+// into a float image and composited over the target.
+#pragma once
+
+#include "TetMeshGpu.hpp"
+
+#include <volpost/render/GlObjects.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
+
+namespace volpost::volume {
+
+class RayCaster : public VolumeRenderer {
+ public:
+  std::string name() const override { return "raycast"; }
+  void initialize() override;
+  void release() override;
+  void render(const RenderContext& ctx) override;
+
+  void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
+  void setValues(std::span<const double> values) override;
+  void setTransferFunction(const TransferFunction& tf) override;
+  void setClipPlanes(const std::vector<ClipPlane>& planes) override;
+  void setIntegrationMode(IntegrationMode mode) override;
+  void setSamplingStep(double step) override { samplingStep_ = step; }
+  void setTerminationThreshold(double transmittance) override { termination_ = transmittance; }
+  VolumeStats stats() const override;
+  std::vector<float> readImage() const override;
+
+  /// Texture sizes (set before the first TF): psi table N^2, iso table N^2, pre-integration N^3.
+  int psiResolution = 512, isoResolution = 256, preResolution = 64;
+
+ private:
+  void uploadMesh();
+  void rebuildTables();
+  void ensureImage(int width, int height);
+
+  const Mesh* mesh_ = nullptr;
+  FieldLocation location_ = FieldLocation::Node;
+  TetMeshGpu gpu_;
+  TransferFunction tf_;
+  double valueMin_ = 0.0, valueMax_ = 1.0;
+  std::vector<ClipPlane> clipPlanes_;
+  IntegrationMode mode_ = IntegrationMode::LinearSegments;
+  double samplingStep_ = 0.0;  ///< 0: a quarter of the mean edge
+  double termination_ = 0.002;
+  double lastTfMs_ = 0.0;
+  bool initialized_ = false;
+
+  gl::Program program_, compositeProgram_;
+  gl::VertexArray quad_;
+  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_;
+  int imageWidth_ = 0, imageHeight_ = 0;
+  double tableLo_ = 0.0, tableHi_ = 1.0, preMaxLength_ = 1.0;
+};
+
+}  // namespace volpost::volume

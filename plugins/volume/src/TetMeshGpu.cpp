@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+#include "TetMeshGpu.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace volpost::volume {
+namespace {
+
+constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+
+double orientation(const glm::dvec3* p) { return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])); }
+
+void findNeighbors(TetMeshGpu& g) {
+  struct FaceKey {
+    std::array<std::uint32_t, 3> v;
+    std::uint32_t tetFace;
+    bool operator<(const FaceKey& o) const { return v < o.v; }
+  };
+  std::vector<FaceKey> faces;
+  faces.reserve(g.tets.size() * 4);
+  for (std::uint32_t t = 0; t < g.tets.size(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      std::array<std::uint32_t, 3> v = {g.tets[t][kFaces[f][0]], g.tets[t][kFaces[f][1]], g.tets[t][kFaces[f][2]]};
+      std::sort(v.begin(), v.end());
+      faces.push_back({v, t * 4 + std::uint32_t(f)});
+    }
+  std::sort(faces.begin(), faces.end());
+  g.neighbors.assign(g.tets.size(), glm::ivec4(-1));
+  for (std::size_t i = 0; i < faces.size();) {
+    std::size_t j = i + 1;
+    while (j < faces.size() && faces[j].v == faces[i].v) ++j;
+    if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
+      const std::uint32_t a = faces[i].tetFace, b = faces[i + 1].tetFace;
+      g.neighbors[a / 4][int(a % 4)] = int(b / 4);
+      g.neighbors[b / 4][int(b % 4)] = int(a / 4);
+    }
+    i = j;
+  }
+  for (std::uint32_t t = 0; t < g.tets.size(); ++t)
+    for (int f = 0; f < 4; ++f)
+      if (g.neighbors[t][f] < 0) g.boundaryFaces.push_back(t * 4 + std::uint32_t(f));
+}
+
+void buildBvh(TetMeshGpu& g) {
+  const std::size_t n = g.boundaryFaces.size();
+  if (n == 0) return;
+  std::vector<std::array<glm::vec3, 2>> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint32_t t = g.boundaryFaces[i] / 4, f = g.boundaryFaces[i] % 4;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (int k = 0; k < 3; ++k) {
+      const glm::vec3 p(g.nodes[g.tets[t][kFaces[f][k]]]);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const glm::vec3 pad = (hi - lo) * 1e-5f + 1e-6f * glm::length(hi) + 1e-30f;  // float boxes: be generous
+    boxes[i] = {lo - pad, hi + pad};
+  }
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  struct Task {
+    std::uint32_t node, first, count;
+  };
+  std::vector<Task> tasks = {{0, 0, std::uint32_t(n)}};
+  g.bvh.assign(2, glm::vec4(0.0f));
+  while (!tasks.empty()) {
+    const Task t = tasks.back();
+    tasks.pop_back();
+    glm::vec3 lo(INFINITY), hi(-INFINITY), clo(INFINITY), chi(-INFINITY);
+    for (std::uint32_t i = t.first; i < t.first + t.count; ++i) {
+      lo = glm::min(lo, boxes[order[i]][0]);
+      hi = glm::max(hi, boxes[order[i]][1]);
+      const glm::vec3 c = 0.5f * (boxes[order[i]][0] + boxes[order[i]][1]);
+      clo = glm::min(clo, c);
+      chi = glm::max(chi, c);
+    }
+    const glm::vec3 e = chi - clo;
+    const bool leaf = t.count <= 4 || (e.x == 0.0f && e.y == 0.0f && e.z == 0.0f);
+    std::uint32_t first = t.first, count = t.count;
+    if (!leaf) {
+      const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+      const auto b = order.begin() + t.first;
+      std::nth_element(b, b + t.count / 2, b + t.count, [&](std::uint32_t x, std::uint32_t y) {
+        return boxes[x][0][axis] + boxes[x][1][axis] < boxes[y][0][axis] + boxes[y][1][axis];
+      });
+      first = std::uint32_t(g.bvh.size() / 2);
+      count = 0;
+      g.bvh.resize(g.bvh.size() + 4, glm::vec4(0.0f));
+      tasks.push_back({first, t.first, t.count / 2});
+      tasks.push_back({first + 1, t.first + t.count / 2, t.count - t.count / 2});
+    }
+    std::uint32_t bits[2] = {first, count};
+    float asFloat[2];
+    std::memcpy(asFloat, bits, sizeof bits);
+    g.bvh[2 * t.node] = glm::vec4(lo, asFloat[0]);
+    g.bvh[2 * t.node + 1] = glm::vec4(hi, asFloat[1]);
+  }
+  std::vector<std::uint32_t> faces(n);
+  for (std::size_t i = 0; i < n; ++i) faces[i] = g.boundaryFaces[order[i]];
+  g.boundaryFaces = std::move(faces);
+}
+
+}  // namespace
+
+std::size_t TetMeshGpu::bytes() const {
+  return nodes.size() * sizeof(glm::vec4) + tets.size() * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +
+         cellValues.size() * sizeof(float) + boundaryFaces.size() * sizeof(std::uint32_t) + bvh.size() * sizeof(glm::vec4);
+}
+
+TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+  const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
+  if (values.size() != expected)
+    throw std::invalid_argument("volume rendering: " + std::to_string(values.size()) + " values for " +
+                                std::to_string(expected) + (location == FieldLocation::Node ? " nodes" : " cells"));
+  for (const auto& [type, count] : mesh.countsByType())
+    if (type != CellType::Tet4 && type != CellType::Tet10)
+      throw std::invalid_argument("volume rendering needs tetrahedra; this mesh has " + std::to_string(count) + " " +
+                                  std::string(cellTypeName(type)) + " cells (split them into tetrahedra first)");
+  TetMeshGpu g;
+  const Bounds b = mesh.bounds();
+  g.origin = b.valid ? b.center() : glm::dvec3(0.0);
+  g.nodes.resize(mesh.nodeCount());
+  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+    const glm::dvec3 p = mesh.nodes[i] - g.origin;
+    const double v = location == FieldLocation::Node ? values[i] : 0.0;
+    g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? float(v) : 0.0f);
+  }
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto n = mesh.cellNodes(c);
+    glm::dvec3 p[4];
+    bool finite = location == FieldLocation::Cell ? std::isfinite(values[c]) : true;
+    for (int k = 0; k < 4; ++k) {
+      p[k] = mesh.nodes[n[k]];
+      finite = finite && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z) &&
+               (location == FieldLocation::Cell || std::isfinite(values[n[k]]));
+    }
+    const double o = orientation(p);
+    if (!finite || o == 0.0) {
+      ++g.skippedTets;
+      continue;
+    }
+    glm::uvec4 t(n[0], n[1], n[2], n[3]);
+    if (o < 0.0) std::swap(t[1], t[2]);  // inverted input cells are drawn, oriented
+    g.tets.push_back(t);
+    if (location == FieldLocation::Cell) g.cellValues.push_back(float(values[c]));
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) g.maxEdge = std::max(g.maxEdge, glm::length(p[i] - p[j]));
+  }
+  findNeighbors(g);
+  buildBvh(g);
+  return g;
+}
+
+}  // namespace volpost::volume

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// What the GPU ray caster holds per mesh, prepared on the CPU (no GL here, so it is
+// tested directly). Per tetrahedron: 4 vertex ids and 4 face neighbours (32 B); per node
+// its position relative to the mesh center and its value (16 B); plus the boundary faces
+// and a BVH over them to find where rays enter (and re-enter) the mesh. Face planes,
+// barycentric weights and gradients are computed in the shader from the vertices, which
+// trades arithmetic for memory (the seed stored 96 B per tet, Table 5).
+#pragma once
+
+#include <volpost/core/Field.hpp>
+#include <volpost/core/Mesh.hpp>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace volpost::volume {
+
+struct TetMeshGpu {
+  glm::dvec3 origin{0.0};                 ///< model coordinates of the mesh center
+  std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value
+  std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids
+  std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary
+  std::vector<float> cellValues;          ///< one per tet (element results), else empty
+  std::vector<std::uint32_t> boundaryFaces;  ///< tet * 4 + face, in BVH leaf order
+  std::vector<glm::vec4> bvh;             ///< 2 per node: (lo, first), (hi, count); count 0 = inner
+  std::size_t skippedTets = 0;            ///< zero volume or non-finite values
+  double maxEdge = 0.0;                   ///< longest tet edge, model units
+
+  std::size_t bytes() const;
+};
+
+/// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
+TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);
+
+}  // namespace volpost::volume

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// The interface of GPU volume renderers (ray casting, cell projection), provided by
+// renderer plugins. The host hands it the mesh and one result; transfer-function and
+// clip-plane changes never re-upload the mesh.
+#pragma once
+
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/Field.hpp>
+#include <volpost/core/Mesh.hpp>
+#include <volpost/core/TransferFunction.hpp>
+#include <volpost/render/Renderer.hpp>
+
+#include <span>
+#include <string>
+#include <vector>
+
+namespace volpost {
+
+/// How a renderer integrates the transfer function along a ray segment.
+enum class IntegrationMode {
+  LinearSegments,  ///< exact cut at every control point, psi table (seed 4.2)
+  PreIntegrated,   ///< 3D (s_front, s_back, length) table
+  Sampling,        ///< fixed step, the baseline users know from other tools
+};
+const char* toString(IntegrationMode mode);
+
+struct VolumeStats {
+  std::size_t gpuBytes = 0;        ///< buffers and textures this renderer holds
+  std::size_t meshBytes = 0;       ///< of which the mesh structure (per-tet, per-node, BVH)
+  std::size_t tetrahedra = 0;
+  double lastTransferFunctionMs = 0.0;  ///< CPU+upload time of the last TF change
+};
+
+class VolumeRenderer : public Renderer {
+ public:
+  /// Mesh of tetrahedra (tet4, tet10 corners) and one value per node or per cell.
+  /// Throws std::invalid_argument for other cells (tetrahedralize first).
+  virtual void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) = 0;
+  /// Only the values change (another result or step on the same mesh).
+  virtual void setValues(std::span<const double> values) = 0;
+  virtual void setTransferFunction(const TransferFunction& tf) = 0;
+  virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;
+  virtual void setIntegrationMode(IntegrationMode mode) = 0;
+  /// Sampling mode's step, model length units.
+  virtual void setSamplingStep(double step) = 0;
+  /// Rays stop when what is behind would count less than this (0: never).
+  virtual void setTerminationThreshold(double transmittance) = 0;
+  virtual VolumeStats stats() const = 0;
+  /// The last frame as premultiplied RGBA floats, top row first (for tests and benches).
+  virtual std::vector<float> readImage() const = 0;
+};
+
+}  // namespace volpost

@@ -1,0 +1,19 @@
+// The transfer function as control points in SSBOs (exact, any count): color + extinction
+// per point, values sorted ascending.
+layout(std430, binding = 6) readonly buffer TfColorTau { vec4 tfColorTau[]; };
+layout(std430, binding = 7) readonly buffer TfValues { float tfValue[]; };
+uniform int tfCount;
+
+// Color (rgb) and extinction (a) at scalar s, clamped at the ends.
+vec4 tfEval(float s) {
+  if (tfCount == 0) return vec4(0.0);
+  if (s <= tfValue[0]) return tfColorTau[0];
+  if (s >= tfValue[tfCount - 1]) return tfColorTau[tfCount - 1];
+  int lo = 0, hi = tfCount - 1;  // tfValue[lo] <= s < tfValue[hi]
+  while (hi - lo > 1) {
+    int mid = (lo + hi) / 2;
+    if (tfValue[mid] <= s) lo = mid; else hi = mid;
+  }
+  float w = (s - tfValue[lo]) / (tfValue[hi] - tfValue[lo]);
+  return mix(tfColorTau[lo], tfColorTau[hi], w);
+}
