@@ -22,6 +22,7 @@ uniform bool orthographic;
 uniform ivec2 imageSize_;
 uniform bool cellField;
 uniform int mode;                    // 0 linear segments, 1 pre-integrated, 2 sampling
+uniform bool exactCuts;              // linear segments: cut by binary search, not the iso texture
 uniform float samplingStep;
 uniform float terminationTransmittance;
 uniform int clipCount;
@@ -70,13 +71,17 @@ void integrateLinear(float sf, float sb, float len) {
   float n = float(textureSize(isoTable, 0).x);
   float s = sf;
   for (int k = 0; k <= tfCount + 1; ++k) {
-    vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
-    float iso = texture(isoTable, uv).r;
     float end = sb;
-    if (iso >= 0.0) {
-      float v = rangeValue(iso);
-      // The table is quantised: cut only where the point really lies ahead.
-      if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
+    if (exactCuts) {
+      end = tfNextCut(s, sb);
+    } else {  // the seed's method: the iso-detection texture says where to cut
+      vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
+      float iso = texture(isoTable, uv).r;
+      if (iso >= 0.0) {
+        float v = rangeValue(iso);
+        // The table is quantised: cut only where the point really lies ahead.
+        if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
+      }
     }
     float pieceLen = len * (end - s) / (sb - sf);
     linearPiece(tfEval(s), tfEval(end), pieceLen);

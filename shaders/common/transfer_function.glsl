@@ -17,3 +17,17 @@ vec4 tfEval(float s) {
   float w = (s - tfValue[lo]) / (tfValue[hi] - tfValue[lo]);
   return mix(tfColorTau[lo], tfColorTau[hi], w);
 }
+
+// The first control-point value met going from a toward b (strictly beyond a, strictly
+// before b), or b itself if there is none: exact, by binary search.
+float tfNextCut(float a, float b) {
+  if (tfCount == 0 || a == b) return b;
+  if (b > a) {
+    int lo = 0, hi = tfCount;  // first index with tfValue > a
+    while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] > a) hi = mid; else lo = mid + 1; }
+    return (lo < tfCount && tfValue[lo] < b) ? tfValue[lo] : b;
+  }
+  int lo = 0, hi = tfCount;  // first index with tfValue >= a; the one before is below a
+  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= a) hi = mid; else lo = mid + 1; }
+  return (lo > 0 && tfValue[lo - 1] > b) ? tfValue[lo - 1] : b;
+}

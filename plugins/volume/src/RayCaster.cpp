@@ -21,6 +21,7 @@ const char* toString(IntegrationMode mode) {
     case IntegrationMode::LinearSegments: return "linear-segments";
     case IntegrationMode::PreIntegrated: return "pre-integrated";
     case IntegrationMode::Sampling: return "sampling";
+    case IntegrationMode::LinearSegmentsIsoTable: return "linear-segments-iso-table";
   }
   return "?";
 }
@@ -182,7 +183,9 @@ void RayCaster::render(const RenderContext& ctx) {
   glProgramUniform1i(p, u("orthographic"), ctx.camera.projection() == Camera::Projection::Orthographic);
   glProgramUniform2i(p, u("imageSize_"), ctx.width, ctx.height);
   glProgramUniform1i(p, u("cellField"), location_ == FieldLocation::Cell);
-  glProgramUniform1i(p, u("mode"), int(mode_));
+  const bool linear = mode_ == IntegrationMode::LinearSegments || mode_ == IntegrationMode::LinearSegmentsIsoTable;
+  glProgramUniform1i(p, u("mode"), linear ? 0 : mode_ == IntegrationMode::PreIntegrated ? 1 : 2);
+  glProgramUniform1i(p, u("exactCuts"), mode_ == IntegrationMode::LinearSegments);
   const double meanEdge = gpu_.maxEdge * 0.5;
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
   glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));

@@ -18,9 +18,10 @@ namespace volpost {
 
 /// How a renderer integrates the transfer function along a ray segment.
 enum class IntegrationMode {
-  LinearSegments,  ///< exact cut at every control point, psi table (seed 4.2)
-  PreIntegrated,   ///< 3D (s_front, s_back, length) table
-  Sampling,        ///< fixed step, the baseline users know from other tools
+  LinearSegments,          ///< cut exactly at every control point crossed, psi table
+  PreIntegrated,           ///< 3D (s_front, s_back, length) table
+  Sampling,                ///< fixed step, the baseline users know from other tools
+  LinearSegmentsIsoTable,  ///< the seed's 4.2: cuts looked up in the 2D iso-detection texture
 };
 const char* toString(IntegrationMode mode);
 

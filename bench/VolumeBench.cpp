@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+// Speed against error of the GPU volume renderers: for each mesh and integration mode,
+// ms per frame along an orbit, tetrahedra per second, the time from a transfer-function
+// change to the new frame, GPU memory, and the image error against the exact CPU
+// reference renderer (same camera, same transfer function). Prints a Markdown table and
+// writes a CSV for the speed-versus-error plot.
+//   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick]
+#include "RayCaster.hpp"
+#include "VtkLegacyReader.hpp"
+#include "VtuReader.hpp"
+#include "core/VolumeImage.hpp"
+
+#include <volpost/core/MeshChecks.hpp>
+#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <thread>
+
+using namespace volpost;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+Mesh kuhnGrid(int n) {  // n^3 cubes of 6 tets on [0, n]^3, as in the seed's grids
+  Mesh m;
+  auto id = [n](int i, int j, int k) { return NodeIndex((k * (n + 1) + j) * (n + 1) + i); };
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) m.nodes.push_back({double(i), double(j), double(k)});
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        int axes[3] = {0, 1, 2};
+        do {
+          int c[3] = {i, j, k};
+          NodeIndex t[4];
+          t[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[axes[s]];
+            t[s + 1] = id(c[0], c[1], c[2]);
+          }
+          m.addCell(CellType::Tet4, t);
+        } while (std::next_permutation(axes, axes + 3));
+      }
+  return m;
+}
+
+struct Case {
+  std::string name;
+  Mesh mesh;
+  FieldLocation location = FieldLocation::Node;
+  std::vector<double> values;
+};
+
+std::vector<Case> cases(bool quick) {
+  std::vector<Case> out;
+  for (int n : {16, 32}) {
+    if (quick && n == 32) continue;
+    Case c{"grid " + std::to_string(n) + "^3", kuhnGrid(n), FieldLocation::Node, {}};
+    for (const auto& p : c.mesh.nodes) c.values.push_back(p.x);  // s varies along x (seed 5.1)
+    out.push_back(std::move(c));
+  }
+  const std::string shared = VOLPOST_SHARED_DATA;
+  if (!std::filesystem::exists(shared)) {
+    std::fprintf(stderr, "../shared/data is absent: the real meshes are not measured\n");
+    return out;
+  }
+  meshio::VtuReader vtu;
+  const std::pair<const char*, const char*> files[] = {
+      {"bar/tet4/bar_tet4.vtu", "S_Mises"}, {"wheel/tet4/wheel_tet4.vtu", "S_Mises"},
+      {"post/coarse/post_coarse.vtu", "oxygen_fraction"}, {"post/fine/post_fine.vtu", "oxygen_fraction"}};
+  for (const auto& [file, field] : files) {
+    if (quick && std::strstr(file, "fine")) continue;
+    auto model = vtu.read(shared + "/" + file, {});
+    checkModel(*model);
+    const Field* f = model->findField(field);
+    Case c{std::filesystem::path(file).stem().string(), model->mesh, f->location(), f->values(0)};
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+TransferFunction benchTf(const std::vector<double>& values, double diagonal) {
+  // 10 linear segments (the seed's "10 segments" rows), cool-warm, extinction as the
+  // default TF: a light fog rising to dense color at the top of the range.
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
+  std::vector<ControlPoint> p = TransferFunction::ramp(lo, hi, "cool-warm", 1.0, 11).points();
+  const double tauMax = 24.0 / diagonal;
+  for (std::size_t i = 0; i < p.size(); ++i) p[i].extinction = tauMax * (0.1 + 0.9 * double(i) / 10.0) * (i % 2 ? 0.5 : 1.0);
+  return TransferFunction(p);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int size = 512, frames = 5;
+  const char* csvPath = nullptr;
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csvPath = argv[++i];
+    else if (!std::strcmp(argv[i], "--quick")) quick = true;
+  }
+  HeadlessContext context;
+  std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
+              "premultiplied RGBA in 0..1\n\n", gl::describeContext().c_str(), size, size, frames);
+  std::printf("| mesh | tets | renderer / mode | ms/frame min / median / max | tets/s | TF update ms | GPU MB (mesh B/tet) | RMSE | max error |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
+  FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
+  if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
+  OffscreenTarget target(size, size);
+  for (Case& c : cases(quick)) {
+    const double diagonal = c.mesh.bounds().diagonal();
+    const TransferFunction tf = benchTf(c.values, diagonal);
+    Camera camera;
+    camera.setView(StandardView::Isometric);
+    camera.fit(c.mesh.bounds());
+    const auto refStart = Clock::now();
+    const optics::TetVolume volume(c.mesh, c.location, c.values);
+    const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
+    const double refMs = msSince(refStart);
+    std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
+                volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
+    volume::RayCaster caster;
+    caster.initialize();
+    caster.setVolume(c.mesh, c.location, c.values);
+    caster.setTerminationThreshold(0.0);  // compare like with like
+    for (IntegrationMode mode : {IntegrationMode::LinearSegments, IntegrationMode::LinearSegmentsIsoTable,
+                                 IntegrationMode::PreIntegrated, IntegrationMode::Sampling}) {
+      caster.setIntegrationMode(mode);
+      const auto tfStart = Clock::now();
+      caster.setTransferFunction(tf);
+      RenderContext ctx;
+      ctx.width = ctx.height = size;
+      ctx.framebuffer = target.framebuffer();
+      ctx.camera = camera;
+      caster.render(ctx);
+      glFinish();
+      const double tfMs = msSince(tfStart);  // TF change to the new frame
+      const auto image = caster.readImage();
+      double sum = 0.0, worst = 0.0;
+      for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+        for (int k = 0; k < 4; ++k) {
+          const double d = double(image[4 * i + std::size_t(k)]) - reference.pixels[i][k];
+          sum += d * d;
+          worst = std::max(worst, std::abs(d));
+        }
+      const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
+      std::vector<double> times;
+      Camera orbit = camera;
+      for (int f = 0; f < frames; ++f) {
+        ctx.camera = orbit;
+        const auto t0 = Clock::now();
+        caster.render(ctx);
+        glFinish();
+        times.push_back(msSince(t0));
+        orbit.orbit(360.0 / frames, 0.0);
+      }
+      std::sort(times.begin(), times.end());
+      const double median = times[times.size() / 2];
+      const VolumeStats st = caster.stats();
+      std::printf("| %s | %zu | raycast / %s | %.0f / %.0f / %.0f | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
+                  c.name.c_str(), st.tetrahedra, toString(mode), times.front(), median, times.back(),
+                  double(st.tetrahedra) / (median / 1e3), tfMs, st.gpuBytes / 1048576.0,
+                  double(st.meshBytes) / double(st.tetrahedra), rmse, worst);
+      std::fflush(stdout);
+      if (csv) std::fprintf(csv, "%s,%s,%.3f,%.6g,%.6g\n", c.name.c_str(), toString(mode), median, rmse, worst);
+    }
+    caster.release();
+  }
+  if (csv) std::fclose(csv);
+  return 0;
+}
