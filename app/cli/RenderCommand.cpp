@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `volpost render MODEL --field Q -o out.png`: an image with no window and no X server.
 #include "../core/ImageRender.hpp"
+#include "../core/GpuVolumeImage.hpp"
 #include "../core/VolumeImage.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
@@ -12,6 +13,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace volpost::app {
@@ -76,15 +78,18 @@ int runRender(const QStringList& args) {
   const QCommandLineOption noLegend("no-legend", "Hide the color legend.");
   const QCommandLineOption output(QStringList{"o", "output"}, "Output PNG file.", "FILE");
   const QCommandLineOption renderer("renderer", "surface (default): the boundary colored by the result; "
-                                                "reference: exact CPU volume rendering (tetrahedra).", "NAME", "surface");
+                                                "reference: exact CPU volume rendering (tetrahedra); a GPU volume "
+                                                "renderer from a plugin, e.g. raycast.", "NAME", "surface");
+  const QCommandLineOption modeOption("mode", "GPU volume integration: linear (exact cuts, default), iso-table "
+                                              "(the seed's), preintegrated, sampling.", "MODE", "linear");
   const QCommandLineOption tfFile("tf", "Transfer function (volpost TF JSON) for volume rendering; default: a "
                                         "cool-warm ramp over the result's range.", "FILE");
   const QCommandLineOption clip("clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
                                         "(repeatable; volume rendering).", "PLANE");
   const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
   const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
-  parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, tfFile, clip,
-                     floatOut, threads});
+  parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, modeOption,
+                     tfFile, clip, floatOut, threads});
   parser.process(QStringList{"volpost render"} + args);
 
   if (parser.positionalArguments().size() != 1) {
@@ -121,8 +126,13 @@ int runRender(const QStringList& args) {
   request.legend = !parser.isSet(noLegend);
 
   const QString rendererName = parser.value(renderer);
-  if (rendererName != "surface" && rendererName != "reference") {
-    printError(QString("--renderer %1 is not one of: surface, reference").arg(rendererName));
+  const QString modeName = parser.value(modeOption);
+  const std::map<QString, IntegrationMode> modes = {{"linear", IntegrationMode::LinearSegments},
+                                                    {"iso-table", IntegrationMode::LinearSegmentsIsoTable},
+                                                    {"preintegrated", IntegrationMode::PreIntegrated},
+                                                    {"sampling", IntegrationMode::Sampling}};
+  if (!modes.count(modeName)) {
+    printError(QString("--mode %1 is not one of: linear, iso-table, preintegrated, sampling").arg(modeName));
     return 2;
   }
   std::vector<ClipPlane> clipPlanes;
@@ -134,21 +144,41 @@ int runRender(const QStringList& args) {
     }
     clipPlanes.push_back(plane);
   }
-  if (rendererName == "reference" && !parser.isSet(field)) {
-    printError("--renderer reference needs --field (the quantity to render)");
+  if (rendererName != "surface" && !parser.isSet(field)) {
+    printError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName));
     return 2;
   }
 
   const QString path = parser.positionalArguments().first();
   auto plugins = loadPluginsForCli();
+  std::unique_ptr<VolumeRenderer> gpuRenderer;
+  if (rendererName != "surface" && rendererName != "reference") {
+    QStringList known = {"surface", "reference"};
+    for (RendererPlugin* p : plugins->rendererPlugins()) {
+      known << p->rendererNames();
+      if (!gpuRenderer && p->rendererNames().contains(rendererName)) {
+        std::unique_ptr<Renderer> r = p->createRenderer(rendererName);
+        if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
+          r.release();
+          gpuRenderer.reset(v);
+        }
+      }
+    }
+    if (!gpuRenderer) {
+      printError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")));
+      return 2;
+    }
+  }
   try {
     const auto session = ModelSession::load(plugins->readers(), path.toStdString(), terminalProgress("reading"));
     if (parser.isSet(field)) request.quantity = session->findQuantity(parser.value(field).toStdString());
     QImage image;
-    if (rendererName == "reference") {
-      VolumeRequest volume{*request.quantity, request.step, request.camera, request.width, request.height, {}, clipPlanes,
-                           parser.value(threads).toInt()};
-      if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
+    VolumeRequest volume{request.quantity.value_or(Quantity{}), request.step, request.camera, request.width,
+                         request.height, {}, clipPlanes, parser.value(threads).toInt()};
+    if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
+    if (gpuRenderer) {
+      image = renderGpuVolume(*session, volume, *gpuRenderer, modes.at(modeName), request.legend);
+    } else if (rendererName == "reference") {
       const auto reference = renderVolumeReference(*session, volume, terminalProgress("rendering"));
       const glm::dvec3 background(1.0);
       image = toQImage(reference, background);

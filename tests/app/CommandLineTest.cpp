@@ -92,3 +92,23 @@ TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
   EXPECT_EQ(badTf.exitCode, 1);
   EXPECT_NE(badTf.output.find("not a volpost transfer function"), std::string::npos) << badTf.output;
 }
+
+TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
+  const std::string png = (std::filesystem::temp_directory_path() / "volpost_raycast.png").string();
+  std::filesystem::remove(png);
+  const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                            " --renderer raycast --mode preintegrated --field S.mises --size 80x60 -o " + png);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const QImage image(QString::fromStdString(png));
+  ASSERT_EQ(image.size(), QSize(80, 60));
+  int tinted = 0;  // pixels where the volume changed the light-gray background
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 60; ++x) tinted += std::abs(qRed(image.pixel(x, y)) - qBlue(image.pixel(x, y))) > 8;
+  EXPECT_GT(tinted, 50);
+  const auto badMode = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer raycast --mode fast --field S11 -o " + png);
+  EXPECT_EQ(badMode.exitCode, 2);
+  EXPECT_NE(badMode.output.find("--mode fast"), std::string::npos) << badMode.output;
+  const auto unknown = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer vicp --field S11 -o " + png);
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("raycast"), std::string::npos) << "lists the renderers there are: " << unknown.output;
+}

@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: MIT
+#include "GpuVolumeImage.hpp"
+
+#include "CameraSpec.hpp"
+#include "Legend.hpp"
+#include "SceneRenderer.hpp"
+
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <QPainter>
+
+#include <cstring>
+
+namespace volpost::app {
+
+ColorMap colorMapOf(const TransferFunction& tf) {
+  std::vector<ColorMap::Point> points;
+  const double lo = tf.minValue(), span = tf.maxValue() > lo ? tf.maxValue() - lo : 1.0;
+  for (const ControlPoint& p : tf.points()) points.push_back({(p.value - lo) / span, p.color});
+  if (points.size() < 2) points = {{0.0, glm::dvec3(0.5)}, {1.0, glm::dvec3(0.5)}};
+  return ColorMap("transfer function", points);
+}
+
+QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request, VolumeRenderer& renderer,
+                       IntegrationMode mode, bool legend) {
+  const Mesh& mesh = session.model().mesh;
+  const ScalarView view = session.evaluate(request.quantity, request.step);
+  const TransferFunction tf =
+      request.transferFunction ? *request.transferFunction : defaultTransferFunction(view, mesh.bounds().diagonal());
+  Camera camera;
+  camera.fit(mesh.bounds());
+  applyCameraSpec(camera, request.camera);
+
+  HeadlessContext context;
+  OffscreenTarget target(request.width, request.height);
+  renderer.initialize();
+  renderer.setVolume(mesh, view.location, view.values);
+  renderer.setTransferFunction(tf);
+  renderer.setClipPlanes(request.clipPlanes);
+  renderer.setIntegrationMode(mode);
+  RenderContext ctx;
+  ctx.camera = camera;
+  ctx.width = request.width;
+  ctx.height = request.height;
+  ctx.framebuffer = target.framebuffer();
+  SceneRenderer background;  // only clears to the usual background: no session given
+  background.initialize();
+  background.render(ctx);
+  renderer.render(ctx);
+  glFinish();
+  const auto pixels = target.readPixels();
+  background.release();
+  renderer.release();
+
+  QImage image(request.width, request.height, QImage::Format_RGBA8888);
+  for (int y = 0; y < request.height; ++y)
+    std::memcpy(image.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(request.width) * 4,
+                std::size_t(request.width) * 4);
+  if (legend) {
+    QPainter painter(&image);
+    paintLegend(painter, image.rect(), colorMapOf(tf),
+                {QString::fromStdString(view.quantity.displayName()),
+                 QString("volume, %1").arg(view.location == FieldLocation::Node ? "per node" : "per cell"),
+                 tf.minValue(), tf.maxValue(), view.range.nanCount});
+  }
+  return image;
+}
+
+}  // namespace volpost::app
