@@ -44,13 +44,10 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   ctx.width = request.width;
   ctx.height = request.height;
   ctx.framebuffer = target.framebuffer();
-  SceneRenderer background;  // only clears to the usual background: no session given
-  background.initialize();
-  background.render(ctx);
+  SceneRenderer().renderBackground(ctx);
   renderer.render(ctx);
   glFinish();
   const auto pixels = target.readPixels();
-  background.release();
   renderer.release();
 
   QImage image(request.width, request.height, QImage::Format_RGBA8888);

@@ -35,12 +35,16 @@ void SceneRenderer::setScalars(const ScalarView* view, DisplayRange range) {
   surface_.setScalars(view->location, view->values, range.min, range.max);
 }
 
-void SceneRenderer::render(const RenderContext& ctx) {
+void SceneRenderer::renderBackground(const RenderContext& ctx) {
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
   glViewport(0, 0, ctx.width, ctx.height);
   glClearColor(background.r, background.g, background.b, 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void SceneRenderer::render(const RenderContext& ctx) {
+  renderBackground(ctx);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   if (session_) {

@@ -34,6 +34,8 @@ class SceneRenderer {
 
   /// Clears ctx.framebuffer to the background and draws.
   void render(const RenderContext& ctx);
+  /// Only clears to the background (under a volume).
+  void renderBackground(const RenderContext& ctx);
 
   glm::vec3 background{0.96f, 0.96f, 0.97f};
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "MainWindow.hpp"
 
+#include "../core/VolumeImage.hpp"
 #include "PluginsDialog.hpp"
 #include "Viewport.hpp"
 
@@ -115,6 +116,7 @@ void MainWindow::buildActions() {
   legend->setCheckable(true);
   legend->setChecked(true);
   connect(legend, &QAction::toggled, viewport_, &Viewport::setShowLegend);
+  buildVolumeMenu(view);
 
   QMenu* tools = menuBar()->addMenu("&Tools");
   tools->addAction("&Plugins...", this, [this] { PluginsDialog(plugins_, this).exec(); });
@@ -124,6 +126,80 @@ void MainWindow::buildActions() {
                        "volpost " VOLPOST_VERSION "\nFinite-element post-processing and volume rendering.\n"
                        "Mouse: left drag rotates, right drag or shift+left pans, wheel zooms.");
   });
+}
+
+void MainWindow::buildVolumeMenu(QMenu* view) {
+  // The first GPU volume renderer the plugins offer.
+  for (RendererPlugin* plugin : plugins_.rendererPlugins())
+    for (const QString& name : plugin->rendererNames()) {
+      if (viewport_->hasVolumeRenderer()) break;
+      std::unique_ptr<Renderer> r = plugin->createRenderer(name);
+      if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
+        r.release();
+        viewport_->setVolumeRenderer(std::unique_ptr<VolumeRenderer>(v));
+      }
+    }
+  view->addSeparator();
+  volumeAction_ = view->addAction("&Volume Rendering");
+  volumeAction_->setObjectName("volumeAction");
+  volumeAction_->setCheckable(true);
+  volumeAction_->setShortcut(QKeySequence(Qt::Key_V));
+  volumeAction_->setEnabled(viewport_->hasVolumeRenderer());
+  if (!viewport_->hasVolumeRenderer()) volumeAction_->setToolTip("No volume renderer plugin is loaded");
+  connect(volumeAction_, &QAction::toggled, this, &MainWindow::setVolumeShown);
+
+  QMenu* modes = view->addMenu("Volume &Integration");
+  auto* modeGroup = new QActionGroup(this);
+  const std::pair<const char*, IntegrationMode> modeList[] = {
+      {"Linear segments, exact cuts", IntegrationMode::LinearSegments},
+      {"Linear segments, iso-detection table (seed)", IntegrationMode::LinearSegmentsIsoTable},
+      {"Pre-integrated table", IntegrationMode::PreIntegrated},
+      {"Sampling (fixed step)", IntegrationMode::Sampling}};
+  for (const auto& [label, mode] : modeList) {
+    QAction* a = modes->addAction(label);
+    a->setCheckable(true);
+    a->setChecked(mode == IntegrationMode::LinearSegments);
+    modeGroup->addAction(a);
+    const IntegrationMode m = mode;
+    connect(a, &QAction::triggered, this, [this, m] { viewport_->setIntegrationMode(m); });
+  }
+  QMenu* clip = view->addMenu("&Clip Plane");
+  auto* clipGroup = new QActionGroup(this);
+  const char* axes[] = {"Off", "Normal +X", "Normal +Y", "Normal +Z"};
+  for (int i = 0; i < 4; ++i) {
+    QAction* a = clip->addAction(axes[i]);
+    a->setCheckable(true);
+    a->setChecked(i == 0);
+    clipGroup->addAction(a);
+    connect(a, &QAction::triggered, this, [this, i] {
+      viewport_->setClipAxis(i - 1);
+      if (i > 0) statusBar()->showMessage("Ctrl+drag in the view moves the clip plane");
+    });
+  }
+}
+
+void MainWindow::setVolumeShown(bool on) {
+  if (!on || !session_) {
+    viewport_->showSurface();
+    return;
+  }
+  const auto q = activeQuantity();
+  if (!q) {
+    statusBar()->showMessage("Choose a result to render as a volume");
+    volumeAction_->setChecked(false);
+    return;
+  }
+  try {
+    const ScalarView view = session_->evaluate(*q, activeStep());
+    viewport_->showVolume(defaultTransferFunction(view, session_->model().mesh.bounds().diagonal()));
+    statusBar()->showMessage(QString("Volume rendering %1 (extinction in 1 / model length unit)")
+                                 .arg(QString::fromStdString(q->displayName())));
+  } catch (const std::exception& e) {
+    const QSignalBlocker block(volumeAction_);
+    volumeAction_->setChecked(false);
+    viewport_->showSurface();
+    statusBar()->showMessage(QString("Volume rendering unavailable: %1").arg(e.what()));
+  }
 }
 
 void MainWindow::buildToolbar() {
@@ -239,6 +315,10 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   const Model& m = session_->model();
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));
   viewport_->setSession(session_);
+  if (volumeAction_) {
+    const QSignalBlocker block(volumeAction_);
+    volumeAction_->setChecked(false);
+  }
   fillQuantities();
   showModelInfo();
   std::size_t warnings = 0;
@@ -310,6 +390,7 @@ void MainWindow::refreshScalars() {
                                    .arg(QString::fromStdString(q->displayName()))
                                    .arg(view.range.nanCount));
     viewport_->setScalars(std::move(view), range);
+    if (volumeAction_ && volumeAction_->isChecked()) setVolumeShown(true);  // new result: new default TF
   } catch (const std::exception& e) {
     viewport_->setScalars(std::nullopt, {});
     QMessageBox::warning(this, "Cannot show result", e.what());

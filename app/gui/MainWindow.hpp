@@ -17,6 +17,7 @@ class QComboBox;
 class QLabel;
 class QTextBrowser;
 class QAction;
+class QMenu;
 
 namespace volpost::app {
 
@@ -60,6 +61,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void refreshScalars();
   void showModelInfo();
   void notifyPanels();
+  void buildVolumeMenu(QMenu* view);
+  void setVolumeShown(bool on);
 
   PluginManager& plugins_;
   std::shared_ptr<ModelSession> session_;
@@ -70,6 +73,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QTextBrowser* modelInfo_ = nullptr;
   QLabel* glLabel_ = nullptr;
   QAction* edgesAction_ = nullptr;
+  QAction* volumeAction_ = nullptr;
   bool loading_ = false;
 };
 

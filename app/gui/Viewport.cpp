@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "Viewport.hpp"
 
+#include "../core/GpuVolumeImage.hpp"
+
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QImage>
@@ -39,6 +41,11 @@ void Viewport::initializeGL() {
     scene_.setSession(session_);
     scene_.setColorMap(colorMap_);
     scene_.setScalars(view_ ? &*view_ : nullptr, range_);
+    if (volume_) {
+      volume_->initialize();
+      volumeInitialized_ = true;
+      volumeDirty_ = true;
+    }
     emit glInfo(QString::fromStdString(gl::describeContext()));
   } catch (const std::exception& e) {
     emit renderFailed(QString("OpenGL 4.5 initialisation failed: %1").arg(e.what()));
@@ -50,12 +57,76 @@ void Viewport::cleanupGL() {
   makeCurrent();
   scene_.release();
   overlay_.release();
+  if (volume_ && volumeInitialized_) volume_->release();
+  volumeInitialized_ = false;
   doneCurrent();
+}
+
+void Viewport::setVolumeRenderer(std::unique_ptr<VolumeRenderer> renderer) {
+  volume_ = std::move(renderer);
+  if (volume_ && scene_.initialized()) {
+    withContext([&] { volume_->initialize(); });
+    volumeInitialized_ = true;
+  }
+}
+
+void Viewport::showVolume(const TransferFunction& tf) {
+  if (!volume_ || !session_ || !view_) throw std::invalid_argument("no volume renderer or no result to render");
+  for (const auto& [type, count] : session_->model().mesh.countsByType())
+    if (type != CellType::Tet4 && type != CellType::Tet10)
+      throw std::invalid_argument("volume rendering needs tetrahedra; this model has " + std::to_string(count) + " " +
+                                  std::string(cellTypeName(type)) + " cells");
+  tf_ = tf;
+  volumeShown_ = true;
+  volumeDirty_ = true;
+  update();
+}
+
+void Viewport::showSurface() {
+  volumeShown_ = false;
+  update();
+}
+
+void Viewport::setIntegrationMode(IntegrationMode mode) {
+  mode_ = mode;
+  volumeDirty_ = true;
+  update();
+}
+
+void Viewport::setClipAxis(int axis) {
+  if (axis < 0 || !session_) {
+    clip_.reset();
+  } else {
+    glm::dvec3 n(0.0);
+    n[axis] = 1.0;
+    clip_ = ClipPlane{session_->model().mesh.bounds().center(), n};
+  }
+  volumeDirty_ = true;
+  update();
+}
+
+void Viewport::moveClipPlane(double distance) {
+  if (!clip_) return;
+  clip_->point += glm::normalize(clip_->normal) * distance;
+  volumeDirty_ = true;
+  update();
+}
+
+// Uploads what changed since the last frame; the mesh only when the data did.
+void Viewport::uploadVolume() {
+  if (!volumeDirty_ || !volume_ || !view_ || !session_) return;
+  volume_->setVolume(session_->model().mesh, view_->location, view_->values);
+  volume_->setIntegrationMode(mode_);
+  volume_->setTransferFunction(tf_);
+  volume_->setClipPlanes(clip_ ? std::vector<ClipPlane>{*clip_} : std::vector<ClipPlane>{});
+  volumeDirty_ = false;
 }
 
 void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   view_.reset();
+  volumeShown_ = false;
+  clip_.reset();
   withContext([&] { scene_.setSession(session_); });
   camera_.setView(StandardView::Isometric);
   fit();
@@ -64,6 +135,8 @@ void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
 void Viewport::setScalars(std::optional<ScalarView> view, DisplayRange range) {
   view_ = std::move(view);
   range_ = range;
+  volumeDirty_ = true;
+  if (!view_) volumeShown_ = false;
   withContext([&] { scene_.setScalars(view_ ? &*view_ : nullptr, range_); });
   update();
 }
@@ -108,8 +181,15 @@ void Viewport::paintGL() {
   ctx.height = int(std::lround(height() * dpr));
   ctx.framebuffer = defaultFramebufferObject();
   try {
-    scene_.render(ctx);
+    if (volumeShown_ && volume_ && volumeInitialized_) {
+      uploadVolume();
+      scene_.renderBackground(ctx);
+      volume_->render(ctx);
+    } else {
+      scene_.render(ctx);
+    }
   } catch (const std::exception& e) {
+    volumeShown_ = false;
     emit renderFailed(e.what());
     return;
   }
@@ -128,7 +208,15 @@ void Viewport::drawLegend(int w, int h) {
                                QString("%1%2").arg(QString::fromStdString(view_->stepLabel),
                                                    view_->location == FieldLocation::Node ? "  per node" : "  per cell"),
                                range_.min, range_.max, view_->range.nanCount};
-    paintLegend(painter, rect(), colorMap_, legend);
+    if (volumeShown_) {
+      LegendContent v = legend;
+      v.subtitle = "volume  " + v.subtitle.trimmed();
+      v.min = tf_.minValue();
+      v.max = tf_.maxValue();
+      paintLegend(painter, rect(), colorMapOf(tf_), v);
+    } else {
+      paintLegend(painter, rect(), colorMap_, legend);
+    }
   }
   overlay_.setImage(w, h, {image.constBits(), std::size_t(image.sizeInBytes())});
   glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
@@ -142,6 +230,10 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   const QPoint p = event->position().toPoint();
   const QPoint d = p - lastMouse_;
   lastMouse_ = p;
+  if ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ControlModifier) && clip_) {
+    moveClipPlane(-double(d.y()) / height() * camera_.viewHeight());
+    return;
+  }
   const bool pan = (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) ||
                    ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier));
   if (pan) camera_.pan(double(d.x()) / height(), -double(d.y()) / height());

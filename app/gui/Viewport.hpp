@@ -8,6 +8,7 @@
 #include "../core/SceneRenderer.hpp"  // brings in epoxy before any Qt GL header
 
 #include <volpost/render/OverlayRenderer.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
 
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -29,6 +30,23 @@ class Viewport : public QOpenGLWidget {
   void setColorMap(const ColorMap& map);
   void setShowEdges(bool show);
   void setShowLegend(bool show);
+
+  /// The GPU volume renderer (from a plugin); the viewport owns it. nullptr: none.
+  void setVolumeRenderer(std::unique_ptr<VolumeRenderer> renderer);
+  bool hasVolumeRenderer() const { return volume_ != nullptr; }
+  /// Draws the volume of the current view's values with this transfer function instead of
+  /// the surface. Throws std::invalid_argument (mesh not made of tetrahedra) and leaves
+  /// the surface on.
+  void showVolume(const TransferFunction& tf);
+  void showSurface();
+  bool volumeShown() const { return volumeShown_; }
+  void setIntegrationMode(IntegrationMode mode);
+  /// One clip plane through the model center along `axis` (0, 1, 2), or none (-1).
+  void setClipAxis(int axis);
+  const std::optional<ClipPlane>& clipPlane() const { return clip_; }
+  /// Moves the clip plane along its normal (model units); Ctrl+drag does the same.
+  void moveClipPlane(double distance);
+  VolumeStats volumeStats() const { return volume_ ? volume_->stats() : VolumeStats{}; }
 
   void fit();
   void setStandardView(StandardView view);
@@ -52,6 +70,7 @@ class Viewport : public QOpenGLWidget {
   void withContext(F&& f);
 
   void drawLegend(int width, int height);
+  void uploadVolume();
 
   SceneRenderer scene_;
   OverlayRenderer overlay_;
@@ -61,6 +80,11 @@ class Viewport : public QOpenGLWidget {
   ColorMap colorMap_ = ColorMap::named("cool-warm");
   Camera camera_;
   bool showLegend_ = true;
+  std::unique_ptr<VolumeRenderer> volume_;
+  bool volumeShown_ = false, volumeInitialized_ = false, volumeDirty_ = false;
+  TransferFunction tf_;
+  IntegrationMode mode_ = IntegrationMode::LinearSegments;
+  std::optional<ClipPlane> clip_;
   QPoint lastMouse_;
 };
 

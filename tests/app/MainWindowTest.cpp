@@ -5,7 +5,9 @@
 #include "gui/Viewport.hpp"
 
 #include <QApplication>
+#include <QAction>
 #include <QComboBox>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -84,6 +86,35 @@ class MainWindowTest : public QObject {
     const auto end = summarize(window_->viewport()->grabFramebuffer());
     QVERIFY(end.first < iso.first);
     window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
+  void volumeRenderingAndADraggedClipPlane() {
+    QVERIFY(window_->selectQuantity("S.mises"));
+    auto* action = window_->findChild<QAction*>("volumeAction");
+    QVERIFY(action);
+    QVERIFY2(action->isEnabled(), "the volume plugin provides a renderer");
+    Viewport* view = window_->viewport();
+    const auto surface = summarize(view->grabFramebuffer());
+    action->setChecked(true);
+    QVERIFY(view->volumeShown());
+    const auto volume = summarize(view->grabFramebuffer());
+    QVERIFY(volume.second != surface.second);
+    view->setClipAxis(0);
+    QVERIFY(view->clipPlane().has_value());
+    const double before = view->clipPlane()->point.x;
+    const QPoint start = view->rect().center();
+    QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, start);
+    QMouseEvent drag(QEvent::MouseMove, QPointF(start + QPoint(0, -40)), view->mapToGlobal(QPointF(start + QPoint(0, -40))),
+                     Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+    QApplication::sendEvent(view, &drag);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, start + QPoint(0, -40));
+    QVERIFY2(view->clipPlane()->point.x > before, "Ctrl+drag upward moves the plane along its normal");
+    const auto clipped = summarize(view->grabFramebuffer());
+    QVERIFY(clipped.second != volume.second);
+    if (const char* shot = std::getenv("VOLPOST_VOLUME_SCREENSHOT")) window_->grab().save(shot);
+    view->setClipAxis(-1);
+    action->setChecked(false);
+    QVERIFY(!view->volumeShown());
   }
 
   void aBadFileLeavesTheModelAsItWas() {
