@@ -59,6 +59,7 @@ void Viewport::cleanupGL() {
   overlay_.release();
   if (volume_ && volumeInitialized_) volume_->release();
   volumeInitialized_ = false;
+  uploadedModel_ = nullptr;
   doneCurrent();
 }
 
@@ -115,7 +116,13 @@ void Viewport::moveClipPlane(double distance) {
 // Uploads what changed since the last frame; the mesh only when the data did.
 void Viewport::uploadVolume() {
   if (!volumeDirty_ || !volume_ || !view_ || !session_) return;
-  volume_->setVolume(session_->model().mesh, view_->location, view_->values);
+  if (uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location) {
+    volume_->setValues(view_->values);  // same mesh: only the values travel
+  } else {
+    volume_->setVolume(session_->model().mesh, view_->location, view_->values);
+    uploadedModel_ = &session_->model();
+    uploadedLocation_ = view_->location;
+  }
   volume_->setIntegrationMode(mode_);
   volume_->setTransferFunction(tf_);
   volume_->setClipPlanes(clip_ ? std::vector<ClipPlane>{*clip_} : std::vector<ClipPlane>{});
@@ -127,6 +134,7 @@ void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
   view_.reset();
   volumeShown_ = false;
   clip_.reset();
+  uploadedModel_ = nullptr;
   withContext([&] { scene_.setSession(session_); });
   camera_.setView(StandardView::Isometric);
   fit();

@@ -85,6 +85,8 @@ class Viewport : public QOpenGLWidget {
   TransferFunction tf_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   std::optional<ClipPlane> clip_;
+  const Model* uploadedModel_ = nullptr;  ///< the mesh the volume renderer holds
+  FieldLocation uploadedLocation_ = FieldLocation::Node;
   QPoint lastMouse_;
 };
 

@@ -239,3 +239,25 @@ TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
   EXPECT_LE(e.rmse, 2e-3);
   EXPECT_LE(e.max, 1e-2);
 }
+
+TEST_F(RayCast, ANewResultUploadsOnlyValues) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  std::vector<double> other;
+  for (const auto& p : grid.nodes) other.push_back(4.0 - p.y + 0.3 * p.x);
+  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_.setTerminationThreshold(0.0);
+  caster_.setTransferFunction(kTf);
+  caster_.setVolume(grid, FieldLocation::Node, field(grid));
+  caster_.setValues(other);
+  const auto updated = gpuImage(isoCamera(grid), 40, 40);
+  caster_.setVolume(grid, FieldLocation::Node, other);
+  const auto rebuilt = gpuImage(isoCamera(grid), 40, 40);
+  EXPECT_EQ(updated, rebuilt);
+  volume::TetMeshGpu gpu = volume::buildTetMeshGpu(grid, FieldLocation::Node, field(grid));
+  const auto bvh = gpu.bvh;
+  EXPECT_TRUE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
+  EXPECT_EQ(gpu.bvh, bvh);
+  EXPECT_FLOAT_EQ(gpu.nodes[7].w, float(other[7]));
+  other[3] = std::nan("");  // a tet would drop out: the structure must be rebuilt
+  EXPECT_FALSE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
+}

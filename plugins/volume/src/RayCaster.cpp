@@ -94,7 +94,20 @@ void RayCaster::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
 
 void RayCaster::setValues(std::span<const double> values) {
   if (!mesh_) return;
-  setVolume(*mesh_, location_, values);
+  if (!replaceValues(gpu_, *mesh_, location_, values)) {
+    setVolume(*mesh_, location_, values);  // the set of renderable tets changed
+    return;
+  }
+  valueMin_ = INFINITY;
+  valueMax_ = -INFINITY;
+  for (double v : values)
+    if (std::isfinite(v)) valueMin_ = std::min(valueMin_, v), valueMax_ = std::max(valueMax_, v);
+  if (!(valueMax_ >= valueMin_)) valueMin_ = valueMax_ = 0.0;
+  if (initialized_) {  // only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet
+    if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
+    else upload(cellValues_, gpu_.cellValues);
+    rebuildTables();
+  }
 }
 
 void RayCaster::uploadMesh() {

@@ -110,7 +110,7 @@ void buildBvh(TetMeshGpu& g) {
 
 }  // namespace
 
-std::size_t TetMeshGpu::bytes() const {
+std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stays on the CPU)
   return nodes.size() * sizeof(glm::vec4) + tets.size() * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +
          cellValues.size() * sizeof(float) + boundaryFaces.size() * sizeof(std::uint32_t) + bvh.size() * sizeof(glm::vec4);
 }
@@ -150,6 +150,7 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
     glm::uvec4 t(n[0], n[1], n[2], n[3]);
     if (o < 0.0) std::swap(t[1], t[2]);  // inverted input cells are drawn, oriented
     g.tets.push_back(t);
+    g.cellOfTet.push_back(std::uint32_t(c));
     if (location == FieldLocation::Cell) g.cellValues.push_back(float(values[c]));
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) g.maxEdge = std::max(g.maxEdge, glm::length(p[i] - p[j]));
@@ -157,6 +158,34 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
   findNeighbors(g);
   buildBvh(g);
   return g;
+}
+
+bool replaceValues(TetMeshGpu& g, const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+  const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
+  if (values.size() != expected || (location == FieldLocation::Cell) != !g.cellValues.empty() ||
+      (location == FieldLocation::Cell && g.cellValues.size() != g.tets.size()))
+    return false;
+  // Every kept tet must stay finite, and no left-out tet may have become renderable.
+  std::vector<char> kept(mesh.cellCount(), 0);
+  for (std::uint32_t c : g.cellOfTet) kept[c] = 1;
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    bool finite = true;
+    if (location == FieldLocation::Cell) finite = std::isfinite(values[c]);
+    else
+      for (NodeIndex n : mesh.cellNodes(c).first(4)) finite = finite && std::isfinite(values[n]);
+    if (kept[c] && !finite) return false;
+    if (!kept[c] && finite && g.skippedTets > 0) {
+      // It may have been left out for zero volume instead: only those may stay out.
+      const auto n = mesh.cellNodes(c);
+      const glm::dvec3 p[4] = {mesh.nodes[n[0]], mesh.nodes[n[1]], mesh.nodes[n[2]], mesh.nodes[n[3]]};
+      if (orientation(p) != 0.0) return false;
+    }
+  }
+  if (location == FieldLocation::Node)
+    for (std::size_t i = 0; i < mesh.nodeCount(); ++i) g.nodes[i].w = std::isfinite(values[i]) ? float(values[i]) : 0.0f;
+  else
+    for (std::size_t t = 0; t < g.tets.size(); ++t) g.cellValues[t] = float(values[g.cellOfTet[t]]);
+  return true;
 }
 
 }  // namespace volpost::volume

@@ -25,6 +25,7 @@ struct TetMeshGpu {
   std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids
   std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary
   std::vector<float> cellValues;          ///< one per tet (element results), else empty
+  std::vector<std::uint32_t> cellOfTet;   ///< mesh cell each tet comes from
   std::vector<std::uint32_t> boundaryFaces;  ///< tet * 4 + face, in BVH leaf order
   std::vector<glm::vec4> bvh;             ///< 2 per node: (lo, first), (hi, count); count 0 = inner
   std::size_t skippedTets = 0;            ///< zero volume or non-finite values
@@ -35,5 +36,10 @@ struct TetMeshGpu {
 
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);
+
+/// Puts new values (another result or step, same location) into the prepared structure
+/// without touching its geometry. Returns false, changing nothing, when the values would
+/// change which tets are left out (a value became or stopped being NaN): rebuild then.
+bool replaceValues(TetMeshGpu& gpu, const Mesh& mesh, FieldLocation location, std::span<const double> values);
 
 }  // namespace volpost::volume
