@@ -33,6 +33,9 @@ uniform sampler3D preTable;          // (s_front, s_back, length) -> premultipli
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
 uniform float preMaxLength;
 uniform int maxSteps;
+uniform int isoCount;
+uniform float isoValue[8];
+uniform vec4 isoColor[8];           // rgb, opacity
 
 const ivec3 FACE[4] = ivec3[4](ivec3(1, 2, 3), ivec3(0, 2, 3), ivec3(0, 1, 3), ivec3(0, 1, 2));
 
@@ -208,12 +211,53 @@ bool clipSegment(inout float t0, inout float t1) {
   return t0 < t1;
 }
 
-void integrate(uvec4 tv, uint tet, float t0, float t1) {
-  if (!clipSegment(t0, t1)) return;
-  float sf = valueAt(tv, tet, rayOrigin + t0 * rayDir), sb = valueAt(tv, tet, rayOrigin + t1 * rayDir);
+void integratePiece(float t0, float t1, float sf, float sb) {
+  if (t1 <= t0) return;
   if (mode == 0) integrateLinear(sf, sb, t1 - t0);
   else if (mode == 1) integratePreintegrated(sf, sb, t1 - t0);
   else integrateSampling(t0, t1, sf, sb);
+}
+
+vec3 gradientOf(uvec4 tv) {  // of the linear scalar: sum_k s_k grad(lambda_k)
+  vec3 g = vec3(0.0);
+  for (int k = 0; k < 4; ++k) {
+    vec3 n, a;
+    facePlane(tv, k, n, a);
+    g -= nodes[tv[k]].w * n / dot(n, a - nodes[tv[k]].xyz);
+  }
+  return g;
+}
+
+void integrate(uvec4 tv, uint tet, float t0, float t1) {
+  if (!clipSegment(t0, t1)) return;
+  float sf = valueAt(tv, tet, rayOrigin + t0 * rayDir), sb = valueAt(tv, tet, rayOrigin + t1 * rayDir);
+  // Iso-surfaces crossed in (sf, sb], in ray order, between volume pieces.
+  float hitX[8];
+  int hitIso[8];
+  int hits = 0;
+  if (sf != sb) {
+    for (int i = 0; i < isoCount; ++i) {
+      float v = isoValue[i];
+      if ((sb > sf && v > sf && v <= sb) || (sb < sf && v < sf && v >= sb)) {
+        float x = (v - sf) / (sb - sf);
+        int j = hits++;
+        while (j > 0 && hitX[j - 1] > x) { hitX[j] = hitX[j - 1]; hitIso[j] = hitIso[j - 1]; --j; }
+        hitX[j] = x;
+        hitIso[j] = i;
+      }
+    }
+  }
+  if (hits == 0) { integratePiece(t0, t1, sf, sb); return; }
+  vec3 g = cellField ? vec3(0.0) : gradientOf(tv);
+  float shade = dot(g, g) > 0.0 ? 0.3 + 0.7 * abs(dot(normalize(g), rayDir)) : 1.0;
+  float x0 = 0.0;
+  for (int h = 0; h < hits; ++h) {
+    integratePiece(mix(t0, t1, x0), mix(t0, t1, hitX[h]), mix(sf, sb, x0), isoValue[hitIso[h]]);
+    vec4 c = isoColor[hitIso[h]];
+    composite(c.rgb * shade * c.a, 1.0 - c.a);
+    x0 = hitX[h];
+  }
+  integratePiece(mix(t0, t1, x0), t1, mix(sf, sb, x0), sb);
 }
 
 void main() {

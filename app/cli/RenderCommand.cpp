@@ -42,6 +42,27 @@ bool parseClip(const QString& text, ClipPlane& plane) {
   return plane.normal != glm::dvec3(0.0);
 }
 
+// "VALUE[:r,g,b[:opacity]]", color components 0..1, opacity 0..1 (default opaque white).
+bool parseIso(const QString& text, optics::IsoSurface& iso) {
+  const QStringList parts = text.split(':');
+  bool ok = false;
+  iso = {parts[0].toDouble(&ok), glm::dvec3(1.0), 1.0};
+  if (!ok || parts.size() > 3) return false;
+  if (parts.size() >= 2) {
+    const QStringList rgb = parts[1].split(',');
+    if (rgb.size() != 3) return false;
+    for (int k = 0; k < 3; ++k) {
+      iso.color[k] = rgb[k].toDouble(&ok);
+      if (!ok || iso.color[k] < 0.0 || iso.color[k] > 1.0) return false;
+    }
+  }
+  if (parts.size() == 3) {
+    iso.opacity = parts[2].toDouble(&ok);
+    if (!ok || iso.opacity < 0.0 || iso.opacity > 1.0) return false;
+  }
+  return true;
+}
+
 std::string readText(const QString& path) {
   std::ifstream in(path.toStdString());
   if (!in) throw std::runtime_error("cannot open " + path.toStdString());
@@ -86,10 +107,12 @@ int runRender(const QStringList& args) {
                                         "cool-warm ramp over the result's range.", "FILE");
   const QCommandLineOption clip("clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
                                         "(repeatable; volume rendering).", "PLANE");
+  const QCommandLineOption isoOption("iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; "
+                                            "repeatable, up to 8; volume rendering).", "ISO");
   const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
   const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
   parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, modeOption,
-                     tfFile, clip, floatOut, threads});
+                     tfFile, clip, isoOption, floatOut, threads});
   parser.process(QStringList{"volpost render"} + args);
 
   if (parser.positionalArguments().size() != 1) {
@@ -144,6 +167,15 @@ int runRender(const QStringList& args) {
     }
     clipPlanes.push_back(plane);
   }
+  std::vector<optics::IsoSurface> isoSurfaces;
+  for (const QString& text : parser.values(isoOption)) {
+    optics::IsoSurface iso;
+    if (!parseIso(text, iso) || isoSurfaces.size() == 8) {
+      printError(QString("--iso %1 is not VALUE[:r,g,b[:opacity]] with colors and opacity in 0..1 (at most 8)").arg(text));
+      return 2;
+    }
+    isoSurfaces.push_back(iso);
+  }
   if (rendererName != "surface" && !parser.isSet(field)) {
     printError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName));
     return 2;
@@ -174,7 +206,7 @@ int runRender(const QStringList& args) {
     if (parser.isSet(field)) request.quantity = session->findQuantity(parser.value(field).toStdString());
     QImage image;
     VolumeRequest volume{request.quantity.value_or(Quantity{}), request.step, request.camera, request.width,
-                         request.height, {}, clipPlanes, parser.value(threads).toInt()};
+                         request.height, {}, clipPlanes, isoSurfaces, parser.value(threads).toInt()};
     if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
     if (gpuRenderer) {
       image = renderGpuVolume(*session, volume, *gpuRenderer, modes.at(modeName), request.legend);

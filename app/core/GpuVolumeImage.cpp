@@ -38,6 +38,7 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   renderer.setVolume(mesh, view.location, view.values);
   renderer.setTransferFunction(tf);
   renderer.setClipPlanes(request.clipPlanes);
+  renderer.setIsoSurfaces(request.isoSurfaces);
   renderer.setIntegrationMode(mode);
   RenderContext ctx;
   ctx.camera = camera;

@@ -38,6 +38,7 @@ optics::ReferenceImage renderVolumeReference(const ModelSession& session, const 
   applyCameraSpec(camera, request.camera);
   optics::RaySettings settings;
   settings.clipPlanes = request.clipPlanes;
+  settings.isoSurfaces = request.isoSurfaces;
   return optics::renderReference(volume, tf, camera, request.width, request.height, settings, progress, request.threads);
 }
 

@@ -23,6 +23,7 @@ struct VolumeRequest {
   int width = 800, height = 600;
   std::optional<TransferFunction> transferFunction;  ///< nullopt: defaultTransferFunction
   std::vector<ClipPlane> clipPlanes;
+  std::vector<optics::IsoSurface> isoSurfaces;
   int threads = 0;
 };
 

@@ -112,3 +112,13 @@ TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("raycast"), std::string::npos) << "lists the renderers there are: " << unknown.output;
 }
+
+TEST(RenderCommand, IsoSurfaceOptionIsCheckedAndRendered) {
+  const std::string png = (std::filesystem::temp_directory_path() / "volpost_iso.png").string();
+  const auto ok = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                             " --renderer raycast --field S11 --iso 100:1,0,0:0.5 --size 48x32 -o " + png);
+  EXPECT_EQ(ok.exitCode, 0) << ok.output;
+  const auto bad = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer raycast --field S11 --iso 100:2,0,0 -o " + png);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--iso 100:2,0,0"), std::string::npos) << bad.output;
+}

@@ -235,3 +235,23 @@ TEST(TetVolume, RefusesCellsThatAreNotTetrahedra) {
     EXPECT_NE(std::string(e.what()).find("1 hex8"), std::string::npos) << e.what();
   }
 }
+
+TEST(ReferenceRays, IsoSurfacesAreMetOnceAndCompositedInOrder) {
+  // s = z; an opaque red surface at s = 2.5 seen from above behind 1.5 units of fog.
+  const Mesh grid = tetGrid(4, 4, 4);
+  const TetVolume volume(grid, FieldLocation::Node, nodal(grid, [](const glm::dvec3& p) { return p.z; }));
+  const double tau = 0.4;
+  const TransferFunction tf({{0.0, kColor, tau}, {4.0, kColor, tau}});
+  RaySettings settings;
+  settings.isoSurfaces = {{2.5, {1, 0, 0}, 1.0}};
+  const SegmentLight l = integrateRay(volume, tf, {1.3, 2.0, 9.0}, {0, 0, -1}, 0.0, 20.0, settings);
+  const double t = std::exp(-1.5 * tau);  // fog in front of the surface; gradient along the ray: full light
+  EXPECT_NEAR(l.color.r, kColor.r * (1 - t) + t * 1.0, 1e-13);
+  EXPECT_NEAR(l.color.g, kColor.g * (1 - t), 1e-13);
+  EXPECT_NEAR(l.transmittance, 0.0, 1e-15);
+  // On a grid plane (z = 2 is a shared face of many tets) the surface is counted once.
+  settings.isoSurfaces = {{2.0, {0, 0, 1}, 0.5}};
+  const SegmentLight half = integrateRay(volume, TransferFunction(), {1.3, 2.0, 9.0}, {0, 0, -1}, 0.0, 20.0, settings);
+  EXPECT_NEAR(half.transmittance, 0.5, 1e-15);
+  EXPECT_NEAR(half.color.b, 0.5, 1e-15);
+}

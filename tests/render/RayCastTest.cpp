@@ -261,3 +261,22 @@ TEST_F(RayCast, ANewResultUploadsOnlyValues) {
   other[3] = std::nan("");  // a tet would drop out: the structure must be rebuilt
   EXPECT_FALSE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
 }
+
+TEST_F(RayCast, IsoSurfacesMatchTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const std::vector<optics::IsoSurface> isos = {{1.7, {0.9, 0.8, 0.1}, 0.6}, {3.9, {0.1, 0.7, 0.9}, 1.0}};
+  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_.setIsoSurfaces(isos);
+  caster_.setVolume(grid, FieldLocation::Node, field(grid));
+  caster_.setTransferFunction(kTf);
+  caster_.setTerminationThreshold(0.0);
+  const Camera camera = isoCamera(grid);
+  const auto gpu = gpuImage(camera, 64, 64);
+  const optics::TetVolume volume(grid, FieldLocation::Node, field(grid));
+  optics::RaySettings settings;
+  settings.isoSurfaces = isos;
+  const ImageError e = compare(gpu, optics::renderReference(volume, kTf, camera, 64, 64, settings));
+  std::printf("raycast with 2 iso-surfaces vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-4);
+  EXPECT_LE(e.max, 5e-3);
+}

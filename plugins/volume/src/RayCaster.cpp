@@ -130,6 +130,11 @@ void RayCaster::setClipPlanes(const std::vector<ClipPlane>& planes) {
   if (clipPlanes_.size() > 6) clipPlanes_.resize(6);
 }
 
+void RayCaster::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
+  isoSurfaces_ = surfaces;
+  if (isoSurfaces_.size() > 8) isoSurfaces_.resize(8);
+}
+
 void RayCaster::setIntegrationMode(IntegrationMode mode) {
   mode_ = mode;
   if (initialized_) rebuildTables();
@@ -211,6 +216,17 @@ void RayCaster::render(const RenderContext& ctx) {
   for (const ClipPlane& c : clipPlanes_) {
     const glm::dvec3 n = glm::normalize(c.normal);
     planes.push_back(glm::vec4(glm::vec3(n), float(-glm::dot(n, c.point - gpu_.origin))));
+  }
+  std::vector<float> isoValues;
+  std::vector<glm::vec4> isoColors;
+  for (const optics::IsoSurface& iso : isoSurfaces_) {
+    isoValues.push_back(float(iso.value));
+    isoColors.push_back(glm::vec4(glm::vec3(iso.color), float(iso.opacity)));
+  }
+  glProgramUniform1i(p, u("isoCount"), int(isoValues.size()));
+  if (!isoValues.empty()) {
+    glProgramUniform1fv(p, u("isoValue"), GLsizei(isoValues.size()), isoValues.data());
+    glProgramUniform4fv(p, u("isoColor"), GLsizei(isoColors.size()), glm::value_ptr(isoColors[0]));
   }
   glProgramUniform1i(p, u("clipCount"), int(planes.size()));
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));

@@ -21,6 +21,7 @@ class RayCaster : public VolumeRenderer {
   void setValues(std::span<const double> values) override;
   void setTransferFunction(const TransferFunction& tf) override;
   void setClipPlanes(const std::vector<ClipPlane>& planes) override;
+  void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) override;
   void setIntegrationMode(IntegrationMode mode) override;
   void setSamplingStep(double step) override { samplingStep_ = step; }
   void setTerminationThreshold(double transmittance) override { termination_ = transmittance; }
@@ -41,6 +42,7 @@ class RayCaster : public VolumeRenderer {
   TransferFunction tf_;
   double valueMin_ = 0.0, valueMax_ = 1.0;
   std::vector<ClipPlane> clipPlanes_;
+  std::vector<optics::IsoSurface> isoSurfaces_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   double samplingStep_ = 0.0;  ///< 0: a quarter of the mean edge
   double termination_ = 0.002;

@@ -60,6 +60,32 @@ LocalRay localRay(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 directi
   return {origin - volume.origin(), direction / len, tMin, tMax};
 }
 
+// A tet's segment with the iso-surfaces it crosses: volume pieces between crossings, each
+// surface composited at its crossing. A crossing counts when the value lies in
+// (sFront, sBack] along the ray, so a surface on a shared face is met once.
+SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& settings, double sFront, double sBack,
+                                 double length, const glm::dvec3& gradient, const glm::dvec3& direction) {
+  if (settings.isoSurfaces.empty() || sFront == sBack) return integrateSegment(tf, sFront, sBack, length);
+  std::vector<std::pair<double, const IsoSurface*>> hits;
+  for (const IsoSurface& s : settings.isoSurfaces) {
+    const bool crossed = sBack > sFront ? (s.value > sFront && s.value <= sBack) : (s.value < sFront && s.value >= sBack);
+    if (crossed) hits.push_back({(s.value - sFront) / (sBack - sFront), &s});
+  }
+  if (hits.empty()) return integrateSegment(tf, sFront, sBack, length);
+  std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const double g = glm::length(gradient);
+  const double shade = g > 0.0 ? 0.3 + 0.7 * std::abs(glm::dot(gradient / g, direction)) : 1.0;
+  SegmentLight total;
+  double x0 = 0.0;
+  for (const auto& [x, surface] : hits) {
+    compositeBehind(total, integrateSegment(tf, sFront + (sBack - sFront) * x0, surface->value, (x - x0) * length));
+    compositeBehind(total, {surface->color * shade * surface->opacity, 1.0 - surface->opacity});
+    x0 = x;
+  }
+  compositeBehind(total, integrateSegment(tf, sFront + (sBack - sFront) * x0, sBack, (1.0 - x0) * length));
+  return total;
+}
+
 }  // namespace
 
 SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
@@ -70,7 +96,7 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
     const PreparedTet& tet = volume.tet(i.tet);
     const double sFront = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t0 * r.d);
     const double sBack = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t1 * r.d);
-    compositeBehind(total, integrateSegment(tf, sFront, sBack, i.t1 - i.t0));
+    compositeBehind(total, segmentWithSurfaces(tf, settings, sFront, sBack, i.t1 - i.t0, tet.gradient, r.d));
     if (total.transmittance < settings.terminationTransmittance) break;
   }
   return total;

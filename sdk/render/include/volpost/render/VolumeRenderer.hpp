@@ -8,6 +8,7 @@
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/Renderer.hpp>
 
 #include <span>
@@ -41,6 +42,9 @@ class VolumeRenderer : public Renderer {
   virtual void setValues(std::span<const double> values) = 0;
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
   virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;
+  /// Iso-surfaces (up to 8) drawn where rays cross their values, opaque or translucent,
+  /// shaded by the cell gradient and composited in order with the volume.
+  virtual void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) = 0;
   virtual void setIntegrationMode(IntegrationMode mode) = 0;
   /// Sampling mode's step, model length units.
   virtual void setSamplingStep(double step) = 0;

@@ -13,6 +13,7 @@
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/Progress.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
 #include <volpost/core/optics/TetVolume.hpp>
 
@@ -24,6 +25,9 @@ namespace volpost::optics {
 
 struct RaySettings {
   std::vector<ClipPlane> clipPlanes;  ///< in model coordinates
+  /// Surfaces where the scalar crosses these values, composited where the ray meets them,
+  /// shaded by the cell gradient (0.3 + 0.7 |cos| headlight; unshaded for element results).
+  std::vector<IsoSurface> isoSurfaces;
   double terminationTransmittance = 0.0;  ///< stop when what is behind counts less (0: never)
 };
 
