@@ -33,6 +33,8 @@ uniform sampler3D preTable;          // (s_front, s_back, length) -> premultipli
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
 uniform float preMaxLength;
 uniform int maxSteps;
+uniform sampler2D sceneDepth;        // opaque geometry's depth (window 0..1), bottom row first
+uniform bool hasSceneDepth;
 uniform int isoCount;
 uniform float isoValue[8];
 uniform vec4 isoColor[8];           // rgb, opacity
@@ -271,6 +273,13 @@ void main() {
   rayDir = normalize(farPoint - rayOrigin);
   float t = orthographic ? 0.0 : length(nearPoint - eye);
   float tEnd = length(farPoint - rayOrigin);
+  if (hasSceneDepth) {  // opaque geometry ends the ray where it is
+    float depth = texelFetch(sceneDepth, ivec2(pix.x, imageSize_.y - 1 - pix.y), 0).r;
+    if (depth < 1.0) {
+      vec4 hit = inverseViewProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+      tEnd = min(tEnd, dot(hit.xyz / hit.w - rayOrigin, rayDir));
+    }
+  }
 
   int steps = 0;
   while (steps < maxSteps && accT >= terminationTransmittance) {

@@ -109,10 +109,12 @@ int runRender(const QStringList& args) {
                                         "(repeatable; volume rendering).", "PLANE");
   const QCommandLineOption isoOption("iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; "
                                             "repeatable, up to 8; volume rendering).", "ISO");
+  const QCommandLineOption volumeEdges("volume-edges", "GPU volume rendering: draw the boundary's element edges, "
+                                                     "which hide what lies behind them.");
   const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
   const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
   parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, modeOption,
-                     tfFile, clip, isoOption, floatOut, threads});
+                     tfFile, clip, isoOption, volumeEdges, floatOut, threads});
   parser.process(QStringList{"volpost render"} + args);
 
   if (parser.positionalArguments().size() != 1) {
@@ -208,6 +210,7 @@ int runRender(const QStringList& args) {
     VolumeRequest volume{request.quantity.value_or(Quantity{}), request.step, request.camera, request.width,
                          request.height, {}, clipPlanes, isoSurfaces, parser.value(threads).toInt()};
     if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
+    volume.edges = parser.isSet(volumeEdges);
     if (gpuRenderer) {
       image = renderGpuVolume(*session, volume, *gpuRenderer, modes.at(modeName), request.legend);
     } else if (rendererName == "reference") {

@@ -45,10 +45,17 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   ctx.width = request.width;
   ctx.height = request.height;
   ctx.framebuffer = target.framebuffer();
-  SceneRenderer().renderBackground(ctx);
+  SceneRenderer edges;  // the element edges, opaque: they end the rays at their depth
+  edges.initialize();
+  edges.setSession(std::shared_ptr<const ModelSession>(&session, [](const ModelSession*) {}));
+  edges.setShowFaces(false);
+  edges.setShowEdges(request.edges);
+  edges.render(ctx);
+  if (request.edges) ctx.depthTexture = target.depthTexture();
   renderer.render(ctx);
   glFinish();
   const auto pixels = target.readPixels();
+  edges.release();
   renderer.release();
 
   QImage image(request.width, request.height, QImage::Format_RGBA8888);

@@ -30,6 +30,9 @@ class SceneRenderer {
   void setScalars(const ScalarView* view, DisplayRange range);
   void setColorMap(const ColorMap& map) { surface_.setColorMap(map); }
   void setShowEdges(bool show) { surface_.setShowEdges(show); }
+  bool showEdges() const { return surface_.showEdges(); }
+  /// Faces off: render() draws only the element edges (the opaque geometry over a volume).
+  void setShowFaces(bool show) { surface_.setShowFaces(show); }
   void setLighting(bool on) { surface_.setLighting(on); }
 
   /// Clears ctx.framebuffer to the background and draws.

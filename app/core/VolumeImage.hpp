@@ -25,6 +25,7 @@ struct VolumeRequest {
   std::vector<ClipPlane> clipPlanes;
   std::vector<optics::IsoSurface> isoSurfaces;
   int threads = 0;
+  bool edges = false;  ///< GPU renderers: draw the element edges, which end the rays
 };
 
 /// A first transfer function for a result: the cool-warm map over its range; extinction

@@ -60,6 +60,7 @@ void Viewport::cleanupGL() {
   if (volume_ && volumeInitialized_) volume_->release();
   volumeInitialized_ = false;
   uploadedModel_ = nullptr;
+  depthTarget_.reset();
   doneCurrent();
 }
 
@@ -129,6 +130,27 @@ void Viewport::uploadVolume() {
   volumeDirty_ = false;
 }
 
+// The element edges stay visible over the volume and end its rays: they are drawn into
+// the window and, depth only, into a texture the ray caster reads.
+void Viewport::renderVolume(const RenderContext& ctx) {
+  uploadVolume();
+  scene_.setShowFaces(false);
+  RenderContext volumeCtx = ctx;
+  if (scene_.showEdges()) {
+    if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
+      depthTarget_ = std::make_unique<OffscreenTarget>(ctx.width, ctx.height);
+    RenderContext depthCtx = ctx;
+    depthCtx.framebuffer = depthTarget_->framebuffer();
+    scene_.render(depthCtx);
+    volumeCtx.depthTexture = depthTarget_->depthTexture();
+    scene_.render(ctx);
+  } else {
+    scene_.renderBackground(ctx);
+  }
+  scene_.setShowFaces(true);
+  volume_->render(volumeCtx);
+}
+
 void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   view_.reset();
@@ -190,9 +212,7 @@ void Viewport::paintGL() {
   ctx.framebuffer = defaultFramebufferObject();
   try {
     if (volumeShown_ && volume_ && volumeInitialized_) {
-      uploadVolume();
-      scene_.renderBackground(ctx);
-      volume_->render(ctx);
+      renderVolume(ctx);
     } else {
       scene_.render(ctx);
     }

@@ -7,6 +7,7 @@
 #include "../core/Legend.hpp"
 #include "../core/SceneRenderer.hpp"  // brings in epoxy before any Qt GL header
 
+#include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/OverlayRenderer.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
@@ -80,7 +81,10 @@ class Viewport : public QOpenGLWidget {
   ColorMap colorMap_ = ColorMap::named("cool-warm");
   Camera camera_;
   bool showLegend_ = true;
+  void renderVolume(const RenderContext& ctx);
+
   std::unique_ptr<VolumeRenderer> volume_;
+  std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume
   bool volumeShown_ = false, volumeInitialized_ = false, volumeDirty_ = false;
   TransferFunction tf_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;

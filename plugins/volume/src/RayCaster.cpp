@@ -230,6 +230,9 @@ void RayCaster::render(const RenderContext& ctx) {
   }
   glProgramUniform1i(p, u("clipCount"), int(planes.size()));
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
+  glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
+  glProgramUniform1i(p, u("sceneDepth"), 3);
+  glBindTextureUnit(3, ctx.depthTexture);
   glProgramUniform1i(p, u("psiTable"), 0);
   glProgramUniform1i(p, u("isoTable"), 1);
   glProgramUniform1i(p, u("preTable"), 2);
@@ -241,6 +244,7 @@ void RayCaster::render(const RenderContext& ctx) {
   glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindTextureUnit(3, 0);  // the depth texture may be attached to the target: no feedback
 
   // Composite the premultiplied image over what the target already holds.
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);

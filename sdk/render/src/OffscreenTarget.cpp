@@ -11,14 +11,16 @@ OffscreenTarget::OffscreenTarget(int width, int height)
     : width_(width), height_(height),
       fbo_(gl::createFramebuffer()),
       color_(gl::createRenderbuffer()),
-      depth_(gl::createRenderbuffer()) {
+      depth_(gl::createTexture(GL_TEXTURE_2D)) {
   if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
     throw std::invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
                                 " is out of range (1..16384)");
   glNamedRenderbufferStorage(color_.id(), GL_RGBA8, width, height);
-  glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT24, width, height);
+  glTextureStorage2D(depth_.id(), 1, GL_DEPTH_COMPONENT32F, width, height);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(depth_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glNamedFramebufferRenderbuffer(fbo_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
-  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  glNamedFramebufferTexture(fbo_.id(), GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   if (glCheckNamedFramebufferStatus(fbo_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error("offscreen framebuffer is incomplete");
 }

@@ -156,7 +156,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   // Push the faces back a little so element edges drawn on them are not z-fighting.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  if (showFaces_) glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   if (showEdges_ && edgeVertices_ > 0) {

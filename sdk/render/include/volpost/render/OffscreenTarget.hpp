@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A framebuffer of its own (RGBA8 color + depth) to render into and read back.
+// A framebuffer of its own (RGBA8 color + a depth texture) to render into and read back.
 #pragma once
 
 #include <volpost/render/GlObjects.hpp>
@@ -14,6 +14,7 @@ class OffscreenTarget {
   /// Needs a current context. Throws if the framebuffer is incomplete.
   OffscreenTarget(int width, int height);
   GLuint framebuffer() const { return fbo_.id(); }
+  GLuint depthTexture() const { return depth_.id(); }
   int width() const { return width_; }
   int height() const { return height_; }
   /// RGBA8 pixels, top row first (ready for an image file).
@@ -22,7 +23,8 @@ class OffscreenTarget {
  private:
   int width_, height_;
   gl::Framebuffer fbo_;
-  gl::Renderbuffer color_, depth_;
+  gl::Renderbuffer color_;
+  gl::Texture depth_;
 };
 
 }  // namespace volpost

@@ -14,6 +14,9 @@ struct RenderContext {
   int width = 0, height = 0;       ///< viewport in pixels
   GLuint framebuffer = 0;          ///< target FBO (0 = default)
   glm::dvec3 origin{0.0};          ///< model center; GPU data is relative to it
+  /// Depth texture of the opaque geometry already drawn with this camera (window depth
+  /// 0..1, bottom row first), or 0. Volume renderers end their rays there.
+  GLuint depthTexture = 0;
   double aspect() const { return height > 0 ? double(width) / double(height) : 1.0; }
 };
 

@@ -30,6 +30,8 @@ class SurfaceRenderer : public Renderer {
   void clearScalars();
   void setColorMap(const ColorMap& map);
   void setShowEdges(bool show) { showEdges_ = show; }
+  /// Faces off: only the element edges are drawn (over a volume).
+  void setShowFaces(bool show) { showFaces_ = show; }
   bool showEdges() const { return showEdges_; }
   /// Shading off draws exact color-map colors (used by the image tests).
   void setLighting(bool on) { lighting_ = on; }
@@ -46,7 +48,7 @@ class SurfaceRenderer : public Renderer {
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   int location_ = -1;  ///< -1 none, 0 node, 1 cell
   float min_ = 0.f, max_ = 1.f;
-  bool showEdges_ = true, lighting_ = true;
+  bool showEdges_ = true, showFaces_ = true, lighting_ = true;
 };
 
 }  // namespace volpost
