@@ -11,6 +11,7 @@
 #include "core/VolumeImage.hpp"
 
 #include <volpost/core/MeshChecks.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
 #include <volpost/core/optics/ReferenceRenderer.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -76,14 +77,18 @@ std::vector<Case> cases(bool quick) {
   }
   meshio::VtuReader vtu;
   const std::pair<const char*, const char*> files[] = {
-      {"bar/tet4/bar_tet4.vtu", "S_Mises"}, {"wheel/tet4/wheel_tet4.vtu", "S_Mises"},
+      {"bar/tet4/bar_tet4.vtu", "S_Mises"}, {"bar/hex8/bar_hex8.vtu", "S_Mises"},
+      {"wheel/tet4/wheel_tet4.vtu", "S_Mises"}, {"wheel/mixed/wheel_mixed.vtu", "S_Mises"},
       {"post/coarse/post_coarse.vtu", "oxygen_fraction"}, {"post/fine/post_fine.vtu", "oxygen_fraction"}};
   for (const auto& [file, field] : files) {
     if (quick && std::strstr(file, "fine")) continue;
     auto model = vtu.read(shared + "/" + file, {});
     checkModel(*model);
     const Field* f = model->findField(field);
-    Case c{std::filesystem::path(file).stem().string(), model->mesh, f->location(), f->values(0)};
+    // Hexahedra, wedges and pyramids go through the conforming tetrahedralization.
+    const TetMesh tets = tetrahedralize(model->mesh);
+    Case c{std::filesystem::path(file).stem().string(), tets.mesh, f->location(),
+           f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh, f->values(0)) : tets.cellValues(f->values(0))};
     out.push_back(std::move(c));
   }
   return out;

@@ -35,7 +35,7 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   HeadlessContext context;
   OffscreenTarget target(request.width, request.height);
   renderer.initialize();
-  renderer.setVolume(mesh, view.location, view.values);
+  renderer.setVolume(session.tetrahedra().mesh, view.location, session.tetValues(view));
   renderer.setTransferFunction(tf);
   renderer.setClipPlanes(request.clipPlanes);
   renderer.setIsoSurfaces(request.isoSurfaces);

@@ -64,4 +64,14 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
   return view;
 }
 
+const TetMesh& ModelSession::tetrahedra() const {
+  std::call_once(tetOnce_, [this] { tets_ = std::make_unique<TetMesh>(tetrahedralize(model_->mesh)); });
+  return *tets_;
+}
+
+std::vector<double> ModelSession::tetValues(const ScalarView& view) const {
+  const TetMesh& t = tetrahedra();
+  return view.location == FieldLocation::Node ? t.nodeValues(model_->mesh, view.values) : t.cellValues(view.values);
+}
+
 }  // namespace volpost::app

@@ -7,8 +7,10 @@
 #include <volpost/core/Model.hpp>
 #include <volpost/core/Quantity.hpp>
 #include <volpost/core/ReaderRegistry.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,7 +46,14 @@ class ModelSession {
   /// Values of the quantity at a step (0-based), with their range.
   ScalarView evaluate(const Quantity& q, std::size_t step) const;
 
+  /// The cells as conforming tetrahedra for volume rendering (built on first use, kept).
+  const TetMesh& tetrahedra() const;
+  /// A view's values on those tetrahedra (Steiner points get their cell's corner mean).
+  std::vector<double> tetValues(const ScalarView& view) const;
+
  private:
+  mutable std::once_flag tetOnce_;
+  mutable std::unique_ptr<TetMesh> tets_;
   std::shared_ptr<Model> model_;
   std::shared_ptr<BoundarySurface> surface_;
 };

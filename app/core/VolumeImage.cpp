@@ -32,7 +32,7 @@ optics::ReferenceImage renderVolumeReference(const ModelSession& session, const 
   const ScalarView view = session.evaluate(request.quantity, request.step);
   const TransferFunction tf =
       request.transferFunction ? *request.transferFunction : defaultTransferFunction(view, mesh.bounds().diagonal());
-  const optics::TetVolume volume(mesh, view.location, view.values);
+  const optics::TetVolume volume(session.tetrahedra().mesh, view.location, session.tetValues(view));
   Camera camera;
   camera.fit(mesh.bounds());
   applyCameraSpec(camera, request.camera);

@@ -74,10 +74,6 @@ void Viewport::setVolumeRenderer(std::unique_ptr<VolumeRenderer> renderer) {
 
 void Viewport::showVolume(const TransferFunction& tf) {
   if (!volume_ || !session_ || !view_) throw std::invalid_argument("no volume renderer or no result to render");
-  for (const auto& [type, count] : session_->model().mesh.countsByType())
-    if (type != CellType::Tet4 && type != CellType::Tet10)
-      throw std::invalid_argument("volume rendering needs tetrahedra; this model has " + std::to_string(count) + " " +
-                                  std::string(cellTypeName(type)) + " cells");
   tf_ = tf;
   volumeShown_ = true;
   volumeDirty_ = true;
@@ -117,10 +113,11 @@ void Viewport::moveClipPlane(double distance) {
 // Uploads what changed since the last frame; the mesh only when the data did.
 void Viewport::uploadVolume() {
   if (!volumeDirty_ || !volume_ || !view_ || !session_) return;
+  const std::vector<double> values = session_->tetValues(*view_);  // on the conforming tetrahedra
   if (uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location) {
-    volume_->setValues(view_->values);  // same mesh: only the values travel
+    volume_->setValues(values);  // same mesh: only the values travel
   } else {
-    volume_->setVolume(session_->model().mesh, view_->location, view_->values);
+    volume_->setVolume(session_->tetrahedra().mesh, view_->location, values);
     uploadedModel_ = &session_->model();
     uploadedLocation_ = view_->location;
   }

@@ -79,8 +79,9 @@ TEST(RenderCommand, ReferenceVolumeRendererWritesPngAndFloatImages) {
 }
 
 TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
-  const auto hex = runVolpost("render " + dataFile("bad/ref_hex_block.vtu") + " --renderer reference --field x -o /tmp/x.png");
-  EXPECT_EQ(hex.exitCode, 1);
+  const auto noResults = runVolpost("render " + dataFile("bad/ref_hex_block.vtu") + " --renderer reference --field x -o /tmp/x.png");
+  EXPECT_EQ(noResults.exitCode, 1);
+  EXPECT_NE(noResults.output.find("has no result fields"), std::string::npos) << noResults.output;
   const auto noField = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference -o /tmp/x.png");
   EXPECT_EQ(noField.exitCode, 2);
   EXPECT_NE(noField.output.find("needs --field"), std::string::npos) << noField.output;
@@ -121,4 +122,12 @@ TEST(RenderCommand, IsoSurfaceOptionIsCheckedAndRendered) {
   const auto bad = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer raycast --field S11 --iso 100:2,0,0 -o " + png);
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.output.find("--iso 100:2,0,0"), std::string::npos) << bad.output;
+}
+
+TEST(RenderCommand, MixedCellsAreTetrahedralizedForVolumeRendering) {
+  // The bundled wheel: hexahedra, wedges, pyramids and tetrahedra.
+  const std::string png = (std::filesystem::temp_directory_path() / "volpost_mixed.png").string();
+  const auto r = runVolpost("render " + std::string(VOLPOST_SOURCE_DIR) + "/resources/examples/wheel_mixed.vtu" +
+                            " --renderer reference --field S.mises --size 48x36 -o " + png);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
 }

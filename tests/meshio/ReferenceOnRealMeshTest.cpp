@@ -6,11 +6,14 @@
 #include "ReaderSupport.hpp"
 
 #include <volpost/core/BoundarySurface.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
 #include <volpost/core/optics/ReferenceRenderer.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <array>
+#include <map>
 #include <random>
 
 using namespace volpost;
@@ -113,4 +116,33 @@ TEST(ReferenceOnRealMesh, NonConvexWheelRaysLeaveAndReenter) {
   VOLPOST_SHARED_OR_SKIP(path, "wheel/tet4/wheel_tet4.vtu");
   const auto model = volpost::test::meshioReaders().load(path);
   compareLengths(*model, 150, 1e-9);
+}
+
+TEST(TetrahedralizeRealMesh, TheBundledMixedWheelConforms) {
+  // gmsh hexahedra, wedges, pyramids and tetrahedra (resources/examples).
+  const auto model = volpost::test::meshioReaders().load(std::string(VOLPOST_SOURCE_DIR) + "/resources/examples/wheel_mixed.vtu");
+  const TetMesh t = tetrahedralize(model->mesh);
+  std::map<std::array<NodeIndex, 3>, int> faces;
+  double volume = 0.0, smallest = 1e300;
+  for (std::size_t i = 0; i < t.mesh.cellCount(); ++i) {
+    const double v = signedCellVolume(t.mesh, i);
+    volume += v;
+    smallest = std::min(smallest, v);
+    const auto n = t.mesh.cellNodes(i);
+    for (const CellFace& f : topology(CellType::Tet4).faces) {
+      std::array<NodeIndex, 3> k = {n[f.corners[0]], n[f.corners[1]], n[f.corners[2]]};
+      std::sort(k.begin(), k.end());
+      ++faces[k];
+    }
+  }
+  double original = 0.0;
+  for (std::size_t c = 0; c < model->mesh.cellCount(); ++c) original += signedCellVolume(model->mesh, c);
+  std::size_t boundary = 0, overShared = 0;
+  for (const auto& [k, count] : faces) boundary += count == 1, overShared += count > 2;
+  std::printf("wheel_mixed: %zu cells -> %zu tets, %zu Steiner points\n", model->mesh.cellCount(), t.mesh.cellCount(),
+              t.steinerCell.size());
+  EXPECT_NEAR(volume, original, 1e-9 * original);
+  EXPECT_GT(smallest, 0.0);
+  EXPECT_EQ(overShared, 0u);
+  EXPECT_EQ(boundary, extractBoundary(model->mesh).mesh.n_faces());
 }

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Conforming tetrahedra for volume rendering. Quadrilateral faces are split by the
+// diagonal through their smallest global node id (Dompierre et al. 1999), so two cells
+// sharing a face split it the same way; every hexahedron, wedge and pyramid then gets a
+// Steiner point at its centroid joined to its face triangles (always valid for convex
+// cells, whatever the diagonals). tet10 is split into 8 tets through its midside nodes;
+// hex20 and wedge15 use their corners (their midside values are not used yet).
+#pragma once
+
+#include <volpost/core/Mesh.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace volpost {
+
+struct TetMesh {
+  Mesh mesh;  ///< tet4 only; nodes are the original ones, then one Steiner point per cell that needs it
+  std::vector<std::uint32_t> cellOfTet;  ///< the source cell of every tet
+  std::size_t originalNodes = 0;
+  /// Steiner point i (node originalNodes + i) is the mean of these source nodes.
+  std::vector<std::uint32_t> steinerCell;
+
+  /// Node values for `mesh`: the originals, then each Steiner point's mean of its cell's corners.
+  std::vector<double> nodeValues(const Mesh& source, std::span<const double> values) const;
+  /// Cell values for `mesh`: each tet takes its source cell's.
+  std::vector<double> cellValues(std::span<const double> values) const;
+};
+
+/// A mesh of tet4 (and tet10) only comes back with the same nodes and one tet per tet4.
+TetMesh tetrahedralize(const Mesh& mesh);
+
+}  // namespace volpost
