@@ -143,8 +143,9 @@ void facePlane(uvec4 tv, int k, out vec3 n, out vec3 a) {
   a = p0;
 }
 
-// Nearest entry (front-facing boundary face) hit with parameter >= tMin; -1 if none.
-int findEntry(float tMin, out float tHit, out int faceOut) {
+// Nearest entry (front-facing boundary face) hit with parameter >= tMin, other than the
+// face `excluded` (tet * 4 + face); -1 if none.
+int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
   int best = -1;
   tHit = 3.4e38;
   uint stack[64];
@@ -165,6 +166,7 @@ int findEntry(float tMin, out float tHit, out int faceOut) {
     }
     for (uint i = first; i < first + count; ++i) {
       uint code = boundaryFaces[i];
+      if (code == excluded) continue;  // the face the ray last entered through: no re-entry loop
       uint tet = code >> 2;
       int k = int(code & 3u);
       uvec4 tv = tets[tet];
@@ -233,31 +235,30 @@ vec3 gradientOf(uvec4 tv) {  // of the linear scalar: sum_k s_k grad(lambda_k)
 void integrate(uvec4 tv, uint tet, float t0, float t1) {
   if (!clipSegment(t0, t1)) return;
   float sf = valueAt(tv, tet, rayOrigin + t0 * rayDir), sb = valueAt(tv, tet, rayOrigin + t1 * rayDir);
-  // Iso-surfaces crossed in (sf, sb], in ray order, between volume pieces.
-  float hitX[8];
-  int hitIso[8];
-  int hits = 0;
-  if (sf != sb) {
+  if (isoCount == 0 || sf == sb) { integratePiece(t0, t1, sf, sb); return; }
+  // Iso-surfaces crossed in (sf, sb], in ray order (picked one by one: no local arrays,
+  // which cost registers on every invocation), between volume pieces.
+  float x0 = 0.0;
+  float shade = -1.0;
+  for (int h = 0; h < isoCount; ++h) {
+    float best = 2.0;
+    int which = -1;
     for (int i = 0; i < isoCount; ++i) {
       float v = isoValue[i];
       if ((sb > sf && v > sf && v <= sb) || (sb < sf && v < sf && v >= sb)) {
         float x = (v - sf) / (sb - sf);
-        int j = hits++;
-        while (j > 0 && hitX[j - 1] > x) { hitX[j] = hitX[j - 1]; hitIso[j] = hitIso[j - 1]; --j; }
-        hitX[j] = x;
-        hitIso[j] = i;
+        if (x > x0 && x < best) { best = x; which = i; }
       }
     }
-  }
-  if (hits == 0) { integratePiece(t0, t1, sf, sb); return; }
-  vec3 g = cellField ? vec3(0.0) : gradientOf(tv);
-  float shade = dot(g, g) > 0.0 ? 0.3 + 0.7 * abs(dot(normalize(g), rayDir)) : 1.0;
-  float x0 = 0.0;
-  for (int h = 0; h < hits; ++h) {
-    integratePiece(mix(t0, t1, x0), mix(t0, t1, hitX[h]), mix(sf, sb, x0), isoValue[hitIso[h]]);
-    vec4 c = isoColor[hitIso[h]];
+    if (which < 0) break;
+    if (shade < 0.0) {
+      vec3 g = cellField ? vec3(0.0) : gradientOf(tv);
+      shade = dot(g, g) > 0.0 ? 0.3 + 0.7 * abs(dot(normalize(g), rayDir)) : 1.0;
+    }
+    integratePiece(mix(t0, t1, x0), mix(t0, t1, best), mix(sf, sb, x0), isoValue[which]);
+    vec4 c = isoColor[which];
     composite(c.rgb * shade * c.a, 1.0 - c.a);
-    x0 = hitX[h];
+    x0 = best;
   }
   integratePiece(mix(t0, t1, x0), t1, mix(sf, sb, x0), sb);
 }
@@ -282,28 +283,50 @@ void main() {
   }
 
   int steps = 0;
+  uint lastEntry = 0xffffffffu;
   while (steps < maxSteps && accT >= terminationTransmittance) {
     float tIn;
     int face;
-    int tet = findEntry(t, tIn, face);
+    int tet = findEntry(t, lastEntry, tIn, face);
+    if (tet >= 0) lastEntry = uint(tet) * 4u + uint(face);
     if (tet < 0 || tIn > tEnd) break;
     // Walk until the ray leaves the mesh, then look for where it comes back.
     while (tet >= 0 && steps < maxSteps && accT >= terminationTransmittance) {
       ++steps;
       uvec4 tv = tets[tet];
-      float tOut = 3.4e38;
-      int exitFace = -1;
+      // Exit: the face the ray leaves through first, among those not behind the entry
+      // point (rounding can put a face sharing the entry edge slightly behind it).
+      float eps = 1e-5 * (abs(tIn) + length(nodes[tv.x].xyz - nodes[tv.y].xyz));
+      float tOut = 3.4e38, tBehind = -3.4e38;
+      int exitFace = -1, behindFace = -1;
+      float tk[4];
       for (int k = 0; k < 4; ++k) {
+        tk[k] = 3.4e38;
         if (k == face) continue;
         vec3 n, a;
         facePlane(tv, k, n, a);
         float den = dot(n, rayDir);
         if (den <= 0.0) continue;
-        float tk = dot(n, a - rayOrigin) / den;
-        if (tk < tOut) { tOut = tk; exitFace = k; }  // ties: the lowest face index
+        tk[k] = dot(n, a - rayOrigin) / den;
+        if (tk[k] >= tIn - eps) {
+          if (tk[k] < tOut) { tOut = tk[k]; exitFace = k; }  // ties: the lowest face index
+        } else if (tk[k] > tBehind) {
+          tBehind = tk[k];
+          behindFace = k;
+        }
       }
-      if (exitFace < 0) break;  // degenerate: search again from here
-      tOut = max(tOut, tIn);
+      if (exitFace < 0) { exitFace = behindFace; tOut = tIn; }  // the ray only grazes this tet
+      // A ray through an edge or vertex may tie a boundary face with an interior one: leaving
+      // through the boundary there would skip the rest of the mesh, so take the interior one.
+      if (exitFace >= 0 && neighbors[tet][exitFace] < 0) {
+        for (int k = 0; k < 4; ++k)
+          if (k != exitFace && tk[k] <= tOut + eps && tk[k] >= tIn - eps && neighbors[tet][k] >= 0) {
+            exitFace = k;
+            break;
+          }
+      }
+      if (exitFace < 0) { t = tIn; break; }  // degenerate: search again from here
+      tOut = max(tOut, tIn);  // a grazing exit (through the entry edge) has no length
       integrate(tv, uint(tet), tIn, min(tOut, tEnd));
       t = tOut;
       if (tOut >= tEnd) { tet = -1; steps = maxSteps; break; }

@@ -2,7 +2,9 @@
 // The GPU ray caster (headless EGL) against the exact CPU reference renderer, with stated
 // error bounds per integration mode, and the hard cases: no pixel lost on axis-aligned
 // views of a tetrahedralized grid, clip planes, element results, a far-away tiny mesh.
+#include "../TestSupport.hpp"
 #include "../core/TetGrid.hpp"
+#include "../meshio/ReaderSupport.hpp"
 
 #include "RayCaster.hpp"
 
@@ -303,4 +305,22 @@ TEST_F(RayCast, OpaqueGeometryEndsRaysAtItsDepth) {
   std::printf("raycast ended by scene depth vs reference clipped there: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-4);
   EXPECT_LE(e.max, 5e-3);
+}
+
+TEST_F(RayCast, NoRayIsLostOnTheRealWheel) {
+  // Regression: at 256 px one ray of the gmsh wheel entered a boundary tet exactly at an
+  // edge shared with another boundary face, left through it with no length, and kept
+  // re-entering through the same face; the rest of its path was lost.
+  VOLPOST_SHARED_OR_SKIP(path, "wheel/tet4/wheel_tet4.vtu");
+  const auto model = test::meshioReaders().load(path);
+  const Field& s = *model->findField("S_Mises");
+  std::vector<double> values = s.values(0);
+  const TransferFunction tf = TransferFunction::ramp(0.0, 40.0, "cool-warm", 0.08, 11);
+  Camera camera;
+  camera.setView(StandardView::Isometric);
+  camera.fit(model->mesh.bounds());
+  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  const ImageError e = againstReference(model->mesh, FieldLocation::Node, values, tf, camera, 256);
+  std::printf("raycast real wheel 256 px vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.max, 1e-3);
 }
