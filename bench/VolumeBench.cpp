@@ -155,12 +155,20 @@ int main(int argc, char** argv) {
       const double tfMs = msSince(tfStart);  // TF change to the new frame
       const auto image = caster.readImage();
       double sum = 0.0, worst = 0.0;
-      for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+      std::size_t bad = 0, worstPixel = 0;
+      for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+        double pixelError = 0.0;
         for (int k = 0; k < 4; ++k) {
           const double d = double(image[4 * i + std::size_t(k)]) - reference.pixels[i][k];
           sum += d * d;
-          worst = std::max(worst, std::abs(d));
+          pixelError = std::max(pixelError, std::abs(d));
         }
+        bad += pixelError > 0.05;
+        if (pixelError > worst) worst = pixelError, worstPixel = i;
+      }
+      // Pixels far from the reference (a lost ray would show here), for the record.
+      if (bad) std::fprintf(stderr, "%s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(),
+                            toString(mode), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
       const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
       std::vector<double> times;
       Camera orbit = camera;

@@ -315,6 +315,12 @@ void main() {
           behindFace = k;
         }
       }
+      // No segment through a tet is longer than its longest edge: a longer one means the
+      // ray only grazes this tet (its true exit rounded to just behind the entry).
+      vec3 q0 = nodes[tv.x].xyz, q1 = nodes[tv.y].xyz, q2 = nodes[tv.z].xyz, q3 = nodes[tv.w].xyz;
+      float diameter = max(max(max(distance(q0, q1), distance(q0, q2)), max(distance(q0, q3), distance(q1, q2))),
+                           max(distance(q1, q3), distance(q2, q3)));
+      if (exitFace >= 0 && tOut - tIn > 1.001 * diameter + eps && behindFace >= 0) exitFace = -1;
       if (exitFace < 0) { exitFace = behindFace; tOut = tIn; }  // the ray only grazes this tet
       // A ray through an edge or vertex may tie a boundary face with an interior one: leaving
       // through the boundary there would skip the rest of the mesh, so take the interior one.
