@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "TetMeshGpu.hpp"
 
+#include <volpost/core/Tetrahedralize.hpp>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -116,14 +118,7 @@ std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stay
 }
 
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
-  const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
-  if (values.size() != expected)
-    throw std::invalid_argument("volume rendering: " + std::to_string(values.size()) + " values for " +
-                                std::to_string(expected) + (location == FieldLocation::Node ? " nodes" : " cells"));
-  for (const auto& [type, count] : mesh.countsByType())
-    if (type != CellType::Tet4 && type != CellType::Tet10)
-      throw std::invalid_argument("volume rendering needs tetrahedra; this mesh has " + std::to_string(count) + " " +
-                                  std::string(cellTypeName(type)) + " cells (split them into tetrahedra first)");
+  requireTetrahedraAndValues(mesh, location == FieldLocation::Node, values.size());
   TetMeshGpu g;
   const Bounds b = mesh.bounds();
   g.origin = b.valid ? b.center() : glm::dvec3(0.0);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 
 namespace volpost {
 namespace {
@@ -78,6 +80,17 @@ TetMesh tetrahedralize(const Mesh& mesh) {
     }
   }
   return out;
+}
+
+void requireTetrahedraAndValues(const Mesh& mesh, bool perNode, std::size_t valueCount) {
+  const std::size_t expected = perNode ? mesh.nodeCount() : mesh.cellCount();
+  if (valueCount != expected)
+    throw std::invalid_argument("volume rendering: " + std::to_string(valueCount) + " values for " +
+                                std::to_string(expected) + (perNode ? " nodes" : " cells"));
+  for (const auto& [type, count] : mesh.countsByType())
+    if (type != CellType::Tet4 && type != CellType::Tet10)
+      throw std::invalid_argument("volume rendering needs tetrahedra; this mesh has " + std::to_string(count) + " " +
+                                  std::string(cellTypeName(type)) + " cells (split them with tetrahedralize() first)");
 }
 
 std::vector<double> TetMesh::nodeValues(const Mesh& source, std::span<const double> values) const {

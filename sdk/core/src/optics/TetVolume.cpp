@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/optics/TetVolume.hpp>
 
+#include <volpost/core/Tetrahedralize.hpp>
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -27,14 +29,7 @@ constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // f
 }  // namespace
 
 TetVolume::TetVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
-  const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
-  if (values.size() != expected)
-    throw std::invalid_argument("volume rendering: " + std::to_string(values.size()) + " values for " +
-                                std::to_string(expected) + (location == FieldLocation::Node ? " nodes" : " cells"));
-  for (const auto& [type, count] : mesh.countsByType())
-    if (type != CellType::Tet4 && type != CellType::Tet10)
-      throw std::invalid_argument("volume rendering needs tetrahedra; this mesh has " + std::to_string(count) + " " +
-                                  std::string(cellTypeName(type)) + " cells (split them into tetrahedra first)");
+  requireTetrahedraAndValues(mesh, location == FieldLocation::Node, values.size());
   const Bounds b = mesh.bounds();
   origin_ = b.valid ? b.center() : glm::dvec3(0.0);
   std::vector<std::array<glm::dvec3, 2>> boxes;

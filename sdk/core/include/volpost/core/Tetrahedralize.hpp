@@ -31,4 +31,8 @@ struct TetMesh {
 /// A mesh of tet4 (and tet10) only comes back with the same nodes and one tet per tet4.
 TetMesh tetrahedralize(const Mesh& mesh);
 
+/// Throws std::invalid_argument unless the mesh has only tetrahedra (tet4, tet10) and one
+/// value per node or per cell: what the volume renderers take (after tetrahedralize()).
+void requireTetrahedraAndValues(const Mesh& mesh, bool perNode, std::size_t valueCount);
+
 }  // namespace volpost
