@@ -2,6 +2,7 @@
 // The meshio readers in a registry, as the host assembles them from the plugin.
 #pragma once
 
+#include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
@@ -12,10 +13,12 @@ namespace volpost::test {
 inline const ReaderRegistry& meshioReaders() {
   static const meshio::VtuReader vtu;
   static const meshio::VtkLegacyReader legacy;
+  static const meshio::GmshReader gmsh;
   static const ReaderRegistry registry = [] {
     ReaderRegistry r;
     r.add(&vtu);
     r.add(&legacy);
+    r.add(&gmsh);
     return r;
   }();
   return registry;

@@ -2,6 +2,7 @@
 // The meshio plugin: hands the host its file readers.
 #pragma once
 
+#include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
@@ -17,11 +18,12 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   Q_INTERFACES(volpost::ReaderPlugin)
 
  public:
-  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_}; }
+  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_}; }
 
  private:
   VtuReader vtu_;
   VtkLegacyReader legacy_;
+  GmshReader gmsh_;
 };
 
 }  // namespace volpost::meshio

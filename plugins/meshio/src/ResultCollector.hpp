@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Gathers result blocks as a reader meets them (one block = one field at one step) and
+// turns them into the model's fields, one Field per name with all its steps in order.
+#pragma once
+
+#include <volpost/core/Model.hpp>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace volpost::meshio {
+
+class ResultCollector {
+ public:
+  /// `values` holds entityCount x components doubles. A block whose name was seen with a
+  /// different location or component count becomes its own field ("name (cells)", ...).
+  void add(const std::string& name, FieldLocation location, int components, Step step,
+           std::vector<double> values);
+  /// Moves the fields into `model` (in the order their names first appeared).
+  void moveInto(Model& model);
+
+ private:
+  struct Pending {
+    std::string name;
+    FieldLocation location;
+    int components;
+    std::vector<Step> steps;
+    std::vector<std::vector<double>> values;
+  };
+  std::vector<Pending> fields_;
+};
+
+/// Values given per element corner (element-nodal or extrapolated Gauss points) averaged
+/// at each node over the cells that share it. `cellCornerValues[c]` holds the nodes of
+/// cell c in mesh order, `components` values each. Nodes no cell touches get NaN.
+std::vector<double> averageToNodes(const Mesh& mesh, const std::vector<std::vector<double>>& cellCornerValues,
+                                   int components);
+
+}  // namespace volpost::meshio
