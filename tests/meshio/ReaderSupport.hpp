@@ -2,6 +2,8 @@
 // The meshio readers in a registry, as the host assembles them from the plugin.
 #pragma once
 
+#include "AbaqusInputReader.hpp"
+#include "FrdReader.hpp"
 #include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -14,11 +16,15 @@ inline const ReaderRegistry& meshioReaders() {
   static const meshio::VtuReader vtu;
   static const meshio::VtkLegacyReader legacy;
   static const meshio::GmshReader gmsh;
+  static const meshio::AbaqusInputReader inp;
+  static const meshio::FrdReader frd;
   static const ReaderRegistry registry = [] {
     ReaderRegistry r;
     r.add(&vtu);
     r.add(&legacy);
     r.add(&gmsh);
+    r.add(&inp);
+    r.add(&frd);
     return r;
   }();
   return registry;

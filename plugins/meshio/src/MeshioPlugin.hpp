@@ -2,6 +2,8 @@
 // The meshio plugin: hands the host its file readers.
 #pragma once
 
+#include "AbaqusInputReader.hpp"
+#include "FrdReader.hpp"
 #include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -18,12 +20,14 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   Q_INTERFACES(volpost::ReaderPlugin)
 
  public:
-  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_}; }
+  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_}; }
 
  private:
   VtuReader vtu_;
   VtkLegacyReader legacy_;
   GmshReader gmsh_;
+  AbaqusInputReader inp_;
+  FrdReader frd_;
 };
 
 }  // namespace volpost::meshio
