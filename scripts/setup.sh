@@ -9,7 +9,7 @@ packages=(
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev
   libglm-dev libopenmesh-dev libepoxy-dev libegl-dev libgl-dev
   libegl-mesa0 libgl1-mesa-dri            # Mesa llvmpipe: OpenGL 4.5 with no GPU
-  libpugixml-dev zlib1g-dev nlohmann-json3-dev
+  libpugixml-dev zlib1g-dev nlohmann-json3-dev libnetcdf-dev
   libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core            # GUI tests on a virtual display; legend text
 )

@@ -4,6 +4,7 @@
 
 #include "AbaqusInputReader.hpp"
 #include "FrdReader.hpp"
+#include "ExodusReader.hpp"
 #include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -18,6 +19,7 @@ inline const ReaderRegistry& meshioReaders() {
   static const meshio::GmshReader gmsh;
   static const meshio::AbaqusInputReader inp;
   static const meshio::FrdReader frd;
+  static const meshio::ExodusReader exodus;
   static const ReaderRegistry registry = [] {
     ReaderRegistry r;
     r.add(&vtu);
@@ -25,6 +27,7 @@ inline const ReaderRegistry& meshioReaders() {
     r.add(&gmsh);
     r.add(&inp);
     r.add(&frd);
+    r.add(&exodus);
     return r;
   }();
   return registry;

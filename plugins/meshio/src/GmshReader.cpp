@@ -398,34 +398,38 @@ class GmshParser {
     const bool wasBinary = binary_;
     binary_ = false;  // the tags are text in binary files too
     std::string name = section;
-    const std::int64_t nStrings = count("the number of string tags", false);
+    const auto lineInteger = [&](const char* what) {
+      const auto line = trim(s_.nextLine());
+      if (line.empty() && s_.atEnd()) s_.fail("file ends inside $" + section + " (truncated)");
+      return parseInteger(s_, line, what);
+    };
+    const std::int64_t nStrings = lineInteger("the number of string tags");
     for (std::int64_t i = 0; i < nStrings; ++i) {
       auto line = trim(s_.nextLine());
       if (line.size() >= 2 && line.front() == '"' && line.back() == '"') line = line.substr(1, line.size() - 2);
       if (i == 0) name = std::string(line);
     }
-    const std::int64_t nReals = count("the number of real tags", false);
+    const std::int64_t nReals = lineInteger("the number of real tags");
     double time = 0.0;
     for (std::int64_t i = 0; i < nReals; ++i) {
-      const double v = real("a real tag");
+      const double v = parseReal(s_, s_.nextLine(), "a real tag");
       if (i == 0) time = v;
     }
-    const std::int64_t nIntegers = count("the number of integer tags", false);
+    const std::int64_t nIntegers = lineInteger("the number of integer tags");
     std::array<std::int64_t, 3> ints{0, 1, 0};
     for (std::int64_t i = 0; i < nIntegers; ++i) {
-      const std::int64_t v = integer("an integer tag");
+      const std::int64_t v = lineInteger("an integer tag");
       if (i < 3) ints[std::size_t(i)] = v;
     }
     if (nIntegers < 3) s_.fail("$" + section + " needs 3 integer tags (step, components, count)");
     const std::int64_t components = ints[1], n = ints[2];
     if (components < 1 || components > 64) s_.fail("$" + section + " '" + name + "': " + std::to_string(components) + " components is not plausible");
     if (n < 0 || n > (std::int64_t(1) << 36)) s_.fail("$" + section + " '" + name + "': count " + std::to_string(n) + " is out of range");
-    if (wasBinary) {  // the binary records start after the count's line
-      s_.nextLine();
-      binary_ = true;
-    }
+    binary_ = wasBinary;  // the records: binary right after the last tag's line
     const std::size_t nc = std::size_t(components);
-    const Step step{"step " + std::to_string(ints[0] + 1) + (nReals > 0 ? ", t = " + std::to_string(time) : ""), time};
+    char label[64];
+    std::snprintf(label, sizeof label, nReals > 0 ? "step %lld, t = %g" : "step %lld", static_cast<long long>(ints[0] + 1), time);
+    const Step step{label, time};
     if (section == "NodeData") {
       std::vector<double> values(model_->mesh.nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
       for (std::int64_t i = 0; i < n; ++i) {
@@ -460,7 +464,6 @@ class GmshParser {
         results_.add(name, FieldLocation::Cell, int(components), step, std::move(values));
       }
     }
-    binary_ = wasBinary;
     expectEnd(section);
   }
 

@@ -4,6 +4,7 @@
 
 #include "AbaqusInputReader.hpp"
 #include "FrdReader.hpp"
+#include "ExodusReader.hpp"
 #include "GmshReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -20,7 +21,7 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   Q_INTERFACES(volpost::ReaderPlugin)
 
  public:
-  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_}; }
+  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_, &exodus_}; }
 
  private:
   VtuReader vtu_;
@@ -28,6 +29,7 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   GmshReader gmsh_;
   AbaqusInputReader inp_;
   FrdReader frd_;
+  ExodusReader exodus_;
 };
 
 }  // namespace volpost::meshio

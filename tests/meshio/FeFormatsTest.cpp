@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: MIT
+// The FE formats beyond VTK: Gmsh 2.2/4.1 (ASCII, binary), Abaqus/CalculiX decks,
+// CalculiX .frd and Exodus II. The same model read from every format must give the same
+// mesh (by node id) and the same values; quadratic node orders are checked by geometry
+// (each midside node at the middle of its own edge).
+#include "../TestSupport.hpp"
+#include "ReaderSupport.hpp"
+
+#include <volpost/core/Quantity.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <fstream>
+#include <set>
+
+using namespace volpost;
+using volpost::test::dataFile;
+using volpost::test::meshioReaders;
+
+namespace {
+
+// Node position by file id (0-based VTK files number nodes 1.. in ascending id order).
+glm::dvec3 nodeById(const Model& m, std::int64_t id) {
+  if (m.mesh.nodeIds.empty()) return m.mesh.nodes.at(std::size_t(id - 1));
+  const auto it = std::find(m.mesh.nodeIds.begin(), m.mesh.nodeIds.end(), id);
+  EXPECT_NE(it, m.mesh.nodeIds.end()) << "no node " << id;
+  return it == m.mesh.nodeIds.end() ? glm::dvec3(NAN) : m.mesh.nodes[std::size_t(it - m.mesh.nodeIds.begin())];
+}
+
+std::int64_t idOf(const Model& m, std::size_t node) {
+  return m.mesh.nodeIds.empty() ? std::int64_t(node + 1) : m.mesh.nodeIds[node];
+}
+
+// Every cell as (type, its node ids in VTK order); order-independent comparison.
+std::multiset<std::vector<std::int64_t>> cellsById(const Model& m) {
+  std::multiset<std::vector<std::int64_t>> out;
+  for (std::size_t c = 0; c < m.mesh.cellCount(); ++c) {
+    std::vector<std::int64_t> ids{std::int64_t(m.mesh.cellType(c))};
+    for (NodeIndex n : m.mesh.cellNodes(c)) ids.push_back(idOf(m, n));
+    out.insert(ids);
+  }
+  return out;
+}
+
+// Largest distance of a midside node from the middle of its edge, over all cells.
+double worstMidsideOffset(const Model& m) {
+  double worst = 0.0;
+  for (std::size_t c = 0; c < m.mesh.cellCount(); ++c) {
+    const auto& t = topology(m.mesh.cellType(c));
+    if (!t.quadratic) continue;
+    const auto nodes = m.mesh.cellNodes(c);
+    for (const CellEdge& e : t.edges) {
+      const glm::dvec3 mid = 0.5 * (m.mesh.nodes[nodes[e.a]] + m.mesh.nodes[nodes[e.b]]);
+      worst = std::max(worst, glm::length(m.mesh.nodes[nodes[std::size_t(e.mid)]] - mid));
+    }
+  }
+  return worst;
+}
+
+bool hasDiagnostic(const Model& m, const std::string& code) {
+  return std::any_of(m.diagnostics.begin(), m.diagnostics.end(), [&](const Diagnostic& d) { return d.code == code; });
+}
+
+}  // namespace
+
+// --- the small reference model of bad/, written by gmsh/ccx/VTK/netCDF ---------------
+
+class SmallModelInEveryFormat : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SmallModelInEveryFormat, GivesTheMeshAndValuesOfTheVtuFile) {
+  static const auto reference = meshioReaders().load(dataFile("bad/ref_small_tets.vtu"));
+  const auto model = meshioReaders().load(dataFile(std::string("bad/") + GetParam()));
+  ASSERT_EQ(model->mesh.nodeCount(), 108u);
+  ASSERT_EQ(model->mesh.cellCount(), 266u);
+  EXPECT_FALSE(hasDiagnostic(*model, "inverted-cells"));
+  // .frd keeps 6 significant digits of the coordinates, the .inp about 10, the others all.
+  const std::string file = GetParam();
+  const double tolerance = file.ends_with(".frd") ? 5e-5 : file.ends_with(".inp") ? 1e-9 : 1e-12;
+  for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
+    ASSERT_NEAR(glm::length(model->mesh.nodes[n] - nodeById(*reference, idOf(*model, n))), 0.0, tolerance) << n;
+  EXPECT_EQ(cellsById(*model), cellsById(*reference));
+  for (const char* name : {"U", "S"}) {
+    const Field* f = model->findField(name);
+    if (std::string(GetParam()).ends_with(".msh") || std::string(GetParam()).ends_with(".inp")) {
+      EXPECT_FALSE(f) << "mesh-only format";
+      continue;
+    }
+    ASSERT_TRUE(f) << name;
+    const Field& r = *reference->findField(name);
+    ASSERT_EQ(f->components(), r.components());
+    const std::size_t nc = std::size_t(r.components());
+    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
+      for (std::size_t k = 0; k < nc; ++k)
+        ASSERT_EQ(f->values(0)[n * nc + k], r.values(0)[std::size_t(idOf(*model, n) - 1) * nc + k]) << name << " node " << n;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, SmallModelInEveryFormat,
+                         ::testing::Values("ref_small_tets.msh", "ref_small_tets_v22.msh", "ref_small_tets.inp",
+                                           "ref_small_tets.frd", "ref_small_tets.vtk", "ref_small_tets.exo"),
+                         [](const auto& p) {
+                           std::string n = p.param;
+                           for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+// --- hand-made golden files: quadratic cells, sparse ids, steps, element data ----------
+
+class GoldenModel : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GoldenModel, PutsEveryMidsideNodeOnItsEdge) {
+  const auto model = meshioReaders().load(dataFile(std::string("formats/") + GetParam()));
+  ASSERT_EQ(model->mesh.cellCount(), 3u) << "the surface triangle is skipped";
+  ASSERT_EQ(model->mesh.nodeCount(), 37u);
+  const auto counts = model->mesh.countsByType();
+  EXPECT_EQ(counts.at(CellType::Hex20), 1u);
+  EXPECT_EQ(counts.at(CellType::Wedge15), 1u);
+  EXPECT_EQ(counts.at(CellType::Tet10), 1u);
+  EXPECT_EQ(worstMidsideOffset(*model), 0.0);
+  for (std::size_t c = 0; c < 3; ++c) EXPECT_GT(signedCellVolume(model->mesh, c), 0.0) << c;
+  EXPECT_NEAR(signedCellVolume(model->mesh, 0) + signedCellVolume(model->mesh, 1) + signedCellVolume(model->mesh, 2),
+              1.0 + 0.5 + 1.0 / 6.0, 1e-12);
+  EXPECT_EQ(model->mesh.cellIds, (std::vector<std::int64_t>{101, 102, 103}));
+}
+
+class GoldenResults : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GoldenResults, ReadsEveryStepOfTheNodalResult) {
+  const auto model = meshioReaders().load(dataFile(std::string("formats/") + GetParam()));
+  const Field* t = model->findField("T");
+  ASSERT_TRUE(t);
+  ASSERT_EQ(t->stepCount(), 2u);
+  EXPECT_EQ(t->steps()[1].time, 2.0);
+  for (std::size_t step = 0; step < 2; ++step)
+    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n) {
+      const glm::dvec3 p = model->mesh.nodes[n];
+      EXPECT_NEAR(t->values(step)[n], double(step + 1) * (p.x + 10 * p.y + 100 * p.z), 1e-9);
+    }
+}
+
+std::string paramName(const ::testing::TestParamInfo<const char*>& p) {
+  std::string n = p.param;
+  for (char& c : n) if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return n;
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, GoldenModel,
+                         ::testing::Values("golden_41.msh", "golden_41_binary.msh", "golden_22.msh",
+                                           "golden_22_binary.msh", "golden.inp", "golden.frd"),
+                         paramName);
+INSTANTIATE_TEST_SUITE_P(Formats, GoldenResults,
+                         ::testing::Values("golden_41.msh", "golden_41_binary.msh", "golden_22.msh",
+                                           "golden_22_binary.msh", "golden.frd"),
+                         paramName);
+
+TEST(AbaqusDeck, ReadsTheHeadingIncludesAndElementSets) {
+  const auto model = meshioReaders().load(dataFile("formats/golden.inp"));
+  EXPECT_EQ(model->title, "golden model");
+  const Field* sets = model->findField("element set");
+  ASSERT_TRUE(sets);
+  EXPECT_EQ(sets->values(0), (std::vector<double>{1.0, 2.0, 3.0}));
+  EXPECT_TRUE(hasDiagnostic(*model, "skipped-non-solid-elements"));
+}
+
+TEST(GmshData, ElementAndElementNodeViewsAreKept) {
+  for (const char* file : {"formats/golden_41.msh", "formats/golden_22_binary.msh"}) {
+    SCOPED_TRACE(file);
+    const auto model = meshioReaders().load(dataFile(file));
+    const Field* e = model->findField("E");
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->location(), FieldLocation::Cell);
+    EXPECT_EQ(e->values(0), (std::vector<double>{1.0, 2.0, 3.0}));
+    const Field* region = model->findField("region");
+    ASSERT_TRUE(region);
+    EXPECT_EQ(region->values(0), (std::vector<double>{5.0, 5.0, 5.0}));
+    // Element-nodal values 7 + (gmsh local index) on the tet: averaged at its nodes. Only
+    // the tet has them, so each of its 10 nodes shows its own corner value.
+    const Field* en = model->findField("EN");
+    ASSERT_TRUE(en);
+    EXPECT_EQ(en->location(), FieldLocation::Node);
+    const auto tet = model->mesh.cellNodes(2);
+    const int gmshOfVtk[10] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};  // gmsh swaps tet10 nodes 8 and 9
+    for (std::size_t k = 0; k < 10; ++k) EXPECT_EQ(en->values(0)[tet[k]], 7.0 + gmshOfVtk[k]) << k;
+    EXPECT_TRUE(hasDiagnostic(*model, "element-nodal-averaged"));
+  }
+}
+
+TEST(AbaqusDeck, CollapsedHexahedraBecomePyramidsAndWedges) {
+  const std::string dir = ::testing::TempDir();
+  const std::string path = dir + "/collapsed.inp";
+  {
+    std::ofstream out(path);
+    out << "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0.5,0.5,1\n6,0,0,1\n7,1,0,1\n8,0,1,1\n";
+    out << "*ELEMENT, TYPE=C3D8\n1, 1,2,3,4,5,5,5,5\n2, 1,2,4,4,6,7,8,8\n";
+  }
+  const auto model = meshioReaders().load(path);
+  ASSERT_EQ(model->mesh.cellCount(), 2u);
+  EXPECT_EQ(model->mesh.cellType(0), CellType::Pyramid5);
+  EXPECT_EQ(model->mesh.cellType(1), CellType::Wedge6);
+  EXPECT_NEAR(signedCellVolume(model->mesh, 0), 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(signedCellVolume(model->mesh, 1), 0.5, 1e-12);
+  EXPECT_FALSE(hasDiagnostic(*model, "repeated-node-cells"));
+}
+
+TEST(ReaderErrors, NameTheLineAndTheDefect) {
+  const std::string dir = ::testing::TempDir();
+  const auto attempt = [&](const std::string& name, const std::string& text) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path) << text;
+    try {
+      meshioReaders().load(path);
+    } catch (const ReadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  EXPECT_NE(attempt("a.inp", "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n*ELEMENT,TYPE=C3D4\n1,1,2,3\n")
+                .find("a.inp:7: file ends inside an element record"), std::string::npos);
+  EXPECT_NE(attempt("b.inp", "*NODE\n1,0,zero,0\n").find("b.inp:2: expected a node coordinate"), std::string::npos);
+  EXPECT_NE(attempt("c.msh", "$MeshFormat\n4.0 0 8\n$EndMeshFormat\n").find("c.msh:2: MSH version 4.0 is not supported"),
+            std::string::npos);
+  EXPECT_NE(attempt("d.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\n$EndNodes\n")
+                .find("d.msh:7: expected a node tag"), std::string::npos);
+  EXPECT_NE(attempt("e.frd", "    1C\n    2C     1      0\n -1    1 0.00000E+00 0.00000E+00 0.00000E+00\n -3\n 9999\n")
+                .find("no element block"), std::string::npos);
+  EXPECT_NE(attempt("f.exo", "CDF\x01 this is not netCDF").find("f.exo: cannot read as netCDF"), std::string::npos);
+}
+
+// --- the real cases of ../shared/data: every format of a case agrees ------------------
+
+struct RealCase {
+  const char* stem;      // "bar/tet10/bar_tet10"
+  std::size_t nodes, cells;
+};
+
+class RealCaseInEveryFormat : public ::testing::TestWithParam<RealCase> {};
+
+TEST_P(RealCaseInEveryFormat, CountsTypesAndResultsAgree) {
+  const RealCase& c = GetParam();
+  VOLPOST_SHARED_OR_SKIP(vtu, std::string(c.stem) + ".vtu");
+  const auto reference = meshioReaders().load(vtu);
+  EXPECT_EQ(reference->mesh.nodeCount(), c.nodes);
+  EXPECT_EQ(reference->mesh.cellCount(), c.cells);
+  const auto referenceCells = cellsById(*reference);
+  for (const char* ext : {".msh", "_v22.msh", ".inp", ".frd", ".exo", ".vtk"}) {
+    const std::string path = test::sharedFile(std::string(c.stem) + ext);
+    if (path.empty()) continue;  // post has no .inp/.frd (no solver run)
+    SCOPED_TRACE(path);
+    const auto model = meshioReaders().load(path);
+    EXPECT_EQ(model->mesh.nodeCount(), c.nodes);
+    EXPECT_EQ(model->mesh.countsByType(), reference->mesh.countsByType());
+    EXPECT_FALSE(hasDiagnostic(*model, "inverted-cells"));
+    EXPECT_EQ(cellsById(*model), referenceCells);
+    const bool straight = std::string(c.stem).starts_with("bar/");
+    if (straight) EXPECT_LT(worstMidsideOffset(*model), std::string(ext) == ".frd" ? 1e-4 : std::string(ext) == ".inp" ? 1e-9 : 1e-12);
+    const Field* u = model->findField("U");
+    if (!u) continue;
+    const Field& r = *reference->findField("U");
+    double worst = 0.0;
+    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
+      for (std::size_t k = 0; k < 3; ++k)
+        worst = std::max(worst, std::abs(u->values(0)[n * 3 + k] - r.values(0)[std::size_t(idOf(*model, n) - 1) * 3 + k]));
+    EXPECT_EQ(worst, 0.0) << "U differs from the .vtu (the same .frd values)";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shared, RealCaseInEveryFormat,
+                         ::testing::Values(RealCase{"bar/tet4/bar_tet4", 3091, 12431},
+                                           RealCase{"bar/tet10/bar_tet10", 9555, 5360},
+                                           RealCase{"bar/hex8/bar_hex8", 6561, 5120},
+                                           RealCase{"bar/wedge6/bar_wedge6", 6018, 9900},
+                                           RealCase{"wheel/tet4/wheel_tet4", 8012, 30632},
+                                           RealCase{"wheel/mixed/wheel_mixed", 12746, 32482},
+                                           RealCase{"bracket/tet10/bracket_tet10", 11433, 6109},
+                                           RealCase{"post/coarse/post_coarse", 7342, 35246}),
+                         [](const auto& p) {
+                           std::string n = p.param.stem;
+                           n = n.substr(n.rfind('/') + 1);
+                           return n;
+                         });
