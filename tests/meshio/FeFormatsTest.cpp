@@ -281,3 +281,64 @@ INSTANTIATE_TEST_SUITE_P(Shared, RealCaseInEveryFormat,
                            n = n.substr(n.rfind('/') + 1);
                            return n;
                          });
+
+// --- Tecgraf neutral file -----------------------------------------------------------
+
+TEST(NeutralFile, ReadsTheQuadraticCellsInTheirAlternatingOrder) {
+  const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
+  EXPECT_EQ(model->title, "golden neutral file");
+  ASSERT_EQ(model->mesh.cellCount(), 2u) << "the T3 surface element is skipped";
+  EXPECT_EQ(model->mesh.cellType(0), CellType::Hex20);
+  EXPECT_EQ(model->mesh.cellType(1), CellType::Tet10);
+  EXPECT_EQ(worstMidsideOffset(*model), 0.0);
+  EXPECT_NEAR(signedCellVolume(model->mesh, 0), 1.0, 1e-12);
+  EXPECT_NEAR(signedCellVolume(model->mesh, 1), 1.0 / 6.0, 1e-12);
+  EXPECT_TRUE(hasDiagnostic(*model, "skipped-lower-dimensional-cells"));
+}
+
+TEST(NeutralFile, ReadsEveryResultBlockOfEveryStep) {
+  const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
+  const auto& nodes = model->mesh.nodes;
+  for (std::size_t step = 0; step < 2; ++step) {
+    const double f = double(step + 1);
+    const Field& u = *model->findField("U");
+    const Field& t = *model->findField("T");
+    const Field& v = *model->findField("V");
+    const Field& sx = *model->findField("SX");
+    EXPECT_EQ(u.steps()[step].time, f);
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      EXPECT_EQ(u.values(step)[n * 3], f * nodes[n].x);
+      EXPECT_EQ(t.values(step)[n], f * (nodes[n].x + 10 * nodes[n].y + 100 * nodes[n].z));
+      EXPECT_EQ(v.values(step)[n * 3 + 1], f);
+      EXPECT_DOUBLE_EQ(sx.values(step)[n], nodes[n].x) << "element-nodal values averaged at the node";
+    }
+    EXPECT_EQ(model->findField("P")->values(step)[0], f);
+    const Field& gauss = *model->findField("SG");
+    EXPECT_EQ(gauss.location(), FieldLocation::Cell);
+    EXPECT_EQ(gauss.values(step), (std::vector<double>{2.0 * f, 6.0 * f})) << "mean of the Gauss points";
+  }
+}
+
+TEST(NeutralFile, RejectsDamageWithTheLine) {
+  const std::string dir = ::testing::TempDir();
+  const auto attempt = [&](const std::string& text) {
+    const std::string path = dir + "/bad.nf";
+    std::ofstream(path) << text;
+    try {
+      meshioReaders().load(path);
+    } catch (const ReadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  const std::string nodes = "%NODE.COORD\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  EXPECT_NE(attempt(nodes + "%ELEMENT.TETR4\n1\n1 1 1 1 2 3 4\n").find("without %END"), std::string::npos);
+  EXPECT_NE(attempt(nodes + "%ELEMENT.TETR4\n1\n1 1 1 1 2 3 9\n%END\n").find("bad.nf:9: element 1 (cell 0) uses node 9"),
+            std::string::npos);
+  EXPECT_NE(attempt("%NODE.COORD\n5\n1 0 0 0\n2 1 0 0\n%END\n").find("bad.nf:5: expected a node id"), std::string::npos);
+  EXPECT_NE(attempt("%NODE.COORD\n1\n1 0 0 0\n2 1 0 0\n%END\n").find("more records than its count"), std::string::npos);
+  const std::string wedge = attempt(nodes + "%ELEMENT.TETR4\n1\n1 1 1 1 2 3 4\n%ELEMENT.WEDGE6\n1\n2 1 1 1 2 3 4 1 2\n%END\n");
+  EXPECT_EQ(wedge, "loaded") << wedge;
+  const auto model = meshioReaders().load(dir + "/bad.nf");
+  EXPECT_TRUE(hasDiagnostic(*model, "unknown-element-type")) << "an unknown element block is skipped with a warning";
+}

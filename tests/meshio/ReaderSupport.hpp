@@ -6,6 +6,7 @@
 #include "FrdReader.hpp"
 #include "ExodusReader.hpp"
 #include "GmshReader.hpp"
+#include "NeutralFileReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
@@ -20,6 +21,7 @@ inline const ReaderRegistry& meshioReaders() {
   static const meshio::AbaqusInputReader inp;
   static const meshio::FrdReader frd;
   static const meshio::ExodusReader exodus;
+  static const meshio::NeutralFileReader neutral;
   static const ReaderRegistry registry = [] {
     ReaderRegistry r;
     r.add(&vtu);
@@ -28,6 +30,7 @@ inline const ReaderRegistry& meshioReaders() {
     r.add(&inp);
     r.add(&frd);
     r.add(&exodus);
+    r.add(&neutral);
     return r;
   }();
   return registry;

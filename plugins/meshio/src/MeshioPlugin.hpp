@@ -6,6 +6,7 @@
 #include "FrdReader.hpp"
 #include "ExodusReader.hpp"
 #include "GmshReader.hpp"
+#include "NeutralFileReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
@@ -21,7 +22,7 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   Q_INTERFACES(volpost::ReaderPlugin)
 
  public:
-  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_, &exodus_}; }
+  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_, &exodus_, &neutral_}; }
 
  private:
   VtuReader vtu_;
@@ -30,6 +31,7 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   AbaqusInputReader inp_;
   FrdReader frd_;
   ExodusReader exodus_;
+  NeutralFileReader neutral_;
 };
 
 }  // namespace volpost::meshio

@@ -205,3 +205,54 @@ write_gmsh22("golden_22.msh", False)
 write_gmsh22("golden_22_binary.msh", True)
 write_inp()
 write_frd()
+
+# --- Tecgraf neutral file: BRICK20 + TET10 (+ a T3 surface, skipped), two steps --------
+NF_TET10 = [2, 5, 1, 8, 4, 9, 6, 7, 10, 3]   # Abaqus node (1-based) at each NF position
+NF_HEX20 = [5, 17, 1, 9, 2, 18, 6, 13, 16, 12, 10, 14, 8, 20, 4, 11, 3, 19, 7, 15]
+
+def write_nf():
+    hex_ab, tet_ab = element("hex", "abaqus"), element("tet", "abaqus")
+    hex_nf = [hex_ab[a - 1] for a in NF_HEX20]
+    tet_nf = [tet_ab[a - 1] for a in NF_TET10]
+    used = sorted(set(hex_ab + tet_ab))
+    pos = {i: p for p, i in points.items()}
+    L = ["%HEADER", "golden neutral file, hand-made for volpost's tests", "",
+         "%HEADER.VERSION", "1.00", "", "%HEADER.TITLE", "'golden neutral file'", "",
+         "%HEADER.ANALYSIS", "'solid'", "", "%NODE", str(len(used)), "",
+         "%NODE.COORD", str(len(used))]
+    L += [f"{i} {fmt(pos[i][0])} {fmt(pos[i][1])} {fmt(pos[i][2])}" for i in used]
+    L += ["", "%NODE.SUPPORT", "1", "10 1 1 1 0 0 0", "",
+          "%MATERIAL", "1", "", "%MATERIAL.LABEL", "1", "1 'steel'", "",
+          "%MATERIAL.ISOTROPIC", "1", "1 210000.0 0.3", "",
+          "%THICKNESS", "1", "1 1.0", "", "%INTEGRATION.ORDER", "1", "1 2 2 2 2 2 2", "",
+          "%ELEMENT", "3", "",
+          "%ELEMENT.T3", "1", "900 1 1 1 10 20 30", "",
+          "%ELEMENT.BRICK20", "1", "101 1 1 " + " ".join(map(str, hex_nf)), "",
+          "%ELEMENT.TET10", "1", "103 1 1 " + " ".join(map(str, tet_nf)), "",
+          "%RESULT", "1", "1 'golden analysis'", "",
+          "%RESULT.CASE", "1 2", "1 'load case 1'", ""]
+    for step in (1, 2):
+        L += [f"%RESULT.CASE.STEP", str(step), "", "%RESULT.CASE.STEP.TIME", f"{float(step)}", "",
+              "%RESULT.CASE.STEP.NODAL.DISPLACEMENT", f"{len(used)} 'displacement'"]
+        L += [f"{i} {fmt(step * pos[i][0])} 0.0 0.0 0.0 0.0 0.0" for i in used]
+        L += ["", "%RESULT.CASE.STEP.NODAL.SCALAR", "2", "'T' 'P'", "",
+              "%RESULT.CASE.STEP.NODAL.SCALAR.DATA", str(len(used))]
+        L += [f"{i} {fmt(T(pos[i], step))} {fmt(float(step))}" for i in used]
+        L += ["", "%RESULT.CASE.STEP.NODAL.VECTOR", "1", "'V'", "",
+              "%RESULT.CASE.STEP.NODAL.VECTOR.DATA", str(len(used))]
+        L += [f"{i} 1.0 {fmt(float(step))} 3.0" for i in used]
+        # Gauss points: 2 per element, values e and 3e: the element shows their mean 2e.
+        L += ["", "%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR", "1", "'SG'", "",
+              "%RESULT.CASE.STEP.ELEMENT.GAUSS.SCALAR.DATA", "2"]
+        for eid, e in ((101, 1.0), (103, 3.0)):
+            L += [f"{eid} 2", fmt(e * step), fmt(3 * e * step)]
+        # Element-nodal: each element node carries its own x; averaged, every node shows x.
+        L += ["", "%RESULT.CASE.STEP.ELEMENT.NODAL.SCALAR", "1", "'SX'", "",
+              "%RESULT.CASE.STEP.ELEMENT.NODAL.SCALAR.DATA", "2"]
+        for eid, ns in ((101, hex_nf), (103, tet_nf)):
+            L += [f"{eid} {len(ns)}"] + [fmt(pos[n][0]) for n in ns]
+        L += [""]
+    L += ["%END", ""]
+    open("golden.nf", "w").write("\n".join(L))
+
+write_nf()
