@@ -29,6 +29,9 @@ void printUsage() {
       "  volpost info MODEL                counts, bounds, fields and defects of MODEL\n"
       "  volpost render MODEL -o OUT.png   render MODEL headless (see volpost render --help)\n"
       "  volpost plugins                   list plugins and why any was refused\n"
+      "  volpost convert MODEL OUT.vtu     write MODEL (all fields and steps) for ParaView\n"
+      "  volpost surface MODEL OUT.obj     boundary (or --field Q --iso V: iso-surface) as obj/ply/stl/off\n"
+      "  volpost probe MODEL --field Q --at X,Y,Z   value of Q at a point\n"
       "  volpost --version | --help\n",
       VOLPOST_VERSION);
 }
@@ -90,10 +93,15 @@ int main(int argc, char** argv) {
     std::printf("volpost %s (SDK %s)\n", VOLPOST_VERSION, VOLPOST_SDK_VERSION);
     return 0;
   }
-  if (!std::strcmp(verb, "info") || !std::strcmp(verb, "plugins")) {
+  if (!std::strcmp(verb, "info") || !std::strcmp(verb, "plugins") || !std::strcmp(verb, "convert") ||
+      !std::strcmp(verb, "surface") || !std::strcmp(verb, "probe")) {
     QCoreApplication app(argc, argv);
     const QStringList args = argsAfter(argc, argv, 2);
-    return !std::strcmp(verb, "info") ? volpost::app::runInfo(args) : volpost::app::runPlugins(args);
+    if (!std::strcmp(verb, "info")) return volpost::app::runInfo(args);
+    if (!std::strcmp(verb, "convert")) return volpost::app::runConvert(args);
+    if (!std::strcmp(verb, "surface")) return volpost::app::runSurface(args);
+    if (!std::strcmp(verb, "probe")) return volpost::app::runProbe(args);
+    return volpost::app::runPlugins(args);
   }
   if (!std::strcmp(verb, "render")) {
     // Rendering uses EGL, never a display; Qt is only needed for the legend's text.

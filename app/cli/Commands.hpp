@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The command-line verbs: `volpost info`, `volpost render`, `volpost plugins`.
+// The command-line verbs: info, render, plugins, convert, surface, probe.
 #pragma once
 
 #include <QStringList>
@@ -11,5 +11,8 @@ namespace volpost::app {
 int runInfo(const QStringList& args);
 int runRender(const QStringList& args);
 int runPlugins(const QStringList& args);
+int runConvert(const QStringList& args);
+int runSurface(const QStringList& args);
+int runProbe(const QStringList& args);
 
 }  // namespace volpost::app

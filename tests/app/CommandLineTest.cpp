@@ -5,6 +5,8 @@
 
 #include <QImage>
 
+#include <filesystem>
+
 using volpost::test::dataFile;
 using volpost::test::runVolpost;
 
@@ -130,4 +132,43 @@ TEST(RenderCommand, MixedCellsAreTetrahedralizedForVolumeRendering) {
   const auto r = runVolpost("render " + std::string(VOLPOST_SOURCE_DIR) + "/resources/examples/wheel_mixed.vtu" +
                             " --renderer reference --field S.mises --size 48x36 -o " + png);
   EXPECT_EQ(r.exitCode, 0) << r.output;
+}
+
+TEST(ConvertCommand, WritesAVtuThatReadsBackTheSame) {
+  const std::string out = ::testing::TempDir() + "/converted.vtu";
+  const auto r = runVolpost("convert " + dataFile("formats/golden.nf") + " " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto info = runVolpost("info " + out);
+  EXPECT_NE(info.output.find("nodes:    30"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("T step 2"), std::string::npos) << info.output;
+  EXPECT_EQ(runVolpost("convert " + dataFile("formats/golden.nf") + " out.txt").exitCode, 2);
+  const auto bad = runVolpost("convert " + dataFile("bad/index_out_of_range.msh") + " " + out);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("index_out_of_range.msh:"), std::string::npos) << bad.output;
+}
+
+TEST(SurfaceCommand, WritesBoundaryAndIsoSurfaces) {
+  const std::string dir = ::testing::TempDir();
+  const auto boundary = runVolpost("surface " + dataFile("bar/bar_tet4.vtu") + " " + dir + "/bar.obj");
+  ASSERT_EQ(boundary.exitCode, 0) << boundary.output;
+  EXPECT_TRUE(std::filesystem::file_size(dir + "/bar.obj") > 1000);
+  const auto iso = runVolpost("surface " + dataFile("bar/bar_tet4.vtu") + " " + dir + "/iso.stl --field U.x --iso 0.002");
+  ASSERT_EQ(iso.exitCode, 0) << iso.output;
+  EXPECT_NE(iso.output.find("U.x = 0.002"), std::string::npos) << iso.output;
+  EXPECT_EQ(runVolpost("surface " + dataFile("bar/bar_tet4.vtu") + " " + dir + "/x.obj --iso 1").exitCode, 2);
+  const auto format = runVolpost("surface " + dataFile("bar/bar_tet4.vtu") + " " + dir + "/x.dxf");
+  EXPECT_EQ(format.exitCode, 1);
+  EXPECT_NE(format.output.find(".obj, .ply, .stl or .off"), std::string::npos) << format.output;
+}
+
+TEST(ProbeCommand, PrintsTheBarStressAtAPointAndFlagsOutsidePoints) {
+  const auto r = runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 5,0.5,0.5");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto at = r.output.find("S.xx = ");
+  ASSERT_NE(at, std::string::npos) << r.output;
+  EXPECT_NEAR(std::stod(r.output.substr(at + 7)), 100.0, 0.01);
+  const auto outside = runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 20,0,0");
+  EXPECT_EQ(outside.exitCode, 1);
+  EXPECT_NE(outside.output.find("outside the mesh"), std::string::npos);
+  EXPECT_EQ(runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 1,2").exitCode, 2);
 }

@@ -342,3 +342,47 @@ TEST(NeutralFile, RejectsDamageWithTheLine) {
   const auto model = meshioReaders().load(dir + "/bad.nf");
   EXPECT_TRUE(hasDiagnostic(*model, "unknown-element-type")) << "an unknown element block is skipped with a warning";
 }
+
+// --- writing VTU and probing -----------------------------------------------------------
+
+#include <volpost/core/PointLocator.hpp>
+#include <volpost/core/VtuWriter.hpp>
+
+TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
+  const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
+  const std::string path = ::testing::TempDir() + "/roundtrip.vtu";
+  writeVtu(*model, path);
+  const auto back = meshioReaders().load(path);
+  EXPECT_EQ(back->mesh.nodes, model->mesh.nodes);
+  EXPECT_EQ(back->mesh.nodeIds, model->mesh.nodeIds);
+  EXPECT_EQ(back->mesh.cellIds, model->mesh.cellIds);
+  EXPECT_EQ(cellsById(*back), cellsById(*model));
+  for (const auto& f : model->fields)
+    for (std::size_t s = 0; s < f->stepCount(); ++s) {
+      const Field* g = back->findField(f->name() + " step " + std::to_string(s + 1));
+      ASSERT_TRUE(g) << f->name();
+      EXPECT_EQ(g->location(), f->location());
+      const auto& a = f->values(s);
+      const auto& b = g->values(0);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])));
+    }
+  EXPECT_THROW(writeVtu(*model, "/no/such/folder/x.vtu"), WriteError);
+}
+
+TEST(Probe, BarAxialStressIsForceOverAreaInEveryElementType) {
+  // S11 = F/A = 100 away from the clamp (FE: 99.996..100.000 for 3 < x < 7).
+  for (const char* variant : {"tet4", "tet10", "hex8", "wedge6"}) {
+    VOLPOST_SHARED_OR_SKIP(path, std::string("bar/") + variant + "/bar_" + variant + ".frd");
+    const auto model = meshioReaders().load(path);
+    const TetMesh tets = tetrahedralize(model->mesh);
+    const Field& s = *model->findField("S");
+    const auto sxx = tets.nodeValues(model->mesh, evaluate(s, *parseQuantity("S.xx", s), 0));
+    const PointLocator locator(tets);
+    for (const glm::dvec3 p : {glm::dvec3(3.5, 0.5, 0.5), glm::dvec3(5.0, 0.1, 0.9), glm::dvec3(6.9, 0.77, 0.23)}) {
+      const auto at = locator.locate(p);
+      ASSERT_TRUE(at) << variant;
+      EXPECT_NEAR(PointLocator::interpolateNodal(*at, sxx), 100.0, 0.01) << variant << " at x = " << p.x;
+    }
+  }
+}

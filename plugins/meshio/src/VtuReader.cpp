@@ -8,6 +8,7 @@
 #include <pugixml.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 
@@ -276,9 +277,30 @@ class VtuReading {
         }
         return all;
       };
-      model.fields.push_back(std::make_shared<Field>(name, f.location, f.components, entities,
-                                                     std::vector<Step>{{"", 0.0}}, std::move(loader)));
+      auto field = std::make_shared<Field>(name, f.location, f.components, entities,
+                                           std::vector<Step>{{"", 0.0}}, std::move(loader));
+      if (takeIds(*field, model)) continue;
+      model.fields.push_back(std::move(field));
     }
+  }
+
+  // volpost (and meshio/Gmsh exports) keep the FE ids as "node_id" / "element_id" arrays:
+  // they become the mesh's ids, not a field to color by.
+  static bool takeIds(const Field& field, Model& model) {
+    const bool nodes = field.name() == "node_id" && field.location() == FieldLocation::Node;
+    const bool cells = field.name() == "element_id" && field.location() == FieldLocation::Cell;
+    if ((!nodes && !cells) || field.components() != 1) return false;
+    std::vector<std::int64_t> ids;
+    try {
+      for (double v : field.values(0)) {
+        if (!(v >= 0 && v < 9.0e15) || v != std::floor(v)) return false;  // not ids: keep it as a field
+        ids.push_back(std::int64_t(v));
+      }
+    } catch (const std::exception&) {
+      return false;
+    }
+    (nodes ? model.mesh.nodeIds : model.mesh.cellIds) = std::move(ids);
+    return true;
   }
 
   std::shared_ptr<const std::string> bytes_;

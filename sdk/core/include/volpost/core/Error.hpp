@@ -28,6 +28,12 @@ class ReadError : public std::runtime_error {
   std::int64_t offset_ = -1;
 };
 
+/// A file could not be written. what() is "FILE: text".
+class WriteError : public std::runtime_error {
+ public:
+  WriteError(const std::string& file, const std::string& message) : std::runtime_error(file + ": " + message) {}
+};
+
 /// Long work was cancelled by the user.
 class Cancelled : public std::runtime_error {
  public:

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: MIT
+// `volpost convert`, `volpost surface` and `volpost probe`: models out to other tools
+// (VTU for ParaView, OBJ/PLY/STL surfaces) and values at points.
+#include "CliSupport.hpp"
+#include "Commands.hpp"
+
+#include <volpost/core/IsoSurfaceExtraction.hpp>
+#include <volpost/core/PointLocator.hpp>
+#include <volpost/core/VtuWriter.hpp>
+
+#include <QCommandLineParser>
+
+#include <cstdio>
+
+namespace volpost::app {
+namespace {
+
+std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option) {
+  bool ok = false;
+  const int step = parser.value(option).toInt(&ok);
+  if (!ok || step < 1) {
+    printError(QString("--step %1 is not a step number (1, 2, ...)").arg(parser.value(option)));
+    return std::nullopt;
+  }
+  return std::size_t(step - 1);
+}
+
+bool parsePoint(const QString& text, glm::dvec3& p) {
+  const QStringList parts = text.split(',');
+  if (parts.size() != 3) return false;
+  for (int k = 0; k < 3; ++k) {
+    bool ok = false;
+    p[k] = parts[k].trimmed().toDouble(&ok);
+    if (!ok) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int runConvert(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Writes MODEL as a VTK XML unstructured grid (every field, every step).");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  parser.addPositionalArgument("OUT.vtu", "file to write");
+  parser.addHelpOption();
+  parser.process(QStringList{"volpost convert"} + args);
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 2 || !files[1].endsWith(".vtu", Qt::CaseInsensitive)) {
+    printError("convert needs MODEL and OUT.vtu (volpost convert MODEL OUT.vtu)");
+    return 2;
+  }
+  auto plugins = loadPluginsForCli();
+  try {
+    const auto model = plugins->readers().load(files[0].toStdString(), terminalProgress("reading"));
+    writeVtu(*model, files[1].toStdString(), terminalProgress("writing"));
+    std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->mesh.nodeCount(),
+                model->mesh.cellCount(), model->fields.size());
+    return 0;
+  } catch (const Cancelled&) {
+    return 1;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 1;
+  }
+}
+
+int runSurface(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "Writes the boundary surface of MODEL, or an iso-surface of a quantity, as .obj, .ply, .stl or .off.");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  parser.addPositionalArgument("OUT", "surface file (.obj, .ply, .stl, .off)");
+  const QCommandLineOption field("field", "Quantity of the iso-surface: S.mises, U.magnitude, T ...", "Q");
+  const QCommandLineOption iso("iso", "Iso-value (with --field): the surface where Q = VALUE.", "VALUE");
+  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
+  parser.addOptions({field, iso, step});
+  parser.addHelpOption();
+  parser.process(QStringList{"volpost surface"} + args);
+  const QStringList files = parser.positionalArguments();
+  if (files.size() != 2) {
+    printError("surface needs MODEL and OUT (volpost surface MODEL OUT.obj [--field Q --iso VALUE])");
+    return 2;
+  }
+  if (parser.isSet(field) != parser.isSet(iso)) {
+    printError("--field and --iso go together (the iso-surface Q = VALUE)");
+    return 2;
+  }
+  bool okIso = true;
+  const double isoValue = parser.isSet(iso) ? parser.value(iso).toDouble(&okIso) : 0.0;
+  if (!okIso) {
+    printError(QString("--iso %1 is not a number").arg(parser.value(iso)));
+    return 2;
+  }
+  const auto stepIndex = parseStep(parser, step);
+  if (!stepIndex) return 2;
+  auto plugins = loadPluginsForCli();
+  try {
+    const auto session = ModelSession::load(plugins->readers(), files[0].toStdString(), terminalProgress("reading"));
+    if (!parser.isSet(field)) {
+      writeSurface(session->surface().mesh, session->surface().origin, files[1].toStdString());
+      std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());
+      return 0;
+    }
+    const Quantity q = session->findQuantity(parser.value(field).toStdString());
+    const ScalarView view = session->evaluate(q, *stepIndex);
+    if (view.location != FieldLocation::Node) {
+      printError(QString("%1 is an element result (constant per cell): iso-surfaces need a nodal result").arg(parser.value(field)));
+      return 1;
+    }
+    const auto surface = extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue, terminalProgress("extracting"));
+    if (surface.mesh.n_faces() == 0)
+      std::fprintf(stderr, "volpost: warning: %s = %g is outside the values [%g, %g]: the iso-surface is empty\n",
+                   qPrintable(parser.value(field)), isoValue, view.range.min, view.range.max);
+    writeSurface(surface.mesh, surface.origin, files[1].toStdString());
+    std::printf("%s: %s = %g, %zu triangles\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
+                surface.mesh.n_faces());
+    return 0;
+  } catch (const Cancelled&) {
+    return 1;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 1;
+  }
+}
+
+int runProbe(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription("Prints the value of a quantity at points of MODEL (interpolated in the cell).");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  const QCommandLineOption field("field", "Quantity: S.xx, S.mises, U.magnitude, T ...", "Q");
+  const QCommandLineOption at("at", "A point X,Y,Z in model units (repeatable).", "X,Y,Z");
+  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
+  parser.addOptions({field, at, step});
+  parser.addHelpOption();
+  parser.process(QStringList{"volpost probe"} + args);
+  if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(at)) {
+    printError("probe needs MODEL, --field Q and --at X,Y,Z (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
+    return 2;
+  }
+  std::vector<glm::dvec3> points;
+  for (const QString& text : parser.values(at)) {
+    glm::dvec3 p;
+    if (!parsePoint(text, p)) {
+      printError(QString("--at %1 is not X,Y,Z").arg(text));
+      return 2;
+    }
+    points.push_back(p);
+  }
+  const auto stepIndex = parseStep(parser, step);
+  if (!stepIndex) return 2;
+  auto plugins = loadPluginsForCli();
+  try {
+    const auto session = ModelSession::load(plugins->readers(), parser.positionalArguments().first().toStdString(),
+                                            terminalProgress("reading"));
+    const Quantity q = session->findQuantity(parser.value(field).toStdString());
+    const ScalarView view = session->evaluate(q, *stepIndex);
+    const TetMesh& tets = session->tetrahedra();
+    const std::vector<double> values = session->tetValues(view);
+    const PointLocator locator(tets);
+    int outside = 0;
+    for (const glm::dvec3& p : points) {
+      const auto where = locator.locate(p);
+      if (!where) {
+        std::printf("%g,%g,%g\toutside the mesh\n", p.x, p.y, p.z);
+        ++outside;
+        continue;
+      }
+      const double v = view.location == FieldLocation::Node ? PointLocator::interpolateNodal(*where, values)
+                                                              : values[where->tet];
+      const auto& ids = session->model().mesh.cellIds;
+      std::printf("%g,%g,%g\t%s = %.9g\t(element %lld)\n", p.x, p.y, p.z, qPrintable(parser.value(field)), v,
+                  static_cast<long long>(ids.empty() ? std::int64_t(where->cell) : ids[where->cell]));
+    }
+    return outside == 0 ? 0 : 1;
+  } catch (const Cancelled&) {
+    return 1;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 1;
+  }
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Iso-surfaces as triangle meshes (marching tetrahedra over the conforming tetrahedra of
+// the model), for export and for drawing as opaque geometry.
+#pragma once
+
+#include <volpost/core/BoundarySurface.hpp>
+#include <volpost/core/Progress.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include <span>
+
+namespace volpost {
+
+struct ExtractedSurface {
+  /// Positions are float model coordinates minus `origin`, like BoundarySurface.
+  SurfaceMesh mesh;
+  glm::dvec3 origin{0.0};
+};
+
+/// The surface value == iso of a nodal field given on `tets.mesh`'s nodes (see
+/// TetMesh::nodeValues). Vertices on a tet edge are shared by every tet around the edge, so
+/// the surface is connected and watertight inside the mesh; triangles face increasing
+/// values. Tets with a NaN value are left out. Throws std::invalid_argument on a value
+/// count that is not one per node.
+ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> nodeValues, double iso,
+                                   const Progress& progress = {});
+
+/// Writes a surface as .obj, .ply, .stl or .off (by the extension) through OpenMesh, in
+/// model coordinates (origin added back). Throws WriteError naming the file.
+void writeSurface(const SurfaceMesh& mesh, const glm::dvec3& origin, const std::string& path);
+
+}  // namespace volpost
