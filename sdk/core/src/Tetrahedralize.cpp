@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/Tetrahedralize.hpp>
 
+#include "CellSplitTemplates.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -16,18 +20,81 @@ double tetVolume6(const Mesh& m, const std::array<NodeIndex, 4>& t) {
   return glm::dot(a, glm::cross(b, c));
 }
 
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// Exact sign of the tet's volume (CGAL's filtered predicate): a split is accepted only when
+// every piece is truly non-degenerate, however thin.
+CGAL::Orientation orientationOf(const std::vector<glm::dvec3>& nodes, const std::array<NodeIndex, 4>& t) {
+  const auto p = [&](int k) {
+    const glm::dvec3& v = nodes[t[std::size_t(k)]];
+    return Kernel::Point_3(v.x, v.y, v.z);
+  };
+  return CGAL::orientation(p(0), p(1), p(2), p(3));
+}
+
 class Builder {
  public:
   explicit Builder(TetMesh& out) : out_(out) {}
 
-  void addTet(std::array<NodeIndex, 4> t, std::uint32_t cell) {
-    if (tetVolume6(out_.mesh, t) < 0.0) std::swap(t[1], t[2]);  // VTK orientation
-    out_.mesh.addCell(CellType::Tet4, t);
-    out_.cellOfTet.push_back(cell);
+  // Hexahedra, wedges and pyramids: the Steiner-free split of their diagonal configuration
+  // (diagonal through the smallest node index of each quad, so neighbours agree) when every
+  // piece is positive; else a star from the centroid; cells where even that folds are listed.
+  void splitCell(const Mesh& src, std::uint32_t cell) {
+    const auto nodes = src.cellNodes(cell);
+    const CellType type = src.cellType(cell);
+    const CellType linear = type == CellType::Hex20 ? CellType::Hex8 : type == CellType::Wedge15 ? CellType::Wedge6 : type;
+    unsigned diagonals = 0, quad = 0;
+    for (const CellFace& f : topology(linear).faces) {
+      if (f.size != 4) continue;
+      const NodeIndex a = nodes[f.corners[0]], b = nodes[f.corners[1]], c = nodes[f.corners[2]], d = nodes[f.corners[3]];
+      const NodeIndex lowest = std::min({a, b, c, d});
+      if (lowest == b || lowest == d) diagonals |= 1u << quad;
+      ++quad;
+    }
+    const auto& pieces = detail::splitTemplate(linear, diagonals);
+    if (pieces) {
+      // All pieces positive: a valid split. All negative: a mirrored cell (inverted node
+      // order, flagged by the model checks), whose pieces are valid once flipped.
+      std::array<std::array<NodeIndex, 4>, 8> tets{};
+      std::size_t positive = 0, negative = 0;
+      for (std::size_t i = 0; i < pieces->size() && i < tets.size(); ++i) {
+        for (int k = 0; k < 4; ++k) tets[i][std::size_t(k)] = nodes[(*pieces)[i][std::size_t(k)]];
+        const auto o = orientationOf(out_.mesh.nodes, tets[i]);
+        positive += o == CGAL::POSITIVE;
+        negative += o == CGAL::NEGATIVE;
+      }
+      if (positive == pieces->size() || negative == pieces->size()) {
+        for (std::size_t i = 0; i < pieces->size(); ++i) {
+          if (negative) std::swap(tets[i][1], tets[i][2]);
+          out_.mesh.addCell(CellType::Tet4, tets[i]);
+          out_.cellOfTet.push_back(cell);
+        }
+        return;
+      }
+    }
+    if (!starFromCentroid(src, cell)) out_.foldedCells.push_back(cell);
   }
 
-  // Centroid Steiner point joined to every face triangle (quads by the global diagonal rule).
-  void starFromCentroid(const Mesh& src, std::uint32_t cell) {
+  // Adds a tet in VTK's (positive) orientation; returns the orientation it came in.
+  CGAL::Orientation addTet(std::array<NodeIndex, 4> t, std::uint32_t cell) {
+    const CGAL::Orientation o = orientationOf(out_.mesh.nodes, t);
+    if (o == CGAL::NEGATIVE || (o == CGAL::ZERO && tetVolume6(out_.mesh, t) < 0.0)) std::swap(t[1], t[2]);
+    out_.mesh.addCell(CellType::Tet4, t);
+    out_.cellOfTet.push_back(cell);
+    return o;
+  }
+
+  // Centroid Steiner point joined to every face triangle (quads by the global diagonal
+  // rule). Returns false when the pieces came in with mixed or zero orientations: the
+  // centroid does not see every face from inside (a folded cell), so they overlap.
+  bool starFromCentroid(const Mesh& src, std::uint32_t cell) {
+    std::size_t positive = 0, negative = 0, pieces = 0;
+    const auto add = [&](std::array<NodeIndex, 4> t) {
+      const auto o = addTet(t, cell);
+      positive += o == CGAL::POSITIVE;
+      negative += o == CGAL::NEGATIVE;
+      ++pieces;
+    };
     const auto nodes = src.cellNodes(cell);
     const auto& topo = topology(src.cellType(cell));
     glm::dvec3 c(0.0);
@@ -38,19 +105,20 @@ class Builder {
     for (const CellFace& f : topo.faces) {
       const NodeIndex a = nodes[f.corners[0]], b = nodes[f.corners[1]], d = nodes[f.corners[2]];
       if (f.size == 3) {
-        addTet({a, b, d, s}, cell);
+        add({a, b, d, s});
         continue;
       }
       const NodeIndex e = nodes[f.corners[3]];
       const NodeIndex lowest = std::min({a, b, d, e});
       if (lowest == a || lowest == d) {  // diagonal a-d
-        addTet({a, b, d, s}, cell);
-        addTet({a, d, e, s}, cell);
+        add({a, b, d, s});
+        add({a, d, e, s});
       } else {  // diagonal b-e
-        addTet({b, d, e, s}, cell);
-        addTet({b, e, a, s}, cell);
+        add({b, d, e, s});
+        add({b, e, a, s});
       }
     }
+    return positive == pieces || negative == pieces;
   }
 
   void tet10(const Mesh& src, std::uint32_t cell) {
@@ -76,7 +144,7 @@ TetMesh tetrahedralize(const Mesh& mesh) {
     switch (mesh.cellType(c)) {
       case CellType::Tet4: b.addTet({n[0], n[1], n[2], n[3]}, c); break;
       case CellType::Tet10: b.tet10(mesh, c); break;
-      default: b.starFromCentroid(mesh, c); break;
+      default: b.splitCell(mesh, c); break;
     }
   }
   return out;

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Conforming tetrahedra for volume rendering. Quadrilateral faces are split by the
-// diagonal through their smallest global node id (Dompierre et al. 1999), so two cells
-// sharing a face split it the same way; every hexahedron, wedge and pyramid then gets a
-// Steiner point at its centroid joined to its face triangles (always valid for convex
-// cells, whatever the diagonals). tet10 is split into 8 tets through its midside nodes;
-// hex20 and wedge15 use their corners (their midside values are not used yet).
+// diagonal through their smallest global node index (Dompierre et al. 1999), so two cells
+// sharing a face split it the same way. Each hexahedron, wedge and pyramid then takes the
+// Steiner-free split of its diagonal configuration (TetGen computes one per configuration
+// on the reference cell, once) when all its pieces are positive by CGAL's exact
+// orientation predicate; otherwise (a configuration with no such split, or a distorted
+// cell) it gets a Steiner point at its centroid joined to its face triangles. tet10 is
+// split into 8 tets through its midside nodes; hex20 and wedge15 use their corners (their
+// midside values are not used).
 #pragma once
 
 #include <volpost/core/Mesh.hpp>
@@ -21,6 +24,9 @@ struct TetMesh {
   std::size_t originalNodes = 0;
   /// Steiner point i (node originalNodes + i) is the mean of these source nodes.
   std::vector<std::uint32_t> steinerCell;
+  /// Source cells whose split has a tet that is not positively oriented even with the
+  /// centroid point (inverted or badly folded cells): their pieces overlap.
+  std::vector<std::uint32_t> foldedCells;
 
   /// Node values for `mesh`: the originals, then each Steiner point's mean of its cell's corners.
   std::vector<double> nodeValues(const Mesh& source, std::span<const double> values) const;
