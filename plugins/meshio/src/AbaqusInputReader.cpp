@@ -65,14 +65,17 @@ class DeckParser {
     std::optional<SolidElement> element;
     std::string elset;
     std::vector<std::string_view> pending;  // fields of an element record spread over lines
-    std::int64_t pendingLine = 0;
+    std::size_t pendingOffset = 0;  // where the record began (its line is counted only for an error)
     bool sawKeyword = false;
     while (!s.atEnd()) {
       const auto raw = s.nextLine();
       const auto line = trim(raw);
       if (line.empty() || line.rfind("**", 0) == 0) continue;
       if (line.front() == '*') {
-        if (!pending.empty()) s.fail("element record of line " + std::to_string(pendingLine) + " is incomplete before " + std::string(line.substr(0, 30)));
+        if (!pending.empty()) {
+          s.seek(pendingOffset);
+          s.fail("this element record is incomplete: its type needs more nodes");
+        }
         sawKeyword = true;
         const Keyword k = parseKeyword(line);
         block = Block::None;
@@ -106,7 +109,7 @@ class DeckParser {
           if (model_->title.empty()) model_->title = std::string(line);
           break;
         case Block::Element: {
-          if (pending.empty()) pendingLine = s.lineNumber();
+          if (pending.empty()) pendingOffset = std::size_t(line.data() - s.bytes().data());
           for (auto f : splitFields(line, true)) pending.push_back(f);
           if (line.back() == ',') continue;  // Abaqus continuation
           const std::size_t need = 1 + std::size_t(element ? element->fileNodes : 0);
