@@ -27,7 +27,7 @@ for reader in gmsh inp frd nf vtk vtu; do
   for f in ${seeds[$reader]}; do [ -f "$f" ] && cp -n "$f" "$corpus/" || true; done
   for f in tests/data/fuzz/$reader/*; do [ -f "$f" ] && cp -n "$f" "$corpus/" || true; done
   echo "== fuzz_$reader: ${seconds}s"
-  if ! build-fuzz/tests/fuzz/fuzz_$reader -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
+  if ! build-fuzz/bin/fuzz_$reader -max_total_time="$seconds" -timeout=10 -rss_limit_mb=4096 \
       -max_len=65536 -artifact_prefix="$crashes/" -print_final_stats=1 "$corpus" 2>"build-fuzz/fuzz_$reader.log"; then
     echo "fuzz_$reader: FOUND A CRASH (see build-fuzz/fuzz_$reader.log and $crashes)"
     status=1

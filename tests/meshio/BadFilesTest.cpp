@@ -163,3 +163,27 @@ TEST(Manifest, CoversEveryFileInTheFolder) {
       EXPECT_TRUE(covered.count(f.path().filename().string())) << f.path();
     }
 }
+
+// Inputs the fuzzers (scripts/fuzz.sh) once broke a reader with: each must now load or be
+// refused with a ReadError, and a loaded field must read or fail with a ReadError too.
+TEST(FuzzRegressions, EveryKeptInputIsRefusedCleanlyOrLoads) {
+  std::size_t files = 0;
+  for (const auto& dir : std::filesystem::directory_iterator(dataFile("fuzz")))
+    for (const auto& f : std::filesystem::directory_iterator(dir.path())) {
+      SCOPED_TRACE(f.path().string());
+      ++files;
+      try {
+        const auto model = meshioReaders().load(f.path().string());
+        for (const auto& field : model->fields)
+          for (std::size_t s = 0; s < field->stepCount(); ++s) {
+            try {
+              (void)field->values(s);
+            } catch (const ReadError&) {
+            }
+          }
+      } catch (const ReadError& e) {
+        EXPECT_NE(std::string(e.what()).find(f.path().filename().string()), std::string::npos) << e.what();
+      }
+    }
+  EXPECT_GE(files, 4u);
+}

@@ -57,6 +57,7 @@ class FrdParser {
     if (!sawNodes_) s_.fail("no node block (2C): this .frd holds no mesh");
     if (!sawElements_) s_.fail("no element block (3C): this .frd holds no mesh");
     if (!ended) s_.fail("file ends without the closing 9999 record (truncated)");
+    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     if (skipped_ > 0)
       model_->diagnostics.push_back({Severity::Info, "skipped-non-solid-elements",
@@ -79,7 +80,7 @@ class FrdParser {
   }
   // Block headers: "    2C" then free fields (count ... format).
   std::pair<std::int64_t, int> blockHeader(const char* what) {
-    const auto f = splitFields(line_.substr(6));
+    const auto f = splitFields(column(6, std::string_view::npos));
     if (f.empty()) s_.fail(std::string("the ") + what + " header has no count");
     const std::int64_t n = parseInteger(s_, f[0], "a count");
     if (n < 0 || n > (std::int64_t(1) << 34)) s_.fail(std::string("the ") + what + " count " + std::to_string(n) + " is out of range");

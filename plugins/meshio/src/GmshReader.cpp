@@ -239,6 +239,7 @@ class GmshParser {
   }
 
   void readNodes() {
+    if (sawNodes_) s_.fail("a second $Nodes section (volpost reads one mesh per file)");
     sawNodes_ = true;
     if (!v4()) {
       const std::int64_t n = parseInteger(s_, s_.nextLine(), "the number of nodes");
@@ -313,6 +314,7 @@ class GmshParser {
   }
 
   void readElements() {
+    if (sawElements_) s_.fail("a second $Elements section (volpost reads one mesh per file)");
     sawElements_ = true;
     if (!sawNodes_) s_.fail("$Elements comes before $Nodes");
     std::vector<std::int64_t> nodes;
@@ -493,6 +495,7 @@ class GmshParser {
     bool anyRegion = false;
     for (double r : regions_) anyRegion = anyRegion || r != 0.0;
     if (anyRegion) model_->fields.push_back(Field::fromValues("region", FieldLocation::Cell, 1, {regions_}));
+    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     if (skippedLower_ > 0)
       model_->diagnostics.push_back({Severity::Info, "skipped-lower-dimensional-cells",

@@ -310,6 +310,7 @@ class NfParser {
   }
 
   void finish() {
+    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     for (const auto& [type, n] : unknownTypes_)
       model_->diagnostics.push_back({Severity::Warning, "unknown-element-type",

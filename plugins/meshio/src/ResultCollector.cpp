@@ -28,6 +28,19 @@ void ResultCollector::add(const std::string& name, FieldLocation location, int c
   fields_.back().values.push_back(std::move(values));
 }
 
+std::string ResultCollector::mismatch(const Mesh& mesh) const {
+  for (const Pending& f : fields_) {
+    const std::size_t entities = f.location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
+    for (std::size_t s = 0; s < f.values.size(); ++s)
+      if (f.values[s].size() != entities * std::size_t(f.components))
+        return "result '" + f.name + "' (step " + std::to_string(s + 1) + ") was given for " +
+               std::to_string(f.values[s].size() / std::size_t(f.components)) + " " +
+               (f.location == FieldLocation::Node ? "nodes" : "cells") + " but the mesh has " + std::to_string(entities) +
+               ": its block came before the mesh was complete";
+  }
+  return {};
+}
+
 void ResultCollector::moveInto(Model& model) {
   for (Pending& f : fields_)
     model.fields.push_back(Field::fromValues(f.name, f.location, f.components, std::move(f.values), std::move(f.steps)));

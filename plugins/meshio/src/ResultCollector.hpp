@@ -17,6 +17,9 @@ class ResultCollector {
   /// different location or component count becomes its own field ("name (cells)", ...).
   void add(const std::string& name, FieldLocation location, int components, Step step,
            std::vector<double> values);
+  /// Empty, or what is wrong when a block's size does not fit the final mesh (a result
+  /// block read before the mesh was complete, in a file that interleaves them).
+  std::string mismatch(const Mesh& mesh) const;
   /// Moves the fields into `model` (in the order their names first appeared).
   void moveInto(Model& model);
 

@@ -90,8 +90,20 @@ std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding&
                     std::to_string(v.size - b.headerBytes) + " are there (truncated)");
     return {v.data + b.headerBytes, v.data + b.headerBytes + b.rawBytes};
   }
-  std::vector<std::uint8_t> out(b.rawBytes);
+  // Check the header against the data before allocating what it claims: every block must
+  // lie in the data, and zlib cannot expand more than about 1032:1.
   const std::size_t h = sizeOf(enc.headerType);
+  std::uint64_t compressedTotal = 0;
+  for (std::uint64_t k = 0; k < b.blocks; ++k) {
+    const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);
+    if (csize > v.size - b.headerBytes - compressedTotal)
+      fail(src, "compressed block " + std::to_string(k) + " runs past the end of the data (truncated)");
+    compressedTotal += csize;
+  }
+  if (b.lastSize > b.blockSize || b.rawBytes > 1032 * compressedTotal + 64)
+    fail(src, "compression header claims " + std::to_string(b.rawBytes) + " bytes from " + std::to_string(compressedTotal) +
+                  " compressed bytes (corrupt)");
+  std::vector<std::uint8_t> out(b.rawBytes);
   std::size_t in = b.headerBytes, done = 0;
   for (std::uint64_t k = 0; k < b.blocks; ++k) {
     const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);

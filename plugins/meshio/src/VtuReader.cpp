@@ -263,14 +263,14 @@ class VtuReading {
       auto parts = std::make_shared<std::vector<PieceArray>>(std::move(f.parts));
       const VtuEncoding enc = enc_;
       const int comps = f.components;
-      StepLoader loader = [parts, enc, comps](std::size_t) {
+      StepLoader loader = [parts, enc, comps, path = path_](std::size_t) {
         std::vector<double> all;
         for (const PieceArray& p : *parts) {
           std::vector<double> v;
           try {
             v = vtuDoubles(p.source, enc);
           } catch (const VtuArrayError& e) {
-            throw std::runtime_error(e.message);
+            throw ReadError(path, e.message);
           }
           if (p.mapping) v = selectModelCells(v, comps, *p.mapping);
           all.insert(all.end(), v.begin(), v.end());
