@@ -15,6 +15,7 @@
 #include <map>
 #include <fstream>
 #include <set>
+#include <tuple>
 
 using namespace volpost;
 using volpost::test::dataFile;
@@ -384,5 +385,78 @@ TEST(Probe, BarAxialStressIsForceOverAreaInEveryElementType) {
       ASSERT_TRUE(at) << variant;
       EXPECT_NEAR(PointLocator::interpolateNodal(*at, sxx), 100.0, 0.01) << variant << " at x = " << p.x;
     }
+  }
+}
+
+// --- the solver's own checks (../shared/data/<case>/checks.json) -----------------------
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+double maxOf(const Model& m, const std::string& quantity) {
+  const std::string fieldName = quantity.substr(0, quantity.find('.'));
+  const Field* f = m.findField(fieldName);
+  EXPECT_TRUE(f) << fieldName;
+  if (!f) return NAN;
+  return rangeOf(evaluate(*f, *parseQuantity(quantity, *f), 0)).max;
+}
+
+nlohmann::json checksOf(const std::string& path, const std::string& variant) {
+  std::ifstream in(path);
+  const auto j = nlohmann::json::parse(in);
+  if (!j.is_array()) return j;
+  for (const auto& v : j)
+    if (v.value("variant", "") == variant) return v;
+  return {};
+}
+
+}  // namespace
+
+TEST(SolverChecks, ResultsOfEveryFormatMatchWhatTheSolverRunReported) {
+  struct Check {
+    const char* checks;
+    const char* variant;
+    const char* stem;
+  };
+  for (const Check& c : {Check{"bracket/checks.json", "", "bracket/tet10/bracket_tet10"},
+                         Check{"wheel/checks.json", "tet4", "wheel/tet4/wheel_tet4"},
+                         Check{"wheel/checks.json", "mixed", "wheel/mixed/wheel_mixed"}}) {
+    VOLPOST_SHARED_OR_SKIP(checksPath, c.checks);
+    const auto expected = checksOf(checksPath, c.variant);
+    for (const char* ext : {".frd", ".exo", ".vtu", ".vtk"}) {
+      const std::string path = test::sharedFile(std::string(c.stem) + ext);
+      SCOPED_TRACE(path);
+      const auto model = meshioReaders().load(path);
+      EXPECT_EQ(model->mesh.nodeCount(), expected["nodes"].get<std::size_t>());
+      EXPECT_NEAR(maxOf(*model, "U.magnitude"), expected["U_max"].get<double>(), 1e-5 * expected["U_max"].get<double>());
+      // von Mises from the stored components (6 significant digits) against ccx's own.
+      EXPECT_NEAR(maxOf(*model, "S.mises"), expected["S_Mises_max"].get<double>(), 1e-4 * expected["S_Mises_max"].get<double>());
+      if (expected.contains("T_min")) {
+        const Field& t = *model->findField("T");
+        const ValueRange r = rangeOf(t.values(0));
+        EXPECT_EQ(r.min, expected["T_min"].get<double>());
+        EXPECT_EQ(r.max, expected["T_max"].get<double>());
+      }
+    }
+  }
+}
+
+TEST(SolverChecks, PostFlowFieldIsTheAnalyticOneAtProbedPoints) {
+  // pressure = 0.5 (U^2 - u_x^2 - u_y^2) of the potential flow around the post (a = 1,
+  // G = 2 pi 0.8): linear tets interpolate it to O(h^2).
+  VOLPOST_SHARED_OR_SKIP(path, "post/fine/post_fine.exo");
+  const auto model = meshioReaders().load(path);
+  const TetMesh tets = tetrahedralize(model->mesh);
+  const auto pressure = tets.nodeValues(model->mesh, model->findField("pressure")->values(0));
+  const PointLocator locator(tets);
+  const double G = 2.0 * M_PI * 0.8;
+  for (const auto& [r, theta, z] : {std::tuple{2.0, 0.3, 1.0}, std::tuple{5.0, 2.0, 2.0}, std::tuple{8.0, -1.2, 3.5}}) {
+    const double ur = (1.0 - 1.0 / (r * r)) * std::cos(theta), ut = -(1.0 + 1.0 / (r * r)) * std::sin(theta) + G / (2.0 * M_PI * r);
+    const double ux = ur * std::cos(theta) - ut * std::sin(theta), uy = ur * std::sin(theta) + ut * std::cos(theta);
+    const double exact = 0.5 * (1.0 - ux * ux - uy * uy);
+    const auto at = locator.locate(glm::dvec3(r * std::cos(theta), r * std::sin(theta), z));
+    ASSERT_TRUE(at);
+    EXPECT_NEAR(PointLocator::interpolateNodal(*at, pressure), exact, 0.02) << "r = " << r;
   }
 }
