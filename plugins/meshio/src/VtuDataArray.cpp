@@ -162,6 +162,7 @@ std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncodi
     std::vector<std::int64_t> out(d.size());
     for (std::size_t i = 0; i < d.size(); ++i) {
       if (d[i] != std::floor(d[i]) || !std::isfinite(d[i])) fail(src, "value " + std::to_string(i + 1) + " is not an integer");
+      if (std::abs(d[i]) > 9.0e18) fail(src, "value " + std::to_string(i + 1) + " is too large for an index or count");
       out[i] = std::int64_t(d[i]);
     }
     return out;

@@ -68,6 +68,9 @@ void RayCaster::initialize() {
 }
 
 void RayCaster::release() {
+  if (preFuture_.valid()) preFuture_.wait();
+  preFuture_ = {};
+  preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
   for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
   program_.reset();
@@ -162,21 +165,50 @@ void RayCaster::rebuildTables() {
   }
   glTextureSubImage2D(isoTable_.id(), 0, 0, 0, isoResolution, isoResolution, GL_RG, GL_FLOAT, iso.values.data());
   if (mode_ == IntegrationMode::PreIntegrated && !tf_.empty()) {
-    preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
-    const optics::PreintegrationTable pre(tf_, tableLo_, tableHi_, preResolution, preMaxLength_, preResolution);
-    if (!preTable_) {
-      preTable_ = gl::createTexture(GL_TEXTURE_3D);
-      glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
-      setFilter(preTable_.id(), GL_LINEAR);
-      for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-        glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
-    }
-    glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
-                        pre.values().data());
+    if (preFuture_.valid()) preOutdated_ = true;  // the running build finishes, then the latest TF goes
+    else launchPreintegration();
+    if (!asynchronous_) collectPreintegration(true);
   }
   glFinish();
-  lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!preFuture_.valid())
+    lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  tfChanged_ = start;
   gl::check("RayCaster::rebuildTables");
+}
+
+// The pre-integrated table (seconds at 128^3) is computed off the GL thread from a copy of
+// the TF and the table's range.
+void RayCaster::launchPreintegration() {
+  preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
+  preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, length = preMaxLength_,
+                                               n = preResolution] {
+    return optics::PreintegrationTable(tf, lo, hi, n, length, n).values();
+  });
+}
+
+void RayCaster::collectPreintegration(bool wait) {
+  if (!preFuture_.valid()) return;
+  if (!wait && preFuture_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  uploadPreintegration(preFuture_.get());
+  if (preOutdated_) {
+    preOutdated_ = false;
+    launchPreintegration();
+    if (wait) collectPreintegration(true);
+    return;
+  }
+  lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tfChanged_).count();
+}
+
+void RayCaster::uploadPreintegration(const std::vector<float>& values) {
+  if (!preTable_) {
+    preTable_ = gl::createTexture(GL_TEXTURE_3D);
+    glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
+    setFilter(preTable_.id(), GL_LINEAR);
+    for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
+                      values.data());
 }
 
 void RayCaster::ensureImage(int width, int height) {
@@ -189,6 +221,8 @@ void RayCaster::ensureImage(int width, int height) {
 
 void RayCaster::render(const RenderContext& ctx) {
   if (!initialized_ || gpu_.tets.empty() || ctx.width <= 0 || ctx.height <= 0) return;
+  // A table finished since the last frame goes up now; with none uploaded yet, wait.
+  collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
   ensureImage(ctx.width, ctx.height);
   const GLuint p = program_.id();
   glUseProgram(p);

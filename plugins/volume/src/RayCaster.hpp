@@ -8,6 +8,9 @@
 #include <volpost/render/GlObjects.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
+#include <chrono>
+#include <future>
+
 namespace volpost::volume {
 
 class RayCaster : public VolumeRenderer {
@@ -27,6 +30,8 @@ class RayCaster : public VolumeRenderer {
   void setTerminationThreshold(double transmittance) override { termination_ = transmittance; }
   VolumeStats stats() const override;
   std::vector<float> readImage() const override;
+  void setAsynchronousUpdates(bool on) override { asynchronous_ = on; }
+  bool hasPendingWork() const override { return preFuture_.valid(); }
 
   /// Texture sizes (set before the first TF): psi table N^2, iso table N^2, pre-integration N^3.
   int psiResolution = 512, isoResolution = 256, preResolution = 64;
@@ -34,6 +39,9 @@ class RayCaster : public VolumeRenderer {
  private:
   void uploadMesh();
   void rebuildTables();
+  void launchPreintegration();
+  void uploadPreintegration(const std::vector<float>& values);
+  void collectPreintegration(bool wait);
   void ensureImage(int width, int height);
 
   const Mesh* mesh_ = nullptr;
@@ -47,6 +55,10 @@ class RayCaster : public VolumeRenderer {
   double samplingStep_ = 0.0;  ///< 0: a quarter of the mean edge
   double termination_ = 0.002;
   double lastTfMs_ = 0.0;
+  std::chrono::steady_clock::time_point tfChanged_;
+  bool asynchronous_ = false;
+  std::future<std::vector<float>> preFuture_;  ///< the pre-integration table being built
+  bool preOutdated_ = false;                   ///< the TF changed again while it was built
   bool initialized_ = false;
 
   gl::Program program_, compositeProgram_;

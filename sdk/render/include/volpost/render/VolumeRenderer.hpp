@@ -53,6 +53,13 @@ class VolumeRenderer : public Renderer {
   virtual VolumeStats stats() const = 0;
   /// The last frame as premultiplied RGBA floats, top row first (for tests and benches).
   virtual std::vector<float> readImage() const = 0;
+  /// Interactive use: slow transfer-function tables (the pre-integrated one) are built on
+  /// a worker thread while frames keep using the previous table; rapid changes coalesce to
+  /// the latest. Off (the default, for the command line, tests and benches): render()
+  /// waits for them.
+  virtual void setAsynchronousUpdates(bool) {}
+  /// True while such a table is being built: the caller should render again soon.
+  virtual bool hasPendingWork() const { return false; }
 };
 
 }  // namespace volpost
