@@ -191,7 +191,7 @@ void MainWindow::setVolumeShown(bool on) {
   }
   try {
     const ScalarView view = session_->evaluate(*q, activeStep());
-    viewport_->showVolume(defaultTransferFunction(view, session_->model().mesh.bounds().diagonal()));
+    viewport_->showVolume(transferFunctionFor(view));
     statusBar()->showMessage(QString("Volume rendering %1 (extinction in 1 / model length unit)")
                                  .arg(QString::fromStdString(q->displayName())));
   } catch (const std::exception& e) {
@@ -312,6 +312,7 @@ void MainWindow::openFile(const QString& path) {
 
 void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   session_ = std::move(session);
+  userTransferFunctions_.clear();  // a new model: its fields get their own defaults
   const Model& m = session_->model();
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));
   viewport_->setSession(session_);
@@ -399,6 +400,43 @@ void MainWindow::refreshScalars() {
 }
 
 void MainWindow::requestRender() { viewport_->update(); }
+
+TransferFunction MainWindow::transferFunctionFor(const ScalarView& view) const {
+  const auto it = userTransferFunctions_.find(view.quantity.key());
+  if (it != userTransferFunctions_.end()) return it->second;
+  return defaultTransferFunction(view, session_->model().mesh.bounds().diagonal());
+}
+
+TransferFunction MainWindow::transferFunction() const {
+  const auto q = activeQuantity();
+  if (!session_ || !q) return {};
+  try {
+    return transferFunctionFor(session_->evaluate(*q, activeStep()));
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+void MainWindow::setTransferFunction(const TransferFunction& tf) {
+  const auto q = activeQuantity();
+  if (!session_ || !q) return;
+  userTransferFunctions_[q->key()] = tf;
+  if (viewport_->volumeShown()) viewport_->setTransferFunction(tf);
+}
+
+std::vector<double> MainWindow::activeValues() const {
+  const auto q = activeQuantity();
+  if (!session_ || !q) return {};
+  try {
+    return session_->evaluate(*q, activeStep()).values;
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+double MainWindow::modelSize() const { return session_ ? session_->model().mesh.bounds().diagonal() : 0.0; }
+
+double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStats().lastTransferFunctionMs; }
 
 void MainWindow::notifyPanels() {
   for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();

@@ -10,6 +10,7 @@
 #include <QMainWindow>
 
 #include <atomic>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -42,6 +43,11 @@ class MainWindow : public QMainWindow, public PanelHost {
   std::optional<Quantity> activeQuantity() const override;
   std::size_t activeStep() const override;
   void requestRender() override;
+  TransferFunction transferFunction() const override;
+  void setTransferFunction(const TransferFunction& tf) override;
+  std::vector<double> activeValues() const override;
+  double modelSize() const override;
+  double lastTransferFunctionMs() const override;
 
  signals:
   void loadFinished(bool ok, const QString& message);
@@ -50,6 +56,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  /// The TF for the active result: the one a panel set for it, else the default.
+  TransferFunction transferFunctionFor(const ScalarView& view) const;
   void buildActions();
   void buildToolbar();
   void buildPanels();
@@ -75,6 +83,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* edgesAction_ = nullptr;
   QAction* volumeAction_ = nullptr;
   bool loading_ = false;
+  std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
 };
 
 }  // namespace volpost::app

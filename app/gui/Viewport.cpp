@@ -4,6 +4,7 @@
 #include "../core/GpuVolumeImage.hpp"
 
 #include <QMouseEvent>
+#include <QTimer>
 #include <QOpenGLContext>
 #include <QImage>
 #include <QPainter>
@@ -66,6 +67,7 @@ void Viewport::cleanupGL() {
 
 void Viewport::setVolumeRenderer(std::unique_ptr<VolumeRenderer> renderer) {
   volume_ = std::move(renderer);
+  if (volume_) volume_->setAsynchronousUpdates(true);  // TF drags never block the window
   if (volume_ && scene_.initialized()) {
     withContext([&] { volume_->initialize(); });
     volumeInitialized_ = true;
@@ -77,6 +79,12 @@ void Viewport::showVolume(const TransferFunction& tf) {
   tf_ = tf;
   volumeShown_ = true;
   volumeDirty_ = true;
+  update();
+}
+
+void Viewport::setTransferFunction(const TransferFunction& tf) {
+  tf_ = tf;
+  tfDirty_ = true;
   update();
 }
 
@@ -112,25 +120,29 @@ void Viewport::moveClipPlane(double distance) {
 
 // Uploads what changed since the last frame; the mesh only when the data did.
 void Viewport::uploadVolume() {
-  if (!volumeDirty_ || !volume_ || !view_ || !session_) return;
-  const std::vector<double> values = session_->tetValues(*view_);  // on the conforming tetrahedra
-  if (uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location) {
-    volume_->setValues(values);  // same mesh: only the values travel
-  } else {
-    volume_->setVolume(session_->tetrahedra().mesh, view_->location, values);
-    uploadedModel_ = &session_->model();
-    uploadedLocation_ = view_->location;
+  if ((!volumeDirty_ && !tfDirty_) || !volume_ || !view_ || !session_) return;
+  if (volumeDirty_) {
+    const std::vector<double> values = session_->tetValues(*view_);  // on the conforming tetrahedra
+    if (uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location) {
+      volume_->setValues(values);  // same mesh: only the values travel
+    } else {
+      volume_->setVolume(session_->tetrahedra().mesh, view_->location, values);
+      uploadedModel_ = &session_->model();
+      uploadedLocation_ = view_->location;
+    }
+    volume_->setIntegrationMode(mode_);
+    volume_->setClipPlanes(clip_ ? std::vector<ClipPlane>{*clip_} : std::vector<ClipPlane>{});
   }
-  volume_->setIntegrationMode(mode_);
-  volume_->setTransferFunction(tf_);
-  volume_->setClipPlanes(clip_ ? std::vector<ClipPlane>{*clip_} : std::vector<ClipPlane>{});
-  volumeDirty_ = false;
+  volume_->setTransferFunction(tf_);  // a TF edit alone ends here: tables only
+  volumeDirty_ = tfDirty_ = false;
 }
 
 // The element edges stay visible over the volume and end its rays: they are drawn into
 // the window and, depth only, into a texture the ray caster reads.
 void Viewport::renderVolume(const RenderContext& ctx) {
   uploadVolume();
+  // A table still building on a worker thread: draw again when it may be there.
+  if (volume_->hasPendingWork()) QTimer::singleShot(30, this, [this] { update(); });
   scene_.setShowFaces(false);
   RenderContext volumeCtx = ctx;
   if (scene_.showEdges()) {

@@ -39,6 +39,9 @@ class Viewport : public QOpenGLWidget {
   /// the surface. Throws std::invalid_argument (mesh not made of tetrahedra) and leaves
   /// the surface on.
   void showVolume(const TransferFunction& tf);
+  /// A new transfer function for the volume (the mesh is not re-uploaded).
+  void setTransferFunction(const TransferFunction& tf);
+  const TransferFunction& transferFunction() const { return tf_; }
   void showSurface();
   bool volumeShown() const { return volumeShown_; }
   void setIntegrationMode(IntegrationMode mode);
@@ -85,7 +88,7 @@ class Viewport : public QOpenGLWidget {
 
   std::unique_ptr<VolumeRenderer> volume_;
   std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume
-  bool volumeShown_ = false, volumeInitialized_ = false, volumeDirty_ = false;
+  bool volumeShown_ = false, volumeInitialized_ = false, volumeDirty_ = false, tfDirty_ = false;
   TransferFunction tf_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   std::optional<ClipPlane> clip_;

@@ -7,6 +7,7 @@
 #include <volpost/core/MeshReader.hpp>
 #include <volpost/core/Model.hpp>
 #include <volpost/core/Quantity.hpp>
+#include <volpost/core/TransferFunction.hpp>
 
 #include <QtPlugin>
 #include <QList>
@@ -15,6 +16,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class QWidget;
 
@@ -46,6 +48,20 @@ class PanelHost {
   virtual std::optional<Quantity> activeQuantity() const = 0;
   virtual std::size_t activeStep() const = 0;
   virtual void requestRender() = 0;
+  /// The volume view's transfer function (the host's default for the active result until
+  /// a panel sets one).
+  virtual TransferFunction transferFunction() const = 0;
+  /// Applies a transfer function: the volume view and its legend follow. Cheap to call
+  /// often: slow tables are rebuilt off the GUI thread and rapid changes coalesce.
+  virtual void setTransferFunction(const TransferFunction& tf) = 0;
+  /// Values of the active result at the active step (one per node or cell), for histograms
+  /// and snapping; empty when none is shown.
+  virtual std::vector<double> activeValues() const = 0;
+  /// Diagonal of the model's bounding box (model length units): the scale for opacity.
+  virtual double modelSize() const = 0;
+  /// What the renderer's last transfer-function change cost (tables and upload), ms; 0 if
+  /// none yet.
+  virtual double lastTransferFunctionMs() const = 0;
 };
 
 /// Provides a dock panel (e.g. the transfer-function editor). Only real editors ship widgets.

@@ -1,0 +1,423 @@
+// SPDX-License-Identifier: MIT
+#include "TfEditorPanel.hpp"
+
+#include <volpost/core/ColorMap.hpp>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileDialog>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QImage>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace volpost::tfeditor {
+namespace {
+
+constexpr int kIsoResolution = 256;
+
+QSettings settings() { return QSettings("volpost", "volpost"); }
+
+bool readText(const QString& path, QString& text, QString* error) {
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly)) {
+    if (error) *error = path + ": " + f.errorString();
+    return false;
+  }
+  text = QString::fromUtf8(f.readAll());
+  return true;
+}
+
+// The table as a picture: s_front to the right, s_back up; where a segment crosses a
+// control point the texel shows which one (gray levels), black where it crosses none.
+QImage isoImage(const optics::IsoDetectionTable& t) {
+  QImage image(t.resolution, t.resolution, QImage::Format_RGB32);
+  for (int back = 0; back < t.resolution; ++back)
+    for (int front = 0; front < t.resolution; ++front) {
+      const float s = t.values[std::size_t(back * t.resolution + front) * 2];
+      const int g = s < 0.0f ? 0 : 60 + int(195.0f * s);
+      image.setPixel(front, t.resolution - 1 - back, qRgb(g, g, s < 0.0f ? 0 : 255 - g / 2));
+    }
+  return image;
+}
+
+}  // namespace
+
+TfEditorPanel::TfEditorPanel(PanelHost& host, QWidget* parent) : QWidget(parent), host_(host) {
+  setObjectName("tfEditorPanel");
+  buildUi();
+  sendTimer_ = new QTimer(this);
+  sendTimer_->setSingleShot(true);
+  sendTimer_->setInterval(0);  // coalesce: a burst of drag events sends the last state once
+  connect(sendTimer_, &QTimer::timeout, this, &TfEditorPanel::sendToHost);
+  connect(&model_, &TfEditModel::changed, this, [this] {
+    if (!hostUpdating_) sendTimer_->start();
+    showSelection();
+  });
+  connect(&model_, &TfEditModel::selectionChanged, this, &TfEditorPanel::showSelection);
+  connect(&isoWatcher_, &QFutureWatcherBase::finished, this, [this] {
+    if (!isoFuture_.isFinished()) return;  // a newer build replaced the one that finished
+    isoTable_ = isoFuture_.result();
+    if (isoTable_) isoPreview_->setPixmap(QPixmap::fromImage(isoImage(*isoTable_).scaled(96, 96)));
+    if (isoPending_) {
+      const TransferFunction next = *isoPending_;
+      isoPending_.reset();
+      startIsoTable(next);
+    }
+    showSelection();
+  });
+  hostChanged();
+}
+
+TfEditorPanel::~TfEditorPanel() { isoFuture_.waitForFinished(); }
+
+void TfEditorPanel::buildUi() {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+
+  auto* top = new QHBoxLayout;
+  presets_ = new QComboBox(this);
+  presets_->setObjectName("tfPreset");
+  presets_->setMinimumContentsLength(8);
+  presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  presets_->setToolTip("Colors of a preset on the current opacity curve");
+  presets_->addItem("Colors...", QString());
+  presets_->addItem("Diverging blue-white-red", "cool-warm");
+  presets_->addItem("Viridis", "viridis");
+  presets_->addItem("Rainbow", "rainbow");
+  presets_->addItem("Grayscale", "grayscale");
+  connect(presets_, &QComboBox::activated, this, [this](int index) {
+    const QString name = presets_->itemData(index).toString();
+    if (!name.isEmpty()) applyPreset(name);
+    presets_->setCurrentIndex(0);
+  });
+  top->addWidget(presets_, 1);
+  const auto button = [&](const QString& text, const QString& tip, auto slot) {
+    auto* b = new QToolButton(this);
+    b->setText(text);
+    b->setToolTip(tip);
+    connect(b, &QToolButton::clicked, this, slot);
+    top->addWidget(b);
+    return b;
+  };
+  button("ParaView...", "Import the colors of a ParaView color map (.json)", [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Import ParaView color map", {}, "ParaView color maps (*.json)");
+    QString error;
+    if (!path.isEmpty() && !importParaView(path, &error)) QMessageBox::warning(this, "Import", error);
+  });
+  button("Open...", "Open a volpost transfer function (.json)", [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Open transfer function", {}, "Transfer functions (*.json)");
+    QString error;
+    if (!path.isEmpty() && !loadFile(path, &error)) QMessageBox::warning(this, "Open", error);
+  });
+  button("Save...", "Save this transfer function (.json, volpost-tf)", [this] {
+    const QString path = QFileDialog::getSaveFileName(this, "Save transfer function", "transfer_function.json", "Transfer functions (*.json)");
+    QString error;
+    if (!path.isEmpty() && !saveFile(path, &error)) QMessageBox::warning(this, "Save", error);
+  });
+  QAction* undo = model_.undoStack()->createUndoAction(this, "Undo");
+  QAction* redo = model_.undoStack()->createRedoAction(this, "Redo");
+  undo->setShortcuts(QKeySequence::Undo);
+  redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  for (QAction* a : {undo, redo}) {
+    a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    addAction(a);
+    auto* b = new QToolButton(this);
+    b->setDefaultAction(a);
+    top->addWidget(b);
+  }
+  layout->addLayout(top);
+
+  curve_ = new TfCurveWidget(model_, this);
+  layout->addWidget(curve_, 1);
+
+  auto* grid = new QGridLayout;
+  grid->addWidget(new QLabel("Value", this), 0, 0);
+  valueEdit_ = new QLineEdit(this);
+  valueEdit_->setObjectName("tfValue");
+  valueEdit_->setToolTip("Exact value of the selected point (Enter applies)");
+  grid->addWidget(valueEdit_, 0, 1);
+  grid->addWidget(new QLabel("Opacity", this), 0, 2);
+  opacityEdit_ = new QLineEdit(this);
+  opacityEdit_->setObjectName("tfOpacity");
+  opacityEdit_->setToolTip("Opacity of a slab of the reference length, 0 to 1 (Enter applies)");
+  grid->addWidget(opacityEdit_, 0, 3);
+  colorButton_ = new QPushButton("Color", this);
+  colorButton_->setObjectName("tfColor");
+  grid->addWidget(colorButton_, 0, 4);
+  for (QLineEdit* e : {valueEdit_, opacityEdit_}) connect(e, &QLineEdit::returnPressed, this, &TfEditorPanel::applyNumericEntry);
+  connect(colorButton_, &QPushButton::clicked, this, &TfEditorPanel::chooseColor);
+
+  grid->addWidget(new QLabel("Opacity over", this), 1, 0);
+  lengthBox_ = new QDoubleSpinBox(this);
+  lengthBox_->setObjectName("tfLength");
+  lengthBox_->setDecimals(6);
+  lengthBox_->setRange(1e-9, 1e12);
+  lengthBox_->setToolTip("The thickness (model length units) whose opacity the curve shows; the function itself is an extinction per length");
+  connect(lengthBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) { model_.setReferenceLength(v); });
+  grid->addWidget(lengthBox_, 1, 1);
+  logBox_ = new QCheckBox("Log histogram", this);
+  logBox_->setObjectName("tfLogHistogram");
+  fineBox_ = new QCheckBox("Fine low opacity", this);
+  fineBox_->setObjectName("tfFineAxis");
+  fineBox_->setToolTip("Cube-root opacity axis: most useful opacities are small");
+  logBox_->setChecked(settings().value("tfeditor/logHistogram", true).toBool());
+  fineBox_->setChecked(settings().value("tfeditor/fineAxis", true).toBool());
+  curve_->setLogHistogram(logBox_->isChecked());
+  curve_->setFineOpacityAxis(fineBox_->isChecked());
+  connect(logBox_, &QCheckBox::toggled, this, [this](bool on) {
+    curve_->setLogHistogram(on);
+    saveState();
+  });
+  connect(fineBox_, &QCheckBox::toggled, this, [this](bool on) {
+    curve_->setFineOpacityAxis(on);
+    saveState();
+  });
+  grid->addWidget(logBox_, 1, 2);
+  grid->addWidget(fineBox_, 1, 3);
+  auto* fit = new QPushButton("Fit", this);
+  fit->setToolTip("Show the whole data range (or double-click the curve)");
+  connect(fit, &QPushButton::clicked, curve_, &TfCurveWidget::resetView);
+  grid->addWidget(fit, 1, 4);
+  layout->addLayout(grid);
+
+  auto* bottom = new QHBoxLayout;
+  status_ = new QLabel(this);
+  status_->setObjectName("tfStatus");
+  status_->setWordWrap(true);
+  bottom->addWidget(status_, 1);
+  isoPreview_ = new QLabel(this);
+  isoPreview_->setObjectName("tfIsoPreview");
+  isoPreview_->setFixedSize(96, 96);
+  isoPreview_->setToolTip("Iso-detection table: for a ray segment from s_front (right) to s_back (up), the first control point it crosses");
+  bottom->addWidget(isoPreview_);
+  layout->addLayout(bottom);
+  setToolTip("Click: add a point · drag: move (Shift snaps to data values) · right click / Delete: remove · "
+             "wheel: zoom · middle or Alt+drag: window/level · arrows, PageUp/PageDown, Ctrl+Z");
+}
+
+std::pair<double, double> TfEditorPanel::dataRange() const {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values_)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!std::isfinite(lo)) return {0.0, 1.0};
+  return {lo, hi > lo ? hi : lo + 1.0};
+}
+
+void TfEditorPanel::hostChanged() {
+  hostUpdating_ = true;
+  values_ = host_.activeValues();
+  const auto q = host_.activeQuantity();
+  const std::string key = q ? q->key() : std::string();
+  if (host_.modelSize() > 0.0) {
+    const QSignalBlocker block(lengthBox_);
+    if (key != quantityKey_ || lengthBox_->value() <= 1e-9) {
+      lengthBox_->setValue(host_.modelSize() / 10.0);
+      model_.setReferenceLength(lengthBox_->value());
+    }
+  }
+  bool restored = false;
+  if (key != quantityKey_) {
+    quantityKey_ = key;
+    TransferFunction tf = host_.transferFunction();
+    // The function this panel last made for a result of this name, if it still fits.
+    const QString saved = settings().value("tfeditor/functions/" + QString::fromStdString(key)).toString();
+    if (!key.empty() && !saved.isEmpty()) {
+      try {
+        const TransferFunction previous = TransferFunction::fromJson(saved.toStdString());
+        const auto [lo, hi] = dataRange();
+        if (!previous.empty() && previous.maxValue() >= lo && previous.minValue() <= hi) {
+          tf = previous;
+          restored = true;
+        }
+      } catch (const std::exception&) {
+      }
+    }
+    model_.load(tf, {}, true);
+    curve_->setData(values_);
+  } else {
+    curve_->setData(values_);
+  }
+  hostUpdating_ = false;
+  if (restored) sendToHost();
+  else startIsoTable(model_.toTransferFunction());  // the preview shows the host's function too
+  showSelection();
+}
+
+void TfEditorPanel::sendToHost() {
+  if (quantityKey_.empty()) return;
+  const TransferFunction tf = model_.toTransferFunction();
+  host_.setTransferFunction(tf);
+  startIsoTable(tf);
+  saveState();
+}
+
+void TfEditorPanel::flush() {
+  if (sendTimer_->isActive()) {
+    sendTimer_->stop();
+    sendToHost();
+  }
+}
+
+void TfEditorPanel::startIsoTable(const TransferFunction& tf) {
+  if (isoFuture_.isValid() && !isoFuture_.isFinished()) {
+    isoPending_ = tf;  // only the latest waits; intermediate drag states are skipped
+    return;
+  }
+  auto [lo, hi] = dataRange();
+  if (!tf.empty()) lo = std::min(lo, tf.minValue()), hi = std::max(hi, tf.maxValue());
+  isoFuture_ = QtConcurrent::run([this, tf, lo = lo, hi = hi] {
+    QElapsedTimer timer;
+    timer.start();
+    auto table = std::make_shared<optics::IsoDetectionTable>(tf, lo, hi, kIsoResolution);
+    isoMs_ = double(timer.nsecsElapsed()) * 1e-6;
+    return table;
+  });
+  isoWatcher_.setFuture(isoFuture_);
+}
+
+const optics::IsoDetectionTable* TfEditorPanel::isoTable() {
+  flush();
+  for (;;) {
+    if (isoFuture_.isValid()) isoTable_ = isoFuture_.result();  // waits for a build in progress
+    if (!isoPending_) break;
+    const TransferFunction next = *isoPending_;
+    isoPending_.reset();
+    startIsoTable(next);
+  }
+  return isoTable_.get();
+}
+
+void TfEditorPanel::showSelection() {
+  const auto& sel = model_.selection();
+  const int index = sel.empty() ? -1 : model_.indexOf(*sel.begin());
+  const bool one = index >= 0;
+  for (QWidget* w : {static_cast<QWidget*>(valueEdit_), static_cast<QWidget*>(opacityEdit_), static_cast<QWidget*>(colorButton_)})
+    w->setEnabled(one);
+  if (one) {
+    const EditPoint& p = model_.points()[std::size_t(index)];
+    if (!valueEdit_->hasFocus()) valueEdit_->setText(QString::number(p.value, 'g', 10));
+    if (!opacityEdit_->hasFocus()) opacityEdit_->setText(QString::number(p.opacity, 'g', 6));
+    colorButton_->setStyleSheet(QString("background-color: %1").arg(p.color.name()));
+  } else {
+    valueEdit_->clear();
+    opacityEdit_->clear();
+    colorButton_->setStyleSheet({});
+  }
+  status_->setText(QString("%1 points · %2 selected · iso table %3 ms · renderer %4 ms")
+                       .arg(model_.points().size())
+                       .arg(sel.size())
+                       .arg(isoMs_, 0, 'f', 1)
+                       .arg(host_.lastTransferFunctionMs(), 0, 'f', 1));
+}
+
+void TfEditorPanel::applyNumericEntry() {
+  const auto& sel = model_.selection();
+  const int index = sel.empty() ? -1 : model_.indexOf(*sel.begin());
+  if (index < 0) return;
+  bool okValue = false, okOpacity = false;
+  const double value = QLocale::c().toDouble(valueEdit_->text().trimmed(), &okValue);
+  const double opacity = QLocale::c().toDouble(opacityEdit_->text().trimmed(), &okOpacity);
+  if (!okValue || !std::isfinite(value)) {
+    status_->setText(QString("<span style='color:#c00'>value '%1' is not a number</span>").arg(valueEdit_->text().toHtmlEscaped()));
+    return;
+  }
+  if (!okOpacity || !(opacity >= 0.0 && opacity < 1.0)) {
+    status_->setText(QString("<span style='color:#c00'>opacity '%1' is not in [0, 1)</span>").arg(opacityEdit_->text().toHtmlEscaped()));
+    return;
+  }
+  EditPoint p = model_.points()[std::size_t(index)];
+  p.value = value;
+  p.opacity = opacity;
+  model_.movePoints({p}, "Edit point", 0);
+}
+
+void TfEditorPanel::chooseColor() {
+  const auto& sel = model_.selection();
+  const int index = sel.empty() ? -1 : model_.indexOf(*sel.begin());
+  if (index < 0) return;
+  const QColor c = QColorDialog::getColor(model_.points()[std::size_t(index)].color, this, "Point color");
+  if (!c.isValid()) return;
+  for (int id : std::set<int>(sel)) model_.setColor(id, c);
+}
+
+void TfEditorPanel::applyPreset(const QString& name) {
+  const ColorMap map = ColorMap::named(name.toStdString());
+  auto points = model_.points();
+  if (points.size() < 2) {
+    const auto [lo, hi] = dataRange();
+    model_.load(TransferFunction::ramp(lo, hi, name.toStdString(), 24.0 / std::max(host_.modelSize(), 1e-300)),
+                "Preset " + name, false);
+    return;
+  }
+  const double lo = points.front().value, hi = points.back().value;
+  for (auto& p : points) {
+    const glm::dvec3 c = map.at(hi > lo ? (p.value - lo) / (hi - lo) : 0.5);
+    p.color = QColor::fromRgbF(float(c.r), float(c.g), float(c.b));
+  }
+  model_.replaceAll(points, "Preset " + name);
+  settings().setValue("tfeditor/preset", name);
+}
+
+bool TfEditorPanel::loadFile(const QString& path, QString* error) {
+  QString text;
+  if (!readText(path, text, error)) return false;
+  try {
+    model_.load(TransferFunction::fromJson(text.toStdString()), "Open " + QFileInfo(path).fileName(), false);
+    curve_->resetView();
+    return true;
+  } catch (const std::exception& e) {
+    if (error) *error = path + ": " + e.what();
+    return false;
+  }
+}
+
+bool TfEditorPanel::saveFile(const QString& path, QString* error) const {
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+    if (error) *error = path + ": " + f.errorString();
+    return false;
+  }
+  f.write(QByteArray::fromStdString(model_.toTransferFunction().toJson()));
+  return true;
+}
+
+bool TfEditorPanel::importParaView(const QString& path, QString* error) {
+  QString text;
+  if (!readText(path, text, error)) return false;
+  try {
+    model_.load(model_.toTransferFunction().withParaViewColors(text.toStdString(), "", dataRange()),
+                "Import " + QFileInfo(path).fileName(), false);
+    return true;
+  } catch (const std::exception& e) {
+    if (error) *error = path + ": " + e.what();
+    return false;
+  }
+}
+
+void TfEditorPanel::saveState() const {
+  QSettings s = settings();
+  s.setValue("tfeditor/logHistogram", logBox_->isChecked());
+  s.setValue("tfeditor/fineAxis", fineBox_->isChecked());
+  if (!quantityKey_.empty() && !model_.points().empty())
+    s.setValue("tfeditor/functions/" + QString::fromStdString(quantityKey_), QString::fromStdString(model_.toTransferFunction().toJson()));
+}
+
+}  // namespace volpost::tfeditor

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// The transfer-function editor dock: the curve, exact numeric entry for the selected
+// point, presets, ParaView import, volpost TF files, undo/redo, and the live link to the
+// host (coalesced: a drag sends the latest function once the event loop is free). The 2D
+// iso-detection table of the current function is rebuilt off the GUI thread and shown.
+#pragma once
+
+#include "TfCurveWidget.hpp"
+#include "TfEditModel.hpp"
+
+#include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/plugin/PluginInterfaces.hpp>
+
+#include <QFutureWatcher>
+#include <QWidget>
+
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTimer;
+
+namespace volpost::tfeditor {
+
+class TfEditorPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  TfEditorPanel(PanelHost& host, QWidget* parent = nullptr);
+  ~TfEditorPanel() override;
+
+  /// The host's model, result or step changed: new histogram, and the function the host
+  /// holds for this result (a new result starts a new undo history).
+  void hostChanged();
+  QSize sizeHint() const override { return {380, 440}; }
+
+  TfEditModel& model() { return model_; }
+  TfCurveWidget& curve() { return *curve_; }
+  /// The iso-detection table of the function last sent to the host (waits for a build in
+  /// progress). For tests and the preview.
+  const optics::IsoDetectionTable* isoTable();
+  /// Sends pending edits to the host now (the coalescing timer would do it shortly).
+  void flush();
+  void applyPreset(const QString& name);
+  bool loadFile(const QString& path, QString* error = nullptr);
+  bool saveFile(const QString& path, QString* error = nullptr) const;
+  bool importParaView(const QString& path, QString* error = nullptr);
+
+ private:
+  void buildUi();
+  void sendToHost();
+  void startIsoTable(const TransferFunction& tf);
+  void showSelection();
+  void applyNumericEntry();
+  void chooseColor();
+  void saveState() const;
+  std::pair<double, double> dataRange() const;
+
+  PanelHost& host_;
+  TfEditModel model_;
+  TfCurveWidget* curve_ = nullptr;
+  QComboBox* presets_ = nullptr;
+  QLineEdit* valueEdit_ = nullptr;
+  QLineEdit* opacityEdit_ = nullptr;
+  QPushButton* colorButton_ = nullptr;
+  QDoubleSpinBox* lengthBox_ = nullptr;
+  QCheckBox* logBox_ = nullptr;
+  QCheckBox* fineBox_ = nullptr;
+  QLabel* status_ = nullptr;
+  QLabel* isoPreview_ = nullptr;
+  QTimer* sendTimer_ = nullptr;
+  std::string quantityKey_;
+  std::vector<double> values_;
+  bool hostUpdating_ = false;
+
+  QFuture<std::shared_ptr<optics::IsoDetectionTable>> isoFuture_;
+  QFutureWatcher<std::shared_ptr<optics::IsoDetectionTable>> isoWatcher_;
+  std::shared_ptr<optics::IsoDetectionTable> isoTable_;
+  std::optional<TransferFunction> isoPending_;  // a newer function waits for the running build
+  double isoMs_ = 0.0;
+};
+
+}  // namespace volpost::tfeditor

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+// The transfer-function editor driven like a user (mouse and keyboard under Xvfb): add,
+// drag, delete a point, undo, numeric entry, presets, files. Checks the resulting
+// function, what the host received, and the iso-detection table built from it.
+#include "TfEditorPanel.hpp"
+
+#include <QApplication>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+
+using namespace volpost;
+using namespace volpost::tfeditor;
+
+namespace {
+
+// A host with a result of values 0..100 and a 10-unit model.
+class FakeHost : public PanelHost {
+ public:
+  FakeHost() {
+    for (int i = 0; i <= 1000; ++i) values.push_back(i * 0.1);
+    tf = TransferFunction({{0.0, {0, 0, 1}, 0.0}, {100.0, {1, 0, 0}, opacityToExtinction(0.5, 1.0)}});
+  }
+  const Model* model() const override { return nullptr; }
+  std::optional<Quantity> activeQuantity() const override {
+    Quantity q;
+    q.field = "T";
+    return q;
+  }
+  std::size_t activeStep() const override { return 0; }
+  void requestRender() override {}
+  TransferFunction transferFunction() const override { return tf; }
+  void setTransferFunction(const TransferFunction& f) override {
+    tf = f;
+    ++received;
+  }
+  std::vector<double> activeValues() const override { return values; }
+  double modelSize() const override { return 10.0; }
+  double lastTransferFunctionMs() const override { return 0.0; }
+
+  std::vector<double> values;
+  TransferFunction tf;
+  int received = 0;
+};
+
+}  // namespace
+
+class TfEditorTest : public QObject {
+  Q_OBJECT
+
+ private:
+  std::unique_ptr<FakeHost> host_;
+  std::unique_ptr<TfEditorPanel> panel_;
+
+  QPoint at(double value, double opacity) const { return panel_->curve().toPixel(value, opacity).toPoint(); }
+
+ private slots:
+  void init() {
+    QSettings("volpost", "volpost").remove("tfeditor");  // no state from an earlier run
+    host_ = std::make_unique<FakeHost>();
+    panel_ = std::make_unique<TfEditorPanel>(*host_);
+    panel_->resize(420, 480);
+    panel_->show();
+    QVERIFY(QTest::qWaitForWindowExposed(panel_.get()));
+
+    panel_->curve().setView(0.0, 100.0);
+  }
+  void cleanup() { panel_.reset(); }
+
+  void startsFromTheHostsFunctionWithOpacityOverATenthOfTheModel() {
+    QCOMPARE(panel_->model().referenceLength(), 1.0);
+    QCOMPARE(int(panel_->model().points().size()), 2);
+    QVERIFY(std::abs(panel_->model().points()[1].opacity - 0.5) < 1e-12);
+  }
+
+  void clickAddsAPointAndTheHostAndIsoTableFollow() {
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(40.0, 0.2));
+    const auto& p = panel_->model().points();
+    QCOMPARE(int(p.size()), 3);
+    QVERIFY(std::abs(p[1].value - 40.0) < 0.5);       // within a pixel of the click
+    QVERIFY(std::abs(p[1].opacity - 0.2) < 0.02);
+    panel_->flush();
+    QCOMPARE(int(host_->tf.points().size()), 3);
+    const double added = host_->tf.points()[1].value;
+    // The iso-detection table: a segment from just below to just above the new point
+    // crosses it first; one that stays below crosses nothing.
+    const optics::IsoDetectionTable* iso = panel_->isoTable();
+    QVERIFY(iso);
+    const auto [crossed, next] = iso->at(added - 2.0, added + 2.0);
+    QVERIFY2(std::abs(crossed - added) < 0.5, qPrintable(QString::number(crossed)));
+    QCOMPARE(next, -1.0);
+    QCOMPARE(iso->at(added - 6.0, added - 3.0).first, -1.0);
+  }
+
+  void dragMovesThePointAndOneUndoBringsItBack() {
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(40.0, 0.2));
+    const double before = panel_->model().points()[1].value;
+    QTest::mousePress(&panel_->curve(), Qt::LeftButton, {}, at(before, 0.2));
+    for (double v = before; v <= 60.0; v += 5.0) QTest::mouseMove(&panel_->curve(), at(v, 0.2));
+    QTest::mouseRelease(&panel_->curve(), Qt::LeftButton, {}, at(60.0, 0.2));
+    QVERIFY(std::abs(panel_->model().points()[1].value - 60.0) < 0.5);
+    panel_->curve().setFocus();
+    QTest::keyClick(&panel_->curve(), Qt::Key_Z, Qt::ControlModifier);  // the whole drag is one step
+    QVERIFY(std::abs(panel_->model().points()[1].value - before) < 1e-12);
+    QTest::keyClick(&panel_->curve(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(std::abs(panel_->model().points()[1].value - 60.0) < 0.5);
+  }
+
+  void shiftDragSnapsToDataValues() {
+    host_->values = {10.0, 33.3, 70.0};
+    panel_->hostChanged();
+    panel_->curve().setView(0.0, 100.0);
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(50.0, 0.2));
+    QTest::mousePress(&panel_->curve(), Qt::LeftButton, {}, at(50.0, 0.2));
+    QTest::mouseMove(&panel_->curve(), at(36.0, 0.2));
+    QTest::mouseMove(&panel_->curve(), at(35.0, 0.2));
+    QMouseEvent move(QEvent::MouseMove, QPointF(at(35.0, 0.2)), panel_->curve().mapToGlobal(QPointF(at(35.0, 0.2))),
+                     Qt::NoButton, Qt::LeftButton, Qt::ShiftModifier);
+    QApplication::sendEvent(&panel_->curve(), &move);
+    QTest::mouseRelease(&panel_->curve(), Qt::LeftButton, Qt::ShiftModifier, at(35.0, 0.2));
+    bool snapped = false;
+    for (const auto& p : panel_->model().points()) snapped = snapped || p.value == 33.3;
+    QVERIFY(snapped);
+  }
+
+  void deleteKeyAndRightClickRemovePointsAndUndoRestoresThem() {
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(40.0, 0.2));
+    QCOMPARE(int(panel_->model().points().size()), 3);
+    QTest::keyClick(&panel_->curve(), Qt::Key_Delete);
+    QCOMPARE(int(panel_->model().points().size()), 2);
+    QTest::mouseClick(&panel_->curve(), Qt::RightButton, {}, at(100.0, 0.5));
+    QCOMPARE(int(panel_->model().points().size()), 1);
+    QTest::keyClick(&panel_->curve(), Qt::Key_Z, Qt::ControlModifier);
+    QTest::keyClick(&panel_->curve(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(int(panel_->model().points().size()), 3);
+    panel_->flush();
+    QCOMPARE(int(host_->tf.points().size()), 3);
+  }
+
+  void keyboardSelectsMovesAndEntersExactValues() {
+    panel_->curve().setFocus();
+    QTest::keyClick(&panel_->curve(), Qt::Key_PageDown);  // first point
+    QCOMPARE(int(panel_->model().selection().size()), 1);
+    QTest::keyClick(&panel_->curve(), Qt::Key_PageDown);  // second point (value 100)
+    const int id = *panel_->model().selection().begin();
+    QTest::keyClick(&panel_->curve(), Qt::Key_Left);      // 1% of the view to the left
+    QVERIFY(std::abs(panel_->model().points()[std::size_t(panel_->model().indexOf(id))].value - 99.0) < 1e-9);
+    auto* value = panel_->findChild<QLineEdit*>("tfValue");
+    auto* opacity = panel_->findChild<QLineEdit*>("tfOpacity");
+    value->setFocus();
+    value->selectAll();
+    QTest::keyClicks(value, "87.125");
+    opacity->setText("0.003");
+    QTest::keyClick(value, Qt::Key_Return);
+    const auto& p = panel_->model().points()[std::size_t(panel_->model().indexOf(id))];
+    QCOMPARE(p.value, 87.125);
+    QCOMPARE(p.opacity, 0.003);
+    opacity->setText("1.5");  // refused with a message, nothing changes
+    QTest::keyClick(opacity, Qt::Key_Return);
+    QCOMPARE(panel_->model().points()[std::size_t(panel_->model().indexOf(id))].opacity, 0.003);
+    panel_->flush();
+    QVERIFY(std::abs(host_->tf.points().back().extinction - opacityToExtinction(0.003, 1.0)) < 1e-15);
+  }
+
+  void presetsRecolorAndFilesRoundTrip() {
+    panel_->applyPreset("grayscale");
+    const auto& p = panel_->model().points();
+    QCOMPARE(p.front().color, QColor::fromRgbF(0, 0, 0));
+    QVERIFY(p.back().color.redF() > 0.99f);
+    QTemporaryDir dir;
+    const QString file = dir.filePath("tf.json");
+    QString error;
+    QVERIFY(panel_->saveFile(file, &error));
+    panel_->model().load(TransferFunction({{5.0, {1, 1, 1}, 0.0}}), "other", false);
+    QVERIFY(panel_->loadFile(file, &error));
+    QCOMPARE(int(panel_->model().points().size()), 2);
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write("{\"format\": \"volpost-tf\", \"points\": [{\"value\": 1, \"extinction\": -3}]}");
+    bad.close();
+    QVERIFY(!panel_->loadFile(dir.filePath("bad.json"), &error));
+    QVERIFY2(error.contains("bad.json"), qPrintable(error));
+    QCOMPARE(int(panel_->model().points().size()), 2);  // what the user had stays
+    QVERIFY(!panel_->importParaView(dir.filePath("missing.json"), &error));
+  }
+
+  void windowLevelMovesTheWholeFunction() {
+    QTest::mousePress(&panel_->curve(), Qt::MiddleButton, {}, at(50.0, 0.1));
+    QTest::mouseMove(&panel_->curve(), at(60.0, 0.1));
+    QTest::mouseRelease(&panel_->curve(), Qt::MiddleButton, {}, at(60.0, 0.1));
+    const auto& p = panel_->model().points();
+    QVERIFY(std::abs(p.front().value - 10.0) < 0.5);
+    QVERIFY(std::abs(p.back().value - 110.0) < 0.5);
+  }
+
+  void resizesDownToItsMinimumWithoutLosingTheCurve() {
+    panel_->resize(panel_->minimumSizeHint());
+    QTest::qWait(20);
+    QVERIFY(panel_->curve().width() >= 150);
+    QVERIFY(panel_->curve().height() >= 100);
+  }
+};
+
+int main(int argc, char** argv) {
+  QStandardPaths::setTestModeEnabled(true);  // settings go to a test location
+  QApplication app(argc, argv);
+  TfEditorTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "TfEditorTest.moc"
