@@ -6,6 +6,7 @@
 
 #include <volpost/core/Version.hpp>
 
+#include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -24,7 +25,7 @@ void printUsage() {
   std::printf(
       "volpost %s - finite-element post-processing and volume rendering\n\n"
       "usage:\n"
-      "  volpost [MODEL] [--field Q] [--screenshot FILE]\n"
+      "  volpost [MODEL] [--field Q] [--volume] [--screenshot FILE]\n"
       "                                    open the window (optionally on MODEL, colored by Q)\n"
       "  volpost info MODEL                counts, bounds, fields and defects of MODEL\n"
       "  volpost render MODEL -o OUT.png   render MODEL headless (see volpost render --help)\n"
@@ -56,8 +57,10 @@ int runWindow(int argc, char** argv) {
   parser.addPositionalArgument("MODEL", "model to open");
   const QCommandLineOption field("field", "quantity to color by, e.g. S.mises", "Q");
   const QCommandLineOption screenshot("screenshot", "save the window to FILE once MODEL is shown, then quit", "FILE");
+  const QCommandLineOption volume("volume", "show the result as a volume (View > Volume Rendering)");
   parser.addOption(field);
   parser.addOption(screenshot);
+  parser.addOption(volume);
   parser.addHelpOption();
   parser.process(app);
 
@@ -67,9 +70,12 @@ int runWindow(int argc, char** argv) {
   window.show();
   if (!parser.positionalArguments().isEmpty()) {
     const QString wanted = parser.value(field), shot = parser.value(screenshot);
-    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted, shot](bool ok) {
+    const bool asVolume = parser.isSet(volume);
+    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted, shot, asVolume](bool ok) {
       if (ok && !wanted.isEmpty() && !window.selectQuantity(wanted))
         std::fprintf(stderr, "volpost: warning: no quantity '%s' in this model\n", qPrintable(wanted));
+      if (ok && asVolume)
+        if (auto* action = window.findChild<QAction*>("volumeAction"); action && action->isEnabled()) action->setChecked(true);
       if (shot.isEmpty()) return;
       QTimer::singleShot(300, &window, [&window, shot] {
         if (!window.grab().save(shot)) std::fprintf(stderr, "volpost: error: cannot write %s\n", qPrintable(shot));

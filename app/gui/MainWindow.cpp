@@ -63,7 +63,7 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   buildToolbar();
   buildPanels();
   QSettings settings("volpost", "volpost");
-  resize(1100, 720);
+  resize(1280, 800);
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
   statusBar()->showMessage("Open a model with File > Open (Ctrl+O)");
@@ -240,11 +240,13 @@ void MainWindow::buildPanels() {
   modelInfo_->setObjectName("modelInfo");
   dock->setWidget(modelInfo_);
   addDockWidget(Qt::LeftDockWidgetArea, dock);
+  resizeDocks({dock}, {220}, Qt::Horizontal);
   for (PanelPlugin* panel : plugins_.panelPlugins()) {
     auto* d = new QDockWidget(panel->panelTitle(), this);
     d->setObjectName("panel:" + panel->panelTitle());
     d->setWidget(panel->createPanel(*this, d));
     addDockWidget(Qt::RightDockWidgetArea, d);
+    resizeDocks({d}, {360}, Qt::Horizontal);  // the view keeps most of the window
   }
 }
 

@@ -117,7 +117,7 @@ void TfEditorPanel::buildUi() {
     top->addWidget(b);
     return b;
   };
-  button("ParaView...", "Import the colors of a ParaView color map (.json)", [this] {
+  button("PV...", "Import the colors of a ParaView color map (.json)", [this] {
     const QString path = QFileDialog::getOpenFileName(this, "Import ParaView color map", {}, "ParaView color maps (*.json)");
     QString error;
     if (!path.isEmpty() && !importParaView(path, &error)) QMessageBox::warning(this, "Import", error);
@@ -149,30 +149,45 @@ void TfEditorPanel::buildUi() {
   layout->addWidget(curve_, 1);
 
   auto* grid = new QGridLayout;
-  grid->addWidget(new QLabel("Value", this), 0, 0);
   valueEdit_ = new QLineEdit(this);
   valueEdit_->setObjectName("tfValue");
   valueEdit_->setToolTip("Exact value of the selected point (Enter applies)");
-  grid->addWidget(valueEdit_, 0, 1);
-  grid->addWidget(new QLabel("Opacity", this), 0, 2);
   opacityEdit_ = new QLineEdit(this);
   opacityEdit_->setObjectName("tfOpacity");
   opacityEdit_->setToolTip("Opacity of a slab of the reference length, 0 to 1 (Enter applies)");
-  grid->addWidget(opacityEdit_, 0, 3);
   colorButton_ = new QPushButton("Color", this);
   colorButton_->setObjectName("tfColor");
-  grid->addWidget(colorButton_, 0, 4);
-  for (QLineEdit* e : {valueEdit_, opacityEdit_}) connect(e, &QLineEdit::returnPressed, this, &TfEditorPanel::applyNumericEntry);
+  for (QLineEdit* e : {valueEdit_, opacityEdit_}) {
+    e->setMinimumWidth(60);
+    e->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);  // the dock decides the width
+    connect(e, &QLineEdit::returnPressed, this, &TfEditorPanel::applyNumericEntry);
+  }
   connect(colorButton_, &QPushButton::clicked, this, &TfEditorPanel::chooseColor);
+  grid->addWidget(new QLabel("Value", this), 0, 0);
+  grid->addWidget(valueEdit_, 0, 1);
+  grid->addWidget(new QLabel("Opacity", this), 0, 2);
+  grid->addWidget(opacityEdit_, 0, 3);
+  grid->addWidget(colorButton_, 0, 4);
 
-  grid->addWidget(new QLabel("Opacity over", this), 1, 0);
   lengthBox_ = new QDoubleSpinBox(this);
   lengthBox_->setObjectName("tfLength");
-  lengthBox_->setDecimals(6);
-  lengthBox_->setRange(1e-9, 1e12);
+  lengthBox_->setDecimals(4);
+  lengthBox_->setRange(1e-4, 1e12);
+  lengthBox_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
   lengthBox_->setToolTip("The thickness (model length units) whose opacity the curve shows; the function itself is an extinction per length");
   connect(lengthBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) { model_.setReferenceLength(v); });
+  grid->addWidget(new QLabel("Opacity over", this), 1, 0);
   grid->addWidget(lengthBox_, 1, 1);
+  grid->addWidget(new QLabel("length units", this), 1, 2, 1, 2);
+  auto* fit = new QPushButton("Fit", this);
+  fit->setToolTip("Show the whole data range (or double-click the curve)");
+  connect(fit, &QPushButton::clicked, curve_, &TfCurveWidget::resetView);
+  grid->addWidget(fit, 1, 4);
+  grid->setColumnStretch(1, 1);
+  grid->setColumnStretch(3, 1);
+  layout->addLayout(grid);
+
+  auto* options = new QHBoxLayout;
   logBox_ = new QCheckBox("Log histogram", this);
   logBox_->setObjectName("tfLogHistogram");
   fineBox_ = new QCheckBox("Fine low opacity", this);
@@ -190,13 +205,10 @@ void TfEditorPanel::buildUi() {
     curve_->setFineOpacityAxis(on);
     saveState();
   });
-  grid->addWidget(logBox_, 1, 2);
-  grid->addWidget(fineBox_, 1, 3);
-  auto* fit = new QPushButton("Fit", this);
-  fit->setToolTip("Show the whole data range (or double-click the curve)");
-  connect(fit, &QPushButton::clicked, curve_, &TfCurveWidget::resetView);
-  grid->addWidget(fit, 1, 4);
-  layout->addLayout(grid);
+  options->addWidget(logBox_);
+  options->addWidget(fineBox_);
+  options->addStretch(1);
+  layout->addLayout(options);
 
   auto* bottom = new QHBoxLayout;
   status_ = new QLabel(this);
