@@ -198,6 +198,25 @@ class TfEditorTest : public QObject {
     QVERIFY(std::abs(p.back().value - 110.0) < 0.5);
   }
 
+  void twoHundredFiftyFivePointsEditAndCutLikeTwo() {
+    // The seed tried 255 segments; the editor puts no limit on the points.
+    std::vector<ControlPoint> many;
+    for (int i = 0; i <= 255; ++i) many.push_back({i * 100.0 / 255.0, {i / 255.0, 0.5, 1.0 - i / 255.0}, 0.01 * (i % 7)});
+    panel_->model().load(TransferFunction(many), "many", false);
+    QCOMPARE(int(panel_->model().points().size()), 256);
+    QVERIFY(!panel_->grab().isNull());  // paints
+    QTest::keyClick(&panel_->curve(), Qt::Key_A, Qt::ControlModifier);
+    QCOMPARE(int(panel_->model().selection().size()), 256);
+    QTest::keyClick(&panel_->curve(), Qt::Key_Right);  // moves them all at once
+    panel_->flush();
+    QCOMPARE(int(host_->tf.points().size()), 256);
+    QVERIFY(std::abs(host_->tf.points().front().value - 1.0) < 1e-9);
+    const optics::IsoDetectionTable* iso = panel_->isoTable();
+    QVERIFY(iso);
+    const double first = host_->tf.points()[10].value;
+    QVERIFY(std::abs(iso->at(first - 0.2, first + 0.2).first - first) < 0.3);
+  }
+
   void resizesDownToItsMinimumWithoutLosingTheCurve() {
     panel_->resize(panel_->minimumSizeHint());
     QTest::qWait(20);

@@ -15,7 +15,9 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <memory>
 
 using namespace volpost;
@@ -223,6 +225,34 @@ TEST_F(RayCast, TransferFunctionEditsDoNotTouchTheMesh) {
   EXPECT_LT(double(before) / double(grid.cellCount()), 56.0);
   EXPECT_GT(caster_.stats().lastTransferFunctionMs, 0.0);
   EXPECT_EQ(caster_.stats().tetrahedra, grid.cellCount());
+}
+
+TEST_F(RayCast, AsynchronousPreIntegrationCatchesUpWithTheLatestFunction) {
+  // Interactive use: the pre-integrated table is built off the GL thread, frames keep the
+  // previous one, rapid changes coalesce; once it is in, the picture is the synchronous one.
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const Camera camera = isoCamera(grid);
+  caster_.setVolume(grid, FieldLocation::Node, field(grid));
+  caster_.setIntegrationMode(IntegrationMode::PreIntegrated);
+  caster_.setTerminationThreshold(0.0);
+  TransferFunction other = kTf;
+  std::vector<ControlPoint> points = kTf.points();
+  for (auto& p : points) p.extinction *= 3.0;
+  other = TransferFunction(points);
+  caster_.setTransferFunction(other);
+  const std::vector<float> synchronous = gpuImage(camera, 48, 48);
+  caster_.setTransferFunction(kTf);
+  caster_.setAsynchronousUpdates(true);
+  for (int i = 0; i < 5; ++i) caster_.setTransferFunction(i % 2 ? kTf : other);  // a drag: ends on `other`
+  EXPECT_TRUE(caster_.hasPendingWork());
+  (void)gpuImage(camera, 48, 48);  // does not wait
+  for (int i = 0; i < 2000 && caster_.hasPendingWork(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    (void)gpuImage(camera, 48, 48);
+  }
+  ASSERT_FALSE(caster_.hasPendingWork());
+  EXPECT_EQ(gpuImage(camera, 48, 48), synchronous);
+  EXPECT_GT(caster_.stats().lastTransferFunctionMs, 0.0);
 }
 
 TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
