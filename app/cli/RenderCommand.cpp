@@ -4,6 +4,7 @@
 #include "../core/GpuVolumeImage.hpp"
 #include "../core/VolumeImage.hpp"
 #include "CliSupport.hpp"
+#include "../core/VolumeSpecs.hpp"
 #include "Commands.hpp"
 
 #include <QCommandLineParser>
@@ -26,41 +27,6 @@ bool parseSize(const QString& text, int& w, int& h) {
   w = parts[0].toInt(&okW);
   h = parts[1].toInt(&okH);
   return okW && okH && w > 0 && h > 0 && w <= 16384 && h <= 16384;
-}
-
-// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
-bool parseClip(const QString& text, ClipPlane& plane) {
-  const QStringList parts = text.split(',');
-  if (parts.size() != 6) return false;
-  double v[6];
-  for (int i = 0; i < 6; ++i) {
-    bool ok = false;
-    v[i] = parts[i].toDouble(&ok);
-    if (!ok) return false;
-  }
-  plane = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-  return plane.normal != glm::dvec3(0.0);
-}
-
-// "VALUE[:r,g,b[:opacity]]", color components 0..1, opacity 0..1 (default opaque white).
-bool parseIso(const QString& text, optics::IsoSurface& iso) {
-  const QStringList parts = text.split(':');
-  bool ok = false;
-  iso = {parts[0].toDouble(&ok), glm::dvec3(1.0), 1.0};
-  if (!ok || parts.size() > 3) return false;
-  if (parts.size() >= 2) {
-    const QStringList rgb = parts[1].split(',');
-    if (rgb.size() != 3) return false;
-    for (int k = 0; k < 3; ++k) {
-      iso.color[k] = rgb[k].toDouble(&ok);
-      if (!ok || iso.color[k] < 0.0 || iso.color[k] > 1.0) return false;
-    }
-  }
-  if (parts.size() == 3) {
-    iso.opacity = parts[2].toDouble(&ok);
-    if (!ok || iso.opacity < 0.0 || iso.opacity > 1.0) return false;
-  }
-  return true;
 }
 
 std::string readText(const QString& path) {
@@ -107,6 +73,8 @@ int runRender(const QStringList& args) {
                                         "cool-warm ramp over the result's range.", "FILE");
   const QCommandLineOption clip("clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
                                         "(repeatable; volume rendering).", "PLANE");
+  const QCommandLineOption clipBox("clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (six clip "
+                                              "planes; volume rendering).", "BOX");
   const QCommandLineOption isoOption("iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; "
                                             "repeatable, up to 8; volume rendering).", "ISO");
   const QCommandLineOption volumeEdges("volume-edges", "GPU volume rendering: draw the boundary's element edges, "
@@ -114,7 +82,7 @@ int runRender(const QStringList& args) {
   const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
   const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
   parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, modeOption,
-                     tfFile, clip, isoOption, volumeEdges, floatOut, threads});
+                     tfFile, clip, clipBox, isoOption, volumeEdges, floatOut, threads});
   parser.process(QStringList{"volpost render"} + args);
 
   if (parser.positionalArguments().size() != 1) {
@@ -162,21 +130,33 @@ int runRender(const QStringList& args) {
   }
   std::vector<ClipPlane> clipPlanes;
   for (const QString& c : parser.values(clip)) {
-    ClipPlane plane;
-    if (!parseClip(c, plane)) {
+    const auto plane = parseClipPlane(c);
+    if (!plane) {
       printError(QString("--clip %1 is not px,py,pz,nx,ny,nz with a non-zero normal").arg(c));
       return 2;
     }
-    clipPlanes.push_back(plane);
+    clipPlanes.push_back(*plane);
+  }
+  if (parser.isSet(clipBox)) {
+    const auto box = parseClipBox(parser.value(clipBox));
+    if (!box) {
+      printError(QString("--clip-box %1 is not xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(parser.value(clipBox)));
+      return 2;
+    }
+    clipPlanes.insert(clipPlanes.end(), box->begin(), box->end());
+  }
+  if (clipPlanes.size() > 6) {
+    printError(QString("%1 clip planes: the volume renderers take at most 6 (a box is 6)").arg(clipPlanes.size()));
+    return 2;
   }
   std::vector<optics::IsoSurface> isoSurfaces;
   for (const QString& text : parser.values(isoOption)) {
-    optics::IsoSurface iso;
-    if (!parseIso(text, iso) || isoSurfaces.size() == 8) {
+    const auto iso = parseIsoSurface(text);
+    if (!iso || isoSurfaces.size() == 8) {
       printError(QString("--iso %1 is not VALUE[:r,g,b[:opacity]] with colors and opacity in 0..1 (at most 8)").arg(text));
       return 2;
     }
-    isoSurfaces.push_back(iso);
+    isoSurfaces.push_back(*iso);
   }
   if (rendererName != "surface" && !parser.isSet(field)) {
     printError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName));

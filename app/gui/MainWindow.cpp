@@ -2,6 +2,7 @@
 #include "MainWindow.hpp"
 
 #include "../core/VolumeImage.hpp"
+#include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
 #include "Viewport.hpp"
 
@@ -16,7 +17,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
+#include <QInputDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -175,6 +178,55 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
       viewport_->setClipAxis(i - 1);
       if (i > 0) statusBar()->showMessage("Ctrl+drag in the view moves the clip plane");
     });
+  }
+  clip->addSeparator();
+  clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
+  view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
+}
+
+void MainWindow::chooseClipBox() {
+  if (!session_) return;
+  const Bounds b = session_->model().mesh.bounds();
+  QString text = QString("%1,%2,%3,%4,%5,%6").arg(b.min.x).arg(b.max.x).arg(b.min.y).arg(b.max.y).arg(b.min.z).arg(b.max.z);
+  for (;;) {
+    bool ok = false;
+    text = QInputDialog::getText(this, "Clip box", "Keep inside xmin,xmax,ymin,ymax,zmin,zmax (empty: no box):",
+                                 QLineEdit::Normal, text, &ok);
+    if (!ok) return;
+    if (text.trimmed().isEmpty()) {
+      viewport_->setClipBox({});
+      return;
+    }
+    if (const auto box = parseClipBox(text)) {
+      viewport_->setClipBox(*box);
+      statusBar()->showMessage("Clip box set (volume rendering)");
+      return;
+    }
+    QMessageBox::warning(this, "Clip box", QString("'%1' is not six numbers xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(text));
+  }
+}
+
+void MainWindow::chooseIsoSurfaces() {
+  QString text = isoSurfacesText(viewport_->isoSurfaces());
+  if (text.isEmpty()) {
+    if (const auto q = activeQuantity(); q && session_) {
+      const ScalarView v = session_->evaluate(*q, activeStep());
+      if (v.range.valid()) text = QString("%1:1,0.85,0.2:0.6").arg(0.5 * (v.range.min + v.range.max), 0, 'g', 6);
+    }
+  }
+  for (;;) {
+    bool ok = false;
+    text = QInputDialog::getText(this, "Iso-surfaces",
+                                 "VALUE[:r,g,b[:opacity]] separated by ';' (colors and opacity 0..1, up to 8; empty: none):",
+                                 QLineEdit::Normal, text, &ok);
+    if (!ok) return;
+    QString bad;
+    if (const auto surfaces = parseIsoSurfaces(text, &bad)) {
+      viewport_->setIsoSurfaces(*surfaces);
+      if (!surfaces->empty() && !viewport_->volumeShown()) volumeAction_->setChecked(true);
+      return;
+    }
+    QMessageBox::warning(this, "Iso-surfaces", QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
   }
 }
 

@@ -71,6 +71,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void notifyPanels();
   void buildVolumeMenu(QMenu* view);
   void setVolumeShown(bool on);
+  void chooseClipBox();
+  void chooseIsoSurfaces();
 
   PluginManager& plugins_;
   std::shared_ptr<ModelSession> session_;

@@ -111,6 +111,18 @@ void Viewport::setClipAxis(int axis) {
   update();
 }
 
+void Viewport::setClipBox(std::vector<ClipPlane> planes) {
+  clipBox_ = std::move(planes);
+  volumeDirty_ = true;
+  update();
+}
+
+void Viewport::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
+  isoSurfaces_ = std::move(surfaces);
+  volumeDirty_ = true;
+  update();
+}
+
 void Viewport::moveClipPlane(double distance) {
   if (!clip_) return;
   clip_->point += glm::normalize(clip_->normal) * distance;
@@ -131,7 +143,10 @@ void Viewport::uploadVolume() {
       uploadedLocation_ = view_->location;
     }
     volume_->setIntegrationMode(mode_);
-    volume_->setClipPlanes(clip_ ? std::vector<ClipPlane>{*clip_} : std::vector<ClipPlane>{});
+    std::vector<ClipPlane> planes = clipBox_;
+    if (clip_ && planes.size() < 6) planes.push_back(*clip_);
+    volume_->setClipPlanes(planes);
+    volume_->setIsoSurfaces(isoSurfaces_);
   }
   volume_->setTransferFunction(tf_);  // a TF edit alone ends here: tables only
   volumeDirty_ = tfDirty_ = false;
@@ -165,6 +180,8 @@ void Viewport::setSession(std::shared_ptr<const ModelSession> session) {
   view_.reset();
   volumeShown_ = false;
   clip_.reset();
+  clipBox_.clear();
+  isoSurfaces_.clear();
   uploadedModel_ = nullptr;
   withContext([&] { scene_.setSession(session_); });
   camera_.setView(StandardView::Isometric);

@@ -48,6 +48,12 @@ class Viewport : public QOpenGLWidget {
   /// One clip plane through the model center along `axis` (0, 1, 2), or none (-1).
   void setClipAxis(int axis);
   const std::optional<ClipPlane>& clipPlane() const { return clip_; }
+  /// A clip box (six planes, kept inside), with or without the dragged plane; empty: none.
+  void setClipBox(std::vector<ClipPlane> planes);
+  const std::vector<ClipPlane>& clipBox() const { return clipBox_; }
+  /// Iso-surfaces drawn with the volume (up to 8).
+  void setIsoSurfaces(std::vector<optics::IsoSurface> surfaces);
+  const std::vector<optics::IsoSurface>& isoSurfaces() const { return isoSurfaces_; }
   /// Moves the clip plane along its normal (model units); Ctrl+drag does the same.
   void moveClipPlane(double distance);
   VolumeStats volumeStats() const { return volume_ ? volume_->stats() : VolumeStats{}; }
@@ -92,6 +98,8 @@ class Viewport : public QOpenGLWidget {
   TransferFunction tf_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   std::optional<ClipPlane> clip_;
+  std::vector<ClipPlane> clipBox_;
+  std::vector<optics::IsoSurface> isoSurfaces_;
   const Model* uploadedModel_ = nullptr;  ///< the mesh the volume renderer holds
   FieldLocation uploadedLocation_ = FieldLocation::Node;
   QPoint lastMouse_;

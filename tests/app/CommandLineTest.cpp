@@ -172,3 +172,18 @@ TEST(ProbeCommand, PrintsTheBarStressAtAPointAndFlagsOutsidePoints) {
   EXPECT_NE(outside.output.find("outside the mesh"), std::string::npos);
   EXPECT_EQ(runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 1,2").exitCode, 2);
 }
+
+TEST(RenderCommand, ClipBoxKeepsTheInsideAndBadBoxesAreRefused) {
+  const std::string out = ::testing::TempDir() + "/boxed.png";
+  const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                            " --renderer reference --field S.mises --size 64x48 --clip-box 3,7,0,1,0,1 -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(QImage(QString::fromStdString(out)).isNull());
+  const auto bad = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S.mises --clip-box 7,3,0,1,0,1 -o " + out);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("min < max"), std::string::npos) << bad.output;
+  const auto many = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                               " --renderer reference --field S.mises --clip-box 3,7,0,1,0,1 --clip 5,0,0,1,0,0 -o " + out);
+  EXPECT_EQ(many.exitCode, 2);
+  EXPECT_NE(many.output.find("at most 6"), std::string::npos) << many.output;
+}

@@ -116,6 +116,17 @@ class MainWindowTest : public QObject {
     QVERIFY2(view->clipPlane()->point.x > before, "Ctrl+drag upward moves the plane along its normal");
     const auto clipped = summarize(view->grabFramebuffer());
     QVERIFY(clipped.second != volume.second);
+    // A clip box (View > Clip Plane > Clip Box) and iso-surfaces (View > Iso-surfaces).
+    view->setClipAxis(-1);
+    view->setClipBox({{{2.0, 0, 0}, {1, 0, 0}}, {{8.0, 0, 0}, {-1, 0, 0}}});
+    const auto boxed = summarize(view->grabFramebuffer());
+    QVERIFY(boxed.second != volume.second && boxed.first < volume.first);
+    view->setClipBox({});
+    view->setIsoSurfaces({{100.0, {1.0, 0.85, 0.2}, 1.0}});
+    const auto iso = summarize(view->grabFramebuffer());
+    QVERIFY(iso.second != volume.second);
+    view->setIsoSurfaces({});
+    view->setClipAxis(0);
     if (const char* shot = std::getenv("VOLPOST_VOLUME_SCREENSHOT")) window_->grab().save(shot);
     view->setClipAxis(-1);
     action->setChecked(false);

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+#include "VolumeSpecs.hpp"
+
+#include <QStringList>
+
+namespace volpost::app {
+namespace {
+
+std::optional<std::vector<double>> numbers(const QString& text, int count) {
+  const QStringList parts = text.split(',');
+  if (parts.size() != count) return std::nullopt;
+  std::vector<double> v;
+  for (const QString& p : parts) {
+    bool ok = false;
+    v.push_back(p.trimmed().toDouble(&ok));
+    if (!ok) return std::nullopt;
+  }
+  return v;
+}
+
+}  // namespace
+
+std::optional<ClipPlane> parseClipPlane(const QString& text) {
+  const auto v = numbers(text, 6);
+  if (!v) return std::nullopt;
+  const ClipPlane plane{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
+  if (plane.normal == glm::dvec3(0.0)) return std::nullopt;
+  return plane;
+}
+
+std::optional<std::vector<ClipPlane>> parseClipBox(const QString& text) {
+  const auto v = numbers(text, 6);
+  if (!v) return std::nullopt;
+  std::vector<ClipPlane> planes;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double lo = (*v)[std::size_t(2 * axis)], hi = (*v)[std::size_t(2 * axis + 1)];
+    if (!(hi > lo)) return std::nullopt;
+    glm::dvec3 point(0.0), normal(0.0);
+    point[axis] = lo;
+    normal[axis] = 1.0;
+    planes.push_back({point, normal});  // keeps x >= lo
+    point[axis] = hi;
+    normal[axis] = -1.0;
+    planes.push_back({point, normal});  // keeps x <= hi
+  }
+  return planes;
+}
+
+std::optional<optics::IsoSurface> parseIsoSurface(const QString& text) {
+  const QStringList parts = text.trimmed().split(':');
+  bool ok = false;
+  optics::IsoSurface iso{parts[0].toDouble(&ok), glm::dvec3(1.0), 1.0};
+  if (!ok || parts.size() > 3) return std::nullopt;
+  if (parts.size() >= 2) {
+    const auto rgb = numbers(parts[1], 3);
+    if (!rgb) return std::nullopt;
+    for (int k = 0; k < 3; ++k) {
+      iso.color[k] = (*rgb)[std::size_t(k)];
+      if (iso.color[k] < 0.0 || iso.color[k] > 1.0) return std::nullopt;
+    }
+  }
+  if (parts.size() == 3) {
+    iso.opacity = parts[2].toDouble(&ok);
+    if (!ok || iso.opacity < 0.0 || iso.opacity > 1.0) return std::nullopt;
+  }
+  return iso;
+}
+
+std::optional<std::vector<optics::IsoSurface>> parseIsoSurfaces(const QString& text, QString* badEntry) {
+  std::vector<optics::IsoSurface> out;
+  for (const QString& entry : text.split(';', Qt::SkipEmptyParts)) {
+    if (entry.trimmed().isEmpty()) continue;
+    const auto iso = parseIsoSurface(entry);
+    if (!iso || out.size() == 8) {
+      if (badEntry) *badEntry = entry.trimmed();
+      return std::nullopt;
+    }
+    out.push_back(*iso);
+  }
+  return out;
+}
+
+QString isoSurfacesText(const std::vector<optics::IsoSurface>& surfaces) {
+  QStringList parts;
+  for (const auto& s : surfaces)
+    parts << QString("%1:%2,%3,%4:%5").arg(s.value, 0, 'g', 8).arg(s.color.r).arg(s.color.g).arg(s.color.b).arg(s.opacity);
+  return parts.join("; ");
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// The written forms of clip planes, clip boxes and iso-surfaces, shared by the command
+// line (--clip, --clip-box, --iso) and the window's dialogs.
+#pragma once
+
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace volpost::app {
+
+/// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
+std::optional<ClipPlane> parseClipPlane(const QString& text);
+/// "xmin,xmax,ymin,ymax,zmin,zmax": the six planes that keep the inside of the box.
+std::optional<std::vector<ClipPlane>> parseClipBox(const QString& text);
+/// "VALUE[:r,g,b[:opacity]]", colors and opacity 0..1 (default opaque white).
+std::optional<optics::IsoSurface> parseIsoSurface(const QString& text);
+/// Several iso-surfaces separated by ';' (empty text: none). On a bad entry, nullopt and
+/// `badEntry` names it.
+std::optional<std::vector<optics::IsoSurface>> parseIsoSurfaces(const QString& text, QString* badEntry = nullptr);
+QString isoSurfacesText(const std::vector<optics::IsoSurface>& surfaces);
+
+}  // namespace volpost::app
