@@ -5,6 +5,7 @@
 #include "Legend.hpp"
 #include "SceneRenderer.hpp"
 
+#include <volpost/core/ClipCulling.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 
@@ -35,7 +36,10 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   HeadlessContext context;
   OffscreenTarget target(request.width, request.height);
   renderer.initialize();
-  renderer.setVolume(session.tetrahedra().mesh, view.location, session.tetValues(view));
+  // The GPU gets only what the clip planes can show (the picture is the same: the
+  // renderer cuts exactly at the planes).
+  const CulledMesh culled = cullToClipPlanes(session.tetrahedra().mesh, request.clipPlanes);
+  renderer.setVolume(culled.mesh, view.location, culled.values(view.location, session.tetValues(view)));
   renderer.setTransferFunction(tf);
   renderer.setClipPlanes(request.clipPlanes);
   renderer.setIsoSurfaces(request.isoSurfaces);

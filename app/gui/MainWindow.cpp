@@ -199,7 +199,10 @@ void MainWindow::chooseClipBox() {
     }
     if (const auto box = parseClipBox(text)) {
       viewport_->setClipBox(*box);
-      statusBar()->showMessage("Clip box set (volume rendering)");
+      viewport_->repaint();  // uploads now, so the message below is about this box
+      statusBar()->showMessage(QString("Clip box: the GPU holds %1 of the %2 tets")
+                                   .arg(viewport_->uploadedTetCount())
+                                   .arg(session_->tetrahedra().mesh.cellCount()));
       return;
     }
     QMessageBox::warning(this, "Clip box", QString("'%1' is not six numbers xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(text));

@@ -3,6 +3,8 @@
 
 #include "../core/GpuVolumeImage.hpp"
 
+#include <volpost/core/ClipCulling.hpp>
+
 #include <QMouseEvent>
 #include <QTimer>
 #include <QOpenGLContext>
@@ -135,13 +137,22 @@ void Viewport::uploadVolume() {
   if ((!volumeDirty_ && !tfDirty_) || !volume_ || !view_ || !session_) return;
   if (volumeDirty_) {
     const std::vector<double> values = session_->tetValues(*view_);  // on the conforming tetrahedra
-    if (uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location) {
-      volume_->setValues(values);  // same mesh: only the values travel
-    } else {
+    const bool sameGeometry = uploadedModel_ == &session_->model() && uploadedLocation_ == view_->location &&
+                              uploadedBox_ == clipBox_;
+    if (sameGeometry) {
+      volume_->setValues(culled_ ? culled_->values(view_->location, values) : values);  // only the values travel
+    } else if (clipBox_.empty()) {
+      culled_.reset();
       volume_->setVolume(session_->tetrahedra().mesh, view_->location, values);
-      uploadedModel_ = &session_->model();
-      uploadedLocation_ = view_->location;
+    } else {
+      // A clip box is a region of interest: the GPU holds only what it can show. (A
+      // dragged plane never rebuilds: the renderer cuts exactly at it.)
+      culled_ = cullToClipPlanes(session_->tetrahedra().mesh, clipBox_);
+      volume_->setVolume(culled_->mesh, view_->location, culled_->values(view_->location, values));
     }
+    uploadedModel_ = &session_->model();
+    uploadedLocation_ = view_->location;
+    uploadedBox_ = clipBox_;
     volume_->setIntegrationMode(mode_);
     std::vector<ClipPlane> planes = clipBox_;
     if (clip_ && planes.size() < 6) planes.push_back(*clip_);

@@ -7,6 +7,7 @@
 #include "../core/Legend.hpp"
 #include "../core/SceneRenderer.hpp"  // brings in epoxy before any Qt GL header
 
+#include <volpost/core/ClipCulling.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/OverlayRenderer.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
@@ -57,6 +58,8 @@ class Viewport : public QOpenGLWidget {
   /// Moves the clip plane along its normal (model units); Ctrl+drag does the same.
   void moveClipPlane(double distance);
   VolumeStats volumeStats() const { return volume_ ? volume_->stats() : VolumeStats{}; }
+  /// Tets on the GPU (fewer than the model's when a clip box culls them).
+  std::size_t uploadedTetCount() const { return volumeStats().tetrahedra; }
 
   void fit();
   void setStandardView(StandardView view);
@@ -99,6 +102,8 @@ class Viewport : public QOpenGLWidget {
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   std::optional<ClipPlane> clip_;
   std::vector<ClipPlane> clipBox_;
+  std::vector<ClipPlane> uploadedBox_;     ///< the box the uploaded (culled) mesh was made for
+  std::optional<CulledMesh> culled_;
   std::vector<optics::IsoSurface> isoSurfaces_;
   const Model* uploadedModel_ = nullptr;  ///< the mesh the volume renderer holds
   FieldLocation uploadedLocation_ = FieldLocation::Node;

@@ -121,6 +121,8 @@ class MainWindowTest : public QObject {
     view->setClipBox({{{2.0, 0, 0}, {1, 0, 0}}, {{8.0, 0, 0}, {-1, 0, 0}}});
     const auto boxed = summarize(view->grabFramebuffer());
     QVERIFY(boxed.second != volume.second && boxed.first < volume.first);
+    QVERIFY2(view->uploadedTetCount() < window_->session()->tetrahedra().mesh.cellCount() * 3 / 4,
+             "the GPU holds only the tets the box can show");
     view->setClipBox({});
     view->setIsoSurfaces({{100.0, {1.0, 0.85, 0.2}, 1.0}});
     const auto iso = summarize(view->grabFramebuffer());
