@@ -108,3 +108,27 @@ TEST(VisibilityOrder, ImageSpaceOrderIsRightWhereMpvoncIsWrongOnANonConvexMesh) 
   EXPECT_EQ(violations(sorter, exact, camera, 48), 0u);
   EXPECT_EQ(exact.cycleBreaks, 0u);
 }
+
+#include "../TestSupport.hpp"
+#include "VtuReader.hpp"
+
+#include <volpost/core/Tetrahedralize.hpp>
+
+TEST(VisibilityOrder, ImageSpaceOrderIsValidOnTheRealNonConvexWheel) {
+  // The wheel's holes and hub make rays leave and re-enter the mesh. Checked on every ray
+  // of the image the order was built for.
+  VOLPOST_SHARED_OR_SKIP(path, "wheel/tet4/wheel_tet4.vtu");
+  const auto model = meshio::VtuReader().read(path, {});
+  const TetMesh tets = tetrahedralize(model->mesh);
+  const VisibilitySorter sorter(tets.mesh);
+  Camera camera;
+  camera.fit(tets.mesh.bounds());
+  camera.setView(StandardView::Isometric);
+  camera.orbit(20.0, -10.0);
+  const VisibilityOrder exact = sorter.order(camera, OrderMethod::ImageSpace, 24, 24);
+  EXPECT_GT(exact.imageRelations, 0u);
+  EXPECT_EQ(violations(sorter, exact, camera, 24), 0u);
+  const VisibilityOrder mpvonc = sorter.order(camera, OrderMethod::Mpvonc);
+  std::printf("wheel tet4, 24x24 rays: MPVONC %zu wrong pairs, image-space %zu (cycle breaks %zu)\n",
+              violations(sorter, mpvonc, camera, 24), violations(sorter, exact, camera, 24), exact.cycleBreaks);
+}
