@@ -6,8 +6,10 @@
 #include "../core/TetGrid.hpp"
 #include "../meshio/ReaderSupport.hpp"
 
+#include "CellProjector.hpp"
 #include "RayCaster.hpp"
 
+#include <volpost/core/Quantity.hpp>
 #include <volpost/core/optics/ReferenceRenderer.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -36,10 +38,12 @@ class RayCast : public ::testing::Test {
     } catch (const std::exception& e) {
       GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
     }
-    caster_.initialize();
+    caster_ = makeRenderer();
+    caster_->initialize();
   }
+  virtual std::unique_ptr<volume::RayCaster> makeRenderer() const { return std::make_unique<volume::RayCaster>(); }
   void TearDown() override {
-    if (context_) caster_.release();
+    if (context_ && caster_) caster_->release();
   }
 
   std::vector<float> gpuImage(const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
@@ -54,9 +58,9 @@ class RayCast : public ::testing::Test {
     glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    caster_.render(ctx);
+    caster_->render(ctx);
     glFinish();
-    return caster_.readImage();
+    return caster_->readImage();
   }
 
   static ImageError compare(const std::vector<float>& gpu, const optics::ReferenceImage& ref) {
@@ -75,10 +79,10 @@ class RayCast : public ::testing::Test {
   ImageError againstReference(const Mesh& mesh, FieldLocation loc, const std::vector<double>& values,
                               const TransferFunction& tf, const Camera& camera, int size,
                               const std::vector<ClipPlane>& clips = {}) {
-    caster_.setVolume(mesh, loc, values);
-    caster_.setTransferFunction(tf);
-    caster_.setClipPlanes(clips);
-    caster_.setTerminationThreshold(0.0);
+    caster_->setVolume(mesh, loc, values);
+    caster_->setTransferFunction(tf);
+    caster_->setClipPlanes(clips);
+    caster_->setTerminationThreshold(0.0);
     const auto gpu = gpuImage(camera, size, size);
     const optics::TetVolume volume(mesh, loc, values);
     optics::RaySettings settings;
@@ -87,7 +91,16 @@ class RayCast : public ::testing::Test {
   }
 
   std::unique_ptr<HeadlessContext> context_;
-  volume::RayCaster caster_;
+  std::unique_ptr<volume::RayCaster> caster_;
+};
+
+// Cell projection: the same fixture, the tets drawn in visibility order instead of walked.
+class CellProjection : public RayCast {
+ protected:
+  std::unique_ptr<volume::RayCaster> makeRenderer() const override {
+    return std::make_unique<volume::CellProjector>(method);
+  }
+  volume::OrderMethod method = volume::OrderMethod::ImageSpace;
 };
 
 std::vector<double> field(const Mesh& m) {
@@ -111,7 +124,7 @@ Camera isoCamera(const Mesh& m) {
 
 TEST_F(RayCast, LinearSegmentsMatchTheReference) {
   const Mesh grid = test::tetGrid(4, 4, 4);
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast linear-segments vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-5);  // float32 and the 512^2 psi table are all that is left
@@ -120,18 +133,18 @@ TEST_F(RayCast, LinearSegmentsMatchTheReference) {
 
 TEST_F(RayCast, PreIntegratedAndSamplingAreBoundedToo) {
   const Mesh grid = test::tetGrid(4, 4, 4);
-  caster_.setIntegrationMode(IntegrationMode::LinearSegmentsIsoTable);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegmentsIsoTable);
   const ImageError iso = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast linear segments, iso-detection table 256^2 vs reference: RMSE %.3g, max %.3g\n", iso.rmse, iso.max);
   EXPECT_LE(iso.rmse, 2e-3);
   EXPECT_LE(iso.max, 1e-2);
-  caster_.setIntegrationMode(IntegrationMode::PreIntegrated);
+  caster_->setIntegrationMode(IntegrationMode::PreIntegrated);
   const ImageError pre = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast pre-integrated 64^3 vs reference: RMSE %.3g, max %.3g\n", pre.rmse, pre.max);
   EXPECT_LE(pre.rmse, 2e-2);
   EXPECT_LE(pre.max, 0.1);
-  caster_.setIntegrationMode(IntegrationMode::Sampling);
-  caster_.setSamplingStep(0.05);
+  caster_->setIntegrationMode(IntegrationMode::Sampling);
+  caster_->setSamplingStep(0.05);
   const ImageError sampled = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast sampling step 0.05 vs reference: RMSE %.3g, max %.3g\n", sampled.rmse, sampled.max);
   EXPECT_LE(sampled.rmse, 1e-2);
@@ -143,10 +156,10 @@ TEST_F(RayCast, NoPixelIsLostOnAxisAlignedViewsOfATetrahedralizedGrid) {
   // centre ray along a column of grid edges.
   const Mesh grid = test::tetGrid(4, 4, 4);
   const double tau = 0.3;
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
-  caster_.setVolume(grid, FieldLocation::Node, std::vector<double>(grid.nodeCount(), 1.0));
-  caster_.setTransferFunction(TransferFunction({{0.0, {1, 1, 1}, tau}, {2.0, {1, 1, 1}, tau}}));
-  caster_.setTerminationThreshold(0.0);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setVolume(grid, FieldLocation::Node, std::vector<double>(grid.nodeCount(), 1.0));
+  caster_->setTransferFunction(TransferFunction({{0.0, {1, 1, 1}, tau}, {2.0, {1, 1, 1}, tau}}));
+  caster_->setTerminationThreshold(0.0);
   for (StandardView view : {StandardView::PlusZ, StandardView::MinusZ, StandardView::PlusX, StandardView::MinusX, StandardView::PlusY, StandardView::MinusY}) {
     for (int size : {33, 65}) {
       Camera camera;
@@ -180,7 +193,7 @@ TEST_F(RayCast, NoPixelIsLostOnAxisAlignedViewsOfATetrahedralizedGrid) {
 
 TEST_F(RayCast, ClipPlanesCutLikeTheReference) {
   const Mesh grid = test::tetGrid(4, 4, 4);
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const std::vector<ClipPlane> clips = {{{0, 0, 1.3}, {0, 0.2, 1}}, {{2.5, 0, 0}, {-1, 0, 0}}};
   const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64, clips);
   std::printf("raycast with 2 clip planes vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
@@ -192,7 +205,7 @@ TEST_F(RayCast, ElementResultsAreConstantPerCell) {
   const Mesh grid = test::tetGrid(3, 3, 3);
   std::vector<double> cells(grid.cellCount());
   for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = double(c % 7);
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(grid, FieldLocation::Cell, cells, kTf, isoCamera(grid), 48);
   std::printf("raycast element results vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-5);
@@ -207,7 +220,7 @@ TEST_F(RayCast, FarFromOriginTinyMeshRendersLikeTheReference) {
   for (const auto& p : grid.nodes) values.push_back((p.x - offset.x) / cell + 0.5 * (p.z - offset.z) / cell);
   std::vector<ControlPoint> scaled = kTf.points();
   for (auto& p : scaled) p.extinction /= cell;
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(grid, FieldLocation::Node, values, TransferFunction(scaled), isoCamera(grid), 48);
   std::printf("raycast mesh at 1e6 with 1e-3 cells vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-5);
@@ -216,15 +229,15 @@ TEST_F(RayCast, FarFromOriginTinyMeshRendersLikeTheReference) {
 
 TEST_F(RayCast, TransferFunctionEditsDoNotTouchTheMesh) {
   const Mesh grid = test::tetGrid(4, 4, 4);
-  caster_.setVolume(grid, FieldLocation::Node, field(grid));
-  const std::size_t before = caster_.stats().meshBytes;
-  caster_.setTransferFunction(kTf);
-  EXPECT_EQ(caster_.stats().meshBytes, before);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  const std::size_t before = caster_->stats().meshBytes;
+  caster_->setTransferFunction(kTf);
+  EXPECT_EQ(caster_->stats().meshBytes, before);
   // 32 B per tet (vertex ids, neighbours) + 16 B per node + the boundary BVH; this small
   // grid has many boundary faces per tet (the bench reports ~35 B/tet on real meshes).
   EXPECT_LT(double(before) / double(grid.cellCount()), 56.0);
-  EXPECT_GT(caster_.stats().lastTransferFunctionMs, 0.0);
-  EXPECT_EQ(caster_.stats().tetrahedra, grid.cellCount());
+  EXPECT_GT(caster_->stats().lastTransferFunctionMs, 0.0);
+  EXPECT_EQ(caster_->stats().tetrahedra, grid.cellCount());
 }
 
 TEST_F(RayCast, AsynchronousPreIntegrationCatchesUpWithTheLatestFunction) {
@@ -232,27 +245,27 @@ TEST_F(RayCast, AsynchronousPreIntegrationCatchesUpWithTheLatestFunction) {
   // previous one, rapid changes coalesce; once it is in, the picture is the synchronous one.
   const Mesh grid = test::tetGrid(4, 4, 4);
   const Camera camera = isoCamera(grid);
-  caster_.setVolume(grid, FieldLocation::Node, field(grid));
-  caster_.setIntegrationMode(IntegrationMode::PreIntegrated);
-  caster_.setTerminationThreshold(0.0);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setIntegrationMode(IntegrationMode::PreIntegrated);
+  caster_->setTerminationThreshold(0.0);
   TransferFunction other = kTf;
   std::vector<ControlPoint> points = kTf.points();
   for (auto& p : points) p.extinction *= 3.0;
   other = TransferFunction(points);
-  caster_.setTransferFunction(other);
+  caster_->setTransferFunction(other);
   const std::vector<float> synchronous = gpuImage(camera, 48, 48);
-  caster_.setTransferFunction(kTf);
-  caster_.setAsynchronousUpdates(true);
-  for (int i = 0; i < 5; ++i) caster_.setTransferFunction(i % 2 ? kTf : other);  // a drag: ends on `other`
-  EXPECT_TRUE(caster_.hasPendingWork());
+  caster_->setTransferFunction(kTf);
+  caster_->setAsynchronousUpdates(true);
+  for (int i = 0; i < 5; ++i) caster_->setTransferFunction(i % 2 ? kTf : other);  // a drag: ends on `other`
+  EXPECT_TRUE(caster_->hasPendingWork());
   (void)gpuImage(camera, 48, 48);  // does not wait
-  for (int i = 0; i < 2000 && caster_.hasPendingWork(); ++i) {
+  for (int i = 0; i < 2000 && caster_->hasPendingWork(); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
     (void)gpuImage(camera, 48, 48);
   }
-  ASSERT_FALSE(caster_.hasPendingWork());
+  ASSERT_FALSE(caster_->hasPendingWork());
   EXPECT_EQ(gpuImage(camera, 48, 48), synchronous);
-  EXPECT_GT(caster_.stats().lastTransferFunctionMs, 0.0);
+  EXPECT_GT(caster_->stats().lastTransferFunctionMs, 0.0);
 }
 
 TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
@@ -267,7 +280,7 @@ TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
       m.addCell(CellType::Tet4, t);
     }
   }
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(m, FieldLocation::Node, field(m), kTf, isoCamera(m), 48);
   std::printf("raycast non-convex (3 slabs) vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 2e-3);
@@ -278,13 +291,13 @@ TEST_F(RayCast, ANewResultUploadsOnlyValues) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   std::vector<double> other;
   for (const auto& p : grid.nodes) other.push_back(4.0 - p.y + 0.3 * p.x);
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
-  caster_.setTerminationThreshold(0.0);
-  caster_.setTransferFunction(kTf);
-  caster_.setVolume(grid, FieldLocation::Node, field(grid));
-  caster_.setValues(other);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setTerminationThreshold(0.0);
+  caster_->setTransferFunction(kTf);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setValues(other);
   const auto updated = gpuImage(isoCamera(grid), 40, 40);
-  caster_.setVolume(grid, FieldLocation::Node, other);
+  caster_->setVolume(grid, FieldLocation::Node, other);
   const auto rebuilt = gpuImage(isoCamera(grid), 40, 40);
   EXPECT_EQ(updated, rebuilt);
   volume::TetMeshGpu gpu = volume::buildTetMeshGpu(grid, FieldLocation::Node, field(grid));
@@ -299,11 +312,11 @@ TEST_F(RayCast, ANewResultUploadsOnlyValues) {
 TEST_F(RayCast, IsoSurfacesMatchTheReference) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   const std::vector<optics::IsoSurface> isos = {{1.7, {0.9, 0.8, 0.1}, 0.6}, {3.9, {0.1, 0.7, 0.9}, 1.0}};
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
-  caster_.setIsoSurfaces(isos);
-  caster_.setVolume(grid, FieldLocation::Node, field(grid));
-  caster_.setTransferFunction(kTf);
-  caster_.setTerminationThreshold(0.0);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIsoSurfaces(isos);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setTerminationThreshold(0.0);
   const Camera camera = isoCamera(grid);
   const auto gpu = gpuImage(camera, 64, 64);
   const optics::TetVolume volume(grid, FieldLocation::Node, field(grid));
@@ -322,10 +335,10 @@ TEST_F(RayCast, OpaqueGeometryEndsRaysAtItsDepth) {
   Camera camera = isoCamera(grid);
   camera.setProjection(Camera::Projection::Orthographic);
   const float depth = 0.5f;
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
-  caster_.setVolume(grid, FieldLocation::Node, field(grid));
-  caster_.setTransferFunction(kTf);
-  caster_.setTerminationThreshold(0.0);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setTerminationThreshold(0.0);
   const auto gpu = gpuImage(camera, 64, 64, depth);
   const glm::dvec4 p = glm::inverse(camera.projectionMatrix(1.0) * camera.viewMatrix()) * glm::dvec4(0, 0, 2.0 * depth - 1.0, 1.0);
   optics::RaySettings settings;
@@ -349,8 +362,53 @@ TEST_F(RayCast, NoRayIsLostOnTheRealWheel) {
   Camera camera;
   camera.setView(StandardView::Isometric);
   camera.fit(model->mesh.bounds());
-  caster_.setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(model->mesh, FieldLocation::Node, values, tf, camera, 256);
   std::printf("raycast real wheel 256 px vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.max, 1e-3);
+}
+
+TEST_F(CellProjection, ConvexGridMatchesTheReferenceInEveryMode) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  const ImageError linear = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
+  std::printf("vicp linear-segments vs reference: RMSE %.3g, max %.3g\n", linear.rmse, linear.max);
+  EXPECT_LE(linear.rmse, 1e-5);
+  EXPECT_LE(linear.max, 1e-4);
+  caster_->setIntegrationMode(IntegrationMode::PreIntegrated);
+  const ImageError pre = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
+  std::printf("vicp pre-integrated vs reference: RMSE %.3g, max %.3g\n", pre.rmse, pre.max);
+  EXPECT_LE(pre.rmse, 2e-2);
+  EXPECT_LE(pre.max, 0.1);
+  const auto* projector = dynamic_cast<const volume::CellProjector*>(caster_.get());
+  ASSERT_TRUE(projector);
+  EXPECT_EQ(projector->lastOrder().backToFront.size(), grid.cellCount());
+  EXPECT_GT(caster_->stats().lastSortMs, 0.0);
+}
+
+TEST_F(CellProjection, ClipPlanesCutLikeTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const ImageError clipped = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64,
+                                              {{{2.2, 0, 0}, {-1, 0.2, 0}}});
+  std::printf("vicp clipped vs reference: RMSE %.3g, max %.3g\n", clipped.rmse, clipped.max);
+  EXPECT_LE(clipped.rmse, 1e-5);
+  EXPECT_LE(clipped.max, 2e-4);
+}
+
+TEST_F(CellProjection, NonConvexRealWheelWithTheImageSpaceOrder) {
+  VOLPOST_SHARED_OR_SKIP(path, "wheel/tet4/wheel_tet4.vtu");
+  const auto model = test::meshioReaders().load(path);
+  const Field& s = *model->findField("S");
+  const auto mises = evaluate(s, *parseQuantity("S.mises", s), 0);
+  const double lo = *std::min_element(mises.begin(), mises.end()), hi = *std::max_element(mises.begin(), mises.end());
+  const double tau = 8.0 / model->mesh.bounds().diagonal();
+  const TransferFunction tf({{lo, {0, 0, 1}, 0.2 * tau}, {0.5 * (lo + hi), {1, 1, 1}, tau}, {hi, {1, 0, 0}, 3 * tau}});
+  Camera camera;
+  camera.fit(model->mesh.bounds());
+  camera.setView(StandardView::Isometric);
+  camera.orbit(20.0, -10.0);
+  const ImageError e = againstReference(model->mesh, FieldLocation::Node, mises, tf, camera, 64);
+  std::printf("vicp (image-space order) real wheel 64 px vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-4);
+  EXPECT_LE(e.max, 5e-3);
 }

@@ -221,11 +221,29 @@ void RayCaster::ensureImage(int width, int height) {
 
 void RayCaster::render(const RenderContext& ctx) {
   if (!initialized_ || gpu_.tets.empty() || ctx.width <= 0 || ctx.height <= 0) return;
+  prepareFrame(ctx);
+  const GLuint p = program_.id();
+  glUseProgram(p);
+  setSegmentUniforms(p, ctx);
+  glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), int(std::min<std::size_t>(gpu_.tets.size() + 16, 1u << 20)));
+  bindSegmentResources(ctx);
+  glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindTextureUnit(3, 0);  // the depth texture may be attached to the target: no feedback
+  compositeOver(ctx);
+  gl::check("RayCaster::render");
+}
+
+void RayCaster::prepareFrame(const RenderContext& ctx) {
   // A table finished since the last frame goes up now; with none uploaded yet, wait.
   collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
   ensureImage(ctx.width, ctx.height);
-  const GLuint p = program_.id();
-  glUseProgram(p);
+}
+
+// The uniforms of common/tet_segment.glsl: camera, mode, tables' range, clip planes,
+// iso-surfaces, scene depth. Shared by every program that integrates tet segments.
+void RayCaster::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   const glm::dmat4 vp = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpu_.origin);
   const glm::mat4 inv(glm::inverse(vp));
   const glm::vec3 eye(ctx.camera.eye() - gpu_.origin);
@@ -245,7 +263,6 @@ void RayCaster::render(const RenderContext& ctx) {
   glProgramUniform1f(p, u("sLo"), float(tableLo_));
   glProgramUniform1f(p, u("sHi"), float(tableHi_));
   glProgramUniform1f(p, u("preMaxLength"), float(preMaxLength_));
-  glProgramUniform1i(p, u("maxSteps"), int(std::min<std::size_t>(gpu_.tets.size() + 16, 1u << 20)));
   std::vector<glm::vec4> planes;
   for (const ClipPlane& c : clipPlanes_) {
     const glm::dvec3 n = glm::normalize(c.normal);
@@ -266,21 +283,22 @@ void RayCaster::render(const RenderContext& ctx) {
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
   glProgramUniform1i(p, u("sceneDepth"), 3);
-  glBindTextureUnit(3, ctx.depthTexture);
   glProgramUniform1i(p, u("psiTable"), 0);
   glProgramUniform1i(p, u("isoTable"), 1);
   glProgramUniform1i(p, u("preTable"), 2);
+}
+
+void RayCaster::bindSegmentResources(const RenderContext& ctx) const {
+  glBindTextureUnit(3, ctx.depthTexture);
   glBindTextureUnit(0, psiTable_.id());
   glBindTextureUnit(1, isoTable_.id());
   glBindTextureUnit(2, preTable_ ? preTable_.id() : 0);
   const gl::Buffer* buffers[] = {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_};
   for (GLuint i = 0; i < 8; ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, i, buffers[i]->id());
-  glBindImageTexture(0, image_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-  glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glBindTextureUnit(3, 0);  // the depth texture may be attached to the target: no feedback
+}
 
-  // Composite the premultiplied image over what the target already holds.
+// Composites the premultiplied float image over what the target already holds.
+void RayCaster::compositeOver(const RenderContext& ctx) const {
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
   glViewport(0, 0, ctx.width, ctx.height);
   glUseProgram(compositeProgram_.id());
@@ -294,7 +312,6 @@ void RayCaster::render(const RenderContext& ctx) {
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   glUseProgram(0);
-  gl::check("RayCaster::render");
 }
 
 VolumeStats RayCaster::stats() const {

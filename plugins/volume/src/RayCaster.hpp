@@ -36,6 +36,16 @@ class RayCaster : public VolumeRenderer {
   /// Texture sizes (set before the first TF): psi table N^2, iso table N^2, pre-integration N^3.
   int psiResolution = 512, isoResolution = 256, preResolution = 64;
 
+ protected:
+  // For renderers that integrate the same segments another way (cell projection).
+  void prepareFrame(const RenderContext& ctx);
+  void setSegmentUniforms(GLuint program, const RenderContext& ctx) const;
+  void bindSegmentResources(const RenderContext& ctx) const;
+  void compositeOver(const RenderContext& ctx) const;
+  bool ready() const { return initialized_ && !gpu_.tets.empty(); }
+  const TetMeshGpu& gpuMesh() const { return gpu_; }
+  const gl::Texture& image() const { return image_; }
+
  private:
   void uploadMesh();
   void rebuildTables();

@@ -2,6 +2,7 @@
 // The volume plugin: hands the host its GPU volume renderers.
 #pragma once
 
+#include "CellProjector.hpp"
 #include "RayCaster.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
@@ -16,9 +17,13 @@ class VolumePlugin : public QObject, public RendererPlugin {
   Q_INTERFACES(volpost::RendererPlugin)
 
  public:
-  QStringList rendererNames() const override { return {"raycast"}; }
+  /// raycast; vicp: cell projection sorted by MPVONC (fast); vicp-exact: cell projection
+  /// sorted in image space (valid on every pixel ray of non-convex meshes).
+  QStringList rendererNames() const override { return {"raycast", "vicp", "vicp-exact"}; }
   std::unique_ptr<Renderer> createRenderer(const QString& name) const override {
     if (name == "raycast") return std::make_unique<RayCaster>();
+    if (name == "vicp") return std::make_unique<CellProjector>(OrderMethod::Mpvonc);
+    if (name == "vicp-exact") return std::make_unique<CellProjector>(OrderMethod::ImageSpace);
     return nullptr;
   }
 };

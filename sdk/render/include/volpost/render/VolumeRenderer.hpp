@@ -31,6 +31,7 @@ struct VolumeStats {
   std::size_t meshBytes = 0;       ///< of which the mesh structure (per-tet, per-node, BVH)
   std::size_t tetrahedra = 0;
   double lastTransferFunctionMs = 0.0;  ///< CPU+upload time of the last TF change
+  double lastSortMs = 0.0;              ///< cell projection: the last frame's visibility sort
 };
 
 class VolumeRenderer : public Renderer {

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+#include "CellProjector.hpp"
+
+#include <volpost/render/ShaderLibrary.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+
+namespace volpost::volume {
+
+void CellProjector::initialize() {
+  RayCaster::initialize();
+  projectionProgram_ = gl::buildProgram({"vicp.vert", "vicp.frag"});
+  order_ = gl::createBuffer();
+  framebuffer_ = gl::createFramebuffer();
+  attachedImage_ = 0;
+  gl::check("CellProjector::initialize");
+}
+
+void CellProjector::release() {
+  projectionProgram_.reset();
+  order_.reset();
+  framebuffer_.reset();
+  attachedImage_ = 0;
+  RayCaster::release();
+}
+
+void CellProjector::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+  RayCaster::setVolume(mesh, location, values);
+  // The sort sees exactly the tets the GPU holds, in the GPU's numbering.
+  const TetMeshGpu& g = gpuMesh();
+  sortMesh_ = Mesh();
+  sortMesh_.nodes.reserve(g.nodes.size());
+  for (const glm::vec4& n : g.nodes) sortMesh_.nodes.push_back(glm::dvec3(n) + g.origin);
+  sortMesh_.reserveCells(g.tets.size(), g.tets.size() * 4);
+  for (const glm::uvec4& t : g.tets) {
+    const std::array<NodeIndex, 4> v = {t.x, t.y, t.z, t.w};
+    sortMesh_.addCell(CellType::Tet4, v);
+  }
+  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_);
+}
+
+void CellProjector::render(const RenderContext& ctx) {
+  if (!ready() || !sorter_ || ctx.width <= 0 || ctx.height <= 0) return;
+  prepareFrame(ctx);
+  lastOrder_ = sorter_->order(ctx.camera, method_, ctx.width, ctx.height);
+  // Only the order travels per frame: 4 bytes per tet.
+  glNamedBufferData(order_.id(), GLsizeiptr(std::max<std::size_t>(lastOrder_.backToFront.size() * 4, 16)),
+                    lastOrder_.backToFront.data(), GL_STREAM_DRAW);
+  if (attachedImage_ != image().id()) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, image().id(), 0);
+    attachedImage_ = image().id();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, ctx.width, ctx.height);
+  const float clear[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
+
+  const GLuint p = projectionProgram_.id();
+  glUseProgram(p);
+  setSegmentUniforms(p, ctx);
+  // Drawn upside down so that the image's first row is the top, as the ray caster's.
+  const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
+  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpuMesh().origin));
+  glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
+  bindSegmentResources(ctx);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, order_.id());
+  glBindVertexArray(0);
+  GLuint vao = 0;  // core profile: a draw needs a bound vertex array, even an empty one
+  glCreateVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 12));
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+  glDeleteVertexArrays(1, &vao);
+  glBindTextureUnit(3, 0);
+  compositeOver(ctx);
+  gl::check("CellProjector::render");
+}
+
+VolumeStats CellProjector::stats() const {
+  VolumeStats s = RayCaster::stats();
+  s.gpuBytes += lastOrder_.backToFront.size() * 4;
+  s.meshBytes += sortMesh_.cellCount() * 4;  // the sorted index list
+  s.lastSortMs = lastOrder_.milliseconds;
+  return s;
+}
+
+}  // namespace volpost::volume
