@@ -5,6 +5,7 @@
 // reference renderer (same camera, same transfer function). Prints a Markdown table and
 // writes a CSV for the speed-versus-error plot.
 //   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick]
+#include "CellProjector.hpp"
 #include "RayCaster.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -23,6 +24,7 @@
 #include <cstring>
 #include <filesystem>
 #include <thread>
+#include <tuple>
 
 using namespace volpost;
 using Clock = std::chrono::steady_clock;
@@ -120,8 +122,8 @@ int main(int argc, char** argv) {
   HeadlessContext context;
   std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
               "premultiplied RGBA in 0..1\n\n", gl::describeContext().c_str(), size, size, frames);
-  std::printf("| mesh | tets | renderer / mode | ms/frame min / median / max | tets/s | TF update ms | GPU MB (mesh B/tet) | RMSE | max error |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| mesh | tets | renderer / mode | ms/frame min / median / max | sort ms | tets/s | TF update ms | GPU MB (mesh B/tet) | RMSE | max error |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
   FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
   if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
   OffscreenTarget target(size, size);
@@ -135,25 +137,33 @@ int main(int argc, char** argv) {
     const optics::TetVolume volume(c.mesh, c.location, c.values);
     const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
     const double refMs = msSince(refStart);
-    std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
+    std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | - | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
                 volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
-    volume::RayCaster caster;
-    caster.initialize();
-    caster.setVolume(c.mesh, c.location, c.values);
-    caster.setTerminationThreshold(0.0);  // compare like with like
-    for (IntegrationMode mode : {IntegrationMode::LinearSegments, IntegrationMode::LinearSegmentsIsoTable,
-                                 IntegrationMode::PreIntegrated, IntegrationMode::Sampling}) {
-      caster.setIntegrationMode(mode);
+    // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the
+    // exact and pre-integrated modes, with its sort time per frame.
+    volume::RayCaster raycaster;
+    volume::CellProjector vicp(volume::OrderMethod::Mpvonc), vicpExact(volume::OrderMethod::ImageSpace);
+    const std::vector<IntegrationMode> allModes = {IntegrationMode::LinearSegments, IntegrationMode::LinearSegmentsIsoTable,
+                                                   IntegrationMode::PreIntegrated, IntegrationMode::Sampling};
+    const std::vector<IntegrationMode> projectionModes = {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated};
+    for (auto [caster, label, modes] : {std::tuple<volume::RayCaster*, const char*, const std::vector<IntegrationMode>*>{&raycaster, "raycast", &allModes},
+                                        {&vicp, "vicp (MPVONC)", &projectionModes},
+                                        {&vicpExact, "vicp (image-space order)", &projectionModes}}) {
+    caster->initialize();
+    caster->setVolume(c.mesh, c.location, c.values);
+    caster->setTerminationThreshold(0.0);  // compare like with like
+    for (IntegrationMode mode : *modes) {
+      caster->setIntegrationMode(mode);
       const auto tfStart = Clock::now();
-      caster.setTransferFunction(tf);
+      caster->setTransferFunction(tf);
       RenderContext ctx;
       ctx.width = ctx.height = size;
       ctx.framebuffer = target.framebuffer();
       ctx.camera = camera;
-      caster.render(ctx);
+      caster->render(ctx);
       glFinish();
       const double tfMs = msSince(tfStart);  // TF change to the new frame
-      const auto image = caster.readImage();
+      const auto image = caster->readImage();
       double sum = 0.0, worst = 0.0;
       std::size_t bad = 0, worstPixel = 0;
       for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
@@ -167,30 +177,36 @@ int main(int argc, char** argv) {
         if (pixelError > worst) worst = pixelError, worstPixel = i;
       }
       // Pixels far from the reference (a lost ray would show here), for the record.
-      if (bad) std::fprintf(stderr, "%s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(),
+      if (bad) std::fprintf(stderr, "%s %s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(), label,
                             toString(mode), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
       const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
-      std::vector<double> times;
+      std::vector<double> times, sorts;
       Camera orbit = camera;
       for (int f = 0; f < frames; ++f) {
         ctx.camera = orbit;
         const auto t0 = Clock::now();
-        caster.render(ctx);
+        caster->render(ctx);
         glFinish();
         times.push_back(msSince(t0));
+        sorts.push_back(caster->stats().lastSortMs);
         orbit.orbit(360.0 / frames, 0.0);
       }
       std::sort(times.begin(), times.end());
+      std::sort(sorts.begin(), sorts.end());
       const double median = times[times.size() / 2];
-      const VolumeStats st = caster.stats();
-      std::printf("| %s | %zu | raycast / %s | %.0f / %.0f / %.0f | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
-                  c.name.c_str(), st.tetrahedra, toString(mode), times.front(), median, times.back(),
+      const VolumeStats st = caster->stats();
+      const std::string sortMs = caster == &raycaster ? "-" : std::to_string(int(std::lround(sorts[sorts.size() / 2])));
+      std::printf("| %s | %zu | %s / %s | %.0f / %.0f / %.0f | %s | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
+                  c.name.c_str(), st.tetrahedra, label, toString(mode), times.front(), median, times.back(), sortMs.c_str(),
                   double(st.tetrahedra) / (median / 1e3), tfMs, st.gpuBytes / 1048576.0,
                   double(st.meshBytes) / double(st.tetrahedra), rmse, worst);
       std::fflush(stdout);
-      if (csv) std::fprintf(csv, "%s,%s,%.3f,%.6g,%.6g\n", c.name.c_str(), toString(mode), median, rmse, worst);
+      if (csv)
+        std::fprintf(csv, "%s,%s%s,%.3f,%.6g,%.6g\n", c.name.c_str(), caster == &raycaster ? "" : (caster == &vicp ? "vicp " : "vicp-exact "),
+                     toString(mode), median, rmse, worst);
     }
-    caster.release();
+    caster->release();
+    }
   }
   if (csv) std::fclose(csv);
   return 0;

@@ -12,7 +12,9 @@ import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).resolve().parent.parent
 rows = list(csv.DictReader(open(here / "volume_speed_error.csv")))
-markers = {"linear-segments": "o", "linear-segments-iso-table": "s", "pre-integrated": "^", "sampling": "x"}
+markers = {"linear-segments": "o", "linear-segments-iso-table": "s", "pre-integrated": "^", "sampling": "x",
+           "vicp linear-segments": "D", "vicp pre-integrated": "v",
+           "vicp-exact linear-segments": "P", "vicp-exact pre-integrated": "*"}
 fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
 for mesh in dict.fromkeys(r["mesh"] for r in rows):
     color = None
@@ -26,7 +28,7 @@ for mode, m in markers.items():
     ax.plot([], [], m, color="gray", label=mode)
 ax.set_xlabel("median ms per frame (512 x 512, llvmpipe)")
 ax.set_ylabel("RMSE against the exact reference")
-ax.set_title("GPU ray casting: speed against error")
+ax.set_title("GPU ray casting and cell projection (vicp): speed against error")
 ax.grid(True, which="both", alpha=0.3)
 ax.legend(fontsize=7, ncol=2)
 fig.tight_layout()
