@@ -7,6 +7,7 @@
 #include "Viewport.hpp"
 
 #include <volpost/core/Version.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
 
 #include <QAction>
 #include <QActionGroup>
@@ -131,18 +132,45 @@ void MainWindow::buildActions() {
   });
 }
 
-void MainWindow::buildVolumeMenu(QMenu* view) {
-  // The first GPU volume renderer the plugins offer.
+std::unique_ptr<VolumeRenderer> MainWindow::createVolumeRenderer(const QString& name) const {
   for (RendererPlugin* plugin : plugins_.rendererPlugins())
-    for (const QString& name : plugin->rendererNames()) {
-      if (viewport_->hasVolumeRenderer()) break;
+    if (plugin->rendererNames().contains(name)) {
       std::unique_ptr<Renderer> r = plugin->createRenderer(name);
       if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
         r.release();
-        viewport_->setVolumeRenderer(std::unique_ptr<VolumeRenderer>(v));
+        return std::unique_ptr<VolumeRenderer>(v);
       }
     }
+  return nullptr;
+}
+
+void MainWindow::buildVolumeMenu(QMenu* view) {
+  // Every GPU volume renderer the plugins offer; the first one is used until another is chosen.
+  QStringList names;
+  for (RendererPlugin* plugin : plugins_.rendererPlugins()) names << plugin->rendererNames();
   view->addSeparator();
+  QMenu* renderers = view->addMenu("Volume &Renderer");
+  auto* rendererGroup = new QActionGroup(this);
+  const std::map<QString, QString> labels = {{"raycast", "Ray casting"},
+                                             {"vicp", "Cell projection (MPVONC order)"},
+                                             {"vicp-exact", "Cell projection (exact image-space order)"}};
+  for (const QString& name : names) {
+    auto renderer = createVolumeRenderer(name);
+    if (!renderer) continue;
+    const auto label = labels.find(name);
+    QAction* a = renderers->addAction(label != labels.end() ? label->second : name);
+    a->setObjectName("renderer:" + name);
+    a->setCheckable(true);
+    rendererGroup->addAction(a);
+    if (!viewport_->hasVolumeRenderer()) {
+      viewport_->setVolumeRenderer(std::move(renderer));
+      a->setChecked(true);
+    }
+    connect(a, &QAction::triggered, this, [this, name] {
+      viewport_->setVolumeRenderer(createVolumeRenderer(name));
+      statusBar()->showMessage("Volume renderer: " + name);
+    });
+  }
   volumeAction_ = view->addAction("&Volume Rendering");
   volumeAction_->setObjectName("volumeAction");
   volumeAction_->setCheckable(true);

@@ -20,6 +20,10 @@ class QTextBrowser;
 class QAction;
 class QMenu;
 
+namespace volpost {
+class VolumeRenderer;
+}
+
 namespace volpost::app {
 
 class Viewport;
@@ -70,6 +74,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void showModelInfo();
   void notifyPanels();
   void buildVolumeMenu(QMenu* view);
+  std::unique_ptr<VolumeRenderer> createVolumeRenderer(const QString& name) const;
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();

@@ -68,12 +68,17 @@ void Viewport::cleanupGL() {
 }
 
 void Viewport::setVolumeRenderer(std::unique_ptr<VolumeRenderer> renderer) {
+  if (volume_ && volumeInitialized_) withContext([&] { volume_->release(); });  // GL objects die with their context current
+  volumeInitialized_ = false;
   volume_ = std::move(renderer);
+  uploadedModel_ = nullptr;  // the new renderer holds no mesh yet
+  volumeDirty_ = true;
   if (volume_) volume_->setAsynchronousUpdates(true);  // TF drags never block the window
   if (volume_ && scene_.initialized()) {
     withContext([&] { volume_->initialize(); });
     volumeInitialized_ = true;
   }
+  update();
 }
 
 void Viewport::showVolume(const TransferFunction& tf) {

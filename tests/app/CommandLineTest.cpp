@@ -111,9 +111,25 @@ TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
   const auto badMode = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer raycast --mode fast --field S11 -o " + png);
   EXPECT_EQ(badMode.exitCode, 2);
   EXPECT_NE(badMode.output.find("--mode fast"), std::string::npos) << badMode.output;
-  const auto unknown = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer vicp --field S11 -o " + png);
+  const auto unknown = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer splatting --field S11 -o " + png);
   EXPECT_EQ(unknown.exitCode, 2);
-  EXPECT_NE(unknown.output.find("raycast"), std::string::npos) << "lists the renderers there are: " << unknown.output;
+  EXPECT_NE(unknown.output.find("raycast, vicp, vicp-exact"), std::string::npos) << "lists the renderers there are: " << unknown.output;
+}
+
+TEST(RenderCommand, CellProjectionFromThePluginRendersHeadless) {
+  const std::string png = (std::filesystem::temp_directory_path() / "volpost_vicp.png").string();
+  std::filesystem::remove(png);
+  for (const char* renderer : {"vicp", "vicp-exact"}) {
+    const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer " + renderer +
+                              " --field S.mises --size 80x60 --clip 5,0,0,1,0,0 -o " + png);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const QImage image(QString::fromStdString(png));
+    ASSERT_EQ(image.size(), QSize(80, 60));
+    int tinted = 0;
+    for (int y = 0; y < 60; ++y)
+      for (int x = 0; x < 80; ++x) tinted += std::abs(qRed(image.pixel(x, y)) - qBlue(image.pixel(x, y))) > 8;
+    EXPECT_GT(tinted, 30) << renderer;
+  }
 }
 
 TEST(RenderCommand, IsoSurfaceOptionIsCheckedAndRendered) {

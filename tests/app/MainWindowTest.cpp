@@ -128,6 +128,15 @@ class MainWindowTest : public QObject {
     const auto iso = summarize(view->grabFramebuffer());
     QVERIFY(iso.second != volume.second);
     view->setIsoSurfaces({});
+    // The same view by cell projection (View > Volume Renderer): close to the ray caster's.
+    auto* vicp = window_->findChild<QAction*>("renderer:vicp-exact");
+    QVERIFY2(vicp, "the volume plugin offers cell projection");
+    vicp->trigger();
+    const auto projected = summarize(view->grabFramebuffer());
+    QVERIFY(view->volumeShown());
+    QVERIFY2(std::abs(projected.first - volume.first) < volume.first / 20,
+             qPrintable(QString("%1 vs %2 pixels").arg(projected.first).arg(volume.first)));
+    window_->findChild<QAction*>("renderer:raycast")->trigger();
     view->setClipAxis(0);
     if (const char* shot = std::getenv("VOLPOST_VOLUME_SCREENSHOT")) window_->grab().save(shot);
     view->setClipAxis(-1);
