@@ -412,3 +412,20 @@ TEST_F(CellProjection, NonConvexRealWheelWithTheImageSpaceOrder) {
   EXPECT_LE(e.rmse, 1e-4);
   EXPECT_LE(e.max, 5e-3);
 }
+
+TEST_F(CellProjection, IsoSurfacesMatchTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const std::vector<optics::IsoSurface> surfaces = {{1.5, {1.0, 0.8, 0.1}, 0.6}, {2.5, {0.2, 0.9, 0.3}, 1.0}};
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setIsoSurfaces(surfaces);
+  caster_->setTerminationThreshold(0.0);
+  const auto gpu = gpuImage(isoCamera(grid), 64, 64);
+  optics::RaySettings settings;
+  settings.isoSurfaces = surfaces;
+  const ImageError e = compare(gpu, optics::renderReference(optics::TetVolume(grid, FieldLocation::Node, field(grid)), kTf,
+                                                            isoCamera(grid), 64, 64, settings));
+  std::printf("vicp iso-surfaces vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-4);
+  EXPECT_LE(e.max, 5e-3);
+}
