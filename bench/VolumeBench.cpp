@@ -4,7 +4,7 @@
 // change to the new frame, GPU memory, and the image error against the exact CPU
 // reference renderer (same camera, same transfer function). Prints a Markdown table and
 // writes a CSV for the speed-versus-error plot.
-//   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick]
+//   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]
 #include "CellProjector.hpp"
 #include "RayCaster.hpp"
 #include "VtkLegacyReader.hpp"
@@ -113,11 +113,13 @@ int main(int argc, char** argv) {
   int size = 512, frames = 5;
   const char* csvPath = nullptr;
   bool quick = false;
+  const char* only = nullptr;  // --mesh SUBSTRING: just the meshes whose name contains it
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csvPath = argv[++i];
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
+    else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) only = argv[++i];
   }
   HeadlessContext context;
   std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
@@ -128,6 +130,7 @@ int main(int argc, char** argv) {
   if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
   OffscreenTarget target(size, size);
   for (Case& c : cases(quick)) {
+    if (only && c.name.find(only) == std::string::npos) continue;
     const double diagonal = c.mesh.bounds().diagonal();
     const TransferFunction tf = benchTf(c.values, diagonal);
     Camera camera;

@@ -29,6 +29,13 @@ void main() {
     if (d > 0.0) tOut = min(tOut, dot(n, a - rayOrigin) / d);
   }
   if (tOut == 3.4e38) discard;
+  // As in the ray caster: no segment through a tet is longer than its longest edge. A
+  // longer one means this pixel's ray only grazes the tet (a fragment on its silhouette):
+  // its true length is zero.
+  vec3 q0 = nodes[tv.x].xyz, q1 = nodes[tv.y].xyz, q2 = nodes[tv.z].xyz, q3 = nodes[tv.w].xyz;
+  float diameter = max(max(max(distance(q0, q1), distance(q0, q2)), max(distance(q0, q3), distance(q1, q2))),
+                       max(distance(q1, q3), distance(q2, q3)));
+  if (tOut - tIn > 1.001 * diameter + 1e-5 * (abs(tIn) + diameter)) discard;
   tOut = max(tOut, tIn);
   float tStart = orthographic ? 0.0 : length(nearPoint - eye);
   tIn = max(tIn, tStart);
