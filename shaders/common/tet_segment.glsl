@@ -64,7 +64,7 @@ void linearPiece(vec4 front, vec4 back, float len) {  // rgb color, a extinction
   float tf = front.a * len, tb = back.a * len;
   float zeta = exp(-0.5 * (tf + tb));
   float psi = 0.5 * (tf + tb) <= 0.1 ? psiSeries(tf, 0.5 * (tb - tf))
-                                      : texture(psiTable, vec2(gammaUv(tf), gammaUv(tb))).r;
+                                      : textureLod(psiTable, vec2(gammaUv(tf), gammaUv(tb)), 0.0).r;
   psi = clamp(psi, zeta, 1.0);
   composite(back.rgb * (psi - zeta) + front.rgb * (1.0 - psi), zeta);
 }
@@ -87,7 +87,7 @@ void integrateLinear(float sf, float sb, float len) {
       end = tfNextCut(s, sb);
     } else {  // the seed's method: the iso-detection texture says where to cut
       vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
-      float iso = texture(isoTable, uv).r;
+      float iso = textureLod(isoTable, uv, 0.0).r;
       if (iso >= 0.0) {
         float v = rangeValue(iso);
         // The table is quantised: cut only where the point really lies ahead.
@@ -107,7 +107,7 @@ void integratePreintegrated(float sf, float sb, float len) {
   for (int i = 0; i < pieces; ++i) {
     float a = mix(sf, sb, float(i) / float(pieces)), b = mix(sf, sb, float(i + 1) / float(pieces));
     vec3 x = clamp(vec3(rangePos(a), rangePos(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
-    vec4 v = texture(preTable, (x * (size - 1.0) + 0.5) / size);
+    vec4 v = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0);
     composite(v.rgb, 1.0 - v.a);
   }
 }
