@@ -48,9 +48,9 @@ void main() {
   }
   if (tOut <= tIn) discard;
   integrate(tv, vTet, tIn, tOut);
-  // A sliver that is flat in float32 (a face plane through its opposite vertex) has no
-  // defined barycentric values: its segment, of no length at that precision, adds nothing.
-  // (The ray caster never integrates such a segment: it grazes it with zero length.)
+  // Defensive: a tet flat in float32 has no defined barycentric values; its fragment must
+  // not poison the image with NaN (the bench shows none since integrateLinear no longer
+  // divides by a flushed-to-zero value difference).
   if (isnan(accT) || any(isnan(accColor))) discard;
   fragColor = vec4(accColor, 1.0 - accT);  // premultiplied
 }

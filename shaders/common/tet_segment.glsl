@@ -73,8 +73,10 @@ float rangePos(float s) { return (s - sLo) / (sHi - sLo); }
 float rangeValue(float p) { return sLo + p * (sHi - sLo); }
 
 void integrateLinear(float sf, float sb, float len) {
-  if (sf == sb) {  // constant: no division, no cut
-    vec4 c = tfEval(sf);
+  // Constant (or varying below float resolution, where sb - sf may flush to zero and the
+  // piece lengths below would divide by it): no division, no cut.
+  if (abs(sb - sf) <= 1e-6 * max(abs(sf), abs(sb)) || sb - sf == 0.0) {
+    vec4 c = tfEval(0.5 * (sf + sb));
     float alpha = 1.0 - exp(-c.a * len);
     composite(c.rgb * alpha, 1.0 - alpha);
     return;
