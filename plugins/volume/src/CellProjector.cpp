@@ -13,6 +13,7 @@ void CellProjector::initialize() {
   projectionProgram_ = gl::buildProgram({"vicp.vert", "vicp.frag"});
   order_ = gl::createBuffer();
   framebuffer_ = gl::createFramebuffer();
+  emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
   attachedImage_ = 0;
   gl::check("CellProjector::initialize");
 }
@@ -21,6 +22,7 @@ void CellProjector::release() {
   projectionProgram_.reset();
   order_.reset();
   framebuffer_.reset();
+  emptyVertexArray_.reset();
   attachedImage_ = 0;
   RayCaster::release();
 }
@@ -37,7 +39,7 @@ void CellProjector::setVolume(const Mesh& mesh, FieldLocation location, std::spa
     const std::array<NodeIndex, 4> v = {t.x, t.y, t.z, t.w};
     sortMesh_.addCell(CellType::Tet4, v);
   }
-  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_);
+  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_, g.neighbors);  // the GPU structure's adjacency
 }
 
 void CellProjector::render(const RenderContext& ctx) {
@@ -65,10 +67,7 @@ void CellProjector::render(const RenderContext& ctx) {
   glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
   bindSegmentResources(ctx);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, order_.id());
-  glBindVertexArray(0);
-  GLuint vao = 0;  // core profile: a draw needs a bound vertex array, even an empty one
-  glCreateVertexArrays(1, &vao);
-  glBindVertexArray(vao);
+  glBindVertexArray(emptyVertexArray_.id());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
@@ -76,7 +75,6 @@ void CellProjector::render(const RenderContext& ctx) {
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 12));
   glDisable(GL_BLEND);
   glBindVertexArray(0);
-  glDeleteVertexArrays(1, &vao);
   glBindTextureUnit(3, 0);
   compositeOver(ctx);
   gl::check("CellProjector::render");

@@ -35,6 +35,7 @@ class CellProjector : public RayCaster {
   gl::Program projectionProgram_;
   gl::Buffer order_;
   gl::Framebuffer framebuffer_;
+  gl::VertexArray emptyVertexArray_;
   GLuint attachedImage_ = 0;
 };
 

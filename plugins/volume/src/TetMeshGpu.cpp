@@ -32,11 +32,13 @@ void parallelRanges(std::size_t n, unsigned workers, Body body) {
   for (auto& t : threads) t.join();
 }
 
+}  // namespace
+
 // Face adjacency by sorting the 4 faces of every tet. In parallel: faces are bucketed by
 // their smallest vertex id (both copies of a shared face land in the same bucket), each
 // worker lists the faces of a range of tets, then each bucket is sorted and matched on
 // its own. Every tet face is written by exactly one bucket.
-void findNeighbors(TetMeshGpu& g) {
+std::vector<glm::ivec4> faceNeighbors(const std::vector<glm::uvec4>& tets) {
   struct FaceKey {
     std::array<std::uint32_t, 3> v;
     std::uint32_t tetFace;
@@ -45,15 +47,15 @@ void findNeighbors(TetMeshGpu& g) {
   const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
   const std::size_t buckets = std::size_t(workers) * 8;
   std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(buckets));
-  parallelRanges(g.tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
+  parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
       for (int f = 0; f < 4; ++f) {
-        std::array<std::uint32_t, 3> v = {g.tets[t][kFaces[f][0]], g.tets[t][kFaces[f][1]], g.tets[t][kFaces[f][2]]};
+        std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
         std::sort(v.begin(), v.end());
         listed[w][v[0] % buckets].push_back({v, std::uint32_t(t) * 4 + std::uint32_t(f)});
       }
   });
-  g.neighbors.assign(g.tets.size(), glm::ivec4(-1));
+  std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
   parallelRanges(buckets, workers, [&](unsigned, std::size_t first, std::size_t last) {
     std::vector<FaceKey> faces;
     for (std::size_t b = first; b < last; ++b) {
@@ -65,13 +67,20 @@ void findNeighbors(TetMeshGpu& g) {
         while (j < faces.size() && faces[j].v == faces[i].v) ++j;
         if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
           const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
-          g.neighbors[a / 4][int(a % 4)] = int(b2 / 4);
-          g.neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
+          neighbors[a / 4][int(a % 4)] = int(b2 / 4);
+          neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
         }
         i = j;
       }
     }
   });
+  return neighbors;
+}
+
+namespace {
+
+void findNeighbors(TetMeshGpu& g) {
+  g.neighbors = faceNeighbors(g.tets);
   for (std::uint32_t t = 0; t < g.tets.size(); ++t)
     for (int f = 0; f < 4; ++f)
       if (g.neighbors[t][f] < 0) g.boundaryFaces.push_back(t * 4 + std::uint32_t(f));

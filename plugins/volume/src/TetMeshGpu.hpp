@@ -34,6 +34,10 @@ struct TetMeshGpu {
   std::size_t bytes() const;
 };
 
+/// The tet across the face opposite vertex k of every tet (-1: none, or a face shared by
+/// more than two tets). Built on all cores; shared by the GPU structure and the sorter.
+std::vector<glm::ivec4> faceNeighbors(const std::vector<glm::uvec4>& tets);
+
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);
 

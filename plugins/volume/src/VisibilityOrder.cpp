@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "VisibilityOrder.hpp"
 
+#include "TetMeshGpu.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -76,34 +78,28 @@ std::vector<std::uint32_t> priorityTopologicalOrder(std::size_t n, const std::ve
   return order;
 }
 
-VisibilitySorter::VisibilitySorter(const Mesh& tets) : mesh_(tets) {
-  const std::size_t n = tets.cellCount();
-  neighbors_.assign(n, glm::ivec4(-1));
-  centroids_.resize(n);
-  struct FaceKey {
-    std::array<NodeIndex, 3> v;
-    std::uint32_t tetFace;
-    bool operator<(const FaceKey& o) const { return v < o.v; }
-  };
-  std::vector<FaceKey> faces;
-  faces.reserve(n * 4);
-  for (std::uint32_t t = 0; t < n; ++t) {
+namespace {
+
+std::vector<glm::ivec4> neighborsOf(const Mesh& tets) {
+  std::vector<glm::uvec4> v(tets.cellCount());
+  for (std::size_t t = 0; t < v.size(); ++t) {
+    const auto n = tets.cellNodes(t);
+    v[t] = glm::uvec4(n[0], n[1], n[2], n[3]);
+  }
+  return faceNeighbors(v);
+}
+
+}  // namespace
+
+VisibilitySorter::VisibilitySorter(const Mesh& tets) : VisibilitySorter(tets, neighborsOf(tets)) {}
+
+VisibilitySorter::VisibilitySorter(const Mesh& tets, std::vector<glm::ivec4> neighbors)
+    : mesh_(tets), neighbors_(std::move(neighbors)) {
+  centroids_.resize(tets.cellCount());
+  for (std::size_t t = 0; t < tets.cellCount(); ++t) {
     const auto v = tets.cellNodes(t);
     centroids_[t] = 0.25 * (tets.nodes[v[0]] + tets.nodes[v[1]] + tets.nodes[v[2]] + tets.nodes[v[3]]);
-    for (int f = 0; f < 4; ++f) {
-      std::array<NodeIndex, 3> key = {v[std::size_t(kFaces[f][0])], v[std::size_t(kFaces[f][1])], v[std::size_t(kFaces[f][2])]};
-      std::sort(key.begin(), key.end());
-      faces.push_back({key, t * 4 + std::uint32_t(f)});
-    }
   }
-  std::sort(faces.begin(), faces.end());
-  for (std::size_t i = 0; i + 1 < faces.size(); ++i)
-    if (faces[i].v == faces[i + 1].v && (i + 2 >= faces.size() || faces[i + 2].v != faces[i].v) &&
-        (i == 0 || faces[i - 1].v != faces[i].v)) {  // exactly two tets share it
-      const std::uint32_t a = faces[i].tetFace, b = faces[i + 1].tetFace;
-      neighbors_[a / 4][int(a % 4)] = int(b / 4);
-      neighbors_[b / 4][int(b % 4)] = int(a / 4);
-    }
 }
 
 std::vector<std::uint32_t> VisibilitySorter::tetsAlongRay(const glm::dvec3& o, const glm::dvec3& d) const {

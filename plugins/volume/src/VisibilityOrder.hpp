@@ -42,6 +42,8 @@ class VisibilitySorter {
  public:
   /// `tets`: tet4 cells only (the conforming tetrahedra). Face adjacency is built once.
   explicit VisibilitySorter(const Mesh& tets);
+  /// With the face adjacency already at hand (faceNeighbors' convention).
+  VisibilitySorter(const Mesh& tets, std::vector<glm::ivec4> neighbors);
 
   /// The order for a camera; the image-space method samples a width x height pixel grid.
   VisibilityOrder order(const Camera& camera, OrderMethod method, int width = 0, int height = 0) const;
