@@ -144,6 +144,15 @@ void TfCurveWidget::paintEvent(QPaintEvent*) {
     painter.drawText(QPointF(r.left() + 2, y - 2), QString::number(o));
   }
   const auto& pts = model_.points();
+  // The function once per paint (the curve samples it at every pixel column).
+  const TransferFunction tf = model_.toTransferFunction();
+  const double length = model_.referenceLength();
+  const auto colorAt = [&](double v) {
+    if (tf.empty()) return QColor(Qt::white);
+    const glm::dvec3 c = tf.color(v);
+    return QColor::fromRgbF(float(c.r), float(c.g), float(c.b));
+  };
+  const auto opacityAt = [&](double v) { return tf.empty() ? 0.0 : extinctionToOpacity(tf.extinction(v), length); };
   // The curve, filled with the function's colors, sampled so the cube-root axis bends it.
   if (!pts.empty()) {
     QPainterPath path;
@@ -151,13 +160,13 @@ void TfCurveWidget::paintEvent(QPaintEvent*) {
     path.moveTo(r.left(), r.bottom());
     for (int i = 0; i <= samples; ++i) {
       const double v = viewLo_ + (viewHi_ - viewLo_) * i / samples;
-      path.lineTo(toPixel(v, model_.opacityAt(v)));
+      path.lineTo(toPixel(v, opacityAt(v)));
     }
     path.lineTo(r.right(), r.bottom());
     path.closeSubpath();
     QLinearGradient fill(r.left(), 0, r.right(), 0);
     for (int i = 0; i <= 32; ++i) {
-      QColor c = model_.colorAt(viewLo_ + (viewHi_ - viewLo_) * i / 32.0);
+      QColor c = colorAt(viewLo_ + (viewHi_ - viewLo_) * i / 32.0);
       c.setAlpha(150);
       fill.setColorAt(i / 32.0, c);
     }
@@ -176,7 +185,7 @@ void TfCurveWidget::paintEvent(QPaintEvent*) {
   // Color bar.
   const QRectF bar(r.left(), r.bottom() + 4, r.width(), kColorBar);
   QLinearGradient colors(bar.left(), 0, bar.right(), 0);
-  for (int i = 0; i <= 64; ++i) colors.setColorAt(i / 64.0, model_.colorAt(viewLo_ + (viewHi_ - viewLo_) * i / 64.0));
+  for (int i = 0; i <= 64; ++i) colors.setColorAt(i / 64.0, colorAt(viewLo_ + (viewHi_ - viewLo_) * i / 64.0));
   painter.fillRect(bar, colors);
   painter.setPen(palette().text().color());
   painter.setBrush(Qt::NoBrush);
