@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `volpost convert`, `volpost surface` and `volpost probe`: models out to other tools
 // (VTU for ParaView, OBJ/PLY/STL surfaces) and values at points.
+#include "../core/VolumeSpecs.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
@@ -23,17 +24,6 @@ std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCo
     return std::nullopt;
   }
   return std::size_t(step - 1);
-}
-
-bool parsePoint(const QString& text, glm::dvec3& p) {
-  const QStringList parts = text.split(',');
-  if (parts.size() != 3) return false;
-  for (int k = 0; k < 3; ++k) {
-    bool ok = false;
-    p[k] = parts[k].trimmed().toDouble(&ok);
-    if (!ok) return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -140,12 +130,12 @@ int runProbe(const QStringList& args) {
   }
   std::vector<glm::dvec3> points;
   for (const QString& text : parser.values(at)) {
-    glm::dvec3 p;
-    if (!parsePoint(text, p)) {
+    const auto p = parsePoint(text);
+    if (!p) {
       printError(QString("--at %1 is not X,Y,Z").arg(text));
       return 2;
     }
-    points.push_back(p);
+    points.push_back(*p);
   }
   const auto stepIndex = parseStep(parser, step);
   if (!stepIndex) return 2;

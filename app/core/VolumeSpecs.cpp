@@ -20,6 +20,12 @@ std::optional<std::vector<double>> numbers(const QString& text, int count) {
 
 }  // namespace
 
+std::optional<glm::dvec3> parsePoint(const QString& text) {
+  const auto v = numbers(text, 3);
+  if (!v) return std::nullopt;
+  return glm::dvec3((*v)[0], (*v)[1], (*v)[2]);
+}
+
 std::optional<ClipPlane> parseClipPlane(const QString& text) {
   const auto v = numbers(text, 6);
   if (!v) return std::nullopt;

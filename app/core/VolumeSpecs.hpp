@@ -13,6 +13,8 @@
 
 namespace volpost::app {
 
+/// "x,y,z": a point (model units).
+std::optional<glm::dvec3> parsePoint(const QString& text);
 /// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
 std::optional<ClipPlane> parseClipPlane(const QString& text);
 /// "xmin,xmax,ymin,ymax,zmin,zmax": the six planes that keep the inside of the box.

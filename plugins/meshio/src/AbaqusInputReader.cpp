@@ -19,25 +19,25 @@ struct Keyword {
   std::map<std::string, std::string> params; // upper-case keys, values as written
 };
 
+// "*ELEMENT, TYPE=C3D4, ELSET=E1": the name up to the first comma (it may hold spaces,
+// "*SOLID SECTION"), then comma-separated KEY or KEY=VALUE parameters.
 Keyword parseKeyword(std::string_view line) {
   Keyword k;
-  const auto fields = splitFields(line.substr(1), true);
+  std::size_t at = 1;
   bool first = true;
-  for (auto f : fields) {
-    f = trim(f);
+  while (at <= line.size()) {
+    const std::size_t comma = std::min(line.find(',', at), line.size());
+    const auto part = trim(line.substr(at, comma - at));
     if (first) {
-      k.name = toUpper(f);
+      k.name = toUpper(part);
       first = false;
-      continue;
+    } else if (!part.empty()) {
+      const auto eq = part.find('=');
+      if (eq == std::string_view::npos) k.params[toUpper(part)] = "";
+      else k.params[toUpper(trim(part.substr(0, eq)))] = std::string(trim(part.substr(eq + 1)));
     }
-    const auto eq = f.find('=');
-    if (eq == std::string_view::npos) k.params[toUpper(f)] = "";
-    else k.params[toUpper(trim(f.substr(0, eq)))] = std::string(trim(f.substr(eq + 1)));
+    at = comma + 1;
   }
-  // Keywords may be written with spaces: "*SOLID SECTION"; fields split on spaces too, so
-  // glue the words of the name back (params always hold '=' or come after a comma).
-  const auto comma = line.find(',');
-  k.name = toUpper(trim(line.substr(1, comma == std::string_view::npos ? std::string_view::npos : comma - 1)));
   return k;
 }
 

@@ -41,13 +41,12 @@ class FrdParser {
       const auto key = trim(line_.substr(0, std::min<std::size_t>(line_.size(), 6)));
       if (key.empty()) continue;
       if (key == "9999") ended = true;
-      else if (key == "1C" && !sawHeader_) sawHeader_ = true;
+      else if (key == "1C") sawHeader_ = true;
       else if (key == "1U") readUserHeader();
       else if (key == "2C") readNodes();
       else if (key == "3C") readElements();
-      else if (key == "100C" || key.rfind("100C", 0) == 0) readResults();
-      else if (key == "1P" || key.rfind("1P", 0) == 0) continue;
-      else if (key == "1C" || key.rfind("1C", 0) == 0) continue;
+      else if (key == "100C") readResults();
+      else if (key == "1P") continue;  // parameters (1PSTEP ...)
       else if (!sawHeader_) s_.fail("not a CalculiX .frd file: it must begin with a '    1C' record");
       else if (key.front() == '-') s_.fail("record '" + std::string(key) + "' outside any block");
       else s_.fail("unknown record '" + std::string(line_.substr(0, 12)) + "'");

@@ -510,7 +510,6 @@ class GmshParser {
     for (const auto& name : averagedNames_)
       model_->diagnostics.push_back({Severity::Info, "element-nodal-averaged",
                                      "'" + name + "' is given per element node; it is shown averaged at the nodes", {}});
-    model_->title = "";
   }
 
   TextScanner s_;

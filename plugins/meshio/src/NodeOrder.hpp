@@ -22,6 +22,4 @@ using CornerPair = std::pair<int, int>;
 std::vector<int> vtkOrderFrom(CellType type, std::span<const int> corners,
                               std::span<const CornerPair> midsides);
 
-/// Same description for a format whose node list has extra nodes to ignore (face and body
-/// nodes of hex27/prism18): they simply go unused.
 }  // namespace volpost::meshio
