@@ -7,6 +7,7 @@
 
 #include <volpost/core/IsoSurfaceExtraction.hpp>
 #include <volpost/core/PointLocator.hpp>
+#include <volpost/core/SurfaceWriter.hpp>
 #include <volpost/core/VtuWriter.hpp>
 
 #include <QCommandLineParser>

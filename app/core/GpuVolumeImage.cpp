@@ -37,9 +37,13 @@ QImage renderGpuVolume(const ModelSession& session, const VolumeRequest& request
   OffscreenTarget target(request.width, request.height);
   renderer.initialize();
   // The GPU gets only what the clip planes can show (the picture is the same: the
-  // renderer cuts exactly at the planes).
-  const CulledMesh culled = cullToClipPlanes(session.tetrahedra().mesh, request.clipPlanes);
-  renderer.setVolume(culled.mesh, view.location, culled.values(view.location, session.tetValues(view)));
+  // renderer cuts exactly at the planes). Without planes there is nothing to cull.
+  if (request.clipPlanes.empty()) {
+    renderer.setVolume(session.tetrahedra().mesh, view.location, session.tetValues(view));
+  } else {
+    const CulledMesh culled = cullToClipPlanes(session.tetrahedra().mesh, request.clipPlanes);
+    renderer.setVolume(culled.mesh, view.location, culled.values(view.location, session.tetValues(view)));
+  }
   renderer.setTransferFunction(tf);
   renderer.setClipPlanes(request.clipPlanes);
   renderer.setIsoSurfaces(request.isoSurfaces);

@@ -25,8 +25,4 @@ struct ExtractedSurface {
 ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> nodeValues, double iso,
                                    const Progress& progress = {});
 
-/// Writes a surface as .obj, .ply, .stl or .off (by the extension) through OpenMesh, in
-/// model coordinates (origin added back). Throws WriteError naming the file.
-void writeSurface(const SurfaceMesh& mesh, const glm::dvec3& origin, const std::string& path);
-
 }  // namespace volpost
