@@ -4,8 +4,6 @@
 #define TETLIBRARY
 #include <tetgen.h>
 
-#include <map>
-#include <mutex>
 #include <stdexcept>
 
 namespace volpost::detail {
@@ -89,14 +87,25 @@ std::optional<std::vector<LocalTet>> computeTemplate(CellType type, unsigned dia
 
 }  // namespace
 
+// Every configuration is computed once, on first use (74 small TetGen runs, a few ms);
+// after that a lookup is a plain index, with no lock on the per-cell path.
 const std::optional<std::vector<LocalTet>>& splitTemplate(CellType type, unsigned diagonals) {
-  static std::mutex mutex;
-  static std::map<std::pair<CellType, unsigned>, std::optional<std::vector<LocalTet>>> cache;
-  const std::lock_guard lock(mutex);
-  const auto key = std::make_pair(type, diagonals);
-  auto it = cache.find(key);
-  if (it == cache.end()) it = cache.emplace(key, computeTemplate(type, diagonals)).first;
-  return it->second;
+  if (type != CellType::Hex8 && type != CellType::Hex20 && type != CellType::Wedge6 && type != CellType::Wedge15 &&
+      type != CellType::Pyramid5)
+    throw std::logic_error("split templates are for hexahedra, wedges and pyramids");
+  using Table = std::vector<std::optional<std::vector<LocalTet>>>;
+  const auto build = [](CellType t) {
+    unsigned quads = 0;
+    for (const CellFace& f : topology(t).faces) quads += f.size == 4;
+    Table table;
+    for (unsigned d = 0; d < (1u << quads); ++d) table.push_back(computeTemplate(t, d));
+    return table;
+  };
+  static const Table hex = build(CellType::Hex8), wedge = build(CellType::Wedge6), pyramid = build(CellType::Pyramid5);
+  const Table& table = type == CellType::Hex8 || type == CellType::Hex20 ? hex
+                       : type == CellType::Pyramid5                      ? pyramid
+                                                                         : wedge;
+  return table.at(diagonals);
 }
 
 }  // namespace volpost::detail
