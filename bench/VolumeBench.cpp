@@ -5,6 +5,7 @@
 // reference renderer (same camera, same transfer function). Prints a Markdown table and
 // writes a CSV for the speed-versus-error plot.
 //   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]
+//                        [--error-images DIR]  (one PGM per row: white = off by 0.05 or more)
 #include "CellProjector.hpp"
 #include "RayCaster.hpp"
 #include "VtkLegacyReader.hpp"
@@ -18,6 +19,7 @@
 #include <volpost/render/OffscreenTarget.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +32,19 @@ using namespace volpost;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+
+// Where a renderer is off, as a picture: |error| (the worst channel) scaled so that 0.05
+// and above is white. Binary PGM needs no image library.
+void writeErrorImage(const std::filesystem::path& path, const std::vector<double>& errors, int size) {
+  FILE* f = std::fopen(path.string().c_str(), "wb");
+  if (!f) {
+    std::fprintf(stderr, "cannot write %s\n", path.string().c_str());
+    return;
+  }
+  std::fprintf(f, "P5\n%d %d\n255\n", size, size);
+  for (double e : errors) std::fputc(int(std::lround(std::min(1.0, e / 0.05) * 255.0)), f);
+  std::fclose(f);
+}
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
@@ -114,12 +129,14 @@ int main(int argc, char** argv) {
   const char* csvPath = nullptr;
   bool quick = false;
   const char* only = nullptr;  // --mesh SUBSTRING: just the meshes whose name contains it
+  const char* errorImages = nullptr;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csvPath = argv[++i];
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) only = argv[++i];
+    else if (!std::strcmp(argv[i], "--error-images") && i + 1 < argc) errorImages = argv[++i];
   }
   HeadlessContext context;
   std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
@@ -169,6 +186,7 @@ int main(int argc, char** argv) {
       const auto image = caster->readImage();
       double sum = 0.0, worst = 0.0;
       std::size_t bad = 0, worstPixel = 0;
+      std::vector<double> pixelErrors(reference.pixels.size());
       for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
         double pixelError = 0.0;
         for (int k = 0; k < 4; ++k) {
@@ -176,12 +194,19 @@ int main(int argc, char** argv) {
           sum += d * d;
           pixelError = std::max(pixelError, std::abs(d));
         }
+        pixelErrors[i] = pixelError;
         bad += pixelError > 0.05;
         if (pixelError > worst) worst = pixelError, worstPixel = i;
       }
       // Pixels far from the reference (a lost ray would show here), for the record.
       if (bad) std::fprintf(stderr, "%s %s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(), label,
                             toString(mode), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
+      if (errorImages) {
+        std::string name = c.name + " " + (caster == &raycaster ? "raycast" : caster == &vicp ? "vicp" : "vicp-exact") + " " + toString(mode);
+        std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)) && ch != '-'; }, '_');
+        std::filesystem::create_directories(errorImages);
+        writeErrorImage(std::filesystem::path(errorImages) / (name + ".pgm"), pixelErrors, size);
+      }
       const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
       std::vector<double> times, sorts;
       Camera orbit = camera;
