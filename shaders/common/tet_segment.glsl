@@ -96,7 +96,7 @@ void integrateLinear(float sf, float sb, float len) {
         if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
       }
     }
-    float pieceLen = len * (end - s) / (sb - sf);
+    float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
     linearPiece(tfEval(s), tfEval(end), pieceLen);
     if (end == sb || accT < terminationTransmittance) return;
     s = end;

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 #include <cmath>
 #include <thread>
 #include <memory>
@@ -227,6 +228,33 @@ TEST_F(RayCast, FarFromOriginTinyMeshRendersLikeTheReference) {
   EXPECT_LE(e.max, 1e-4);
 }
 
+// Values far from float32's comfort: a concentration of order 1e-38 (where float32 is
+// denormal and shader arithmetic flushes to zero) and a field riding on a large offset
+// (a temperature of 1e6 + small variations). The same picture must come out as for
+// field(), since the transfer function follows the values.
+void expectValueScaleInvariance(const char* renderer,
+                                const std::function<ImageError(const std::vector<double>&, const TransferFunction&)>& render) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  for (auto [scale, offset] : {std::pair{1e-38, 0.0}, std::pair{1e-6, 1e6}}) {
+    std::vector<double> values = field(grid);
+    for (double& v : values) v = offset + scale * v;
+    std::vector<ControlPoint> points = kTf.points();
+    for (ControlPoint& p : points) p.value = offset + scale * p.value;
+    const ImageError e = render(values, TransferFunction(points));
+    std::printf("%s values x %g + %g vs reference: RMSE %.3g, max %.3g\n", renderer, scale, offset, e.rmse, e.max);
+    EXPECT_LE(e.rmse, 1e-5) << scale << " " << offset;
+    EXPECT_LE(e.max, 1e-4) << scale << " " << offset;
+  }
+}
+
+TEST_F(RayCast, TinyAndOffsetValuesRenderLikeTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  expectValueScaleInvariance("raycast", [&](const std::vector<double>& values, const TransferFunction& tf) {
+    return againstReference(grid, FieldLocation::Node, values, tf, isoCamera(grid), 64);
+  });
+}
+
 TEST_F(RayCast, TransferFunctionEditsDoNotTouchTheMesh) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   caster_->setVolume(grid, FieldLocation::Node, field(grid));
@@ -304,7 +332,7 @@ TEST_F(RayCast, ANewResultUploadsOnlyValues) {
   const auto bvh = gpu.bvh;
   EXPECT_TRUE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
   EXPECT_EQ(gpu.bvh, bvh);
-  EXPECT_FLOAT_EQ(gpu.nodes[7].w, float(other[7]));
+  EXPECT_FLOAT_EQ(gpu.nodes[7].w, gpu.gpuValue(other[7]));
   other[3] = std::nan("");  // a tet would drop out: the structure must be rebuilt
   EXPECT_FALSE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
 }
@@ -384,6 +412,14 @@ TEST_F(CellProjection, ConvexGridMatchesTheReferenceInEveryMode) {
   ASSERT_TRUE(projector);
   EXPECT_EQ(projector->lastOrder().backToFront.size(), grid.cellCount());
   EXPECT_GT(caster_->stats().lastSortMs, 0.0);
+}
+
+TEST_F(CellProjection, TinyAndOffsetValuesRenderLikeTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  expectValueScaleInvariance("vicp", [&](const std::vector<double>& values, const TransferFunction& tf) {
+    return againstReference(grid, FieldLocation::Node, values, tf, isoCamera(grid), 64);
+  });
 }
 
 TEST_F(CellProjection, ClipPlanesCutLikeTheReference) {

@@ -151,7 +151,7 @@ void RayCaster::rebuildTables() {
   std::vector<float> values;
   for (const ControlPoint& p : tf_.points()) {
     colorTau.push_back(glm::vec4(glm::vec3(p.color), float(p.extinction)));
-    values.push_back(float(p.value));
+    values.push_back(gpu_.gpuValue(p.value));
   }
   upload(tfColorTau_, colorTau);
   upload(tfValues_, values);
@@ -260,8 +260,8 @@ void RayCaster::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
   glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));
   glProgramUniform1i(p, u("tfCount"), int(tf_.points().size()));
-  glProgramUniform1f(p, u("sLo"), float(tableLo_));
-  glProgramUniform1f(p, u("sHi"), float(tableHi_));
+  glProgramUniform1f(p, u("sLo"), gpu_.gpuValue(tableLo_));
+  glProgramUniform1f(p, u("sHi"), gpu_.gpuValue(tableHi_));
   glProgramUniform1f(p, u("preMaxLength"), float(preMaxLength_));
   std::vector<glm::vec4> planes;
   for (const ClipPlane& c : clipPlanes_) {
@@ -271,7 +271,7 @@ void RayCaster::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   std::vector<float> isoValues;
   std::vector<glm::vec4> isoColors;
   for (const optics::IsoSurface& iso : isoSurfaces_) {
-    isoValues.push_back(float(iso.value));
+    isoValues.push_back(gpu_.gpuValue(iso.value));
     isoColors.push_back(glm::vec4(glm::vec3(iso.color), float(iso.opacity)));
   }
   glProgramUniform1i(p, u("isoCount"), int(isoValues.size()));

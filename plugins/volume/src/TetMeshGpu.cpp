@@ -145,6 +145,19 @@ void buildBvh(TetMeshGpu& g) {
   g.boundaryFaces = std::move(faces);
 }
 
+// The range of the finite values (see TetMeshGpu::valueOffset).
+void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!(hi >= lo)) lo = hi = 0.0;
+  g.valueOffset = lo;
+  const double scale = 1.0 / (hi - lo);
+  // A constant field (or one whose spread is below double's normal range) maps to 0; a
+  // spread beyond double's range is halved first.
+  g.valueScale = std::isfinite(scale) ? scale : std::isfinite(hi - lo) ? 1.0 : 0.5 / (0.5 * hi - 0.5 * lo);
+}
+
 }  // namespace
 
 std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stays on the CPU)
@@ -157,11 +170,12 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
   TetMeshGpu g;
   const Bounds b = mesh.bounds();
   g.origin = b.valid ? b.center() : glm::dvec3(0.0);
+  setValueFrame(g, values);
   g.nodes.resize(mesh.nodeCount());
   for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
     const glm::dvec3 p = mesh.nodes[i] - g.origin;
-    const double v = location == FieldLocation::Node ? values[i] : 0.0;
-    g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? float(v) : 0.0f);
+    const double v = location == FieldLocation::Node ? values[i] : g.valueOffset;
+    g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? g.gpuValue(v) : 0.0f);
   }
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
     const auto n = mesh.cellNodes(c);
@@ -181,7 +195,7 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
     if (o < 0.0) std::swap(t[1], t[2]);  // inverted input cells are drawn, oriented
     g.tets.push_back(t);
     g.cellOfTet.push_back(std::uint32_t(c));
-    if (location == FieldLocation::Cell) g.cellValues.push_back(float(values[c]));
+    if (location == FieldLocation::Cell) g.cellValues.push_back(g.gpuValue(values[c]));
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) g.maxEdge = std::max(g.maxEdge, glm::length(p[i] - p[j]));
   }
@@ -211,10 +225,11 @@ bool replaceValues(TetMeshGpu& g, const Mesh& mesh, FieldLocation location, std:
       if (orientation(p) != 0.0) return false;
     }
   }
+  setValueFrame(g, values);
   if (location == FieldLocation::Node)
-    for (std::size_t i = 0; i < mesh.nodeCount(); ++i) g.nodes[i].w = std::isfinite(values[i]) ? float(values[i]) : 0.0f;
+    for (std::size_t i = 0; i < mesh.nodeCount(); ++i) g.nodes[i].w = std::isfinite(values[i]) ? g.gpuValue(values[i]) : 0.0f;
   else
-    for (std::size_t t = 0; t < g.tets.size(); ++t) g.cellValues[t] = float(values[g.cellOfTet[t]]);
+    for (std::size_t t = 0; t < g.tets.size(); ++t) g.cellValues[t] = g.gpuValue(values[g.cellOfTet[t]]);
   return true;
 }
 

@@ -21,15 +21,25 @@ namespace volpost::volume {
 
 struct TetMeshGpu {
   glm::dvec3 origin{0.0};                 ///< model coordinates of the mesh center
-  std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value
+  std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value (gpuValue)
   std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids
   std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary
-  std::vector<float> cellValues;          ///< one per tet (element results), else empty
+  std::vector<float> cellValues;          ///< one per tet (element results, gpuValue), else empty
   std::vector<std::uint32_t> cellOfTet;   ///< mesh cell each tet comes from
   std::vector<std::uint32_t> boundaryFaces;  ///< tet * 4 + face, in BVH leaf order
   std::vector<glm::vec4> bvh;             ///< 2 per node: (lo, first), (hi, count); count 0 = inner
   std::size_t skippedTets = 0;            ///< zero volume or non-finite values
   double maxEdge = 0.0;                   ///< longest tet edge, model units
+  /// Values travel in the frame of their own range, as positions do relative to origin:
+  /// gpuValue(v) = (v - valueOffset) * valueScale, 0 at the field's minimum and 1 at its
+  /// maximum. Float32 then resolves the range rather than the magnitude (a temperature
+  /// field of 293.0..293.1 keeps its detail), and no shader arithmetic meets denormals: a
+  /// concentration field of 1e-37 would otherwise be flushed to zero in the products of
+  /// the integration. Everything compared with values (control points, iso-values, table
+  /// ranges) goes through gpuValue too.
+  double valueOffset = 0.0, valueScale = 1.0;
+
+  float gpuValue(double v) const { return float((v - valueOffset) * valueScale); }
 
   std::size_t bytes() const;
 };
