@@ -1,12 +1,57 @@
 #version 450 core
-// One front face fragment of a tet: the ray through the pixel enters here; its exit is the
-// nearest of the other faces; the segment is integrated exactly as the ray caster does
-// (same code, common/tet_segment.glsl) and blended back to front over what is behind.
+// One tet's contribution to one pixel: the interval where the pixel's ray is inside the
+// tet, integrated exactly as the ray caster does (same code, common/tet_segment.glsl) and
+// blended back to front over what is behind. The tet arrives as a screen rectangle
+// (vicp.vert); pixels the ray misses are discarded here.
 #include "common/tet_segment.glsl"
 
 flat in uint vTet;
-flat in int vFace;
 out vec4 fragColor;
+
+// The faces of a positively oriented tet (v0 v1 v2 v3), each wound so that its normal
+// points out: face k is opposite vertex k.
+const ivec3 OUTWARD[4] = ivec3[4](ivec3(1, 2, 3), ivec3(0, 3, 2), ivec3(0, 1, 3), ivec3(0, 2, 1));
+
+// Direction in which the ray is nudged, for rays that lie inside a face's plane (see
+// tetChord): perspective moves its direction, orthographic its origin, both across the
+// screen.
+vec3 nudge;
+
+// Where the ray is inside the tet: between the last face plane it enters and the first it
+// leaves (the tet is convex). Each face's plane is computed from its vertices in ascending
+// index order, so the two tets sharing a face get the same crossing parameter bit for bit
+// and split the ray exactly there, whatever rounding did to it: neighbours neither overlap
+// nor leave a gap. A ray lying in a plane (within rounding: a grid seen along a diagonal,
+// a ray along a chain of edges) is nudged sideways by an infinitesimal amount, the same
+// for every plane, so that of all the tets around an edge exactly one keeps the segment.
+bool tetChord(uvec4 tv, out float tIn, out float tOut) {
+  tIn = -3.4e38;
+  tOut = 3.4e38;
+  for (int k = 0; k < 4; ++k) {
+    uvec3 f = uvec3(tv[OUTWARD[k].x], tv[OUTWARD[k].y], tv[OUTWARD[k].z]);
+    bool flip = false;  // sorting by an odd permutation turns the normal inward
+    if (f.x > f.y) { f.xy = f.yx; flip = !flip; }
+    if (f.y > f.z) { f.yz = f.zy; flip = !flip; }
+    if (f.x > f.y) { f.xy = f.yx; flip = !flip; }
+    precise vec3 a = nodes[f.x].xyz;
+    precise vec3 n = cross(nodes[f.y].xyz - a, nodes[f.z].xyz - a);
+    if (flip) n = -n;  // exact: both neighbours still see the same magnitudes
+    precise float den = dot(n, rayDir);
+    precise float h = dot(n, a - rayOrigin);  // inside where t * den <= h
+    float scale = length(n);
+    if (abs(den) <= 1e-5 * scale && abs(h) <= 1e-5 * scale * (distance(a, rayOrigin) + length(nodes[f.y].xyz - a))) {
+      // In the plane: the nudged ray is inside iff it moves against the outward normal.
+      // (A plane containing the ray cannot be perpendicular to the nudge as well.)
+      if (dot(n, nudge) > 0.0 || (dot(n, nudge) == 0.0 && flip)) return false;
+      continue;
+    }
+    float t = h / den;
+    if (den > 0.0) tOut = min(tOut, t);
+    else if (den < 0.0) tIn = max(tIn, t);
+    else if (h < 0.0) return false;
+  }
+  return tIn < tOut;
+}
 
 void main() {
   // The image is drawn y-flipped (its first row is the top): window row y is NDC 1 - 2y/h.
@@ -15,30 +60,18 @@ void main() {
   vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
   rayOrigin = orthographic ? nearPoint : eye;
   rayDir = normalize(farPoint - rayOrigin);
+  // The nudge: toward a neighbouring screen position, along a direction no mesh is likely
+  // to align a face with (not a pixel axis).
+  vec2 ndcNudged = ndc + vec2(1e-3, 0.318e-3);
+  vec4 nearQ = inverseViewProjection * vec4(ndcNudged, -1.0, 1.0), farQ = inverseViewProjection * vec4(ndcNudged, 1.0, 1.0);
+  vec3 nearNudged = nearQ.xyz / nearQ.w;
+  nudge = orthographic ? nearNudged - nearPoint : normalize(farQ.xyz / farQ.w - eye) - rayDir;
+
   uvec4 tv = tets[vTet];
-  vec3 n, a;
-  facePlane(tv, vFace, n, a);
-  float den = dot(n, rayDir);
-  if (den >= 0.0) discard;  // a back face: the tet is integrated from its front face
-  float tIn = dot(n, a - rayOrigin) / den;
-  float tOut = 3.4e38;
-  for (int k = 0; k < 4; ++k) {
-    if (k == vFace) continue;
-    facePlane(tv, k, n, a);
-    float d = dot(n, rayDir);
-    if (d > 0.0) tOut = min(tOut, dot(n, a - rayOrigin) / d);
-  }
-  if (tOut == 3.4e38) discard;
-  // As in the ray caster: no segment through a tet is longer than its longest edge. A
-  // longer one means this pixel's ray only grazes the tet (a fragment on its silhouette):
-  // its true length is zero.
-  vec3 q0 = nodes[tv.x].xyz, q1 = nodes[tv.y].xyz, q2 = nodes[tv.z].xyz, q3 = nodes[tv.w].xyz;
-  float diameter = max(max(max(distance(q0, q1), distance(q0, q2)), max(distance(q0, q3), distance(q1, q2))),
-                       max(distance(q1, q3), distance(q2, q3)));
-  if (tOut - tIn > 1.001 * diameter + 1e-5 * (abs(tIn) + diameter)) discard;
-  tOut = max(tOut, tIn);
-  float tStart = orthographic ? 0.0 : length(nearPoint - eye);
-  tIn = max(tIn, tStart);
+  float tIn, tOut;
+  if (!tetChord(tv, tIn, tOut)) discard;
+  tIn = max(tIn, orthographic ? 0.0 : length(nearPoint - eye));
+  tOut = min(tOut, length(farPoint - rayOrigin));
   if (hasSceneDepth) {  // opaque geometry in front of the exit ends the segment there
     float depth = texelFetch(sceneDepth, ivec2(int(gl_FragCoord.x), imageSize_.y - 1 - int(gl_FragCoord.y)), 0).r;
     if (depth < 1.0) {
@@ -49,8 +82,7 @@ void main() {
   if (tOut <= tIn) discard;
   integrate(tv, vTet, tIn, tOut);
   // Defensive: a tet flat in float32 has no defined barycentric values; its fragment must
-  // not poison the image with NaN (the bench shows none since integrateLinear no longer
-  // divides by a flushed-to-zero value difference).
+  // not poison the image with NaN.
   if (isnan(accT) || any(isnan(accColor))) discard;
   fragColor = vec4(accColor, 1.0 - accT);  // premultiplied
 }

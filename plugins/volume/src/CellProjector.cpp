@@ -65,6 +65,7 @@ void CellProjector::render(const RenderContext& ctx) {
   const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
   const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpuMesh().origin));
   glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
   bindSegmentResources(ctx);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, order_.id());
   glBindVertexArray(emptyVertexArray_.id());
@@ -72,7 +73,7 @@ void CellProjector::render(const RenderContext& ctx) {
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 12));
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 6));  // two triangles per tet
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   glBindTextureUnit(3, 0);
