@@ -10,7 +10,6 @@ namespace volpost::volume {
 
 void CellProjector::initialize() {
   RayCaster::initialize();
-  projectionProgram_ = gl::buildProgram({"vicp.vert", "vicp.frag"});
   order_ = gl::createBuffer();
   framebuffer_ = gl::createFramebuffer();
   emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
@@ -19,7 +18,7 @@ void CellProjector::initialize() {
 }
 
 void CellProjector::release() {
-  projectionProgram_.reset();
+  for (gl::Program& program : projectionPrograms_) program.reset();
   order_.reset();
   framebuffer_.reset();
   emptyVertexArray_.reset();
@@ -58,7 +57,7 @@ void CellProjector::render(const RenderContext& ctx) {
   const float clear[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
 
-  const GLuint p = projectionProgram_.id();
+  const GLuint p = programForMode(projectionPrograms_, {"vicp.vert", "vicp.frag"});
   glUseProgram(p);
   setSegmentUniforms(p, ctx);
   // Drawn upside down so that the image's first row is the top, as the ray caster's.

@@ -32,7 +32,7 @@ class CellProjector : public RayCaster {
   Mesh sortMesh_;  ///< the GPU's tets (oriented, degenerate ones left out) in model coordinates
   std::unique_ptr<VisibilitySorter> sorter_;
   VisibilityOrder lastOrder_;
-  gl::Program projectionProgram_;
+  ModePrograms projectionPrograms_;
   gl::Buffer order_;
   gl::Framebuffer framebuffer_;
   gl::VertexArray emptyVertexArray_;

@@ -54,7 +54,6 @@ void setFilter(GLuint tex, GLint filter) {
 }  // namespace
 
 void RayCaster::initialize() {
-  program_ = gl::buildProgram({"raycast.comp"});
   compositeProgram_ = gl::buildProgram({"overlay.vert", "overlay.frag"});
   quad_ = gl::createVertexArray();
   const optics::PsiTable psi(psiResolution);
@@ -73,7 +72,7 @@ void RayCaster::release() {
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
   for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
-  program_.reset();
+  for (gl::Program& program : programs_) program.reset();
   compositeProgram_.reset();
   quad_.reset();
   imageWidth_ = imageHeight_ = 0;
@@ -222,7 +221,7 @@ void RayCaster::ensureImage(int width, int height) {
 void RayCaster::render(const RenderContext& ctx) {
   if (!initialized_ || gpu_.tets.empty() || ctx.width <= 0 || ctx.height <= 0) return;
   prepareFrame(ctx);
-  const GLuint p = program_.id();
+  const GLuint p = programForMode(programs_, {"raycast.comp"});
   glUseProgram(p);
   setSegmentUniforms(p, ctx);
   glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), int(std::min<std::size_t>(gpu_.tets.size() + 16, 1u << 20)));
@@ -233,6 +232,14 @@ void RayCaster::render(const RenderContext& ctx) {
   glBindTextureUnit(3, 0);  // the depth texture may be attached to the target: no feedback
   compositeOver(ctx);
   gl::check("RayCaster::render");
+}
+
+GLuint RayCaster::programForMode(ModePrograms& programs, const std::vector<std::string>& stageFiles) const {
+  const bool linear = mode_ == IntegrationMode::LinearSegments || mode_ == IntegrationMode::LinearSegmentsIsoTable;
+  const int index = linear ? 0 : mode_ == IntegrationMode::PreIntegrated ? 1 : 2;
+  gl::Program& program = programs[std::size_t(index)];
+  if (!program) program = gl::buildProgram(stageFiles, "#define INTEGRATION_MODE " + std::to_string(index));
+  return program.id();
 }
 
 void RayCaster::prepareFrame(const RenderContext& ctx) {
@@ -253,8 +260,6 @@ void RayCaster::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("orthographic"), ctx.camera.projection() == Camera::Projection::Orthographic);
   glProgramUniform2i(p, u("imageSize_"), ctx.width, ctx.height);
   glProgramUniform1i(p, u("cellField"), location_ == FieldLocation::Cell);
-  const bool linear = mode_ == IntegrationMode::LinearSegments || mode_ == IntegrationMode::LinearSegmentsIsoTable;
-  glProgramUniform1i(p, u("mode"), linear ? 0 : mode_ == IntegrationMode::PreIntegrated ? 1 : 2);
   glProgramUniform1i(p, u("exactCuts"), mode_ == IntegrationMode::LinearSegments);
   const double meanEdge = gpu_.maxEdge * 0.5;
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));

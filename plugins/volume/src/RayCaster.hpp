@@ -8,6 +8,7 @@
 #include <volpost/render/GlObjects.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
+#include <array>
 #include <chrono>
 #include <future>
 
@@ -45,6 +46,10 @@ class RayCaster : public VolumeRenderer {
   bool ready() const { return initialized_ && !gpu_.tets.empty(); }
   const TetMeshGpu& gpuMesh() const { return gpu_; }
   const gl::Texture& image() const { return image_; }
+  /// Programs compiled per integration mode (the mode is compiled in, see
+  /// tet_segment.glsl), each on first use.
+  using ModePrograms = std::array<gl::Program, 3>;
+  GLuint programForMode(ModePrograms& programs, const std::vector<std::string>& stageFiles) const;
 
  private:
   void uploadMesh();
@@ -71,7 +76,8 @@ class RayCaster : public VolumeRenderer {
   bool preOutdated_ = false;                   ///< the TF changed again while it was built
   bool initialized_ = false;
 
-  gl::Program program_, compositeProgram_;
+  ModePrograms programs_;
+  gl::Program compositeProgram_;
   gl::VertexArray quad_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
   gl::Texture psiTable_, isoTable_, preTable_, image_;

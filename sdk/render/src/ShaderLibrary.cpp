@@ -62,6 +62,15 @@ std::string numbered(const std::string& source) {
   return out.str();
 }
 
+// The defines go after the #version line, which must stay first.
+std::string withDefines(std::string source, const std::string& defines) {
+  if (defines.empty()) return source;
+  const auto versionLine = source.find("#version");
+  const auto insertAt = versionLine == std::string::npos ? 0 : source.find('\n', versionLine);
+  if (insertAt == std::string::npos) return source + "\n" + defines + "\n";
+  return source.insert(insertAt == 0 ? 0 : insertAt + 1, defines.back() == '\n' ? defines : defines + "\n");
+}
+
 }  // namespace
 
 std::string shaderSource(const std::string& name) {
@@ -75,11 +84,11 @@ std::vector<std::string> shaderNames() {
   return names;
 }
 
-Program buildProgram(const std::vector<std::string>& stageFiles) {
+Program buildProgram(const std::vector<std::string>& stageFiles, const std::string& defines) {
   Program program(glCreateProgram());
   std::vector<GLuint> shaders;
   for (const std::string& file : stageFiles) {
-    const std::string src = shaderSource(file);
+    const std::string src = withDefines(shaderSource(file), defines);
     const GLuint shader = glCreateShader(stageOf(file));
     const char* text = src.c_str();
     glShaderSource(shader, 1, &text, nullptr);

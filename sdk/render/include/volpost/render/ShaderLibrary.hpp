@@ -17,7 +17,9 @@ std::string shaderSource(const std::string& name);
 std::vector<std::string> shaderNames();
 
 /// Compiles and links a program from stage files named by extension (.vert, .frag,
-/// .geom, .comp). Throws std::runtime_error with the log and the numbered source.
-Program buildProgram(const std::vector<std::string>& stageFiles);
+/// .geom, .comp). `defines` ("#define NAME VALUE" lines) go into every stage right after
+/// its #version line: variants of one source without run-time branches. Throws
+/// std::runtime_error with the log and the numbered source.
+Program buildProgram(const std::vector<std::string>& stageFiles, const std::string& defines = {});
 
 }  // namespace volpost::gl
