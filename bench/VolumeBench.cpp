@@ -160,12 +160,13 @@ int main(int argc, char** argv) {
     std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | - | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
                 volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
     // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the
-    // exact and pre-integrated modes, with its sort time per frame.
+    // exact, pre-integrated and sampling modes, with its sort time per frame.
     volume::RayCaster raycaster;
     volume::CellProjector vicp(volume::OrderMethod::Mpvonc), vicpExact(volume::OrderMethod::ImageSpace);
     const std::vector<IntegrationMode> allModes = {IntegrationMode::LinearSegments, IntegrationMode::LinearSegmentsIsoTable,
                                                    IntegrationMode::PreIntegrated, IntegrationMode::Sampling};
-    const std::vector<IntegrationMode> projectionModes = {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated};
+    const std::vector<IntegrationMode> projectionModes = {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated,
+                                                          IntegrationMode::Sampling};
     for (auto [caster, label, modes] : {std::tuple<volume::RayCaster*, const char*, const std::vector<IntegrationMode>*>{&raycaster, "raycast", &allModes},
                                         {&vicp, "vicp (MPVONC)", &projectionModes},
                                         {&vicpExact, "vicp (image-space order)", &projectionModes}}) {

@@ -119,14 +119,21 @@ void integratePreintegrated(float sf, float sb, float len) {
   }
 }
 
-float nextSample = 0.0;  // sampling mode: ray parameter of the next sample
-
+// Midpoint rule on one lattice along the ray: the piece [t0, t1) is cut at every multiple
+// of the step and each part gives one sample, at its middle, over its own length. The
+// lattice is the same wherever a piece starts, so pieces integrated one by one (the tets
+// along a ray, the fragments of cell projection, the pieces between iso-surfaces) take
+// exactly the samples of one walk along the whole ray, and where the ray enters or leaves
+// the mesh between two lattice points only the part inside counts.
 void integrateSampling(float t0, float t1, float sf, float sb) {
-  if (nextSample < t0) nextSample = t0 + 0.5 * samplingStep;
-  for (; nextSample < t1 && accT >= terminationTransmittance; nextSample += samplingStep) {
-    float w = (nextSample - t0) / max(t1 - t0, 1e-30);
+  float h = samplingStep;
+  for (float k = floor(t0 / h); accT >= terminationTransmittance; k += 1.0) {
+    float a = max(t0, k * h), b = min(t1, (k + 1.0) * h);
+    if (a >= t1) break;
+    if (b <= a) continue;  // the division rounded down
+    float w = (0.5 * (a + b) - t0) / max(t1 - t0, 1e-30);
     vec4 c = tfEval(mix(sf, sb, w));
-    float alpha = 1.0 - exp(-c.a * samplingStep);
+    float alpha = 1.0 - exp(-c.a * (b - a));
     composite(c.rgb * alpha, 1.0 - alpha);
   }
 }
