@@ -20,10 +20,11 @@ vec3 nudge;
 // Where the ray is inside the tet: between the last face plane it enters and the first it
 // leaves (the tet is convex). Each face's plane is computed from its vertices in ascending
 // index order, so the two tets sharing a face get the same crossing parameter bit for bit
-// and split the ray exactly there, whatever rounding did to it: neighbours neither overlap
-// nor leave a gap. A ray lying in a plane (within rounding: a grid seen along a diagonal,
-// a ray along a chain of edges) is nudged sideways by an infinitesimal amount, the same
-// for every plane, so that of all the tets around an edge exactly one keeps the segment.
+// and split the ray exactly there, whatever rounding did to it (a ray running nearly inside
+// the face included): neighbours neither overlap nor leave a gap. A ray exactly in a plane
+// is nudged sideways by an infinitesimal amount, the same for every plane, so that one
+// side only keeps it. (Treating rays within a tolerance of a plane as lying in it made
+// things worse: 1e-5 left 2.7e-3 errors on bar_hex8, none at all leaves 5.9e-6.)
 bool tetChord(uvec4 tv, out float tIn, out float tOut) {
   tIn = -3.4e38;
   tOut = 3.4e38;
@@ -38,17 +39,20 @@ bool tetChord(uvec4 tv, out float tIn, out float tOut) {
     if (flip) n = -n;  // exact: both neighbours still see the same magnitudes
     precise float den = dot(n, rayDir);
     precise float h = dot(n, a - rayOrigin);  // inside where t * den <= h
-    float scale = length(n);
-    if (abs(den) <= 1e-5 * scale && abs(h) <= 1e-5 * scale * (distance(a, rayOrigin) + length(nodes[f.y].xyz - a))) {
-      // In the plane: the nudged ray is inside iff it moves against the outward normal.
-      // (A plane containing the ray cannot be perpendicular to the nudge as well.)
+    if (den == 0.0 && h == 0.0) {
+      // The ray lies in the plane (an axis view with a row of pixel centres on a grid
+      // plane): the nudged ray is inside iff it moves against the outward normal. (A plane
+      // containing the ray cannot be perpendicular to the nudge as well.)
       if (dot(n, nudge) > 0.0 || (dot(n, nudge) == 0.0 && flip)) return false;
+      continue;
+    }
+    if (den == 0.0) {  // parallel: inside or outside all along
+      if (h < 0.0) return false;
       continue;
     }
     float t = h / den;
     if (den > 0.0) tOut = min(tOut, t);
-    else if (den < 0.0) tIn = max(tIn, t);
-    else if (h < 0.0) return false;
+    else tIn = max(tIn, t);
   }
   return tIn < tOut;
 }
