@@ -83,11 +83,6 @@ void RayCaster::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   gpu_ = buildTetMeshGpu(mesh, location, values);
   mesh_ = &mesh;
   location_ = location;
-  valueMin_ = INFINITY;
-  valueMax_ = -INFINITY;
-  for (double v : values)
-    if (std::isfinite(v)) valueMin_ = std::min(valueMin_, v), valueMax_ = std::max(valueMax_, v);
-  if (!(valueMax_ >= valueMin_)) valueMin_ = valueMax_ = 0.0;
   if (initialized_) {
     uploadMesh();
     rebuildTables();  // table ranges follow the values
@@ -100,11 +95,6 @@ void RayCaster::setValues(std::span<const double> values) {
     setVolume(*mesh_, location_, values);  // the set of renderable tets changed
     return;
   }
-  valueMin_ = INFINITY;
-  valueMax_ = -INFINITY;
-  for (double v : values)
-    if (std::isfinite(v)) valueMin_ = std::min(valueMin_, v), valueMax_ = std::max(valueMax_, v);
-  if (!(valueMax_ >= valueMin_)) valueMin_ = valueMax_ = 0.0;
   if (initialized_) {  // only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet
     if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
     else upload(cellValues_, gpu_.cellValues);
@@ -154,8 +144,9 @@ void RayCaster::rebuildTables() {
   }
   upload(tfColorTau_, colorTau);
   upload(tfValues_, values);
-  tableLo_ = std::min(valueMin_, tf_.empty() ? valueMin_ : tf_.minValue());
-  tableHi_ = std::max(valueMax_, tf_.empty() ? valueMax_ : tf_.maxValue());
+  // Table ranges follow the values (their range is kept with the GPU structure).
+  tableLo_ = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
+  tableHi_ = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
   if (!(tableHi_ > tableLo_)) tableHi_ = tableLo_ + 1.0;
   const optics::IsoDetectionTable iso(tf_, tableLo_, tableHi_, isoResolution);
   if (!isoTable_) {

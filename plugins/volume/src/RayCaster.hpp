@@ -63,7 +63,6 @@ class RayCaster : public VolumeRenderer {
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
   TransferFunction tf_;
-  double valueMin_ = 0.0, valueMax_ = 1.0;
   std::vector<ClipPlane> clipPlanes_;
   std::vector<optics::IsoSurface> isoSurfaces_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;

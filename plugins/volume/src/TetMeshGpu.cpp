@@ -151,6 +151,8 @@ void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
   for (double v : values)
     if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   if (!(hi >= lo)) lo = hi = 0.0;
+  g.valueMin = lo;
+  g.valueMax = hi;
   g.valueOffset = lo;
   const double scale = 1.0 / (hi - lo);
   // A constant field (or one whose spread is below double's normal range) maps to 0; a

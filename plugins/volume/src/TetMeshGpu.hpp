@@ -38,6 +38,7 @@ struct TetMeshGpu {
   /// the integration. Everything compared with values (control points, iso-values, table
   /// ranges) goes through gpuValue too.
   double valueOffset = 0.0, valueScale = 1.0;
+  double valueMin = 0.0, valueMax = 0.0;  ///< range of the finite values (0, 0 when none)
 
   float gpuValue(double v) const { return float((v - valueOffset) * valueScale); }
 
