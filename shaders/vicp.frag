@@ -12,10 +12,17 @@ out vec4 fragColor;
 // points out: face k is opposite vertex k.
 const ivec3 OUTWARD[4] = ivec3[4](ivec3(1, 2, 3), ivec3(0, 3, 2), ivec3(0, 1, 3), ivec3(0, 2, 1));
 
-// Direction in which the ray is nudged, for rays that lie inside a face's plane (see
-// tetChord): perspective moves its direction, orthographic its origin, both across the
-// screen.
-vec3 nudge;
+vec2 ndc;  // this pixel's centre
+
+// Direction in which the ray is nudged, for rays that lie exactly in a face's plane (see
+// tetChord): perspective moves its direction, orthographic its origin, both toward a
+// neighbouring screen position along a direction no mesh is likely to align a face with
+// (not a pixel axis). Computed only for such rays, which are rare.
+vec3 nudgeDirection() {
+  vec2 nudged = ndc + vec2(1e-3, 0.318e-3);
+  vec4 nearQ = inverseViewProjection * vec4(nudged, -1.0, 1.0), farQ = inverseViewProjection * vec4(nudged, 1.0, 1.0);
+  return orthographic ? nearQ.xyz / nearQ.w - rayOrigin : normalize(farQ.xyz / farQ.w - eye) - rayDir;
+}
 
 // Where the ray is inside the tet: between the last face plane it enters and the first it
 // leaves (the tet is convex). Each face's plane is computed from its vertices in ascending
@@ -43,7 +50,8 @@ bool tetChord(uvec4 tv, out float tIn, out float tOut) {
       // The ray lies in the plane (an axis view with a row of pixel centres on a grid
       // plane): the nudged ray is inside iff it moves against the outward normal. (A plane
       // containing the ray cannot be perpendicular to the nudge as well.)
-      if (dot(n, nudge) > 0.0 || (dot(n, nudge) == 0.0 && flip)) return false;
+      float side = dot(n, nudgeDirection());
+      if (side > 0.0 || (side == 0.0 && flip)) return false;
       continue;
     }
     if (den == 0.0) {  // parallel: inside or outside all along
@@ -59,18 +67,11 @@ bool tetChord(uvec4 tv, out float tIn, out float tOut) {
 
 void main() {
   // The image is drawn y-flipped (its first row is the top): window row y is NDC 1 - 2y/h.
-  vec2 ndc = vec2(2.0 * gl_FragCoord.x / float(imageSize_.x) - 1.0, 1.0 - 2.0 * gl_FragCoord.y / float(imageSize_.y));
+  ndc = vec2(2.0 * gl_FragCoord.x / float(imageSize_.x) - 1.0, 1.0 - 2.0 * gl_FragCoord.y / float(imageSize_.y));
   vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
   rayOrigin = orthographic ? nearPoint : eye;
   rayDir = normalize(farPoint - rayOrigin);
-  // The nudge: toward a neighbouring screen position, along a direction no mesh is likely
-  // to align a face with (not a pixel axis).
-  vec2 ndcNudged = ndc + vec2(1e-3, 0.318e-3);
-  vec4 nearQ = inverseViewProjection * vec4(ndcNudged, -1.0, 1.0), farQ = inverseViewProjection * vec4(ndcNudged, 1.0, 1.0);
-  vec3 nearNudged = nearQ.xyz / nearQ.w;
-  nudge = orthographic ? nearNudged - nearPoint : normalize(farQ.xyz / farQ.w - eye) - rayDir;
-
   uvec4 tv = tets[vTet];
   float tIn, tOut;
   if (!tetChord(tv, tIn, tOut)) discard;
