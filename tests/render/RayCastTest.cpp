@@ -48,6 +48,10 @@ class RayCast : public ::testing::Test {
   }
 
   std::vector<float> gpuImage(const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
+    return imageOf(*caster_, camera, w, h, sceneDepth);
+  }
+
+  static std::vector<float> imageOf(volume::RayCaster& renderer, const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
     OffscreenTarget target(w, h);
     glClearNamedFramebufferfv(target.framebuffer(), GL_DEPTH, 0, &sceneDepth);
     RenderContext ctx;
@@ -59,9 +63,9 @@ class RayCast : public ::testing::Test {
     glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    caster_->render(ctx);
+    renderer.render(ctx);
     glFinish();
-    return caster_->readImage();
+    return renderer.readImage();
   }
 
   static ImageError compare(const std::vector<float>& gpu, const optics::ReferenceImage& ref) {
@@ -446,17 +450,15 @@ TEST_F(CellProjection, ConvexGridMatchesTheReferenceInEveryMode) {
   caster_->setSamplingStep(0.05);
   const ImageError sampled = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   const auto projected = gpuImage(isoCamera(grid), 64, 64);
-  auto walker = std::make_unique<volume::RayCaster>();
-  walker->initialize();
-  walker->setVolume(grid, FieldLocation::Node, field(grid));
-  walker->setTransferFunction(kTf);
-  walker->setIntegrationMode(IntegrationMode::Sampling);
-  walker->setSamplingStep(0.05);
-  walker->setTerminationThreshold(0.0);
-  std::swap(caster_, walker);
-  const auto walked = gpuImage(isoCamera(grid), 64, 64);
-  std::swap(caster_, walker);
-  walker->release();
+  volume::RayCaster walker;
+  walker.initialize();
+  walker.setVolume(grid, FieldLocation::Node, field(grid));
+  walker.setTransferFunction(kTf);
+  walker.setIntegrationMode(IntegrationMode::Sampling);
+  walker.setSamplingStep(0.05);
+  walker.setTerminationThreshold(0.0);
+  const auto walked = imageOf(walker, isoCamera(grid), 64, 64);
+  walker.release();
   double apart = 0.0;
   for (std::size_t i = 0; i < walked.size(); ++i) apart = std::max(apart, double(std::abs(walked[i] - projected[i])));
   std::printf("vicp sampling vs raycast sampling: max %.3g\n", apart);
