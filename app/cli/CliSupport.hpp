@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <exception>
 #include <memory>
 
 namespace volpost::app {
@@ -19,5 +20,19 @@ std::unique_ptr<PluginManager> loadPluginsForCli();
 Progress terminalProgress(const std::string& label);
 
 void printError(const QString& message);
+
+/// Runs a verb's work and returns its exit code; a cancel (Ctrl+C on the progress) is 1,
+/// an error is printed and is 1.
+template <typename Work>
+int exitCodeOf(Work&& work) {
+  try {
+    return work();
+  } catch (const Cancelled&) {
+    return 1;
+  } catch (const std::exception& e) {
+    printError(e.what());
+    return 1;
+  }
+}
 
 }  // namespace volpost::app

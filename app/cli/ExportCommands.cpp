@@ -12,6 +12,7 @@
 
 #include <QCommandLineParser>
 
+#include <cmath>
 #include <cstdio>
 
 namespace volpost::app {
@@ -42,18 +43,13 @@ int runConvert(const QStringList& args) {
     return 2;
   }
   auto plugins = loadPluginsForCli();
-  try {
+  return exitCodeOf([&] {
     const auto model = plugins->readers().load(files[0].toStdString(), terminalProgress("reading"));
     writeVtu(*model, files[1].toStdString(), terminalProgress("writing"));
     std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->mesh.nodeCount(),
                 model->mesh.cellCount(), model->fields.size());
     return 0;
-  } catch (const Cancelled&) {
-    return 1;
-  } catch (const std::exception& e) {
-    printError(e.what());
-    return 1;
-  }
+  });
 }
 
 int runSurface(const QStringList& args) {
@@ -79,14 +75,14 @@ int runSurface(const QStringList& args) {
   }
   bool okIso = true;
   const double isoValue = parser.isSet(iso) ? parser.value(iso).toDouble(&okIso) : 0.0;
-  if (!okIso) {
+  if (!okIso || !std::isfinite(isoValue)) {  // Qt reads "nan" and "inf" as numbers
     printError(QString("--iso %1 is not a number").arg(parser.value(iso)));
     return 2;
   }
   const auto stepIndex = parseStep(parser, step);
   if (!stepIndex) return 2;
   auto plugins = loadPluginsForCli();
-  try {
+  return exitCodeOf([&] {
     const auto session = ModelSession::load(plugins->readers(), files[0].toStdString(), terminalProgress("reading"));
     if (!parser.isSet(field)) {
       writeSurface(session->surface().mesh, session->surface().origin, files[1].toStdString());
@@ -107,12 +103,7 @@ int runSurface(const QStringList& args) {
     std::printf("%s: %s = %g, %zu triangles\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
                 surface.mesh.n_faces());
     return 0;
-  } catch (const Cancelled&) {
-    return 1;
-  } catch (const std::exception& e) {
-    printError(e.what());
-    return 1;
-  }
+  });
 }
 
 int runProbe(const QStringList& args) {
@@ -141,7 +132,7 @@ int runProbe(const QStringList& args) {
   const auto stepIndex = parseStep(parser, step);
   if (!stepIndex) return 2;
   auto plugins = loadPluginsForCli();
-  try {
+  return exitCodeOf([&] {
     const auto session = ModelSession::load(plugins->readers(), parser.positionalArguments().first().toStdString(),
                                             terminalProgress("reading"));
     const Quantity q = session->findQuantity(parser.value(field).toStdString());
@@ -164,12 +155,7 @@ int runProbe(const QStringList& args) {
                   static_cast<long long>(ids.empty() ? std::int64_t(where->cell) : ids[where->cell]));
     }
     return outside == 0 ? 0 : 1;
-  } catch (const Cancelled&) {
-    return 1;
-  } catch (const std::exception& e) {
-    printError(e.what());
-    return 1;
-  }
+  });
 }
 
 }  // namespace volpost::app
