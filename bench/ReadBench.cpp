@@ -4,13 +4,7 @@
 // Abaqus deck and VTU. Each case runs in its own child process so its peak memory (max
 // RSS) is its own. Prints a Markdown table.
 //   volpost_read_bench [--cells-per-axis N] [--keep DIR]
-#include "AbaqusInputReader.hpp"
-#include "ExodusReader.hpp"
-#include "FrdReader.hpp"
-#include "GmshReader.hpp"
-#include "NeutralFileReader.hpp"
-#include "VtkLegacyReader.hpp"
-#include "VtuReader.hpp"
+#include "AllReaders.hpp"
 
 #include <volpost/core/ReaderRegistry.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
@@ -35,22 +29,7 @@ namespace {
 
 double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 
-const ReaderRegistry& readers() {
-  static const meshio::VtuReader vtu;
-  static const meshio::VtkLegacyReader legacy;
-  static const meshio::GmshReader gmsh;
-  static const meshio::AbaqusInputReader inp;
-  static const meshio::FrdReader frd;
-  static const meshio::ExodusReader exodus;
-  static const meshio::NeutralFileReader neutral;
-  static const ReaderRegistry registry = [] {
-    ReaderRegistry r;
-    for (const MeshReader* reader : std::initializer_list<const MeshReader*>{&vtu, &legacy, &gmsh, &inp, &frd, &exodus, &neutral})
-      r.add(reader);
-    return r;
-  }();
-  return registry;
-}
+const ReaderRegistry& readers() { return meshio::allReadersRegistry(); }
 
 // n^3 unit hexahedra with a nodal field, in four files.
 std::vector<std::string> writeHexBlock(int n, const std::string& dir) {

@@ -2,13 +2,7 @@
 // The meshio plugin: hands the host its file readers.
 #pragma once
 
-#include "AbaqusInputReader.hpp"
-#include "FrdReader.hpp"
-#include "ExodusReader.hpp"
-#include "GmshReader.hpp"
-#include "NeutralFileReader.hpp"
-#include "VtkLegacyReader.hpp"
-#include "VtuReader.hpp"
+#include "AllReaders.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
 
@@ -22,16 +16,13 @@ class MeshioPlugin : public QObject, public ReaderPlugin {
   Q_INTERFACES(volpost::ReaderPlugin)
 
  public:
-  QList<const MeshReader*> readers() const override { return {&vtu_, &legacy_, &gmsh_, &inp_, &frd_, &exodus_, &neutral_}; }
+  QList<const MeshReader*> readers() const override {
+    const auto list = readers_.list();
+    return QList<const MeshReader*>(list.begin(), list.end());
+  }
 
  private:
-  VtuReader vtu_;
-  VtkLegacyReader legacy_;
-  GmshReader gmsh_;
-  AbaqusInputReader inp_;
-  FrdReader frd_;
-  ExodusReader exodus_;
-  NeutralFileReader neutral_;
+  AllReaders readers_;
 };
 
 }  // namespace volpost::meshio
