@@ -3,6 +3,8 @@
 
 #include <QStringList>
 
+#include <cmath>
+
 namespace volpost::app {
 namespace {
 
@@ -13,7 +15,7 @@ std::optional<std::vector<double>> numbers(const QString& text, int count) {
   for (const QString& p : parts) {
     bool ok = false;
     v.push_back(p.trimmed().toDouble(&ok));
-    if (!ok) return std::nullopt;
+    if (!ok || !std::isfinite(v.back())) return std::nullopt;  // Qt reads "nan" and "inf" as numbers
   }
   return v;
 }
@@ -56,7 +58,7 @@ std::optional<optics::IsoSurface> parseIsoSurface(const QString& text) {
   const QStringList parts = text.trimmed().split(':');
   bool ok = false;
   optics::IsoSurface iso{parts[0].toDouble(&ok), glm::dvec3(1.0), 1.0};
-  if (!ok || parts.size() > 3) return std::nullopt;
+  if (!ok || !std::isfinite(iso.value) || parts.size() > 3) return std::nullopt;
   if (parts.size() >= 2) {
     const auto rgb = numbers(parts[1], 3);
     if (!rgb) return std::nullopt;

@@ -90,6 +90,11 @@ TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
   const auto badClip = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --clip 1,2,3 -o /tmp/x.png");
   EXPECT_EQ(badClip.exitCode, 2);
   EXPECT_NE(badClip.output.find("--clip 1,2,3"), std::string::npos) << badClip.output;
+  const auto nanClip = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --clip nan,0,0,1,0,0 -o /tmp/x.png");
+  EXPECT_EQ(nanClip.exitCode, 2);
+  EXPECT_NE(nanClip.output.find("--clip nan,0,0,1,0,0"), std::string::npos) << nanClip.output;
+  const auto infIso = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --iso inf -o /tmp/x.png");
+  EXPECT_EQ(infIso.exitCode, 2) << infIso.output;
   const auto badTf = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference --field S11 --tf " +
                                 dataFile("bar/analytic_check.json") + " -o /tmp/x.png");
   EXPECT_EQ(badTf.exitCode, 1);
