@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "CellProjector.hpp"
 
-#include <volpost/render/ShaderLibrary.hpp>
+#include "VolumeBindings.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
@@ -9,7 +9,7 @@
 namespace volpost::volume {
 
 void CellProjector::initialize() {
-  RayCaster::initialize();
+  volume_.initialize();
   order_ = gl::createBuffer();
   framebuffer_ = gl::createFramebuffer();
   emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
@@ -18,18 +18,18 @@ void CellProjector::initialize() {
 }
 
 void CellProjector::release() {
-  for (gl::Program& program : projectionPrograms_) program.reset();
   order_.reset();
   framebuffer_.reset();
   emptyVertexArray_.reset();
   attachedImage_ = 0;
-  RayCaster::release();
+  volume_.release();
 }
 
-void CellProjector::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
-  RayCaster::setVolume(mesh, location, values);
-  // The sort sees exactly the tets the GPU holds, in the GPU's numbering.
-  const TetMeshGpu& g = gpuMesh();
+// The sort sees exactly the tets the GPU holds, in the GPU's numbering, with the GPU
+// structure's adjacency.
+void CellProjector::updateSorter() {
+  if (sorter_ && sortedRevision_ == volume_.meshRevision()) return;
+  const TetMeshGpu& g = volume_.mesh();
   sortMesh_ = Mesh();
   sortMesh_.nodes.reserve(g.nodes.size());
   for (const glm::vec4& n : g.nodes) sortMesh_.nodes.push_back(glm::dvec3(n) + g.origin);
@@ -38,35 +38,36 @@ void CellProjector::setVolume(const Mesh& mesh, FieldLocation location, std::spa
     const std::array<NodeIndex, 4> v = {t.x, t.y, t.z, t.w};
     sortMesh_.addCell(CellType::Tet4, v);
   }
-  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_, g.neighbors);  // the GPU structure's adjacency
+  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_, g.neighbors);
+  sortedRevision_ = volume_.meshRevision();
 }
 
 void CellProjector::render(const RenderContext& ctx) {
-  if (!ready() || !sorter_ || ctx.width <= 0 || ctx.height <= 0) return;
-  prepareFrame(ctx);
+  if (!volume_.initialized() || !volume_.hasTets() || ctx.width <= 0 || ctx.height <= 0) return;
+  volume_.prepare(ctx);
+  updateSorter();
   lastOrder_ = sorter_->order(ctx.camera, method_, ctx.width, ctx.height);
-  // Only the order travels per frame: 4 bytes per tet.
   glNamedBufferData(order_.id(), GLsizeiptr(std::max<std::size_t>(lastOrder_.backToFront.size() * 4, 16)),
                     lastOrder_.backToFront.data(), GL_STREAM_DRAW);
-  if (attachedImage_ != image().id()) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, image().id(), 0);
-    attachedImage_ = image().id();
+  if (attachedImage_ != volume_.image()) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, volume_.image(), 0);
+    attachedImage_ = volume_.image();
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, ctx.width, ctx.height);
   const float clear[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
 
-  const GLuint p = programForMode(projectionPrograms_, {"vicp.vert", "vicp.frag"});
+  const GLuint p = volume_.program({"volume/vicp.vert", "volume/vicp.frag"});
   glUseProgram(p);
-  setSegmentUniforms(p, ctx);
+  volume_.setSegmentUniforms(p, ctx);
   // Drawn upside down so that the image's first row is the top, as the ray caster's.
   const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
-  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpuMesh().origin));
+  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(volume_.mesh().origin));
   glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
   glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
-  bindSegmentResources(ctx);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, order_.id());
+  volume_.bindSegmentResources(ctx);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kOrder, order_.id());
   glBindVertexArray(emptyVertexArray_.id());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -75,13 +76,12 @@ void CellProjector::render(const RenderContext& ctx) {
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 6));  // two triangles per tet
   glDisable(GL_BLEND);
   glBindVertexArray(0);
-  glBindTextureUnit(3, 0);
-  compositeOver(ctx);
+  volume_.compositeOver(ctx);
   gl::check("CellProjector::render");
 }
 
 VolumeStats CellProjector::stats() const {
-  VolumeStats s = RayCaster::stats();
+  VolumeStats s = volume_.stats();
   s.gpuBytes += lastOrder_.backToFront.size() * 4;
   s.meshBytes += sortMesh_.cellCount() * 4;  // the sorted index list
   s.lastSortMs = lastOrder_.milliseconds;

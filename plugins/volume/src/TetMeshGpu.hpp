@@ -4,7 +4,7 @@
 // its position relative to the mesh center and its value (16 B); plus the boundary faces
 // and a BVH over them to find where rays enter (and re-enter) the mesh. Face planes,
 // barycentric weights and gradients are computed in the shader from the vertices, which
-// trades arithmetic for memory (the seed stored 96 B per tet, Table 5).
+// trades arithmetic for memory (Espinha 2005 stored 96 B per tet, Table 5).
 #pragma once
 
 #include <volpost/core/Field.hpp>

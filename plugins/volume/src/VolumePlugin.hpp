@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The volume plugin: hands the host its GPU volume renderers.
+// The volume plugin: hands the host its GPU volume renderers and their names in words.
 #pragma once
 
 #include "CellProjector.hpp"
@@ -20,6 +20,12 @@ class VolumePlugin : public QObject, public RendererPlugin {
   /// raycast; vicp: cell projection sorted by MPVONC (fast); vicp-exact: cell projection
   /// sorted in image space (valid on every pixel ray of non-convex meshes).
   QStringList rendererNames() const override { return {"raycast", "vicp", "vicp-exact"}; }
+  QString rendererLabel(const QString& name) const override {
+    if (name == "raycast") return "Ray casting";
+    if (name == "vicp") return "Cell projection (fast sort, may err on non-convex meshes)";
+    if (name == "vicp-exact") return "Cell projection (exact sort per pixel)";
+    return name;
+  }
   std::unique_ptr<Renderer> createRenderer(const QString& name) const override {
     if (name == "raycast") return std::make_unique<RayCaster>();
     if (name == "vicp") return std::make_unique<CellProjector>(OrderMethod::Mpvonc);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace volpost {
 namespace {
@@ -34,6 +35,25 @@ void Camera::fit(const Bounds& bounds) {
   radius_ = bounds.valid ? std::max(0.5 * bounds.diagonal(), 1e-30) : 1.0;
   const double halfFov = glm::radians(fovY_) * 0.5;
   distance_ = radius_ / std::sin(halfFov) * 1.02;
+}
+
+void Camera::lookAt(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up) {
+  const glm::dvec3 view = target - eye;
+  const double distance = glm::length(view);
+  const bool finite = std::isfinite(distance) && std::isfinite(glm::length(up));
+  if (!finite || !(distance > 0.0))
+    throw std::invalid_argument("camera: the eye must differ from the target (finite coordinates)");
+  if (!(glm::length(glm::cross(view / distance, up)) > 1e-9 * glm::length(up)))
+    throw std::invalid_argument("camera: the up direction must not be parallel to the view direction");
+  target_ = target;
+  distance_ = distance;
+  rotation_ = lookRotation(view, up);
+}
+
+void Camera::setFieldOfView(double degrees) {
+  if (!(degrees > 0.0 && degrees < 180.0))
+    throw std::invalid_argument("camera: the angle of view must lie between 0 and 180 degrees");
+  fovY_ = degrees;
 }
 
 void Camera::setView(StandardView view) {

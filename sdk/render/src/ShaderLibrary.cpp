@@ -3,28 +3,50 @@
 
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <string_view>
 
 namespace volpost::gl {
-namespace detail {
-const std::map<std::string, std::string_view>& embeddedShaders();  // generated
+namespace {
+
+struct Registry {
+  std::mutex mutex;
+  std::map<std::string, std::string_view> files;  ///< full name -> source
+};
+
+Registry& registry() {
+  static Registry r;
+  return r;
 }
 
-namespace {
+bool registered(const std::string& name) {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  return r.files.count(name) > 0;
+}
 
 std::string rawSource(const std::string& name) {
   if (const char* dir = std::getenv("VOLPOST_SHADER_DIR")) {
     std::ifstream in(std::filesystem::path(dir) / name);
     if (in) return std::string(std::istreambuf_iterator<char>(in), {});
   }
-  const auto& files = detail::embeddedShaders();
-  const auto it = files.find(name);
-  if (it == files.end()) throw std::runtime_error("no shader file named " + name);
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  const auto it = r.files.find(name);
+  if (it == r.files.end()) throw std::runtime_error("no shader file named " + name + " is registered");
   return std::string(it->second);
+}
+
+// "volume/raycast.comp" includes "common/x.glsl": "volume/common/x.glsl" if there is one.
+std::string includeTarget(const std::string& includer, const std::string& written) {
+  const auto slash = includer.find('/');
+  if (slash != std::string::npos) {
+    const std::string underPrefix = includer.substr(0, slash + 1) + written;
+    if (registered(underPrefix)) return underPrefix;
+  }
+  return written;
 }
 
 std::string resolveIncludes(const std::string& name, std::set<std::string>& seen) {
@@ -37,7 +59,7 @@ std::string resolveIncludes(const std::string& name, std::set<std::string>& seen
     if (pos != std::string::npos && line.find_first_not_of(" \t") == pos) {
       const auto a = line.find('"'), b = line.rfind('"');
       if (a == std::string::npos || b <= a) throw std::runtime_error(name + ": bad #include line: " + line);
-      out << resolveIncludes(line.substr(a + 1, b - a - 1), seen);
+      out << resolveIncludes(includeTarget(name, line.substr(a + 1, b - a - 1)), seen);
     } else {
       out << line << '\n';
     }
@@ -73,14 +95,27 @@ std::string withDefines(std::string source, const std::string& defines) {
 
 }  // namespace
 
+void registerShaders(const std::string& prefix, const std::map<std::string, std::string_view>& files) {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
+  for (const auto& [file, source] : files) {
+    const std::string name = prefix.empty() ? file : prefix + "/" + file;
+    const auto [it, inserted] = r.files.emplace(name, source);
+    if (!inserted && it->second != source)
+      throw std::logic_error("shader " + name + " is registered twice with different sources");
+  }
+}
+
 std::string shaderSource(const std::string& name) {
   std::set<std::string> seen;
   return resolveIncludes(name, seen);
 }
 
 std::vector<std::string> shaderNames() {
+  Registry& r = registry();
+  const std::lock_guard lock(r.mutex);
   std::vector<std::string> names;
-  for (const auto& [name, _] : detail::embeddedShaders()) names.push_back(name);
+  for (const auto& [name, _] : r.files) names.push_back(name);
   return names;
 }
 

@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 namespace volpost::optics {
-namespace {
 
 double texelValue(double sMin, double sMax, int n, int i) { return sMin + (sMax - sMin) * i / (n - 1); }
 
@@ -14,7 +13,6 @@ int nearestTexel(double sMin, double sMax, int n, double s) {
   return std::clamp(int(std::lround((s - sMin) / (sMax - sMin) * (n - 1))), 0, n - 1);
 }
 
-// Control points met going from a toward b: beyond a (strictly), up to b (inclusive).
 std::vector<double> crossed(const std::vector<double>& sorted, double a, double b) {
   std::vector<double> out;
   if (a < b) {
@@ -27,15 +25,13 @@ std::vector<double> crossed(const std::vector<double>& sorted, double a, double 
   return out;
 }
 
-void checkResolution(int n, double sMin, double sMax) {
+void checkTableResolution(int n, double sMin, double sMax) {
   if (n < 2 || !(sMax > sMin)) throw std::invalid_argument("iso table: resolution must be >= 2 and sMax > sMin");
 }
 
-}  // namespace
-
 IsoDetectionTable::IsoDetectionTable(const TransferFunction& tf, double lo, double hi, int n)
     : resolution(n), sMin(lo), sMax(hi), values(std::size_t(n) * std::size_t(n) * 2) {
-  checkResolution(n, lo, hi);
+  checkTableResolution(n, lo, hi);
   std::vector<double> points;
   for (const auto& p : tf.points())
     if (points.empty() || points.back() != p.value) points.push_back(p.value);
@@ -53,33 +49,6 @@ std::pair<double, double> IsoDetectionTable::at(double sFront, double sBack) con
   const float* v = &values[(std::size_t(b) * std::size_t(resolution) + std::size_t(f)) * 2];
   const auto toValue = [&](float t) { return t < 0.0f ? -1.0 : sMin + double(t) * (sMax - sMin); };
   return {toValue(v[0]), toValue(v[1])};
-}
-
-IsoSurfaceTable::IsoSurfaceTable(const std::vector<IsoSurface>& surfaces, double lo, double hi, int n)
-    : resolution(n), sMin(lo), sMax(hi), values(std::size_t(n) * std::size_t(n) * 4) {
-  checkResolution(n, lo, hi);
-  std::vector<IsoSurface> sorted = surfaces;
-  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
-  std::vector<double> isoValues;
-  for (const auto& s : sorted) isoValues.push_back(s.value);
-  for (int b = 0; b < n; ++b)
-    for (int f = 0; f < n; ++f) {
-      const auto c = crossed(isoValues, texelValue(lo, hi, n, f), texelValue(lo, hi, n, b));
-      float* out = &values[(std::size_t(b) * std::size_t(n) + std::size_t(f)) * 4];
-      if (c.empty()) {
-        std::fill(out, out + 4, 0.0f);
-        continue;
-      }
-      const auto& s = *std::find_if(sorted.begin(), sorted.end(), [&](const IsoSurface& x) { return x.value == c[0]; });
-      for (int k = 0; k < 3; ++k) out[k] = float(s.color[k] * s.opacity);
-      out[3] = float(s.opacity);
-    }
-}
-
-glm::dvec4 IsoSurfaceTable::at(double sFront, double sBack) const {
-  const int f = nearestTexel(sMin, sMax, resolution, sFront), b = nearestTexel(sMin, sMax, resolution, sBack);
-  const float* v = &values[(std::size_t(b) * std::size_t(resolution) + std::size_t(f)) * 4];
-  return {v[0], v[1], v[2], v[3]};
 }
 
 }  // namespace volpost::optics

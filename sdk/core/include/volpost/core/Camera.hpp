@@ -31,9 +31,16 @@ class Camera {
   /// factor > 1 moves closer (perspective) or magnifies (orthographic).
   void zoom(double factor);
 
+  /// Places the eye and the target explicitly; `up` need not be orthogonal to the view
+  /// direction (it is made so). The scene radius set by fit() is kept (it sets the depth
+  /// range). Throws std::invalid_argument if eye == target or up is parallel to the view.
+  void lookAt(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up);
+
   void setProjection(Projection p) { projection_ = p; }
   Projection projection() const { return projection_; }
-  void setFieldOfView(double degrees) { fovY_ = degrees; }
+  /// Vertical angle of view, degrees, in (0, 180). Throws std::invalid_argument otherwise.
+  void setFieldOfView(double degrees);
+  double fieldOfView() const { return fovY_; }
 
   glm::dvec3 target() const { return target_; }
   glm::dvec3 eye() const;

@@ -35,7 +35,10 @@ class ReaderPlugin {
 class RendererPlugin {
  public:
   virtual ~RendererPlugin() = default;
+  /// The names the command line and state files use ("raycast"), in menu order.
   virtual QStringList rendererNames() const = 0;
+  /// What a user reads in the window's menu for `name` ("Ray casting"), in plain words.
+  virtual QString rendererLabel(const QString& name) const = 0;
   /// A new renderer; the caller initializes it with a current GL context.
   virtual std::unique_ptr<Renderer> createRenderer(const QString& name) const = 0;
 };
@@ -76,9 +79,9 @@ class PanelPlugin {
 
 }  // namespace volpost
 
-#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/1"
-#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/1"
-#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/1"
+#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/2"
+#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/2"
+#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/2"
 
 Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
 Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Move-only owners of GL 4.5 objects (direct state access). Destroy them only while their
-// context is current: renderers free them in release(ctx), never in destructors alone.
+// context is current: renderers free them in release(), never in destructors alone.
 #pragma once
 
 #include <volpost/render/GL.hpp>

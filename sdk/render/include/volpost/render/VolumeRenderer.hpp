@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The interface of GPU volume renderers (ray casting, cell projection), provided by
-// renderer plugins. The host hands it the mesh and one result; transfer-function and
-// clip-plane changes never re-upload the mesh.
+// renderer plugins, and the contract every one of them honours: how many clip planes and
+// iso-surfaces, the integration modes and their one written form each.
+//
+// Setters only record state: they make no GL call and may be called without a context.
+// render() (a context current) uploads and rebuilds what changed since the last frame,
+// once: moving a clip plane costs only the frame, a transfer-function edit rebuilds the
+// tables only, a new result or step uploads only the values.
 #pragma once
 
 #include <volpost/core/ClipPlane.hpp>
@@ -11,20 +16,39 @@
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/Renderer.hpp>
 
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace volpost {
+
+/// At most this many clip planes (a clip box is six, plus two free planes) and
+/// iso-surfaces per volume. Shaders receive them as MAX_CLIP_PLANES / MAX_ISO_SURFACES.
+inline constexpr int kMaxClipPlanes = 8;
+inline constexpr int kMaxIsoSurfaces = 8;
+/// "#define MAX_CLIP_PLANES 8\n#define MAX_ISO_SURFACES 8\n", for buildProgram.
+std::string volumeLimitDefines();
 
 /// How a renderer integrates the transfer function along a ray segment.
 enum class IntegrationMode {
   LinearSegments,          ///< cut exactly at every control point crossed, psi table
   PreIntegrated,           ///< 3D (s_front, s_back, length) table
   Sampling,                ///< fixed step, the baseline users know from other tools
-  LinearSegmentsIsoTable,  ///< the seed's 4.2: cuts looked up in the 2D iso-detection texture
+  LinearSegmentsIsoTable,  ///< cut points looked up in a 2D (s_front, s_back) table (Espinha 2005, 4.2)
 };
-const char* toString(IntegrationMode mode);
+/// The one written form of each mode, used by the command line, state files, benches
+/// and settings: "linear", "pre-integrated", "sampling", "iso-table".
+std::string_view toString(IntegrationMode mode);
+/// The mode written `name` (exactly as toString writes it), or nullopt.
+std::optional<IntegrationMode> integrationModeFromString(std::string_view name);
+/// Every mode, in menu order.
+std::vector<IntegrationMode> allIntegrationModes();
+/// "linear, iso-table, pre-integrated, sampling": for messages listing the choices.
+std::string integrationModeChoices();
+/// Words for a menu or a report: "Linear segments, exact cuts", ...
+std::string_view describe(IntegrationMode mode);
 
 struct VolumeStats {
   std::size_t gpuBytes = 0;        ///< buffers and textures this renderer holds
@@ -32,19 +56,28 @@ struct VolumeStats {
   std::size_t tetrahedra = 0;
   double lastTransferFunctionMs = 0.0;  ///< CPU+upload time of the last TF change
   double lastSortMs = 0.0;              ///< cell projection: the last frame's visibility sort
+  // What render() has done so far (counts since initialize()): the cost of an interaction
+  // is visible in tests, e.g. a dragged plane must leave all three unchanged.
+  std::size_t meshUploads = 0;     ///< the whole mesh structure went to the GPU
+  std::size_t valueUploads = 0;    ///< only the values went
+  std::size_t tableBuilds = 0;     ///< transfer-function tables were rebuilt
 };
 
 class VolumeRenderer : public Renderer {
  public:
-  /// Mesh of tetrahedra (tet4, tet10 corners) and one value per node or per cell.
-  /// Throws std::invalid_argument for other cells (tetrahedralize first).
+  /// Mesh of tetrahedra (tet4, tet10 corners) and one value per node or per cell. The mesh
+  /// must outlive the renderer's use of it (until the next setVolume or release); the
+  /// values are copied. Throws std::invalid_argument for other cells (tetrahedralize
+  /// first) or a wrong value count.
   virtual void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) = 0;
   /// Only the values change (another result or step on the same mesh).
   virtual void setValues(std::span<const double> values) = 0;
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
+  /// Throws std::invalid_argument for more than kMaxClipPlanes.
   virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;
-  /// Iso-surfaces (up to 8) drawn where rays cross their values, opaque or translucent,
-  /// shaded by the cell gradient and composited in order with the volume.
+  /// Iso-surfaces drawn where rays cross their values, opaque or translucent, shaded by
+  /// the cell gradient and composited in order with the volume. Throws
+  /// std::invalid_argument for more than kMaxIsoSurfaces.
   virtual void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) = 0;
   virtual void setIntegrationMode(IntegrationMode mode) = 0;
   /// Sampling mode's step, model length units.
@@ -53,6 +86,7 @@ class VolumeRenderer : public Renderer {
   virtual void setTerminationThreshold(double transmittance) = 0;
   virtual VolumeStats stats() const = 0;
   /// The last frame as premultiplied RGBA floats, top row first (for tests and benches).
+  /// A context is current.
   virtual std::vector<float> readImage() const = 0;
   /// Interactive use: slow transfer-function tables (the pre-integrated one) are built on
   /// a worker thread while frames keep using the previous table; rapid changes coalesce to

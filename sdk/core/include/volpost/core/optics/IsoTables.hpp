@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The 2D tables of the GPU linear-segment integration and GPU iso-surfaces, over
+// The 2D table of the GPU linear-segment integration (cut points), over
 // (s_front, s_back) texels spanning [sMin, sMax] (texel i at i / (N - 1) of the span).
 #pragma once
 
@@ -12,7 +12,16 @@
 
 namespace volpost::optics {
 
-/// Seed 004, 4.2: for a segment from s_front to s_back, the first control point crossed
+/// The scalar value of texel i of n spanning [sMin, sMax], and the texel nearest to s.
+double texelValue(double sMin, double sMax, int n, int i);
+int nearestTexel(double sMin, double sMax, int n, double s);
+/// Values of `sorted` (ascending) met going from a toward b: beyond a (strictly), up to b
+/// (inclusive), in the order met.
+std::vector<double> crossed(const std::vector<double>& sorted, double a, double b);
+/// Throws std::invalid_argument unless n >= 2 and sMax > sMin.
+void checkTableResolution(int n, double sMin, double sMax);
+
+/// Espinha 2005, 4.2: for a segment from s_front to s_back, the first control point crossed
 /// (s_iso) and the one after it (next_s_iso), -1 where there is none. The GPU cuts the ray
 /// at s_iso, integrates the piece exactly, and looks the table up again from s_iso. A
 /// point is "crossed" when it lies strictly beyond s_front and not beyond s_back.
@@ -32,17 +41,6 @@ struct IsoSurface {
   double value;
   glm::dvec3 color;
   double opacity = 1.0;
-};
-
-/// Roettger et al. 2000: for a segment from s_front to s_back, the color (premultiplied)
-/// and opacity of the first iso-surface crossed, transparent where none is. RGBA floats,
-/// index [sBack * N + sFront].
-struct IsoSurfaceTable {
-  IsoSurfaceTable(const std::vector<IsoSurface>& surfaces, double sMin, double sMax, int resolution);
-  int resolution;
-  double sMin, sMax;
-  std::vector<float> values;
-  glm::dvec4 at(double sFront, double sBack) const;
 };
 
 }  // namespace volpost::optics

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/render/OverlayRenderer.hpp>
+#include "host/render/OverlayRenderer.hpp"
+
+#include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
 
 namespace volpost {
 
 void OverlayRenderer::initialize() {
-  program_ = gl::buildProgram({"overlay.vert", "overlay.frag"});
+  registerHostShaders();
+  program_ = gl::buildProgram({"host/overlay.vert", "host/overlay.frag"});
   vao_ = gl::createVertexArray();  // the quad comes from gl_VertexID
 }
 

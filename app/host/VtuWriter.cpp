@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/VtuWriter.hpp>
+#include "host/VtuWriter.hpp"
 
 #include <bit>
 #include <cerrno>

@@ -3,9 +3,11 @@
 // one tet (exact linear segments, pre-integrated, sampled), with clip planes and
 // iso-surfaces. The includer sets rayOrigin/rayDir and calls integrate(); the result
 // accumulates front to back in accColor/accT.
-layout(std430, binding = 0) readonly buffer Nodes { vec4 nodes[]; };      // xyz mesh-relative, w nodal value
-layout(std430, binding = 1) readonly buffer Tets { uvec4 tets[]; };
-layout(std430, binding = 3) readonly buffer CellValues { float cellValues[]; };
+// Binding points (BINDING_*, UNIT_*), limits (MAX_*) and INTEGRATION_MODE are #defines the
+// plugin prepends (VolumeBindings.hpp, kMaxClipPlanes...): one source for C++ and GLSL.
+layout(std430, binding = BINDING_NODES) readonly buffer Nodes { vec4 nodes[]; };  // xyz mesh-relative, w nodal value
+layout(std430, binding = BINDING_TETS) readonly buffer Tets { uvec4 tets[]; };
+layout(std430, binding = BINDING_CELL_VALUES) readonly buffer CellValues { float cellValues[]; };
 
 #include "common/transfer_function.glsl"
 
@@ -14,27 +16,24 @@ uniform vec3 eye;                    // mesh-relative (perspective)
 uniform bool orthographic;
 uniform ivec2 imageSize_;
 uniform bool cellField;
-// INTEGRATION_MODE (0 linear segments, 1 pre-integrated, 2 sampling) is compiled in, one
-// program per mode: as a run-time branch, some drivers (llvmpipe) run every mode's code
-// for every segment (the ray caster took 37% longer on the fine post).
-#ifndef INTEGRATION_MODE
-#define INTEGRATION_MODE 0
-#endif
-uniform bool exactCuts;              // linear segments: cut by binary search, not the iso texture
+// INTEGRATION_MODE (0 linear segments with exact cuts, 1 pre-integrated, 2 sampling, 3
+// linear segments cut where a 2D table says) is compiled in, one program per mode: as a
+// run-time branch, some drivers (llvmpipe) run every mode's code for every segment (the
+// ray caster took 37% longer on the fine post).
 uniform float samplingStep;
 uniform float terminationTransmittance;
 uniform int clipCount;
-uniform vec4 clipPlanes[6];          // keep dot(xyz, p) + w >= 0 (mesh-relative)
-uniform sampler2D psiTable;          // psi over gamma = t / (t + 1)
-uniform sampler2D isoTable;          // first and next control point crossed (range positions)
-uniform sampler3D preTable;          // (s_front, s_back, length) -> premultiplied rgba
+uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-relative)
+layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
+layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
+layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, length) -> premultiplied rgba
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
 uniform float preMaxLength;
-uniform sampler2D sceneDepth;        // opaque geometry's depth (window 0..1), bottom row first
+layout(binding = UNIT_SCENE_DEPTH) uniform sampler2D sceneDepth;  // opaque geometry's depth (window 0..1), bottom row first
 uniform bool hasSceneDepth;
 uniform int isoCount;
-uniform float isoValue[8];
-uniform vec4 isoColor[8];           // rgb, opacity
+uniform float isoValue[MAX_ISO_SURFACES];
+uniform vec4 isoColor[MAX_ISO_SURFACES];  // rgb, opacity
 
 const ivec3 FACE[4] = ivec3[4](ivec3(1, 2, 3), ivec3(0, 2, 3), ivec3(0, 1, 3), ivec3(0, 1, 2));
 
@@ -86,21 +85,22 @@ void integrateLinear(float sf, float sb, float len) {
     composite(c.rgb * alpha, 1.0 - alpha);
     return;
   }
-  float n = float(textureSize(isoTable, 0).x);
   float s = sf;
   for (int k = 0; k <= tfCount + 1; ++k) {
+#if INTEGRATION_MODE == 3
+    // Espinha 2005, 4.2: the iso-detection texture says where to cut.
+    float n = float(textureSize(isoTable, 0).x);
     float end = sb;
-    if (exactCuts) {
-      end = tfNextCut(s, sb);
-    } else {  // the seed's method: the iso-detection texture says where to cut
-      vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
-      float iso = textureLod(isoTable, uv, 0.0).r;
-      if (iso >= 0.0) {
-        float v = rangeValue(iso);
-        // The table is quantised: cut only where the point really lies ahead.
-        if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
-      }
+    vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
+    float iso = textureLod(isoTable, uv, 0.0).r;
+    if (iso >= 0.0) {
+      float v = rangeValue(iso);
+      // The table is quantised: cut only where the point really lies ahead.
+      if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
     }
+#else
+    float end = tfNextCut(s, sb);
+#endif
     float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
     linearPiece(tfEval(s), tfEval(end), pieceLen);
     if (end == sb || accT < terminationTransmittance) return;
@@ -173,7 +173,7 @@ bool clipSegment(inout float t0, inout float t1) {
 
 void integratePiece(float t0, float t1, float sf, float sb) {
   if (t1 <= t0) return;
-#if INTEGRATION_MODE == 0
+#if INTEGRATION_MODE == 0 || INTEGRATION_MODE == 3
   integrateLinear(sf, sb, t1 - t0);
 #elif INTEGRATION_MODE == 1
   integratePreintegrated(sf, sb, t1 - t0);
@@ -221,4 +221,25 @@ void integrate(uvec4 tv, uint tet, float t0, float t1) {
     x0 = best;
   }
   integratePiece(mix(t0, t1, x0), t1, mix(sf, sb, x0), sb);
+}
+
+// ---- the ray of a pixel ------------------------------------------------------------
+// Sets rayOrigin and rayDir for the point `ndc` of the image (pixel `fromTop`, row 0 at
+// the top) and returns the ray's parameters at the near plane and at the far plane, or at
+// the opaque scene drawn before the volume where there is one.
+vec2 setupRay(vec2 ndc, ivec2 fromTop) {
+  vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
+  rayOrigin = orthographic ? nearPoint : eye;
+  rayDir = normalize(farPoint - rayOrigin);
+  float tNear = orthographic ? 0.0 : length(nearPoint - eye);
+  float tFar = length(farPoint - rayOrigin);
+  if (hasSceneDepth) {  // opaque geometry ends the ray where it is
+    float depth = texelFetch(sceneDepth, ivec2(fromTop.x, imageSize_.y - 1 - fromTop.y), 0).r;
+    if (depth < 1.0) {
+      vec4 hit = inverseViewProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+      tFar = min(tFar, dot(hit.xyz / hit.w - rayOrigin, rayDir));
+    }
+  }
+  return vec2(tNear, tFar);
 }

@@ -1,7 +1,7 @@
 // The transfer function as control points in SSBOs (exact, any count): color + extinction
 // per point, values sorted ascending.
-layout(std430, binding = 6) readonly buffer TfColorTau { vec4 tfColorTau[]; };
-layout(std430, binding = 7) readonly buffer TfValues { float tfValue[]; };
+layout(std430, binding = BINDING_TF_COLOR_TAU) readonly buffer TfColorTau { vec4 tfColorTau[]; };
+layout(std430, binding = BINDING_TF_VALUES) readonly buffer TfValues { float tfValue[]; };
 uniform int tfCount;
 
 // Color (rgb) and extinction (a) at scalar s, clamped at the ends.

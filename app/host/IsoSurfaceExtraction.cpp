@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/IsoSurfaceExtraction.hpp>
+#include "host/IsoSurfaceExtraction.hpp"
 
 #include <glm/geometric.hpp>
 

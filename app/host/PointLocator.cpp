@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/PointLocator.hpp>
+#include "host/PointLocator.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/SurfaceWriter.hpp>
+#include "host/SurfaceWriter.hpp"
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/render/SurfaceRenderer.hpp>
+#include "host/render/SurfaceRenderer.hpp"
+
+#include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
 
@@ -29,8 +31,9 @@ constexpr int kColorMapTexels = 256;
 }  // namespace
 
 void SurfaceRenderer::initialize() {
-  surfaceProgram_ = gl::buildProgram({"surface.vert", "surface.frag"});
-  edgeProgram_ = gl::buildProgram({"edges.vert", "edges.frag"});
+  registerHostShaders();
+  surfaceProgram_ = gl::buildProgram({"host/surface.vert", "host/surface.frag"});
+  edgeProgram_ = gl::buildProgram({"host/edges.vert", "host/edges.frag"});
   surfaceVao_ = gl::createVertexArray();
   edgeVao_ = gl::createVertexArray();
   surfaceVbo_ = gl::createBuffer();

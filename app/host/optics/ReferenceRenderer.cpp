@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include "host/optics/ReferenceRenderer.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>

@@ -6,9 +6,9 @@
 // front to back, stop early when nearly opaque.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D outImage;
-layout(std430, binding = 2) readonly buffer Neighbors { ivec4 neighbors[]; };
-layout(std430, binding = 4) readonly buffer Bvh { vec4 bvh[]; };
-layout(std430, binding = 5) readonly buffer BoundaryFaces { uint boundaryFaces[]; };
+layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { ivec4 neighbors[]; };
+layout(std430, binding = BINDING_BVH) readonly buffer Bvh { vec4 bvh[]; };
+layout(std430, binding = BINDING_BOUNDARY_FACES) readonly buffer BoundaryFaces { uint boundaryFaces[]; };
 uniform int maxSteps;
 
 #include "common/tet_segment.glsl"
@@ -68,19 +68,8 @@ void main() {
   if (pix.x >= imageSize_.x || pix.y >= imageSize_.y) return;
   vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
                   1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
-  vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
-  vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
-  rayOrigin = orthographic ? nearPoint : eye;
-  rayDir = normalize(farPoint - rayOrigin);
-  float t = orthographic ? 0.0 : length(nearPoint - eye);
-  float tEnd = length(farPoint - rayOrigin);
-  if (hasSceneDepth) {  // opaque geometry ends the ray where it is
-    float depth = texelFetch(sceneDepth, ivec2(pix.x, imageSize_.y - 1 - pix.y), 0).r;
-    if (depth < 1.0) {
-      vec4 hit = inverseViewProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-      tEnd = min(tEnd, dot(hit.xyz / hit.w - rayOrigin, rayDir));
-    }
-  }
+  vec2 range = setupRay(ndc, pix);
+  float t = range.x, tEnd = range.y;
 
   int steps = 0;
   uint lastEntry = 0xffffffffu;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/ClipCulling.hpp>
+#include "host/ClipCulling.hpp"
 
 #include <array>
 #include <limits>

@@ -68,22 +68,12 @@ bool tetChord(uvec4 tv, out float tIn, out float tOut) {
 void main() {
   // The image is drawn y-flipped (its first row is the top): window row y is NDC 1 - 2y/h.
   ndc = vec2(2.0 * gl_FragCoord.x / float(imageSize_.x) - 1.0, 1.0 - 2.0 * gl_FragCoord.y / float(imageSize_.y));
-  vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
-  vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
-  rayOrigin = orthographic ? nearPoint : eye;
-  rayDir = normalize(farPoint - rayOrigin);
+  vec2 range = setupRay(ndc, ivec2(gl_FragCoord.xy));  // the image's rows count from the top here
   uvec4 tv = tets[vTet];
   float tIn, tOut;
   if (!tetChord(tv, tIn, tOut)) discard;
-  tIn = max(tIn, orthographic ? 0.0 : length(nearPoint - eye));
-  tOut = min(tOut, length(farPoint - rayOrigin));
-  if (hasSceneDepth) {  // opaque geometry in front of the exit ends the segment there
-    float depth = texelFetch(sceneDepth, ivec2(int(gl_FragCoord.x), imageSize_.y - 1 - int(gl_FragCoord.y)), 0).r;
-    if (depth < 1.0) {
-      vec4 hit = inverseViewProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
-      tOut = min(tOut, dot(hit.xyz / hit.w - rayOrigin, rayDir));
-    }
-  }
+  tIn = max(tIn, range.x);
+  tOut = min(tOut, range.y);  // opaque geometry in front of the exit ends the segment there
   if (tOut <= tIn) discard;
   integrate(tv, vTet, tIn, tOut);
   // Defensive: a tet flat in float32 has no defined barycentric values; its fragment must

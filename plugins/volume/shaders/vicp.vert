@@ -11,9 +11,9 @@
 // seen along a diagonal) it may hand the pixel to a tet the ray only touches while the
 // tet the ray really crosses gets nothing. Deciding it in the fragment, with one plane
 // per shared face, loses nothing and counts nothing twice, as the CPU reference does.
-layout(std430, binding = 0) readonly buffer Nodes { vec4 nodes[]; };
-layout(std430, binding = 1) readonly buffer Tets { uvec4 tets[]; };
-layout(std430, binding = 8) readonly buffer Order { uint order[]; };
+layout(std430, binding = BINDING_NODES) readonly buffer Nodes { vec4 nodes[]; };
+layout(std430, binding = BINDING_TETS) readonly buffer Tets { uvec4 tets[]; };
+layout(std430, binding = BINDING_ORDER) readonly buffer Order { uint order[]; };
 uniform mat4 viewProjection;  // mesh-relative -> clip, y flipped: row 0 of the image is the top
 uniform vec2 viewportSize;    // pixels
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/optics/TetVolume.hpp>
+#include "host/optics/TetVolume.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>
 

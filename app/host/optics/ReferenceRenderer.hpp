@@ -15,7 +15,7 @@
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
-#include <volpost/core/optics/TetVolume.hpp>
+#include "host/optics/TetVolume.hpp"
 
 #include <glm/vec4.hpp>
 

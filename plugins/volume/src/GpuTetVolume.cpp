@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: MIT
+#include "GpuTetVolume.hpp"
+
+#include "VolumeBindings.hpp"
+#include "VolumeShaders.hpp"
+
+#include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/core/optics/PreintegrationTable.hpp>
+#include <volpost/core/optics/PsiTable.hpp>
+#include <volpost/render/ShaderLibrary.hpp>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace volpost::volume {
+namespace {
+
+template <typename T>
+void upload(gl::Buffer& buffer, const std::vector<T>& data) {
+  if (!buffer) buffer = gl::createBuffer();
+  // Zero-size SSBOs cannot be bound: keep one element.
+  const std::size_t bytes = std::max<std::size_t>(data.size() * sizeof(T), 16);
+  glNamedBufferData(buffer.id(), GLsizeiptr(bytes), nullptr, GL_STATIC_DRAW);
+  if (!data.empty()) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * sizeof(T)), data.data());
+}
+
+gl::Texture texture2D(GLenum format, int w, int h) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, w, h);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void setFilter(GLuint tex, GLint filter) {
+  glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+  glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
+}
+
+int modeIndex(IntegrationMode mode) {
+  switch (mode) {
+    case IntegrationMode::LinearSegments: return 0;
+    case IntegrationMode::PreIntegrated: return 1;
+    case IntegrationMode::Sampling: return 2;
+    case IntegrationMode::LinearSegmentsIsoTable: return 3;
+  }
+  return 0;
+}
+
+// A plane's unit normal, also for normals whose squared length overflows (1e308) or
+// underflows; throws for a zero or non-finite one.
+glm::dvec3 unitNormal(const ClipPlane& c) {
+  const double scale = std::max({std::abs(c.normal.x), std::abs(c.normal.y), std::abs(c.normal.z)});
+  if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(c.point.x) || !std::isfinite(c.point.y) ||
+      !std::isfinite(c.point.z))
+    throw std::invalid_argument("a clip plane needs a finite point and a finite, non-zero normal");
+  return glm::normalize(c.normal / scale);
+}
+
+}  // namespace
+
+// ---- state ---------------------------------------------------------------------------
+
+void GpuTetVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+  gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
+  mesh_ = &mesh;
+  location_ = location;
+  ++meshRevision_;
+  meshDirty_ = true;
+}
+
+void GpuTetVolume::setValues(std::span<const double> values) {
+  if (!mesh_) return;
+  if (!replaceValues(gpu_, *mesh_, location_, values)) {
+    setVolume(*mesh_, location_, values);  // the set of renderable tets changed
+    return;
+  }
+  valuesDirty_ = true;
+}
+
+void GpuTetVolume::setTransferFunction(const TransferFunction& tf) {
+  if (tf == tf_) return;
+  tf_ = tf;
+  tablesDirty_ = true;
+}
+
+void GpuTetVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
+  if (planes.size() > std::size_t(kMaxClipPlanes))
+    throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
+                                std::to_string(kMaxClipPlanes) + " (a clip box is 6)");
+  for (const ClipPlane& p : planes) (void)unitNormal(p);
+  clipPlanes_ = planes;
+}
+
+void GpuTetVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
+  if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
+    throw std::invalid_argument(std::to_string(surfaces.size()) + " iso-surfaces: a volume takes at most " +
+                                std::to_string(kMaxIsoSurfaces));
+  for (const optics::IsoSurface& s : surfaces)
+    if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
+      throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
+  isoSurfaces_ = surfaces;
+}
+
+void GpuTetVolume::setIntegrationMode(IntegrationMode mode) {
+  if (mode == mode_) return;
+  mode_ = mode;
+  tablesDirty_ = true;
+}
+
+// ---- GL ------------------------------------------------------------------------------
+
+void GpuTetVolume::initialize() {
+  registerVolumeShaders();
+  compositeProgram_ = gl::buildProgram({"volume/composite.vert", "volume/composite.frag"}, binding::glslDefines());
+  quad_ = gl::createVertexArray();
+  const optics::PsiTable psi(psiResolution);
+  psiTable_ = texture2D(GL_R32F, psiResolution, psiResolution);
+  setFilter(psiTable_.id(), GL_LINEAR);
+  glTextureSubImage2D(psiTable_.id(), 0, 0, 0, psiResolution, psiResolution, GL_RED, GL_FLOAT, psi.values().data());
+  initialized_ = true;
+  meshDirty_ = tablesDirty_ = true;  // a fresh context holds nothing yet
+  meshUploads_ = valueUploads_ = tableBuilds_ = 0;
+  gl::check("GpuTetVolume::initialize");
+}
+
+void GpuTetVolume::release() {
+  if (preFuture_.valid()) preFuture_.wait();
+  preFuture_ = {};
+  preOutdated_ = false;
+  for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
+  programs_.clear();
+  compositeProgram_.reset();
+  quad_.reset();
+  imageWidth_ = imageHeight_ = 0;
+  initialized_ = false;
+}
+
+void GpuTetVolume::prepare(const RenderContext& ctx) {
+  if (meshDirty_) {
+    uploadMesh();
+    meshDirty_ = valuesDirty_ = false;
+  } else if (valuesDirty_) {
+    uploadValues();
+    valuesDirty_ = false;
+  }
+  if (tablesNeedRebuild()) rebuildTables();
+  // A table finished since the last frame goes up now; with none uploaded yet, wait.
+  collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
+  ensureImage(ctx.width, ctx.height);
+}
+
+void GpuTetVolume::uploadMesh() {
+  upload(nodes_, gpu_.nodes);
+  upload(tets_, gpu_.tets);
+  upload(neighbors_, gpu_.neighbors);
+  upload(cellValues_, gpu_.cellValues);
+  upload(bvh_, gpu_.bvh);
+  upload(boundary_, gpu_.boundaryFaces);
+  builtRevision_ = meshRevision_;
+  ++meshUploads_;
+  gl::check("GpuTetVolume::uploadMesh");
+}
+
+// Only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet.
+void GpuTetVolume::uploadValues() {
+  if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
+  else upload(cellValues_, gpu_.cellValues);
+  ++valueUploads_;
+}
+
+// The tables depend on the transfer function, the mode and the values' range (the tables
+// span it, and control points travel in the values' frame).
+bool GpuTetVolume::tablesNeedRebuild() const {
+  if (tablesDirty_) return true;
+  const double lo = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
+  const double hi = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
+  return lo != tableLo_ || (hi > lo ? hi : lo + 1.0) != tableHi_;
+}
+
+// What a TF edit costs: the control points and the table the mode uses (the 2D
+// iso-detection table or the 3D pre-integration table). The mesh is not touched.
+void GpuTetVolume::rebuildTables() {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<glm::vec4> colorTau;
+  std::vector<float> values;
+  for (const ControlPoint& p : tf_.points()) {
+    colorTau.push_back(glm::vec4(glm::vec3(p.color), float(p.extinction)));
+    values.push_back(gpu_.gpuValue(p.value));
+  }
+  upload(tfColorTau_, colorTau);
+  upload(tfValues_, values);
+  tableLo_ = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
+  tableHi_ = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
+  if (!(tableHi_ > tableLo_)) tableHi_ = tableLo_ + 1.0;
+  if (mode_ == IntegrationMode::LinearSegmentsIsoTable) {
+    const optics::IsoDetectionTable iso(tf_, tableLo_, tableHi_, isoResolution);
+    if (!isoTable_) {
+      isoTable_ = texture2D(GL_RG32F, isoResolution, isoResolution);
+      setFilter(isoTable_.id(), GL_NEAREST);
+    }
+    glTextureSubImage2D(isoTable_.id(), 0, 0, 0, isoResolution, isoResolution, GL_RG, GL_FLOAT, iso.values.data());
+  }
+  if (mode_ == IntegrationMode::PreIntegrated && !tf_.empty()) {
+    if (preFuture_.valid()) preOutdated_ = true;  // the running build finishes, then the latest TF goes
+    else launchPreintegration();
+    if (!asynchronous_) collectPreintegration(true);
+  }
+  glFinish();  // the cost reported is the whole change, upload included
+  if (!preFuture_.valid())
+    lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  tfChanged_ = start;
+  tablesDirty_ = false;
+  ++tableBuilds_;
+  gl::check("GpuTetVolume::rebuildTables");
+}
+
+// The pre-integrated table (seconds at 128^3) is computed off the GL thread from a copy of
+// the TF and the table's range.
+void GpuTetVolume::launchPreintegration() {
+  preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
+  preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, length = preMaxLength_,
+                                               n = preResolution] {
+    return optics::PreintegrationTable(tf, lo, hi, n, length, n).values();
+  });
+}
+
+void GpuTetVolume::collectPreintegration(bool wait) {
+  if (!preFuture_.valid()) return;
+  if (!wait && preFuture_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  uploadPreintegration(preFuture_.get());
+  if (preOutdated_) {
+    preOutdated_ = false;
+    launchPreintegration();
+    if (wait) collectPreintegration(true);
+    return;
+  }
+  lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tfChanged_).count();
+}
+
+void GpuTetVolume::uploadPreintegration(const std::vector<float>& values) {
+  if (!preTable_) {
+    preTable_ = gl::createTexture(GL_TEXTURE_3D);
+    glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
+    setFilter(preTable_.id(), GL_LINEAR);
+    for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+      glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
+                      values.data());
+}
+
+void GpuTetVolume::ensureImage(int width, int height) {
+  if (image_ && width == imageWidth_ && height == imageHeight_) return;
+  image_ = texture2D(GL_RGBA32F, width, height);
+  setFilter(image_.id(), GL_NEAREST);
+  imageWidth_ = width;
+  imageHeight_ = height;
+}
+
+GLuint GpuTetVolume::program(const std::vector<std::string>& stageFiles) {
+  const int mode = modeIndex(mode_);
+  std::string key = std::to_string(mode);
+  for (const std::string& f : stageFiles) key += " " + f;
+  gl::Program& p = programs_[key];
+  if (!p)
+    p = gl::buildProgram(stageFiles, volumeLimitDefines() + binding::glslDefines() + "#define INTEGRATION_MODE " +
+                                         std::to_string(mode) + "\n");
+  return p.id();
+}
+
+void GpuTetVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
+  const glm::dmat4 vp = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpu_.origin);
+  const glm::mat4 inv(glm::inverse(vp));
+  const glm::vec3 eye(ctx.camera.eye() - gpu_.origin);
+  const auto u = [&](const char* n) { return glGetUniformLocation(p, n); };
+  glProgramUniformMatrix4fv(p, u("inverseViewProjection"), 1, GL_FALSE, glm::value_ptr(inv));
+  glProgramUniform3fv(p, u("eye"), 1, glm::value_ptr(eye));
+  glProgramUniform1i(p, u("orthographic"), ctx.camera.projection() == Camera::Projection::Orthographic);
+  glProgramUniform2i(p, u("imageSize_"), ctx.width, ctx.height);
+  glProgramUniform1i(p, u("cellField"), location_ == FieldLocation::Cell);
+  const double meanEdge = gpu_.maxEdge * 0.5;
+  glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
+  glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));
+  glProgramUniform1i(p, u("tfCount"), int(tf_.points().size()));
+  glProgramUniform1f(p, u("sLo"), gpu_.gpuValue(tableLo_));
+  glProgramUniform1f(p, u("sHi"), gpu_.gpuValue(tableHi_));
+  glProgramUniform1f(p, u("preMaxLength"), float(preMaxLength_));
+  std::vector<glm::vec4> planes;
+  for (const ClipPlane& c : clipPlanes_) {
+    const glm::dvec3 n = unitNormal(c);
+    planes.push_back(glm::vec4(glm::vec3(n), float(-glm::dot(n, c.point - gpu_.origin))));
+  }
+  std::vector<float> isoValues;
+  std::vector<glm::vec4> isoColors;
+  for (const optics::IsoSurface& iso : isoSurfaces_) {
+    isoValues.push_back(gpu_.gpuValue(iso.value));
+    isoColors.push_back(glm::vec4(glm::vec3(iso.color), float(iso.opacity)));
+  }
+  glProgramUniform1i(p, u("isoCount"), int(isoValues.size()));
+  if (!isoValues.empty()) {
+    glProgramUniform1fv(p, u("isoValue"), GLsizei(isoValues.size()), isoValues.data());
+    glProgramUniform4fv(p, u("isoColor"), GLsizei(isoColors.size()), glm::value_ptr(isoColors[0]));
+  }
+  glProgramUniform1i(p, u("clipCount"), int(planes.size()));
+  if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
+  glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
+}
+
+void GpuTetVolume::bindSegmentResources(const RenderContext& ctx) const {
+  glBindTextureUnit(binding::kSceneDepth, ctx.depthTexture);
+  glBindTextureUnit(binding::kPsiTable, psiTable_.id());
+  glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
+  glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
+  const std::pair<GLuint, const gl::Buffer*> buffers[] = {
+      {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
+      {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},
+      {binding::kBvh, &bvh_},             {binding::kBoundaryFaces, &boundary_},
+      {binding::kTfColorTau, &tfColorTau_}, {binding::kTfValues, &tfValues_}};
+  for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
+}
+
+void GpuTetVolume::compositeOver(const RenderContext& ctx) const {
+  glBindTextureUnit(binding::kSceneDepth, 0);  // the depth texture may be attached to the target: no feedback
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glUseProgram(compositeProgram_.id());
+  glBindTextureUnit(binding::kImage, image_.id());
+  glBindVertexArray(quad_.id());
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+VolumeStats GpuTetVolume::stats() const {
+  VolumeStats s;
+  s.tetrahedra = gpu_.tets.size();
+  s.meshBytes = gpu_.bytes();
+  s.gpuBytes = gpu_.bytes() + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
+               (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
+               (preTable_ ? std::size_t(preResolution) * preResolution * preResolution * 16 : 0) +
+               std::size_t(imageWidth_) * imageHeight_ * 16;
+  s.lastTransferFunctionMs = lastTfMs_;
+  s.meshUploads = meshUploads_;
+  s.valueUploads = valueUploads_;
+  s.tableBuilds = tableBuilds_;
+  return s;
+}
+
+std::vector<float> GpuTetVolume::readImage() const {
+  std::vector<float> pixels(std::size_t(imageWidth_) * std::size_t(imageHeight_) * 4);
+  if (!image_) return pixels;
+  glGetTextureImage(image_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());
+  return pixels;  // row 0 is the top already (the shaders write y from the top)
+}
+
+}  // namespace volpost::volume

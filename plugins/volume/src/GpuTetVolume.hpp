@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// What every tetrahedral volume renderer of this plugin shares: the mesh and its values on
+// the GPU (TetMeshGpu), the transfer-function tables, clip planes and iso-surfaces, the
+// float image a frame is integrated into, and the GLSL that integrates one ray segment
+// through one tet (common/tet_segment.glsl). The ray caster walks rays through it; cell
+// projection rasterizes tets into it. Each owns one.
+//
+// The setters only record state (no GL). prepare(), with the context current, uploads
+// and rebuilds what changed since the last frame, once: the mesh after setVolume, the
+// values after setValues, the tables after a new transfer function, mode or value range.
+// Clip planes, iso-surfaces and the camera are uniforms and cost nothing to change.
+#pragma once
+
+#include "TetMeshGpu.hpp"
+
+#include <volpost/render/GlObjects.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
+
+#include <chrono>
+#include <future>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace volpost::volume {
+
+class GpuTetVolume {
+ public:
+  // ---- state (no GL) ----
+  void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values);
+  void setValues(std::span<const double> values);
+  void setTransferFunction(const TransferFunction& tf);
+  void setClipPlanes(const std::vector<ClipPlane>& planes);
+  void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces);
+  void setIntegrationMode(IntegrationMode mode);
+  void setSamplingStep(double step) { samplingStep_ = step; }
+  void setTerminationThreshold(double transmittance) { termination_ = transmittance; }
+  void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
+  bool hasPendingWork() const { return preFuture_.valid(); }
+
+  const TetMeshGpu& mesh() const { return gpu_; }
+  /// Changes whenever the set of tets changes (another mesh, or values that drop tets).
+  std::size_t meshRevision() const { return meshRevision_; }
+  bool hasTets() const { return !gpu_.tets.empty(); }
+
+  // ---- GL (a context current) ----
+  void initialize();
+  void release();
+  bool initialized() const { return initialized_; }
+  /// Uploads what changed and sizes the float image for the frame.
+  void prepare(const RenderContext& ctx);
+  /// The program for these stage files in the current integration mode (built on first
+  /// use; the mode, the bindings and the limits are compiled in).
+  GLuint program(const std::vector<std::string>& stageFiles);
+  /// The uniforms of common/tet_segment.glsl: camera, tables' range, clip planes,
+  /// iso-surfaces, scene depth.
+  void setSegmentUniforms(GLuint program, const RenderContext& ctx) const;
+  void bindSegmentResources(const RenderContext& ctx) const;
+  /// Composites the premultiplied float image over what the target already holds.
+  void compositeOver(const RenderContext& ctx) const;
+  GLuint image() const { return image_.id(); }
+
+  VolumeStats stats() const;
+  std::vector<float> readImage() const;
+
+  /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration N^3.
+  int psiResolution = 512, isoResolution = 256, preResolution = 64;
+
+ private:
+  void uploadMesh();
+  void uploadValues();
+  void rebuildTables();
+  bool tablesNeedRebuild() const;
+  void launchPreintegration();
+  void uploadPreintegration(const std::vector<float>& values);
+  void collectPreintegration(bool wait);
+  void ensureImage(int width, int height);
+
+  // State.
+  const Mesh* mesh_ = nullptr;
+  FieldLocation location_ = FieldLocation::Node;
+  TetMeshGpu gpu_;
+  TransferFunction tf_;
+  std::vector<ClipPlane> clipPlanes_;
+  std::vector<optics::IsoSurface> isoSurfaces_;
+  IntegrationMode mode_ = IntegrationMode::LinearSegments;
+  double samplingStep_ = 0.0;  ///< 0: a quarter of the mean edge
+  double termination_ = 0.002;
+  bool asynchronous_ = false;
+  std::size_t meshRevision_ = 0;
+
+  // What the GPU holds relative to that state.
+  bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;
+  std::size_t builtRevision_ = std::size_t(-1);
+  double tableLo_ = 0.0, tableHi_ = 1.0, preMaxLength_ = 1.0;
+  std::future<std::vector<float>> preFuture_;  ///< the pre-integration table being built
+  bool preOutdated_ = false;                   ///< the TF changed again while it was built
+  std::chrono::steady_clock::time_point tfChanged_;
+  double lastTfMs_ = 0.0;
+  std::size_t meshUploads_ = 0, valueUploads_ = 0, tableBuilds_ = 0;
+  bool initialized_ = false;
+
+  std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
+  gl::Program compositeProgram_;
+  gl::VertexArray quad_;
+  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_;
+  int imageWidth_ = 0, imageHeight_ = 0;
+};
+
+}  // namespace volpost::volume

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The part of the VolumeRenderer interface that every renderer of this plugin answers the
+// same way: state goes to its GpuTetVolume. A renderer adds how it turns that volume into
+// a frame (walking rays, projecting tets).
+#pragma once
+
+#include "GpuTetVolume.hpp"
+
+#include <volpost/render/VolumeRenderer.hpp>
+
+namespace volpost::volume {
+
+class TetVolumeRenderer : public VolumeRenderer {
+ public:
+  void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override {
+    volume_.setVolume(mesh, location, values);
+  }
+  void setValues(std::span<const double> values) override { volume_.setValues(values); }
+  void setTransferFunction(const TransferFunction& tf) override { volume_.setTransferFunction(tf); }
+  void setClipPlanes(const std::vector<ClipPlane>& planes) override { volume_.setClipPlanes(planes); }
+  void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) override { volume_.setIsoSurfaces(surfaces); }
+  void setIntegrationMode(IntegrationMode mode) override { volume_.setIntegrationMode(mode); }
+  void setSamplingStep(double step) override { volume_.setSamplingStep(step); }
+  void setTerminationThreshold(double transmittance) override { volume_.setTerminationThreshold(transmittance); }
+  void setAsynchronousUpdates(bool on) override { volume_.setAsynchronousUpdates(on); }
+  bool hasPendingWork() const override { return volume_.hasPendingWork(); }
+  VolumeStats stats() const override { return volume_.stats(); }
+  std::vector<float> readImage() const override { return volume_.readImage(); }
+
+  /// For tests and benches that look inside.
+  const GpuTetVolume& volume() const { return volume_; }
+  GpuTetVolume& volume() { return volume_; }
+
+ protected:
+  GpuTetVolume volume_;
+};
+
+}  // namespace volpost::volume

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: MIT
+#include "VolumeBindings.hpp"
+
+#include <utility>
+
+namespace volpost::volume::binding {
+
+std::string glslDefines() {
+  const std::pair<const char*, GLuint> all[] = {
+      {"BINDING_NODES", kNodes},         {"BINDING_TETS", kTets},
+      {"BINDING_NEIGHBORS", kNeighbors}, {"BINDING_CELL_VALUES", kCellValues},
+      {"BINDING_BVH", kBvh},             {"BINDING_BOUNDARY_FACES", kBoundaryFaces},
+      {"BINDING_TF_COLOR_TAU", kTfColorTau}, {"BINDING_TF_VALUES", kTfValues},
+      {"BINDING_ORDER", kOrder},         {"UNIT_PSI", kPsiTable},
+      {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
+      {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage}};
+  std::string out;
+  for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
+  return out;
+}
+
+}  // namespace volpost::volume::binding

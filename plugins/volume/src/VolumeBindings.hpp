@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Binding points shared by the volume shaders and the C++ that binds their resources:
+// written once here and handed to every program as #defines (BINDING_NODES, UNIT_PSI...),
+// so the two sides cannot drift apart.
+#pragma once
+
+#include <volpost/render/GL.hpp>
+
+#include <string>
+
+namespace volpost::volume::binding {
+
+// Shader storage buffers.
+inline constexpr GLuint kNodes = 0;          ///< vec4 per node: mesh-relative xyz, value
+inline constexpr GLuint kTets = 1;           ///< uvec4 per tet
+inline constexpr GLuint kNeighbors = 2;      ///< ivec4 per tet
+inline constexpr GLuint kCellValues = 3;     ///< float per tet (element results)
+inline constexpr GLuint kBvh = 4;            ///< boundary-face BVH nodes
+inline constexpr GLuint kBoundaryFaces = 5;  ///< tet * 4 + face, BVH leaf order
+inline constexpr GLuint kTfColorTau = 6;     ///< transfer function: color + extinction per point
+inline constexpr GLuint kTfValues = 7;       ///< transfer function: value per point
+inline constexpr GLuint kOrder = 8;          ///< cell projection: back-to-front tet list
+inline constexpr GLuint kBufferCount = 9;
+
+// Texture units.
+inline constexpr GLuint kPsiTable = 0;
+inline constexpr GLuint kIsoTable = 1;
+inline constexpr GLuint kPreTable = 2;
+inline constexpr GLuint kSceneDepth = 3;
+inline constexpr GLuint kImage = 4;          ///< the float image (composite pass, image unit 0)
+
+/// "#define BINDING_NODES 0\n..." for every constant above.
+std::string glslDefines();
+
+}  // namespace volpost::volume::binding

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#include <volpost/render/VolumeRenderer.hpp>
+
+namespace volpost {
+
+std::string volumeLimitDefines() {
+  return "#define MAX_CLIP_PLANES " + std::to_string(kMaxClipPlanes) + "\n#define MAX_ISO_SURFACES " +
+         std::to_string(kMaxIsoSurfaces) + "\n";
+}
+
+std::string_view toString(IntegrationMode mode) {
+  switch (mode) {
+    case IntegrationMode::LinearSegments: return "linear";
+    case IntegrationMode::PreIntegrated: return "pre-integrated";
+    case IntegrationMode::Sampling: return "sampling";
+    case IntegrationMode::LinearSegmentsIsoTable: return "iso-table";
+  }
+  return "?";
+}
+
+std::vector<IntegrationMode> allIntegrationModes() {
+  return {IntegrationMode::LinearSegments, IntegrationMode::LinearSegmentsIsoTable, IntegrationMode::PreIntegrated,
+          IntegrationMode::Sampling};
+}
+
+std::optional<IntegrationMode> integrationModeFromString(std::string_view name) {
+  for (IntegrationMode mode : allIntegrationModes())
+    if (toString(mode) == name) return mode;
+  return std::nullopt;
+}
+
+std::string integrationModeChoices() {
+  std::string out;
+  for (IntegrationMode mode : allIntegrationModes()) out += (out.empty() ? "" : ", ") + std::string(toString(mode));
+  return out;
+}
+
+std::string_view describe(IntegrationMode mode) {
+  switch (mode) {
+    case IntegrationMode::LinearSegments: return "Linear segments, exact cuts";
+    case IntegrationMode::PreIntegrated: return "Pre-integrated table";
+    case IntegrationMode::Sampling: return "Sampling (fixed step)";
+    case IntegrationMode::LinearSegmentsIsoTable: return "Linear segments, cuts from a 2D table";
+  }
+  return "?";
+}
+
+}  // namespace volpost
