@@ -25,8 +25,9 @@ void printUsage() {
   std::printf(
       "volpost %s - finite-element post-processing and volume rendering\n\n"
       "usage:\n"
-      "  volpost [MODEL] [--field Q] [--volume] [--screenshot FILE]\n"
-      "                                    open the window (optionally on MODEL, colored by Q)\n"
+      "  volpost [MODEL] [--field Q] [--volume] [--state FILE] [--screenshot FILE]\n"
+      "                                    open the window (optionally on MODEL, colored by Q,\n"
+      "                                    or on a saved state)\n"
       "  volpost info MODEL                counts, bounds, fields and defects of MODEL\n"
       "  volpost render MODEL -o OUT.png   render MODEL headless (see volpost render --help)\n"
       "  volpost plugins                   list plugins and why any was refused\n"
@@ -54,13 +55,14 @@ int runWindow(int argc, char** argv) {
   QApplication::setApplicationName("volpost");
   QApplication::setApplicationVersion(VOLPOST_VERSION);
   QCommandLineParser parser;
+  parser.setApplicationDescription("volpost: the window (see volpost --help for the command-line verbs).");
   parser.addPositionalArgument("MODEL", "model to open");
   const QCommandLineOption field("field", "quantity to color by, e.g. S.mises", "Q");
   const QCommandLineOption screenshot("screenshot", "save the window to FILE once MODEL is shown, then quit", "FILE");
   const QCommandLineOption volume("volume", "show the result as a volume (View > Volume Rendering)");
-  parser.addOption(field);
-  parser.addOption(screenshot);
-  parser.addOption(volume);
+  const QCommandLineOption state("state", "open a state file saved by File > Save State (or volpost render "
+                                          "--save-state): its model and its view", "FILE");
+  parser.addOptions({field, screenshot, volume, state});
   parser.addHelpOption();
   parser.process(app);
 
@@ -68,21 +70,41 @@ int runWindow(int argc, char** argv) {
   plugins.loadFrom(volpost::PluginManager::defaultSearchPaths());
   volpost::app::MainWindow window(plugins);
   window.show();
-  if (!parser.positionalArguments().isEmpty()) {
-    const QString wanted = parser.value(field), shot = parser.value(screenshot);
-    const bool asVolume = parser.isSet(volume);
-    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window, [&window, wanted, shot, asVolume](bool ok) {
-      if (ok && !wanted.isEmpty() && !window.selectQuantity(wanted))
-        std::fprintf(stderr, "volpost: warning: no quantity '%s' in this model\n", qPrintable(wanted));
-      if (ok && asVolume)
-        if (auto* action = window.findChild<QAction*>("volumeAction"); action && action->isEnabled()) action->setChecked(true);
-      if (shot.isEmpty()) return;
-      QTimer::singleShot(300, &window, [&window, shot] {
-        if (!window.grab().save(shot)) std::fprintf(stderr, "volpost: error: cannot write %s\n", qPrintable(shot));
-        QApplication::exit(window.grab().isNull() ? 1 : 0);
-      });
+  const QString shot = parser.value(screenshot);
+  // The screenshot is taken once the view is there; a failure to get there or to write it
+  // is exit code 1, with the reason on stderr.
+  const auto takeScreenshot = [&window, shot](bool ok, const QString& message) {
+    if (shot.isEmpty()) return;
+    if (!ok) {
+      std::fprintf(stderr, "volpost: error: %s\n", qPrintable(message.isEmpty() ? QString("cannot open the model") : message));
+      QTimer::singleShot(0, &window, [] { QApplication::exit(1); });
+      return;
+    }
+    QTimer::singleShot(300, &window, [&window, shot] {
+      const bool saved = window.grab().save(shot);
+      if (!saved) std::fprintf(stderr, "volpost: error: cannot write %s\n", qPrintable(shot));
+      QApplication::exit(saved ? 0 : 1);
     });
+  };
+  if (parser.isSet(state)) {
+    QObject::connect(&window, &volpost::app::MainWindow::stateApplied, &window, takeScreenshot);
+    window.openStateFile(parser.value(state));
+  } else if (!parser.positionalArguments().isEmpty()) {
+    const QString wanted = parser.value(field);
+    const bool asVolume = parser.isSet(volume);
+    QObject::connect(&window, &volpost::app::MainWindow::loadFinished, &window,
+                     [&window, wanted, asVolume, takeScreenshot](bool ok, const QString& message) {
+                       if (ok && !wanted.isEmpty() && !window.selectQuantity(wanted))
+                         std::fprintf(stderr, "volpost: warning: no quantity '%s' in this model\n", qPrintable(wanted));
+                       if (ok && asVolume)
+                         if (auto* action = window.findChild<QAction*>("volumeAction"); action && action->isEnabled())
+                           action->setChecked(true);
+                       takeScreenshot(ok, message);
+                     });
     window.openFile(parser.positionalArguments().first());
+  } else if (!shot.isEmpty()) {
+    std::fprintf(stderr, "volpost: error: --screenshot needs a MODEL or --state FILE\n");
+    return 2;
   }
   return app.exec();
 }

@@ -2,6 +2,7 @@
 // Build time and error of the optical tables against the exact integration.
 //   volpost_optics_bench [--csv FILE]   (the CSV holds psi-table error versus resolution)
 #include <volpost/core/optics/IsoTables.hpp>
+#include "host/optics/IsoSurfaceTable.hpp"
 #include <volpost/core/optics/PreintegrationTable.hpp>
 #include <volpost/core/optics/PsiTable.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>

@@ -8,7 +8,7 @@
 
 #include <volpost/core/ReaderRegistry.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
-#include <volpost/core/VtuWriter.hpp>
+#include "host/VtuWriter.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // and frame time of the boundary view at 512x512 along an orbit. Prints a Markdown table.
 //   volpost_bench [--frames N] [--size N]
 #include "core/ModelSession.hpp"
-#include "core/SceneRenderer.hpp"
+#include "core/BoundaryRenderer.hpp"
 
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     const auto session = app::ModelSession::load(readers, path);
     const app::ScalarView view = session->evaluate(session->findQuantity(c.quantity), 0);
     OffscreenTarget target(size, size);
-    app::SceneRenderer scene;
+    app::BoundaryRenderer scene;
     scene.initialize();
     scene.setSession(session);
     scene.setScalars(&view, app::autoRange(view));

@@ -8,13 +8,13 @@
 //                        [--error-images DIR]  (one PGM per row: white = off by 0.05 or more)
 #include "CellProjector.hpp"
 #include "RayCaster.hpp"
+#include "TetVolumeRenderer.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
-#include "core/VolumeImage.hpp"
 
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
-#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include "host/optics/ReferenceRenderer.hpp"
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 
@@ -48,7 +48,7 @@ void writeErrorImage(const std::filesystem::path& path, const std::vector<double
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-Mesh kuhnGrid(int n) {  // n^3 cubes of 6 tets on [0, n]^3, as in the seed's grids
+Mesh kuhnGrid(int n) {  // n^3 cubes of 6 tets on [0, n]^3, as in Espinha 2005's grids
   Mesh m;
   auto id = [n](int i, int j, int k) { return NodeIndex((k * (n + 1) + j) * (n + 1) + i); };
   for (int k = 0; k <= n; ++k)
@@ -84,7 +84,7 @@ std::vector<Case> cases(bool quick) {
   for (int n : {16, 32}) {
     if (quick && n == 32) continue;
     Case c{"grid " + std::to_string(n) + "^3", kuhnGrid(n), FieldLocation::Node, {}};
-    for (const auto& p : c.mesh.nodes) c.values.push_back(p.x);  // s varies along x (seed 5.1)
+    for (const auto& p : c.mesh.nodes) c.values.push_back(p.x);  // s varies along x (Espinha 2005, 5.1)
     out.push_back(std::move(c));
   }
   const std::string shared = VOLPOST_SHARED_DATA;
@@ -112,7 +112,7 @@ std::vector<Case> cases(bool quick) {
 }
 
 TransferFunction benchTf(const std::vector<double>& values, double diagonal) {
-  // 10 linear segments (the seed's "10 segments" rows), cool-warm, extinction as the
+  // 10 linear segments (Espinha 2005's "10 segments" rows), cool-warm, extinction as the
   // default TF: a light fog rising to dense color at the top of the range.
   double lo = INFINITY, hi = -INFINITY;
   for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
@@ -137,6 +137,25 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--error-images") && i + 1 < argc) errorImages = argv[++i];
+    else {
+      const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
+      std::fprintf(help ? stdout : stderr,
+                   "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
+                   "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
+                   "                            [--error-images DIR]\n"
+                   "  --size N            image N x N (default 512)\n"
+                   "  --frames N          frames along the orbit (default 5)\n"
+                   "  --csv FILE          also write mesh, mode, median ms, RMSE, max error (for the plot)\n"
+                   "  --quick             leave out the largest meshes\n"
+                   "  --mesh SUBSTRING    only the meshes whose name contains it\n"
+                   "  --error-images DIR  one PGM per row: where the renderer is off (white = 0.05 or more)\n",
+                   help ? "" : ("unknown argument '" + std::string(argv[i]) + "'\n").c_str());
+      return help ? 0 : 2;
+    }
+  }
+  if (size < 8 || size > 8192 || frames < 1) {
+    std::fprintf(stderr, "volpost_volume_bench: --size must lie in 8..8192 and --frames be at least 1\n");
+    return 2;
   }
   HeadlessContext context;
   std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
@@ -167,7 +186,7 @@ int main(int argc, char** argv) {
                                                    IntegrationMode::PreIntegrated, IntegrationMode::Sampling};
     const std::vector<IntegrationMode> projectionModes = {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated,
                                                           IntegrationMode::Sampling};
-    for (auto [caster, label, modes] : {std::tuple<volume::RayCaster*, const char*, const std::vector<IntegrationMode>*>{&raycaster, "raycast", &allModes},
+    for (auto [caster, label, modes] : {std::tuple<volume::TetVolumeRenderer*, const char*, const std::vector<IntegrationMode>*>{&raycaster, "raycast", &allModes},
                                         {&vicp, "vicp (MPVONC)", &projectionModes},
                                         {&vicpExact, "vicp (image-space order)", &projectionModes}}) {
     caster->initialize();
@@ -201,9 +220,9 @@ int main(int argc, char** argv) {
       }
       // Pixels far from the reference (a lost ray would show here), for the record.
       if (bad) std::fprintf(stderr, "%s %s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(), label,
-                            toString(mode), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
+                            toString(mode).data(), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
       if (errorImages) {
-        std::string name = c.name + " " + (caster == &raycaster ? "raycast" : caster == &vicp ? "vicp" : "vicp-exact") + " " + toString(mode);
+        std::string name = c.name + " " + (caster == &raycaster ? "raycast" : caster == &vicp ? "vicp" : "vicp-exact") + " " + std::string(toString(mode));
         std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)) && ch != '-'; }, '_');
         std::filesystem::create_directories(errorImages);
         writeErrorImage(std::filesystem::path(errorImages) / (name + ".pgm"), pixelErrors, size);
@@ -226,13 +245,13 @@ int main(int argc, char** argv) {
       const VolumeStats st = caster->stats();
       const std::string sortMs = caster == &raycaster ? "-" : std::to_string(int(std::lround(sorts[sorts.size() / 2])));
       std::printf("| %s | %zu | %s / %s | %.0f / %.0f / %.0f | %s | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
-                  c.name.c_str(), st.tetrahedra, label, toString(mode), times.front(), median, times.back(), sortMs.c_str(),
+                  c.name.c_str(), st.tetrahedra, label, toString(mode).data(), times.front(), median, times.back(), sortMs.c_str(),
                   double(st.tetrahedra) / (median / 1e3), tfMs, st.gpuBytes / 1048576.0,
                   double(st.meshBytes) / double(st.tetrahedra), rmse, worst);
       std::fflush(stdout);
       if (csv)
         std::fprintf(csv, "%s,%s%s,%.3f,%.6g,%.6g\n", c.name.c_str(), caster == &raycaster ? "" : (caster == &vicp ? "vicp " : "vicp-exact "),
-                     toString(mode), median, rmse, worst);
+                     toString(mode).data(), median, rmse, worst);
     }
     caster->release();
     }

@@ -18,11 +18,12 @@ std::unique_ptr<PluginManager> loadPluginsForCli() {
 Progress terminalProgress(const std::string& label) {
   if (!isatty(STDERR_FILENO)) return Progress();
   auto last = std::make_shared<int>(-1);
-  return Progress([label, last](double f, const std::string&) {
+  return Progress([label, last](double f, const std::string& stage) {
     const int percent = int(f * 100.0);
     if (percent != *last) {
       *last = percent;
-      std::fprintf(stderr, "\r%s %3d%%%s", label.c_str(), percent, percent >= 100 ? "\n" : "");
+      const std::string what = stage.empty() ? label : stage;
+      std::fprintf(stderr, "\r%-24s %3d%%%s", what.c_str(), percent, percent >= 100 ? "\n" : "");
       std::fflush(stderr);
     }
     return true;

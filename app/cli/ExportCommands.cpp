@@ -5,10 +5,10 @@
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
-#include <volpost/core/IsoSurfaceExtraction.hpp>
-#include <volpost/core/PointLocator.hpp>
-#include <volpost/core/SurfaceWriter.hpp>
-#include <volpost/core/VtuWriter.hpp>
+#include "host/IsoSurfaceExtraction.hpp"
+#include "host/PointLocator.hpp"
+#include "host/SurfaceWriter.hpp"
+#include "host/VtuWriter.hpp"
 
 #include <QCommandLineParser>
 

@@ -1,24 +1,32 @@
 // SPDX-License-Identifier: MIT
-// `volpost render MODEL --field Q -o out.png`: an image with no window and no X server.
-#include "../core/ImageRender.hpp"
-#include "../core/GpuVolumeImage.hpp"
-#include "../core/VolumeImage.hpp"
-#include "CliSupport.hpp"
+// `volpost render MODEL --field Q -o out.png`: a picture with no window and no X server.
+// The options (or a state file saved by the window) make a SceneState; the Scene draws it
+// exactly as the window does.
+#include "../core/FloatImageFile.hpp"
+#include "../core/PluginRenderers.hpp"
+#include "../core/SceneImage.hpp"
 #include "../core/VolumeSpecs.hpp"
+#include "../core/CameraSpec.hpp"
+#include "CliSupport.hpp"
 #include "Commands.hpp"
 
+#include "host/AtomicFile.hpp"
+#include "host/TextFile.hpp"
+
+#include <QBuffer>
 #include <QCommandLineParser>
 #include <QFileInfo>
+#include <QImageWriter>
 
-#include <QFile>
-
+#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 namespace volpost::app {
 namespace {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 bool parseSize(const QString& text, int& w, int& h) {
   const QStringList parts = text.toLower().split('x');
@@ -29,188 +37,276 @@ bool parseSize(const QString& text, int& w, int& h) {
   return okW && okH && w > 0 && h > 0 && w <= 16384 && h <= 16384;
 }
 
-std::string readText(const QString& path) {
-  std::ifstream in(path.toStdString());
-  if (!in) throw std::runtime_error("cannot open " + path.toStdString());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+std::optional<DisplayRange> parseRange(const QString& text) {
+  const int colon = text.indexOf(':', 1);  // skip a leading minus sign
+  if (colon < 0) return std::nullopt;
+  bool okA = false, okB = false;
+  const DisplayRange r{text.left(colon).toDouble(&okA), text.mid(colon + 1).toDouble(&okB)};
+  if (!okA || !okB || !std::isfinite(r.min) || !std::isfinite(r.max) || !(r.max > r.min)) return std::nullopt;
+  return r;
 }
 
-bool parseRange(const QString& text, DisplayRange& range) {
-  const int colon = text.indexOf(':', 1);  // skip a leading minus sign
-  if (colon < 0) return false;
-  bool okA = false, okB = false;
-  range.min = text.left(colon).toDouble(&okA);
-  range.max = text.mid(colon + 1).toDouble(&okB);
-  return okA && okB && range.max > range.min;
+// The image format from the output's extension; what Qt cannot write is refused.
+QByteArray imageFormatOf(const QString& path) {
+  const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
+  const QByteArray format = suffix == "jpeg" ? QByteArray("jpg") : suffix;
+  if (format.isEmpty() || !QImageWriter::supportedImageFormats().contains(format))
+    throw UsageError(QString("-o %1: the picture is written as .png (or %2), by the file's extension")
+                         .arg(path, QString(QImageWriter::supportedImageFormats().join(", ")))
+                         .toStdString());
+  return format;
+}
+
+void writePicture(const QImage& image, const QString& path, const QByteArray& format) {
+  QByteArray bytes;
+  QBuffer buffer(&bytes);
+  buffer.open(QIODevice::WriteOnly);
+  if (!image.save(&buffer, format.constData()))
+    throw WriteError(path.toStdString(), "could not encode the picture as " + format.toStdString());
+  writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
+}
+
+struct Options {
+  QCommandLineOption field{"field", "Quantity to color by: S.mises, U.magnitude, U.x, S.xx, S.p1, T ... "
+                                    "(volpost info lists the fields). Default: plain surface.", "Q"};
+  QCommandLineOption step{"step", "Load case / time step, 1-based (default 1).", "K"};
+  QCommandLineOption camera{"camera", "View: iso, +x, -x, +y, -y, +z, -z; then az=DEG, el=DEG, zoom=F, "
+                                      "ortho or persp, comma-separated (default iso).", "SPEC"};
+  QCommandLineOption size{"size", "Image size (default 800x600).", "WxH", "800x600"};
+  QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale; also the colors of "
+                                          "the default volume transfer function.", "NAME"};
+  QCommandLineOption range{"range", "Fixed color range instead of the data's (also the default transfer "
+                                    "function's range).", "MIN:MAX"};
+  QCommandLineOption noEdges{"no-edges", "Hide element edges on the surface."};
+  QCommandLineOption noLegend{"no-legend", "Hide the color legend."};
+  QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
+  QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
+  QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result; reference: exact "
+                                          "CPU volume rendering; a GPU volume renderer from a plugin (raycast, vicp, "
+                                          "vicp-exact; volpost plugins lists them).", "NAME"};
+  QCommandLineOption mode{"mode", QString("GPU volume integration: %1 (default linear: exact cuts at every control "
+                                          "point).").arg(QString::fromStdString(integrationModeChoices())), "MODE"};
+  QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
+                              "color map over the result's range.", "FILE"};
+  QCommandLineOption clip{"clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
+                                  "(repeatable; volume rendering).", "PLANE"};
+  QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (volume "
+                                         "rendering).", "BOX"};
+  QCommandLineOption iso{"iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; repeatable, up to 8; "
+                                "volume rendering).", "ISO"};
+  QCommandLineOption volumeEdges{"volume-edges", "Volume rendering: draw the boundary's element edges, which hide "
+                                                 "what lies behind them."};
+  QCommandLineOption samplingStep{"sampling-step", "Sampling mode's step in model units (default: a quarter of the "
+                                                   "mean edge).", "H"};
+  QCommandLineOption termination{"termination", "Rays stop when the light left behind is below this fraction "
+                                                "(default 0.002; 0: never).", "T"};
+  QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
+                                       "FILE.pfm (RGB over the background).", "FILE"};
+  QCommandLineOption threads{"threads", "Threads for the reference renderer (default: all cores).", "N"};
+  QCommandLineOption state{"state", "Start from a state file saved by the window (File > Save State); other "
+                                    "options change it. MODEL may then be left out.", "FILE"};
+  QCommandLineOption saveState{"save-state", "Write the state of this picture, for the window (File > Open "
+                                             "State) or a later render.", "FILE"};
+};
+
+// The state the options describe: a state file's, or the defaults, changed by every option
+// that is set.
+void applyResultOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
+  std::string quantity = scene.state().quantity;
+  std::size_t step = scene.state().step;
+  if (p.isSet(o.field)) quantity = p.value(o.field).toStdString();
+  if (p.isSet(o.step)) {
+    bool ok = false;
+    const int n = p.value(o.step).toInt(&ok);
+    if (!ok || n < 1) throw UsageError(QString("--step %1 is not a step number (1, 2, ...)").arg(p.value(o.step)).toStdString());
+    step = std::size_t(n - 1);
+  }
+  scene.setResult(quantity, step);
+}
+
+void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
+  if (p.isSet(o.mode)) {
+    const auto mode = integrationModeFromString(p.value(o.mode).toStdString());
+    if (!mode)
+      throw UsageError(QString("--mode %1 is not one of: %2").arg(p.value(o.mode), QString::fromStdString(integrationModeChoices())).toStdString());
+    scene.setIntegrationMode(*mode);
+  }
+  if (p.isSet(o.tf)) {
+    const std::string path = p.value(o.tf).toStdString();
+    try {
+      scene.setTransferFunction(TransferFunction::fromJson(readTextFile(path, 16u << 20)));
+    } catch (const ReadError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+  }
+  if (p.isSet(o.clip)) {
+    std::vector<ClipPlane> planes;
+    for (const QString& c : p.values(o.clip)) {
+      const auto plane = parseClipPlane(c);
+      if (!plane) throw UsageError(QString("--clip %1 is not px,py,pz,nx,ny,nz with a non-zero normal").arg(c).toStdString());
+      planes.push_back(*plane);
+    }
+    scene.setClipPlanes(planes);
+  }
+  if (p.isSet(o.clipBox)) {
+    const auto box = parseClipBox(p.value(o.clipBox));
+    if (!box)
+      throw UsageError(QString("--clip-box %1 is not xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(p.value(o.clipBox)).toStdString());
+    scene.setClipBox(*box);
+  }
+  if (p.isSet(o.iso)) {
+    std::vector<optics::IsoSurface> surfaces;
+    for (const QString& text : p.values(o.iso)) {
+      const auto iso = parseIsoSurface(text);
+      if (!iso) throw UsageError(QString("--iso %1 is not VALUE[:r,g,b[:opacity]] with colors and opacity in 0..1").arg(text).toStdString());
+      surfaces.push_back(*iso);
+    }
+    scene.setIsoSurfaces(surfaces);
+  }
+  if (p.isSet(o.volumeEdges)) scene.setVolumeEdges(true);
+  const auto number = [&](const QCommandLineOption& option, const char* name) {
+    bool ok = false;
+    const double v = p.value(option).toDouble(&ok);
+    if (!ok || !std::isfinite(v)) throw UsageError(QString("--%1 %2 is not a number").arg(name, p.value(option)).toStdString());
+    return v;
+  };
+  if (p.isSet(o.samplingStep)) scene.setSamplingStep(number(o.samplingStep, "sampling-step"));
+  if (p.isSet(o.termination)) scene.setTermination(number(o.termination, "termination"));
+}
+
+// Options a chosen renderer cannot honour are errors, never silently ignored.
+void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o, const QString& renderer) {
+  const bool surface = renderer == "surface", reference = renderer == "reference";
+  const auto refuse = [&](const QCommandLineOption& option, const QString& why) {
+    if (p.isSet(option)) throw UsageError(QString("--%1 %2").arg(option.names().constLast(), why).toStdString());
+  };
+  if (surface) {
+    const QString why = "works with volume renderers (--renderer raycast, vicp, reference)";
+    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.clip, &o.clipBox, &o.iso, &o.volumeEdges,
+                                             &o.samplingStep, &o.termination, &o.floatOut, &o.threads})
+      refuse(*option, why);
+  } else {
+    refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
+    refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
+  }
+  if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
+  if (reference) {
+    refuse(o.mode, "chooses a GPU integration; the reference renderer integrates exactly");
+    refuse(o.volumeEdges, "is not drawn by the reference renderer");
+    refuse(o.samplingStep, "is not used by the reference renderer (it integrates exactly)");
+    refuse(o.termination, "is not used by the reference renderer (it never stops early)");
+  }
+  if (p.isSet(o.tf) && (p.isSet(o.colormap) || p.isSet(o.range)))
+    throw UsageError("--colormap and --range color the default transfer function; with --tf the file's colors "
+                     "and values are used: leave them out");
+}
+
+void applyOptions(const QCommandLineParser& p, const Options& o, const SceneState& base, Scene& scene) {
+  if (p.isSet(o.state)) scene.applyState(base);
+  applyResultOptions(p, o, scene);
+  if (p.isSet(o.colormap)) scene.setColorMap(p.value(o.colormap).toStdString());
+  if (p.isSet(o.range)) {
+    const auto r = parseRange(p.value(o.range));
+    if (!r) throw UsageError(QString("--range %1 is not MIN:MAX with finite MIN < MAX").arg(p.value(o.range)).toStdString());
+    scene.setFixedRange(*r);
+  }
+  if (p.isSet(o.noEdges)) scene.setShowEdges(false);
+  if (p.isSet(o.noLegend)) scene.setShowLegend(false);
+  if (p.isSet(o.flat)) scene.setLighting(false);
+  if (p.isSet(o.camera)) {
+    scene.camera().setView(StandardView::Isometric);
+    scene.fitCamera();
+    applyCameraSpec(scene.camera(), p.value(o.camera).toStdString());  // invalid_argument: a usage error
+  }
+  applyVolumeOptions(p, o, scene);
 }
 
 }  // namespace
 
 int runRender(const QStringList& args) {
   QCommandLineParser parser;
-  parser.setApplicationDescription("Renders MODEL to a PNG headless (EGL), with the window's renderer.");
-  parser.addPositionalArgument("MODEL", "mesh or results file");
+  parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
+  parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   parser.addHelpOption();
-  const QCommandLineOption field("field", "Quantity to color by: S.mises, U.magnitude, U.x, S.xx, S.p1, T ... "
-                                          "(volpost info lists the fields). Default: plain surface.", "Q");
-  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
-  const QCommandLineOption camera("camera", "View: iso, +x, -x, +y, -y, +z, -z; then az=DEG, el=DEG, zoom=F, "
-                                            "ortho or persp, comma-separated (default iso).", "SPEC", "iso");
-  const QCommandLineOption size("size", "Image size (default 800x600).", "WxH", "800x600");
-  const QCommandLineOption colormap("colormap", "cool-warm (default), viridis, rainbow, grayscale.", "NAME", "cool-warm");
-  const QCommandLineOption range("range", "Fixed color range instead of the data's.", "MIN:MAX");
-  const QCommandLineOption noEdges("no-edges", "Hide element edges.");
-  const QCommandLineOption noLegend("no-legend", "Hide the color legend.");
-  const QCommandLineOption output(QStringList{"o", "output"}, "Output PNG file.", "FILE");
-  const QCommandLineOption renderer("renderer", "surface (default): the boundary colored by the result; "
-                                                "reference: exact CPU volume rendering (tetrahedra); a GPU volume "
-                                                "renderer from a plugin, e.g. raycast.", "NAME", "surface");
-  const QCommandLineOption modeOption("mode", "GPU volume integration: linear (exact cuts, default), iso-table "
-                                              "(the seed's), preintegrated, sampling.", "MODE", "linear");
-  const QCommandLineOption tfFile("tf", "Transfer function (volpost TF JSON) for volume rendering; default: a "
-                                        "cool-warm ramp over the result's range.", "FILE");
-  const QCommandLineOption clip("clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
-                                        "(repeatable; volume rendering).", "PLANE");
-  const QCommandLineOption clipBox("clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (six clip "
-                                              "planes; volume rendering).", "BOX");
-  const QCommandLineOption isoOption("iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; "
-                                            "repeatable, up to 8; volume rendering).", "ISO");
-  const QCommandLineOption volumeEdges("volume-edges", "GPU volume rendering: draw the boundary's element edges, "
-                                                     "which hide what lies behind them.");
-  const QCommandLineOption floatOut("float", "Also write the volume image as 32-bit float RGB (PFM).", "FILE");
-  const QCommandLineOption threads("threads", "Threads for the reference renderer (default: all cores).", "N", "0");
-  parser.addOptions({field, step, camera, size, colormap, range, noEdges, noLegend, output, renderer, modeOption,
-                     tfFile, clip, clipBox, isoOption, volumeEdges, floatOut, threads});
-  parser.process(QStringList{"volpost render"} + args);
-
-  if (parser.positionalArguments().size() != 1) {
-    printError("render needs exactly one MODEL file (volpost render MODEL -o out.png)");
+  const Options o;
+  parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
+                     o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
+                     o.termination, o.floatOut, o.threads, o.state, o.saveState});
+  if (!parser.parse(QStringList{"volpost render"} + args)) {
+    printError(parser.errorText());
     return 2;
   }
-  if (!parser.isSet(output)) {
-    printError("render needs an output file: -o out.png");
-    return 2;
-  }
-  ImageRequest request;
-  if (!parseSize(parser.value(size), request.width, request.height)) {
-    printError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(size)));
-    return 2;
-  }
-  bool okStep = false;
-  const int stepNumber = parser.value(step).toInt(&okStep);
-  if (!okStep || stepNumber < 1) {
-    printError(QString("--step %1 is not a step number (1, 2, ...)").arg(parser.value(step)));
-    return 2;
-  }
-  request.step = std::size_t(stepNumber - 1);
-  if (parser.isSet(range)) {
-    DisplayRange r;
-    if (!parseRange(parser.value(range), r)) {
-      printError(QString("--range %1 is not MIN:MAX with MIN < MAX").arg(parser.value(range)));
-      return 2;
-    }
-    request.range = r;
-  }
-  request.camera = parser.value(camera).toStdString();
-  request.colorMap = parser.value(colormap).toStdString();
-  request.edges = !parser.isSet(noEdges);
-  request.legend = !parser.isSet(noLegend);
-
-  const QString rendererName = parser.value(renderer);
-  const QString modeName = parser.value(modeOption);
-  const std::map<QString, IntegrationMode> modes = {{"linear", IntegrationMode::LinearSegments},
-                                                    {"iso-table", IntegrationMode::LinearSegmentsIsoTable},
-                                                    {"preintegrated", IntegrationMode::PreIntegrated},
-                                                    {"sampling", IntegrationMode::Sampling}};
-  if (!modes.count(modeName)) {
-    printError(QString("--mode %1 is not one of: linear, iso-table, preintegrated, sampling").arg(modeName));
-    return 2;
-  }
-  std::vector<ClipPlane> clipPlanes;
-  for (const QString& c : parser.values(clip)) {
-    const auto plane = parseClipPlane(c);
-    if (!plane) {
-      printError(QString("--clip %1 is not px,py,pz,nx,ny,nz with a non-zero normal").arg(c));
-      return 2;
-    }
-    clipPlanes.push_back(*plane);
-  }
-  if (parser.isSet(clipBox)) {
-    const auto box = parseClipBox(parser.value(clipBox));
-    if (!box) {
-      printError(QString("--clip-box %1 is not xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(parser.value(clipBox)));
-      return 2;
-    }
-    clipPlanes.insert(clipPlanes.end(), box->begin(), box->end());
-  }
-  if (clipPlanes.size() > 6) {
-    printError(QString("%1 clip planes: the volume renderers take at most 6 (a box is 6)").arg(clipPlanes.size()));
-    return 2;
-  }
-  std::vector<optics::IsoSurface> isoSurfaces;
-  for (const QString& text : parser.values(isoOption)) {
-    const auto iso = parseIsoSurface(text);
-    if (!iso || isoSurfaces.size() == 8) {
-      printError(QString("--iso %1 is not VALUE[:r,g,b[:opacity]] with colors and opacity in 0..1 (at most 8)").arg(text));
-      return 2;
-    }
-    isoSurfaces.push_back(*iso);
-  }
-  if (rendererName != "surface" && !parser.isSet(field)) {
-    printError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName));
-    return 2;
-  }
-
-  const QString path = parser.positionalArguments().first();
-  auto plugins = loadPluginsForCli();
-  std::unique_ptr<VolumeRenderer> gpuRenderer;
-  if (rendererName != "surface" && rendererName != "reference") {
-    QStringList known = {"surface", "reference"};
-    for (RendererPlugin* p : plugins->rendererPlugins()) {
-      known << p->rendererNames();
-      if (!gpuRenderer && p->rendererNames().contains(rendererName)) {
-        std::unique_ptr<Renderer> r = p->createRenderer(rendererName);
-        if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
-          r.release();
-          gpuRenderer.reset(v);
-        }
-      }
-    }
-    if (!gpuRenderer) {
-      printError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")));
-      return 2;
-    }
+  if (parser.isSet("help")) {
+    std::printf("%s", qPrintable(parser.helpText()));
+    return 0;
   }
   try {
-    const auto session = ModelSession::load(plugins->readers(), path.toStdString(), terminalProgress("reading"));
-    if (parser.isSet(field)) request.quantity = session->findQuantity(parser.value(field).toStdString());
-    QImage image;
-    VolumeRequest volume{request.quantity.value_or(Quantity{}), request.step, request.camera, request.width,
-                         request.height, {}, clipPlanes, isoSurfaces, parser.value(threads).toInt()};
-    if (parser.isSet(tfFile)) volume.transferFunction = TransferFunction::fromJson(readText(parser.value(tfFile)));
-    volume.edges = parser.isSet(volumeEdges);
-    if (gpuRenderer) {
-      image = renderGpuVolume(*session, volume, *gpuRenderer, modes.at(modeName), request.legend);
-    } else if (rendererName == "reference") {
-      const auto reference = renderVolumeReference(*session, volume, terminalProgress("rendering"));
-      const glm::dvec3 background(1.0);
-      image = toQImage(reference, background);
-      if (parser.isSet(floatOut) && !writePfm(reference, background, parser.value(floatOut).toStdString())) {
-        printError(QString("cannot write %1").arg(parser.value(floatOut)));
-        return 1;
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1 || (positional.isEmpty() && !parser.isSet(o.state)))
+      throw UsageError("render needs one MODEL file, or --state FILE (volpost render MODEL -o out.png)");
+    if (!parser.isSet(o.output)) throw UsageError("render needs an output file: -o out.png");
+    int width = 0, height = 0;
+    if (!parseSize(parser.value(o.size), width, height))
+      throw UsageError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(o.size)).toStdString());
+    const QString out = parser.value(o.output);
+    const QByteArray format = imageFormatOf(out);
+
+    SceneState base;
+    if (parser.isSet(o.state)) base = SceneState::load(parser.value(o.state).toStdString());
+    if (!positional.isEmpty()) base.modelPath = positional.first().toStdString();
+    QString rendererName = parser.isSet(o.renderer) ? parser.value(o.renderer)
+                           : base.volume.shown      ? QString::fromStdString(base.volume.renderer)
+                                                    : QString("surface");
+    refuseWhatTheRendererIgnores(parser, o, rendererName);
+    bool threadsOk = true;
+    const int threads = parser.isSet(o.threads) ? parser.value(o.threads).toInt(&threadsOk) : 0;
+    if (!threadsOk || threads < 0 || threads > 1024)
+      throw UsageError(QString("--threads %1 is not a thread count (1..1024, 0: all cores)").arg(parser.value(o.threads)).toStdString());
+
+    // Outputs are checked before the work: a missing folder is said at once, not after it.
+    checkWritable(out.toStdString());
+    if (parser.isSet(o.floatOut)) checkWritable(parser.value(o.floatOut).toStdString());
+    if (parser.isSet(o.saveState)) checkWritable(parser.value(o.saveState).toStdString());
+    auto plugins = loadPluginsForCli();
+    const bool gpuVolume = rendererName != "surface" && rendererName != "reference";
+    if (gpuVolume) {
+      QStringList known = {"surface", "reference"};
+      for (const RendererEntry& r : volumeRenderers(*plugins)) known << r.name;
+      if (!known.contains(rendererName))
+        throw UsageError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")).toStdString());
+    }
+    {
+      Scene scene(volumeRendererFactory(*plugins));
+      const auto session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"));
+      scene.setSession(session);
+      try {  // an option (or a state file) this model cannot honour is a usage error
+        applyOptions(parser, o, base, scene);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
       }
-    } else {
-      image = renderImage(*session, request);
+      if (rendererName != "surface" && !scene.view())
+        throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
+      if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
+      scene.setVolumeShown(rendererName != "surface");
+      const SceneImage image = rendererName == "reference"
+                                   ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
+                                   : renderSceneImage(scene, width, height);
+      writePicture(image.picture, out, format);
+      if (parser.isSet(o.floatOut))
+        writeFloatImage(parser.value(o.floatOut).toStdString(), image.width, image.height, image.volumeRgba,
+                        glm::dvec3(scene.background()));
+      if (parser.isSet(o.saveState)) scene.state().save(parser.value(o.saveState).toStdString());
+      std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));
+      return 0;
     }
-    const QString out = parser.value(output);
-    if (!image.save(out, "PNG")) {
-      printError(QString("cannot write %1 (check the folder exists and is writable)").arg(out));
-      return 1;
-    }
-    std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));
-    return 0;
+  } catch (const UsageError& e) {
+    printError(e.what());
+    return 2;
+  } catch (const Cancelled&) {
+    printError("cancelled");
+    return 1;
   } catch (const std::exception& e) {
     printError(e.what());
     return 1;

@@ -8,13 +8,17 @@ namespace volpost::app {
 std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
                                                  const Progress& progress) {
   auto session = std::make_shared<ModelSession>();
+  // The caller's progress sees one bar with named stages; cancelling it cancels the stage.
+  Progress stage = progress;
+  stage.setStage("reading");
   Progress readProgress([&](double f, const std::string&) {
-    progress.report(0.8 * f);
+    stage.report(0.8 * f);
     return true;
   });
   session->model_ = readers.load(path, readProgress);
+  stage.setStage("extracting the boundary");
   Progress boundaryProgress([&](double f, const std::string&) {
-    progress.report(0.8 + 0.2 * f);
+    stage.report(0.8 + 0.2 * f);
     return true;
   });
   session->surface_ = std::make_shared<BoundarySurface>(extractBoundary(session->model_->mesh, boundaryProgress));

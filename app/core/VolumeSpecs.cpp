@@ -36,22 +36,14 @@ std::optional<ClipPlane> parseClipPlane(const QString& text) {
   return plane;
 }
 
-std::optional<std::vector<ClipPlane>> parseClipBox(const QString& text) {
+std::optional<ClipBox> parseClipBox(const QString& text) {
   const auto v = numbers(text, 6);
   if (!v) return std::nullopt;
-  std::vector<ClipPlane> planes;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double lo = (*v)[std::size_t(2 * axis)], hi = (*v)[std::size_t(2 * axis + 1)];
-    if (!(hi > lo)) return std::nullopt;
-    glm::dvec3 point(0.0), normal(0.0);
-    point[axis] = lo;
-    normal[axis] = 1.0;
-    planes.push_back({point, normal});  // keeps x >= lo
-    point[axis] = hi;
-    normal[axis] = -1.0;
-    planes.push_back({point, normal});  // keeps x <= hi
-  }
-  return planes;
+  ClipBox box{};
+  for (std::size_t i = 0; i < 6; ++i) box[i] = (*v)[i];
+  for (std::size_t i = 0; i < 6; i += 2)
+    if (!(box[i + 1] > box[i])) return std::nullopt;
+  return box;
 }
 
 std::optional<optics::IsoSurface> parseIsoSurface(const QString& text) {
@@ -86,6 +78,12 @@ std::optional<std::vector<optics::IsoSurface>> parseIsoSurfaces(const QString& t
     out.push_back(*iso);
   }
   return out;
+}
+
+QString clipBoxText(const ClipBox& box) {
+  QStringList parts;
+  for (double v : box) parts << QString::number(v, 'g', 12);
+  return parts.join(',');
 }
 
 QString isoSurfacesText(const std::vector<optics::IsoSurface>& surfaces) {

@@ -3,6 +3,8 @@
 // line (--clip, --clip-box, --iso) and the window's dialogs.
 #pragma once
 
+#include "SceneState.hpp"
+
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 
@@ -17,8 +19,9 @@ namespace volpost::app {
 std::optional<glm::dvec3> parsePoint(const QString& text);
 /// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
 std::optional<ClipPlane> parseClipPlane(const QString& text);
-/// "xmin,xmax,ymin,ymax,zmin,zmax": the six planes that keep the inside of the box.
-std::optional<std::vector<ClipPlane>> parseClipBox(const QString& text);
+/// "xmin,xmax,ymin,ymax,zmin,zmax" with min < max on every axis.
+std::optional<ClipBox> parseClipBox(const QString& text);
+QString clipBoxText(const ClipBox& box);
 /// "VALUE[:r,g,b[:opacity]]", colors and opacity 0..1 (default opaque white).
 std::optional<optics::IsoSurface> parseIsoSurface(const QString& text);
 /// Several iso-surfaces separated by ';' (empty text: none). On a bad entry, nullopt and

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "MainWindow.hpp"
 
-#include "../core/VolumeImage.hpp"
+#include "../core/PluginRenderers.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
 #include "Viewport.hpp"
@@ -31,6 +31,8 @@
 #include <QToolBar>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <mutex>
+
 namespace volpost::app {
 namespace {
 
@@ -53,9 +55,21 @@ struct LoadResult {
 
 }  // namespace
 
+template <typename Change>
+bool MainWindow::changeScene(Change&& change) {
+  try {
+    change(viewport_->scene());
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(e.what());
+    return false;
+  }
+  viewport_->update();
+  return true;
+}
+
 MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(parent), plugins_(plugins) {
   setWindowTitle("volpost");
-  viewport_ = new Viewport(this);
+  viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
   statusBar()->addPermanentWidget(glLabel_);
@@ -87,6 +101,9 @@ void MainWindow::buildActions() {
   file->addAction("&Open...", QKeySequence::Open, this, &MainWindow::chooseFile);
   file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
   file->addSeparator();
+  file->addAction("Open S&tate...", this, &MainWindow::chooseStateToOpen);
+  file->addAction("Save St&ate...", this, &MainWindow::chooseStateToSave);
+  file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
 
   QMenu* view = menuBar()->addMenu("&View");
@@ -101,25 +118,25 @@ void MainWindow::buildActions() {
     view->addAction(label, QKeySequence(key++), this, [this, sv] { viewport_->setStandardView(sv); });
   }
   view->addSeparator();
-  QAction* ortho = view->addAction("&Orthographic");
-  ortho->setCheckable(true);
-  ortho->setShortcut(QKeySequence(Qt::Key_P));
-  connect(ortho, &QAction::toggled, this, [this](bool on) {
+  orthoAction_ = view->addAction("&Orthographic");
+  orthoAction_->setCheckable(true);
+  orthoAction_->setShortcut(QKeySequence(Qt::Key_P));
+  connect(orthoAction_, &QAction::toggled, this, [this](bool on) {
     viewport_->setProjection(on ? Camera::Projection::Orthographic : Camera::Projection::Perspective);
   });
   edgesAction_ = view->addAction("Element &Edges");
   edgesAction_->setCheckable(true);
   edgesAction_->setChecked(QSettings("volpost", "volpost").value("view/edges", true).toBool());
   edgesAction_->setShortcut(QKeySequence(Qt::Key_E));
-  viewport_->setShowEdges(edgesAction_->isChecked());
+  viewport_->scene().setShowEdges(edgesAction_->isChecked());
   connect(edgesAction_, &QAction::toggled, this, [this](bool on) {
-    viewport_->setShowEdges(on);
+    changeScene([on](Scene& s) { s.setShowEdges(on); });
     QSettings("volpost", "volpost").setValue("view/edges", on);
   });
-  QAction* legend = view->addAction("&Legend");
-  legend->setCheckable(true);
-  legend->setChecked(true);
-  connect(legend, &QAction::toggled, viewport_, &Viewport::setShowLegend);
+  legendAction_ = view->addAction("&Legend");
+  legendAction_->setCheckable(true);
+  legendAction_->setChecked(true);
+  connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
   buildVolumeMenu(view);
 
   QMenu* tools = menuBar()->addMenu("&Tools");
@@ -132,78 +149,57 @@ void MainWindow::buildActions() {
   });
 }
 
-std::unique_ptr<VolumeRenderer> MainWindow::createVolumeRenderer(const QString& name) const {
-  for (RendererPlugin* plugin : plugins_.rendererPlugins())
-    if (plugin->rendererNames().contains(name)) {
-      std::unique_ptr<Renderer> r = plugin->createRenderer(name);
-      if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
-        r.release();
-        return std::unique_ptr<VolumeRenderer>(v);
-      }
-    }
-  return nullptr;
-}
-
 void MainWindow::buildVolumeMenu(QMenu* view) {
-  // Every GPU volume renderer the plugins offer; the first one is used until another is chosen.
-  QStringList names;
-  for (RendererPlugin* plugin : plugins_.rendererPlugins()) names << plugin->rendererNames();
+  // Every GPU volume renderer the plugins offer, named as the plugin names it; the first
+  // is used until another is chosen.
+  const std::vector<RendererEntry> renderers = volumeRenderers(plugins_);
   view->addSeparator();
-  QMenu* renderers = view->addMenu("Volume &Renderer");
+  QMenu* rendererMenu = view->addMenu("Volume &Renderer");
   auto* rendererGroup = new QActionGroup(this);
-  const std::map<QString, QString> labels = {{"raycast", "Ray casting"},
-                                             {"vicp", "Cell projection (MPVONC order)"},
-                                             {"vicp-exact", "Cell projection (exact image-space order)"}};
-  for (const QString& name : names) {
-    auto renderer = createVolumeRenderer(name);
-    if (!renderer) continue;
-    const auto label = labels.find(name);
-    QAction* a = renderers->addAction(label != labels.end() ? label->second : name);
+  for (std::size_t i = 0; i < renderers.size(); ++i) {
+    const QString name = renderers[i].name;
+    QAction* a = rendererMenu->addAction(renderers[i].label);
     a->setObjectName("renderer:" + name);
     a->setCheckable(true);
     rendererGroup->addAction(a);
-    if (!viewport_->hasVolumeRenderer()) {
-      viewport_->setVolumeRenderer(std::move(renderer));
+    if (i == 0) {
+      viewport_->scene().setVolumeRenderer(name.toStdString());
       a->setChecked(true);
     }
-    connect(a, &QAction::triggered, this, [this, name] {
-      viewport_->setVolumeRenderer(createVolumeRenderer(name));
-      statusBar()->showMessage("Volume renderer: " + name);
+    connect(a, &QAction::triggered, this, [this, name, a] {
+      if (changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); }))
+        statusBar()->showMessage("Volume renderer: " + a->text());
     });
   }
   volumeAction_ = view->addAction("&Volume Rendering");
   volumeAction_->setObjectName("volumeAction");
   volumeAction_->setCheckable(true);
   volumeAction_->setShortcut(QKeySequence(Qt::Key_V));
-  volumeAction_->setEnabled(viewport_->hasVolumeRenderer());
-  if (!viewport_->hasVolumeRenderer()) volumeAction_->setToolTip("No volume renderer plugin is loaded");
+  volumeAction_->setEnabled(!renderers.empty());
+  if (renderers.empty()) volumeAction_->setToolTip("No volume renderer plugin is loaded");
   connect(volumeAction_, &QAction::toggled, this, &MainWindow::setVolumeShown);
 
   QMenu* modes = view->addMenu("Volume &Integration");
   auto* modeGroup = new QActionGroup(this);
-  const std::pair<const char*, IntegrationMode> modeList[] = {
-      {"Linear segments, exact cuts", IntegrationMode::LinearSegments},
-      {"Linear segments, iso-detection table (seed)", IntegrationMode::LinearSegmentsIsoTable},
-      {"Pre-integrated table", IntegrationMode::PreIntegrated},
-      {"Sampling (fixed step)", IntegrationMode::Sampling}};
-  for (const auto& [label, mode] : modeList) {
-    QAction* a = modes->addAction(label);
+  for (IntegrationMode mode : allIntegrationModes()) {
+    QAction* a = modes->addAction(QString::fromUtf8(describe(mode).data(), int(describe(mode).size())));
+    a->setObjectName(QString("mode:") + QString::fromUtf8(toString(mode).data(), int(toString(mode).size())));
     a->setCheckable(true);
     a->setChecked(mode == IntegrationMode::LinearSegments);
     modeGroup->addAction(a);
-    const IntegrationMode m = mode;
-    connect(a, &QAction::triggered, this, [this, m] { viewport_->setIntegrationMode(m); });
+    connect(a, &QAction::triggered, this, [this, mode] { changeScene([mode](Scene& s) { s.setIntegrationMode(mode); }); });
   }
   QMenu* clip = view->addMenu("&Clip Plane");
   auto* clipGroup = new QActionGroup(this);
   const char* axes[] = {"Off", "Normal +X", "Normal +Y", "Normal +Z"};
   for (int i = 0; i < 4; ++i) {
     QAction* a = clip->addAction(axes[i]);
+    a->setObjectName(QString("clip:%1").arg(i - 1));
     a->setCheckable(true);
     a->setChecked(i == 0);
     clipGroup->addAction(a);
     connect(a, &QAction::triggered, this, [this, i] {
-      viewport_->setClipAxis(i - 1);
+      setClipAxis(i - 1);
       if (i > 0) statusBar()->showMessage("Ctrl+drag in the view moves the clip plane");
     });
   }
@@ -212,21 +208,34 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
 }
 
+void MainWindow::setClipAxis(int axis) {
+  if (axis < 0 || !session_) {
+    changeScene([](Scene& s) { s.setClipPlanes({}); });
+    return;
+  }
+  glm::dvec3 n(0.0);
+  n[axis] = 1.0;
+  const ClipPlane plane{session_->model().mesh.bounds().center(), n};
+  changeScene([&](Scene& s) { s.setClipPlanes({plane}); });
+}
+
 void MainWindow::chooseClipBox() {
   if (!session_) return;
   const Bounds b = session_->model().mesh.bounds();
-  QString text = QString("%1,%2,%3,%4,%5,%6").arg(b.min.x).arg(b.max.x).arg(b.min.y).arg(b.max.y).arg(b.min.z).arg(b.max.z);
+  const auto current = viewport_->scene().volume().clipBox;
+  QString text = current ? clipBoxText(*current)
+                         : clipBoxText({b.min.x, b.max.x, b.min.y, b.max.y, b.min.z, b.max.z});
   for (;;) {
     bool ok = false;
     text = QInputDialog::getText(this, "Clip box", "Keep inside xmin,xmax,ymin,ymax,zmin,zmax (empty: no box):",
                                  QLineEdit::Normal, text, &ok);
     if (!ok) return;
     if (text.trimmed().isEmpty()) {
-      viewport_->setClipBox({});
+      changeScene([](Scene& s) { s.setClipBox(std::nullopt); });
       return;
     }
     if (const auto box = parseClipBox(text)) {
-      viewport_->setClipBox(*box);
+      if (!changeScene([&](Scene& s) { s.setClipBox(*box); })) return;
       viewport_->repaint();  // uploads now, so the message below is about this box
       statusBar()->showMessage(QString("Clip box: the GPU holds %1 of the %2 tets")
                                    .arg(viewport_->uploadedTetCount())
@@ -238,12 +247,10 @@ void MainWindow::chooseClipBox() {
 }
 
 void MainWindow::chooseIsoSurfaces() {
-  QString text = isoSurfacesText(viewport_->isoSurfaces());
+  QString text = isoSurfacesText(viewport_->scene().volume().isoSurfaces);
   if (text.isEmpty()) {
-    if (const auto q = activeQuantity(); q && session_) {
-      const ScalarView v = session_->evaluate(*q, activeStep());
-      if (v.range.valid()) text = QString("%1:1,0.85,0.2:0.6").arg(0.5 * (v.range.min + v.range.max), 0, 'g', 6);
-    }
+    if (const auto& v = viewport_->scene().view(); v && v->range.valid())
+      text = QString("%1:1,0.85,0.2:0.6").arg(0.5 * (v->range.min + v->range.max), 0, 'g', 6);
   }
   for (;;) {
     bool ok = false;
@@ -253,8 +260,8 @@ void MainWindow::chooseIsoSurfaces() {
     if (!ok) return;
     QString bad;
     if (const auto surfaces = parseIsoSurfaces(text, &bad)) {
-      viewport_->setIsoSurfaces(*surfaces);
-      if (!surfaces->empty() && !viewport_->volumeShown()) volumeAction_->setChecked(true);
+      if (!changeScene([&](Scene& s) { s.setIsoSurfaces(*surfaces); })) return;
+      if (!surfaces->empty() && !viewport_->scene().volumeShown()) volumeAction_->setChecked(true);
       return;
     }
     QMessageBox::warning(this, "Iso-surfaces", QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
@@ -263,26 +270,23 @@ void MainWindow::chooseIsoSurfaces() {
 
 void MainWindow::setVolumeShown(bool on) {
   if (!on || !session_) {
-    viewport_->showSurface();
+    changeScene([](Scene& s) { s.setVolumeShown(false); });
     return;
   }
-  const auto q = activeQuantity();
-  if (!q) {
+  if (!viewport_->scene().view()) {
     statusBar()->showMessage("Choose a result to render as a volume");
-    volumeAction_->setChecked(false);
-    return;
-  }
-  try {
-    const ScalarView view = session_->evaluate(*q, activeStep());
-    viewport_->showVolume(transferFunctionFor(view));
-    statusBar()->showMessage(QString("Volume rendering %1 (extinction in 1 / model length unit)")
-                                 .arg(QString::fromStdString(q->displayName())));
-  } catch (const std::exception& e) {
     const QSignalBlocker block(volumeAction_);
     volumeAction_->setChecked(false);
-    viewport_->showSurface();
-    statusBar()->showMessage(QString("Volume rendering unavailable: %1").arg(e.what()));
+    return;
   }
+  if (!changeScene([](Scene& s) { s.setVolumeShown(true); })) {
+    const QSignalBlocker block(volumeAction_);
+    volumeAction_->setChecked(false);
+    return;
+  }
+  statusBar()->showMessage(QString("Volume rendering %1 (extinction in 1 / model length unit)")
+                               .arg(QString::fromStdString(viewport_->scene().view()->quantity.displayName())));
+  notifyPanels();
 }
 
 void MainWindow::buildToolbar() {
@@ -303,7 +307,7 @@ void MainWindow::buildToolbar() {
   colorMapBox_->setObjectName("colorMapBox");
   for (const auto& name : ColorMap::names()) colorMapBox_->addItem(QString::fromStdString(name));
   colorMapBox_->setCurrentText(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString());
-  viewport_->setColorMap(ColorMap::named(colorMapBox_->currentText().toStdString()));
+  changeScene([this](Scene& s) { s.setColorMap(colorMapBox_->currentText().toStdString()); });
   bar->addWidget(colorMapBox_);
   connect(quantityBox_, &QComboBox::currentIndexChanged, this, [this] {
     fillSteps();
@@ -311,7 +315,8 @@ void MainWindow::buildToolbar() {
   });
   connect(stepBox_, &QComboBox::currentIndexChanged, this, &MainWindow::refreshScalars);
   connect(colorMapBox_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-    viewport_->setColorMap(ColorMap::named(name.toStdString()));
+    changeScene([&](Scene& s) { s.setColorMap(name.toStdString()); });
+    notifyPanels();
     QSettings("volpost", "volpost").setValue("view/colorMap", name);
   });
 }
@@ -349,40 +354,68 @@ void MainWindow::openFile(const QString& path) {
   }
   loading_ = true;
   auto progress = std::make_shared<std::atomic<int>>(0);
+  auto stage = std::make_shared<QString>();
+  auto stageMutex = std::make_shared<std::mutex>();
   auto cancel = std::make_shared<std::atomic<bool>>(false);
   auto* dialog = new QProgressDialog(QString("Reading %1...").arg(QFileInfo(path).fileName()), "Cancel", 0, 100, this);
   dialog->setWindowModality(Qt::WindowModal);
   dialog->setMinimumDuration(300);
   connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
   auto* timer = new QTimer(dialog);
-  connect(timer, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(*progress); });
+  const QString fileName = QFileInfo(path).fileName();
+  connect(timer, &QTimer::timeout, dialog, [dialog, progress, stage, stageMutex, fileName] {
+    QString now;
+    {
+      const std::lock_guard lock(*stageMutex);
+      now = *stage;
+    }
+    if (!now.isEmpty()) dialog->setLabelText(QString("%1: %2...").arg(fileName, now));
+    dialog->setValue(*progress);
+  });
   timer->start(50);
   statusBar()->showMessage("Reading " + path);
 
   const ReaderRegistry& readers = plugins_.readers();
   auto* watcher = new QFutureWatcher<LoadResult>(this);
-  connect(watcher, &QFutureWatcher<LoadResult>::finished, this, [this, watcher, dialog, path] {
+  connect(watcher, &QFutureWatcher<LoadResult>::finished, this, [this, watcher, dialog, timer, path] {
     const LoadResult r = watcher->result();
     watcher->deleteLater();
+    // The dialog goes now, not when control is back in the main loop: an error box below
+    // runs its own loop, in which the timer would show the dialog again over everything.
+    timer->stop();
+    dialog->reset();
+    dialog->hide();
     dialog->deleteLater();
     loading_ = false;
     if (r.session) {
       installSession(r.session);
       emit loadFinished(true, {});
+      if (pendingState_) {
+        const SceneState state = *pendingState_;
+        pendingState_.reset();
+        applyState(state);
+      }
     } else if (r.cancelled) {
+      pendingState_.reset();
       statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
       emit loadFinished(false, "cancelled");
     } else {
       statusBar()->showMessage("Could not open " + path);
       emit loadFinished(false, r.error);
+      if (pendingState_) {
+        pendingState_.reset();
+        emit stateApplied(false, r.error);
+      }
       QMessageBox::critical(this, "Cannot open model", r.error);
     }
   });
-  watcher->setFuture(QtConcurrent::run([&readers, path, progress, cancel]() {
+  watcher->setFuture(QtConcurrent::run([&readers, path, progress, cancel, stage, stageMutex]() {
     LoadResult r;
     try {
-      Progress p([&](double f, const std::string&) {
+      Progress p([&](double f, const std::string& name) {
         *progress = int(f * 100.0);
+        const std::lock_guard lock(*stageMutex);
+        *stage = QString::fromStdString(name);
         return !*cancel;
       });
       r.session = ModelSession::load(readers, path.toStdString(), p);
@@ -400,7 +433,8 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   userTransferFunctions_.clear();  // a new model: its fields get their own defaults
   const Model& m = session_->model();
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));
-  viewport_->setSession(session_);
+  viewport_->scene().setSession(session_);
+  viewport_->update();
   if (volumeAction_) {
     const QSignalBlocker block(volumeAction_);
     volumeAction_->setChecked(false);
@@ -463,60 +497,41 @@ bool MainWindow::selectQuantity(const QString& key) {
 void MainWindow::refreshScalars() {
   if (!session_) return;
   const auto q = activeQuantity();
-  if (!q) {
-    viewport_->setScalars(std::nullopt, {});
-    notifyPanels();
-    return;
+  const std::string key = q ? q->key() : std::string();
+  const auto tf = userTransferFunctions_.find(key);
+  const bool ok = changeScene([&](Scene& s) {
+    s.setResult(key, activeStep());
+    s.setTransferFunction(tf != userTransferFunctions_.end() ? std::optional(tf->second) : std::nullopt);
+  });
+  if (!ok) {
+    changeScene([](Scene& s) { s.setResult({}, 0); });
+    QMessageBox::warning(this, "Cannot show result", statusBar()->currentMessage());
+  } else if (const auto& view = viewport_->scene().view(); view && view->range.nanCount) {
+    statusBar()->showMessage(QString("%1: %2 values are NaN or infinite (drawn gray)")
+                                 .arg(QString::fromStdString(view->quantity.displayName()))
+                                 .arg(view->range.nanCount));
   }
-  try {
-    ScalarView view = session_->evaluate(*q, activeStep());
-    const DisplayRange range = autoRange(view);
-    if (view.range.nanCount)
-      statusBar()->showMessage(QString("%1: %2 values are NaN or infinite (drawn gray)")
-                                   .arg(QString::fromStdString(q->displayName()))
-                                   .arg(view.range.nanCount));
-    viewport_->setScalars(std::move(view), range);
-    if (volumeAction_ && volumeAction_->isChecked()) setVolumeShown(true);  // new result: new default TF
-  } catch (const std::exception& e) {
-    viewport_->setScalars(std::nullopt, {});
-    QMessageBox::warning(this, "Cannot show result", e.what());
+  if (!viewport_->scene().view() && volumeAction_ && volumeAction_->isChecked()) {
+    const QSignalBlocker block(volumeAction_);
+    volumeAction_->setChecked(false);
   }
   notifyPanels();
 }
 
 void MainWindow::requestRender() { viewport_->update(); }
 
-TransferFunction MainWindow::transferFunctionFor(const ScalarView& view) const {
-  const auto it = userTransferFunctions_.find(view.quantity.key());
-  if (it != userTransferFunctions_.end()) return it->second;
-  return defaultTransferFunction(view, session_->model().mesh.bounds().diagonal());
-}
-
-TransferFunction MainWindow::transferFunction() const {
-  const auto q = activeQuantity();
-  if (!session_ || !q) return {};
-  try {
-    return transferFunctionFor(session_->evaluate(*q, activeStep()));
-  } catch (const std::exception&) {
-    return {};
-  }
-}
+TransferFunction MainWindow::transferFunction() const { return viewport_->scene().transferFunction(); }
 
 void MainWindow::setTransferFunction(const TransferFunction& tf) {
-  const auto q = activeQuantity();
-  if (!session_ || !q) return;
-  userTransferFunctions_[q->key()] = tf;
-  if (viewport_->volumeShown()) viewport_->setTransferFunction(tf);
+  const auto& view = viewport_->scene().view();
+  if (!session_ || !view) return;
+  userTransferFunctions_[view->quantity.key()] = tf;
+  changeScene([&](Scene& s) { s.setTransferFunction(tf); });
 }
 
 std::vector<double> MainWindow::activeValues() const {
-  const auto q = activeQuantity();
-  if (!session_ || !q) return {};
-  try {
-    return session_->evaluate(*q, activeStep()).values;
-  } catch (const std::exception&) {
-    return {};
-  }
+  const auto& view = viewport_->scene().view();
+  return view ? view->values : std::vector<double>{};
 }
 
 double MainWindow::modelSize() const { return session_ ? session_->model().mesh.bounds().diagonal() : 0.0; }
@@ -549,6 +564,109 @@ void MainWindow::showModelInfo() {
     html += QString("<span style='color:%1'>%2</span><br>")
                 .arg(d.severity == Severity::Warning ? "#a01010" : "#404040", QString::fromStdString(d.message).toHtmlEscaped());
   modelInfo_->setHtml(html);
+}
+
+bool MainWindow::saveStateFile(const QString& path) {
+  try {
+    viewport_->scene().state().save(path.toStdString());
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString("Could not save the state: %1").arg(e.what()));
+    return false;
+  }
+  statusBar()->showMessage("Saved the view to " + path + " (volpost render --state reproduces it)");
+  return true;
+}
+
+void MainWindow::chooseStateToSave() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first: a state describes a view of one");
+    return;
+  }
+  QSettings settings("volpost", "volpost");
+  const QString suggested = QFileInfo(QString::fromStdString(session_->model().sourcePath)).absolutePath() + "/view.json";
+  const QString path = QFileDialog::getSaveFileName(this, "Save state", settings.value("files/lastState", suggested).toString(),
+                                                    "volpost state (*.json)");
+  if (path.isEmpty()) return;
+  settings.setValue("files/lastState", path);
+  if (!saveStateFile(path)) QMessageBox::critical(this, "Save state", statusBar()->currentMessage());
+}
+
+void MainWindow::chooseStateToOpen() {
+  QSettings settings("volpost", "volpost");
+  const QString path = QFileDialog::getOpenFileName(this, "Open state", settings.value("files/lastState").toString(),
+                                                    "volpost state (*.json);;All files (*)");
+  if (path.isEmpty()) return;
+  settings.setValue("files/lastState", path);
+  openStateFile(path);
+}
+
+void MainWindow::openStateFile(const QString& path) {
+  SceneState state;
+  try {
+    state = SceneState::load(path.toStdString());
+  } catch (const std::exception& e) {
+    statusBar()->showMessage("Could not open the state " + path);
+    emit stateApplied(false, e.what());
+    QMessageBox::critical(this, "Cannot open state", e.what());
+    return;
+  }
+  const auto sameFile = [](const std::string& a, const std::string& b) {
+    return QFileInfo(QString::fromStdString(a)).canonicalFilePath() == QFileInfo(QString::fromStdString(b)).canonicalFilePath();
+  };
+  if (session_ && sameFile(session_->model().sourcePath, state.modelPath)) {
+    applyState(state);
+    return;
+  }
+  if (loading_) {
+    statusBar()->showMessage("Still loading the previous file");
+    emit stateApplied(false, "still loading the previous file");
+    return;
+  }
+  pendingState_ = state;  // applied once its model is in
+  openFile(QString::fromStdString(state.modelPath));
+}
+
+void MainWindow::applyState(const SceneState& state) {
+  try {
+    viewport_->scene().applyState(state);
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString("The state does not fit this model: %1").arg(e.what()));
+    emit stateApplied(false, e.what());
+    QMessageBox::warning(this, "Cannot apply state", e.what());
+    return;
+  }
+  if (state.volume.transferFunction && !state.quantity.empty())
+    userTransferFunctions_[viewport_->scene().view()->quantity.key()] = *state.volume.transferFunction;
+  syncControlsToScene();
+  viewport_->update();
+  notifyPanels();
+  statusBar()->showMessage("View restored from the state file");
+  emit stateApplied(true, {});
+}
+
+// The menus and the toolbar show what the scene holds (after a state was applied).
+void MainWindow::syncControlsToScene() {
+  const Scene& scene = viewport_->scene();
+  const SceneState state = scene.state();
+  {
+    const QSignalBlocker a(quantityBox_), b(stepBox_), c(colorMapBox_);
+    quantityBox_->setCurrentIndex(std::max(0, quantityBox_->findData(QString::fromStdString(state.quantity))));
+    fillSteps();
+    stepBox_->setCurrentIndex(int(state.step));
+    colorMapBox_->setCurrentText(QString::fromStdString(state.colorMap));
+  }
+  const auto check = [](QAction* action, bool on) {
+    if (!action) return;
+    const QSignalBlocker block(action);
+    action->setChecked(on);
+  };
+  check(edgesAction_, state.edges);
+  check(legendAction_, state.legend);
+  check(orthoAction_, state.camera && state.camera->orthographic);
+  check(volumeAction_, state.volume.shown);
+  check(findChild<QAction*>("renderer:" + QString::fromStdString(state.volume.renderer)), true);
+  check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
+  if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);
 }
 
 void MainWindow::saveImage() {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "../core/ModelSession.hpp"
+#include "../core/SceneState.hpp"
 
 #include <volpost/plugin/PluginManager.hpp>
 
@@ -39,6 +40,12 @@ class MainWindow : public QMainWindow, public PanelHost {
   void openFile(const QString& path);
   /// Selects a quantity by its written form (e.g. "S.mises"); false if there is none.
   bool selectQuantity(const QString& key);
+  /// Saves the view (model, result, camera, colors, volume...) as a state file.
+  /// Returns false (and says why in the status bar) when it cannot be written.
+  bool saveStateFile(const QString& path);
+  /// Opens a state file: its model (when another is shown), then its view. Emits
+  /// stateApplied(ok, message) when done.
+  void openStateFile(const QString& path);
   std::shared_ptr<const ModelSession> session() const { return session_; }
   Viewport* viewport() const { return viewport_; }
 
@@ -55,13 +62,12 @@ class MainWindow : public QMainWindow, public PanelHost {
 
  signals:
   void loadFinished(bool ok, const QString& message);
+  void stateApplied(bool ok, const QString& message);
 
  protected:
   void closeEvent(QCloseEvent* event) override;
 
  private:
-  /// The TF for the active result: the one a panel set for it, else the default.
-  TransferFunction transferFunctionFor(const ScalarView& view) const;
   void buildActions();
   void buildToolbar();
   void buildPanels();
@@ -71,10 +77,17 @@ class MainWindow : public QMainWindow, public PanelHost {
   void fillQuantities();
   void fillSteps();
   void refreshScalars();
+  void syncControlsToScene();
+  void applyState(const SceneState& state);
+  void chooseStateToSave();
+  void chooseStateToOpen();
+  void setClipAxis(int axis);
+  /// Runs a change of the scene, then redraws; an error goes to the status bar.
+  template <typename Change>
+  bool changeScene(Change&& change);
   void showModelInfo();
   void notifyPanels();
   void buildVolumeMenu(QMenu* view);
-  std::unique_ptr<VolumeRenderer> createVolumeRenderer(const QString& name) const;
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();
@@ -89,8 +102,12 @@ class MainWindow : public QMainWindow, public PanelHost {
   QLabel* glLabel_ = nullptr;
   QAction* edgesAction_ = nullptr;
   QAction* volumeAction_ = nullptr;
+  QAction* orthoAction_ = nullptr;
+  QAction* legendAction_ = nullptr;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
+  std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
+  QString pendingStatePath_;
 };
 
 }  // namespace volpost::app

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: MIT
-// Draws a ModelSession (boundary surface colored by the active quantity). Used by the
-// window's viewport and by the headless `volpost render`; holds GL objects, so
+// Draws a model's boundary surface colored by the active quantity, with its element
+// edges (also alone, over a volume). A layer of the Scene; holds GL objects, so
 // initialize() and release() need the context current.
 #pragma once
 
 #include "ModelSession.hpp"
+#include "SceneState.hpp"
 
 #include <volpost/core/ColorMap.hpp>
-#include <volpost/render/SurfaceRenderer.hpp>
+#include "host/render/SurfaceRenderer.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -15,11 +16,7 @@
 
 namespace volpost::app {
 
-struct DisplayRange {
-  double min = 0.0, max = 1.0;
-};
-
-class SceneRenderer {
+class BoundaryRenderer {
  public:
   void initialize();
   void release();

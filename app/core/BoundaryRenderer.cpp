@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "SceneRenderer.hpp"
+#include "BoundaryRenderer.hpp"
 
 #include <cmath>
 
@@ -10,24 +10,24 @@ DisplayRange autoRange(const ScalarView& view) {
   return {view.range.min, view.range.max};
 }
 
-void SceneRenderer::initialize() {
+void BoundaryRenderer::initialize() {
   surface_.initialize();
   initialized_ = true;
   if (session_) surface_.setSurface(session_->surface());
 }
 
-void SceneRenderer::release() {
+void BoundaryRenderer::release() {
   surface_.release();
   initialized_ = false;
 }
 
-void SceneRenderer::setSession(std::shared_ptr<const ModelSession> session) {
+void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   surface_.clearScalars();
   if (initialized_ && session_) surface_.setSurface(session_->surface());
 }
 
-void SceneRenderer::setScalars(const ScalarView* view, DisplayRange range) {
+void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range) {
   if (!view) {
     surface_.clearScalars();
     return;
@@ -35,7 +35,7 @@ void SceneRenderer::setScalars(const ScalarView* view, DisplayRange range) {
   surface_.setScalars(view->location, view->values, range.min, range.max);
 }
 
-void SceneRenderer::renderBackground(const RenderContext& ctx) {
+void BoundaryRenderer::renderBackground(const RenderContext& ctx) {
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
   glViewport(0, 0, ctx.width, ctx.height);
   glClearColor(background.r, background.g, background.b, 1.0f);
@@ -43,7 +43,7 @@ void SceneRenderer::renderBackground(const RenderContext& ctx) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-void SceneRenderer::render(const RenderContext& ctx) {
+void BoundaryRenderer::render(const RenderContext& ctx) {
   renderBackground(ctx);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

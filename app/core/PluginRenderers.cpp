@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "PluginRenderers.hpp"
+
+#include <volpost/plugin/PluginInterfaces.hpp>
+
+namespace volpost::app {
+namespace {
+
+std::unique_ptr<VolumeRenderer> create(const PluginManager& plugins, const QString& name) {
+  for (RendererPlugin* plugin : plugins.rendererPlugins()) {
+    if (!plugin->rendererNames().contains(name)) continue;
+    std::unique_ptr<Renderer> r = plugin->createRenderer(name);
+    if (auto* v = dynamic_cast<VolumeRenderer*>(r.get())) {
+      r.release();
+      return std::unique_ptr<VolumeRenderer>(v);
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<RendererEntry> volumeRenderers(const PluginManager& plugins) {
+  std::vector<RendererEntry> out;
+  for (RendererPlugin* plugin : plugins.rendererPlugins())
+    for (const QString& name : plugin->rendererNames())
+      if (create(plugins, name)) out.push_back({name, plugin->rendererLabel(name)});
+  return out;
+}
+
+VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins) {
+  return [&plugins](const std::string& name) { return create(plugins, QString::fromStdString(name)); };
+}
+
+}  // namespace volpost::app

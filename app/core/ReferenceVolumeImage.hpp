@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+// A scene's volume by the exact CPU reference renderer (double precision, exact
+// transfer-function integration): for reports, and the yardstick of the GPU renderers.
+#pragma once
+
+#include "Scene.hpp"
+
+#include "host/optics/ReferenceRenderer.hpp"
+
+#include <volpost/core/Progress.hpp>
+
+namespace volpost::app {
+
+/// The scene's result, transfer function, camera, clip planes (box included) and
+/// iso-surfaces, rendered by the reference renderer on `threads` cores (0: all). Throws
+/// std::invalid_argument without a result, Cancelled on request.
+optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int height, int threads = 0,
+                                             const Progress& progress = {});
+
+}  // namespace volpost::app

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: MIT
+// The one place a picture is made: a model (ModelSession), a SceneState (result, step,
+// colors, layers) and a live camera, drawn by the boundary renderer and a volume renderer
+// from a plugin. The window's viewport and `volpost render` are thin callers of it.
+//
+// Setters record state and what kind of thing changed (the model, the values, the colors,
+// the transfer-function tables, the plane parameters, the renderer); render(), with the
+// context current, hands each layer only what changed: a dragged plane reaches the volume
+// renderer as a new plane and nothing else.
+#pragma once
+
+#include "BoundaryRenderer.hpp"
+#include "Legend.hpp"
+#include "ModelSession.hpp"
+#include "SceneState.hpp"
+
+#include "host/ClipCulling.hpp"
+
+#include <volpost/core/Camera.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace volpost::app {
+
+/// A volume renderer by its plugin name, or nullptr if no plugin offers it.
+using VolumeRendererFactory = std::function<std::unique_ptr<VolumeRenderer>(const std::string& name)>;
+
+/// What the legend shows: the colors and the words.
+struct LegendPicture {
+  ColorMap colors;
+  LegendContent content;
+};
+
+class Scene {
+ public:
+  explicit Scene(VolumeRendererFactory factory);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  // ---- the model ----
+  /// A new model: the result is cleared, the camera fitted, the volume's planes and
+  /// iso-surfaces dropped (they belong to the old model); the rest of the state stays.
+  void setSession(std::shared_ptr<const ModelSession> session);
+  const ModelSession* session() const { return session_.get(); }
+
+  // ---- what is shown (no GL; render() applies it) ----
+  /// Throws std::invalid_argument (no such quantity or step) and changes nothing then.
+  void setResult(const std::string& quantity, std::size_t step);
+  void setColorMap(const std::string& name);
+  void setFixedRange(std::optional<DisplayRange> range);
+  void setShowEdges(bool show);
+  /// Off: the surface shows the color map's exact colors (no shading).
+  void setLighting(bool on) { state_.lighting = on; }
+  void setShowLegend(bool show) { state_.legend = show; }
+  /// Throws std::invalid_argument when there is no result to show as a volume.
+  void setVolumeShown(bool shown);
+  /// Throws std::invalid_argument naming the choices when no plugin offers `name`.
+  void setVolumeRenderer(const std::string& name);
+  void setIntegrationMode(IntegrationMode mode);
+  /// nullopt: the default for the result.
+  void setTransferFunction(std::optional<TransferFunction> tf);
+  /// Free planes and the box together must stay within kMaxClipPlanes (throws otherwise).
+  void setClipPlanes(std::vector<ClipPlane> planes);
+  void setClipBox(std::optional<ClipBox> box);
+  void setIsoSurfaces(std::vector<optics::IsoSurface> surfaces);
+  void setSamplingStep(double step);
+  void setTermination(double transmittance);
+  void setVolumeEdges(bool show);
+  /// Interactive use (the window): slow tables build off the GUI thread.
+  void setInteractive(bool on) { interactive_ = on; }
+
+  Camera& camera() { return camera_; }
+  const Camera& camera() const { return camera_; }
+  void fitCamera();
+
+  /// The whole state (camera included) and back. applyState needs the model of
+  /// state.modelPath already set with setSession; it checks everything first (quantity,
+  /// step, renderer, color map) and throws std::invalid_argument, changing nothing.
+  SceneState state() const;
+  void applyState(const SceneState& state);
+
+  // ---- derived ----
+  const std::optional<ScalarView>& view() const { return view_; }
+  DisplayRange displayRange() const;
+  /// The transfer function the volume uses: the state's, or the result's default.
+  TransferFunction transferFunction() const;
+  bool volumeShown() const { return state_.volume.shown; }
+  const VolumeLayer& volume() const { return state_.volume; }
+  std::optional<LegendPicture> legend() const;
+  glm::vec3 background() const { return boundary_.background; }
+
+  // ---- GL (a context current) ----
+  void initialize();
+  void release();
+  bool initialized() const { return initialized_; }
+  /// Draws the picture into ctx.framebuffer (cleared to the background). The legend is not
+  /// drawn: callers paint legend() over the image their own way.
+  void render(const RenderContext& ctx);
+  VolumeStats volumeStats() const;
+  /// The last frame's volume alone: premultiplied RGBA floats, top row first; empty when
+  /// no volume is shown.
+  std::vector<float> readVolumeImage() const;
+  bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
+
+ private:
+  void applyToBoundary();
+  void applyToVolume();
+  void renderVolume(const RenderContext& ctx);
+  std::vector<double> tetValues() const;
+
+  VolumeRendererFactory factory_;
+  std::shared_ptr<const ModelSession> session_;
+  SceneState state_;
+  Camera camera_;
+  std::optional<ScalarView> view_;
+  bool interactive_ = false;
+
+  // What changed since the last render().
+  struct Changes {
+    bool model = true, scalars = true, colorMap = true, edges = true;  // boundary
+    bool renderer = true, geometry = true, values = true, tables = true, planes = true, iso = true, mode = true;
+    void volumeAll() { renderer = geometry = values = tables = planes = iso = mode = true; }
+  } changed_;
+
+  BoundaryRenderer boundary_;
+  std::unique_ptr<VolumeRenderer> volume_;
+  std::string volumeName_;                      ///< the renderer volume_ is
+  std::optional<CulledMesh> culled_;            ///< the tets the GPU holds, when culled
+  std::vector<ClipPlane> culledFor_;            ///< the planes culled_ was made for
+  std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume
+  bool initialized_ = false;
+};
+
+}  // namespace volpost::app

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#include "SceneImage.hpp"
+
+#include "ReferenceVolumeImage.hpp"
+
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+#include <volpost/render/ScopedInitialization.hpp>
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace volpost::app {
+
+void paintSceneLegend(QImage& image, const Scene& scene) {
+  if (const auto legend = scene.legend()) {
+    QPainter painter(&image);
+    paintLegend(painter, image.rect(), legend->colors, legend->content);
+  }
+}
+
+SceneImage renderSceneImage(Scene& scene, int width, int height) {
+  HeadlessContext context;
+  OffscreenTarget target(width, height);
+  std::vector<std::uint8_t> pixels;
+  SceneImage out;
+  out.width = width;
+  out.height = height;
+  {
+    // Released before the context goes, also when a frame throws.
+    const ScopedInitialization<Scene> initialized(scene);
+    RenderContext ctx;
+    ctx.width = width;
+    ctx.height = height;
+    ctx.framebuffer = target.framebuffer();
+    scene.render(ctx);
+    glFinish();
+    pixels = target.readPixels();
+    out.volumeRgba = scene.readVolumeImage();
+  }
+  out.picture = QImage(width, height, QImage::Format_RGBA8888);
+  for (int y = 0; y < height; ++y)
+    std::memcpy(out.picture.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(width) * 4, std::size_t(width) * 4);
+  paintSceneLegend(out.picture, scene);
+  return out;
+}
+
+SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, int threads, const Progress& progress) {
+  const optics::ReferenceImage reference = renderVolumeReference(scene, width, height, threads, progress);
+  SceneImage out;
+  out.width = width;
+  out.height = height;
+  out.picture = QImage(width, height, QImage::Format_RGBA8888);
+  out.volumeRgba.resize(reference.pixels.size() * 4);
+  const glm::dvec3 background(scene.background());
+  for (int y = 0; y < height; ++y) {
+    uchar* line = out.picture.scanLine(y);
+    for (int x = 0; x < width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+      const glm::dvec4& p = reference.pixels[i];
+      for (int k = 0; k < 4; ++k) out.volumeRgba[4 * i + std::size_t(k)] = float(p[k]);
+      for (int k = 0; k < 3; ++k) {
+        const double c = p[k] + (1.0 - p.a) * background[k];  // "over" the background, as the GPU composite does
+        line[4 * x + k] = uchar(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+      }
+      line[4 * x + 3] = 255;
+    }
+  }
+  paintSceneLegend(out.picture, scene);
+  return out;
+}
+
+}  // namespace volpost::app

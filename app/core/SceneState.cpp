@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: MIT
+#include "SceneState.hpp"
+
+#include "host/AtomicFile.hpp"
+#include "host/TextFile.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+
+namespace volpost::app {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// Reads keys with messages that name the file and the key ("volume.mode").
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw std::runtime_error(file_ + ": \"" + key + "\" " + what);
+  }
+
+  const json* find(const json& object, const std::string& name) const {
+    const auto it = object.find(name);
+    return it == object.end() || it->is_null() ? nullptr : &*it;
+  }
+
+  double number(const json& value, const std::string& key) const {
+    if (!value.is_number()) fail(key, "must be a number");
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) fail(key, "must be a finite number");
+    return v;
+  }
+  bool boolean(const json& value, const std::string& key) const {
+    if (!value.is_boolean()) fail(key, "must be true or false");
+    return value.get<bool>();
+  }
+  std::string text(const json& value, const std::string& key) const {
+    if (!value.is_string()) fail(key, "must be a string");
+    return value.get<std::string>();
+  }
+  glm::dvec3 vec3(const json& value, const std::string& key) const {
+    if (!value.is_array() || value.size() != 3) fail(key, "must be three numbers [x, y, z]");
+    return {number(value[0], key + "[0]"), number(value[1], key + "[1]"), number(value[2], key + "[2]")};
+  }
+  const json& object(const json& value, const std::string& key) const {
+    if (!value.is_object()) fail(key, "must be an object {...}");
+    return value;
+  }
+  const json& array(const json& value, const std::string& key) const {
+    if (!value.is_array()) fail(key, "must be a list [...]");
+    return value;
+  }
+
+ private:
+  std::string file_;
+};
+
+json jsonOf(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json jsonOf(const VolumeLayer& v) {
+  json out;
+  out["shown"] = v.shown;
+  out["renderer"] = v.renderer;
+  out["mode"] = std::string(toString(v.mode));
+  out["transferFunction"] = v.transferFunction ? json::parse(v.transferFunction->toJson()) : json(nullptr);
+  json planes = json::array();
+  for (const ClipPlane& p : v.clipPlanes) planes.push_back({{"point", jsonOf(p.point)}, {"normal", jsonOf(p.normal)}});
+  out["clipPlanes"] = planes;
+  out["clipBox"] = v.clipBox ? json(*v.clipBox) : json(nullptr);
+  json isos = json::array();
+  for (const optics::IsoSurface& s : v.isoSurfaces)
+    isos.push_back({{"value", s.value}, {"color", jsonOf(s.color)}, {"opacity", s.opacity}});
+  out["isoSurfaces"] = isos;
+  out["samplingStep"] = v.samplingStep;
+  out["termination"] = v.termination;
+  out["edges"] = v.edges;
+  return out;
+}
+
+VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileName) {
+  VolumeLayer v;
+  if (const json* x = r.find(in, "shown")) v.shown = r.boolean(*x, "volume.shown");
+  if (const json* x = r.find(in, "renderer")) v.renderer = r.text(*x, "volume.renderer");
+  if (const json* x = r.find(in, "mode")) {
+    const auto mode = integrationModeFromString(r.text(*x, "volume.mode"));
+    if (!mode) r.fail("volume.mode", "must be one of: " + integrationModeChoices());
+    v.mode = *mode;
+  }
+  if (const json* x = r.find(in, "transferFunction")) {
+    try {
+      v.transferFunction = TransferFunction::fromJson(r.object(*x, "volume.transferFunction").dump());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fileName + ": \"volume.transferFunction\": " + e.what());
+    }
+  }
+  if (const json* x = r.find(in, "clipPlanes")) {
+    const json& planes = r.array(*x, "volume.clipPlanes");
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+      const std::string key = "volume.clipPlanes[" + std::to_string(i) + "]";
+      const json& p = r.object(planes[i], key);
+      const json* point = r.find(p, "point");
+      const json* normal = r.find(p, "normal");
+      if (!point || !normal) r.fail(key, "needs \"point\" and \"normal\"");
+      ClipPlane plane{r.vec3(*point, key + ".point"), r.vec3(*normal, key + ".normal")};
+      if (!(glm::length(plane.normal) > 0.0) || !std::isfinite(glm::length(plane.normal)))
+        r.fail(key + ".normal", "must be a finite, non-zero direction");
+      v.clipPlanes.push_back(plane);
+    }
+  }
+  if (const json* x = r.find(in, "clipBox")) {
+    const json& box = r.array(*x, "volume.clipBox");
+    if (box.size() != 6) r.fail("volume.clipBox", "must be six numbers [xmin, xmax, ymin, ymax, zmin, zmax]");
+    ClipBox b{};
+    for (std::size_t i = 0; i < 6; ++i) b[i] = r.number(box[i], "volume.clipBox[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < 6; i += 2)
+      if (!(b[i] < b[i + 1])) r.fail("volume.clipBox", "needs min < max on every axis");
+    v.clipBox = b;
+  }
+  if (const json* x = r.find(in, "isoSurfaces")) {
+    const json& isos = r.array(*x, "volume.isoSurfaces");
+    for (std::size_t i = 0; i < isos.size(); ++i) {
+      const std::string key = "volume.isoSurfaces[" + std::to_string(i) + "]";
+      const json& s = r.object(isos[i], key);
+      const json* value = r.find(s, "value");
+      if (!value) r.fail(key, "needs a \"value\"");
+      optics::IsoSurface iso{r.number(*value, key + ".value"), glm::dvec3(1.0), 1.0};
+      if (const json* c = r.find(s, "color")) iso.color = r.vec3(*c, key + ".color");
+      if (const json* o = r.find(s, "opacity")) iso.opacity = r.number(*o, key + ".opacity");
+      for (int k = 0; k < 3; ++k)
+        if (iso.color[k] < 0.0 || iso.color[k] > 1.0) r.fail(key + ".color", "components must lie in 0..1");
+      if (iso.opacity < 0.0 || iso.opacity > 1.0) r.fail(key + ".opacity", "must lie in 0..1");
+      v.isoSurfaces.push_back(iso);
+    }
+    if (v.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
+      r.fail("volume.isoSurfaces", "has " + std::to_string(v.isoSurfaces.size()) + " entries; at most " +
+                                       std::to_string(kMaxIsoSurfaces));
+  }
+  if (v.allClipPlanes().size() > std::size_t(kMaxClipPlanes))
+    r.fail("volume.clipPlanes", "with the clip box makes " + std::to_string(v.allClipPlanes().size()) +
+                                    " planes; at most " + std::to_string(kMaxClipPlanes));
+  if (const json* x = r.find(in, "samplingStep")) {
+    v.samplingStep = r.number(*x, "volume.samplingStep");
+    if (v.samplingStep < 0.0) r.fail("volume.samplingStep", "must be >= 0 (0: automatic)");
+  }
+  if (const json* x = r.find(in, "termination")) {
+    v.termination = r.number(*x, "volume.termination");
+    if (v.termination < 0.0 || v.termination >= 1.0) r.fail("volume.termination", "must lie in [0, 1)");
+  }
+  if (const json* x = r.find(in, "edges")) v.edges = r.boolean(*x, "volume.edges");
+  return v;
+}
+
+}  // namespace
+
+std::vector<ClipPlane> clipBoxPlanes(const ClipBox& b) {
+  return {{{b[0], 0, 0}, {1, 0, 0}}, {{b[1], 0, 0}, {-1, 0, 0}}, {{0, b[2], 0}, {0, 1, 0}},
+          {{0, b[3], 0}, {0, -1, 0}}, {{0, 0, b[4]}, {0, 0, 1}}, {{0, 0, b[5]}, {0, 0, -1}}};
+}
+
+std::vector<ClipPlane> VolumeLayer::allClipPlanes() const {
+  std::vector<ClipPlane> planes = clipBox ? clipBoxPlanes(*clipBox) : std::vector<ClipPlane>{};
+  planes.insert(planes.end(), clipPlanes.begin(), clipPlanes.end());
+  return planes;
+}
+
+std::string SceneState::toJson(const std::string& relativeTo) const {
+  json out;
+  out["format"] = "volpost-state";
+  out["version"] = kVersion;
+  std::string model = modelPath;
+  if (!relativeTo.empty() && !model.empty()) {
+    const fs::path absolute = fs::absolute(model).lexically_normal();
+    const fs::path relative = absolute.lexically_relative(fs::absolute(relativeTo).lexically_normal());
+    if (!relative.empty() && *relative.begin() != "..") model = relative.string();
+  }
+  out["model"] = model;
+  out["result"] = {{"quantity", quantity.empty() ? json(nullptr) : json(quantity)}, {"step", step + 1}};
+  if (camera) {
+    out["camera"] = {{"eye", jsonOf(camera->eye)},
+                     {"target", jsonOf(camera->target)},
+                     {"up", jsonOf(camera->up)},
+                     {"fieldOfView", camera->fieldOfView},
+                     {"projection", camera->orthographic ? "orthographic" : "perspective"}};
+  } else {
+    out["camera"] = nullptr;
+  }
+  out["colors"] = {{"map", colorMap},
+                   {"range", fixedRange ? json::array({fixedRange->min, fixedRange->max}) : json("auto")}};
+  out["surface"] = {{"edges", edges}, {"lighting", lighting}};
+  out["legend"] = legend;
+  out["volume"] = jsonOf(volume);
+  return out.dump(2) + "\n";
+}
+
+SceneState SceneState::fromJson(const std::string& text, const std::string& fileName) {
+  json in;
+  try {
+    in = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw std::runtime_error(fileName + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
+  }
+  const Reader r(fileName);
+  if (!in.is_object() || in.value("format", std::string()) != "volpost-state")
+    throw std::runtime_error(fileName + ": not a volpost state file (no \"format\": \"volpost-state\")");
+  const json* version = r.find(in, "version");
+  if (!version || !version->is_number_integer()) r.fail("version", "must be an integer");
+  if (version->get<long long>() > kVersion || version->get<long long>() < 1)
+    r.fail("version", "is " + version->dump() + "; this volpost reads state files up to version " +
+                          std::to_string(kVersion));
+  SceneState s;
+  const json* model = r.find(in, "model");
+  if (!model) r.fail("model", "is missing (the model file to open)");
+  s.modelPath = r.text(*model, "model");
+  if (!s.modelPath.empty() && fs::path(s.modelPath).is_relative())
+    s.modelPath = (fs::absolute(fileName).parent_path() / s.modelPath).lexically_normal().string();
+  if (const json* result = r.find(in, "result")) {
+    r.object(*result, "result");
+    if (const json* q = r.find(*result, "quantity")) s.quantity = r.text(*q, "result.quantity");
+    if (const json* st = r.find(*result, "step")) {
+      if (!st->is_number_integer() || st->get<long long>() < 1) r.fail("result.step", "must be a step number (1, 2, ...)");
+      s.step = std::size_t(st->get<long long>() - 1);
+    }
+  }
+  if (const json* camera = r.find(in, "camera")) {
+    r.object(*camera, "camera");
+    CameraState c;
+    const json* eye = r.find(*camera, "eye");
+    const json* target = r.find(*camera, "target");
+    const json* up = r.find(*camera, "up");
+    if (!eye || !target || !up) r.fail("camera", "needs \"eye\", \"target\" and \"up\"");
+    c.eye = r.vec3(*eye, "camera.eye");
+    c.target = r.vec3(*target, "camera.target");
+    c.up = r.vec3(*up, "camera.up");
+    if (const json* f = r.find(*camera, "fieldOfView")) c.fieldOfView = r.number(*f, "camera.fieldOfView");
+    if (!(c.fieldOfView > 0.0 && c.fieldOfView < 180.0)) r.fail("camera.fieldOfView", "must lie between 0 and 180 degrees");
+    if (const json* p = r.find(*camera, "projection")) {
+      const std::string projection = r.text(*p, "camera.projection");
+      if (projection != "perspective" && projection != "orthographic")
+        r.fail("camera.projection", "must be \"perspective\" or \"orthographic\"");
+      c.orthographic = projection == "orthographic";
+    }
+    if (!(glm::length(c.eye - c.target) > 0.0)) r.fail("camera", "has the eye on the target");
+    if (!(glm::length(glm::cross(c.target - c.eye, c.up)) > 0.0)) r.fail("camera.up", "is parallel to the view direction");
+    s.camera = c;
+  }
+  if (const json* colors = r.find(in, "colors")) {
+    r.object(*colors, "colors");
+    if (const json* m = r.find(*colors, "map")) s.colorMap = r.text(*m, "colors.map");
+    if (const json* range = r.find(*colors, "range")) {
+      if (range->is_string() && range->get<std::string>() == "auto") {
+        s.fixedRange.reset();
+      } else {
+        if (!range->is_array() || range->size() != 2) r.fail("colors.range", "must be \"auto\" or [min, max]");
+        DisplayRange d{r.number((*range)[0], "colors.range[0]"), r.number((*range)[1], "colors.range[1]")};
+        if (!(d.max > d.min)) r.fail("colors.range", "needs min < max");
+        s.fixedRange = d;
+      }
+    }
+  }
+  if (const json* surface = r.find(in, "surface")) {
+    r.object(*surface, "surface");
+    if (const json* e = r.find(*surface, "edges")) s.edges = r.boolean(*e, "surface.edges");
+    if (const json* l = r.find(*surface, "lighting")) s.lighting = r.boolean(*l, "surface.lighting");
+  }
+  if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
+  if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
+  return s;
+}
+
+SceneState SceneState::load(const std::string& path) { return fromJson(readTextFile(path, 64u << 20), path); }
+
+void SceneState::save(const std::string& path) const {
+  writeFileAtomically(path, toJson(fs::absolute(path).parent_path().string()));
+}
+
+}  // namespace volpost::app

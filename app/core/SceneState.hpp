@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// Everything a picture is made of, as plain data: the model file, the result and step, the
+// camera, the colors, and the layers (boundary surface, volume with its renderer, mode,
+// transfer function, clip planes and box, iso-surfaces; legend). The window's File > Save
+// State writes it, `volpost render --state FILE` reads it: both draw the same picture.
+// Serialized as versioned JSON ("volpost-state", version 1).
+#pragma once
+
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+/// The range mapped onto the color map.
+struct DisplayRange {
+  double min = 0.0, max = 1.0;
+  bool operator==(const DisplayRange&) const = default;
+};
+
+/// An explicit camera (model coordinates).
+struct CameraState {
+  glm::dvec3 eye{0.0, 0.0, 1.0};
+  glm::dvec3 target{0.0};
+  glm::dvec3 up{0.0, 1.0, 0.0};
+  double fieldOfView = 30.0;  ///< vertical, degrees
+  bool orthographic = false;
+  bool operator==(const CameraState&) const = default;
+};
+
+/// A box the volume is cut to: xmin, xmax, ymin, ymax, zmin, zmax (model units).
+using ClipBox = std::array<double, 6>;
+/// The six planes that keep the inside of the box.
+std::vector<ClipPlane> clipBoxPlanes(const ClipBox& box);
+
+struct VolumeLayer {
+  bool shown = false;
+  std::string renderer = "raycast";  ///< a renderer plugin's name (volpost plugins lists them)
+  IntegrationMode mode = IntegrationMode::LinearSegments;
+  std::optional<TransferFunction> transferFunction;  ///< nullopt: the default for the result
+  std::vector<ClipPlane> clipPlanes;                  ///< free planes (the window's dragged one)
+  std::optional<ClipBox> clipBox;                     ///< also culls: the GPU holds only its inside
+  std::vector<optics::IsoSurface> isoSurfaces;
+  double samplingStep = 0.0;    ///< sampling mode; 0: a quarter of the mean edge
+  double termination = 0.002;   ///< rays stop below this transmittance
+  bool edges = false;           ///< element edges over the volume (they end the rays)
+  /// All the planes the renderer cuts with: the box's six, then the free ones.
+  std::vector<ClipPlane> allClipPlanes() const;
+};
+
+struct SceneState {
+  static constexpr int kVersion = 1;
+
+  std::string modelPath;
+  std::string quantity;       ///< written form ("S.mises"); empty: the plain surface
+  std::size_t step = 0;       ///< 0-based here, 1-based in the file
+  std::optional<CameraState> camera;  ///< nullopt: the isometric view fitted to the model
+  std::string colorMap = "cool-warm";
+  std::optional<DisplayRange> fixedRange;  ///< nullopt: the values' own range
+  bool edges = true;          ///< element edges on the surface view
+  bool lighting = true;       ///< shading; off: the color map's exact colors
+  bool legend = true;
+  VolumeLayer volume;
+
+  /// The file's text. `relativeTo`: a folder; a model path inside it is written relative
+  /// to it, so the state and the model can move together.
+  std::string toJson(const std::string& relativeTo = {}) const;
+  /// Parses a state file's text; `fileName` names it in messages, and a relative model
+  /// path is resolved against its folder. Throws std::runtime_error naming the file, the
+  /// key and what is wrong with it.
+  static SceneState fromJson(const std::string& text, const std::string& fileName);
+  /// Reads and parses a state file (regular files only).
+  static SceneState load(const std::string& path);
+  /// Writes the file through a temporary one in the same folder, renamed when complete:
+  /// a failed write leaves the previous file as it was. Throws std::runtime_error.
+  void save(const std::string& path) const;
+};
+
+}  // namespace volpost::app
