@@ -12,9 +12,9 @@ import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).resolve().parent.parent
 rows = list(csv.DictReader(open(here / "volume_speed_error.csv")))
-markers = {"linear-segments": "o", "linear-segments-iso-table": "s", "pre-integrated": "^", "sampling": "x",
-           "vicp linear-segments": "D", "vicp pre-integrated": "v", "vicp sampling": "1",
-           "vicp-exact linear-segments": "P", "vicp-exact pre-integrated": "*", "vicp-exact sampling": "2"}
+markers = {"linear": "o", "iso-table": "s", "pre-integrated": "^", "sampling": "x",
+           "vicp linear": "D", "vicp pre-integrated": "v", "vicp sampling": "1",
+           "vicp-exact linear": "P", "vicp-exact pre-integrated": "*", "vicp-exact sampling": "2"}
 fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
 for mesh in dict.fromkeys(r["mesh"] for r in rows):
     color = None

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `volpost info` and `volpost render` as processes: output, exit codes, messages.
-#include "../TestSupport.hpp"
+#include "support/TestSupport.hpp"
 #include "ProcessRunner.hpp"
 
 #include <QImage>
@@ -50,21 +50,21 @@ TEST(RenderCommand, WritesAPngOfTheRequestedSize) {
 TEST(RenderCommand, ExplainsBadArguments) {
   const std::string model = dataFile("bar/bar_tet4.vtu");
   const auto noField = runVolpost("render " + model + " --field S.bogus -o /tmp/x.png");
-  EXPECT_EQ(noField.exitCode, 1);
+  EXPECT_EQ(noField.exitCode, 2);
   EXPECT_NE(noField.output.find("available: U.magnitude"), std::string::npos) << noField.output;
   const auto badSize = runVolpost("render " + model + " --size 0x5 -o /tmp/x.png");
   EXPECT_EQ(badSize.exitCode, 2);
   EXPECT_NE(badSize.output.find("--size 0x5"), std::string::npos) << badSize.output;
   const auto badCamera = runVolpost("render " + model + " --camera sideways -o /tmp/x.png");
-  EXPECT_EQ(badCamera.exitCode, 1);
+  EXPECT_EQ(badCamera.exitCode, 2);
   EXPECT_NE(badCamera.output.find("unknown item 'sideways'"), std::string::npos) << badCamera.output;
   const auto badStep = runVolpost("render " + model + " --field S11 --step 3 -o /tmp/x.png");
-  EXPECT_EQ(badStep.exitCode, 1);
+  EXPECT_EQ(badStep.exitCode, 2);  // an option this model cannot honour is a usage error
   EXPECT_NE(badStep.output.find("step 3 does not exist"), std::string::npos) << badStep.output;
   EXPECT_EQ(runVolpost("render " + model).exitCode, 2);
   const auto unwritable = runVolpost("render " + model + " -o /no/such/folder/x.png");
   EXPECT_EQ(unwritable.exitCode, 1);
-  EXPECT_NE(unwritable.output.find("cannot write"), std::string::npos) << unwritable.output;
+  EXPECT_NE(unwritable.output.find("/no/such/folder does not exist"), std::string::npos) << unwritable.output;
 }
 
 TEST(RenderCommand, ReferenceVolumeRendererWritesPngAndFloatImages) {
@@ -82,7 +82,7 @@ TEST(RenderCommand, ReferenceVolumeRendererWritesPngAndFloatImages) {
 
 TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
   const auto noResults = runVolpost("render " + dataFile("bad/ref_hex_block.vtu") + " --renderer reference --field x -o /tmp/x.png");
-  EXPECT_EQ(noResults.exitCode, 1);
+  EXPECT_EQ(noResults.exitCode, 2);
   EXPECT_NE(noResults.output.find("has no result fields"), std::string::npos) << noResults.output;
   const auto noField = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --renderer reference -o /tmp/x.png");
   EXPECT_EQ(noField.exitCode, 2);
@@ -105,7 +105,7 @@ TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
   const std::string png = (std::filesystem::temp_directory_path() / "volpost_raycast.png").string();
   std::filesystem::remove(png);
   const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
-                            " --renderer raycast --mode preintegrated --field S.mises --size 80x60 -o " + png);
+                            " --renderer raycast --mode pre-integrated --field S.mises --size 80x60 -o " + png);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const QImage image(QString::fromStdString(png));
   ASSERT_EQ(image.size(), QSize(80, 60));
@@ -204,7 +204,8 @@ TEST(RenderCommand, ClipBoxKeepsTheInsideAndBadBoxesAreRefused) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.output.find("min < max"), std::string::npos) << bad.output;
   const auto many = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
-                               " --renderer reference --field S.mises --clip-box 3,7,0,1,0,1 --clip 5,0,0,1,0,0 -o " + out);
+                               " --renderer reference --field S.mises --clip-box 3,7,0,1,0,1 --clip 5,0,0,1,0,0"
+                               " --clip 5,0,0,1,0,0 --clip 5,0,0,1,0,0 -o " + out);
   EXPECT_EQ(many.exitCode, 2);
-  EXPECT_NE(many.output.find("at most 6"), std::string::npos) << many.output;
+  EXPECT_NE(many.output.find("at most 8"), std::string::npos) << many.output;
 }

@@ -7,6 +7,9 @@
 #include <QApplication>
 #include <QAction>
 #include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QProcess>
 #include <QDockWidget>
 #include <QMouseEvent>
 #include <QSettings>
@@ -101,47 +104,114 @@ class MainWindowTest : public QObject {
     Viewport* view = window_->viewport();
     const auto surface = summarize(view->grabFramebuffer());
     action->setChecked(true);
-    QVERIFY(view->volumeShown());
+    QVERIFY(view->scene().volumeShown());
     const auto volume = summarize(view->grabFramebuffer());
     QVERIFY(volume.second != surface.second);
-    view->setClipAxis(0);
-    QVERIFY(view->clipPlane().has_value());
-    const double before = view->clipPlane()->point.x;
+    window_->findChild<QAction*>("clip:0")->trigger();
+    QCOMPARE(view->scene().volume().clipPlanes.size(), std::size_t(1));
+    const double before = view->scene().volume().clipPlanes[0].point.x;
+    const VolumeStats beforeDrag = view->volumeStats();
     const QPoint start = view->rect().center();
     QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, start);
-    QMouseEvent drag(QEvent::MouseMove, QPointF(start + QPoint(0, -40)), view->mapToGlobal(QPointF(start + QPoint(0, -40))),
-                     Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
-    QApplication::sendEvent(view, &drag);
+    for (int step = 1; step <= 4; ++step) {
+      const QPointF at(start + QPoint(0, -10 * step));
+      QMouseEvent drag(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::ControlModifier);
+      QApplication::sendEvent(view, &drag);
+      view->repaint();
+    }
     QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, start + QPoint(0, -40));
-    QVERIFY2(view->clipPlane()->point.x > before, "Ctrl+drag upward moves the plane along its normal");
+    QVERIFY2(view->scene().volume().clipPlanes[0].point.x > before, "Ctrl+drag upward moves the plane along its normal");
     const auto clipped = summarize(view->grabFramebuffer());
     QVERIFY(clipped.second != volume.second);
+    QCOMPARE(view->volumeStats().meshUploads, beforeDrag.meshUploads);   // the drag costs only frames
+    QCOMPARE(view->volumeStats().tableBuilds, beforeDrag.tableBuilds);
     // A clip box (View > Clip Plane > Clip Box) and iso-surfaces (View > Iso-surfaces).
-    view->setClipAxis(-1);
-    view->setClipBox({{{2.0, 0, 0}, {1, 0, 0}}, {{8.0, 0, 0}, {-1, 0, 0}}});
+    window_->findChild<QAction*>("clip:-1")->trigger();
+    view->scene().setClipBox(ClipBox{2.0, 8.0, -1.0, 2.0, -1.0, 2.0});
+    view->update();
     const auto boxed = summarize(view->grabFramebuffer());
     QVERIFY(boxed.second != volume.second && boxed.first < volume.first);
     QVERIFY2(view->uploadedTetCount() < window_->session()->tetrahedra().mesh.cellCount() * 3 / 4,
              "the GPU holds only the tets the box can show");
-    view->setClipBox({});
-    view->setIsoSurfaces({{100.0, {1.0, 0.85, 0.2}, 1.0}});
+    view->scene().setClipBox(std::nullopt);
+    view->scene().setIsoSurfaces({{100.0, {1.0, 0.85, 0.2}, 1.0}});
+    view->update();
     const auto iso = summarize(view->grabFramebuffer());
     QVERIFY(iso.second != volume.second);
-    view->setIsoSurfaces({});
+    view->scene().setIsoSurfaces({});
     // The same view by cell projection (View > Volume Renderer): close to the ray caster's.
     auto* vicp = window_->findChild<QAction*>("renderer:vicp-exact");
     QVERIFY2(vicp, "the volume plugin offers cell projection");
     vicp->trigger();
     const auto projected = summarize(view->grabFramebuffer());
-    QVERIFY(view->volumeShown());
+    QVERIFY(view->scene().volumeShown());
     QVERIFY2(std::abs(projected.first - volume.first) < volume.first / 20,
              qPrintable(QString("%1 vs %2 pixels").arg(projected.first).arg(volume.first)));
     window_->findChild<QAction*>("renderer:raycast")->trigger();
-    view->setClipAxis(0);
+    window_->findChild<QAction*>("clip:0")->trigger();
     if (const char* shot = std::getenv("VOLPOST_VOLUME_SCREENSHOT")) window_->grab().save(shot);
-    view->setClipAxis(-1);
+    window_->findChild<QAction*>("clip:-1")->trigger();
     action->setChecked(false);
-    QVERIFY(!view->volumeShown());
+    QVERIFY(!view->scene().volumeShown());
+  }
+
+  void theRendererMenuShowsThePluginsOwnWords() {
+    // The labels come from the volume plugin (RendererPlugin::rendererLabel), not the host.
+    auto* raycast = window_->findChild<QAction*>("renderer:raycast");
+    auto* vicp = window_->findChild<QAction*>("renderer:vicp");
+    QVERIFY(raycast && vicp);
+    QCOMPARE(raycast->text(), QString("Ray casting"));
+    QVERIFY2(vicp->text().startsWith("Cell projection"), qPrintable(vicp->text()));
+    for (QAction* a : window_->findChildren<QAction*>())
+      QVERIFY2(!a->text().contains("seed") && !a->text().contains("MPVONC"), qPrintable(a->text()));
+  }
+
+  void aSavedStateRendersTheSamePictureHeadless() {
+    // The window's view saved as a state file; `volpost render --state` draws it pixel for
+    // pixel (same size, legend off: the legend's text is painted by two font paths).
+    QVERIFY(window_->selectQuantity("S.mises"));
+    auto* action = window_->findChild<QAction*>("volumeAction");
+    action->setChecked(true);
+    window_->findChild<QAction*>("clip:1")->trigger();
+    Viewport* view = window_->viewport();
+    view->scene().setShowLegend(false);
+    view->scene().camera().orbit(30.0, 12.0);
+    view->update();
+    const QImage shown = view->grabFramebuffer();
+    const QString state = QDir::temp().filePath("volpost_gui_state_test.json");
+    const QString png = QDir::temp().filePath("volpost_gui_state_test.png");
+    QVERIFY(window_->saveStateFile(state));
+    QProcess render;
+    render.start(VOLPOST_EXECUTABLE, {"render", "--state", state, "-o", png, "--size",
+                                      QString("%1x%2").arg(shown.width()).arg(shown.height())});
+    QVERIFY(render.waitForFinished(120000));
+    QVERIFY2(render.exitCode() == 0, render.readAllStandardError().constData());
+    const QImage headless = QImage(png).convertToFormat(QImage::Format_RGB32);
+    const QImage window = shown.convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(headless.size(), window.size());
+    int different = 0, worst = 0;
+    for (int y = 0; y < window.height(); ++y)
+      for (int x = 0; x < window.width(); ++x) {
+        const QRgb a = window.pixel(x, y), b = headless.pixel(x, y);
+        const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
+        different += d > 0;
+        worst = std::max(worst, d);
+      }
+    QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ, by up to %2").arg(different).arg(worst)));
+    // And back: the window opens the state file and shows the same view again.
+    window_->findChild<QAction*>("clip:-1")->trigger();
+    view->scene().camera().orbit(-60.0, 0.0);
+    QSignalSpy applied(window_.get(), &MainWindow::stateApplied);
+    window_->openStateFile(state);
+    QVERIFY(applied.count() == 1 || applied.wait(30000));
+    QVERIFY(applied.first().first().toBool());
+    QCOMPARE(view->scene().volume().clipPlanes.size(), std::size_t(1));
+    QVERIFY(view->grabFramebuffer().convertToFormat(QImage::Format_RGB32) == window);
+    QFile::remove(state);
+    QFile::remove(png);
+    view->scene().setShowLegend(true);
+    window_->findChild<QAction*>("clip:-1")->trigger();
+    action->setChecked(false);
   }
 
   void transferFunctionPanelEditsTheVolumeLive() {
@@ -159,7 +229,7 @@ class MainWindowTest : public QObject {
     // the last two points) adds a nearly clear point: the host's function and the picture change.
     QTest::mouseClick(curve, Qt::LeftButton, {}, QPoint(6 + int(0.94 * (curve->width() - 12)), curve->height() * 3 / 4));
     QTRY_COMPARE(window_->transferFunction().points().size(), points + 1);
-    QCOMPARE(view->transferFunction(), window_->transferFunction());
+    QCOMPARE(view->scene().transferFunction(), window_->transferFunction());
     const auto after = summarize(view->grabFramebuffer());
     QVERIFY(after.second != before.second);
     if (const char* shot = std::getenv("VOLPOST_TF_SCREENSHOT")) window_->grab().save(shot);

@@ -5,7 +5,8 @@
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/ShaderLibrary.hpp>
-#include <volpost/render/SurfaceRenderer.hpp>
+#include "host/render/HostShaders.hpp"
+#include "host/render/SurfaceRenderer.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>
@@ -96,21 +97,16 @@ bool isBackground(const std::uint8_t* p) { return p[0] == 255 && p[1] == 0 && p[
 
 }  // namespace
 
-TEST_F(HeadlessRender, ContextIsOpenGL45Core) {
-  GLint major = 0, minor = 0, profile = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
-  EXPECT_GE(major * 10 + minor, 45);
-  EXPECT_TRUE(profile & GL_CONTEXT_CORE_PROFILE_BIT);
-}
-
-TEST_F(HeadlessRender, EveryEmbeddedShaderCompiles) {
+TEST_F(HeadlessRender, EveryHostShaderCompiles) {
+  registerHostShaders();
+  int programs = 0;
   for (const std::string& name : gl::shaderNames()) {
-    if (name.find(".glsl") != std::string::npos) continue;  // included pieces
+    if (!name.starts_with("host/") || !name.ends_with(".vert")) continue;
     const std::string base = name.substr(0, name.rfind('.'));
-    if (name.ends_with(".vert")) EXPECT_NO_THROW(gl::buildProgram({name, base + ".frag"})) << name;
+    EXPECT_NO_THROW(gl::buildProgram({name, base + ".frag"})) << name;
+    ++programs;
   }
+  EXPECT_GE(programs, 3);  // surface, edges, overlay
 }
 
 TEST_F(HeadlessRender, NodalFieldIsInterpolatedLinearly) {

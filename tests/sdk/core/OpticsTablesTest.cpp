@@ -81,9 +81,3 @@ TEST(IsoDetectionTable, FirstAndNextControlPointCrossed) {
   EXPECT_TRUE(near(t.at(0.1, 0.2), 0.2, -1));  // ending on one does
 }
 
-TEST(IsoSurfaceTable, ColorOfTheFirstSurfaceCrossed) {
-  const IsoSurfaceTable t({{0.7, {0, 0, 1}, 0.5}, {0.3, {1, 0, 0}, 1.0}}, 0.0, 1.0, 11);
-  EXPECT_EQ(t.at(0.0, 1.0), glm::dvec4(1, 0, 0, 1));
-  EXPECT_EQ(t.at(1.0, 0.0), glm::dvec4(0, 0, 0.5, 0.5));
-  EXPECT_EQ(t.at(0.4, 0.6), glm::dvec4(0.0));
-}

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Marching-tetrahedra iso-surfaces and point location on tetrahedralized grids, where the
 // exact answers are planes, spheres and linear fields.
-#include "TetGrid.hpp"
+#include "support/TetGrid.hpp"
 
-#include <volpost/core/IsoSurfaceExtraction.hpp>
-#include <volpost/core/PointLocator.hpp>
+#include "host/IsoSurfaceExtraction.hpp"
+#include "host/PointLocator.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // psi against a 113-bit adaptive quadrature on a dense grid of optical depths from 1e-8 to
 // 1e4 and on nearly equal pairs; the worst relative error is printed and must be <= 1e-12
 // (the goal is 1e-9).
-#include "QuadPrecision.hpp"
+#include "support/QuadPrecision.hpp"
 
 #include <volpost/core/optics/SegmentIntegral.hpp>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-#include "../TestSupport.hpp"
-#include "ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+#include "support/ReaderSupport.hpp"
 
 #include <volpost/core/Quantity.hpp>
 

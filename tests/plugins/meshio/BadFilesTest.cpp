@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Every file of tests/data/bad does what bad/manifest.json says: rejected with a clear
 // error that names the file, or loaded with the defect flagged. Nothing crashes or hangs.
-#include "../TestSupport.hpp"
-#include "ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+#include "support/ReaderSupport.hpp"
 
 #include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Quantity.hpp>

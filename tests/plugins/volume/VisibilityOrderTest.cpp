@@ -2,7 +2,7 @@
 // Visibility orders for cell projection: valid back-to-front along every sampled ray on a
 // convex grid (MPVO), a non-convex pair where MPVONC's farthest-first heuristic is wrong
 // and the image-space order is right, and cycles broken without losing a tet.
-#include "../core/TetGrid.hpp"
+#include "support/TetGrid.hpp"
 
 #include "VisibilityOrder.hpp"
 
@@ -109,7 +109,7 @@ TEST(VisibilityOrder, ImageSpaceOrderIsRightWhereMpvoncIsWrongOnANonConvexMesh) 
   EXPECT_EQ(exact.cycleBreaks, 0u);
 }
 
-#include "../TestSupport.hpp"
+#include "support/TestSupport.hpp"
 #include "VtuReader.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>

@@ -2,7 +2,7 @@
 // Conforming tetrahedralization: volume kept, no inverted tet, every interior triangle
 // shared by exactly two tets, the boundary unchanged; on each cell type and on the bundled
 // mixed wheel (hexahedra, wedges, pyramids, tetrahedra from gmsh).
-#include "ReferenceCells.hpp"
+#include "support/ReferenceCells.hpp"
 
 #include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Tetrahedralize.hpp>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "ReferenceCells.hpp"
+#include "support/ReferenceCells.hpp"
 
 #include <volpost/core/BoundarySurface.hpp>
 

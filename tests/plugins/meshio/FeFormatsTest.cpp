@@ -3,8 +3,8 @@
 // CalculiX .frd and Exodus II. The same model read from every format must give the same
 // mesh (by node id) and the same values; quadratic node orders are checked by geometry
 // (each midside node at the middle of its own edge).
-#include "../TestSupport.hpp"
-#include "ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+#include "support/ReaderSupport.hpp"
 
 #include <volpost/core/Quantity.hpp>
 
@@ -346,8 +346,8 @@ TEST(NeutralFile, RejectsDamageWithTheLine) {
 
 // --- writing VTU and probing -----------------------------------------------------------
 
-#include <volpost/core/PointLocator.hpp>
-#include <volpost/core/VtuWriter.hpp>
+#include "host/PointLocator.hpp"
+#include "host/VtuWriter.hpp"
 
 TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
   const auto model = meshioReaders().load(dataFile("formats/golden.nf"));

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Culling the tets that clip planes hide: fewer tets, same picture (the renderers cut at
 // the planes anyway), values carried to the renumbered nodes and cells.
-#include "TetGrid.hpp"
+#include "support/TetGrid.hpp"
 
 #include <volpost/core/Camera.hpp>
-#include <volpost/core/ClipCulling.hpp>
-#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include "host/ClipCulling.hpp"
+#include "host/optics/ReferenceRenderer.hpp"
 
 #include <gtest/gtest.h>
 

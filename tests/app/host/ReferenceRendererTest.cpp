@@ -2,10 +2,10 @@
 // The exact reference renderer on cases with closed-form answers, and on the hard cases:
 // rays through grid vertices, along edges, in faces; re-entry; clipping; slivers; a mesh
 // at 1e6 with 1e-3 cells; extreme optical depths.
-#include "QuadPrecision.hpp"
-#include "TetGrid.hpp"
+#include "support/QuadPrecision.hpp"
+#include "support/TetGrid.hpp"
 
-#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include "host/optics/ReferenceRenderer.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>

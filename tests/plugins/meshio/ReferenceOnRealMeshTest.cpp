@@ -2,12 +2,12 @@
 // The reference renderer on real gmsh meshes: the bar's image against the per-pixel closed
 // form, and ray lengths inside non-convex meshes against an independent count from the
 // boundary surface (ray/triangle crossings paired up).
-#include "../TestSupport.hpp"
-#include "ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+#include "support/ReaderSupport.hpp"
 
 #include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
-#include <volpost/core/optics/ReferenceRenderer.hpp>
+#include "host/optics/ReferenceRenderer.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>

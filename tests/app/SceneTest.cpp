@@ -1,0 +1,206 @@
+// SPDX-License-Identifier: MIT
+// The Scene: what each change costs the volume renderer (a dragged plane: only the
+// frame), its state as a file and back (the same picture), and what a state file may not
+// say (each refusal names the key).
+#include "support/ReaderSupport.hpp"
+#include "support/QtGuiEnvironment.hpp"
+#include "support/TestSupport.hpp"
+
+#include "RayCaster.hpp"
+#include "core/SceneImage.hpp"
+
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+using namespace volpost;
+using namespace volpost::app;
+
+namespace {
+
+VolumeRendererFactory rayCasterOnly() {
+  return [](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+    if (name == "raycast") return std::make_unique<volume::RayCaster>();
+    return nullptr;
+  };
+}
+
+std::shared_ptr<const ModelSession> bar() {
+  static const auto session =
+      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
+  return session;
+}
+
+class SceneWithContext : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    try {
+      context_ = std::make_unique<HeadlessContext>();
+    } catch (const std::exception& e) {
+      GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
+    }
+  }
+  std::unique_ptr<HeadlessContext> context_;
+};
+
+}  // namespace
+
+TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
+  Scene scene(rayCasterOnly());
+  scene.setInteractive(true);
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+  scene.setClipPlanes({{{5.0, 0.5, 0.5}, {1, 0, 0}}});
+  OffscreenTarget target(48, 32);
+  RenderContext ctx;
+  ctx.width = 48;
+  ctx.height = 32;
+  ctx.framebuffer = target.framebuffer();
+  scene.initialize();
+  scene.render(ctx);
+  const VolumeStats first = scene.volumeStats();
+  EXPECT_EQ(first.meshUploads, 1u);
+  EXPECT_EQ(first.tableBuilds, 1u);
+  for (int i = 1; i <= 10; ++i) {  // ten mouse events of a Ctrl+drag
+    scene.setClipPlanes({{{5.0 + 0.2 * i, 0.5, 0.5}, {1, 0, 0}}});
+    scene.render(ctx);
+  }
+  const VolumeStats dragged = scene.volumeStats();
+  EXPECT_EQ(dragged.meshUploads, first.meshUploads) << "no mesh upload";
+  EXPECT_EQ(dragged.valueUploads, first.valueUploads) << "no value upload";
+  EXPECT_EQ(dragged.tableBuilds, first.tableBuilds) << "no table rebuild";
+  // With a clip box on, the dragged plane is not dropped: it cuts too (and still costs
+  // only the frame).
+  scene.setClipBox(ClipBox{1.0, 9.0, -1.0, 2.0, -1.0, 2.0});
+  scene.render(ctx);
+  const auto boxed = scene.readVolumeImage();
+  const VolumeStats withBox = scene.volumeStats();
+  scene.setClipPlanes({{{2.0, 0.5, 0.5}, {1, 0, 0}}});
+  scene.render(ctx);
+  EXPECT_NE(scene.readVolumeImage(), boxed) << "the plane moved the cut inside the box";
+  EXPECT_EQ(scene.volumeStats().meshUploads, withBox.meshUploads);
+  EXPECT_EQ(scene.volumeStats().tableBuilds, withBox.tableBuilds);
+  // Another step or result: only values travel.
+  scene.setResult("U.magnitude", 0);
+  scene.render(ctx);
+  EXPECT_EQ(scene.volumeStats().meshUploads, withBox.meshUploads);
+  EXPECT_EQ(scene.volumeStats().valueUploads, withBox.valueUploads + 1);
+  scene.release();
+}
+
+TEST_F(SceneWithContext, AStateFileGivesTheSamePicture) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setColorMap("viridis");
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+  scene.setClipBox(ClipBox{0.5, 8.0, -1.0, 2.0, -1.0, 2.0});
+  scene.setClipPlanes({{{5.0, 0.5, 0.5}, {1, 0.2, 0}}});
+  scene.setIsoSurfaces({{80.0, {1.0, 0.8, 0.1}, 0.5}});
+  scene.setIntegrationMode(IntegrationMode::LinearSegments);
+  scene.camera().orbit(25.0, -10.0);
+  scene.camera().zoom(1.3);
+  const SceneImage before = renderSceneImage(scene, 64, 48);
+
+  const std::string path = (std::filesystem::temp_directory_path() / "volpost_scene_state_test.json").string();
+  scene.state().save(path);
+  const SceneState loaded = SceneState::load(path);
+  EXPECT_EQ(loaded.modelPath, bar()->model().sourcePath);
+  Scene restored(rayCasterOnly());
+  restored.setSession(bar());
+  restored.applyState(loaded);
+  const SceneImage after = renderSceneImage(restored, 64, 48);
+  EXPECT_TRUE(after.picture == before.picture) << "pixel for pixel";
+  EXPECT_EQ(after.volumeRgba, before.volumeRgba);
+  std::filesystem::remove(path);
+}
+
+TEST(SceneState, RoundTripsThroughItsFile) {
+  SceneState s;
+  s.modelPath = "/data/model.vtu";
+  s.quantity = "S.mises";
+  s.step = 2;
+  s.camera = CameraState{{1, 2, 3}, {0, 0, 0}, {0, 0, 1}, 40.0, true};
+  s.colorMap = "viridis";
+  s.fixedRange = DisplayRange{-1.0, 2.5};
+  s.edges = false;
+  s.volume.shown = true;
+  s.volume.renderer = "vicp";
+  s.volume.mode = IntegrationMode::PreIntegrated;
+  s.volume.transferFunction = TransferFunction({{0.0, {0, 0, 1}, 0.1}, {1.0, {1, 0, 0}, 2.0}});
+  s.volume.clipPlanes = {{{1, 2, 3}, {0, 1, 0}}};
+  s.volume.clipBox = ClipBox{0, 1, 0, 1, 0, 1};
+  s.volume.isoSurfaces = {{0.5, {1, 0.5, 0}, 0.25}};
+  s.volume.samplingStep = 0.01;
+  s.volume.termination = 0.0;
+  const SceneState back = SceneState::fromJson(s.toJson(), "/data/view.json");
+  EXPECT_EQ(back.modelPath, s.modelPath);
+  EXPECT_EQ(back.quantity, s.quantity);
+  EXPECT_EQ(back.step, s.step);
+  EXPECT_EQ(back.camera, s.camera);
+  EXPECT_EQ(back.colorMap, s.colorMap);
+  EXPECT_EQ(back.fixedRange, s.fixedRange);
+  EXPECT_EQ(back.edges, s.edges);
+  EXPECT_EQ(back.volume.renderer, s.volume.renderer);
+  EXPECT_EQ(back.volume.mode, s.volume.mode);
+  EXPECT_EQ(back.volume.transferFunction, s.volume.transferFunction);
+  EXPECT_EQ(back.volume.clipPlanes, s.volume.clipPlanes);
+  EXPECT_EQ(back.volume.clipBox, s.volume.clipBox);
+  EXPECT_EQ(back.volume.isoSurfaces.size(), 1u);
+  EXPECT_EQ(back.volume.samplingStep, s.volume.samplingStep);
+  EXPECT_EQ(back.volume.termination, s.volume.termination);
+  // A model next to the state file is written relative to it, and found again.
+  const SceneState moved = SceneState::fromJson(s.toJson("/data"), "/elsewhere/view.json");
+  EXPECT_EQ(moved.modelPath, "/elsewhere/model.vtu");
+}
+
+TEST(SceneState, RefusalsNameTheFileAndTheKey) {
+  const auto message = [](const std::string& text) {
+    try {
+      (void)SceneState::fromJson(text, "view.json");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string head = R"({"format": "volpost-state", "version": 1, "model": "m.vtu", )";
+  EXPECT_NE(message("{").find("view.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(message(R"({"format": "other"})").find("not a volpost state file"), std::string::npos);
+  EXPECT_NE(message(R"({"format": "volpost-state", "version": 99, "model": "m"})").find("\"version\""), std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"mode": "fast"}})").find("\"volume.mode\" must be one of: linear"), std::string::npos);
+  EXPECT_NE(message(head + R"("camera": {"eye": [0,0,1], "target": [0,0,0], "up": [0,0,1]}})").find("\"camera.up\""),
+            std::string::npos);
+  EXPECT_NE(message(head + R"("colors": {"range": [2, 1]}})").find("\"colors.range\" needs min < max"), std::string::npos);
+  EXPECT_NE(message(head + R"("result": {"step": 0}})").find("\"result.step\""), std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"clipBox": [0,1,0,1,0,1], "clipPlanes": [{"point":[0,0,0],"normal":[1,0,0]},{"point":[0,0,0],"normal":[1,0,0]},{"point":[0,0,0],"normal":[1,0,0]}]}})")
+                .find("at most 8"),
+            std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"transferFunction": {"format": "volpost-tf", "version": 1, "points": [{"value": "x"}]}}})")
+                .find("view.json: \"volume.transferFunction\""),
+            std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"clipPlanes": [{"point":[0,0,0],"normal":[0,0,0]}]}})").find("normal"), std::string::npos);
+}
+
+TEST(Scene, TheDefaultTransferFunctionTakesTheColorMapAndRange) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setColorMap("grayscale");
+  scene.setFixedRange(DisplayRange{50.0, 150.0});
+  const TransferFunction tf = scene.transferFunction();
+  EXPECT_DOUBLE_EQ(tf.minValue(), 50.0);
+  EXPECT_DOUBLE_EQ(tf.maxValue(), 150.0);
+  EXPECT_EQ(tf.points().front().color, glm::dvec3(0.0));
+  EXPECT_EQ(tf.points().back().color, glm::dvec3(1.0));
+  EXPECT_THROW(scene.setResult("S.nothing", 0), std::invalid_argument);
+  EXPECT_EQ(scene.state().quantity, "S.mises") << "a refused result changes nothing";
+  EXPECT_THROW(scene.setResult("S.mises", 7), std::invalid_argument);
+  EXPECT_THROW(scene.setVolumeRenderer("no-such-renderer"), std::invalid_argument);
+  EXPECT_THROW(scene.setColorMap("no-such-map"), std::invalid_argument);
+}

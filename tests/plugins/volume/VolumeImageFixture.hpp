@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// The fixture of the volume renderers' image tests: a headless EGL context, a renderer
+// (ray caster or cell projection), its image against the exact CPU reference renderer,
+// and the lost-pixel check on degenerate views of a tetrahedralized grid.
+#pragma once
+
+#include "support/TestSupport.hpp"
+#include "support/TetGrid.hpp"
+#include "support/ReaderSupport.hpp"
+
+#include "CellProjector.hpp"
+#include "RayCaster.hpp"
+#include "TetVolumeRenderer.hpp"
+
+#include <volpost/core/Quantity.hpp>
+#include "host/optics/ReferenceRenderer.hpp"
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <functional>
+#include <cmath>
+#include <thread>
+#include <memory>
+
+namespace volpost::test {
+
+struct ImageError {
+  double rmse = 0.0, max = 0.0;
+};
+
+class RayCast : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    try {
+      context_ = std::make_unique<HeadlessContext>();
+    } catch (const std::exception& e) {
+      GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
+    }
+    caster_ = makeRenderer();
+    caster_->initialize();
+  }
+  virtual std::unique_ptr<volume::TetVolumeRenderer> makeRenderer() const { return std::make_unique<volume::RayCaster>(); }
+  void TearDown() override {
+    if (context_ && caster_) caster_->release();
+  }
+
+  std::vector<float> gpuImage(const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
+    return imageOf(*caster_, camera, w, h, sceneDepth);
+  }
+
+  static std::vector<float> imageOf(VolumeRenderer& renderer, const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
+    OffscreenTarget target(w, h);
+    glClearNamedFramebufferfv(target.framebuffer(), GL_DEPTH, 0, &sceneDepth);
+    RenderContext ctx;
+    ctx.depthTexture = sceneDepth < 1.0f ? target.depthTexture() : 0;
+    ctx.camera = camera;
+    ctx.width = w;
+    ctx.height = h;
+    ctx.framebuffer = target.framebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    renderer.render(ctx);
+    glFinish();
+    return renderer.readImage();
+  }
+
+  static ImageError compare(const std::vector<float>& gpu, const optics::ReferenceImage& ref) {
+    ImageError e;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < ref.pixels.size(); ++i)
+      for (int k = 0; k < 4; ++k) {
+        const double d = double(gpu[4 * i + std::size_t(k)]) - ref.pixels[i][k];
+        sum += d * d;
+        e.max = std::max(e.max, std::abs(d));
+      }
+    e.rmse = std::sqrt(sum / double(ref.pixels.size() * 4));
+    return e;
+  }
+
+  ImageError againstReference(const Mesh& mesh, FieldLocation loc, const std::vector<double>& values,
+                              const TransferFunction& tf, const Camera& camera, int size,
+                              const std::vector<ClipPlane>& clips = {}) {
+    caster_->setVolume(mesh, loc, values);
+    caster_->setTransferFunction(tf);
+    caster_->setClipPlanes(clips);
+    caster_->setTerminationThreshold(0.0);
+    const auto gpu = gpuImage(camera, size, size);
+    const optics::TetVolume volume(mesh, loc, values);
+    optics::RaySettings settings;
+    settings.clipPlanes = clips;
+    return compare(gpu, optics::renderReference(volume, tf, camera, size, size, settings));
+  }
+
+  // A constant field on the Kuhn grid [0,4]^3 seen where rays are degenerate: along the
+  // axes (odd image sizes put rays exactly on grid planes and along columns of edges) and
+  // along the diagonal, orthographic and perspective (rays along chains of tet edges and
+  // through vertices). Each pixel must show 1 - exp(-tau L), L the ray's exact length in
+  // the box (in double here); pixels whose ray grazes the box's own faces are left out.
+  // Returns how many pixels are off by more than 1e-3.
+  int lostPixelsOnDegenerateViews() {
+    const Mesh grid = test::tetGrid(4, 4, 4);
+    const double tau = 0.3;
+    caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+    caster_->setVolume(grid, FieldLocation::Node, std::vector<double>(grid.nodeCount(), 1.0));
+    caster_->setTransferFunction(TransferFunction({{0.0, {1, 1, 1}, tau}, {2.0, {1, 1, 1}, tau}}));
+    caster_->setTerminationThreshold(0.0);
+    int lost = 0;
+    const std::pair<StandardView, Camera::Projection> views[] = {
+        {StandardView::PlusZ, Camera::Projection::Orthographic},  {StandardView::MinusZ, Camera::Projection::Orthographic},
+        {StandardView::PlusX, Camera::Projection::Orthographic},  {StandardView::MinusX, Camera::Projection::Orthographic},
+        {StandardView::PlusY, Camera::Projection::Orthographic},  {StandardView::MinusY, Camera::Projection::Orthographic},
+        {StandardView::Isometric, Camera::Projection::Orthographic}, {StandardView::Isometric, Camera::Projection::Perspective}};
+    for (auto [view, projection] : views) {
+      for (int size : {33, 65}) {
+        Camera camera;
+        camera.setProjection(projection);
+        camera.setView(view);
+        camera.fit(grid.bounds());
+        const auto image = gpuImage(camera, size, size);
+        const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(1.0) * camera.viewMatrix());
+        const auto lengthInBox = [&](double x, double y) {
+          const glm::dvec4 n = toModel * glm::dvec4(2.0 * x / size - 1.0, 1.0 - 2.0 * y / size, -1.0, 1.0);
+          const glm::dvec4 f = toModel * glm::dvec4(2.0 * x / size - 1.0, 1.0 - 2.0 * y / size, 1.0, 1.0);
+          const glm::dvec3 o = glm::dvec3(n) / n.w, d = glm::normalize(glm::dvec3(f) / f.w - o);
+          double t0 = -1e300, t1 = 1e300;
+          for (int k = 0; k < 3; ++k) {
+            if (d[k] == 0.0) {
+              if (o[k] < 0.0 || o[k] > 4.0) return 0.0;
+              continue;
+            }
+            const double a = (0.0 - o[k]) / d[k], b = (4.0 - o[k]) / d[k];
+            t0 = std::max(t0, std::min(a, b));
+            t1 = std::min(t1, std::max(a, b));
+          }
+          return std::max(0.0, t1 - t0);
+        };
+        int checked = 0, lostHere = 0;
+        for (int y = 0; y < size; ++y)
+          for (int x = 0; x < size; ++x) {
+            const double length = lengthInBox(x + 0.5, y + 0.5);
+            bool grazing = false;  // the box's own silhouette: the length jumps there
+            for (auto [dx, dy] : {std::pair{1e-3, 0.0}, {-1e-3, 0.0}, {0.0, 1e-3}, {0.0, -1e-3}})
+              grazing = grazing || std::abs(lengthInBox(x + 0.5 + dx, y + 0.5 + dy) - length) > 1e-2;
+            if (grazing) continue;
+            ++checked;
+            const double expected = 1.0 - std::exp(-tau * length);
+            const float a = image[std::size_t(y * size + x) * 4 + 3];
+            if (std::abs(a - expected) > 1e-3) {
+              ++lostHere;
+              ADD_FAILURE() << "view " << int(view) << (projection == Camera::Projection::Orthographic ? " ortho" : " persp")
+                            << " size " << size << " pixel (" << x << ", " << y << "): alpha " << a << ", expected " << expected;
+            }
+          }
+        EXPECT_GT(checked, size * size / 4);
+        lost += lostHere;
+      }
+    }
+    return lost;
+  }
+
+  std::unique_ptr<HeadlessContext> context_;
+  std::unique_ptr<volume::TetVolumeRenderer> caster_;
+};
+
+// Cell projection: the same fixture, the tets drawn in visibility order instead of walked.
+class CellProjection : public RayCast {
+ protected:
+  std::unique_ptr<volume::TetVolumeRenderer> makeRenderer() const override {
+    return std::make_unique<volume::CellProjector>(method);
+  }
+  volume::OrderMethod method = volume::OrderMethod::ImageSpace;
+};
+
+inline std::vector<double> field(const Mesh& m) {
+  std::vector<double> v;
+  for (const auto& p : m.nodes) v.push_back(p.x + 0.5 * p.z);
+  return v;
+}
+
+inline const TransferFunction kTf({{0.0, {0.1, 0.2, 0.9}, 0.05}, {2.0, {0.2, 0.9, 0.3}, 0.6},
+                            {3.5, {1.0, 1.0, 1.0}, 1.5}, {6.0, {0.9, 0.1, 0.1}, 0.2}});
+
+inline Camera isoCamera(const Mesh& m) {
+  Camera c;
+  c.setView(StandardView::Isometric);
+  c.fit(m.bounds());
+  c.orbit(17.0, 9.0);
+  return c;
+}
+
+// Values far from float32's comfort: a concentration of order 1e-38 (where float32 is
+// denormal and shader arithmetic flushes to zero) and a field riding on a large offset
+// (a temperature of 1e6 + small variations). The same picture must come out as for
+// field(), since the transfer function follows the values.
+inline void expectValueScaleInvariance(const char* renderer,
+                                const std::function<ImageError(const std::vector<double>&, const TransferFunction&)>& render) {
+  const Mesh grid = tetGrid(4, 4, 4);
+  for (auto [scale, offset] : {std::pair{1e-38, 0.0}, std::pair{1e-6, 1e6}}) {
+    std::vector<double> values = field(grid);
+    for (double& v : values) v = offset + scale * v;
+    std::vector<ControlPoint> points = kTf.points();
+    for (ControlPoint& p : points) p.value = offset + scale * p.value;
+    const ImageError e = render(values, TransferFunction(points));
+    std::printf("%s values x %g + %g vs reference: RMSE %.3g, max %.3g\n", renderer, scale, offset, e.rmse, e.max);
+    EXPECT_LE(e.rmse, 1e-5) << scale << " " << offset;
+    EXPECT_LE(e.max, 1e-4) << scale << " " << offset;
+  }
+}
+
+}  // namespace volpost::test
