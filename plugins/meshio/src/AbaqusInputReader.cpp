@@ -6,6 +6,8 @@
 #include "NodeTable.hpp"
 #include "TextScanner.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <array>
 #include <filesystem>
 #include <map>
@@ -47,7 +49,7 @@ class DeckParser {
 
   std::unique_ptr<Model> parse(const std::string& path) {
     model_ = std::make_unique<Model>();
-    readFile(path, 0);
+    readFile(path, 0, {});
     if (nodeIndex_.size() == 0) throw ReadError(path, "no *NODE data: this deck defines no mesh");
     if (model_->mesh.cellCount() == 0 && skipped_ == 0)
       throw ReadError(path, "no *ELEMENT data: this deck defines nodes but no elements");
@@ -56,9 +58,27 @@ class DeckParser {
   }
 
  private:
-  void readFile(const std::string& path, int depth) {
-    if (depth > 8) throw ReadError(path, "*INCLUDE nested more than 8 deep (an include cycle?)");
-    TextScanner s(readFileBytes(path, depth == 0 ? progress_ : Progress{}), path);
+  // Limits on *INCLUDE: nesting depth, the number of files read and their total size, so
+  // that a fan-out of includes (8 files each including the next 20 times: 2.6e10 reads)
+  // ends in a message instead of running for days.
+  static constexpr int kMaxIncludeDepth = 16;
+  static constexpr std::size_t kMaxFilesRead = 10000;
+
+  void readFile(const std::string& path, int depth, std::vector<std::string> chain) {
+    if (depth > kMaxIncludeDepth)
+      throw ReadError(path, "*INCLUDE nested more than " + std::to_string(kMaxIncludeDepth) + " deep");
+    std::error_code ec;
+    const std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
+    for (const std::string& outer : chain)
+      if (outer == canonical) throw ReadError(path, "includes itself (an *INCLUDE cycle)");
+    chain.push_back(canonical);
+    if (++filesRead_ > kMaxFilesRead)
+      throw ReadError(path, "the deck's *INCLUDEs read more than " + std::to_string(kMaxFilesRead) +
+                                " files (an include fan-out?)");
+    auto bytes = readFileBytes(path, depth == 0 ? progress_ : Progress{});
+    bytesRead_ += bytes->size();
+    requireMemory(double(bytesRead_), path, "the deck and its *INCLUDEs");
+    TextScanner s(std::move(bytes), path);
     if (s.bytes().find('\0') != std::string::npos || !looksLikeText(s.bytes()))
       throw ReadError(path, "binary data, not an Abaqus/CalculiX input deck (which is text)");
     enum class Block { None, Node, Element, Heading } block = Block::None;
@@ -98,7 +118,12 @@ class DeckParser {
           if (input == k.params.end() || input->second.empty()) s.fail("*INCLUDE without INPUT=");
           std::filesystem::path included = input->second;
           if (included.is_relative()) included = std::filesystem::path(path).parent_path() / included;
-          readFile(included.string(), depth + 1);
+          try {
+            readFile(included.string(), depth + 1, chain);
+          } catch (const ReadError& e) {
+            if (e.file() != included.string() || e.line() >= 0 || e.offset() >= 0) throw;  // already says where
+            s.fail("*INCLUDE, INPUT=" + input->second + ": " + e.detail());
+          }
         }
         continue;
       }
@@ -110,10 +135,11 @@ class DeckParser {
           break;
         case Block::Element: {
           if (pending.empty()) pendingOffset = std::size_t(line.data() - s.bytes().data());
-          for (auto f : splitFields(line, true)) pending.push_back(f);
-          if (line.back() == ',') continue;  // Abaqus continuation
+          for (auto f : splitFields(line, true))
+            if (!trim(f).empty()) pending.push_back(f);  // a trailing comma leaves an empty field
           const std::size_t need = 1 + std::size_t(element ? element->fileNodes : 0);
-          if (element && pending.size() < need) continue;  // record goes on on the next line
+          // A line ending in a comma continues the record unless the record is complete.
+          if (element ? pending.size() < need : line.back() == ',') continue;
           readElement(s, pending, element, elset);
           pending.clear();
           break;
@@ -216,6 +242,7 @@ class DeckParser {
   std::map<CellType, std::size_t> collapsed_;
   std::map<std::string, int> skippedTypes_;
   std::size_t skipped_ = 0, lines_ = 0;
+  std::size_t filesRead_ = 0, bytesRead_ = 0;
 };
 
 }  // namespace

@@ -8,10 +8,13 @@
 // first triangle faces the second); its hex20/wedge15 list vertical edges before the top.
 #include "ExodusReader.hpp"
 
+#include "NetcdfClassicLayout.hpp"
 #include "NodeOrder.hpp"
 #include "ResultCollector.hpp"
 
 #include <netcdf.h>
+
+#include <volpost/core/ResourceLimits.hpp>
 
 #include <array>
 #include <cctype>
@@ -87,6 +90,22 @@ class NcFile {
     if (nc_inq_varid(id_, name.c_str(), &var) != NC_NOERR) return std::nullopt;
     return var;
   }
+  int variableCount() const {
+    int n = 0;
+    check(nc_inq_nvars(id_, &n), "the variable list");
+    return n;
+  }
+  const std::string& path() const { return path_; }
+  /// A variable's shape must be what the data model says it is.
+  void requireShape(int var, const std::string& name, const std::vector<std::size_t>& expected) const {
+    const auto actual = shape(var, name);
+    std::size_t total = 1, wanted = 1;
+    for (std::size_t d : actual) total *= d;
+    for (std::size_t d : expected) wanted *= d;
+    if (total != wanted)
+      fail("variable " + name + " holds " + std::to_string(total) + " values where its dimensions say " +
+           std::to_string(wanted) + " (damaged file)");
+  }
   std::vector<std::size_t> shape(int var, const std::string& name) const {
     int ndims = 0;
     check(nc_inq_varndims(id_, var, &ndims), name);
@@ -104,7 +123,8 @@ class NcFile {
     const auto var = variable(name);
     if (!var) fail("variable " + name + " is missing");
     std::size_t n = 1;
-    for (std::size_t len : shape(*var, name)) n *= len;
+    for (std::size_t len : shape(*var, name)) n = checkedProduct(n, len, path_, "variable " + name);
+    requireMemory(double(n) * 8.0, path_, "variable " + name);
     std::vector<double> out(n);
     if (n) check(nc_get_var_double(id_, *var, out.data()), "reading " + name);
     return out;
@@ -120,7 +140,8 @@ class NcFile {
     const auto var = variable(name);
     if (!var) fail("variable " + name + " is missing");
     std::size_t n = 1;
-    for (std::size_t len : shape(*var, name)) n *= len;
+    for (std::size_t len : shape(*var, name)) n = checkedProduct(n, len, path_, "variable " + name);
+    requireMemory(double(n) * 8.0, path_, "variable " + name);
     std::vector<long long> out(n);
     if (n) check(nc_get_var_longlong(id_, *var, out.data()), "reading " + name);
     return out;
@@ -137,7 +158,8 @@ class NcFile {
     if (!var) return {};
     const auto sh = shape(*var, variableName);
     if (sh.size() != 2) fail(variableName + " is not a list of names");
-    std::vector<char> chars(sh[0] * sh[1]);
+    requireMemory(double(sh[0]) * double(sh[1]), path_, variableName);
+    std::vector<char> chars(checkedProduct(sh[0], sh[1], path_, variableName));
     if (!chars.empty()) check(nc_get_var_text(id_, *var, chars.data()), "reading " + variableName);
     std::vector<std::string> out;
     for (std::size_t i = 0; i < sh[0]; ++i) {
@@ -214,6 +236,11 @@ class ExodusParser {
     const auto nodes = nc_.dimension("num_nodes");
     const auto blocks = nc_.dimension("num_el_blk");
     if (!nodes || !blocks) nc_.fail("a netCDF file, but not Exodus II (no num_nodes / num_el_blk)");
+    // Every block has its own connect variable: more blocks than variables is a lie.
+    if (*blocks > std::size_t(nc_.variableCount()))
+      nc_.fail("num_el_blk is " + std::to_string(*blocks) + ", but the file has only " +
+               std::to_string(nc_.variableCount()) + " variables (damaged file)");
+    requireMemory(double(*nodes) * 48.0, nc_.path(), std::to_string(*nodes) + " nodes");
     readNodes(*nodes);
     progress_.report(0.3);
     readBlocks(*blocks);
@@ -234,6 +261,9 @@ class ExodusParser {
       if (dims > 1) xyz[1] = nc_.doubles("coordy");
       if (dims > 2) xyz[2] = nc_.doubles("coordz");
     } else {
+      const auto var = nc_.variable("coord");
+      if (!var) nc_.fail("no node coordinates (neither coordx nor coord)");
+      nc_.requireShape(*var, "coord", {dims, n});
       const auto all = nc_.doubles("coord");
       for (std::size_t d = 0; d < dims && d < 3; ++d) xyz[d].assign(all.begin() + std::ptrdiff_t(d * n), all.begin() + std::ptrdiff_t((d + 1) * n));
     }
@@ -296,6 +326,7 @@ class ExodusParser {
 
   void readTimes() {
     const std::size_t steps = nc_.dimension("time_step").value_or(0);
+    requireMemory(double(steps) * 64.0, nc_.path(), std::to_string(steps) + " time steps");
     times_ = steps && nc_.variable("time_whole") ? nc_.doubles("time_whole") : std::vector<double>(steps, 0.0);
     times_.resize(steps, 0.0);
   }
@@ -373,6 +404,7 @@ int ExodusReader::sniff(std::string_view head) const {
 
 std::unique_ptr<Model> ExodusReader::read(const std::string& path, const Progress& progress) const {
   progress.report(0.0);
+  checkClassicNetcdfExtent(path);
   auto model = ExodusParser(path, progress).parse();
   model->formatName = formatName();
   return model;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "FileBytes.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -9,10 +11,12 @@
 namespace volpost::meshio {
 
 std::shared_ptr<const std::string> readFileBytes(const std::string& path, const Progress& progress) {
+  requireRegularFile(path);
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw ReadError(path, std::string("cannot open: ") + std::strerror(errno));
   const std::streamoff size = in.tellg();
   if (size <= 0) throw ReadError(path, "file is empty (0 bytes)");
+  requireMemory(double(size), path, "the file's bytes");
   in.seekg(0);
   auto bytes = std::make_shared<std::string>(std::size_t(size), '\0');
   constexpr std::size_t kChunk = 16 << 20;
@@ -23,6 +27,8 @@ std::shared_ptr<const std::string> readFileBytes(const std::string& path, const 
     done += n;
     progress.report(0.2 * double(done) / double(bytes->size()));
   }
+  // A UTF-8 byte-order mark (some Windows editors write one) is not part of any format.
+  if (bytes->rfind("\xEF\xBB\xBF", 0) == 0) bytes->replace(0, 3, "   ");
   return bytes;
 }
 

@@ -190,6 +190,7 @@ class FrdParser {
     }
     if (components == 0) s_.fail("dataset " + dataset + " has no stored components");
     const std::size_t nc = std::size_t(components);
+    s_.requireMemory(results_.bytesWith(model_->mesh.nodeCount() * nc), "dataset " + dataset + " (" + std::to_string(nc) + " components)");
     std::vector<double> values(model_->mesh.nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
     std::int64_t seen = 0;
     // The line read last is the first record (the loop above stopped on it).

@@ -125,6 +125,7 @@ class GmshParser {
     if (v < 0 || v > (std::int64_t(1) << 40)) s_.fail(std::string(what) + " " + std::to_string(v) + " is out of range");
     return v;
   }
+  static std::size_t nc0(std::int64_t components) { return std::size_t(std::max<std::int64_t>(components, 1)); }
   std::int64_t tag(const char* what, bool sizeT) {
     return binary_ ? (sizeT ? binaryCursor().size(what) : binaryCursor().integer(what)) : integer(what);
   }
@@ -243,7 +244,7 @@ class GmshParser {
     sawNodes_ = true;
     if (!v4()) {
       const std::int64_t n = parseInteger(s_, s_.nextLine(), "the number of nodes");
-      if (n < 0) s_.fail("the number of nodes is negative");
+      s_.requirePlausibleCount(n, binary_ ? 28 : 8, "the number of nodes");  // "1 0 0 0\n" at least
       model_->mesh.nodes.reserve(std::size_t(n));
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("a node tag", false);
@@ -257,6 +258,8 @@ class GmshParser {
     }
     const std::int64_t blocks = count("the number of node blocks", true);
     const std::int64_t total = count("the number of nodes", true);
+    s_.requirePlausibleCount(total, binary_ ? 32 : 8, "the number of nodes");
+    s_.requirePlausibleCount(blocks, binary_ ? 24 : 8, "the number of node blocks");
     count("the smallest node tag", true);
     count("the largest node tag", true);
     model_->mesh.nodes.reserve(std::size_t(std::min<std::int64_t>(total, 1 << 26)));
@@ -265,8 +268,9 @@ class GmshParser {
       for (int k = 0; k < 2; ++k) tag("a node block header", false);
       const std::int64_t parametric = tag("a node block header", false);
       const std::int64_t n = count("the node count of a block", true);
-      if (seen + n > total)
+      if (n > total - seen)
         s_.fail("the node blocks hold more nodes than the $Nodes header says (" + std::to_string(total) + ")");
+      s_.requirePlausibleCount(n, binary_ ? 32 : 8, "the node count of a block");
       std::vector<std::int64_t> ids(static_cast<std::size_t>(n));
       for (auto& id : ids) id = tag("a node tag", true);
       for (std::int64_t i = 0; i < n; ++i) {
@@ -406,18 +410,22 @@ class GmshParser {
       return parseInteger(s_, line, what);
     };
     const std::int64_t nStrings = lineInteger("the number of string tags");
+    s_.requirePlausibleCount(nStrings, 1, "the number of string tags");
     for (std::int64_t i = 0; i < nStrings; ++i) {
+      if (s_.atEnd()) s_.fail("file ends inside the string tags of $" + section + " (truncated)");
       auto line = trim(s_.nextLine());
       if (line.size() >= 2 && line.front() == '"' && line.back() == '"') line = line.substr(1, line.size() - 2);
       if (i == 0) name = std::string(line);
     }
     const std::int64_t nReals = lineInteger("the number of real tags");
+    s_.requirePlausibleCount(nReals, 2, "the number of real tags");
     double time = 0.0;
     for (std::int64_t i = 0; i < nReals; ++i) {
       const double v = parseReal(s_, s_.nextLine(), "a real tag");
       if (i == 0) time = v;
     }
     const std::int64_t nIntegers = lineInteger("the number of integer tags");
+    s_.requirePlausibleCount(nIntegers, 2, "the number of integer tags");
     std::array<std::int64_t, 3> ints{0, 1, 0};
     for (std::int64_t i = 0; i < nIntegers; ++i) {
       const std::int64_t v = lineInteger("an integer tag");
@@ -427,6 +435,7 @@ class GmshParser {
     const std::int64_t components = ints[1], n = ints[2];
     if (components < 1 || components > 64) s_.fail("$" + section + " '" + name + "': " + std::to_string(components) + " components is not plausible");
     if (n < 0 || n > (std::int64_t(1) << 36)) s_.fail("$" + section + " '" + name + "': count " + std::to_string(n) + " is out of range");
+    s_.requirePlausibleCount(n, 2 * (nc0(components) + 1), "$" + section + " '" + name + "': the count");
     binary_ = wasBinary;  // the records: binary right after the last tag's line
     const std::size_t nc = std::size_t(components);
     char label[64];
@@ -448,6 +457,8 @@ class GmshParser {
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("an element tag", false);
         const std::int64_t perElement = perCorner ? count("the nodes per element", false) : 1;
+        if (perElement < 1 || perElement > 64)
+          s_.fail("$" + section + " '" + name + "': " + std::to_string(perElement) + " nodes per element is not plausible");
         const auto index = elementIndex_.find(id);
         std::vector<double> v(std::size_t(perElement) * nc);
         for (double& x : v) x = real("a value");

@@ -220,6 +220,7 @@ class NfParser {
   std::string_view readDisplacement() {
     const std::int64_t n = count("the displacement count");
     token();  // its label
+    s_.requireMemory(results_.bytesWith(model_->mesh.nodeCount() * 3), "the displacement");
     std::vector<double> u(model_->mesh.nodeCount() * 3, std::numeric_limits<double>::quiet_NaN());
     for (std::int64_t i = 0; i < n; ++i) {
       const auto index = node(integer("a node id"), "NODAL.DISPLACEMENT");
@@ -253,6 +254,7 @@ class NfParser {
   std::string_view readNodal(int width) {
     const std::int64_t n = count("the node count of a result");
     const std::size_t m = std::max<std::size_t>(labels_.size(), 1), w = std::size_t(width);
+    s_.requireMemory(results_.bytesWith(m * model_->mesh.nodeCount() * w), "a nodal result of " + std::to_string(m) + " labels x " + std::to_string(w) + " components");
     std::vector<std::vector<double>> values(m, std::vector<double>(model_->mesh.nodeCount() * w, std::numeric_limits<double>::quiet_NaN()));
     for (std::int64_t i = 0; i < n; ++i) {
       const auto index = node(integer("a node id"), "a nodal result");
@@ -269,6 +271,7 @@ class NfParser {
   std::string_view readPerElement(bool elementNodal) {
     const std::int64_t n = count("the element count of a result");
     const std::size_t m = std::max<std::size_t>(labels_.size(), 1), cells = model_->mesh.cellCount();
+    s_.requireMemory(results_.bytesWith(m * cells * (elementNodal ? 28 : 1)), "an element result of " + std::to_string(m) + " labels");
     std::vector<std::vector<double>> perCell(m, std::vector<double>(cells, std::numeric_limits<double>::quiet_NaN()));
     std::vector<std::vector<std::vector<double>>> corners(m, std::vector<std::vector<double>>(elementNodal ? cells : 0));
     for (std::int64_t i = 0; i < n; ++i) {

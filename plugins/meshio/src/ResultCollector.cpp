@@ -8,6 +8,7 @@ namespace volpost::meshio {
 
 void ResultCollector::add(const std::string& name, FieldLocation location, int components, Step step,
                           std::vector<double> values) {
+  bytes_ += values.size() * sizeof(double);
   for (Pending& f : fields_) {
     if (f.name == name && f.location == location && f.components == components) {
       f.steps.push_back(std::move(step));

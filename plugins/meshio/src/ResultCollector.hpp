@@ -22,6 +22,11 @@ class ResultCollector {
   std::string mismatch(const Mesh& mesh) const;
   /// Moves the fields into `model` (in the order their names first appeared).
   void moveInto(Model& model);
+  /// Bytes the blocks gathered so far hold.
+  std::size_t bytes() const { return bytes_; }
+  /// The bytes with `doubles` more values: what to check against the memory budget before
+  /// allocating them (a small file can declare results that expand to gigabytes).
+  double bytesWith(std::size_t doubles) const { return double(bytes_) + 8.0 * double(doubles); }
 
  private:
   struct Pending {
@@ -32,6 +37,7 @@ class ResultCollector {
     std::vector<std::vector<double>> values;
   };
   std::vector<Pending> fields_;
+  std::size_t bytes_ = 0;
 };
 
 /// Values given per element corner (element-nodal or extrapolated Gauss points) averaged

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "TextScanner.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -139,6 +141,22 @@ double parseFortranReal(const TextScanner& scanner, std::string_view field, cons
   if (upper == "INF" || upper == "+INF" || upper == "INFINITY") return HUGE_VAL;
   if (upper == "-INF" || upper == "-INFINITY") return -HUGE_VAL;
   return parseReal(scanner, s, what);
+}
+
+void TextScanner::requireMemory(double bytes, const std::string& what) const {
+  try {
+    volpost::requireMemory(bytes, path_, what);
+  } catch (const ReadError& e) {
+    fail(e.detail());
+  }
+}
+
+void TextScanner::requirePlausibleCount(std::int64_t count, std::size_t minBytes, const std::string& what) const {
+  const std::size_t left = b_.size() - std::min(pos_, b_.size());
+  if (count < 0) fail(what + " " + std::to_string(count) + " is negative");
+  if (minBytes > 0 && std::uint64_t(count) > left / minBytes + 1)
+    fail(what + " " + std::to_string(count) + " is more than the " + std::to_string(left) +
+         " bytes left in the file can hold (corrupt or truncated)");
 }
 
 }  // namespace volpost::meshio

@@ -40,6 +40,12 @@ class TextScanner {
   [[noreturn]] void failAtOffset(std::size_t offset, const std::string& message) const;
   /// Reports progress as the fraction of bytes read, mapped to [from, to].
   void report(const Progress& progress, double from, double to) const;
+  /// Refuses a declared count of items that each take at least `minBytes` in the file
+  /// when the rest of the file cannot hold them: checked before anything is allocated, so
+  /// a few hostile bytes cannot ask for gigabytes.
+  void requirePlausibleCount(std::int64_t count, std::size_t minBytes, const std::string& what) const;
+  /// volpost::requireMemory, with the refusal naming the current line.
+  void requireMemory(double bytes, const std::string& what) const;
 
  private:
   std::shared_ptr<const std::string> bytesPtr_;

@@ -5,10 +5,13 @@
 #include "NumericType.hpp"
 #include "VtkCells.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace volpost::meshio {
 namespace {
@@ -39,6 +42,10 @@ class LegacyParser {
   [[noreturn]] void fail(const std::string& message) const {
     throw ReadError::atLine(path_, lineAt(b_, tokenStart_), message);
   }
+  std::size_t product(std::size_t a, std::size_t b, const std::string& what) const {
+    return checkedProduct(a, b, path_, what);
+  }
+  std::int64_t currentLine() const { return lineAt(b_, tokenStart_); }
 
   std::string_view line() {
     tokenStart_ = pos_;
@@ -97,7 +104,7 @@ class LegacyParser {
   /// Binary: byte offset of `count` values and skips them. ASCII: nothing (use values()).
   std::size_t skipBinary(std::size_t count, NumericType t, const std::string& what) {
     toDataStart();
-    const std::size_t need = count * sizeOf(t);
+    const std::size_t need = checkedProduct(count, sizeOf(t), path_, what + " size");
     if (b_.size() - pos_ < need)
       throw ReadError::atOffset(path_, pos_, "file ends inside the " + what + " data (truncated): " +
                                                  std::to_string(need) + " bytes needed, " +
@@ -107,11 +114,21 @@ class LegacyParser {
     return at;
   }
 
+  // An ASCII value takes at least two bytes ("0 "): a count the rest of the file cannot
+  // hold is refused before anything is allocated for it.
+  void checkAsciiCount(std::size_t count, const std::string& what) {
+    const std::size_t left = b_.size() - std::min(pos_, b_.size());
+    if (count > left / 2 + 1)
+      fail(what + " declares " + std::to_string(count) + " values, but the " + std::to_string(left) +
+           " bytes left in the file can hold at most " + std::to_string(left / 2 + 1) + " (corrupt or truncated)");
+  }
+
   std::vector<double> values(std::size_t count, NumericType t, const std::string& what) {
     if (binary) {
       const std::size_t at = skipBinary(count, t, what);
       return toDoubles(reinterpret_cast<const std::uint8_t*>(b_.data() + at), count, t, true);
     }
+    checkAsciiCount(count, what);
     std::vector<double> out(count);
     for (std::size_t i = 0; i < count; ++i) {
       const auto tok = token();
@@ -133,6 +150,7 @@ class LegacyParser {
       const std::size_t at = skipBinary(count, t, what);
       return toIntegers(reinterpret_cast<const std::uint8_t*>(b_.data() + at), count, t, true);
     }
+    checkAsciiCount(count, what);
     std::vector<std::int64_t> out(count);
     for (std::size_t i = 0; i < count; ++i) {
       const auto tok = token();
@@ -198,6 +216,20 @@ StepLoader symmetricPart(StepLoader full) {
   };
 }
 
+// Largest |t_ij - t_ji| relative to the largest |t| over all tensors; 0 when symmetric to
+// float precision (values written as float32 agree to about 1e-7).
+double largestAsymmetry(const std::vector<double>& v) {
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i + 9 <= v.size(); i += 9) {
+    const double* t = v.data() + i;
+    for (int k = 0; k < 9; ++k) scale = std::max(scale, std::abs(t[k]));
+    worst = std::max({worst, std::abs(t[1] - t[3]), std::abs(t[2] - t[6]), std::abs(t[5] - t[7])});
+  }
+  if (!(scale > 0.0)) return 0.0;
+  const double relative = worst / scale;
+  return relative <= 1e-6 ? 0.0 : relative;
+}
+
 class LegacyReading {
  public:
   LegacyReading(std::shared_ptr<const std::string> bytes, const std::string& path, const Progress& progress)
@@ -212,12 +244,18 @@ class LegacyReading {
     FieldLocation location = FieldLocation::Node;
     std::size_t sectionCount = 0;
     bool inSection = false;
+    std::map<std::string, std::int64_t> seen;  // section -> line: POINTS, CELLS, CELL_TYPES come once
     while (!p_.atEnd()) {
       const std::string key(p_.token());
+      if (key == "POINTS" || key == "CELLS" || key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
+        const auto [it, first] = seen.emplace(key, p_.currentLine());
+        if (!first) p_.fail("a second " + key + " section (the first is at line " + std::to_string(it->second) + "): a file has one");
+      }
       if (key == "POINTS") {
+        if (seen.count("CELLS")) p_.fail("POINTS after CELLS: the cells would refer to points not read yet");
         pointCount = p_.count("the number of points");
         const NumericType t = p_.type();
-        const auto xyz = p_.values(pointCount * 3, t, "POINTS");
+        const auto xyz = p_.values(p_.product(pointCount, 3, "POINTS"), t, "POINTS");
         model->mesh.nodes.resize(pointCount);
         for (std::size_t i = 0; i < pointCount; ++i)
           model->mesh.nodes[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
@@ -258,6 +296,7 @@ class LegacyReading {
     }
     if (!haveCells) p_.fail(cells_.offsets.empty() ? "no CELLS section" : "CELLS without CELL_TYPES");
     for (auto& a : arrays_) addField(*model, a, mapping);
+    model->diagnostics.insert(model->diagnostics.end(), diagnostics_.begin(), diagnostics_.end());
     return model;
   }
 
@@ -322,7 +361,7 @@ class LegacyReading {
         const std::size_t tuples = p_.count("the number of tuples");
         const NumericType t = p_.type();
         if (comps < 1) p_.fail("FIELD array " + name + " has no components");
-        auto loader = p_.array(tuples * std::size_t(comps), t, "FIELD array " + name);
+        auto loader = p_.array(p_.product(tuples, std::size_t(comps), "FIELD array " + name), t, "FIELD array " + name);
         if (p_.peekToken() == "METADATA") { p_.token(); skipMetadata(); }
         if (inSection) arrays_.push_back({name, location, comps, tuples, std::move(loader)});
       }
@@ -331,20 +370,20 @@ class LegacyReading {
     if (key == "LOOKUP_TABLE") {  // a color table of its own: read past it
       p_.token();
       const std::size_t size = p_.count("the lookup-table size");
-      if (p_.binary) p_.skipBinary(size * 4, NumericType::UInt8, "LOOKUP_TABLE");
-      else p_.values(size * 4, NumericType::Float32, "LOOKUP_TABLE");
+      if (p_.binary) p_.skipBinary(p_.product(size, 4, "LOOKUP_TABLE"), NumericType::UInt8, "LOOKUP_TABLE");
+      else p_.values(p_.product(size, 4, "LOOKUP_TABLE"), NumericType::Float32, "LOOKUP_TABLE");
       return;
     }
     const std::string name = decodeName(p_.token());
     if (key == "COLOR_SCALARS") {
       const std::size_t comps = p_.count("the number of color components");
-      if (p_.binary) p_.skipBinary(n * comps, NumericType::UInt8, "COLOR_SCALARS");
-      else p_.values(n * comps, NumericType::Float32, "COLOR_SCALARS");
+      if (p_.binary) p_.skipBinary(p_.product(n, comps, "COLOR_SCALARS"), NumericType::UInt8, "COLOR_SCALARS");
+      else p_.values(p_.product(n, comps, "COLOR_SCALARS"), NumericType::Float32, "COLOR_SCALARS");
       return;
     }
     if (key == "TEXTURE_COORDINATES") {
       const std::size_t dim = p_.count("the texture dimension");
-      p_.array(n * dim, p_.type(), key);
+      p_.array(p_.product(n, dim, key), p_.type(), key);
       return;
     }
     const NumericType t = p_.type();
@@ -355,10 +394,22 @@ class LegacyReading {
       if (p_.peekToken() == "LOOKUP_TABLE") { p_.token(); p_.token(); }
     }
     if (comps < 1 || comps > 4096) p_.fail("SCALARS " + name + ": bad number of components");
-    auto loader = p_.array(n * std::size_t(comps), t, key + " " + name);
+    auto loader = p_.array(p_.product(n, std::size_t(comps), key + " " + name), t, key + " " + name);
     if (comps == 9) {
-      loader = symmetricPart(std::move(loader));
-      comps = 6;
+      // A symmetric 3x3 tensor (stress, strain) becomes volpost's six components; one that
+      // is not symmetric keeps its nine, and the user is told why it has no von Mises.
+      const double asymmetry = largestAsymmetry(loader(0));
+      if (asymmetry <= 0.0) {
+        loader = symmetricPart(std::move(loader));
+        comps = 6;
+      } else {
+        diagnostics_.push_back({Severity::Warning, "non-symmetric-tensor",
+                                "TENSORS " + name + " is not symmetric (entries differ from their transpose by up to " +
+                                    std::to_string(asymmetry) +
+                                    " relative): kept as 9 components; von Mises and principal values need a "
+                                    "symmetric tensor",
+                                {}});
+      }
     }
     arrays_.push_back({name, location, comps, n, std::move(loader)});
   }
@@ -395,6 +446,7 @@ class LegacyReading {
   const Progress& progress_;
   VtkCellArrays cells_;
   std::vector<PendingArray> arrays_;
+  std::vector<Diagnostic> diagnostics_;
 };
 
 }  // namespace

@@ -77,7 +77,14 @@ BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const
   if (b.blocks > (v.size / h)) fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks (corrupt or truncated)");
   b.headerBytes = (3 + b.blocks) * h;
   if (v.size < b.headerBytes) fail(src, "data ends inside its compression header (truncated)");
-  b.rawBytes = b.blocks == 0 ? 0 : (b.blocks - 1) * b.blockSize + (b.lastSize ? b.lastSize : b.blockSize);
+  // (blocks - 1) * blockSize + last, in arithmetic that cannot wrap: a hostile header
+  // could otherwise claim 2^63-byte blocks whose total wraps to a few bytes.
+  std::uint64_t full = 0, total = 0;
+  if (b.blocks > 0 && (__builtin_mul_overflow(b.blocks - 1, b.blockSize, &full) ||
+                       __builtin_add_overflow(full, b.lastSize ? b.lastSize : b.blockSize, &total)))
+    fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks of " + std::to_string(b.blockSize) +
+                  " bytes, more than 64 bits can count (corrupt)");
+  b.rawBytes = total;
   return b;
 }
 
@@ -109,6 +116,7 @@ std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding&
     const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);
     const std::uint64_t usize = (k + 1 == b.blocks && b.lastSize) ? b.lastSize : b.blockSize;
     if (csize > v.size - in) fail(src, "compressed block " + std::to_string(k) + " runs past the end of the data (truncated)");
+    if (usize > out.size() - done) fail(src, "zlib block " + std::to_string(k) + " is larger than the header's total (corrupt)");
     uLongf destLen = uLongf(usize);
     const int rc = uncompress(out.data() + done, &destLen, v.data + in, uLong(csize));
     if (rc != Z_OK || destLen != usize)

@@ -5,11 +5,14 @@
 #include "VtkCells.hpp"
 #include "VtuDataArray.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <pugixml.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <map>
 
 namespace volpost::meshio {
@@ -36,6 +39,7 @@ class VtuReading {
     const pugi::xml_node root = doc.child("VTKFile");
     if (!root) throw ReadError(path_, "no <VTKFile> element: not a VTK XML file");
     readEncoding(root);
+    checkAppendedOffsets(root);
     const pugi::xml_node grid = root.child("UnstructuredGrid");
     if (!grid) throw ReadError(path_, "this VTK XML file holds a " + std::string(root.attribute("type").as_string("?")) +
                                           "; volpost reads UnstructuredGrid (.vtu)");
@@ -91,6 +95,30 @@ class VtuReading {
       failAt(root, "compressor " + compressor + " is not supported (volpost reads zlib-compressed and uncompressed files)");
   }
 
+  // Appended arrays each own a run of the appended data, from their offset to the next
+  // array's: two arrays at one offset (or a run past the data) is a corrupt or hostile
+  // file, and decoding every array from the same place to the end would take quadratic time.
+  void checkAppendedOffsets(const pugi::xml_node& root) {
+    std::map<std::size_t, pugi::xml_node> byOffset;
+    for (const pugi::xpath_node& x : root.select_nodes("//DataArray[@format='appended']")) {
+      const pugi::xml_node a = x.node();
+      const std::size_t offset = std::size_t(a.attribute("offset").as_ullong(0));
+      const auto [it, inserted] = byOffset.emplace(offset, a);
+      if (!inserted)
+        failAt(a, "DataArray \"" + std::string(a.attribute("Name").as_string()) + "\" starts at offset " +
+                      std::to_string(offset) + " of the appended data, as DataArray \"" +
+                      it->second.attribute("Name").as_string() + "\" does (overlapping arrays: corrupt file)");
+    }
+    for (const auto& [offset, node] : byOffset) appendedOffsets_.push_back(offset);
+  }
+
+  // The end of the run of the appended array starting at `offset`: the next array's offset.
+  std::size_t appendedRunEnd(std::size_t offset) const {
+    const auto next = std::upper_bound(appendedOffsets_.begin(), appendedOffsets_.end(), offset);
+    const std::size_t size = appended_.end - appended_.begin;
+    return next == appendedOffsets_.end() ? size : std::min<std::size_t>(*next, size);
+  }
+
   VtuArraySource source(const pugi::xml_node& array) {
     VtuArraySource s;
     s.name = array.attribute("Name").as_string("");
@@ -109,6 +137,7 @@ class VtuReading {
       s.end = appended_.end;
       s.appendedOffset = std::size_t(array.attribute("offset").as_ullong(0));
       s.appendedBase64 = appended_.base64;
+      s.end = s.begin + appendedRunEnd(s.appendedOffset);
     } else if (format == "binary" || format == "ascii") {
       s.format = format == "ascii" ? VtuArraySource::Format::Ascii : VtuArraySource::Format::Binary;
       s.file = std::make_shared<const std::string>(array.child_value());
@@ -151,8 +180,11 @@ class VtuReading {
       if (!pts) failAt(piece, "<Piece> has no <Points> DataArray");
       const VtuArraySource s = source(pts);
       if (s.components != 3) failAt(pts, "Points must have 3 components, not " + std::to_string(s.components));
+      if (std::uint64_t(points) > std::numeric_limits<std::size_t>::max() / 24)
+        failAt(piece, "NumberOfPoints " + std::to_string(points) + " is more than any file or memory can hold (corrupt)");
+      const std::size_t expected = std::size_t(points) * 3;
       const auto xyz = guarded(pts, [&] { return vtuDoubles(s, enc_); });
-      if (xyz.size() != std::size_t(points) * 3)
+      if (xyz.size() != expected)
         failAt(pts, "Points holds " + std::to_string(xyz.size() / 3) + " points, NumberOfPoints says " + std::to_string(points));
       for (std::size_t i = 0; i < std::size_t(points); ++i)
         model.mesh.nodes.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
@@ -183,7 +215,18 @@ class VtuReading {
                                   " connectivity entries");
         cells.offsets.push_back(offsets[i]);
       }
-      for (auto& c : cells.connectivity) c += std::int64_t(nodeBase);
+      // Each piece numbers its own points from 0: an index outside them (negative, or past
+      // this piece's points) must not silently land on another piece's nodes.
+      for (std::size_t i = 0; i < cells.connectivity.size(); ++i) {
+        std::int64_t& c = cells.connectivity[i];
+        if (c < 0 || c >= points) {
+          const auto cell = std::upper_bound(cells.offsets.begin(), cells.offsets.end(), std::int64_t(i)) - cells.offsets.begin() - 1;
+          failAt(arrayNamed(cellsNode, "connectivity"),
+                 "cell " + std::to_string(cell) + " uses point " + std::to_string(c) + ", outside this piece's " +
+                     std::to_string(points) + " points (0.." + std::to_string(points - 1) + ")");
+        }
+        c += std::int64_t(nodeBase);
+      }
     }
     const std::size_t pointTotal = nodeBase + std::size_t(points);
     const pugi::xml_node cellsNode = piece.child("Cells");
@@ -217,7 +260,6 @@ class VtuReading {
     for (pugi::xml_node array : data.children("DataArray")) {
       VtuArraySource s = source(array);
       if (s.name.empty()) failAt(array, "DataArray without a Name");
-      if (s.appendedBase64) narrowBase64(s);
       const std::size_t values = guarded(array, [&] { return vtuValueCount(s, enc_); });
       const std::string key = std::string(location == FieldLocation::Node ? "n:" : "c:") + s.name;
       auto [it, inserted] = fields_.try_emplace(key, FieldParts{location, s.components, {}, pieceCount_});
@@ -239,19 +281,6 @@ class VtuReading {
       f.parts.push_back({std::move(s), std::move(m)});
       if (inserted) order_.push_back(key);
     }
-  }
-
-  // A base64 appended array's run ends where the next array's begins.
-  void narrowBase64(VtuArraySource& s) {
-    if (base64Offsets_.empty()) {
-      // Collect every offset once; pugixml already parsed them, re-scan the XML cheaply.
-      for (std::size_t at = xml_.find("offset=\""); at != std::string::npos; at = xml_.find("offset=\"", at + 8))
-        base64Offsets_.push_back(std::strtoull(xml_.c_str() + at + 8, nullptr, 10));
-      std::sort(base64Offsets_.begin(), base64Offsets_.end());
-    }
-    const auto next = std::upper_bound(base64Offsets_.begin(), base64Offsets_.end(), s.appendedOffset);
-    const std::size_t runEnd = next == base64Offsets_.end() ? s.end - s.begin : std::min<std::size_t>(*next, s.end - s.begin);
-    s.end = s.begin + runEnd;
   }
 
   void finishFields(Model& model) {
@@ -312,7 +341,7 @@ class VtuReading {
   std::size_t pieceCount_ = 0;
   std::map<std::string, FieldParts> fields_;
   std::vector<std::string> order_;
-  std::vector<std::size_t> base64Offsets_;
+  std::vector<std::size_t> appendedOffsets_;  ///< sorted, distinct
 };
 
 }  // namespace

@@ -25,6 +25,7 @@ std::vector<FaceRecord> collectFaces(const Mesh& mesh) {
   for (CellType t : mesh.cellTypes()) total += topology(t).faces.size();
   faces.reserve(total);
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    if (cellRepeatsANode(mesh, c)) continue;  // flagged by the checks; no proper faces
     const auto nodes = mesh.cellNodes(c);
     const auto& topo = topology(mesh.cellType(c));
     for (std::size_t f = 0; f < topo.faces.size(); ++f) {
@@ -111,6 +112,7 @@ class SurfaceBuilder {
   }
 
   void addTriangle(std::uint32_t cell, NodeIndex a, NodeIndex b, NodeIndex c) {
+    if (a == b || b == c || a == c) return;  // no area to draw, and OpenMesh asserts on it
     auto f = out_.mesh.add_face(vertexOf(a), vertexOf(b), vertexOf(c));
     if (!f.is_valid()) {
       // Non-manifold configuration (e.g. a fin of faces on one edge): keep the triangle

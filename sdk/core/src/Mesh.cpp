@@ -85,4 +85,12 @@ double signedCellVolume(const Mesh& mesh, std::size_t cell) {
   return volume;
 }
 
+bool cellRepeatsANode(const Mesh& mesh, std::size_t cell) {
+  const auto nodes = mesh.cellNodes(cell);
+  for (std::size_t i = 1; i < nodes.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (nodes[i] == nodes[j]) return true;
+  return false;
+}
+
 }  // namespace volpost

@@ -2,6 +2,7 @@
 #include <volpost/core/ReaderRegistry.hpp>
 
 #include <volpost/core/MeshChecks.hpp>
+#include <volpost/core/ResourceLimits.hpp>
 
 #include <algorithm>
 #include <cctype>
@@ -39,14 +40,14 @@ std::string describeContent(std::string_view head) {
 }  // namespace
 
 const MeshReader& ReaderRegistry::choose(const std::string& path) const {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw ReadError(path, "is a folder, not a file");
+  requireRegularFile(path);  // a FIFO would block here, a device would never end
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ReadError(path, std::string("cannot open: ") + std::strerror(errno));
   std::string head(4096, '\0');
   in.read(head.data(), std::streamsize(head.size()));
   head.resize(std::size_t(in.gcount()));
   if (head.empty()) throw ReadError(path, "file is empty (0 bytes)");
+  if (head.rfind("\xEF\xBB\xBF", 0) == 0) head.erase(0, 3);  // a UTF-8 byte-order mark says nothing of the format
 
   const std::string ext = extensionOf(path);
   const MeshReader* best = nullptr;
@@ -74,7 +75,15 @@ const MeshReader& ReaderRegistry::choose(const std::string& path) const {
 
 std::unique_ptr<Model> ReaderRegistry::load(const std::string& path, const Progress& progress) const {
   const MeshReader& reader = choose(path);
-  std::unique_ptr<Model> model = reader.read(path, progress);
+  std::unique_ptr<Model> model;
+  try {
+    model = reader.read(path, progress);
+  } catch (const std::bad_alloc&) {
+    throw ReadError(path, "ran out of memory while reading it: the file declares more data than this machine can "
+                          "hold (memory budget " + byteSizeText(double(memoryBudget())) + ")");
+  } catch (const std::length_error&) {
+    throw ReadError(path, "declares an array too large to hold (a corrupt or hostile count)");
+  }
   model->sourcePath = path;
   if (model->formatName.empty()) model->formatName = reader.formatName();
   checkModel(*model);

@@ -140,6 +140,10 @@ TetMesh tetrahedralize(const Mesh& mesh) {
   out.originalNodes = mesh.nodeCount();
   Builder b(out);
   for (std::uint32_t c = 0; c < mesh.cellCount(); ++c) {
+    if (cellRepeatsANode(mesh, c)) {  // flagged by the checks; no volume to split
+      out.skippedCells.push_back(c);
+      continue;
+    }
     const auto n = mesh.cellNodes(c);
     switch (mesh.cellType(c)) {
       case CellType::Tet4: b.addTet({n[0], n[1], n[2], n[3]}, c); break;

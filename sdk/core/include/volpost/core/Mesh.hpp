@@ -65,4 +65,9 @@ class Mesh {
 /// Signed volume of a cell from its corner faces (negative = inverted or mirrored).
 double signedCellVolume(const Mesh& mesh, std::size_t cell);
 
+/// True when a cell uses one node twice: such a cell (flagged by the model checks as
+/// "repeated-node-cells") has no proper faces or volume, and every consumer (boundary,
+/// tetrahedralization, point location, rendering) leaves it out.
+bool cellRepeatsANode(const Mesh& mesh, std::size_t cell);
+
 }  // namespace volpost

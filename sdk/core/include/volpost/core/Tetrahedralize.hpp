@@ -27,6 +27,8 @@ struct TetMesh {
   /// Source cells whose split has a tet that is not positively oriented even with the
   /// centroid point (inverted or badly folded cells): their pieces overlap.
   std::vector<std::uint32_t> foldedCells;
+  /// Source cells left out: they use one node twice (no volume).
+  std::vector<std::uint32_t> skippedCells;
 
   /// Node values for `mesh`: the originals, then each Steiner point's mean of its cell's corners.
   std::vector<double> nodeValues(const Mesh& source, std::span<const double> values) const;
