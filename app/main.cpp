@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // volpost: the window (no verb) or a command-line verb (info, render, plugins).
+#include "cli/CliSupport.hpp"
 #include "cli/Commands.hpp"
 #include "gui/MainWindow.hpp"
 #include "gui/Viewport.hpp"
@@ -14,6 +15,7 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <sys/stat.h>
@@ -40,7 +42,7 @@ void printUsage() {
 
 QStringList argsAfter(int argc, char** argv, int first) {
   QStringList out;
-  for (int i = first; i < argc; ++i) out << QString::fromLocal8Bit(argv[i]);
+  for (int i = first; i < argc; ++i) out << volpost::app::argumentText(argv[i]);
   return out;
 }
 
@@ -112,6 +114,8 @@ int runWindow(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) must end a write with an error we report, not kill us.
+  std::signal(SIGXFSZ, SIG_IGN);
   const char* verb = argc >= 2 ? argv[1] : "";
   if (!std::strcmp(verb, "--help") || !std::strcmp(verb, "-h") || !std::strcmp(verb, "help")) {
     printUsage();

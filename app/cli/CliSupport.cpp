@@ -30,6 +30,58 @@ Progress terminalProgress(const std::string& label) {
   });
 }
 
+QString argumentText(const char* bytes) {
+  QString out;
+  const auto* p = reinterpret_cast<const unsigned char*>(bytes);
+  while (*p) {
+    const unsigned char c = *p;
+    const int length = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+    bool valid = length > 0;
+    for (int k = 1; valid && k < length; ++k) valid = (p[k] & 0xC0) == 0x80;
+    if (valid) {
+      const QString decoded = QString::fromUtf8(reinterpret_cast<const char*>(p), length);
+      valid = !decoded.contains(QChar::ReplacementCharacter);  // overlong or surrogate encodings
+      if (valid) {
+        out += decoded;
+        p += length;
+        continue;
+      }
+    }
+    out += QChar(char16_t(0xDC00 + c));  // a byte that is not UTF-8, kept
+    ++p;
+  }
+  return out;
+}
+
+std::string pathBytes(const QString& text) {
+  std::string out;
+  for (qsizetype i = 0; i < text.size();) {
+    const char16_t u = text[i].unicode();
+    if (u >= 0xDC80 && u <= 0xDCFF && !(i > 0 && text[i - 1].isHighSurrogate())) {
+      out += char(u - 0xDC00);
+      ++i;
+      continue;
+    }
+    const qsizetype n = text[i].isHighSurrogate() && i + 1 < text.size() ? 2 : 1;
+    out += text.mid(i, n).toStdString();
+    i += n;
+  }
+  return out;
+}
+
 void printError(const QString& message) { std::fprintf(stderr, "volpost: error: %s\n", qPrintable(message)); }
+
+std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args) {
+  const QCommandLineOption help = parser.addHelpOption();
+  if (!parser.parse(QStringList{verb} + args)) {
+    printError(QString("%1: %2 (%1 --help lists the options)").arg(verb, parser.errorText()));
+    return 2;
+  }
+  if (parser.isSet(help)) {
+    std::printf("%s", qPrintable(parser.helpText()));
+    return 0;
+  }
+  return std::nullopt;
+}
 
 }  // namespace volpost::app

@@ -6,10 +6,12 @@
 
 #include <volpost/plugin/PluginManager.hpp>
 
+#include <QCommandLineParser>
 #include <QString>
 
 #include <exception>
 #include <memory>
+#include <optional>
 
 namespace volpost::app {
 
@@ -20,6 +22,17 @@ std::unique_ptr<PluginManager> loadPluginsForCli();
 Progress terminalProgress(const std::string& label);
 
 void printError(const QString& message);
+
+/// Command-line arguments as Qt strings without losing bytes: a file name that is not valid
+/// UTF-8 keeps each stray byte as a private code (U+DC80..U+DCFF, as Python does), and
+/// pathBytes() gives the exact bytes back for opening the file.
+QString argumentText(const char* bytes);
+std::string pathBytes(const QString& text);
+
+/// Parses a verb's arguments (`verb` is "volpost render" ...). Returns the exit code to
+/// leave with at once (0 after --help, whose text names the verb; 2 after printing what
+/// is wrong with the arguments), or nullopt to go on.
+std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args);
 
 /// Runs a verb's work and returns its exit code; a cancel (Ctrl+C on the progress) is 1,
 /// an error is printed and is 1.

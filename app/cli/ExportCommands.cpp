@@ -5,12 +5,14 @@
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
+#include "host/AtomicFile.hpp"
 #include "host/IsoSurfaceExtraction.hpp"
 #include "host/PointLocator.hpp"
 #include "host/SurfaceWriter.hpp"
 #include "host/VtuWriter.hpp"
 
 #include <QCommandLineParser>
+#include <QFileInfo>
 
 #include <cmath>
 #include <cstdio>
@@ -35,8 +37,7 @@ int runConvert(const QStringList& args) {
   parser.setApplicationDescription("Writes MODEL as a VTK XML unstructured grid (every field, every step).");
   parser.addPositionalArgument("MODEL", "mesh or results file");
   parser.addPositionalArgument("OUT.vtu", "file to write");
-  parser.addHelpOption();
-  parser.process(QStringList{"volpost convert"} + args);
+  if (const auto code = parseArguments(parser, "volpost convert", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2 || !files[1].endsWith(".vtu", Qt::CaseInsensitive)) {
     printError("convert needs MODEL and OUT.vtu (volpost convert MODEL OUT.vtu)");
@@ -44,8 +45,9 @@ int runConvert(const QStringList& args) {
   }
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
-    const auto model = plugins->readers().load(files[0].toStdString(), terminalProgress("reading"));
-    writeVtu(*model, files[1].toStdString(), terminalProgress("writing"));
+    checkWritable(pathBytes(files[1]));  // before the reading, not after it
+    const auto model = plugins->readers().load(pathBytes(files[0]), terminalProgress("reading"));
+    writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"));
     std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->mesh.nodeCount(),
                 model->mesh.cellCount(), model->fields.size());
     return 0;
@@ -62,8 +64,7 @@ int runSurface(const QStringList& args) {
   const QCommandLineOption iso("iso", "Iso-value (with --field): the surface where Q = VALUE.", "VALUE");
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   parser.addOptions({field, iso, step});
-  parser.addHelpOption();
-  parser.process(QStringList{"volpost surface"} + args);
+  if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2) {
     printError("surface needs MODEL and OUT (volpost surface MODEL OUT.obj [--field Q --iso VALUE])");
@@ -82,10 +83,18 @@ int runSurface(const QStringList& args) {
   const auto stepIndex = parseStep(parser, step);
   if (!stepIndex) return 2;
   auto plugins = loadPluginsForCli();
+  const auto saidHow = [&](const SurfaceWriteResult& r) {
+    const QString ext = QFileInfo(files[1]).suffix().toLower();
+    if ((ext == "stl" || ext == "ply") && !r.binary)
+      std::fprintf(stderr, "volpost: note: %s written as text: float32 (binary %s) would move the vertices of "
+                           "this model (coordinates far from the origin)\n",
+                   qPrintable(files[1]), qPrintable(ext.toUpper()));
+  };
   return exitCodeOf([&] {
-    const auto session = ModelSession::load(plugins->readers(), files[0].toStdString(), terminalProgress("reading"));
+    checkWritable(pathBytes(files[1]));  // before the reading, not after it
+    const auto session = ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"));
     if (!parser.isSet(field)) {
-      writeSurface(session->surface().mesh, session->surface().origin, files[1].toStdString());
+      saidHow(writeSurface(session->surface().mesh, session->surface().origin, pathBytes(files[1])));
       std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());
       return 0;
     }
@@ -99,7 +108,7 @@ int runSurface(const QStringList& args) {
     if (surface.mesh.n_faces() == 0)
       std::fprintf(stderr, "volpost: warning: %s = %g is outside the values [%g, %g]: the iso-surface is empty\n",
                    qPrintable(parser.value(field)), isoValue, view.range.min, view.range.max);
-    writeSurface(surface.mesh, surface.origin, files[1].toStdString());
+    saidHow(writeSurface(surface.mesh, surface.origin, pathBytes(files[1])));
     std::printf("%s: %s = %g, %zu triangles\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
                 surface.mesh.n_faces());
     return 0;
@@ -114,8 +123,7 @@ int runProbe(const QStringList& args) {
   const QCommandLineOption at("at", "A point X,Y,Z in model units (repeatable).", "X,Y,Z");
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   parser.addOptions({field, at, step});
-  parser.addHelpOption();
-  parser.process(QStringList{"volpost probe"} + args);
+  if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(at)) {
     printError("probe needs MODEL, --field Q and --at X,Y,Z (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
     return 2;
@@ -133,7 +141,7 @@ int runProbe(const QStringList& args) {
   if (!stepIndex) return 2;
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
-    const auto session = ModelSession::load(plugins->readers(), parser.positionalArguments().first().toStdString(),
+    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
                                             terminalProgress("reading"));
     const Quantity q = session->findQuantity(parser.value(field).toStdString());
     const ScalarView view = session->evaluate(q, *stepIndex);

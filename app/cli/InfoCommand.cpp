@@ -42,13 +42,12 @@ int runInfo(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Prints the node and cell counts, bounds, fields and defects of a model.");
   parser.addPositionalArgument("MODEL", "mesh or results file");
-  parser.addHelpOption();
-  parser.process(QStringList{"volpost info"} + args);
+  if (const auto code = parseArguments(parser, "volpost info", args)) return *code;
   if (parser.positionalArguments().size() != 1) {
     printError("info needs exactly one MODEL file (volpost info MODEL)");
     return 2;
   }
-  const std::string path = parser.positionalArguments().first().toStdString();
+  const std::string path = pathBytes(parser.positionalArguments().first());
   auto plugins = loadPluginsForCli();
   try {
     const auto model = plugins->readers().load(path, terminalProgress("reading"));
@@ -79,8 +78,7 @@ int runInfo(const QStringList& args) {
 int runPlugins(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Lists the plugins found, what they provide, and why any was refused.");
-  parser.addHelpOption();
-  parser.process(QStringList{"volpost plugins"} + args);
+  if (const auto code = parseArguments(parser, "volpost plugins", args)) return *code;
   PluginManager plugins;
   const QStringList dirs = PluginManager::defaultSearchPaths();
   plugins.loadFrom(dirs);

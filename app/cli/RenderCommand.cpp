@@ -63,7 +63,7 @@ void writePicture(const QImage& image, const QString& path, const QByteArray& fo
   buffer.open(QIODevice::WriteOnly);
   if (!image.save(&buffer, format.constData()))
     throw WriteError(path.toStdString(), "could not encode the picture as " + format.toStdString());
-  writeFileAtomically(path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
+  writeFileAtomically(pathBytes(path), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 struct Options {
@@ -132,7 +132,7 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
     scene.setIntegrationMode(*mode);
   }
   if (p.isSet(o.tf)) {
-    const std::string path = p.value(o.tf).toStdString();
+    const std::string path = pathBytes(p.value(o.tf));
     try {
       scene.setTransferFunction(TransferFunction::fromJson(readTextFile(path, 16u << 20)));
     } catch (const ReadError&) {
@@ -229,19 +229,11 @@ int runRender(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
-  parser.addHelpOption();
   const Options o;
   parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState});
-  if (!parser.parse(QStringList{"volpost render"} + args)) {
-    printError(parser.errorText());
-    return 2;
-  }
-  if (parser.isSet("help")) {
-    std::printf("%s", qPrintable(parser.helpText()));
-    return 0;
-  }
+  if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1 || (positional.isEmpty() && !parser.isSet(o.state)))
@@ -254,8 +246,8 @@ int runRender(const QStringList& args) {
     const QByteArray format = imageFormatOf(out);
 
     SceneState base;
-    if (parser.isSet(o.state)) base = SceneState::load(parser.value(o.state).toStdString());
-    if (!positional.isEmpty()) base.modelPath = positional.first().toStdString();
+    if (parser.isSet(o.state)) base = SceneState::load(pathBytes(parser.value(o.state)));
+    if (!positional.isEmpty()) base.modelPath = pathBytes(positional.first());
     QString rendererName = parser.isSet(o.renderer) ? parser.value(o.renderer)
                            : base.volume.shown      ? QString::fromStdString(base.volume.renderer)
                                                     : QString("surface");
@@ -266,9 +258,9 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("--threads %1 is not a thread count (1..1024, 0: all cores)").arg(parser.value(o.threads)).toStdString());
 
     // Outputs are checked before the work: a missing folder is said at once, not after it.
-    checkWritable(out.toStdString());
-    if (parser.isSet(o.floatOut)) checkWritable(parser.value(o.floatOut).toStdString());
-    if (parser.isSet(o.saveState)) checkWritable(parser.value(o.saveState).toStdString());
+    checkWritable(pathBytes(out));
+    if (parser.isSet(o.floatOut)) checkWritable(pathBytes(parser.value(o.floatOut)));
+    if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
     auto plugins = loadPluginsForCli();
     const bool gpuVolume = rendererName != "surface" && rendererName != "reference";
     if (gpuVolume) {
@@ -295,9 +287,9 @@ int runRender(const QStringList& args) {
                                    : renderSceneImage(scene, width, height);
       writePicture(image.picture, out, format);
       if (parser.isSet(o.floatOut))
-        writeFloatImage(parser.value(o.floatOut).toStdString(), image.width, image.height, image.volumeRgba,
+        writeFloatImage(pathBytes(parser.value(o.floatOut)), image.width, image.height, image.volumeRgba,
                         glm::dvec3(scene.background()));
-      if (parser.isSet(o.saveState)) scene.state().save(parser.value(o.saveState).toStdString());
+      if (parser.isSet(o.saveState)) scene.state().save(pathBytes(parser.value(o.saveState)));
       std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));
       return 0;
     }

@@ -104,6 +104,11 @@ void Scene::setTransferFunction(std::optional<TransferFunction> tf) {
 }
 
 void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
+  for (const ClipPlane& p : planes) {
+    const double scale = std::max({std::abs(p.normal.x), std::abs(p.normal.y), std::abs(p.normal.z)});
+    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(glm::length(p.point)))
+      throw std::invalid_argument("a clip plane needs a finite point and a finite, non-zero normal");
+  }
   VolumeLayer next = state_.volume;
   next.clipPlanes = std::move(planes);
   if (next.allClipPlanes().size() > std::size_t(kMaxClipPlanes))
@@ -124,6 +129,9 @@ void Scene::setClipBox(std::optional<ClipBox> box) {
 void Scene::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
   if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
     throw std::invalid_argument("at most " + std::to_string(kMaxIsoSurfaces) + " iso-surfaces");
+  for (const optics::IsoSurface& s : surfaces)
+    if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
+      throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
   state_.volume.isoSurfaces = std::move(surfaces);
   changed_.iso = true;
 }

@@ -32,7 +32,7 @@ std::optional<ClipPlane> parseClipPlane(const QString& text) {
   const auto v = numbers(text, 6);
   if (!v) return std::nullopt;
   const ClipPlane plane{{(*v)[0], (*v)[1], (*v)[2]}, {(*v)[3], (*v)[4], (*v)[5]}};
-  if (plane.normal == glm::dvec3(0.0)) return std::nullopt;
+  if (plane.normal == glm::dvec3(0.0)) return std::nullopt;  // no side to keep (1e308 is fine: scaled first)
   return plane;
 }
 
@@ -61,7 +61,7 @@ std::optional<optics::IsoSurface> parseIsoSurface(const QString& text) {
   }
   if (parts.size() == 3) {
     iso.opacity = parts[2].toDouble(&ok);
-    if (!ok || iso.opacity < 0.0 || iso.opacity > 1.0) return std::nullopt;
+    if (!ok || !(iso.opacity >= 0.0 && iso.opacity <= 1.0)) return std::nullopt;  // NaN too
   }
   return iso;
 }
@@ -71,7 +71,7 @@ std::optional<std::vector<optics::IsoSurface>> parseIsoSurfaces(const QString& t
   for (const QString& entry : text.split(';', Qt::SkipEmptyParts)) {
     if (entry.trimmed().isEmpty()) continue;
     const auto iso = parseIsoSurface(entry);
-    if (!iso || out.size() == 8) {
+    if (!iso || out.size() == std::size_t(kMaxIsoSurfaces)) {
       if (badEntry) *badEntry = entry.trimmed();
       return std::nullopt;
     }

@@ -21,7 +21,12 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   namespace fs = std::filesystem;
   if (path_.empty()) throw WriteError("(no name)", "no output file name given");
   struct stat st {};
-  if (::stat(path_.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw WriteError(path_, "is a folder, not a file");
+  if (::lstat(path_.c_str(), &st) == 0) {
+    // Renaming over a device or a pipe would replace it (as root, /dev/full itself).
+    if (S_ISDIR(st.st_mode)) throw WriteError(path_, "is a folder, not a file");
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) throw WriteError(path_, "is a device, not a file");
+    if (S_ISFIFO(st.st_mode) || S_ISSOCK(st.st_mode)) throw WriteError(path_, "is a pipe or socket, not a file");
+  }
   const fs::path parent = fs::path(path_).parent_path();
   const fs::path folder = parent.empty() ? fs::path(".") : parent;
   if (::stat(folder.c_str(), &st) != 0) throw WriteError(path_, "the folder " + folder.string() + " does not exist");

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "host/VtuWriter.hpp"
 
+#include "host/AtomicFile.hpp"
+
 #include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
+#include <set>
 #include <sstream>
 
 namespace volpost {
@@ -28,26 +29,58 @@ std::vector<char> bytesOf(const std::vector<T>& v) {
   return out;
 }
 
+// A name as an XML attribute value that every parser accepts: markup characters escaped,
+// and what XML 1.0 cannot hold at all (control characters, bytes that are not UTF-8)
+// replaced by '?'.
 std::string escape(const std::string& s) {
   std::string out;
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const auto c = static_cast<unsigned char>(s[i]);
     if (c == '&') out += "&amp;";
     else if (c == '<') out += "&lt;";
     else if (c == '>') out += "&gt;";
     else if (c == '"') out += "&quot;";
-    else out += c;
+    else if (c < 0x20 || c == 0x7f) out += '?';
+    if (c < 0x80) {
+      if (c >= 0x20 && c != 0x7f && c != '&' && c != '<' && c != '>' && c != '"') out += char(c);
+      ++i;
+      continue;
+    }
+    // A UTF-8 sequence: its lead byte says how long; keep it only when it is whole.
+    const std::size_t length = (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
+    bool valid = length > 0 && i + length <= s.size();
+    for (std::size_t k = 1; valid && k < length; ++k) valid = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
+    if (valid) out.append(s, i, length);
+    else out += '?';
+    i += valid ? length : 1;
   }
   return out;
 }
 
+// Names are unique in a VTU's PointData or CellData: a second "T step 1" (a field of that
+// name next to field T's first step) would make readers drop or merge both.
+class UniqueNames {
+ public:
+  std::string take(const std::string& wanted) {
+    std::string name = wanted.empty() ? "unnamed" : wanted;
+    for (int k = 2; !used_.insert(name).second; ++k) name = wanted + " (" + std::to_string(k) + ")";
+    return name;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
 class Appended {
  public:
+  /// `extra`: more attributes, already escaped (" VolpostField=...").
   template <typename T>
-  std::string add(const char* type, const std::string& name, int components, const std::vector<T>& values) {
+  std::string add(const char* type, const std::string& name, int components, const std::vector<T>& values,
+                  const std::string& extra = {}) {
     std::ostringstream head;
     head << "<DataArray type=\"" << type << "\" Name=\"" << escape(name) << "\"";
     if (components > 1) head << " NumberOfComponents=\"" << components << "\"";
-    head << " format=\"appended\" offset=\"" << offset_ << "\"/>";
+    head << extra << " format=\"appended\" offset=\"" << offset_ << "\"/>";
     auto b = bytesOf(values);
     offset_ += b.size();
     data_.insert(data_.end(), b.begin(), b.end());
@@ -66,9 +99,11 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
   const Mesh& mesh = model.mesh;
   Appended appended;
   std::ostringstream xml;
-  xml << "<?xml version=\"1.0\"?>\n<!-- written by volpost from " << escape(model.sourcePath) << " -->\n"
+  // No file name in a comment: "--" in a name would end it early and break the XML.
+  xml << "<?xml version=\"1.0\"?>\n<!-- written by volpost -->\n"
       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-      << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount() << "\">\n";
+      << "<UnstructuredGrid" << (model.title.empty() ? "" : " VolpostTitle=\"" + escape(model.title) + "\"")
+      << ">\n<Piece NumberOfPoints=\"" << mesh.nodeCount() << "\" NumberOfCells=\"" << mesh.cellCount() << "\">\n";
 
   std::vector<double> points(mesh.nodeCount() * 3);
   for (std::size_t i = 0; i < mesh.nodeCount(); ++i)
@@ -89,15 +124,26 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
       << appended.add("Int64", "offsets", 1, offsets) << "\n" << appended.add("UInt8", "types", 1, types) << "\n</Cells>\n";
   progress.report(0.4);
 
+  // Steps: one array each ("T step 2"), with attributes (VolpostField, VolpostStep,
+  // VolpostTime, VolpostStepLabel) that volpost reads back as the steps of one field; other
+  // tools see one array per step and ignore the attributes.
   for (const FieldLocation location : {FieldLocation::Node, FieldLocation::Cell}) {
     xml << (location == FieldLocation::Node ? "<PointData>\n" : "<CellData>\n");
+    UniqueNames names;
     const auto& ids = location == FieldLocation::Node ? mesh.nodeIds : mesh.cellIds;
-    if (!ids.empty()) xml << appended.add("Int64", location == FieldLocation::Node ? "node_id" : "element_id", 1, ids) << "\n";
+    const char* idName = location == FieldLocation::Node ? "node_id" : "element_id";
+    if (!ids.empty()) xml << appended.add("Int64", names.take(idName), 1, ids) << "\n";
     for (const auto& f : model.fields) {
       if (f->location() != location) continue;
       for (std::size_t s = 0; s < f->stepCount(); ++s) {
-        const std::string name = f->stepCount() == 1 ? f->name() : f->name() + " step " + std::to_string(s + 1);
-        xml << appended.add("Float64", name, f->components(), f->values(s)) << "\n";
+        const Step& step = f->steps()[s];
+        const std::string name = names.take(f->stepCount() == 1 ? f->name() : f->name() + " step " + std::to_string(s + 1));
+        std::ostringstream extra;
+        extra.precision(17);
+        extra << " VolpostField=\"" << escape(f->name()) << "\" VolpostStep=\"" << s + 1 << "\" VolpostTime=\""
+              << step.time << "\"";
+        if (!step.label.empty()) extra << " VolpostStepLabel=\"" << escape(step.label) << "\"";
+        xml << appended.add("Float64", name, f->components(), f->values(s), extra.str()) << "\n";
       }
     }
     xml << (location == FieldLocation::Node ? "</PointData>\n" : "</CellData>\n");
@@ -105,26 +151,11 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
   progress.report(0.8);
   xml << "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
 
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw WriteError(path, std::string("cannot write: ") + std::strerror(errno));
-    const std::string head = xml.str();
-    out.write(head.data(), std::streamsize(head.size()));
-    out.write(appended.data().data(), std::streamsize(appended.data().size()));
-    out << "\n</AppendedData>\n</VTKFile>\n";
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(temporary);
-      throw WriteError(path, "write failed (disk full?)");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary);
-    throw WriteError(path, "cannot replace the file: " + ec.message());
-  }
+  AtomicFile file(path);  // a failed write leaves the previous file as it was
+  file.write(xml.str());
+  file.write(std::string_view(appended.data().data(), appended.data().size()));
+  file.write("\n</AppendedData>\n</VTKFile>\n");
+  file.commit();
   progress.report(1.0);
 }
 

@@ -26,4 +26,20 @@ inline RunResult runVolpost(const std::string& args) {
   return r;
 }
 
+/// runVolpost under a limit on memory (ulimit -v, kilobytes) and time (seconds): what a
+/// hostile file must not exceed. A time-out shows as exit code 124.
+inline RunResult runVolpostLimited(const std::string& args, long memoryKB, int seconds,
+                                   const std::string& environment = {}) {
+  const std::string command = "bash -c 'ulimit -v " + std::to_string(memoryKB) + "; exec " + environment + " timeout " +
+                              std::to_string(seconds) + " " + std::string(VOLPOST_EXECUTABLE) + " " + args + " 2>&1'";
+  RunResult r;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), int(buffer.size()), pipe)) r.output += buffer.data();
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
 }  // namespace volpost::test

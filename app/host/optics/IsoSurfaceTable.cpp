@@ -14,7 +14,7 @@ IsoSurfaceTable::IsoSurfaceTable(const std::vector<IsoSurface>& surfaces, double
   for (const auto& s : sorted) isoValues.push_back(s.value);
   for (int b = 0; b < n; ++b)
     for (int f = 0; f < n; ++f) {
-      const auto c = crossed(isoValues, texelValue(lo, hi, n, f), texelValue(lo, hi, n, b));
+      const auto c = crossed(isoValues, texelValue(lo, hi, n, f), texelValue(lo, hi, n, b), 1);
       float* out = &values[(std::size_t(b) * std::size_t(n) + std::size_t(f)) * 4];
       if (c.empty()) {
         std::fill(out, out + 4, 0.0f);

@@ -12,6 +12,8 @@
 #include <mutex>
 #include <thread>
 
+#include <volpost/core/WorkerThreads.hpp>
+
 namespace volpost::optics {
 namespace {
 
@@ -123,9 +125,8 @@ ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& 
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
   std::atomic<int> nextRow{0}, rowsDone{0};
   std::atomic<bool> stop{false};
-  std::exception_ptr failure;
-  std::mutex failureMutex;
-  const auto work = [&](bool reports) {
+  const auto work = [&](unsigned worker) {
+    const bool reports = worker == 0;  // progress callbacks come from the calling thread
     try {
       for (int y; !stop && (y = nextRow++) < height;) {
         for (int x = 0; x < width; ++x) {
@@ -144,16 +145,11 @@ ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& 
         if (reports) progress.report(double(done) / height);
       }
     } catch (...) {
-      std::lock_guard lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      stop = true;
+      stop = true;  // the others stop at their next row
+      throw;
     }
   };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work, false);
-  work(true);
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  runOnThreads(unsigned(threads), work);
   return image;
 }
 

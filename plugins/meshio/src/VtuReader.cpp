@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <set>
 
 namespace volpost::meshio {
 namespace {
@@ -44,6 +45,7 @@ class VtuReading {
     if (!grid) throw ReadError(path_, "this VTK XML file holds a " + std::string(root.attribute("type").as_string("?")) +
                                           "; volpost reads UnstructuredGrid (.vtu)");
     auto model = std::make_unique<Model>();
+    model->title = grid.attribute("VolpostTitle").as_string("");
     std::size_t pieces = 0;
     for (pugi::xml_node piece : grid.children("Piece")) {
       readPiece(piece, *model);
@@ -252,6 +254,10 @@ class VtuReading {
     std::vector<PieceArray> parts;
     std::size_t firstPiece;
     bool dropped = false;
+    // A step of a field volpost wrote (VolpostField / VolpostStep / VolpostTime / VolpostStepLabel).
+    std::string stepOf;
+    long long stepNumber = 0;
+    Step step;
   };
 
   void collectArrays(const pugi::xml_node& data, FieldLocation location, std::size_t count,
@@ -262,8 +268,14 @@ class VtuReading {
       if (s.name.empty()) failAt(array, "DataArray without a Name");
       const std::size_t values = guarded(array, [&] { return vtuValueCount(s, enc_); });
       const std::string key = std::string(location == FieldLocation::Node ? "n:" : "c:") + s.name;
-      auto [it, inserted] = fields_.try_emplace(key, FieldParts{location, s.components, {}, pieceCount_});
+      auto [it, inserted] = fields_.try_emplace(key, FieldParts{location, s.components, {}, pieceCount_, false, {}, 0, {}});
       FieldParts& f = it->second;
+      if (inserted && array.attribute("VolpostField")) {
+        f.stepOf = array.attribute("VolpostField").as_string();
+        f.stepNumber = array.attribute("VolpostStep").as_llong(0);
+        f.step.time = array.attribute("VolpostTime").as_double(0.0);
+        f.step.label = array.attribute("VolpostStepLabel").as_string("");
+      }
       if (f.dropped) continue;
       if (values != count * std::size_t(s.components) || f.components != s.components ||
           f.firstPiece + f.parts.size() != pieceCount_) {
@@ -283,31 +295,68 @@ class VtuReading {
     }
   }
 
+  // The values of one array over all pieces, read on first use.
+  StepLoader arrayLoader(FieldParts& f) {
+    auto parts = std::make_shared<std::vector<PieceArray>>(std::move(f.parts));
+    const VtuEncoding enc = enc_;
+    const int comps = f.components;
+    return [parts, enc, comps, path = path_](std::size_t) {
+      std::vector<double> all;
+      for (const PieceArray& p : *parts) {
+        std::vector<double> v;
+        try {
+          v = vtuDoubles(p.source, enc);
+        } catch (const VtuArrayError& e) {
+          throw ReadError(path, e.message);
+        }
+        if (p.mapping) v = selectModelCells(v, comps, *p.mapping);
+        all.insert(all.end(), v.begin(), v.end());
+      }
+      return all;
+    };
+  }
+
   void finishFields(Model& model) {
+    // Arrays volpost wrote as the steps of one field become that field again, its steps in
+    // order, with their times and labels (what a plain VTU cannot say).
+    struct Stepped {
+      FieldLocation location;
+      int components;
+      std::vector<std::pair<long long, std::string>> keys;  // step number, array key
+    };
+    std::map<std::string, Stepped> stepped;
+    std::vector<std::string> steppedOrder;
+    for (const std::string& key : order_) {
+      FieldParts& f = fields_[key];
+      if (f.dropped || f.parts.size() != pieceCount_ || f.stepOf.empty()) continue;
+      const std::string group = key.substr(0, 2) + f.stepOf;
+      auto [it, inserted] = stepped.try_emplace(group, Stepped{f.location, f.components, {}});
+      if (inserted) steppedOrder.push_back(group);
+      if (it->second.components == f.components) it->second.keys.push_back({f.stepNumber, key});
+      else f.stepOf.clear();  // not a step of that field after all: an array of its own
+    }
+    std::set<std::string> emitted;
     for (const std::string& key : order_) {
       FieldParts& f = fields_[key];
       if (f.dropped || f.parts.size() != pieceCount_) continue;
-      const std::string name = key.substr(2);
       const std::size_t entities = f.location == FieldLocation::Node ? model.mesh.nodeCount() : model.mesh.cellCount();
-      auto parts = std::make_shared<std::vector<PieceArray>>(std::move(f.parts));
-      const VtuEncoding enc = enc_;
-      const int comps = f.components;
-      StepLoader loader = [parts, enc, comps, path = path_](std::size_t) {
-        std::vector<double> all;
-        for (const PieceArray& p : *parts) {
-          std::vector<double> v;
-          try {
-            v = vtuDoubles(p.source, enc);
-          } catch (const VtuArrayError& e) {
-            throw ReadError(path, e.message);
-          }
-          if (p.mapping) v = selectModelCells(v, comps, *p.mapping);
-          all.insert(all.end(), v.begin(), v.end());
+      if (!f.stepOf.empty()) {
+        const std::string group = key.substr(0, 2) + f.stepOf;
+        if (!emitted.insert(group).second) continue;
+        Stepped& g = stepped[group];
+        std::sort(g.keys.begin(), g.keys.end());
+        std::vector<Step> steps;
+        auto loaders = std::make_shared<std::vector<StepLoader>>();
+        for (const auto& [number, k] : g.keys) {
+          steps.push_back(fields_[k].step);
+          loaders->push_back(arrayLoader(fields_[k]));
         }
-        return all;
-      };
-      auto field = std::make_shared<Field>(name, f.location, f.components, entities,
-                                           std::vector<Step>{{"", 0.0}}, std::move(loader));
+        model.fields.push_back(std::make_shared<Field>(f.stepOf, g.location, g.components, entities, std::move(steps),
+                                                       [loaders](std::size_t s) { return (*loaders)[s](0); }));
+        continue;
+      }
+      auto field = std::make_shared<Field>(key.substr(2), f.location, f.components, entities,
+                                           std::vector<Step>{{"", 0.0}}, arrayLoader(f));
       if (takeIds(*field, model)) continue;
       model.fields.push_back(std::move(field));
     }

@@ -2,10 +2,12 @@
 #include "TetMeshGpu.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/WorkerThreads.hpp>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <array>
 #include <cmath>
@@ -21,15 +23,14 @@ constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
 double orientation(const glm::dvec3* p) { return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])); }
 
-// Runs body(worker, begin, end) on `workers` threads over [0, n).
+// Runs body(worker, begin, end) over [0, n) in `workers` ranges, on the threads the system
+// gives (every range runs even if only the calling thread does).
 template <typename Body>
 void parallelRanges(std::size_t n, unsigned workers, Body body) {
-  std::vector<std::thread> threads;
-  for (unsigned w = 0; w < workers; ++w) {
-    const std::size_t begin = n * w / workers, end = n * (w + 1) / workers;
-    threads.emplace_back([&body, w, begin, end] { body(w, begin, end); });
-  }
-  for (auto& t : threads) t.join();
+  std::atomic<unsigned> next{0};
+  runOnThreads(workers, [&](unsigned) {
+    for (unsigned w; (w = next++) < workers;) body(w, n * w / workers, n * (w + 1) / workers);
+  });
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "VisibilityOrder.hpp"
 
+#include <volpost/core/WorkerThreads.hpp>
+
 #include "TetMeshGpu.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -152,11 +155,10 @@ void VisibilitySorter::imageSpaceRelations(const Camera& camera, int width, int 
 
   const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(workers);
-  std::vector<std::thread> threads;
-  for (unsigned w = 0; w < workers; ++w)
-    threads.emplace_back([&, w] {
+  std::atomic<int> nextRow{0};
+  runOnThreads(workers, [&](unsigned w) {
       std::vector<std::pair<double, std::uint32_t>> hits;
-      for (int y = int(w); y < height; y += int(workers))
+      for (int y; (y = nextRow++) < height;)
         for (int x = 0; x < width; ++x) {
           const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / height * 2.0;
           glm::dvec4 a = inverse * glm::dvec4(nx, ny, -1.0, 1.0), b = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
@@ -181,7 +183,6 @@ void VisibilitySorter::imageSpaceRelations(const Camera& camera, int width, int 
           }
         }
     });
-  for (auto& t : threads) t.join();
   for (const auto& f : found) {
     edges.insert(edges.end(), f.begin(), f.end());
     result.imageRelations += f.size();

@@ -56,6 +56,9 @@ double extinctionToOpacity(double extinction, double referenceLength) {
 }
 
 TransferFunction::TransferFunction(std::vector<ControlPoint> points) : points_(std::move(points)) {
+  if (points_.size() > kMaxPoints)
+    throw std::invalid_argument(std::to_string(points_.size()) + " control points: a transfer function has at most " +
+                                std::to_string(kMaxPoints));
   std::stable_sort(points_.begin(), points_.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
   for (std::size_t i = 0; i < points_.size(); ++i) validate(points_[i], i);
 }
@@ -68,11 +71,14 @@ double TransferFunction::extinction(double s) const {
   return interpolate(points_, s, [](const ControlPoint& p) { return p.extinction; });
 }
 
+// Binary search to the first point beyond the lower end: the cost follows the points
+// crossed, not the function's size (functions of thousands of points stay fast).
 std::vector<double> TransferFunction::crossings(double a, double b) const {
   std::vector<double> out;
   const double lo = std::min(a, b), hi = std::max(a, b);
-  for (const ControlPoint& p : points_)
-    if (p.value > lo && p.value < hi && (out.empty() || out.back() != p.value)) out.push_back(p.value);
+  auto it = std::upper_bound(points_.begin(), points_.end(), lo, [](double v, const ControlPoint& p) { return v < p.value; });
+  for (; it != points_.end() && it->value < hi; ++it)
+    if (out.empty() || out.back() != it->value) out.push_back(it->value);
   if (a > b) std::reverse(out.begin(), out.end());
   return out;
 }
@@ -96,11 +102,22 @@ TransferFunction TransferFunction::fromJson(const std::string& text) {
   } catch (const Json::parse_error& e) {
     throw std::runtime_error(std::string("transfer function JSON: ") + e.what());
   }
-  if (!j.is_object() || j.value("format", "") != "volpost-tf")
-    throw std::runtime_error("transfer function JSON: not a volpost transfer function (\"format\": \"volpost-tf\" missing)");
-  if (j.value("version", 0) != 1)
-    throw std::runtime_error("transfer function JSON: version " + j.value("version", Json(0)).dump() + " is not supported (1 is)");
+  const auto isString = [&](const char* key, const char* wanted) {
+    return j.contains(key) && j[key].is_string() && j[key].get<std::string>() == wanted;
+  };
+  if (!j.is_object() || !isString("format", "volpost-tf"))
+    throw std::runtime_error("transfer function JSON: not a volpost transfer function (\"format\" must be the string "
+                             "\"volpost-tf\")");
+  if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<long long>() != 1)
+    throw std::runtime_error("transfer function JSON: \"version\" " + (j.contains("version") ? j["version"].dump() : std::string("(missing)")) +
+                             " is not supported (1 is)");
   if (!j.contains("points") || !j["points"].is_array()) throw std::runtime_error("transfer function JSON: no \"points\" array");
+  if (j["points"].empty())
+    throw std::runtime_error("transfer function JSON: \"points\" is empty: a transfer function needs at least one "
+                             "control point (a volume with none would be invisible)");
+  if (j["points"].size() > kMaxPoints)
+    throw std::runtime_error("transfer function JSON: " + std::to_string(j["points"].size()) +
+                             " points; at most " + std::to_string(kMaxPoints));
   std::vector<ControlPoint> pts;
   for (std::size_t i = 0; i < j["points"].size(); ++i) {
     const Json& p = j["points"][i];

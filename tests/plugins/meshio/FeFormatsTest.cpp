@@ -358,16 +358,23 @@ TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
   EXPECT_EQ(back->mesh.nodeIds, model->mesh.nodeIds);
   EXPECT_EQ(back->mesh.cellIds, model->mesh.cellIds);
   EXPECT_EQ(cellsById(*back), cellsById(*model));
-  for (const auto& f : model->fields)
+  // Each field comes back as itself, with every step, its time and its label.
+  EXPECT_EQ(back->title, model->title);
+  for (const auto& f : model->fields) {
+    const Field* g = back->findField(f->name());
+    ASSERT_TRUE(g) << f->name();
+    EXPECT_EQ(g->location(), f->location());
+    EXPECT_EQ(g->components(), f->components());
+    ASSERT_EQ(g->stepCount(), f->stepCount()) << f->name();
     for (std::size_t s = 0; s < f->stepCount(); ++s) {
-      const Field* g = back->findField(f->name() + " step " + std::to_string(s + 1));
-      ASSERT_TRUE(g) << f->name();
-      EXPECT_EQ(g->location(), f->location());
+      EXPECT_EQ(g->steps()[s].label, f->steps()[s].label);
+      EXPECT_EQ(g->steps()[s].time, f->steps()[s].time);
       const auto& a = f->values(s);
-      const auto& b = g->values(0);
+      const auto& b = g->values(s);
       ASSERT_EQ(a.size(), b.size());
       for (std::size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])));
     }
+  }
   EXPECT_THROW(writeVtu(*model, "/no/such/folder/x.vtu"), WriteError);
 }
 
@@ -459,4 +466,51 @@ TEST(SolverChecks, PostFlowFieldIsTheAnalyticOneAtProbedPoints) {
     ASSERT_TRUE(at);
     EXPECT_NEAR(PointLocator::interpolateNodal(*at, pressure), exact, 0.02) << "r = " << r;
   }
+}
+
+// convert -> read: every real model of ../shared/data in every format comes back the same
+// (nodes, cells by type, ids, every field with every step, its label, time and values).
+TEST(VtuWriter, EveryRealModelRoundTrips) {
+  const std::string root = volpost::test::sharedFile("bar");
+  if (root.empty()) GTEST_SKIP() << "not run: ../shared/data is absent";
+  const auto shared = std::filesystem::path(root).parent_path();
+  std::size_t checked = 0;
+  for (const char* folder : {"bar", "bracket", "post", "wheel"})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(shared / folder)) {
+      const std::string ext = entry.path().extension().string();
+      if (!entry.is_regular_file() || (ext != ".vtu" && ext != ".vtk" && ext != ".msh" && ext != ".inp" && ext != ".frd" &&
+                                       ext != ".exo" && ext != ".nf"))
+        continue;
+      if (entry.file_size() > (8u << 20)) continue;  // the fine post: the same readers, more time
+      SCOPED_TRACE(entry.path().string());
+      const auto model = meshioReaders().load(entry.path().string());
+      const std::string out = ::testing::TempDir() + "/every_real_model.vtu";
+      writeVtu(*model, out);
+      const auto back = meshioReaders().load(out);
+      EXPECT_EQ(back->mesh.nodes, model->mesh.nodes);
+      EXPECT_EQ(back->mesh.countsByType(), model->mesh.countsByType());
+      EXPECT_EQ(back->mesh.nodeIds, model->mesh.nodeIds);
+      EXPECT_EQ(back->mesh.cellIds, model->mesh.cellIds);
+      EXPECT_EQ(back->title, model->title);
+      ASSERT_EQ(back->fields.size(), model->fields.size());
+      for (const auto& f : model->fields) {
+        const Field* g = back->findField(f->name());
+        ASSERT_TRUE(g) << f->name();
+        EXPECT_EQ(g->components(), f->components());
+        EXPECT_EQ(g->location(), f->location());
+        ASSERT_EQ(g->stepCount(), f->stepCount()) << f->name();
+        for (std::size_t s = 0; s < f->stepCount(); ++s) {
+          EXPECT_EQ(g->steps()[s].label, f->steps()[s].label);
+          EXPECT_EQ(g->steps()[s].time, f->steps()[s].time);
+          const auto& a = f->values(s);
+          const auto& b = g->values(s);
+          ASSERT_EQ(a.size(), b.size());
+          std::size_t differ = 0;
+          for (std::size_t i = 0; i < a.size(); ++i) differ += !(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])));
+          EXPECT_EQ(differ, 0u) << f->name() << " step " << s + 1;
+        }
+      }
+      ++checked;
+    }
+  EXPECT_GT(checked, 30u);
 }

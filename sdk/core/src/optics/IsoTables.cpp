@@ -13,14 +13,18 @@ int nearestTexel(double sMin, double sMax, int n, double s) {
   return std::clamp(int(std::lround((s - sMin) / (sMax - sMin) * (n - 1))), 0, n - 1);
 }
 
-std::vector<double> crossed(const std::vector<double>& sorted, double a, double b) {
+std::vector<double> crossed(const std::vector<double>& sorted, double a, double b, std::size_t limit) {
   std::vector<double> out;
   if (a < b) {
-    for (double v : sorted)
-      if (v > a && v <= b) out.push_back(v);
+    for (auto it = std::upper_bound(sorted.begin(), sorted.end(), a); it != sorted.end() && *it <= b && out.size() < limit; ++it)
+      out.push_back(*it);
   } else if (a > b) {
-    for (auto it = sorted.rbegin(); it != sorted.rend(); ++it)
-      if (*it < a && *it >= b) out.push_back(*it);
+    auto it = std::lower_bound(sorted.begin(), sorted.end(), a);  // first >= a: the ones before are < a
+    while (it != sorted.begin() && out.size() < limit) {
+      --it;
+      if (*it < b) break;
+      out.push_back(*it);
+    }
   }
   return out;
 }
@@ -37,7 +41,7 @@ IsoDetectionTable::IsoDetectionTable(const TransferFunction& tf, double lo, doub
     if (points.empty() || points.back() != p.value) points.push_back(p.value);
   for (int b = 0; b < n; ++b)
     for (int f = 0; f < n; ++f) {
-      const auto c = crossed(points, texelValue(lo, hi, n, f), texelValue(lo, hi, n, b));
+      const auto c = crossed(points, texelValue(lo, hi, n, f), texelValue(lo, hi, n, b), 2);
       float* out = &values[(std::size_t(b) * std::size_t(n) + std::size_t(f)) * 2];
       out[0] = c.size() > 0 ? float((c[0] - lo) / (hi - lo)) : -1.0f;
       out[1] = c.size() > 1 ? float((c[1] - lo) / (hi - lo)) : -1.0f;

@@ -4,6 +4,8 @@
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
+#include <volpost/core/WorkerThreads.hpp>
+
 #include <atomic>
 #include <cmath>
 #include <stdexcept>
@@ -56,10 +58,7 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& tf, double sMin
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  runOnThreads(unsigned(threads), [&](unsigned) { work(); });
 }
 
 glm::dvec4 PreintegrationTable::lookup(double sFront, double sBack, double length) const {

@@ -32,9 +32,12 @@ double extinctionToOpacity(double extinction, double referenceLength);
 
 class TransferFunction {
  public:
+  /// More control points than anyone can edit; the bound keeps every per-point cost small.
+  static constexpr std::size_t kMaxPoints = 65536;
+
   TransferFunction() = default;
   /// Points are sorted by value. Throws std::invalid_argument on negative extinction,
-  /// non-finite numbers or colors outside 0..1.
+  /// non-finite numbers, colors outside 0..1 or more than kMaxPoints points.
   explicit TransferFunction(std::vector<ControlPoint> points);
 
   const std::vector<ControlPoint>& points() const { return points_; }

@@ -16,8 +16,9 @@ namespace volpost::optics {
 double texelValue(double sMin, double sMax, int n, int i);
 int nearestTexel(double sMin, double sMax, int n, double s);
 /// Values of `sorted` (ascending) met going from a toward b: beyond a (strictly), up to b
-/// (inclusive), in the order met.
-std::vector<double> crossed(const std::vector<double>& sorted, double a, double b);
+/// (inclusive), in the order met; at most `limit` of them (found by binary search).
+std::vector<double> crossed(const std::vector<double>& sorted, double a, double b,
+                            std::size_t limit = std::size_t(-1));
 /// Throws std::invalid_argument unless n >= 2 and sMax > sMin.
 void checkTableResolution(int n, double sMin, double sMax);
 

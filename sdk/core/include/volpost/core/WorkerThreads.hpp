@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// Running one piece of work on several threads without trusting the system to give them:
+// a thread that cannot start (a thread or memory limit, `--threads 2000` under ulimit) is
+// simply not there, and the threads that did start share everything out. No thread object
+// is ever destroyed while running (which aborts the process).
+#pragma once
+
+#include <functional>
+
+namespace volpost {
+
+/// Runs work(worker) on up to `count` threads at once, the calling thread being worker 0,
+/// and waits for all. work() must share out its items itself (an atomic counter), since
+/// fewer threads than asked may start. The first exception a worker throws is rethrown
+/// once all have finished. Returns the number of threads that ran.
+unsigned runOnThreads(unsigned count, const std::function<void(unsigned worker)>& work);
+
+}  // namespace volpost
