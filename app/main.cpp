@@ -2,6 +2,7 @@
 // volpost: the window (no verb) or a command-line verb (info, render, plugins).
 #include "cli/CliSupport.hpp"
 #include "cli/Commands.hpp"
+#include "core/PictureFile.hpp"
 #include "gui/MainWindow.hpp"
 #include "gui/Viewport.hpp"
 
@@ -83,9 +84,13 @@ int runWindow(int argc, char** argv) {
       return;
     }
     QTimer::singleShot(300, &window, [&window, shot] {
-      const bool saved = window.grab().save(shot);
-      if (!saved) std::fprintf(stderr, "volpost: error: cannot write %s\n", qPrintable(shot));
-      QApplication::exit(saved ? 0 : 1);
+      try {
+        volpost::app::savePicture(window.grab().toImage(), shot);
+        QApplication::exit(0);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "volpost: error: %s\n", e.what());
+        QApplication::exit(1);
+      }
     });
   };
   if (parser.isSet(state)) {

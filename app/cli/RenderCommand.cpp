@@ -3,6 +3,7 @@
 // The options (or a state file saved by the window) make a SceneState; the Scene draws it
 // exactly as the window does.
 #include "../core/FloatImageFile.hpp"
+#include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
 #include "../core/SceneImage.hpp"
 #include "../core/VolumeSpecs.hpp"
@@ -13,10 +14,8 @@
 #include "host/AtomicFile.hpp"
 #include "host/TextFile.hpp"
 
-#include <QBuffer>
 #include <QCommandLineParser>
 #include <QFileInfo>
-#include <QImageWriter>
 
 #include <cmath>
 #include <cstdio>
@@ -44,26 +43,6 @@ std::optional<DisplayRange> parseRange(const QString& text) {
   const DisplayRange r{text.left(colon).toDouble(&okA), text.mid(colon + 1).toDouble(&okB)};
   if (!okA || !okB || !std::isfinite(r.min) || !std::isfinite(r.max) || !(r.max > r.min)) return std::nullopt;
   return r;
-}
-
-// The image format from the output's extension; what Qt cannot write is refused.
-QByteArray imageFormatOf(const QString& path) {
-  const QByteArray suffix = QFileInfo(path).suffix().toLower().toLatin1();
-  const QByteArray format = suffix == "jpeg" ? QByteArray("jpg") : suffix;
-  if (format.isEmpty() || !QImageWriter::supportedImageFormats().contains(format))
-    throw UsageError(QString("-o %1: the picture is written as .png (or %2), by the file's extension")
-                         .arg(path, QString(QImageWriter::supportedImageFormats().join(", ")))
-                         .toStdString());
-  return format;
-}
-
-void writePicture(const QImage& image, const QString& path, const QByteArray& format) {
-  QByteArray bytes;
-  QBuffer buffer(&bytes);
-  buffer.open(QIODevice::WriteOnly);
-  if (!image.save(&buffer, format.constData()))
-    throw WriteError(path.toStdString(), "could not encode the picture as " + format.toStdString());
-  writeFileAtomically(pathBytes(path), std::string_view(bytes.constData(), std::size_t(bytes.size())));
 }
 
 struct Options {
@@ -243,7 +222,11 @@ int runRender(const QStringList& args) {
     if (!parseSize(parser.value(o.size), width, height))
       throw UsageError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(o.size)).toStdString());
     const QString out = parser.value(o.output);
-    const QByteArray format = imageFormatOf(out);
+    try {
+      pictureFormatOf(out);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(QString("-o %1").arg(e.what()).toStdString());
+    }
 
     SceneState base;
     if (parser.isSet(o.state)) base = SceneState::load(pathBytes(parser.value(o.state)));
@@ -285,7 +268,7 @@ int runRender(const QStringList& args) {
       const SceneImage image = rendererName == "reference"
                                    ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
                                    : renderSceneImage(scene, width, height);
-      writePicture(image.picture, out, format);
+      savePicture(image.picture, out);
       if (parser.isSet(o.floatOut))
         writeFloatImage(pathBytes(parser.value(o.floatOut)), image.width, image.height, image.volumeRgba,
                         glm::dvec3(scene.background()));

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "MainWindow.hpp"
 
+#include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
@@ -670,12 +671,18 @@ void MainWindow::syncControlsToScene() {
 }
 
 void MainWindow::saveImage() {
-  const QString path = QFileDialog::getSaveFileName(this, "Save image", "volpost.png", "PNG image (*.png)");
+  QSettings settings("volpost", "volpost");
+  const QString path = QFileDialog::getSaveFileName(this, "Save image", settings.value("files/lastImage", "volpost.png").toString(),
+                                                    "PNG image (*.png)");
   if (path.isEmpty()) return;
-  if (!viewport_->grabFramebuffer().save(path, "PNG"))
-    QMessageBox::critical(this, "Save image", "Cannot write " + path);
-  else
-    statusBar()->showMessage("Saved " + path);
+  settings.setValue("files/lastImage", path);
+  try {
+    savePicture(viewport_->grabFramebuffer(), path);
+  } catch (const std::exception& e) {
+    QMessageBox::critical(this, "Save image", e.what());  // the previous file, if any, is as it was
+    return;
+  }
+  statusBar()->showMessage("Saved " + path);
 }
 
 }  // namespace volpost::app

@@ -3,8 +3,11 @@
 
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
-#include <algorithm>
 #include <volpost/core/WorkerThreads.hpp>
+
+#include <glm/common.hpp>
+
+#include <algorithm>
 
 #include <atomic>
 #include <cmath>
@@ -13,13 +16,36 @@
 
 namespace volpost::optics {
 
-PreintegrationTable::PreintegrationTable(const TransferFunction& tf, double sMin, double sMax, int scalarResolution,
-                                         double maxLength, int lengthResolution, int threads)
+namespace {
+
+// The table resolves the function at its value texels only: control points finer than
+// kSamplesPerTexel per texel cannot show in it, but they cost a cut in every texel's
+// integral (a 10,000-point function took minutes). Such a function is resampled at that
+// many points per texel over its range, exactly at the texels, before the table is built.
+constexpr int kSamplesPerTexel = 8;
+
+TransferFunction forTable(const TransferFunction& tf, double sMin, double sMax, int texels) {
+  const std::size_t limit = std::size_t(kSamplesPerTexel) * std::size_t(texels);
+  if (tf.points().size() <= limit) return tf;
+  const double lo = std::min(sMin, tf.minValue()), hi = std::max(sMax, tf.maxValue());
+  std::vector<ControlPoint> points;
+  for (std::size_t i = 0; i <= limit; ++i) {
+    const double s = lo + (hi - lo) * double(i) / double(limit);
+    points.push_back({s, glm::clamp(tf.color(s), 0.0, 1.0), tf.extinction(s)});
+  }
+  return TransferFunction(std::move(points));
+}
+
+}  // namespace
+
+PreintegrationTable::PreintegrationTable(const TransferFunction& original, double sMin, double sMax,
+                                         int scalarResolution, double maxLength, int lengthResolution, int threads)
     : ns_(scalarResolution), nl_(lengthResolution), sMin_(sMin), sMax_(sMax), maxLength_(maxLength),
       values_(std::size_t(scalarResolution) * std::size_t(scalarResolution) * std::size_t(lengthResolution) * 4) {
   if (ns_ < 2 || nl_ < 2 || !(sMax > sMin) || !(maxLength > 0.0))
     throw std::invalid_argument("pre-integration table: resolutions must be >= 2 and ranges non-empty");
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  const TransferFunction tf = forTable(original, sMin, sMax, scalarResolution);
   // One (sFront, sBack) pair per task: its cut points are found once and reused for
   // every length.
   struct Piece {

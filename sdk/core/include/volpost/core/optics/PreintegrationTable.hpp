@@ -15,7 +15,9 @@ namespace volpost::optics {
 class PreintegrationTable {
  public:
   /// Scalars span [sMin, sMax] in `scalarResolution` texels, lengths [0, maxLength] in
-  /// `lengthResolution` texels (texel i at i / (N - 1) of the span).
+  /// `lengthResolution` texels (texel i at i / (N - 1) of the span). A function with more
+  /// than 8 control points per scalar texel is first resampled at 8 per texel (detail the
+  /// table cannot show), so the cost stays bounded whatever the point count.
   PreintegrationTable(const TransferFunction& tf, double sMin, double sMax, int scalarResolution, double maxLength,
                       int lengthResolution, int threads = 0);
 
