@@ -6,6 +6,7 @@
 #include "gui/MainWindow.hpp"
 #include "gui/Viewport.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/Version.hpp>
 
 #include <QAction>
@@ -19,6 +20,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -37,7 +39,10 @@ void printUsage() {
       "  volpost convert MODEL OUT.vtu     write MODEL (all fields and steps) for ParaView\n"
       "  volpost surface MODEL OUT.obj     boundary (or --field Q --iso V: iso-surface) as obj/ply/stl/off\n"
       "  volpost probe MODEL --field Q --at X,Y,Z   value of Q at a point\n"
-      "  volpost --version | --help\n",
+      "  volpost streamlines MODEL --field V --seeds SPEC -o lines.vtp   streamlines to .vtp/.csv\n"
+      "  volpost --version | --help\n\n"
+      "Any verb or the window also takes --memory-budget SIZE (512M, 8G, ...): files that would need\n"
+      "more are refused with a message (default: 3/4 of the memory, or $VOLPOST_MEMORY_BUDGET).\n",
       VOLPOST_VERSION);
 }
 
@@ -118,9 +123,34 @@ int runWindow(int argc, char** argv) {
 
 }  // namespace
 
+// "--memory-budget SIZE" (or =SIZE) anywhere on the command line sets the memory budget
+// for every verb and the window, and is taken out of the arguments. Returns false (after
+// saying why) when SIZE is not a size.
+bool takeMemoryBudget(int& argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string value;
+    int used = 0;
+    if (arg == "--memory-budget" && i + 1 < argc) value = argv[i + 1], used = 2;
+    else if (arg.rfind("--memory-budget=", 0) == 0) value = arg.substr(16), used = 1;
+    else continue;
+    const std::size_t bytes = volpost::parseByteSize(value);
+    if (!bytes) {
+      std::fprintf(stderr, "volpost: error: --memory-budget %s is not a size (512M, 8G, 1.5T)\n", value.c_str());
+      return false;
+    }
+    volpost::setMemoryBudget(bytes);
+    for (int k = i; k + used < argc; ++k) argv[k] = argv[k + used];
+    argc -= used;
+    --i;
+  }
+  return true;
+}
+
 int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) must end a write with an error we report, not kill us.
   std::signal(SIGXFSZ, SIG_IGN);
+  if (!takeMemoryBudget(argc, argv)) return 2;
   const char* verb = argc >= 2 ? argv[1] : "";
   if (!std::strcmp(verb, "--help") || !std::strcmp(verb, "-h") || !std::strcmp(verb, "help")) {
     printUsage();
@@ -131,13 +161,14 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (!std::strcmp(verb, "info") || !std::strcmp(verb, "plugins") || !std::strcmp(verb, "convert") ||
-      !std::strcmp(verb, "surface") || !std::strcmp(verb, "probe")) {
+      !std::strcmp(verb, "surface") || !std::strcmp(verb, "probe") || !std::strcmp(verb, "streamlines")) {
     QCoreApplication app(argc, argv);
     const QStringList args = argsAfter(argc, argv, 2);
     if (!std::strcmp(verb, "info")) return volpost::app::runInfo(args);
     if (!std::strcmp(verb, "convert")) return volpost::app::runConvert(args);
     if (!std::strcmp(verb, "surface")) return volpost::app::runSurface(args);
     if (!std::strcmp(verb, "probe")) return volpost::app::runProbe(args);
+    if (!std::strcmp(verb, "streamlines")) return volpost::app::runStreamlines(args);
     return volpost::app::runPlugins(args);
   }
   if (!std::strcmp(verb, "render")) {

@@ -18,6 +18,7 @@ cmake --build build-asan
 # Leaks are not errors here (Qt and Mesa keep singletons to exit); everything else is.
 export ASAN_OPTIONS=detect_leaks=0:abort_on_error=0:exitcode=86
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=87
+export VOLPOST_TESTS_UNDER_ASAN=1  # ASan's shadow memory cannot live under ulimit -v
 ctest --test-dir build-asan -L "unit|cli|plugin" -j2 --output-on-failure
 
 volpost=build-asan/bin/volpost

@@ -14,6 +14,7 @@ uniform bool lighting;
 uniform bool orthographic;
 uniform vec3 noValueColor;
 uniform vec3 plainColor;
+uniform float opacity;
 
 out vec4 fragColor;
 
@@ -27,5 +28,5 @@ void main() {
     float diffuse = abs(dot(normalize(vViewNormal), toEye));
     base *= 0.35 + 0.65 * diffuse;
   }
-  fragColor = vec4(base, 1.0);
+  fragColor = vec4(base, opacity);
 }

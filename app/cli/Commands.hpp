@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The command-line verbs: info, render, plugins, convert, surface, probe.
+// The command-line verbs: info, render, plugins, convert, surface, probe, streamlines.
 #pragma once
 
 #include <QStringList>
@@ -14,5 +14,6 @@ int runPlugins(const QStringList& args);
 int runConvert(const QStringList& args);
 int runSurface(const QStringList& args);
 int runProbe(const QStringList& args);
+int runStreamlines(const QStringList& args);
 
 }  // namespace volpost::app

@@ -9,6 +9,7 @@
 #include "../core/VolumeSpecs.hpp"
 #include "../core/CameraSpec.hpp"
 #include "CliSupport.hpp"
+#include "StreamlineOptions.hpp"
 #include "Commands.hpp"
 
 #include "host/AtomicFile.hpp"
@@ -86,6 +87,16 @@ struct Options {
                                     "options change it. MODEL may then be left out.", "FILE"};
   QCommandLineOption saveState{"save-state", "Write the state of this picture, for the window (File > Open "
                                              "State) or a later render.", "FILE"};
+  QCommandLineOption streamlines{"streamlines", "Draw streamlines of this vector field (with --seeds; see "
+                                                "volpost streamlines --help for the integrator options).", "FIELD"};
+  QCommandLineOption lineWidth{"line-width", "Streamline width in pixels (default 2).", "PX"};
+  QCommandLineOption tubes{"tubes", "Streamlines as shaded tubes instead of lit lines."};
+  QCommandLineOption tubeRadius{"tube-radius", "Tube radius, model units (default 0.3% of the model).", "R"};
+  QCommandLineOption radiusByValue{"radius-by-value", "Tube radius grows with the value the lines are colored by."};
+  QCommandLineOption arrows{"arrows", "Arrow glyphs along the streamlines, pointing downstream."};
+  QCommandLineOption noSurface{"no-surface", "Hide the model's surface (streamlines, iso-surfaces show alone)."};
+  QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
+  StreamlineOptions lineOptions;
 };
 
 // The state the options describe: a state file's, or the defaults, changed by every option
@@ -200,6 +211,41 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     applyCameraSpec(scene.camera(), p.value(o.camera).toStdString());  // invalid_argument: a usage error
   }
   applyVolumeOptions(p, o, scene);
+  if (p.isSet(o.noSurface)) scene.setSurfaceShown(false);
+  if (p.isSet(o.surfaceOpacity)) {
+    bool ok = false;
+    const double a = p.value(o.surfaceOpacity).toDouble(&ok);
+    if (!ok) throw UsageError(QString("--surface-opacity %1 is not a number").arg(p.value(o.surfaceOpacity)).toStdString());
+    scene.setSurfaceOpacity(a);
+  }
+  StreamlineLayer lines = scene.streamlines();
+  if (p.isSet(o.streamlines)) {
+    lines.shown = true;
+    lines.field = p.value(o.streamlines).toStdString();
+  }
+  o.lineOptions.apply(p, lines);
+  if (p.isSet(o.lineWidth)) {
+    bool ok = false;
+    const double w = p.value(o.lineWidth).toDouble(&ok);
+    if (!ok || !(w >= 1.0 && w <= 64.0))
+      throw UsageError(QString("--line-width %1 is not a width from 1 to 64 pixels").arg(p.value(o.lineWidth)).toStdString());
+    lines.style.width = float(w);
+  }
+  if (p.isSet(o.tubes)) lines.style.tubes = true;
+  if (p.isSet(o.tubeRadius)) {
+    bool ok = false;
+    lines.style.tubeRadius = p.value(o.tubeRadius).toDouble(&ok);
+    if (!ok || !(lines.style.tubeRadius > 0.0) || !std::isfinite(lines.style.tubeRadius))
+      throw UsageError(QString("--tube-radius %1 is not a positive length").arg(p.value(o.tubeRadius)).toStdString());
+  }
+  if (p.isSet(o.radiusByValue)) lines.style.radiusByValue = true;
+  if (p.isSet(o.arrows)) lines.style.arrows = true;
+  const bool styled = p.isSet(o.lineWidth) || p.isSet(o.tubes) || p.isSet(o.tubeRadius) || p.isSet(o.radiusByValue) ||
+                      p.isSet(o.arrows) || p.isSet(o.lineOptions.seeds) || p.isSet(o.lineOptions.integrator);
+  if (styled && !lines.shown)
+    throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
+  if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
+  scene.setStreamlines(lines);
 }
 
 }  // namespace
@@ -211,7 +257,9 @@ int runRender(const QStringList& args) {
   const Options o;
   parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
-                     o.termination, o.floatOut, o.threads, o.state, o.saveState});
+                     o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity});
+  for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
     const QStringList positional = parser.positionalArguments();

@@ -45,6 +45,12 @@ void BoundaryRenderer::renderBackground(const RenderContext& ctx) {
 
 void BoundaryRenderer::render(const RenderContext& ctx) {
   renderBackground(ctx);
+  renderOver(ctx);
+}
+
+void BoundaryRenderer::renderOver(const RenderContext& ctx) {
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   if (session_) {

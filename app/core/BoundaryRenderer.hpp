@@ -32,8 +32,12 @@ class BoundaryRenderer {
   void setShowFaces(bool show) { surface_.setShowFaces(show); }
   void setLighting(bool on) { surface_.setLighting(on); }
 
+  void setOpacity(float opacity) { surface_.setOpacity(opacity); }
+
   /// Clears ctx.framebuffer to the background and draws.
   void render(const RenderContext& ctx);
+  /// Draws over what the target holds (no clear): the see-through surface over lines.
+  void renderOver(const RenderContext& ctx);
   /// Only clears to the background (under a volume).
   void renderBackground(const RenderContext& ctx);
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ModelSession.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <stdexcept>
 
 namespace volpost::app {
@@ -62,7 +64,12 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
   ScalarView view;
   view.quantity = q;
   view.location = f.location();
-  view.values = volpost::evaluate(f, q, step);
+  try {  // fields are read on first use: a failure here still names the file
+    view.values = volpost::evaluate(f, q, step);
+  } catch (const std::bad_alloc&) {
+    throw ReadError(model_->sourcePath, "ran out of memory reading field " + f.name() + " (memory budget " +
+                                            byteSizeText(double(memoryBudget())) + ")");
+  }
   view.range = rangeOf(view.values);
   view.stepLabel = f.steps()[step].label;
   return view;

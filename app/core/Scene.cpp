@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "Scene.hpp"
 
+#include "StreamlineSeeds.hpp"
 #include "VolumeDefaults.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -34,6 +37,9 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.clipBox.reset();
   state_.volume.isoSurfaces.clear();
   state_.volume.transferFunction.reset();
+  state_.streamlines = StreamlineLayer{};
+  streamlineResult_.reset();
+  streamlinesUploaded_ = false;
   culled_.reset();
   culledFor_.clear();
   changed_ = Changes{};
@@ -68,6 +74,7 @@ void Scene::setColorMap(const std::string& name) {
   (void)ColorMap::named(name);  // throws for an unknown name
   state_.colorMap = name;
   changed_.colorMap = true;
+  streamlinesUploaded_ = false;
   if (!state_.volume.transferFunction) changed_.tables = true;  // the default takes the map's colors
 }
 
@@ -174,6 +181,8 @@ void Scene::applyState(const SceneState& s) {
   if (s.volume.shown && !view) throw std::invalid_argument("the state shows a volume but names no result");
   if (s.volume.shown && !factory_(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
+  checkStreamlines(s.streamlines);
+  if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   if (s.volume.allClipPlanes().size() > std::size_t(kMaxClipPlanes) ||
       s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
     throw std::invalid_argument("too many clip planes or iso-surfaces");
@@ -193,6 +202,7 @@ void Scene::applyState(const SceneState& s) {
   state_ = s;
   state_.modelPath = keptModel;
   state_.camera.reset();  // the live camera holds it
+  streamlinesUploaded_ = false;
   view_ = std::move(view);
   camera_ = camera;
   changed_.scalars = changed_.colorMap = changed_.edges = true;
@@ -215,7 +225,15 @@ TransferFunction Scene::transferFunction() const {
 }
 
 std::optional<LegendPicture> Scene::legend() const {
-  if (!view_ || !state_.legend) return std::nullopt;
+  if (!state_.legend) return std::nullopt;
+  // Streamlines over a hidden or see-through surface: their colors are what the eye reads.
+  if (!state_.volume.shown && streamlinesDrawn() && (!state_.surfaceShown || state_.surfaceOpacity < 1.0 || !view_)) {
+    const StreamlineResult& r = *streamlineResult_;
+    LegendContent lines{QString::fromStdString(r.valueName),
+                        QString("%1 streamlines").arg(r.lines.size()), r.min, r.max, 0};
+    return LegendPicture{ColorMap::named(state_.colorMap), lines};
+  }
+  if (!view_) return std::nullopt;
   LegendContent content{QString::fromStdString(view_->quantity.displayName()), stepAndLocation(*view_), 0.0, 1.0,
                         view_->range.nanCount};
   if (state_.volume.shown) {
@@ -233,10 +251,142 @@ std::optional<LegendPicture> Scene::legend() const {
 
 std::vector<double> Scene::tetValues() const { return session_->tetValues(*view_); }
 
+// ---- streamlines ----
+
+void Scene::setSurfaceOpacity(double opacity) {
+  if (!(opacity >= 0.0 && opacity <= 1.0)) throw std::invalid_argument("the surface opacity must lie in 0..1");
+  state_.surfaceOpacity = opacity;
+}
+
+void Scene::setStreamlines(StreamlineLayer layer) {
+  checkStreamlines(layer);
+  state_.streamlines = std::move(layer);
+  streamlinesUploaded_ = false;
+}
+
+void Scene::checkStreamlines(const StreamlineLayer& layer) const {
+  if (layer.shown) {
+    if (!session_) throw std::invalid_argument("open a model first");
+    const Field* f = session_->model().findField(layer.field);
+    if (!f) throw std::invalid_argument("no field named '" + layer.field + "' to trace streamlines in");
+    if (f->components() != 3)
+      throw std::invalid_argument("streamlines follow a vector field; " + layer.field + " has " +
+                                  std::to_string(f->components()) + " components");
+    if (f->location() == FieldLocation::Cell && !layer.averageCellVectors)
+      throw std::invalid_argument(layer.field + " is given per element: streamlines need it at the nodes (average it "
+                                                "there, an approximation, with --average-cell-vectors)");
+    if (layer.seeds.empty()) throw std::invalid_argument("streamlines need seeds (where the lines start)");
+    (void)seedPoints(layer.seeds, *session_);  // throws saying what is wrong with a spec
+    if (!layer.colorBy.empty()) (void)session_->findQuantity(layer.colorBy);
+    if (!(layer.settings.tolerance > 0.0)) throw std::invalid_argument("the streamline tolerance must be positive");
+    if (layer.style.tubes && layer.style.tubeRadius < 0.0) throw std::invalid_argument("the tube radius must be >= 0");
+  }
+}
+
+bool Scene::streamlinesNeedTracing() const {
+  const StreamlineLayer& l = state_.streamlines;
+  if (!l.shown || !session_) return false;
+  return !streamlineResult_ || streamlineResult_->session != session_.get() || streamlineResult_->step != state_.step ||
+         !streamlineResult_->layer.sameLinesAs(l);
+}
+
+bool Scene::streamlinesDrawn() const {
+  return state_.streamlines.shown && streamlineResult_ && !streamlinesNeedTracing();
+}
+
+std::shared_ptr<const StreamlineResult> Scene::traceStreamlines(const Progress& progress) const {
+  if (!session_) throw std::invalid_argument("open a model first");
+  return traceStreamlineLayer(*session_, state_.streamlines, state_.step, progress);
+}
+
+std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& l,
+                                                             std::size_t wantedStep, const Progress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  const ModelSession* session_ = &session;
+  const Model& model = session_->model();
+  const Field* f = model.findField(l.field);
+  if (!f || f->components() != 3) throw std::invalid_argument("no vector field named '" + l.field + "'");
+  const std::size_t step = std::min(wantedStep, f->stepCount() - 1);
+  std::vector<double> nodal = f->values(step);
+  if (f->location() == FieldLocation::Cell) nodal = averageCellVectorsToNodes(model.mesh, nodal);
+  const TetMesh& tets = session_->tetrahedra();
+  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh, nodal));
+  const std::vector<glm::dvec3> seeds = seedPoints(l.seeds, *session_);
+  auto result = std::make_shared<StreamlineResult>();
+  result->layer = l;
+  result->session = session_;
+  result->step = wantedStep;
+  result->seeds = seeds.size();
+  result->lines = tracer.traceAll(seeds, l.settings, &result->outside, progress);
+  // The values the lines are colored by: the speed, or a quantity interpolated at each point.
+  if (l.colorBy.empty()) {
+    result->valueName = l.field + " speed";
+    for (const Streamline& line : result->lines) {
+      std::vector<double> v;
+      for (const glm::dvec3& u : line.velocity) v.push_back(glm::length(u));
+      result->values.push_back(std::move(v));
+    }
+  } else {
+    const ScalarView view = session_->evaluate(session_->findQuantity(l.colorBy), step);
+    result->valueName = view.quantity.displayName();
+    const std::vector<double> values = session_->tetValues(view);
+    const PointLocator locator(tets);
+    for (const Streamline& line : result->lines) {
+      std::vector<double> v;
+      for (const glm::dvec3& p : line.points) {
+        const auto at = locator.locate(p, 1e-6);
+        v.push_back(!at ? std::nan("")
+                        : view.location == FieldLocation::Node ? PointLocator::interpolateNodal(*at, values)
+                                                                : values[at->tet]);
+      }
+      result->values.push_back(std::move(v));
+    }
+  }
+  result->min = std::numeric_limits<double>::infinity();
+  result->max = -std::numeric_limits<double>::infinity();
+  for (const auto& v : result->values)
+    for (double x : v)
+      if (std::isfinite(x)) result->min = std::min(result->min, x), result->max = std::max(result->max, x);
+  if (!(result->max > result->min)) {
+    if (!std::isfinite(result->min)) result->min = 0.0;
+    result->max = result->min + 1.0;
+  }
+  result->milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+void Scene::setStreamlineResult(std::shared_ptr<const StreamlineResult> result) {
+  streamlineResult_ = std::move(result);
+  streamlinesUploaded_ = false;
+}
+
+// Uploads the lines with the current style (a style change re-uploads, never re-traces).
+void Scene::applyToStreamlines() {
+  if (!state_.streamlines.shown) return;
+  if (streamlinesNeedTracing()) {
+    if (interactive_) return;  // the window traces on a worker thread and hands the result in
+    setStreamlineResult(traceStreamlines());
+  }
+  if (streamlinesUploaded_ || !streamlineResult_) return;
+  const StreamlineResult& r = *streamlineResult_;
+  std::vector<std::vector<glm::dvec3>> lines;
+  for (const Streamline& l : r.lines) lines.push_back(l.points);
+  StreamlineStyle style = state_.streamlines.style;
+  const double size = session_->model().mesh.bounds().diagonal();
+  if (style.tubeRadius <= 0.0) style.tubeRadius = 0.003 * size;
+  if (style.arrowSpacing <= 0.0) style.arrowSpacing = 0.08 * size;
+  streamlineRenderer_.setLines(lines, r.values, session_->surface().origin, style);
+  streamlineRenderer_.setColorMap(ColorMap::named(state_.colorMap));
+  streamlineRenderer_.setRange(r.min, r.max);
+  streamlinesUploaded_ = true;
+}
+
 // ---- GL ----
 
 void Scene::initialize() {
   boundary_.initialize();
+  streamlineRenderer_.initialize();
+  streamlinesUploaded_ = false;
   initialized_ = true;
   changed_ = Changes{};  // a fresh context holds nothing
 }
@@ -249,6 +399,8 @@ void Scene::release() {
   culled_.reset();
   culledFor_.clear();
   depthTarget_.reset();
+  streamlineRenderer_.release();
+  streamlinesUploaded_ = false;
   boundary_.release();
   initialized_ = false;
   changed_ = Changes{};
@@ -319,12 +471,21 @@ void Scene::render(const RenderContext& target) {
   RenderContext ctx = target;
   ctx.camera = camera_;
   applyToBoundary();
+  applyToStreamlines();
+  streamlineRenderer_.setClipPlanes(state_.volume.allClipPlanes());
   if (state_.volume.shown && view_ && session_) {
     renderVolume(ctx);
-  } else {
-    boundary_.setShowEdges(state_.edges);
+    return;
+  }
+  // Opaque lines first, then the surface: opaque it hides the lines inside, see-through
+  // it is blended over them.
+  boundary_.renderBackground(ctx);
+  if (streamlinesDrawn()) streamlineRenderer_.render(ctx);
+  if (state_.surfaceShown) {
+    boundary_.setShowEdges(state_.edges && state_.surfaceOpacity >= 1.0);  // edges would cage what shows through
     boundary_.setLighting(state_.lighting);
-    boundary_.render(ctx);
+    boundary_.setOpacity(float(state_.surfaceOpacity));
+    boundary_.renderOver(ctx);
   }
 }
 
@@ -333,15 +494,22 @@ void Scene::render(const RenderContext& target) {
 void Scene::renderVolume(const RenderContext& ctx) {
   applyToVolume();
   RenderContext volumeCtx = ctx;
-  if (state_.volume.edges) {
+  const bool lines = streamlinesDrawn();
+  if (state_.volume.edges || lines) {
+    // The opaque things (edges, streamlines) drawn into the target and, depth only, into a
+    // texture the volume renderer reads: its rays end at them.
     if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
       depthTarget_ = std::make_unique<OffscreenTarget>(ctx.width, ctx.height);
     boundary_.setShowFaces(false);
-    boundary_.setShowEdges(true);
-    RenderContext depthCtx = ctx;
-    depthCtx.framebuffer = depthTarget_->framebuffer();
-    boundary_.render(depthCtx);
-    boundary_.render(ctx);
+    boundary_.setShowEdges(state_.volume.edges);
+    boundary_.setOpacity(1.0f);
+    for (const GLuint target : {depthTarget_->framebuffer(), ctx.framebuffer}) {
+      RenderContext pass = ctx;
+      pass.framebuffer = target;
+      boundary_.renderBackground(pass);
+      if (lines) streamlineRenderer_.render(pass);
+      if (state_.volume.edges) boundary_.renderOver(pass);
+    }
     boundary_.setShowFaces(true);
     volumeCtx.depthTexture = depthTarget_->depthTexture();
   } else {

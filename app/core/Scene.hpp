@@ -15,6 +15,7 @@
 #include "SceneState.hpp"
 
 #include "host/ClipCulling.hpp"
+#include "host/render/StreamlineRenderer.hpp"
 
 #include <volpost/core/Camera.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -30,11 +31,29 @@ namespace volpost::app {
 /// A volume renderer by its plugin name, or nullptr if no plugin offers it.
 using VolumeRendererFactory = std::function<std::unique_ptr<VolumeRenderer>(const std::string& name)>;
 
+/// Streamlines traced for a StreamlineLayer, and the values they are colored by.
+struct StreamlineResult {
+  StreamlineLayer layer;                        ///< what they were traced for
+  const ModelSession* session = nullptr;        ///< on which model
+  std::size_t step = 0;                         ///< and step
+  std::vector<Streamline> lines;
+  std::vector<std::vector<double>> values;      ///< per point of each line
+  std::string valueName;                        ///< "velocity speed", or the quantity's name
+  double min = 0.0, max = 1.0;                  ///< range of the values
+  std::size_t seeds = 0, outside = 0;           ///< seeds given, and those outside the mesh
+  double milliseconds = 0.0;                    ///< tracing time
+};
+
 /// What the legend shows: the colors and the words.
 struct LegendPicture {
   ColorMap colors;
   LegendContent content;
 };
+
+/// Traces a streamline layer's lines on a model at a step (no GL; any thread). Throws
+/// std::invalid_argument for a field or seeds that do not fit; Cancelled on request.
+std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& layer,
+                                                             std::size_t step, const Progress& progress = {});
 
 class Scene {
  public:
@@ -72,6 +91,21 @@ class Scene {
   void setSamplingStep(double step);
   void setTermination(double transmittance);
   void setVolumeEdges(bool show);
+  void setSurfaceShown(bool shown) { state_.surfaceShown = shown; }
+  /// 0..1; below 1 the surface is see-through. Throws std::invalid_argument otherwise.
+  void setSurfaceOpacity(double opacity);
+  /// Checks the field, the seeds and the coloring quantity first (std::invalid_argument
+  /// saying what is wrong, nothing changed). Lines are traced on the next render, or by
+  /// the caller with traceStreamlines() (on a worker thread) and setStreamlineResult().
+  void setStreamlines(StreamlineLayer layer);
+  const StreamlineLayer& streamlines() const { return state_.streamlines; }
+  /// True when the lines shown do not belong to the current model, step or layer.
+  bool streamlinesNeedTracing() const;
+  /// Traces the current layer's lines (no GL; safe on a worker thread while the scene
+  /// is not changed). Cancelled on request.
+  std::shared_ptr<const StreamlineResult> traceStreamlines(const Progress& progress = {}) const;
+  void setStreamlineResult(std::shared_ptr<const StreamlineResult> result);
+  std::shared_ptr<const StreamlineResult> streamlineResult() const { return streamlineResult_; }
   /// Interactive use (the window): slow tables build off the GUI thread.
   void setInteractive(bool on) { interactive_ = on; }
 
@@ -112,6 +146,9 @@ class Scene {
   void applyToBoundary();
   void applyToVolume();
   void renderVolume(const RenderContext& ctx);
+  void applyToStreamlines();
+  void checkStreamlines(const StreamlineLayer& layer) const;
+  bool streamlinesDrawn() const;
   std::vector<double> tetValues() const;
 
   VolumeRendererFactory factory_;
@@ -129,6 +166,9 @@ class Scene {
   } changed_;
 
   BoundaryRenderer boundary_;
+  StreamlineRenderer streamlineRenderer_;
+  std::shared_ptr<const StreamlineResult> streamlineResult_;
+  bool streamlinesUploaded_ = false;  ///< the renderer holds streamlineResult_ with the current style
   std::unique_ptr<VolumeRenderer> volume_;
   std::string volumeName_;                      ///< the renderer volume_ is
   std::optional<CulledMesh> culled_;            ///< the tets the GPU holds, when culled

@@ -155,6 +155,79 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
   return v;
 }
 
+json jsonOf(const StreamlineLayer& l) {
+  return {{"shown", l.shown},
+          {"field", l.field},
+          {"seeds", l.seeds},
+          {"integrator", toString(l.settings.method)},
+          {"direction", toString(l.settings.direction)},
+          {"tolerance", l.settings.tolerance},
+          {"maxSteps", l.settings.maxSteps},
+          {"maxLength", l.settings.maxLength},
+          {"stagnation", l.settings.stagnation},
+          {"closedOrbits", l.settings.stopOnClosedOrbits},
+          {"colorBy", l.colorBy},
+          {"width", l.style.width},
+          {"tubes", l.style.tubes},
+          {"tubeRadius", l.style.tubeRadius},
+          {"radiusByValue", l.style.radiusByValue},
+          {"arrows", l.style.arrows},
+          {"arrowSpacing", l.style.arrowSpacing},
+          {"averageCellVectors", l.averageCellVectors}};
+}
+
+StreamlineLayer streamlinesFrom(const Reader& r, const json& in) {
+  StreamlineLayer l;
+  const auto text = [&](const char* key, std::string& out) {
+    if (const json* x = r.find(in, key)) out = r.text(*x, std::string("streamlines.") + key);
+  };
+  const auto flag = [&](const char* key, bool& out) {
+    if (const json* x = r.find(in, key)) out = r.boolean(*x, std::string("streamlines.") + key);
+  };
+  const auto number = [&](const char* key, double& out, double min) {
+    if (const json* x = r.find(in, key)) {
+      out = r.number(*x, std::string("streamlines.") + key);
+      if (!(out >= min)) r.fail(std::string("streamlines.") + key, "must be at least " + std::to_string(min));
+    }
+  };
+  flag("shown", l.shown);
+  text("field", l.field);
+  if (const json* x = r.find(in, "seeds")) {
+    for (std::size_t i = 0; i < r.array(*x, "streamlines.seeds").size(); ++i)
+      l.seeds.push_back(r.text((*x)[i], "streamlines.seeds[" + std::to_string(i) + "]"));
+  }
+  std::string method = toString(l.settings.method), direction = toString(l.settings.direction);
+  text("integrator", method);
+  text("direction", direction);
+  if (method == "rk2") l.settings.method = StreamlineMethod::RK2;
+  else if (method == "rk4") l.settings.method = StreamlineMethod::RK4;
+  else if (method == "rk45") l.settings.method = StreamlineMethod::RK45;
+  else r.fail("streamlines.integrator", "must be rk2, rk4 or rk45");
+  if (direction == "forward") l.settings.direction = StreamlineDirection::Forward;
+  else if (direction == "backward") l.settings.direction = StreamlineDirection::Backward;
+  else if (direction == "both") l.settings.direction = StreamlineDirection::Both;
+  else r.fail("streamlines.direction", "must be forward, backward or both");
+  number("tolerance", l.settings.tolerance, 1e-14);
+  double steps = double(l.settings.maxSteps);
+  number("maxSteps", steps, 1.0);
+  l.settings.maxSteps = std::size_t(std::min(steps, 1e8));
+  number("maxLength", l.settings.maxLength, 0.0);
+  number("stagnation", l.settings.stagnation, 0.0);
+  flag("closedOrbits", l.settings.stopOnClosedOrbits);
+  text("colorBy", l.colorBy);
+  double width = l.style.width;
+  number("width", width, 1.0);
+  l.style.width = float(std::min(width, 64.0));
+  flag("tubes", l.style.tubes);
+  number("tubeRadius", l.style.tubeRadius, 0.0);
+  flag("radiusByValue", l.style.radiusByValue);
+  flag("arrows", l.style.arrows);
+  number("arrowSpacing", l.style.arrowSpacing, 0.0);
+  flag("averageCellVectors", l.averageCellVectors);
+  if (l.shown && (l.field.empty() || l.seeds.empty())) r.fail("streamlines", "are shown but name no field or no seeds");
+  return l;
+}
+
 }  // namespace
 
 std::vector<ClipPlane> clipBoxPlanes(const ClipBox& b) {
@@ -191,9 +264,10 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   }
   out["colors"] = {{"map", colorMap},
                    {"range", fixedRange ? json::array({fixedRange->min, fixedRange->max}) : json("auto")}};
-  out["surface"] = {{"edges", edges}, {"lighting", lighting}};
+  out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
   out["volume"] = jsonOf(volume);
+  out["streamlines"] = jsonOf(streamlines);
   return out.dump(2) + "\n";
 }
 
@@ -266,9 +340,15 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     r.object(*surface, "surface");
     if (const json* e = r.find(*surface, "edges")) s.edges = r.boolean(*e, "surface.edges");
     if (const json* l = r.find(*surface, "lighting")) s.lighting = r.boolean(*l, "surface.lighting");
+    if (const json* v = r.find(*surface, "shown")) s.surfaceShown = r.boolean(*v, "surface.shown");
+    if (const json* o = r.find(*surface, "opacity")) {
+      s.surfaceOpacity = r.number(*o, "surface.opacity");
+      if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) r.fail("surface.opacity", "must lie in 0..1");
+    }
   }
   if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
+  if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
   return s;
 }
 

@@ -6,6 +6,9 @@
 // Serialized as versioned JSON ("volpost-state", version 1).
 #pragma once
 
+#include "host/Streamlines.hpp"
+#include "host/render/StreamlineRenderer.hpp"
+
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
@@ -56,6 +59,22 @@ struct VolumeLayer {
   std::vector<ClipPlane> allClipPlanes() const;
 };
 
+/// Streamlines of a vector field, drawn as lit lines or tubes.
+struct StreamlineLayer {
+  bool shown = false;
+  std::string field;               ///< a vector field's name ("velocity", "U")
+  std::vector<std::string> seeds;  ///< where lines start (StreamlineSeeds.hpp's forms)
+  StreamlineSettings settings;     ///< integrator, direction, tolerance, limits
+  std::string colorBy;             ///< a quantity ("T", "pressure.magnitude"); empty: the speed |v|
+  StreamlineStyle style;           ///< width, tubes, radius, arrows
+  bool averageCellVectors = false; ///< a field given per element, averaged at the nodes (an approximation)
+  /// What the lines themselves depend on (not how they are drawn): a change re-traces.
+  bool sameLinesAs(const StreamlineLayer& o) const {
+    return field == o.field && seeds == o.seeds && settings == o.settings && colorBy == o.colorBy &&
+           averageCellVectors == o.averageCellVectors;
+  }
+};
+
 struct SceneState {
   static constexpr int kVersion = 1;
 
@@ -67,8 +86,11 @@ struct SceneState {
   std::optional<DisplayRange> fixedRange;  ///< nullopt: the values' own range
   bool edges = true;          ///< element edges on the surface view
   bool lighting = true;       ///< shading; off: the color map's exact colors
+  bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)
+  double surfaceOpacity = 1.0;  ///< below 1 the surface is see-through (streamlines show)
   bool legend = true;
   VolumeLayer volume;
+  StreamlineLayer streamlines;
 
   /// The file's text. `relativeTo`: a folder; a model path inside it is written relative
   /// to it, so the state and the model can move together.

@@ -3,10 +3,13 @@
 
 #include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
+#include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
+#include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/Version.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
@@ -82,6 +85,8 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   buildToolbar();
   buildPanels();
   QSettings settings("volpost", "volpost");
+  if (const std::size_t budget = parseByteSize(settings.value("limits/memoryBudget").toString().toStdString()))
+    setMemoryBudget(budget);
   resize(1280, 800);
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
@@ -142,6 +147,29 @@ void MainWindow::buildActions() {
 
   QMenu* tools = menuBar()->addMenu("&Tools");
   tools->addAction("&Plugins...", this, [this] { PluginsDialog(plugins_, this).exec(); });
+  tools->addAction("&Memory Budget...", this, [this] {
+    bool ok = false;
+    const QString text = QInputDialog::getText(
+        this, "Memory budget",
+        QString("The most memory a model may take (512M, 8G, ...); files that would need more are refused with a "
+                "message.\nNow: %1. Empty: the default (3/4 of this machine's memory).")
+            .arg(QString::fromStdString(byteSizeText(double(memoryBudget())))),
+        QLineEdit::Normal, QSettings("volpost", "volpost").value("limits/memoryBudget").toString(), &ok);
+    if (!ok) return;
+    if (text.trimmed().isEmpty()) {
+      QSettings("volpost", "volpost").remove("limits/memoryBudget");
+      setMemoryBudget(0);  // back to the default
+      return;
+    }
+    const std::size_t bytes = parseByteSize(text.trimmed().toStdString());
+    if (!bytes) {
+      QMessageBox::warning(this, "Memory budget", QString("'%1' is not a size such as 512M or 8G").arg(text));
+      return;
+    }
+    setMemoryBudget(bytes);
+    QSettings("volpost", "volpost").setValue("limits/memoryBudget", text.trimmed());
+    statusBar()->showMessage(QString("Memory budget: %1").arg(QString::fromStdString(byteSizeText(double(bytes)))));
+  });
   QMenu* help = menuBar()->addMenu("&Help");
   help->addAction("&About volpost", this, [this] {
     QMessageBox::about(this, "About volpost",
@@ -207,6 +235,156 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   clip->addSeparator();
   clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
   view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
+  QMenu* lines = view->addMenu("&Streamlines");
+  lines->addAction("&Streamlines...", this, &MainWindow::chooseStreamlines);
+  QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
+    if (!session_) return;
+    viewport_->setRakeMode(true);
+    statusBar()->showMessage("Drag in the view to place a rake of seeds (in the plane through the view's centre)");
+  });
+  rake->setObjectName("placeRake");
+  streamlinesAction_ = lines->addAction("Show Streamlines");
+  streamlinesAction_->setObjectName("streamlinesAction");
+  streamlinesAction_->setCheckable(true);
+  connect(streamlinesAction_, &QAction::toggled, this, [this](bool on) {
+    StreamlineLayer layer = viewport_->scene().streamlines();
+    if (on && (layer.field.empty() || layer.seeds.empty())) {
+      const QSignalBlocker block(streamlinesAction_);
+      streamlinesAction_->setChecked(false);
+      chooseStreamlines();
+      return;
+    }
+    layer.shown = on;
+    if (changeScene([&](Scene& s) { s.setStreamlines(layer); }) && on) traceStreamlines();
+  });
+  connect(viewport_, &Viewport::rakePlaced, this, &MainWindow::placeRake);
+}
+
+void MainWindow::chooseStreamlines() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  StreamlineDialog dialog(*session_, scene.streamlines(), scene.state().surfaceOpacity, this);
+  bool hasVectors = false;
+  for (const auto& f : session_->model().fields) hasVectors = hasVectors || f->components() == 3;
+  if (!hasVectors) {
+    QMessageBox::information(this, "Streamlines", "This model has no vector field to follow.");
+    return;
+  }
+  for (;;) {
+    if (dialog.exec() != QDialog::Accepted) return;
+    const StreamlineLayer layer = dialog.layer();
+    if (changeScene([&](Scene& s) {
+          s.setStreamlines(layer);
+          s.setSurfaceOpacity(dialog.surfaceOpacity());
+        })) {
+      const QSignalBlocker block(streamlinesAction_);
+      streamlinesAction_->setChecked(true);
+      traceStreamlines();
+      return;
+    }
+    QMessageBox::warning(this, "Streamlines", statusBar()->currentMessage());
+  }
+}
+
+// A rake drawn with the mouse becomes the seeds (20 points along it) of the streamlines
+// of the layer's field, or of the model's first vector field.
+void MainWindow::placeRake(glm::dvec3 from, glm::dvec3 to) {
+  if (!session_) return;
+  StreamlineLayer layer = viewport_->scene().streamlines();
+  if (layer.field.empty())
+    for (const auto& f : session_->model().fields)
+      if (f->components() == 3 && f->location() == FieldLocation::Node) {
+        layer.field = f->name();
+        break;
+      }
+  if (layer.field.empty()) {
+    statusBar()->showMessage("This model has no nodal vector field to follow");
+    return;
+  }
+  layer.shown = true;
+  layer.seeds = {rakeSpec(from, to, 20)};
+  if (!changeScene([&](Scene& s) {
+        s.setStreamlines(layer);
+        if (s.state().surfaceOpacity >= 1.0) s.setSurfaceOpacity(0.2);  // lines inside must show
+      }))
+    return;
+  const QSignalBlocker block(streamlinesAction_);
+  streamlinesAction_->setChecked(true);
+  traceStreamlines();
+}
+
+void MainWindow::traceStreamlines() {
+  Scene& scene = viewport_->scene();
+  if (!scene.streamlinesNeedTracing()) {
+    viewport_->update();
+    emit streamlinesTraced(true, {});
+    return;
+  }
+  if (tracing_) return;  // the running trace's end traces again if the layer changed meanwhile
+  tracing_ = true;
+  const auto session = session_;
+  const StreamlineLayer layer = scene.streamlines();
+  const std::size_t step = scene.state().step;
+  auto progress = std::make_shared<std::atomic<int>>(0);
+  auto cancel = std::make_shared<std::atomic<bool>>(false);
+  auto* dialog = new QProgressDialog("Tracing streamlines...", "Cancel", 0, 100, this);
+  dialog->setWindowModality(Qt::WindowModal);
+  dialog->setMinimumDuration(500);
+  connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
+  auto* timer = new QTimer(dialog);
+  connect(timer, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(*progress); });
+  timer->start(50);
+  struct Traced {
+    std::shared_ptr<const StreamlineResult> result;
+    QString error;
+  };
+  auto* watcher = new QFutureWatcher<Traced>(this);
+  connect(watcher, &QFutureWatcher<Traced>::finished, this, [this, watcher, dialog, timer] {
+    const Traced t = watcher->result();
+    watcher->deleteLater();
+    timer->stop();
+    dialog->reset();
+    dialog->hide();
+    dialog->deleteLater();
+    tracing_ = false;
+    Scene& current = viewport_->scene();
+    if (!t.result) {
+      statusBar()->showMessage("Streamlines: " + t.error);
+      emit streamlinesTraced(false, t.error);
+      return;
+    }
+    current.setStreamlineResult(t.result);
+    if (current.streamlinesNeedTracing()) {  // changed while tracing: trace the latest
+      traceStreamlines();
+      return;
+    }
+    viewport_->update();
+    std::size_t points = 0;
+    for (const auto& l : t.result->lines) points += l.points.size();
+    statusBar()->showMessage(QString("%1 streamlines, %2 points, traced in %3 ms%4")
+                                 .arg(t.result->lines.size())
+                                 .arg(points)
+                                 .arg(t.result->milliseconds, 0, 'f', 0)
+                                 .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString()));
+    emit streamlinesTraced(true, {});
+  });
+  watcher->setFuture(QtConcurrent::run([session, layer, step, progress, cancel]() {
+    Traced t;
+    try {
+      t.result = traceStreamlineLayer(*session, layer, step, Progress([&](double f, const std::string&) {
+                                        *progress = int(f * 100.0);
+                                        return !*cancel;
+                                      }));
+    } catch (const Cancelled&) {
+      t.error = "cancelled";
+    } catch (const std::exception& e) {
+      t.error = QString::fromStdString(e.what());
+    }
+    return t;
+  }));
 }
 
 void MainWindow::setClipAxis(int axis) {
@@ -436,9 +614,10 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));
   viewport_->scene().setSession(session_);
   viewport_->update();
-  if (volumeAction_) {
-    const QSignalBlocker block(volumeAction_);
-    volumeAction_->setChecked(false);
+  for (QAction* action : {volumeAction_, streamlinesAction_}) {
+    if (!action) continue;
+    const QSignalBlocker block(action);
+    action->setChecked(false);
   }
   fillQuantities();
   showModelInfo();
@@ -512,6 +691,7 @@ void MainWindow::refreshScalars() {
                                  .arg(QString::fromStdString(view->quantity.displayName()))
                                  .arg(view->range.nanCount));
   }
+  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();  // another step: the lines follow
   if (!viewport_->scene().view() && volumeAction_ && volumeAction_->isChecked()) {
     const QSignalBlocker block(volumeAction_);
     volumeAction_->setChecked(false);
@@ -642,6 +822,7 @@ void MainWindow::applyState(const SceneState& state) {
   viewport_->update();
   notifyPanels();
   statusBar()->showMessage("View restored from the state file");
+  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();
   emit stateApplied(true, {});
 }
 
@@ -665,6 +846,7 @@ void MainWindow::syncControlsToScene() {
   check(legendAction_, state.legend);
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
+  check(streamlinesAction_, state.streamlines.shown);
   check(findChild<QAction*>("renderer:" + QString::fromStdString(state.volume.renderer)), true);
   check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
   if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);

@@ -62,6 +62,8 @@ class MainWindow : public QMainWindow, public PanelHost {
 
  signals:
   void loadFinished(bool ok, const QString& message);
+  /// The streamlines shown were traced (ok) or could not be (message says why).
+  void streamlinesTraced(bool ok, const QString& message);
   void stateApplied(bool ok, const QString& message);
 
  protected:
@@ -91,6 +93,15 @@ class MainWindow : public QMainWindow, public PanelHost {
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();
+  void chooseStreamlines();
+  void placeRake(glm::dvec3 from, glm::dvec3 to);
+
+ public:
+  /// Traces the scene's streamlines on a worker thread (a cancellable progress dialog) if
+  /// they need it, then shows them; emits streamlinesTraced.
+  void traceStreamlines();
+
+ private:
 
   PluginManager& plugins_;
   std::shared_ptr<ModelSession> session_;
@@ -104,6 +115,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* volumeAction_ = nullptr;
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
+  QAction* streamlinesAction_ = nullptr;
+  bool tracing_ = false;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded

@@ -2,11 +2,14 @@
 #include "Viewport.hpp"
 
 #include <QImage>
+#include <QPen>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
+
+#include <glm/gtc/matrix_inverse.hpp>
 
 #include <cmath>
 
@@ -88,13 +91,22 @@ void Viewport::paintGL() {
 // texture: no QPainter on the GL context, so the core-profile state stays ours.
 void Viewport::drawLegend(int w, int h) {
   const auto legend = scene_.legend();
-  if (!legend) return;
+  const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
+  if (!legend && !rake) return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
   image.fill(Qt::transparent);
   {
     QPainter painter(&image);
-    paintLegend(painter, rect(), legend->colors, legend->content);
+    if (legend) paintLegend(painter, rect(), legend->colors, legend->content);
+    if (rake) {  // the rake being placed: a line with its seed ends
+      painter.setRenderHint(QPainter::Antialiasing);
+      painter.setPen(QPen(QColor(230, 120, 20), 2.0));
+      painter.drawLine(*rakeStart_, *rakeEnd_);
+      painter.setBrush(QColor(230, 120, 20));
+      painter.drawEllipse(*rakeStart_, 4.0, 4.0);
+      painter.drawEllipse(*rakeEnd_, 4.0, 4.0);
+    }
   }
   overlay_.setImage(w, h, {image.constBits(), std::size_t(image.sizeInBytes())});
   glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
@@ -102,9 +114,48 @@ void Viewport::drawLegend(int w, int h) {
   overlay_.render();
 }
 
-void Viewport::mousePressEvent(QMouseEvent* event) { lastMouse_ = event->position().toPoint(); }
+void Viewport::setRakeMode(bool on) {
+  rakeMode_ = on;
+  rakeStart_.reset();
+  rakeEnd_.reset();
+  setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+  update();
+}
+
+glm::dvec3 Viewport::pointInTargetPlane(const QPointF& pixel) const {
+  const Camera& camera = scene_.camera();
+  const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
+  const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
+  const double x = 2.0 * pixel.x() / width() - 1.0, y = 1.0 - 2.0 * pixel.y() / height();
+  const glm::dvec4 n = toModel * glm::dvec4(x, y, -1.0, 1.0), f = toModel * glm::dvec4(x, y, 1.0, 1.0);
+  const glm::dvec3 a = glm::dvec3(n) / n.w, b = glm::dvec3(f) / f.w;
+  const glm::dvec3 normal = camera.viewDirection();
+  const double t = glm::dot(camera.target() - a, normal) / glm::dot(b - a, normal);
+  return a + t * (b - a);
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+  lastMouse_ = event->position().toPoint();
+  if (rakeMode_ && event->button() == Qt::LeftButton) {
+    rakeStart_ = rakeEnd_ = event->position();
+    update();
+  }
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+  if (!rakeMode_ || !rakeStart_ || event->button() != Qt::LeftButton) return;
+  const QPointF a = *rakeStart_, b = event->position();
+  setRakeMode(false);
+  if ((b - a).manhattanLength() < 4.0) return;  // a click, not a rake
+  emit rakePlaced(pointInTargetPlane(a), pointInTargetPlane(b));
+}
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
+  if (rakeMode_ && rakeStart_) {
+    rakeEnd_ = event->position();
+    update();
+    return;
+  }
   const QPoint p = event->position().toPoint();
   const QPoint d = p - lastMouse_;
   lastMouse_ = p;

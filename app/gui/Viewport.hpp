@@ -11,6 +11,8 @@
 #include <QOpenGLWidget>
 #include <QPoint>
 
+#include <optional>
+
 namespace volpost::app {
 
 class Viewport : public QOpenGLWidget {
@@ -29,6 +31,13 @@ class Viewport : public QOpenGLWidget {
   /// Moves the first free clip plane along its normal (model units); Ctrl+drag does this.
   void moveClipPlane(double distance);
 
+  /// Rake mode: a left drag draws a line in the plane through the view's target, facing the
+  /// viewer; on release rakePlaced() gives its ends (model coordinates). Off after one rake.
+  void setRakeMode(bool on);
+  bool rakeMode() const { return rakeMode_; }
+  /// The point of that plane under a pixel of the widget.
+  glm::dvec3 pointInTargetPlane(const QPointF& pixel) const;
+
   VolumeStats volumeStats() const { return scene_.volumeStats(); }
   /// Tets on the GPU (fewer than the model's when a clip box culls them).
   std::size_t uploadedTetCount() const { return volumeStats().tetrahedra; }
@@ -36,12 +45,14 @@ class Viewport : public QOpenGLWidget {
  signals:
   void glInfo(const QString& description);
   void renderFailed(const QString& message);
+  void rakePlaced(glm::dvec3 from, glm::dvec3 to);
 
  protected:
   void initializeGL() override;
   void paintGL() override;
   void mousePressEvent(QMouseEvent* event) override;
   void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
 
  private:
@@ -52,6 +63,8 @@ class Viewport : public QOpenGLWidget {
   OverlayRenderer overlay_;
   bool overlayReady_ = false;
   QPoint lastMouse_;
+  bool rakeMode_ = false;
+  std::optional<QPointF> rakeStart_, rakeEnd_;  ///< the rake being drawn, widget pixels
 };
 
 }  // namespace volpost::app

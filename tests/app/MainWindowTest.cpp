@@ -236,6 +236,44 @@ class MainWindowTest : public QObject {
     action->setChecked(false);
   }
 
+  void placingARakeTracesStreamlines() {
+    // View > Streamlines > Place a Rake, then a drag across the bar: 20 seeds along it, lines
+    // of the displacement field traced on a worker thread and drawn.
+    Viewport* view = window_->viewport();
+    window_->viewport()->setStandardView(StandardView::PlusY);
+    const auto before = summarize(view->grabFramebuffer());
+    window_->findChild<QAction*>("placeRake")->trigger();
+    QVERIFY(view->rakeMode());
+    const QPoint c = view->rect().center();
+    const QPoint a = c + QPoint(-view->width() / 3, 0), b = c + QPoint(view->width() / 3, 0);
+    QSignalSpy traced(window_.get(), &MainWindow::streamlinesTraced);
+    QTest::mousePress(view, Qt::LeftButton, {}, a);
+    for (int k = 1; k <= 4; ++k) {
+      const QPointF at(a + (b - a) * k / 4);
+      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, b);
+    QVERIFY(!view->rakeMode());
+    QVERIFY(traced.count() > 0 || traced.wait(30000));
+    QVERIFY2(traced.first().first().toBool(), qPrintable(traced.first().at(1).toString()));
+    const StreamlineLayer& layer = view->scene().streamlines();
+    QVERIFY(layer.shown);
+    QCOMPARE(layer.field, std::string("U"));
+    QCOMPARE(layer.seeds.size(), std::size_t(1));
+    QVERIFY(layer.seeds[0].rfind("line:", 0) == 0);
+    const auto result = view->scene().streamlineResult();
+    QVERIFY(result);
+    QVERIFY2(result->lines.size() >= 10, qPrintable(QString("%1 lines").arg(result->lines.size())));
+    const auto after = summarize(view->grabFramebuffer());
+    QVERIFY(after.second != before.second);
+    if (const char* shot = std::getenv("VOLPOST_STREAMLINE_SCREENSHOT")) window_->grab().save(shot);
+    window_->findChild<QAction*>("streamlinesAction")->setChecked(false);
+    QVERIFY(!view->scene().streamlines().shown);
+    view->scene().setSurfaceOpacity(1.0);
+    window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
   void aBadFileLeavesTheModelAsItWas() {
     const auto before = window_->session();
     QTimer closer;  // dismiss the error box the window shows

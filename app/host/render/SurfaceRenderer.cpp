@@ -149,6 +149,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glProgramUniform1f(p, glGetUniformLocation(p, "valueMin"), min_);
   glProgramUniform1f(p, glGetUniformLocation(p, "valueMax"), max_);
   glProgramUniform1i(p, glGetUniformLocation(p, "lighting"), lighting_ ? 1 : 0);
+  glProgramUniform1f(p, glGetUniformLocation(p, "opacity"), opacity_);
   glProgramUniform1i(p, glGetUniformLocation(p, "orthographic"), ortho ? 1 : 0);
   glProgramUniform3fv(p, glGetUniformLocation(p, "noValueColor"), 1, glm::value_ptr(noValueColor));
   glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
@@ -159,7 +160,17 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   // Push the faces back a little so element edges drawn on them are not z-fighting.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  if (showFaces_) glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  if (showFaces_ && opacity_ < 1.0f) {
+    // See-through: blended over what is drawn, hiding nothing behind it (no depth write).
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  } else if (showFaces_) {
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   if (showEdges_ && edgeVertices_ > 0) {

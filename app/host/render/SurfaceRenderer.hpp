@@ -35,6 +35,9 @@ class SurfaceRenderer : public Renderer {
   bool showEdges() const { return showEdges_; }
   /// Shading off draws exact color-map colors (used by the image tests).
   void setLighting(bool on) { lighting_ = on; }
+  /// Below 1 the faces are blended over what is already drawn (streamlines inside show
+  /// through); draw the opaque things first.
+  void setOpacity(float opacity) { opacity_ = opacity; }
 
   glm::vec3 noValueColor{0.55f, 0.55f, 0.55f};
   glm::vec3 edgeColor{0.1f, 0.1f, 0.1f};
@@ -49,6 +52,7 @@ class SurfaceRenderer : public Renderer {
   int location_ = -1;  ///< -1 none, 0 node, 1 cell
   float min_ = 0.f, max_ = 1.f;
   bool showEdges_ = true, showFaces_ = true, lighting_ = true;
+  float opacity_ = 1.0f;
 };
 
 }  // namespace volpost

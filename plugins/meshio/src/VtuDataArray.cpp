@@ -3,6 +3,8 @@
 
 #include "Base64.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <zlib.h>
 
 #include <charconv>
@@ -110,6 +112,9 @@ std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding&
   if (b.lastSize > b.blockSize || b.rawBytes > 1032 * compressedTotal + 64)
     fail(src, "compression header claims " + std::to_string(b.rawBytes) + " bytes from " + std::to_string(compressedTotal) +
                   " compressed bytes (corrupt)");
+  if (double(b.rawBytes) > double(memoryBudget()))
+    fail(src, "decompresses to " + byteSizeText(double(b.rawBytes)) + ", more than the memory budget of " +
+                  byteSizeText(double(memoryBudget())) + " (--memory-budget or VOLPOST_MEMORY_BUDGET)");
   std::vector<std::uint8_t> out(b.rawBytes);
   std::size_t in = b.headerBytes, done = 0;
   for (std::uint64_t k = 0; k < b.blocks; ++k) {

@@ -23,62 +23,6 @@ constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
 double orientation(const glm::dvec3* p) { return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])); }
 
-// Runs body(worker, begin, end) over [0, n) in `workers` ranges, on the threads the system
-// gives (every range runs even if only the calling thread does).
-template <typename Body>
-void parallelRanges(std::size_t n, unsigned workers, Body body) {
-  std::atomic<unsigned> next{0};
-  runOnThreads(workers, [&](unsigned) {
-    for (unsigned w; (w = next++) < workers;) body(w, n * w / workers, n * (w + 1) / workers);
-  });
-}
-
-}  // namespace
-
-// Face adjacency by sorting the 4 faces of every tet. In parallel: faces are bucketed by
-// their smallest vertex id (both copies of a shared face land in the same bucket), each
-// worker lists the faces of a range of tets, then each bucket is sorted and matched on
-// its own. Every tet face is written by exactly one bucket.
-std::vector<glm::ivec4> faceNeighbors(const std::vector<glm::uvec4>& tets) {
-  struct FaceKey {
-    std::array<std::uint32_t, 3> v;
-    std::uint32_t tetFace;
-    bool operator<(const FaceKey& o) const { return v < o.v; }
-  };
-  const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-  const std::size_t buckets = std::size_t(workers) * 8;
-  std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(buckets));
-  parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-      for (int f = 0; f < 4; ++f) {
-        std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
-        std::sort(v.begin(), v.end());
-        listed[w][v[0] % buckets].push_back({v, std::uint32_t(t) * 4 + std::uint32_t(f)});
-      }
-  });
-  std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
-  parallelRanges(buckets, workers, [&](unsigned, std::size_t first, std::size_t last) {
-    std::vector<FaceKey> faces;
-    for (std::size_t b = first; b < last; ++b) {
-      faces.clear();
-      for (unsigned w = 0; w < workers; ++w) faces.insert(faces.end(), listed[w][b].begin(), listed[w][b].end());
-      std::sort(faces.begin(), faces.end());
-      for (std::size_t i = 0; i < faces.size();) {
-        std::size_t j = i + 1;
-        while (j < faces.size() && faces[j].v == faces[i].v) ++j;
-        if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
-          const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
-          neighbors[a / 4][int(a % 4)] = int(b2 / 4);
-          neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
-        }
-        i = j;
-      }
-    }
-  });
-  return neighbors;
-}
-
-namespace {
 
 void findNeighbors(TetMeshGpu& g) {
   g.neighbors = faceNeighbors(g.tets);

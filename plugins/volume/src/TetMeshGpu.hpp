@@ -9,6 +9,7 @@
 
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
+#include <volpost/core/TetAdjacency.hpp>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -45,9 +46,7 @@ struct TetMeshGpu {
   std::size_t bytes() const;
 };
 
-/// The tet across the face opposite vertex k of every tet (-1: none, or a face shared by
-/// more than two tets). Built on all cores; shared by the GPU structure and the sorter.
-std::vector<glm::ivec4> faceNeighbors(const std::vector<glm::uvec4>& tets);
+using volpost::faceNeighbors;  // volpost/core/TetAdjacency.hpp: shared by the GPU structure and the sorter
 
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);

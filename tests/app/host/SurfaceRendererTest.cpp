@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -103,10 +104,14 @@ TEST_F(HeadlessRender, EveryHostShaderCompiles) {
   for (const std::string& name : gl::shaderNames()) {
     if (!name.starts_with("host/") || !name.ends_with(".vert")) continue;
     const std::string base = name.substr(0, name.rfind('.'));
-    EXPECT_NO_THROW(gl::buildProgram({name, base + ".frag"})) << name;
+    const auto names = gl::shaderNames();
+    std::vector<std::string> stages = {name};
+    if (std::find(names.begin(), names.end(), base + ".geom") != names.end()) stages.push_back(base + ".geom");
+    stages.push_back(base + ".frag");
+    EXPECT_NO_THROW(gl::buildProgram(stages)) << name;
     ++programs;
   }
-  EXPECT_GE(programs, 3);  // surface, edges, overlay
+  EXPECT_GE(programs, 5);  // surface, edges, overlay, streamline, tube
 }
 
 TEST_F(HeadlessRender, NodalFieldIsInterpolatedLinearly) {

@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: MIT
+#include "host/Streamlines.hpp"
+
+#include <volpost/core/TetAdjacency.hpp>
+#include <volpost/core/WorkerThreads.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+namespace volpost {
+namespace {
+
+constexpr double kInside = 1e-10;  // barycentric slack: on a face counts as inside
+
+std::string pointText(const glm::dvec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%g, %g, %g)", p.x, p.y, p.z);
+  return text;
+}
+
+// One Runge-Kutta attempt: the proposed end and the error estimate (model units), or
+// `outside` when a stage point left the mesh.
+struct Attempt {
+  bool outside = false;
+  glm::dvec3 end{0.0};
+  double error = 0.0;
+};
+
+}  // namespace
+
+const char* toString(StreamlineMethod method) {
+  switch (method) {
+    case StreamlineMethod::RK2: return "rk2";
+    case StreamlineMethod::RK4: return "rk4";
+    case StreamlineMethod::RK45: return "rk45";
+  }
+  return "?";
+}
+
+const char* toString(StreamlineDirection direction) {
+  switch (direction) {
+    case StreamlineDirection::Forward: return "forward";
+    case StreamlineDirection::Backward: return "backward";
+    case StreamlineDirection::Both: return "both";
+  }
+  return "?";
+}
+
+const char* describe(StreamlineStop stop) {
+  switch (stop) {
+    case StreamlineStop::None: return "not traced";
+    case StreamlineStop::LeftMesh: return "left the mesh";
+    case StreamlineStop::MaxSteps: return "reached the step limit";
+    case StreamlineStop::MaxLength: return "reached the length limit";
+    case StreamlineStop::Stagnation: return "stopped at a stagnation point";
+    case StreamlineStop::ClosedOrbit: return "closed on itself";
+    case StreamlineStop::StepTooSmall: return "needed steps too small to go on";
+  }
+  return "?";
+}
+
+StreamlineTracer::StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors)
+    : tets_(tets), vectors_(std::move(vectors)), neighbors_(faceNeighbors(tets.mesh)), locator_(tets) {
+  if (vectors_.size() != tets.mesh.nodeCount())
+    throw std::invalid_argument("streamlines: " + std::to_string(vectors_.size()) + " vectors for " +
+                                std::to_string(tets.mesh.nodeCount()) + " nodes");
+  const Bounds b = tets.mesh.bounds();
+  modelSize_ = b.valid && b.diagonal() > 0.0 ? b.diagonal() : 1.0;
+  for (const glm::dvec3& v : vectors_)
+    if (std::isfinite(glm::length(v))) maxSpeed_ = std::max(maxSpeed_, glm::length(v));
+}
+
+glm::dvec4 StreamlineTracer::barycentric(std::uint32_t tet, const glm::dvec3& p) const {
+  const auto n = tets_.mesh.cellNodes(tet);
+  const glm::dvec3& a = tets_.mesh.nodes[n[0]];
+  const glm::dvec3 ab = tets_.mesh.nodes[n[1]] - a, ac = tets_.mesh.nodes[n[2]] - a, ad = tets_.mesh.nodes[n[3]] - a;
+  const glm::dvec3 ap = p - a;
+  const double volume = glm::dot(ab, glm::cross(ac, ad));
+  if (volume == 0.0) return glm::dvec4(-1.0);  // a flat tet holds nothing
+  const double l1 = glm::dot(ap, glm::cross(ac, ad)) / volume;
+  const double l2 = glm::dot(ab, glm::cross(ap, ad)) / volume;
+  const double l3 = glm::dot(ab, glm::cross(ac, ap)) / volume;
+  return {1.0 - l1 - l2 - l3, l1, l2, l3};
+}
+
+glm::dvec3 StreamlineTracer::velocityIn(std::uint32_t tet, const glm::dvec3& p) const {
+  const glm::dvec4 w = barycentric(tet, p);
+  const auto n = tets_.mesh.cellNodes(tet);
+  glm::dvec3 v(0.0);
+  for (int k = 0; k < 4; ++k) v += std::clamp(w[k], -1e-6, 1.0 + 1e-6) * vectors_[n[std::size_t(k)]];
+  return v;
+}
+
+// |grad v| (Frobenius) in a tet: v is linear there, sum_k v_k grad(lambda_k). 1/|grad v| is
+// the field's own time scale: steps longer than it are unstable near stagnation points,
+// whatever the error estimate says (it vanishes with |v|).
+double StreamlineTracer::gradientNorm(std::uint32_t tet) const {
+  const auto n = tets_.mesh.cellNodes(tet);
+  const glm::dvec3& a = tets_.mesh.nodes[n[0]];
+  const glm::dvec3 e1 = tets_.mesh.nodes[n[1]] - a, e2 = tets_.mesh.nodes[n[2]] - a, e3 = tets_.mesh.nodes[n[3]] - a;
+  const double volume = glm::dot(e1, glm::cross(e2, e3));
+  if (volume == 0.0) return 0.0;
+  const glm::dvec3 g1 = glm::cross(e2, e3) / volume, g2 = glm::cross(e3, e1) / volume, g3 = glm::cross(e1, e2) / volume;
+  const glm::dvec3& v0 = vectors_[n[0]];
+  // grad v = (v1 - v0) g1^T + (v2 - v0) g2^T + (v3 - v0) g3^T
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double gij = (vectors_[n[1]][i] - v0[i]) * g1[j] + (vectors_[n[2]][i] - v0[i]) * g2[j] +
+                         (vectors_[n[3]][i] - v0[i]) * g3[j];
+      sum += gij * gij;
+    }
+  return std::sqrt(sum);
+}
+
+double StreamlineTracer::cellSize(std::uint32_t tet) const {
+  const auto n = tets_.mesh.cellNodes(tet);
+  double longest = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      longest = std::max(longest, glm::length(tets_.mesh.nodes[n[std::size_t(i)]] - tets_.mesh.nodes[n[std::size_t(j)]]));
+  return longest > 0.0 ? longest : modelSize_ * 1e-9;
+}
+
+// Along p(s) = a + s (b - a) each barycentric coordinate is linear in s: the tet is left
+// at the smallest s where a decreasing coordinate reaches 0, through that face.
+StreamlineTracer::Walk StreamlineTracer::walk(std::uint32_t from, const glm::dvec3& a, const glm::dvec3& b) const {
+  std::uint32_t t = from;
+  double s = 0.0;
+  for (int hop = 0; hop < 100000; ++hop) {
+    const glm::dvec4 la = barycentric(t, a), lb = barycentric(t, b);
+    double exit = std::numeric_limits<double>::infinity();
+    int face = -1;
+    for (int k = 0; k < 4; ++k) {
+      if (!(lb[k] < la[k]) || lb[k] >= -kInside) continue;
+      const double sk = la[k] / (la[k] - lb[k]);
+      if (sk < exit) {
+        exit = sk;
+        face = k;
+      }
+    }
+    if (face < 0) return {true, t, b};  // b is in t
+    exit = std::max(exit, s);  // rounding may put the crossing behind where we entered
+    const int next = neighbors_[t][face];
+    if (next < 0) return {false, t, a + std::min(exit, 1.0) * (b - a)};  // on the boundary face
+    t = std::uint32_t(next);
+    s = exit;
+  }
+  // A walk that goes round in circles (rays along faces of degenerate tets): ask the grid.
+  if (const auto at = locator_.locate(b)) return {true, std::uint32_t(at->tet), b};
+  return {false, t, a};
+}
+
+void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet, double sign,
+                                   const StreamlineSettings& settings, std::vector<glm::dvec3>& points,
+                                   std::vector<glm::dvec3>& velocity, StreamlineStop& stop, std::size_t& steps,
+                                   std::size_t& rejected, double& length, double& closure) const {
+  const double eps = std::max(settings.tolerance, 1e-14) * modelSize_;
+  const double maxLength = settings.maxLength > 0.0 ? settings.maxLength : 20.0 * modelSize_;
+  const double slow = settings.stagnation * maxSpeed_;
+  glm::dvec3 x = seed;
+  std::uint32_t t = seedTet;
+  glm::dvec3 v = sign * velocityIn(t, x);
+  const glm::dvec3 seedDirection = glm::length(v) > 0.0 ? glm::normalize(v) : glm::dvec3(0.0);
+  const double orbitRadius = std::max(100.0 * eps, 0.05 * cellSize(seedTet));
+  double h = 0.25 * cellSize(t) / std::max(glm::length(v), 1e-300);
+  std::size_t taken = 0;
+
+  // The field where a stage point lies, found by walking from x; nullopt when outside.
+  const auto field = [&](const glm::dvec3& q) -> std::optional<glm::dvec3> {
+    const Walk w = walk(t, x, q);
+    if (!w.inside) return std::nullopt;
+    return sign * velocityIn(w.tet, q);
+  };
+  // k1 = v; each method's stages and its error estimate.
+  const auto attempt = [&](double step) -> Attempt {
+    Attempt a;
+    if (settings.method == StreamlineMethod::RK2) {  // Heun with Euler as the embedded estimate
+      const auto k2 = field(x + step * v);
+      if (!k2) return {true};
+      a.end = x + 0.5 * step * (v + *k2);
+      a.error = 0.5 * step * glm::length(*k2 - v);
+      return a;
+    }
+    if (settings.method == StreamlineMethod::RK4) {  // classical, error by step doubling
+      const auto rk4 = [&](const glm::dvec3& from, const glm::dvec3& k1, double dt) -> std::optional<glm::dvec3> {
+        const auto k2 = field(from + 0.5 * dt * k1);
+        if (!k2) return std::nullopt;
+        const auto k3 = field(from + 0.5 * dt * *k2);
+        if (!k3) return std::nullopt;
+        const auto k4 = field(from + dt * *k3);
+        if (!k4) return std::nullopt;
+        return from + dt / 6.0 * (k1 + 2.0 * *k2 + 2.0 * *k3 + *k4);
+      };
+      const auto whole = rk4(x, v, step);
+      const auto half = rk4(x, v, 0.5 * step);
+      if (!whole || !half) return {true};
+      const auto kMid = field(*half);
+      if (!kMid) return {true};
+      const auto twoHalves = rk4(*half, *kMid, 0.5 * step);
+      if (!twoHalves) return {true};
+      a.error = glm::length(*twoHalves - *whole) / 15.0;
+      a.end = *twoHalves + (*twoHalves - *whole) / 15.0;  // Richardson
+      return a;
+    }
+    // Dormand-Prince 5(4).
+    static constexpr double c[7][6] = {{0, 0, 0, 0, 0, 0},
+                                       {1.0 / 5, 0, 0, 0, 0, 0},
+                                       {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
+                                       {44.0 / 45, -56.0 / 15, 32.0 / 9, 0, 0, 0},
+                                       {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
+                                       {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
+                                       {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
+    static constexpr double e[7] = {71.0 / 57600, 0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
+    glm::dvec3 k[7];
+    k[0] = v;
+    for (int i = 1; i < 7; ++i) {
+      glm::dvec3 q = x;
+      for (int j = 0; j < i; ++j) q += step * c[i][j] * k[j];
+      const auto ki = field(q);
+      if (!ki) return {true};
+      k[i] = *ki;
+    }
+    a.end = x;
+    glm::dvec3 err(0.0);
+    for (int i = 0; i < 6; ++i) a.end += step * c[6][i] * k[i];
+    for (int i = 0; i < 7; ++i) err += step * e[i] * k[i];
+    a.error = glm::length(err);
+    return a;
+  };
+  const double shrinkExponent = settings.method == StreamlineMethod::RK2 ? 0.5 : 0.2;
+  const double growExponent = settings.method == StreamlineMethod::RK2 ? 1.0 / 3.0 : 0.2;
+
+  while (true) {
+    const double speed = glm::length(v);
+    if (!(speed > slow) || !std::isfinite(speed)) {
+      stop = StreamlineStop::Stagnation;
+      return;
+    }
+    if (taken >= settings.maxSteps) {
+      stop = StreamlineStop::MaxSteps;
+      return;
+    }
+    if (length >= maxLength) {
+      stop = StreamlineStop::MaxLength;
+      return;
+    }
+    const double size = cellSize(t);
+    h = std::min(h, 2.0 * size / speed);                 // a step crosses at most a couple of cells
+    // Within each method's stability bound on the field's time scale (Heun: |h lambda| < 2,
+    // the fourth- and fifth-order methods a little more), with a margin.
+    if (const double g = gradientNorm(t); g > 0.0) h = std::min(h, (settings.method == StreamlineMethod::RK2 ? 1.0 : 2.0) / g);
+    h = std::min(h, (maxLength - length) / speed * 1.0001);
+    const Attempt a = attempt(h);
+    if (a.outside) {
+      // A stage left the mesh: shorter steps, until the step is tiny; then go straight to
+      // the boundary along the field and stop there.
+      if (h * speed > 1e-6 * size) {
+        h *= 0.5;
+        continue;
+      }
+      const Walk w = walk(t, x, x + (2.0 * size / speed) * v);
+      if (!w.inside) {
+        length += glm::length(w.end - x);
+        points.push_back(w.end);
+        velocity.push_back(velocityIn(w.tet, w.end));
+        stop = StreamlineStop::LeftMesh;
+        return;
+      }
+      h = 0.25 * size / speed;  // the straight step stays inside: go on from the field there
+      x = w.end;
+      t = w.tet;
+      v = sign * velocityIn(t, x);
+      continue;
+    }
+    if (a.error > eps) {
+      ++rejected;
+      h *= std::max(0.1, 0.9 * std::pow(eps / a.error, shrinkExponent));
+      if (h * speed < 1e-12 * modelSize_) {
+        stop = StreamlineStop::StepTooSmall;
+        return;
+      }
+      continue;
+    }
+    // Accepted: the end's tet by walking along the step; a step that leaves the mesh ends
+    // on the boundary face it crosses.
+    const Walk w = walk(t, x, a.end);
+    const double stepLength = glm::length(w.end - x);
+    length += stepLength;
+    const glm::dvec3 previous = x, previousVelocity = v;
+    x = w.end;
+    t = w.tet;
+    v = sign * velocityIn(t, x);
+    // Long steps (the higher-order methods take few) are drawn through points on the
+    // step's cubic Hermite curve, at most half a cell apart, so the line looks as smooth
+    // as it was integrated.
+    const int pieces = w.inside ? int(std::min(64.0, std::ceil(stepLength / (0.5 * size)))) : 1;
+    for (int i = 1; i < pieces; ++i) {
+      const double u = double(i) / pieces, u2 = u * u, u3 = u2 * u;
+      points.push_back((2 * u3 - 3 * u2 + 1) * previous + (u3 - 2 * u2 + u) * h * previousVelocity +
+                       (-2 * u3 + 3 * u2) * x + (u3 - u2) * h * v);
+      velocity.push_back(sign * ((1.0 - u) * previousVelocity + u * v));
+    }
+    points.push_back(x);
+    velocity.push_back(sign * v);
+    ++steps;
+    ++taken;
+    if (!w.inside) {
+      stop = StreamlineStop::LeftMesh;
+      return;
+    }
+    // Back through the plane across the seed, heading the same way and close to it: a
+    // closed orbit. The crossing is found on the step's cubic Hermite curve (its ends and
+    // their velocities), not its chord; the closure error is how far from the seed it is.
+    if (settings.stopOnClosedOrbits && length - stepLength > 8.0 * orbitRadius) {
+      const auto curve = [&](double u) {
+        const double u2 = u * u, u3 = u2 * u;
+        return (2 * u3 - 3 * u2 + 1) * previous + (u3 - 2 * u2 + u) * h * previousVelocity + (-2 * u3 + 3 * u2) * x +
+               (u3 - u2) * h * v;
+      };
+      const auto side = [&](double u) { return glm::dot(curve(u) - seed, seedDirection); };
+      if (side(0.0) < 0.0 && side(1.0) >= 0.0) {
+        double lo = 0.0, hi = 1.0;
+        for (int i = 0; i < 60; ++i) (side(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+        const glm::dvec3 crossing = curve(hi);
+        const double gap = glm::length(crossing - seed);
+        if (gap < orbitRadius) {
+          closure = gap;
+          length += glm::length(crossing - previous) - stepLength;
+          points.back() = crossing;
+          stop = StreamlineStop::ClosedOrbit;
+          return;
+        }
+      }
+    }
+    h *= std::min(5.0, 0.9 * std::pow(eps / std::max(a.error, 1e-300), growExponent));
+  }
+}
+
+Streamline StreamlineTracer::trace(const glm::dvec3& seed, const StreamlineSettings& settings) const {
+  const auto at = locator_.locate(seed, 1e-6);
+  if (!at) throw std::invalid_argument("the seed " + pointText(seed) + " is outside the mesh");
+  const std::uint32_t tet = std::uint32_t(at->tet);
+  Streamline line;
+  if (settings.direction != StreamlineDirection::Forward) {
+    std::vector<glm::dvec3> points, velocity;
+    traceOneWay(seed, tet, -1.0, settings, points, velocity, line.backwardStop, line.steps, line.rejected, line.length,
+                line.closureError);
+    line.points.assign(points.rbegin(), points.rend());
+    line.velocity.assign(velocity.rbegin(), velocity.rend());
+  }
+  line.seedIndex = line.points.size();
+  line.points.push_back(seed);
+  line.velocity.push_back(velocityIn(tet, seed));
+  if (settings.direction != StreamlineDirection::Backward)
+    traceOneWay(seed, tet, 1.0, settings, line.points, line.velocity, line.forwardStop, line.steps, line.rejected,
+                line.length, line.closureError);
+  return line;
+}
+
+std::vector<Streamline> StreamlineTracer::traceAll(const std::vector<glm::dvec3>& seeds,
+                                                   const StreamlineSettings& settings, std::size_t* outside,
+                                                   const Progress& progress) const {
+  std::vector<Streamline> lines(seeds.size());
+  std::vector<char> missed(seeds.size(), 0);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<bool> cancelled{false};
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned worker) {
+    for (std::size_t i; !cancelled && (i = next++) < seeds.size();) {
+      try {
+        lines[i] = trace(seeds[i], settings);
+      } catch (const std::invalid_argument&) {
+        missed[i] = 1;
+      }
+      const std::size_t finished = ++done;
+      if (worker == 0) {
+        try {
+          progress.report(double(finished) / double(seeds.size()));
+        } catch (...) {
+          cancelled = true;
+          throw;
+        }
+      }
+    }
+  });
+  std::vector<Streamline> out;
+  std::size_t missing = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (missed[i]) ++missing;
+    else out.push_back(std::move(lines[i]));
+  }
+  if (outside) *outside = missing;
+  return out;
+}
+
+std::vector<glm::dvec3> tetNodeVectors(const TetMesh& tets, const Mesh& source, const std::vector<double>& nodal) {
+  if (nodal.size() != source.nodeCount() * 3)
+    throw std::invalid_argument("streamlines need a vector (3 values) per node");
+  std::vector<glm::dvec3> out(tets.mesh.nodeCount());
+  for (int k = 0; k < 3; ++k) {
+    std::vector<double> component(source.nodeCount());
+    for (std::size_t i = 0; i < component.size(); ++i) component[i] = nodal[3 * i + std::size_t(k)];
+    const std::vector<double> onTets = tets.nodeValues(source, component);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i][k] = onTets[i];
+  }
+  return out;
+}
+
+std::vector<double> averageCellVectorsToNodes(const Mesh& mesh, const std::vector<double>& perCell) {
+  std::vector<double> sum(mesh.nodeCount() * 3, 0.0);
+  std::vector<int> count(mesh.nodeCount(), 0);
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c)
+    for (NodeIndex n : mesh.cellNodes(c)) {
+      for (int k = 0; k < 3; ++k) sum[3 * n + std::size_t(k)] += perCell[3 * c + std::size_t(k)];
+      ++count[n];
+    }
+  for (std::size_t n = 0; n < count.size(); ++n)
+    for (int k = 0; k < 3; ++k) sum[3 * n + std::size_t(k)] = count[n] ? sum[3 * n + std::size_t(k)] / count[n] : 0.0;
+  return sum;
+}
+
+}  // namespace volpost
