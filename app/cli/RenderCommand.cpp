@@ -316,6 +316,9 @@ int runRender(const QStringList& args) {
       const SceneImage image = rendererName == "reference"
                                    ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
                                    : renderSceneImage(scene, width, height);
+      if (const auto lines = scene.streamlineResult(); lines && lines->outside)
+        std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
+                     lines->outside, lines->seeds);
       savePicture(image.picture, out);
       if (parser.isSet(o.floatOut))
         writeFloatImage(pathBytes(parser.value(o.floatOut)), image.width, image.height, image.volumeRgba,

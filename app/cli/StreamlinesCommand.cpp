@@ -42,6 +42,12 @@ int runStreamlines(const QStringList& args) {
     return 2;
   }
   const std::string out = pathBytes(parser.value(output));
+  try {
+    checkPolylineFormat(out);
+  } catch (const std::invalid_argument& e) {
+    printError(QString("-o %1").arg(e.what()));
+    return 2;
+  }
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(out);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <limits>
 #include <cmath>
 #include <stdexcept>
@@ -318,6 +319,14 @@ std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession&
   result->step = wantedStep;
   result->seeds = seeds.size();
   result->lines = tracer.traceAll(seeds, l.settings, &result->outside, progress);
+  if (!seeds.empty() && result->outside == seeds.size()) {
+    const Bounds b = model.mesh.bounds();
+    char text[256];
+    std::snprintf(text, sizeof text, "x [%g, %g]  y [%g, %g]  z [%g, %g]", b.min.x, b.max.x, b.min.y, b.max.y, b.min.z,
+                  b.max.z);
+    const std::string which = seeds.size() == 1 ? "the seed lies" : "all " + std::to_string(seeds.size()) + " seeds lie";
+    throw std::invalid_argument(which + " outside the mesh (its bounds: " + text + ")");
+  }
   // The values the lines are colored by: the speed, or a quantity interpolated at each point.
   if (l.colorBy.empty()) {
     result->valueName = l.field + " speed";

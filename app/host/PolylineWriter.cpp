@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 namespace volpost {
 namespace {
@@ -109,10 +110,23 @@ std::string csv(const PolylineSet& s) {
 
 }  // namespace
 
+namespace {
+
+bool isPolylineFormat(const std::string& ext) { return ext == ".vtp" || ext == ".csv"; }
+
+std::string formatHint(const std::string& ext) {
+  return "streamlines are written as .vtp (VTK PolyData, for ParaView) or .csv, not '" + ext + "'";
+}
+
+}  // namespace
+
+void checkPolylineFormat(const std::string& path) {
+  if (!isPolylineFormat(extensionOf(path))) throw std::invalid_argument(path + ": " + formatHint(extensionOf(path)));
+}
+
 void writePolylines(const PolylineSet& lines, const std::string& path) {
   const std::string ext = extensionOf(path);
-  if (ext != ".vtp" && ext != ".csv")
-    throw WriteError(path, "streamlines are written as .vtp (VTK PolyData, for ParaView) or .csv, not '" + ext + "'");
+  if (!isPolylineFormat(ext)) throw WriteError(path, formatHint(ext));
   writeFileAtomically(path, ext == ".vtp" ? vtp(lines) : csv(lines));
 }
 

@@ -21,6 +21,10 @@ struct PolylineSet {
   std::vector<int> stops;                         ///< per line: a code (StreamlineStop of the forward end)
 };
 
+/// Throws std::invalid_argument unless the path names a format writePolylines writes, so a
+/// command can refuse it before any work.
+void checkPolylineFormat(const std::string& path);
+
 /// By the extension: .vtp or .csv. Throws WriteError naming the file; written through
 /// AtomicFile (the previous file stays on failure).
 void writePolylines(const PolylineSet& lines, const std::string& path);
