@@ -240,7 +240,7 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
     if (!session_) return;
     viewport_->setRakeMode(true);
-    statusBar()->showMessage("Drag in the view to place a rake of seeds (in the plane through the view's centre)");
+    statusBar()->showMessage("Drag in the view to place a rake of seeds (in the plane through the view's centre); Esc cancels");
   });
   rake->setObjectName("placeRake");
   streamlinesAction_ = lines->addAction("Show Streamlines");

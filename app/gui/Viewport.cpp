@@ -2,6 +2,7 @@
 #include "Viewport.hpp"
 
 #include <QImage>
+#include <QKeyEvent>
 #include <QPen>
 #include <QMouseEvent>
 #include <QOpenGLContext>
@@ -148,6 +149,15 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
   setRakeMode(false);
   if ((b - a).manhattanLength() < 4.0) return;  // a click, not a rake
   emit rakePlaced(pointInTargetPlane(a), pointInTargetPlane(b));
+}
+
+// Escape leaves rake placement without seeds (the lines shown stay as they were).
+void Viewport::keyPressEvent(QKeyEvent* event) {
+  if (rakeMode_ && event->key() == Qt::Key_Escape) {
+    setRakeMode(false);
+    return;
+  }
+  QOpenGLWidget::keyPressEvent(event);
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {

@@ -244,6 +244,11 @@ class MainWindowTest : public QObject {
     const auto before = summarize(view->grabFramebuffer());
     window_->findChild<QAction*>("placeRake")->trigger();
     QVERIFY(view->rakeMode());
+    QTest::keyClick(view, Qt::Key_Escape);  // Esc leaves placement with nothing changed
+    QVERIFY(!view->rakeMode());
+    QVERIFY(!view->scene().streamlines().shown);
+    window_->findChild<QAction*>("placeRake")->trigger();
+    QVERIFY(view->rakeMode());
     const QPoint c = view->rect().center();
     const QPoint a = c + QPoint(-view->width() / 3, 0), b = c + QPoint(view->width() / 3, 0);
     QSignalSpy traced(window_.get(), &MainWindow::streamlinesTraced);
