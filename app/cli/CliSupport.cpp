@@ -84,4 +84,14 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
   return std::nullopt;
 }
 
+std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option) {
+  bool ok = false;
+  const int step = parser.value(option).toInt(&ok);
+  if (!ok || step < 1) {
+    printError(QString("--step %1 is not a step number (1, 2, ...)").arg(parser.value(option)));
+    return std::nullopt;
+  }
+  return std::size_t(step - 1);
+}
+
 }  // namespace volpost::app

@@ -34,6 +34,9 @@ std::string pathBytes(const QString& text);
 /// is wrong with the arguments), or nullopt to go on.
 std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args);
 
+/// The 0-based step of a 1-based --step option; prints what is wrong and gives nullopt.
+std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option);
+
 /// Runs a verb's work and returns its exit code; a cancel (Ctrl+C on the progress) is 1,
 /// an error is printed and is 1.
 template <typename Work>

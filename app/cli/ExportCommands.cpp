@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: MIT
-// `volpost convert`, `volpost surface` and `volpost probe`: models out to other tools
-// (VTU for ParaView, OBJ/PLY/STL surfaces) and values at points.
+// `volpost convert` and `volpost surface`: models out to other tools
+// (VTU for ParaView, OBJ/PLY/STL surfaces).
 #include "../core/VolumeSpecs.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
 #include "host/AtomicFile.hpp"
 #include "host/IsoSurfaceExtraction.hpp"
-#include "host/PointLocator.hpp"
 #include "host/SurfaceWriter.hpp"
 #include "host/VtuWriter.hpp"
 
@@ -18,20 +17,6 @@
 #include <cstdio>
 
 namespace volpost::app {
-namespace {
-
-std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option) {
-  bool ok = false;
-  const int step = parser.value(option).toInt(&ok);
-  if (!ok || step < 1) {
-    printError(QString("--step %1 is not a step number (1, 2, ...)").arg(parser.value(option)));
-    return std::nullopt;
-  }
-  return std::size_t(step - 1);
-}
-
-}  // namespace
-
 int runConvert(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Writes MODEL as a VTK XML unstructured grid (every field, every step).");
@@ -112,57 +97,6 @@ int runSurface(const QStringList& args) {
     std::printf("%s: %s = %g, %zu triangles\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
                 surface.mesh.n_faces());
     return 0;
-  });
-}
-
-int runProbe(const QStringList& args) {
-  QCommandLineParser parser;
-  parser.setApplicationDescription("Prints the value of a quantity at points of MODEL (interpolated in the cell).");
-  parser.addPositionalArgument("MODEL", "mesh or results file");
-  const QCommandLineOption field("field", "Quantity: S.xx, S.mises, U.magnitude, T ...", "Q");
-  const QCommandLineOption at("at", "A point X,Y,Z in model units (repeatable).", "X,Y,Z");
-  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
-  parser.addOptions({field, at, step});
-  if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
-  if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(at)) {
-    printError("probe needs MODEL, --field Q and --at X,Y,Z (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
-    return 2;
-  }
-  std::vector<glm::dvec3> points;
-  for (const QString& text : parser.values(at)) {
-    const auto p = parsePoint(text);
-    if (!p) {
-      printError(QString("--at %1 is not X,Y,Z").arg(text));
-      return 2;
-    }
-    points.push_back(*p);
-  }
-  const auto stepIndex = parseStep(parser, step);
-  if (!stepIndex) return 2;
-  auto plugins = loadPluginsForCli();
-  return exitCodeOf([&] {
-    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                            terminalProgress("reading"));
-    const Quantity q = session->findQuantity(parser.value(field).toStdString());
-    const ScalarView view = session->evaluate(q, *stepIndex);
-    const TetMesh& tets = session->tetrahedra();
-    const std::vector<double> values = session->tetValues(view);
-    const PointLocator locator(tets);
-    int outside = 0;
-    for (const glm::dvec3& p : points) {
-      const auto where = locator.locate(p);
-      if (!where) {
-        std::printf("%g,%g,%g\toutside the mesh\n", p.x, p.y, p.z);
-        ++outside;
-        continue;
-      }
-      const double v = view.location == FieldLocation::Node ? PointLocator::interpolateNodal(*where, values)
-                                                              : values[where->tet];
-      const auto& ids = session->model().mesh.cellIds;
-      std::printf("%g,%g,%g\t%s = %.9g\t(element %lld)\n", p.x, p.y, p.z, qPrintable(parser.value(field)), v,
-                  static_cast<long long>(ids.empty() ? std::int64_t(where->cell) : ids[where->cell]));
-    }
-    return outside == 0 ? 0 : 1;
   });
 }
 

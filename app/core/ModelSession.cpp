@@ -9,7 +9,6 @@ namespace volpost::app {
 
 std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
                                                  const Progress& progress) {
-  auto session = std::make_shared<ModelSession>();
   // The caller's progress sees one bar with named stages; cancelling it cancels the stage.
   Progress stage = progress;
   stage.setStage("reading");
@@ -17,13 +16,21 @@ std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, 
     stage.report(0.8 * f);
     return true;
   });
-  session->model_ = readers.load(path, readProgress);
+  std::shared_ptr<Model> model = readers.load(path, readProgress);
   stage.setStage("extracting the boundary");
-  Progress boundaryProgress([&](double f, const std::string&) {
+  Progress rest([&](double f, const std::string&) {
     stage.report(0.8 + 0.2 * f);
     return true;
   });
-  session->surface_ = std::make_shared<BoundarySurface>(extractBoundary(session->model_->mesh, boundaryProgress));
+  return fromModel(std::move(model), rest);
+}
+
+std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> model, const Progress& progress) {
+  auto session = std::make_shared<ModelSession>();
+  Progress stage = progress;
+  stage.setStage("extracting the boundary");
+  session->model_ = std::move(model);
+  session->surface_ = std::make_shared<BoundarySurface>(extractBoundary(session->model_->mesh, stage));
   return session;
 }
 
@@ -78,6 +85,11 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
 const TetMesh& ModelSession::tetrahedra() const {
   std::call_once(tetOnce_, [this] { tets_ = std::make_unique<TetMesh>(tetrahedralize(model_->mesh)); });
   return *tets_;
+}
+
+const PointLocator& ModelSession::locator() const {
+  std::call_once(locatorOnce_, [this] { locator_ = std::make_unique<PointLocator>(tetrahedra()); });
+  return *locator_;
 }
 
 std::vector<double> ModelSession::tetValues(const ScalarView& view) const {

@@ -9,6 +9,8 @@
 #include <volpost/core/ReaderRegistry.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
+#include "host/PointLocator.hpp"
+
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -30,6 +32,8 @@ class ModelSession {
   /// Reads, checks and extracts the boundary (the long part, runs on a worker thread).
   static std::shared_ptr<ModelSession> load(const ReaderRegistry& readers, const std::string& path,
                                             const Progress& progress = {});
+  /// A session on a model already in memory (checked or made by the caller): extracts the boundary.
+  static std::shared_ptr<ModelSession> fromModel(std::shared_ptr<Model> model, const Progress& progress = {});
 
   const Model& model() const { return *model_; }
   const BoundarySurface& surface() const { return *surface_; }
@@ -50,10 +54,14 @@ class ModelSession {
   const TetMesh& tetrahedra() const;
   /// A view's values on those tetrahedra (Steiner points get their cell's corner mean).
   std::vector<double> tetValues(const ScalarView& view) const;
+  /// Finds points in those tetrahedra (built on first use, kept; any thread).
+  const PointLocator& locator() const;
 
  private:
   mutable std::once_flag tetOnce_;
   mutable std::unique_ptr<TetMesh> tets_;
+  mutable std::once_flag locatorOnce_;
+  mutable std::unique_ptr<PointLocator> locator_;
   std::shared_ptr<Model> model_;
   std::shared_ptr<BoundarySurface> surface_;
 };

@@ -6,6 +6,7 @@
 #include <QImage>
 
 #include <filesystem>
+#include <fstream>
 
 using volpost::test::dataFile;
 using volpost::test::runVolpost;
@@ -193,6 +194,38 @@ TEST(ProbeCommand, PrintsTheBarStressAtAPointAndFlagsOutsidePoints) {
   EXPECT_EQ(outside.exitCode, 1);
   EXPECT_NE(outside.output.find("outside the mesh"), std::string::npos);
   EXPECT_EQ(runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 1,2").exitCode, 2);
+}
+
+TEST(ProbeCommand, WritesEveryQuantityAtFullPrecisionAsCsvFromAPointsFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "volpost_cli_probe";
+  std::filesystem::create_directories(dir);
+  const std::string points = (dir / "points.txt").string(), csv = (dir / "probe.csv").string();
+  {
+    std::ofstream out(points);
+    out << "x y z\n5 0.5 0.5\n# a comment\n20,0,0\n";
+  }
+  std::filesystem::remove(csv);
+  const auto r = runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --points " + points + " --csv " + csv);
+  EXPECT_EQ(r.exitCode, 1) << "one point is outside: " << r.output;
+  EXPECT_NE(r.output.find("1 of 2 points are outside the mesh"), std::string::npos) << r.output;
+  std::ifstream in(csv);
+  std::string header, inside, outside;
+  std::getline(in, header);
+  std::getline(in, inside);
+  std::getline(in, outside);
+  EXPECT_EQ(header.rfind("x,y,z,element,element_type,node,U.magnitude,U.x,", 0), 0u) << header;
+  EXPECT_NE(header.find(",S.mises,"), std::string::npos) << header;
+  EXPECT_EQ(inside.rfind("5,0.5,0.5,", 0), 0u) << inside;
+  EXPECT_NE(inside.find(",tet4,,"), std::string::npos) << inside;
+  EXPECT_GT(inside.size(), 200u) << "shortest round-trip digits, not 6: " << inside;
+  EXPECT_EQ(outside.rfind("20,0,0,,,,nan,", 0), 0u) << outside;
+
+  const auto bad = runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --points " + csv);
+  EXPECT_EQ(bad.exitCode, 1) << bad.output;
+  EXPECT_NE(bad.output.find("probe.csv:2:"), std::string::npos) << "names the file and line: " << bad.output;
+  const auto noField = runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --at 5,0.5,0.5 --field S.bogus");
+  EXPECT_NE(noField.exitCode, 0);
+  EXPECT_NE(noField.output.find("S.bogus"), std::string::npos) << noField.output;
 }
 
 TEST(RenderCommand, ClipBoxKeepsTheInsideAndBadBoxesAreRefused) {

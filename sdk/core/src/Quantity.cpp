@@ -122,38 +122,49 @@ std::string Quantity::displayName() const {
   return field;
 }
 
+namespace {
+
+void checkQuantityFits(const Quantity& q, const std::string& fieldName, int nc) {
+  if (q.op == ScalarOp::Component && (q.component < 0 || q.component >= nc))
+    throw std::out_of_range("field " + fieldName + " has no component " + std::to_string(q.component));
+  if ((q.op == ScalarOp::VonMises || q.op >= ScalarOp::Principal1) && nc != 6)
+    throw std::invalid_argument("field " + fieldName + " is not a symmetric tensor");
+}
+
+double scalarOf(const Quantity& q, const double* t, int nc) {
+  switch (q.op) {
+    case ScalarOp::Component: return t[q.component];
+    case ScalarOp::Magnitude: {
+      double s = 0.0;
+      for (int c = 0; c < nc; ++c) s += t[c] * t[c];
+      return std::sqrt(s);
+    }
+    case ScalarOp::VonMises: return vonMises(t);
+    case ScalarOp::Principal1:
+    case ScalarOp::Principal2:
+    case ScalarOp::Principal3: {
+      bool finite = true;
+      for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(t[c]);
+      return finite ? principalValues(t)[int(q.op) - int(ScalarOp::Principal1)] : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 std::vector<double> evaluate(const Field& field, const Quantity& q, std::size_t step) {
   const std::vector<double>& v = field.values(step);
   const int nc = field.components();
-  const std::size_t n = field.entityCount();
-  std::vector<double> out(n);
-  if (q.op == ScalarOp::Component && (q.component < 0 || q.component >= nc))
-    throw std::out_of_range("field " + field.name() + " has no component " + std::to_string(q.component));
-  if ((q.op == ScalarOp::VonMises || q.op >= ScalarOp::Principal1) && nc != 6)
-    throw std::invalid_argument("field " + field.name() + " is not a symmetric tensor");
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* t = v.data() + i * std::size_t(nc);
-    switch (q.op) {
-      case ScalarOp::Component: out[i] = t[q.component]; break;
-      case ScalarOp::Magnitude: {
-        double s = 0.0;
-        for (int c = 0; c < nc; ++c) s += t[c] * t[c];
-        out[i] = std::sqrt(s);
-        break;
-      }
-      case ScalarOp::VonMises: out[i] = vonMises(t); break;
-      case ScalarOp::Principal1:
-      case ScalarOp::Principal2:
-      case ScalarOp::Principal3: {
-        bool finite = true;
-        for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(t[c]);
-        out[i] = finite ? principalValues(t)[int(q.op) - int(ScalarOp::Principal1)]
-                        : std::numeric_limits<double>::quiet_NaN();
-        break;
-      }
-    }
-  }
+  checkQuantityFits(q, field.name(), nc);
+  std::vector<double> out(field.entityCount());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = scalarOf(q, v.data() + i * std::size_t(nc), nc);
   return out;
+}
+
+double evaluateComponents(const Quantity& q, std::span<const double> components) {
+  checkQuantityFits(q, q.field, int(components.size()));
+  return scalarOf(q, components.data(), int(components.size()));
 }
 
 ValueRange rangeOf(const std::vector<double>& values) {

@@ -35,6 +35,11 @@ class Mesh {
   /// Element ids as the source file numbered them (empty when the file has none).
   std::vector<std::int64_t> cellIds;
 
+  /// The id a user knows a node or an element by: the file's own, or for files that have
+  /// none (VTK) the position counted from 1, as FE programs number.
+  std::int64_t nodeId(std::size_t node) const { return nodeIds.empty() ? std::int64_t(node) + 1 : nodeIds[node]; }
+  std::int64_t cellId(std::size_t cell) const { return cellIds.empty() ? std::int64_t(cell) + 1 : cellIds[cell]; }
+
   void reserveCells(std::size_t cells, std::size_t connectivityEntries);
   /// Appends a cell; `cellNodes` has topology(type).nodeCount entries.
   void addCell(CellType type, std::span<const NodeIndex> cellNodes);

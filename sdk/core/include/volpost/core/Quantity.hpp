@@ -6,6 +6,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,8 @@ std::optional<Quantity> parseQuantity(const std::string& text, const Field& fiel
 
 /// Evaluates the quantity for all entities of one step. NaN inputs give NaN.
 std::vector<double> evaluate(const Field& field, const Quantity& quantity, std::size_t step);
+/// Evaluates the quantity on one entity's components (e.g. a field interpolated at a point).
+double evaluateComponents(const Quantity& quantity, std::span<const double> components);
 
 /// Principal values of the symmetric tensor (xx yy zz xy yz zx), sorted descending.
 std::array<double, 3> principalValues(const double* t);

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// `volpost probe MODEL --at X,Y,Z [--field Q ...] [--csv out.csv]`: what the model holds at
+// points: the element, its type, the node when the point is one, and the quantities
+// interpolated with the element's shape functions, at full precision.
+#include "../core/Probe.hpp"
+#include "../core/ProbeTable.hpp"
+#include "../core/VolumeSpecs.hpp"
+#include "CliSupport.hpp"
+#include "Commands.hpp"
+
+#include "host/AtomicFile.hpp"
+#include "host/TextFile.hpp"
+
+#include <QCommandLineParser>
+
+#include <cstdio>
+#include <sstream>
+
+namespace volpost::app {
+
+namespace {
+
+// Points from a text file: X Y Z (or X,Y,Z) per line; blank lines, lines starting with #
+// and a first line of column names are skipped. Throws naming the file and line.
+std::vector<glm::dvec3> readPoints(const std::string& path) {
+  const std::string text = readTextFile(path);
+  std::vector<glm::dvec3> points;
+  std::istringstream in(text);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    for (char& c : line)
+      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos || line[first] == '#') continue;
+    const auto p = parsePoint(QString::fromStdString(line).simplified().replace(' ', ','));
+    if (!p) {
+      if (number == 1 && points.empty()) continue;  // a header
+      throw std::runtime_error(path + ":" + std::to_string(number) + ": '" + line.substr(0, 60) + "' is not X Y Z");
+    }
+    points.push_back(*p);
+    if (points.size() > 10'000'000) throw std::runtime_error(path + ": more than 10 million points");
+  }
+  if (points.empty()) throw std::runtime_error(path + ": no points (X Y Z per line)");
+  return points;
+}
+
+void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
+  std::printf("point %s, %s, %s: ", exactNumber(r.point.x).c_str(), exactNumber(r.point.y).c_str(),
+              exactNumber(r.point.z).c_str());
+  if (!r.inside()) {
+    std::printf("outside the mesh\n");
+    return;
+  }
+  std::printf("element %lld (%s)", static_cast<long long>(r.cellId), std::string(cellTypeName(r.cellType)).c_str());
+  if (r.nodeId) std::printf(", node %lld", static_cast<long long>(*r.nodeId));
+  std::printf(", %s\n", describe(r.method));
+  for (const std::string& key : keys) {
+    const auto v = r.value(key);
+    std::printf("  %s = %s\n", key.c_str(), v ? exactNumber(*v).c_str() : "not probed");
+  }
+}
+
+}  // namespace
+
+int runProbe(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "volpost probe: what MODEL holds at points: the element there, and the quantities interpolated with the "
+      "element's shape functions (element results as stored), at full precision.");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  const QCommandLineOption field("field", "A quantity: S.xx, S.mises, U.magnitude, T ... (repeatable; default: all).",
+                                 "Q");
+  const QCommandLineOption at("at", "A point X,Y,Z in model units (repeatable).", "X,Y,Z");
+  const QCommandLineOption pointsFile("points", "A text file of points, X Y Z (or X,Y,Z) per line.", "FILE");
+  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
+  const QCommandLineOption csv("csv", "Write a table (x, y, z, element, element_type, node, the quantities) to this "
+                                      "CSV file, or - for the terminal.", "FILE");
+  parser.addOptions({field, at, pointsFile, step, csv});
+  if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
+  if (parser.positionalArguments().size() != 1 || (!parser.isSet(at) && !parser.isSet(pointsFile))) {
+    printError("probe needs MODEL and --at X,Y,Z or --points FILE (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
+    return 2;
+  }
+  std::vector<glm::dvec3> points;
+  for (const QString& text : parser.values(at)) {
+    const auto p = parsePoint(text);
+    if (!p) {
+      printError(QString("--at %1 is not X,Y,Z").arg(text));
+      return 2;
+    }
+    points.push_back(*p);
+  }
+  const auto stepIndex = parseStep(parser, step);
+  if (!stepIndex) return 2;
+  const std::string csvPath = parser.isSet(csv) && parser.value(csv) != "-" ? pathBytes(parser.value(csv)) : std::string();
+  auto plugins = loadPluginsForCli();
+  return exitCodeOf([&] {
+    if (!csvPath.empty()) checkWritable(csvPath);
+    if (parser.isSet(pointsFile))
+      for (const glm::dvec3& p : readPoints(pathBytes(parser.value(pointsFile)))) points.push_back(p);
+    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
+                                            terminalProgress("reading"));
+    std::vector<std::string> keys;
+    for (const QString& q : parser.values(field)) keys.push_back(session->findQuantity(q.toStdString()).key());
+    if (keys.empty()) keys = allQuantityKeys(*session);
+    for (const std::string& key : keys) {
+      const Field& f = session->fieldOf(session->findQuantity(key));
+      if (*stepIndex >= f.stepCount())
+        throw std::invalid_argument("--step " + std::to_string(*stepIndex + 1) + ": " + f.name() + " has " +
+                                    std::to_string(f.stepCount()) + " step(s)");
+    }
+    std::vector<ProbeResult> results;
+    std::size_t outside = 0;
+    Progress progress = terminalProgress("probing");
+    for (const glm::dvec3& p : points) {
+      results.push_back(probeAt(*session, p, *stepIndex));
+      outside += !results.back().inside();
+      if (points.size() > 1000 && results.size() % 1000 == 0) progress.report(double(results.size()) / points.size());
+    }
+    if (parser.isSet(csv)) {
+      const std::string table = probeTable(results, keys);
+      if (csvPath.empty()) std::fwrite(table.data(), 1, table.size(), stdout);
+      else writeFileAtomically(csvPath, table);
+    } else {
+      for (const ProbeResult& r : results) printResult(r, keys);
+    }
+    if (!csvPath.empty())
+      std::printf("%s: %zu point%s, %zu quantit%s\n", csvPath.c_str(), results.size(), results.size() == 1 ? "" : "s",
+                  keys.size(), keys.size() == 1 ? "y" : "ies");
+    if (outside) std::fprintf(stderr, "volpost: %zu of %zu points are outside the mesh\n", outside, results.size());
+    return outside == 0 ? 0 : 1;
+  });
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+#include "Probe.hpp"
+
+#include "host/CellShape.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace volpost::app {
+
+namespace {
+
+// Natural coordinates a point may lie outside its element and still count as in it (on a
+// face shared with a neighbour, rounding), and how far the shape functions may be
+// extrapolated for a point on the faceted surface the renderers draw: the chord of a
+// curved face lies up to a few percent outside the curved element.
+constexpr double kInsideSlack = 1e-9;
+constexpr double kExtrapolation = 0.05;
+
+std::vector<glm::dvec3> positionsOf(const Mesh& mesh, std::size_t cell) {
+  std::vector<glm::dvec3> x;
+  for (NodeIndex n : mesh.cellNodes(cell)) x.push_back(mesh.nodes[n]);
+  return x;
+}
+
+// Natural coordinates of a node of the tet split in its source cell: an original node is
+// one of the cell's; a Steiner point is the mean of its corners, the reference centre.
+glm::dvec3 naturalOfSplitNode(const Mesh& mesh, const TetMesh& tets, std::size_t cell, NodeIndex node) {
+  const CellType type = mesh.cellType(cell);
+  const auto nodes = mesh.cellNodes(cell);
+  if (node < tets.originalNodes)
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+      if (nodes[k] == node) return naturalCoordinatesOfNode(type, int(k));
+  return referenceCentre(type);
+}
+
+// Where p is in the element found by the tet split (its natural coordinates), found from
+// the tet's barycentric weights as the first guess.
+std::optional<glm::dvec3> naturalInLocatedCell(const Mesh& mesh, const TetMesh& tets, const PointLocation& at,
+                                               const glm::dvec3& p) {
+  const CellType type = mesh.cellType(at.cell);
+  glm::dvec3 guess(0.0);
+  for (int k = 0; k < 4; ++k) guess += at.weights[std::size_t(k)] * naturalOfSplitNode(mesh, tets, at.cell, at.nodes[std::size_t(k)]);
+  if (type == CellType::Tet4) return guess;  // the split is the cell: barycentric is exact
+  return naturalCoordinates(type, positionsOf(mesh, at.cell), p, guess);
+}
+
+struct Found {
+  ProbeMethod method = ProbeMethod::Outside;
+  std::size_t cell = 0;
+  glm::dvec3 natural{0.0};
+  std::optional<PointLocation> tet;  ///< for TetSplit
+};
+
+// Whether natural coordinates xi put p in the cell: inside the reference cell, or within
+// the locator's tolerance of it in model units (a point on a curved face, rounded).
+bool holds(const Mesh& mesh, std::size_t cell, const glm::dvec3& xi, const glm::dvec3& p, double tolerance) {
+  const CellType type = mesh.cellType(cell);
+  if (outsideReference(type, xi) <= kInsideSlack) return true;
+  return glm::length(positionAt(type, positionsOf(mesh, cell), clampToReference(type, xi)) - p) <= tolerance;
+}
+
+// The element holding p: the one the tet split finds, when p is in it by its shape
+// functions; else a neighbouring element whose curved faces hold p (quadratic elements
+// bulge past their faceted split); else the found element, extrapolated a little or
+// linear in its split.
+Found findElement(const ModelSession& session, const glm::dvec3& p) {
+  const Mesh& mesh = session.model().mesh;
+  const TetMesh& tets = session.tetrahedra();
+  const PointLocator& locator = session.locator();
+  const double tolerance = kOnMeshTolerance * locator.modelSize();
+  const std::optional<PointLocation> at = locator.locate(p);
+  std::optional<glm::dvec3> xiAt;
+  if (at) {
+    xiAt = naturalInLocatedCell(mesh, tets, *at, p);
+    if (xiAt && outsideReference(mesh.cellType(at->cell), *xiAt) <= kInsideSlack)
+      return {ProbeMethod::Isoparametric, at->cell, *xiAt, {}};
+  }
+  std::vector<std::size_t> cells;
+  for (std::uint32_t t : locator.tetsNear(p, locator.gridSpacing())) cells.push_back(tets.cellOfTet[t]);
+  std::sort(cells.begin(), cells.end());
+  cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  for (std::size_t cell : cells) {
+    const CellType type = mesh.cellType(cell);
+    if (!topology(type).quadratic || (at && cell == at->cell) || cellRepeatsANode(mesh, cell)) continue;
+    const auto xi = naturalCoordinates(type, positionsOf(mesh, cell), p, referenceCentre(type));
+    if (xi && holds(mesh, cell, *xi, p, tolerance)) return {ProbeMethod::Isoparametric, cell, *xi, {}};
+  }
+  if (!at) return {};
+  if (xiAt && outsideReference(mesh.cellType(at->cell), *xiAt) <= kExtrapolation)
+    return {ProbeMethod::Isoparametric, at->cell, *xiAt, {}};
+  return {ProbeMethod::TetSplit, at->cell, glm::dvec3(0.0), at};
+}
+
+// Weights on original nodes that interpolate node data at the point.
+std::vector<std::pair<NodeIndex, double>> nodalWeights(const Mesh& mesh, const TetMesh& tets, const Found& f) {
+  std::vector<std::pair<NodeIndex, double>> w;
+  const auto nodes = mesh.cellNodes(f.cell);
+  if (f.method == ProbeMethod::Isoparametric) {
+    const ShapeValues n = shapeFunctions(mesh.cellType(f.cell), f.natural);
+    for (std::size_t k = 0; k < nodes.size(); ++k) w.emplace_back(nodes[k], n[k]);
+    return w;
+  }
+  const int corners = topology(mesh.cellType(f.cell)).cornerCount;
+  for (int k = 0; k < 4; ++k) {
+    const NodeIndex node = f.tet->nodes[std::size_t(k)];
+    const double weight = f.tet->weights[std::size_t(k)];
+    if (node < tets.originalNodes) {
+      w.emplace_back(node, weight);
+    } else {  // a Steiner point: the mean of its cell's corners
+      for (int c = 0; c < corners; ++c) w.emplace_back(nodes[std::size_t(c)], weight / corners);
+    }
+  }
+  return w;
+}
+
+ProbedField probeField(const Field& field, std::size_t step, std::size_t cell,
+                       const std::vector<std::pair<NodeIndex, double>>& weights, std::optional<NodeIndex> atNode) {
+  ProbedField out;
+  out.name = field.name();
+  out.location = field.location();
+  const int nc = field.components();
+  const std::vector<double>& v = field.values(std::min(step, field.stepCount() - 1));
+  out.components.assign(std::size_t(nc), 0.0);
+  for (int c = 0; c < nc; ++c) {
+    if (field.location() == FieldLocation::Cell) {
+      out.components[std::size_t(c)] = v[cell * std::size_t(nc) + std::size_t(c)];
+    } else if (atNode) {  // exactly the node's own value, not a sum that rounds to it
+      out.components[std::size_t(c)] = v[std::size_t(*atNode) * std::size_t(nc) + std::size_t(c)];
+    } else {
+      double sum = 0.0;
+      for (const auto& [node, weight] : weights)
+        if (weight != 0.0) sum += weight * v[std::size_t(node) * std::size_t(nc) + std::size_t(c)];
+      out.components[std::size_t(c)] = sum;
+    }
+  }
+  for (const Quantity& q : quantitiesOf(field)) out.quantities.push_back({q, evaluateComponents(q, out.components)});
+  return out;
+}
+
+}  // namespace
+
+const char* describe(ProbeMethod method) {
+  switch (method) {
+    case ProbeMethod::Outside: return "outside the mesh";
+    case ProbeMethod::Isoparametric: return "interpolated with the element's shape functions";
+    case ProbeMethod::TetSplit: return "interpolated linearly in the element's tetrahedral split (distorted element)";
+  }
+  return "?";
+}
+
+std::optional<double> ProbeResult::value(const std::string& key) const {
+  for (const ProbedField& f : fields)
+    for (const ProbedQuantity& q : f.quantities)
+      if (q.quantity.key() == key || (f.name == key && &q == &f.quantities.front())) return q.value;
+  return std::nullopt;
+}
+
+ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::size_t step) {
+  ProbeResult r;
+  r.point = point;
+  r.step = step;
+  if (!std::isfinite(point.x + point.y + point.z)) return r;
+  const Found found = findElement(session, point);
+  if (found.method == ProbeMethod::Outside) return r;
+  const Mesh& mesh = session.model().mesh;
+  r.method = found.method;
+  r.cell = found.cell;
+  r.cellId = mesh.cellId(found.cell);
+  r.cellType = mesh.cellType(found.cell);
+  r.natural = found.natural;
+  std::optional<NodeIndex> atNode;
+  const double nodeTolerance = kOnMeshTolerance * session.locator().modelSize();
+  for (NodeIndex n : mesh.cellNodes(found.cell)) {
+    r.nodeIds.push_back(mesh.nodeId(n));
+    if (!atNode && glm::length(mesh.nodes[n] - point) <= nodeTolerance) atNode = n;
+  }
+  if (atNode) r.nodeId = mesh.nodeId(*atNode);
+  const auto weights = nodalWeights(mesh, session.tetrahedra(), found);
+  for (const auto& field : session.model().fields)
+    if (field->stepCount() > 0) r.fields.push_back(probeField(*field, step, found.cell, weights, atNode));
+  return r;
+}
+
+}  // namespace volpost::app

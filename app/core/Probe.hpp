@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MIT
+// What a model holds at a point: the element there (its id as the file numbers it, its
+// type and nodes) and every field's value, interpolated in that element with its own
+// shape functions (trilinear in hex8, quadratic in tet10, serendipity in hex20 and
+// wedge15) as the FE program and ParaView do; element data as stored. The window's Probe
+// panel, `volpost probe` and the min/max markers all ask here.
+#pragma once
+
+#include "ModelSession.hpp"
+
+#include <volpost/core/CellType.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+/// How the values at a probed point were found.
+enum class ProbeMethod {
+  Outside,        ///< the point is not in the mesh
+  Isoparametric,  ///< the element's shape functions at the point's natural coordinates
+  TetSplit,       ///< linear in the tetrahedron of the element's split (the shape functions
+                  ///< did not converge: a distorted element)
+};
+const char* describe(ProbeMethod method);
+
+struct ProbedQuantity {
+  Quantity quantity;
+  double value = 0.0;
+};
+
+struct ProbedField {
+  std::string name;
+  FieldLocation location = FieldLocation::Node;
+  std::vector<double> components;        ///< interpolated (node data) or as stored (element data)
+  std::vector<ProbedQuantity> quantities;  ///< every quantity the field offers, from those components
+};
+
+struct ProbeResult {
+  glm::dvec3 point{0.0};
+  ProbeMethod method = ProbeMethod::Outside;
+  std::size_t cell = 0;                 ///< 0-based element index in the model
+  std::int64_t cellId = 0;              ///< the element's id as the file numbers it
+  CellType cellType = CellType::Tet4;
+  std::vector<std::int64_t> nodeIds;    ///< the element's nodes, file ids
+  std::optional<std::int64_t> nodeId;   ///< the point is this node (within the tolerance)
+  glm::dvec3 natural{0.0};              ///< natural coordinates in the element (Isoparametric)
+  std::size_t step = 0;
+  std::vector<ProbedField> fields;
+  bool inside() const { return method != ProbeMethod::Outside; }
+  /// The value of a quantity by its written form ("S.mises"); nullopt when not probed.
+  std::optional<double> value(const std::string& key) const;
+};
+
+/// Probes a point at a step (0-based; fields with fewer steps give their last). Thread-safe
+/// (builds the session's locator on first use). Throws what a lazy read of a damaged file
+/// throws (ReadError).
+ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::size_t step);
+
+}  // namespace volpost::app

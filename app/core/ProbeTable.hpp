@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// Probed points as a table: one row per point, the point, its element and node, and the
+// chosen quantities at full precision (shortest text that reads back to the same double).
+// `volpost probe --csv`, the window's Probe panel (Copy, Export CSV) and plot-over-line
+// write the same columns.
+#pragma once
+
+#include "Probe.hpp"
+
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+/// The written forms ("S.mises", "U.x") of every quantity the probed fields offer, in field order.
+std::vector<std::string> allQuantityKeys(const ModelSession& session);
+
+/// A double as the shortest text that reads back to it; "nan", "inf", "-inf" as such.
+std::string exactNumber(double value);
+
+/// Comma-separated (or another separator, e.g. a tab for the clipboard), a header line
+/// first: x, y, z, element, element_type, node (when the point is one), then `keys`.
+/// A point outside the mesh has empty element columns and "nan" values.
+std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator = ',');
+
+}  // namespace volpost::app

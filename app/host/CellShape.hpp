@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: MIT
+// Isoparametric shape functions of the FE cell types (VTK node order) and the inverse map
+// from a point to a cell's natural coordinates: values inside a cell interpolated as the
+// FE program's element does (trilinear in hex8, quadratic in tet10, serendipity in hex20
+// and wedge15), which is also what ParaView's probe does, rather than piecewise linearly
+// over the tetrahedra the renderers use.
+//
+// Natural coordinates: tet (r, s, t) >= 0 with r + s + t <= 1; hex (xi, eta, zeta) in
+// [-1, 1]^3; wedge (r, s) on the triangle r, s >= 0, r + s <= 1, and zeta in [-1, 1]
+// (nodes 0-2 at -1); pyramid (r, s, t) in [0, 1]^3, the apex at t = 1.
+#pragma once
+
+#include <volpost/core/CellType.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <optional>
+#include <span>
+
+namespace volpost {
+
+inline constexpr int kMaxCellNodes = 20;
+using ShapeValues = std::array<double, kMaxCellNodes>;
+
+/// The shape functions of the cell type at natural coordinates `xi` (topology(type).nodeCount
+/// of them; they sum to 1).
+ShapeValues shapeFunctions(CellType type, const glm::dvec3& xi);
+
+/// The natural coordinates of a cell's node (the corners, then the midside nodes).
+glm::dvec3 naturalCoordinatesOfNode(CellType type, int node);
+
+/// The reference cell's centre, where the inverse map starts.
+glm::dvec3 referenceCentre(CellType type);
+
+/// How far `xi` lies outside the reference cell, in natural units (0 inside or on it).
+double outsideReference(CellType type, const glm::dvec3& xi);
+
+/// A point of the reference cell near `xi` (xi itself when inside): each coordinate clamped
+/// to the cell's range, a simplex part scaled back onto its slanted face.
+glm::dvec3 clampToReference(CellType type, const glm::dvec3& xi);
+
+/// The position of natural coordinates `xi` in the cell with these node positions.
+glm::dvec3 positionAt(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& xi);
+
+/// The natural coordinates of `p` in the cell with these node positions (Newton's method
+/// from `start`, the Jacobian exact by forward differentiation of the shape functions);
+/// nullopt when the iteration does not converge (a degenerate or folded cell, or a point
+/// far outside it).
+std::optional<glm::dvec3> naturalCoordinates(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& p,
+                                             const glm::dvec3& start);
+
+}  // namespace volpost

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: MIT
+// Probing: every node of a model found at its own coordinates (midside nodes on curved
+// faces too, and coordinates rounded as files store them), values interpolated by the
+// element's shape functions, points really outside refused, ids as the file numbers them.
+#include "support/ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+
+#include "core/Probe.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+
+using namespace volpost;
+using namespace volpost::app;
+
+namespace {
+
+// A quarter of a thick-walled cylinder (radii 1 and 2, height 1) in hex20 elements whose
+// midside nodes lie on the true arcs, with a nodal field f = x^2 + y z and an element
+// field of the element's number; element ids start at 101, node ids at 1001.
+std::shared_ptr<ModelSession> quarterRing(int around, int through) {
+  auto model = std::make_shared<Model>();
+  Mesh& mesh = model->mesh;
+  // Nodes on a (2 around + 1) x (2 through + 1) x 3 lattice of (theta, r, z); the hex20
+  // uses the lattice points it needs, the rest stay unused.
+  const int nt = 2 * around + 1, nr = 2 * through + 1, nz = 3;
+  const auto index = [&](int t, int r, int z) { return NodeIndex((z * nr + r) * nt + t); };
+  for (int z = 0; z < nz; ++z)
+    for (int r = 0; r < nr; ++r)
+      for (int t = 0; t < nt; ++t) {
+        const double theta = 0.5 * std::numbers::pi * t / (nt - 1), radius = 1.0 + double(r) / (nr - 1);
+        mesh.nodes.push_back({radius * std::cos(theta), radius * std::sin(theta), 0.5 * z});
+        mesh.nodeIds.push_back(1001 + std::int64_t(mesh.nodes.size()) - 1);
+      }
+  for (int j = 0; j < through; ++j)
+    for (int i = 0; i < around; ++i) {
+      const int t = 2 * i, r = 2 * j;
+      // VTK hex20: corners (t, r) counter-clockwise seen from +z at z = 0 then z = 2, then
+      // the midside nodes of edges 01 12 23 30 (bottom), 45 56 67 74 (top), 04 15 26 37.
+      const NodeIndex c[20] = {index(t, r, 0),     index(t, r + 2, 0),     index(t + 2, r + 2, 0), index(t + 2, r, 0),
+                               index(t, r, 2),     index(t, r + 2, 2),     index(t + 2, r + 2, 2), index(t + 2, r, 2),
+                               index(t, r + 1, 0), index(t + 1, r + 2, 0), index(t + 2, r + 1, 0), index(t + 1, r, 0),
+                               index(t, r + 1, 2), index(t + 1, r + 2, 2), index(t + 2, r + 1, 2), index(t + 1, r, 2),
+                               index(t, r, 1),     index(t, r + 2, 1),     index(t + 2, r + 2, 1), index(t + 2, r, 1)};
+      mesh.addCell(CellType::Hex20, c);
+      mesh.cellIds.push_back(101 + std::int64_t(mesh.cellCount()) - 1);
+    }
+  std::vector<double> f, e;
+  for (const auto& p : mesh.nodes) f.push_back(p.x * p.x + p.y * p.z);
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) e.push_back(double(c));
+  model->fields.push_back(Field::fromValues("f", FieldLocation::Node, 1, {f}));
+  model->fields.push_back(Field::fromValues("element", FieldLocation::Cell, 1, {e}));
+  return ModelSession::fromModel(model);
+}
+
+double roundTo(double v, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*e", digits - 1, v);
+  return std::strtod(text, nullptr);
+}
+
+}  // namespace
+
+TEST(Probe, EveryNodeOfACurvedHex20MeshIsFoundWithItsOwnValue) {
+  const auto ring = quarterRing(6, 2);
+  ASSERT_GT(signedCellVolume(ring->model().mesh, 0), 0.0) << "the test's hex20 must be positively oriented";
+  const Mesh& mesh = ring->model().mesh;
+  const std::vector<double>& f = ring->model().fields[0]->values(0);
+  std::vector<bool> used(mesh.nodeCount(), false);
+  for (NodeIndex n : mesh.connectivity()) used[n] = true;
+  int probed = 0;
+  for (std::size_t n = 0; n < mesh.nodeCount(); ++n) {
+    if (!used[n]) continue;
+    for (int digits : {17, 10, 6}) {  // full precision, and as .inp and .frd files write them
+      const glm::dvec3 p(roundTo(mesh.nodes[n].x, digits), roundTo(mesh.nodes[n].y, digits), roundTo(mesh.nodes[n].z, digits));
+      const ProbeResult r = probeAt(*ring, p, 0);
+      ASSERT_TRUE(r.inside()) << "node " << mesh.nodeId(n) << " at " << digits << " digits";
+      EXPECT_EQ(r.method, ProbeMethod::Isoparametric);
+      EXPECT_NEAR(*r.value("f"), f[n], digits == 17 ? 1e-12 : 1e-4) << "node " << mesh.nodeId(n);
+      if (digits == 17) EXPECT_EQ(r.nodeId, mesh.nodeId(n));
+      ++probed;
+    }
+  }
+  // Used lattice points: corners (all indices even) and edge midpoints (exactly one odd).
+  EXPECT_EQ(probed, 3 * (7 * 3 * 2 + 6 * 3 * 2 + 7 * 2 * 2 + 7 * 3 * 1)) << "every used node, three ways";
+}
+
+TEST(Probe, PointsBetweenChordAndArcAreInsideAndInterpolatedByTheShapeFunctions) {
+  const auto ring = quarterRing(6, 2);
+  // On the outer surface r = 2, halfway between two corner nodes in angle: the linear
+  // split's chord passes inside, the hex20's arc through the midside node is the surface.
+  const double theta = 0.5 * std::numbers::pi * 1.0 / 12.0, z = 0.3;
+  for (double r : {2.0, 1.9995}) {
+    const glm::dvec3 p(r * std::cos(theta), r * std::sin(theta), z);
+    const ProbeResult at = probeAt(*ring, p, 0);
+    ASSERT_TRUE(at.inside()) << r;
+    EXPECT_EQ(at.method, ProbeMethod::Isoparametric);
+    // f = x^2 + y z is quadratic; the arc's parametrization is not, so it is close, not exact.
+    EXPECT_NEAR(*at.value("f"), p.x * p.x + p.y * p.z, 2e-3) << r;
+    EXPECT_EQ(at.cellId, 107);  // the outer layer's first element: theta in [0, 15] degrees, r in [1.5, 2]
+  }
+  // Beyond the arc by a ten-thousandth of the model: outside.
+  const double size = ring->locator().modelSize();
+  const double out = 2.0 + 1e-4 * size;
+  EXPECT_FALSE(probeAt(*ring, glm::dvec3(out * std::cos(theta), out * std::sin(theta), z), 0).inside());
+  EXPECT_FALSE(probeAt(*ring, glm::dvec3(0.5, 0.5, 0.5), 0).inside()) << "in the bore";
+  EXPECT_FALSE(probeAt(*ring, glm::dvec3(1.5, 0.1, 1.0 + 1e-3), 0).inside()) << "above the top";
+  EXPECT_FALSE(probeAt(*ring, glm::dvec3(NAN, 0.1, 0.5), 0).inside());
+}
+
+TEST(Probe, ReportsTheElementItsNodesAndElementDataAsStored) {
+  const auto ring = quarterRing(6, 2);
+  const double theta = 0.5 * std::numbers::pi * 5.5 / 6.0;  // in the sixth element around
+  const ProbeResult r = probeAt(*ring, glm::dvec3(1.25 * std::cos(theta), 1.25 * std::sin(theta), 0.5), 0);
+  ASSERT_TRUE(r.inside());
+  EXPECT_EQ(r.cellId, 106);
+  EXPECT_EQ(r.cellType, CellType::Hex20);
+  ASSERT_EQ(r.nodeIds.size(), 20u);
+  for (std::int64_t id : r.nodeIds) EXPECT_GE(id, 1001);
+  EXPECT_EQ(*r.value("element"), 5.0) << "element data as stored";
+  EXPECT_FALSE(r.nodeId) << "not at a node";
+}
+
+TEST(Probe, BarStressAndIdsFromAFileWithoutIds) {
+  const auto bar = ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
+  const ProbeResult r = probeAt(*bar, glm::dvec3(5.0, 0.5, 0.5), 0);
+  ASSERT_TRUE(r.inside());
+  EXPECT_NEAR(*r.value("S.xx"), 100.0, 0.05);
+  EXPECT_EQ(r.cellId, std::int64_t(r.cell) + 1) << "a VTU without ids numbers elements from 1";
+  EXPECT_EQ(r.cellType, CellType::Tet4);
+  ASSERT_TRUE(r.value("S.mises"));
+  EXPECT_NEAR(*r.value("S.mises"), 100.0, 0.5) << "derived from the interpolated tensor";
+}
+
+// The real quadratic models: every node found at the coordinates its own file stores
+// (the .frd keeps six digits) with the value the file gives it.
+TEST(Probe, EveryNodeOfTheRealQuadraticModelsIsFound) {
+  for (const char* file : {"bracket/tet10/bracket_tet10.frd", "bracket/tet10/bracket_tet10.inp", "wheel/mixed/wheel_mixed.frd"}) {
+    VOLPOST_SHARED_OR_SKIP(path, file);
+    const auto session = ModelSession::load(volpost::test::meshioReaders(), path);
+    const Mesh& mesh = session->model().mesh;
+    std::vector<bool> used(mesh.nodeCount(), false);
+    for (NodeIndex n : mesh.connectivity()) used[n] = true;
+    const Field* u = session->model().findField("U");
+    std::size_t missed = 0, probed = 0;
+    double worst = 0.0;
+    for (std::size_t n = 0; n < mesh.nodeCount(); ++n) {
+      if (!used[n]) continue;
+      const ProbeResult r = probeAt(*session, mesh.nodes[n], 0);
+      ++probed;
+      if (!r.inside()) {
+        ++missed;
+        continue;
+      }
+      if (u) worst = std::max(worst, std::abs(*r.value("U.x") - u->values(0)[3 * n]));
+    }
+    EXPECT_EQ(missed, 0u) << file << ": " << missed << " of " << probed << " nodes not found";
+    EXPECT_EQ(worst, 0.0) << file << ": a node's probed U.x differs from its own";
+  }
+}
