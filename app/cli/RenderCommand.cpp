@@ -96,6 +96,8 @@ struct Options {
   QCommandLineOption arrows{"arrows", "Arrow glyphs along the streamlines, pointing downstream."};
   QCommandLineOption noSurface{"no-surface", "Hide the model's surface (streamlines, iso-surfaces show alone)."};
   QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
+  QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
+  QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
   StreamlineOptions lineOptions;
 };
 
@@ -246,6 +248,19 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
   if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
   scene.setStreamlines(lines);
+  if (p.isSet(o.probe)) {
+    std::vector<glm::dvec3> points;
+    for (const QString& text : p.values(o.probe)) {
+      const auto point = parsePoint(text);
+      if (!point) throw UsageError(QString("--probe %1 is not X,Y,Z").arg(text).toStdString());
+      points.push_back(*point);
+    }
+    scene.setProbes(points);
+  }
+  if (p.isSet(o.markExtremes)) {
+    if (!scene.view()) throw UsageError("--mark-extremes needs --field (the quantity whose min and max to mark)");
+    scene.setMarkExtremes(true);
+  }
 }
 
 }  // namespace
@@ -258,7 +273,7 @@ int runRender(const QStringList& args) {
   parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity});
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

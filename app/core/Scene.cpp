@@ -30,6 +30,8 @@ Scene::~Scene() = default;
 void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   view_.reset();
+  ++viewVersion_;
+  state_.probes.clear();
   state_.quantity.clear();
   state_.step = 0;
   state_.modelPath = session_ ? session_->model().sourcePath : std::string();
@@ -55,6 +57,7 @@ void Scene::fitCamera() {
 // ---- what is shown ----
 
 void Scene::setResult(const std::string& quantity, std::size_t step) {
+  ++viewVersion_;
   if (quantity.empty() || !session_) {
     view_.reset();
     state_.quantity.clear();
@@ -183,6 +186,7 @@ void Scene::applyState(const SceneState& s) {
   if (s.volume.shown && !factory_(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   checkStreamlines(s.streamlines);
+  checkProbes(s.probes);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   if (s.volume.allClipPlanes().size() > std::size_t(kMaxClipPlanes) ||
       s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
@@ -205,11 +209,58 @@ void Scene::applyState(const SceneState& s) {
   state_.camera.reset();  // the live camera holds it
   streamlinesUploaded_ = false;
   view_ = std::move(view);
+  ++viewVersion_;
   camera_ = camera;
   changed_.scalars = changed_.colorMap = changed_.edges = true;
   changed_.values = changed_.tables = changed_.planes = changed_.iso = changed_.mode = true;
   if (locationChanged) changed_.geometry = true;
   if (volumeName_ != state_.volume.renderer) changed_.renderer = true;
+}
+
+// ---- probed points and markers ----
+
+void Scene::checkProbes(const std::vector<glm::dvec3>& points) const {
+  if (points.size() > kMaxProbes)
+    throw std::invalid_argument(std::to_string(points.size()) + " probed points: at most " + std::to_string(kMaxProbes));
+  for (const glm::dvec3& p : points)
+    if (!std::isfinite(p.x + p.y + p.z)) throw std::invalid_argument("a probed point is not a finite X, Y, Z");
+}
+
+void Scene::setProbes(std::vector<glm::dvec3> points) {
+  checkProbes(points);
+  state_.probes = std::move(points);
+}
+
+std::optional<Scene::Extremes> Scene::extremes() const {
+  if (extremesVersion_ == viewVersion_) return extremes_;
+  extremesVersion_ = viewVersion_;
+  extremes_.reset();
+  if (!view_ || !session_ || !view_->range.valid()) return extremes_;
+  const Mesh& mesh = session_->model().mesh;
+  const std::vector<double>& v = view_->values;
+  std::size_t lo = v.size(), hi = v.size();
+  std::vector<bool> used;
+  if (view_->location == FieldLocation::Node) {  // unused nodes are not part of the model
+    used.assign(mesh.nodeCount(), false);
+    for (NodeIndex n : mesh.connectivity()) used[n] = true;
+  }
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!std::isfinite(v[i]) || (!used.empty() && !used[i])) continue;
+    if (lo == v.size() || v[i] < v[lo]) lo = i;
+    if (hi == v.size() || v[i] > v[hi]) hi = i;
+  }
+  if (lo == v.size()) return extremes_;
+  const auto where = [&](std::size_t i) {
+    if (view_->location == FieldLocation::Node) return mesh.nodes[i];
+    const CellTopology& topo = topology(mesh.cellType(i));
+    const auto nodes = mesh.cellNodes(i);
+    glm::dvec3 c(0.0);
+    for (int k = 0; k < topo.cornerCount; ++k) c += mesh.nodes[nodes[std::size_t(k)]];
+    return c / double(topo.cornerCount);
+  };
+  const auto idOf = [&](std::size_t i) { return view_->location == FieldLocation::Node ? mesh.nodeId(i) : mesh.cellId(i); };
+  extremes_ = Extremes{where(lo), where(hi), v[lo], v[hi], idOf(lo), idOf(hi)};
+  return extremes_;
 }
 
 // ---- derived ----

@@ -106,6 +106,21 @@ class Scene {
   std::shared_ptr<const StreamlineResult> traceStreamlines(const Progress& progress = {}) const;
   void setStreamlineResult(std::shared_ptr<const StreamlineResult> result);
   std::shared_ptr<const StreamlineResult> streamlineResult() const { return streamlineResult_; }
+  // ---- probed points and min/max markers (painted over the picture: paintSceneOverlay) ----
+  /// Throws std::invalid_argument for more than kMaxProbes points or one not finite.
+  void setProbes(std::vector<glm::dvec3> points);
+  const std::vector<glm::dvec3>& probes() const { return state_.probes; }
+  void setMarkExtremes(bool on) { state_.markExtremes = on; }
+  bool marksExtremes() const { return state_.markExtremes; }
+  /// Where the shown quantity is smallest and largest: a node, or an element's centre for
+  /// element results (the first of equal values). nullopt without a result or values.
+  struct Extremes {
+    glm::dvec3 minAt{0.0}, maxAt{0.0};
+    double min = 0.0, max = 0.0;
+    std::int64_t minId = 0, maxId = 0;  ///< the node's or element's id
+  };
+  std::optional<Extremes> extremes() const;
+
   /// Interactive use (the window): slow tables build off the GUI thread.
   void setInteractive(bool on) { interactive_ = on; }
 
@@ -148,6 +163,7 @@ class Scene {
   void renderVolume(const RenderContext& ctx);
   void applyToStreamlines();
   void checkStreamlines(const StreamlineLayer& layer) const;
+  void checkProbes(const std::vector<glm::dvec3>& points) const;
   bool streamlinesDrawn() const;
   std::vector<double> tetValues() const;
 
@@ -156,6 +172,9 @@ class Scene {
   SceneState state_;
   Camera camera_;
   std::optional<ScalarView> view_;
+  std::uint64_t viewVersion_ = 0;  ///< counts changes of view_ (what extremes_ was found for)
+  mutable std::optional<Extremes> extremes_;
+  mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
   bool interactive_ = false;
 
   // What changed since the last render().

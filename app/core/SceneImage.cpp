@@ -2,6 +2,7 @@
 #include "SceneImage.hpp"
 
 #include "ReferenceVolumeImage.hpp"
+#include "SceneOverlay.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -15,11 +16,9 @@
 
 namespace volpost::app {
 
-void paintSceneLegend(QImage& image, const Scene& scene) {
-  if (const auto legend = scene.legend()) {
-    QPainter painter(&image);
-    paintLegend(painter, image.rect(), legend->colors, legend->content);
-  }
+void paintSceneOverlay(QImage& image, const Scene& scene) {
+  QPainter painter(&image);
+  paintSceneOverlay(painter, image.rect(), scene);
 }
 
 SceneImage renderSceneImage(Scene& scene, int width, int height) {
@@ -44,7 +43,7 @@ SceneImage renderSceneImage(Scene& scene, int width, int height) {
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   for (int y = 0; y < height; ++y)
     std::memcpy(out.picture.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(width) * 4, std::size_t(width) * 4);
-  paintSceneLegend(out.picture, scene);
+  paintSceneOverlay(out.picture, scene);
   return out;
 }
 
@@ -69,7 +68,7 @@ SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, 
       line[4 * x + 3] = 255;
     }
   }
-  paintSceneLegend(out.picture, scene);
+  paintSceneOverlay(out.picture, scene);
   return out;
 }
 

@@ -30,7 +30,7 @@ SceneImage renderSceneImage(Scene& scene, int width, int height);
 SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, int threads = 0,
                                      const Progress& progress = {});
 
-/// Paints the scene's legend (if any) over an image.
-void paintSceneLegend(QImage& image, const Scene& scene);
+/// Paints the legend, probed points and min/max markers (paintSceneOverlay) over an image.
+void paintSceneOverlay(QImage& image, const Scene& scene);
 
 }  // namespace volpost::app

@@ -268,6 +268,9 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["legend"] = legend;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
+  json points = json::array();
+  for (const glm::dvec3& p : probes) points.push_back(jsonOf(p));
+  out["markers"] = {{"probes", points}, {"extremes", markExtremes}};
   return out.dump(2) + "\n";
 }
 
@@ -349,6 +352,16 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
+  if (const json* markers = r.find(in, "markers")) {
+    r.object(*markers, "markers");
+    if (const json* e = r.find(*markers, "extremes")) s.markExtremes = r.boolean(*e, "markers.extremes");
+    if (const json* probes = r.find(*markers, "probes")) {
+      const json& list = r.array(*probes, "markers.probes");
+      if (list.size() > kMaxProbes) r.fail("markers.probes", "has more than " + std::to_string(kMaxProbes) + " points");
+      for (std::size_t i = 0; i < list.size(); ++i)
+        s.probes.push_back(r.vec3(list[i], "markers.probes[" + std::to_string(i) + "]"));
+    }
+  }
   return s;
 }
 

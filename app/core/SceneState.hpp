@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Everything a picture is made of, as plain data: the model file, the result and step, the
 // camera, the colors, and the layers (boundary surface, volume with its renderer, mode,
-// transfer function, clip planes and box, iso-surfaces; legend). The window's File > Save
+// transfer function, clip planes and box, iso-surfaces; streamlines; probed points and
+// min/max markers; legend). The window's File > Save
 // State writes it, `volpost render --state FILE` reads it: both draw the same picture.
 // Serialized as versioned JSON ("volpost-state", version 1).
 #pragma once
@@ -75,6 +76,9 @@ struct StreamlineLayer {
   }
 };
 
+/// At most this many probed points in a view (and a state file).
+inline constexpr std::size_t kMaxProbes = 10000;
+
 struct SceneState {
   static constexpr int kVersion = 1;
 
@@ -91,6 +95,9 @@ struct SceneState {
   bool legend = true;
   VolumeLayer volume;
   StreamlineLayer streamlines;
+  /// Points probed (the window's Probe panel), marked and numbered in the view.
+  std::vector<glm::dvec3> probes;
+  bool markExtremes = false;  ///< the shown quantity's smallest and largest values marked where they are
 
   /// The file's text. `relativeTo`: a folder; a model path inside it is written relative
   /// to it, so the state and the model can move together.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "Viewport.hpp"
 
+#include "core/SceneOverlay.hpp"
+
 #include <QImage>
 #include <QKeyEvent>
 #include <QPen>
@@ -91,15 +93,14 @@ void Viewport::paintGL() {
 // The legend is painted on the CPU (same code as the headless picture) and drawn as a
 // texture: no QPainter on the GL context, so the core-profile state stays ours.
 void Viewport::drawLegend(int w, int h) {
-  const auto legend = scene_.legend();
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
-  if (!legend && !rake) return;
+  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes()) return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
   image.fill(Qt::transparent);
   {
     QPainter painter(&image);
-    if (legend) paintLegend(painter, rect(), legend->colors, legend->content);
+    paintSceneOverlay(painter, rect(), scene_);
     if (rake) {  // the rake being placed: a line with its seed ends
       painter.setRenderHint(QPainter::Antialiasing);
       painter.setPen(QPen(QColor(230, 120, 20), 2.0));

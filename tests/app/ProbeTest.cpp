@@ -6,6 +6,7 @@
 #include "support/TestSupport.hpp"
 
 #include "core/Probe.hpp"
+#include "core/ScenePick.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -161,4 +162,30 @@ TEST(Probe, EveryNodeOfTheRealQuadraticModelsIsFound) {
     EXPECT_EQ(missed, 0u) << file << ": " << missed << " of " << probed << " nodes not found";
     EXPECT_EQ(worst, 0.0) << file << ": a node's probed U.x differs from its own";
   }
+}
+
+// A click in the view: the pixel's ray meets the model's surface where the picture shows it.
+TEST(ScenePick, TheCentreOfAnAxisViewHitsTheNearFaceAndAMissIsNothing) {
+  const auto bar = ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
+  Camera camera;
+  camera.setView(StandardView::PlusX);  // from +x: the loaded end face x = 10 is in front
+  camera.fit(bar->model().mesh.bounds());
+  const auto hit = pickSurface(*bar, pixelRay(camera, 50.0, 40.0, 100.0, 80.0));
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(hit->point.x, 10.0, 1e-9);
+  EXPECT_NEAR(hit->point.y, 0.5, 1e-9);
+  EXPECT_NEAR(hit->point.z, 0.5, 1e-9);
+  const ProbeResult r = probeAt(*bar, hit->point, 0);
+  ASSERT_TRUE(r.inside()) << "a picked surface point probes";
+  EXPECT_EQ(r.cell, hit->cell) << "in the element whose face was hit";
+  // The corner of the picture looks past the bar.
+  EXPECT_FALSE(pickSurface(*bar, pixelRay(camera, 1.0, 1.0, 100.0, 80.0)));
+  // Orthographic too, from below.
+  camera.setView(StandardView::MinusZ);
+  camera.setProjection(Camera::Projection::Orthographic);
+  camera.fit(bar->model().mesh.bounds());
+  const auto below = pickSurface(*bar, pixelRay(camera, 50.0, 40.0, 100.0, 80.0));
+  ASSERT_TRUE(below);
+  EXPECT_NEAR(below->point.z, 0.0, 1e-9);
+  EXPECT_NEAR(below->point.x, 5.0, 1e-6);
 }

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+#include "SceneOverlay.hpp"
+
+#include "Probe.hpp"
+
+#include <QFontMetrics>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <glm/mat4x4.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace volpost::app {
+
+namespace {
+
+// Numbers shown next to markers: four significant digits, as the legend shows them.
+QString shortNumber(double v) { return std::isfinite(v) ? QString::number(v, 'g', 5) : QString("no value"); }
+
+// Labels placed so far in this picture: a new one moves down past any it would cover.
+using PlacedLabels = std::vector<QRectF>;
+
+// A label in a rounded box next to a marker, kept inside the picture and off the others.
+void drawLabel(QPainter& painter, const QRect& area, QPointF at, const QString& text, const QColor& edge,
+               PlacedLabels& placed) {
+  const QFontMetrics fm(painter.font());
+  QRectF box(at + QPointF(8, -fm.height() - 6), QSizeF(fm.horizontalAdvance(text) + 8, fm.height() + 4));
+  if (box.right() > area.right() - 2) box.moveRight(at.x() - 8);
+  if (box.top() < area.top() + 2) box.moveTop(at.y() + 8);
+  for (int tries = 0; tries < 8; ++tries) {
+    const auto covered = std::find_if(placed.begin(), placed.end(), [&](const QRectF& r) { return r.intersects(box); });
+    if (covered == placed.end()) break;
+    box.moveTop(covered->bottom() + 2);
+  }
+  placed.push_back(box);
+  painter.setPen(QPen(edge, 1.0));
+  painter.setBrush(QColor(255, 255, 255, 220));
+  painter.drawRoundedRect(box, 3, 3);
+  painter.setPen(QColor(20, 20, 20));
+  painter.drawText(box, Qt::AlignCenter, text);
+}
+
+enum class MarkerShape { Dot, Up, Down };
+
+struct Marker {
+  QPointF at;
+  QString text;  ///< empty: no label
+  QColor color;
+  MarkerShape shape = MarkerShape::Dot;
+};
+
+void drawMarkerShape(QPainter& painter, const Marker& m) {
+  painter.setPen(QPen(Qt::white, 1.5));
+  painter.setBrush(m.color);
+  if (m.shape == MarkerShape::Dot) {
+    painter.drawEllipse(m.at, 4.5, 4.5);
+    return;
+  }
+  QPainterPath triangle;  // pointing up for a max, down for a min
+  const double s = m.shape == MarkerShape::Up ? -7.0 : 7.0;
+  triangle.moveTo(m.at + QPointF(0, s));
+  triangle.lineTo(m.at + QPointF(-6, -s * 0.6));
+  triangle.lineTo(m.at + QPointF(6, -s * 0.6));
+  triangle.closeSubpath();
+  painter.drawPath(triangle);
+}
+
+void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
+  const auto& probes = scene.probes();
+  if (probes.empty() || !scene.session()) return;
+  const bool labels = probes.size() <= 50;  // more would hide the model
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const auto at = projectToPicture(scene.camera(), probes[i], area.width(), area.height());
+    if (!at) continue;
+    Marker m{QPointF(area.left() + at->x, area.top() + at->y), {}, QColor(20, 90, 200), MarkerShape::Dot};
+    if (labels) {
+      m.text = QString("%1").arg(i + 1);
+      if (scene.view()) {
+        const ProbeResult r = probeAt(*scene.session(), probes[i], scene.state().step);
+        const auto v = r.value(scene.view()->quantity.key());
+        m.text += r.inside() && v ? QString(": %1").arg(shortNumber(*v)) : QString(": outside");
+      }
+    }
+    markers.push_back(m);
+  }
+}
+
+void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
+  if (!scene.marksExtremes()) return;
+  const auto e = scene.extremes();
+  if (!e) return;
+  const auto add = [&](const glm::dvec3& where, const QString& text, const QColor& color, MarkerShape shape) {
+    if (const auto at = projectToPicture(scene.camera(), where, area.width(), area.height()))
+      markers.push_back({QPointF(area.left() + at->x, area.top() + at->y), text, color, shape});
+  };
+  add(e->maxAt, QString("max %1").arg(shortNumber(e->max)), QColor(200, 30, 30), MarkerShape::Up);
+  add(e->minAt, QString("min %1").arg(shortNumber(e->min)), QColor(30, 60, 200), MarkerShape::Down);
+}
+
+}  // namespace
+
+std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height) {
+  if (!(width > 0.0 && height > 0.0)) return std::nullopt;
+  const glm::dmat4 m = camera.projectionMatrix(width / height) * camera.viewMatrix();
+  const glm::dvec4 clip = m * glm::dvec4(point, 1.0);
+  if (!(clip.w > 0.0)) return std::nullopt;
+  const glm::dvec2 ndc(clip.x / clip.w, clip.y / clip.w);
+  return glm::dvec2((ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height);
+}
+
+void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene) {
+  painter.save();
+  painter.setRenderHint(QPainter::Antialiasing);
+  QFont font = painter.font();
+  font.setPixelSize(std::clamp(area.height() / 36, 8, 13));
+  painter.setFont(font);
+  std::vector<Marker> markers;
+  addExtremes(markers, area, scene);
+  addProbes(markers, area, scene);
+  PlacedLabels placed;  // the markers first: no label covers one
+  for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7), QSizeF(14, 14)));
+  for (const Marker& m : markers) drawMarkerShape(painter, m);
+  for (const Marker& m : markers)
+    if (!m.text.isEmpty()) drawLabel(painter, area, m.at, m.text, m.color, placed);
+  painter.restore();
+  if (const auto legend = scene.legend()) paintLegend(painter, area, legend->colors, legend->content);
+}
+
+}  // namespace volpost::app

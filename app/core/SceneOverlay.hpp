@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: MIT
+// What is painted over the rendered picture, in the window and in `volpost render` alike:
+// the legend, the probed points (numbered, with the shown quantity's value there) and the
+// min/max markers.
+#pragma once
+
+#include "Scene.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <optional>
+
+class QPainter;
+class QRect;
+
+namespace volpost::app {
+
+/// Where a model point lands in a picture of `width` x `height` (pixels, top left origin);
+/// nullopt behind the eye.
+std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height);
+
+void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene);
+
+}  // namespace volpost::app

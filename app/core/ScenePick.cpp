@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: MIT
+#include "ScenePick.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace volpost::app {
+
+PickRay pixelRay(const Camera& camera, double x, double y, double width, double height) {
+  const double aspect = height > 0.0 ? width / height : 1.0;
+  const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
+  const double nx = 2.0 * x / width - 1.0, ny = 1.0 - 2.0 * y / height;
+  const glm::dvec4 n = toModel * glm::dvec4(nx, ny, -1.0, 1.0), f = toModel * glm::dvec4(nx, ny, 1.0, 1.0);
+  const glm::dvec3 a = glm::dvec3(n) / n.w, b = glm::dvec3(f) / f.w;
+  return {a, glm::normalize(b - a)};
+}
+
+std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray) {
+  const BoundarySurface& surface = session.surface();
+  const Mesh& mesh = session.model().mesh;
+  std::optional<SurfacePick> best;
+  double nearest = std::numeric_limits<double>::infinity();
+  // Moller-Trumbore on every boundary triangle, in double on the model's own node
+  // positions (the surface mesh keeps float copies for drawing).
+  for (const auto face : surface.mesh.faces()) {
+    glm::dvec3 v[3];
+    int k = 0;
+    for (const auto vertex : surface.mesh.fv_range(face)) v[k++] = mesh.nodes[surface.mesh.property(surface.nodeOfVertex, vertex)];
+    const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
+    const glm::dvec3 p = glm::cross(ray.direction, e2);
+    const double det = glm::dot(e1, p);
+    if (!(std::abs(det) > 0.0)) continue;
+    const glm::dvec3 s = ray.origin - v[0];
+    const double u = glm::dot(s, p) / det;
+    if (u < 0.0 || u > 1.0) continue;
+    const glm::dvec3 q = glm::cross(s, e1);
+    const double w = glm::dot(ray.direction, q) / det;
+    if (w < 0.0 || u + w > 1.0) continue;
+    const double t = glm::dot(e2, q) / det;
+    if (t > 0.0 && t < nearest) {
+      nearest = t;
+      best = SurfacePick{ray.origin + t * ray.direction, surface.mesh.property(surface.cellOfFace, face), t};
+    }
+  }
+  return best;
+}
+
+}  // namespace volpost::app
