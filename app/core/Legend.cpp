@@ -29,22 +29,44 @@ std::vector<double> niceTicks(double min, double max, int target) {
   return ticks;
 }
 
+namespace {
+
+QFont legendFont(QFont font, const QRect& area) {
+  font.setPixelSize(std::clamp(area.height() / 32, 8, 14));
+  return font;
+}
+
+int labelWidthOf(const QFontMetrics& fm, const std::vector<double>& ticks) {
+  int width = 0;
+  for (double t : ticks) width = std::max(width, fm.horizontalAdvance(QString::number(t, 'g', 4)));
+  return width;
+}
+
+int barWidthOf(const QRect& area) { return std::max(8, area.width() / 40); }
+
+}  // namespace
+
+int legendWidth(const QRect& area) {
+  // The widest label four significant digits can give: the strip does not change with the
+  // numbers, so the model keeps its place and size when the quantity or step changes.
+  const QFontMetrics fm(legendFont(QFont(), area));
+  return fm.horizontalAdvance(QStringLiteral("-8.888e+88")) + 12 + barWidthOf(area) + 8;
+}
+
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& c) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing, true);
-  QFont font = painter.font();
-  font.setPixelSize(std::clamp(area.height() / 32, 8, 14));
+  const QFont font = legendFont(painter.font(), area);
   painter.setFont(font);
   const QFontMetrics fm(font);
-  const int barWidth = std::max(8, area.width() / 40);
+  const int barWidth = barWidthOf(area);
   const int top = area.top() + fm.height() * 3, bottom = area.bottom() - fm.height() * 2;
   if (bottom - top < 20) {
     painter.restore();
     return;
   }
   const auto ticks = niceTicks(c.min, c.max);
-  int labelWidth = 0;
-  for (double t : ticks) labelWidth = std::max(labelWidth, fm.horizontalAdvance(QString::number(t, 'g', 4)));
+  const int labelWidth = labelWidthOf(fm, ticks);
   const int barRight = area.right() - labelWidth - 12;
   const QRect bar(barRight - barWidth, top, barWidth, bottom - top);
 

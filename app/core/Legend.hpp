@@ -21,6 +21,10 @@ struct LegendContent {
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& content);
 
+/// The widest the legend paintLegend draws in `area` can be, pixels from its right edge
+/// (the bar and its tick labels; the title lines above it are right-aligned text).
+int legendWidth(const QRect& area);
+
 /// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
 std::vector<double> niceTicks(double min, double max, int target = 6);
 

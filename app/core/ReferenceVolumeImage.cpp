@@ -13,7 +13,7 @@ optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int 
   optics::RaySettings settings;
   settings.clipPlanes = scene.volume().allClipPlanes();
   settings.isoSurfaces = scene.volume().isoSurfaces;
-  return optics::renderReference(volume, scene.transferFunction(), scene.camera(), width, height, settings, progress,
+  return optics::renderReference(volume, scene.transferFunction(), scene.pictureCamera(width, height), width, height, settings, progress,
                                  threads);
 }
 

@@ -301,6 +301,14 @@ std::optional<LegendPicture> Scene::legend() const {
   return LegendPicture{ColorMap::named(state_.colorMap), content};
 }
 
+Camera Scene::pictureCamera(double width, double height) const {
+  Camera camera = camera_;
+  if (!legend() || !(width > 0.0) || !(height > 0.0)) return camera;
+  const QRect area(0, 0, int(std::lround(width)), int(std::lround(height)));
+  camera.setRightMargin(std::min(0.4, legendWidth(area) / width));
+  return camera;
+}
+
 std::vector<double> Scene::tetValues() const { return session_->tetValues(*view_); }
 
 // ---- streamlines ----
@@ -529,7 +537,7 @@ void Scene::applyToVolume() {
 void Scene::render(const RenderContext& target) {
   if (!initialized_) return;
   RenderContext ctx = target;
-  ctx.camera = camera_;
+  ctx.camera = pictureCamera(ctx.width / devicePixelRatio_, ctx.height / devicePixelRatio_);
   applyToBoundary();
   applyToStreamlines();
   streamlineRenderer_.setClipPlanes(state_.volume.allClipPlanes());

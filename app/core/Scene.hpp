@@ -142,6 +142,13 @@ class Scene {
   bool volumeShown() const { return state_.volume.shown; }
   const VolumeLayer& volume() const { return state_.volume; }
   std::optional<LegendPicture> legend() const;
+  /// The camera for a picture of this size (logical pixels): the view keeps clear of the
+  /// legend's strip at the right when the legend is shown. Everything that draws, projects
+  /// or picks in a picture uses it, so markers and picks land where the model is drawn.
+  Camera pictureCamera(double width, double height) const;
+  /// Device pixels per logical pixel of the pictures render() draws (the window's HiDPI
+  /// factor; 1 headless): the legend strip is measured in logical pixels.
+  void setDevicePixelRatio(double ratio) { devicePixelRatio_ = ratio > 0.0 ? ratio : 1.0; }
   glm::vec3 background() const { return boundary_.background; }
 
   // ---- GL (a context current) ----
@@ -171,6 +178,7 @@ class Scene {
   std::shared_ptr<const ModelSession> session_;
   SceneState state_;
   Camera camera_;
+  double devicePixelRatio_ = 1.0;
   std::optional<ScalarView> view_;
   std::uint64_t viewVersion_ = 0;  ///< counts changes of view_ (what extremes_ was found for)
   mutable std::optional<Extremes> extremes_;

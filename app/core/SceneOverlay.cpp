@@ -71,8 +71,9 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
   const auto& probes = scene.probes();
   if (probes.empty() || !scene.session()) return;
   const bool labels = probes.size() <= 50;  // more would hide the model
+  const Camera camera = scene.pictureCamera(area.width(), area.height());
   for (std::size_t i = 0; i < probes.size(); ++i) {
-    const auto at = projectToPicture(scene.camera(), probes[i], area.width(), area.height());
+    const auto at = projectToPicture(camera, probes[i], area.width(), area.height());
     if (!at) continue;
     Marker m{QPointF(area.left() + at->x, area.top() + at->y), {}, QColor(20, 90, 200), MarkerShape::Dot};
     if (labels) {
@@ -91,8 +92,9 @@ void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& s
   if (!scene.marksExtremes()) return;
   const auto e = scene.extremes();
   if (!e) return;
+  const Camera camera = scene.pictureCamera(area.width(), area.height());
   const auto add = [&](const glm::dvec3& where, const QString& text, const QColor& color, MarkerShape shape) {
-    if (const auto at = projectToPicture(scene.camera(), where, area.width(), area.height()))
+    if (const auto at = projectToPicture(camera, where, area.width(), area.height()))
       markers.push_back({QPointF(area.left() + at->x, area.top() + at->y), text, color, shape});
   };
   add(e->maxAt, QString("max %1").arg(shortNumber(e->max)), QColor(200, 30, 30), MarkerShape::Up);

@@ -96,13 +96,30 @@ glm::dmat4 Camera::viewMatrix(const glm::dvec3& origin) const {
 }
 
 glm::dmat4 Camera::projectionMatrix(double aspect) const {
+  // The view is framed in the picture left of the right margin: project for that part's
+  // shape, then squeeze x into it.
+  const double framed = aspect * (1.0 - rightMargin_);
+  // The angle of view spans the narrower side: a tall picture shows the model whole too.
+  const double widen = framed < 1.0 ? 1.0 / framed : 1.0;
   const double far = distance_ + 2.0 * radius_;
+  glm::dmat4 projection;
   if (projection_ == Projection::Orthographic) {
-    const double h = 0.5 * viewHeight(), w = h * aspect;
-    return glm::ortho(-w, w, -h, h, distance_ - 2.0 * radius_, far);
+    const double h = 0.5 * viewHeight() * widen, w = h * framed;
+    projection = glm::ortho(-w, w, -h, h, distance_ - 2.0 * radius_, far);
+  } else {
+    const double near = std::max(distance_ - 2.0 * radius_, far * 1e-4);
+    const double fov = 2.0 * std::atan(std::tan(glm::radians(fovY_) * 0.5) * widen);
+    projection = glm::perspective(fov, framed, near, far);
   }
-  const double near = std::max(distance_ - 2.0 * radius_, far * 1e-4);
-  return glm::perspective(glm::radians(fovY_), aspect, near, far);
+  if (rightMargin_ == 0.0) return projection;
+  glm::dmat4 squeeze(1.0);  // x_ndc -> (1 - m) x_ndc - m: [-1, 1] onto [-1, 1 - 2m]
+  squeeze[0][0] = 1.0 - rightMargin_;
+  squeeze[3][0] = -rightMargin_;
+  return squeeze * projection;
+}
+
+void Camera::setRightMargin(double fraction) {
+  rightMargin_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 0.5) : 0.0;
 }
 
 }  // namespace volpost

@@ -57,3 +57,37 @@ TEST(Camera, OrbitKeepsDistanceAndZoomMovesCloser) {
   c.pan(0.5, 0.0);
   EXPECT_GT(glm::length(c.target()), 0.0);
 }
+
+// A fitted model stays whole in a tall picture (the angle spans the narrower side) and
+// keeps clear of a right margin (the legend's strip), in both projections.
+TEST(Camera, FittedModelStaysInsideTallPicturesAndLeftOfTheMargin) {
+  for (auto projection : {Camera::Projection::Perspective, Camera::Projection::Orthographic}) {
+    Camera c;
+    c.setProjection(projection);
+    Bounds b;
+    b.extend({-1, -1, -1});
+    b.extend({1, 1, 1});
+    c.fit(b);
+    for (double aspect : {0.25, 1.0, 3.0})
+      for (double margin : {0.0, 0.3}) {
+        c.setRightMargin(margin);
+        const glm::dmat4 m = c.projectionMatrix(aspect) * c.viewMatrix();
+        for (double x : {-1.0, 1.0})
+          for (double y : {-1.0, 1.0})
+            for (double z : {-1.0, 1.0}) {
+              const glm::dvec4 p = m * glm::dvec4(x, y, z, 1.0);
+              EXPECT_LE(p.x / p.w, 1.0 - 2.0 * margin) << "aspect " << aspect << " margin " << margin;
+              EXPECT_GE(p.x / p.w, -1.0);
+              EXPECT_LE(std::abs(p.y / p.w), 1.0);
+            }
+        // The target sits in the middle of the framed part.
+        const glm::dvec4 t = m * glm::dvec4(c.target(), 1.0);
+        EXPECT_NEAR(t.x / t.w, -margin, 1e-12);
+      }
+  }
+  Camera c;
+  c.setRightMargin(2.0);
+  EXPECT_EQ(c.rightMargin(), 0.5);
+  c.setRightMargin(std::nan(""));
+  EXPECT_EQ(c.rightMargin(), 0.0);
+}

@@ -38,7 +38,8 @@ class Camera {
 
   void setProjection(Projection p) { projection_ = p; }
   Projection projection() const { return projection_; }
-  /// Vertical angle of view, degrees, in (0, 180). Throws std::invalid_argument otherwise.
+  /// Angle of view across the picture's narrower side (the height of a wide picture, the
+  /// width of a tall one), degrees, in (0, 180). Throws std::invalid_argument otherwise.
   void setFieldOfView(double degrees);
   double fieldOfView() const { return fovY_; }
 
@@ -54,10 +55,16 @@ class Camera {
   glm::dmat4 viewMatrix(const glm::dvec3& origin = glm::dvec3(0.0)) const;
   glm::dmat4 projectionMatrix(double aspect) const;
 
+  /// A strip at the right of the picture, this fraction of its width (0..0.5), kept for the
+  /// legend: the view is framed in the rest of the picture (an off-centre projection).
+  void setRightMargin(double fraction);
+  double rightMargin() const { return rightMargin_; }
+
  private:
   glm::dvec3 target_{0.0};
   glm::dquat rotation_{1.0, 0.0, 0.0, 0.0};  ///< camera-to-world rotation
   double distance_ = 1.0;
+  double rightMargin_ = 0.0;
   double radius_ = 1.0;  ///< scene radius, sets clip planes
   double fovY_ = 30.0;
   Projection projection_ = Projection::Perspective;
