@@ -173,10 +173,14 @@ ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::s
   r.natural = found.natural;
   std::optional<NodeIndex> atNode;
   const double nodeTolerance = kOnMeshTolerance * session.locator().modelSize();
+  double nearest = INFINITY;
   for (NodeIndex n : mesh.cellNodes(found.cell)) {
     r.nodeIds.push_back(mesh.nodeId(n));
-    if (!atNode && glm::length(mesh.nodes[n] - point) <= nodeTolerance) atNode = n;
+    const double d = glm::length(mesh.nodes[n] - point);
+    if (!atNode && d <= nodeTolerance) atNode = n;
+    if (d < nearest) nearest = d, r.nearestNode = n;
   }
+  r.nearestNodeId = mesh.nodeId(r.nearestNode);
   if (atNode) r.nodeId = mesh.nodeId(*atNode);
   const auto weights = nodalWeights(mesh, session.tetrahedra(), found);
   for (const auto& field : session.model().fields)

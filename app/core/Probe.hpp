@@ -48,6 +48,8 @@ struct ProbeResult {
   CellType cellType = CellType::Tet4;
   std::vector<std::int64_t> nodeIds;    ///< the element's nodes, file ids
   std::optional<std::int64_t> nodeId;   ///< the point is this node (within the tolerance)
+  std::size_t nearestNode = 0;          ///< the element's node nearest the point (0-based index)
+  std::int64_t nearestNodeId = 0;       ///< and its id
   glm::dvec3 natural{0.0};              ///< natural coordinates in the element (Isoparametric)
   std::size_t step = 0;
   std::vector<ProbedField> fields;

@@ -6,6 +6,7 @@
 #include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
+#include "ProbeController.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
@@ -143,6 +144,7 @@ void MainWindow::buildActions() {
   legendAction_->setCheckable(true);
   legendAction_->setChecked(true);
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
+  probes_ = new ProbeController(*this, *viewport_, *view, [this] { return std::shared_ptr<const ModelSession>(session_); });
   buildVolumeMenu(view);
 
   QMenu* tools = menuBar()->addMenu("&Tools");
@@ -508,12 +510,18 @@ void MainWindow::buildPanels() {
   dock->setWidget(modelInfo_);
   addDockWidget(Qt::LeftDockWidgetArea, dock);
   resizeDocks({dock}, {220}, Qt::Horizontal);
+  bool tabifiedProbes = false;
   for (PanelPlugin* panel : plugins_.panelPlugins()) {
     auto* d = new QDockWidget(panel->panelTitle(), this);
     d->setObjectName("panel:" + panel->panelTitle());
     d->setWidget(panel->createPanel(*this, d));
     addDockWidget(Qt::RightDockWidgetArea, d);
     resizeDocks({d}, {360}, Qt::Horizontal);  // the view keeps most of the window
+    if (probes_ && !tabifiedProbes) {  // the Probe panel shares this place, a tab away
+      tabifyDockWidget(d, probes_->dock());
+      d->raise();
+      tabifiedProbes = true;
+    }
   }
 }
 
@@ -720,6 +728,7 @@ double MainWindow::modelSize() const { return session_ ? session_->model().mesh.
 double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStats().lastTransferFunctionMs; }
 
 void MainWindow::notifyPanels() {
+  if (probes_) probes_->refresh();
   for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
 }
 
@@ -850,6 +859,7 @@ void MainWindow::syncControlsToScene() {
   check(findChild<QAction*>("renderer:" + QString::fromStdString(state.volume.renderer)), true);
   check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
   if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);
+  probes_->syncToScene();
 }
 
 void MainWindow::saveImage() {

@@ -27,6 +27,7 @@ class VolumeRenderer;
 
 namespace volpost::app {
 
+class ProbeController;
 class Viewport;
 
 class MainWindow : public QMainWindow, public PanelHost {
@@ -116,6 +117,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
   QAction* streamlinesAction_ = nullptr;
+  ProbeController* probes_ = nullptr;
   bool tracing_ = false;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key

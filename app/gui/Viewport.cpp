@@ -2,6 +2,7 @@
 #include "Viewport.hpp"
 
 #include "core/SceneOverlay.hpp"
+#include "core/ScenePick.hpp"
 
 #include <QImage>
 #include <QKeyEvent>
@@ -78,6 +79,7 @@ void Viewport::paintGL() {
   ctx.width = int(std::lround(width() * dpr));
   ctx.height = int(std::lround(height() * dpr));
   ctx.framebuffer = defaultFramebufferObject();
+  scene_.setDevicePixelRatio(dpr);
   try {
     scene_.render(ctx);
   } catch (const std::exception& e) {
@@ -120,12 +122,12 @@ void Viewport::setRakeMode(bool on) {
   rakeMode_ = on;
   rakeStart_.reset();
   rakeEnd_.reset();
-  setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+  setCursor(on ? Qt::CrossCursor : probeMode_ ? Qt::PointingHandCursor : Qt::ArrowCursor);
   update();
 }
 
 glm::dvec3 Viewport::pointInTargetPlane(const QPointF& pixel) const {
-  const Camera& camera = scene_.camera();
+  const Camera camera = scene_.pictureCamera(width(), height());
   const double aspect = height() > 0 ? double(width()) / double(height()) : 1.0;
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
   const double x = 2.0 * pixel.x() / width() - 1.0, y = 1.0 - 2.0 * pixel.y() / height();
@@ -136,8 +138,23 @@ glm::dvec3 Viewport::pointInTargetPlane(const QPointF& pixel) const {
   return a + t * (b - a);
 }
 
+void Viewport::setProbeMode(bool on) {
+  probeMode_ = on;
+  setMouseTracking(on);
+  setCursor(on ? Qt::PointingHandCursor : Qt::ArrowCursor);
+  if (!on && hoverTimer_) hoverTimer_->stop();
+}
+
+std::optional<glm::dvec3> Viewport::surfacePointAt(const QPointF& pixel) const {
+  if (!scene_.session()) return std::nullopt;
+  const auto hit = pickSurface(*scene_.session(), pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()));
+  if (!hit) return std::nullopt;
+  return hit->point;
+}
+
 void Viewport::mousePressEvent(QMouseEvent* event) {
   lastMouse_ = event->position().toPoint();
+  if (event->button() == Qt::LeftButton) pressedAt_ = event->position();
   if (rakeMode_ && event->button() == Qt::LeftButton) {
     rakeStart_ = rakeEnd_ = event->position();
     update();
@@ -145,6 +162,13 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+  const bool click = event->button() == Qt::LeftButton && pressedAt_ &&
+                     (event->position() - *pressedAt_).manhattanLength() < 4.0;
+  if (event->button() == Qt::LeftButton) pressedAt_.reset();
+  if (probeMode_ && click && !rakeMode_ && !(event->modifiers() & Qt::ControlModifier)) {
+    if (const auto p = surfacePointAt(event->position())) emit picked(*p);
+    return;
+  }
   if (!rakeMode_ || !rakeStart_ || event->button() != Qt::LeftButton) return;
   const QPointF a = *rakeStart_, b = event->position();
   setRakeMode(false);
@@ -162,6 +186,20 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
+  if (probeMode_ && event->buttons() == Qt::NoButton) {  // hovering: pick when the mouse rests
+    hoverAt_ = event->position().toPoint();
+    if (!hoverTimer_) {
+      hoverTimer_ = new QTimer(this);
+      hoverTimer_->setSingleShot(true);
+      connect(hoverTimer_, &QTimer::timeout, this, [this] {
+        if (!probeMode_ || !underMouse()) return;
+        const auto p = surfacePointAt(hoverAt_);
+        emit hovered(mapToGlobal(hoverAt_), p.has_value(), p.value_or(glm::dvec3(0.0)));
+      });
+    }
+    hoverTimer_->start(120);
+    return;
+  }
   if (rakeMode_ && rakeStart_) {
     rakeEnd_ = event->position();
     update();

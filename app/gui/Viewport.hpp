@@ -11,6 +11,8 @@
 #include <QOpenGLWidget>
 #include <QPoint>
 
+class QTimer;
+
 #include <optional>
 
 namespace volpost::app {
@@ -38,6 +40,13 @@ class Viewport : public QOpenGLWidget {
   /// The point of that plane under a pixel of the widget.
   glm::dvec3 pointInTargetPlane(const QPointF& pixel) const;
 
+  /// Probe mode: a left click (no drag) on the model emits picked() with the surface point
+  /// under it; resting the mouse emits hovered(). Drags still orbit.
+  void setProbeMode(bool on);
+  bool probeMode() const { return probeMode_; }
+  /// The model's surface point under a pixel of the widget, if any.
+  std::optional<glm::dvec3> surfacePointAt(const QPointF& pixel) const;
+
   VolumeStats volumeStats() const { return scene_.volumeStats(); }
   /// Tets on the GPU (fewer than the model's when a clip box culls them).
   std::size_t uploadedTetCount() const { return volumeStats().tetrahedra; }
@@ -46,6 +55,9 @@ class Viewport : public QOpenGLWidget {
   void glInfo(const QString& description);
   void renderFailed(const QString& message);
   void rakePlaced(glm::dvec3 from, glm::dvec3 to);
+  void picked(glm::dvec3 point);
+  /// The mouse rests over the model at `point` (hit) or off it (not hit).
+  void hovered(QPoint globalPosition, bool hit, glm::dvec3 point);
 
  protected:
   void initializeGL() override;
@@ -66,6 +78,10 @@ class Viewport : public QOpenGLWidget {
   QPoint lastMouse_;
   bool rakeMode_ = false;
   std::optional<QPointF> rakeStart_, rakeEnd_;  ///< the rake being drawn, widget pixels
+  bool probeMode_ = false;
+  std::optional<QPointF> pressedAt_;  ///< where the left button went down (a click or a drag)
+  QTimer* hoverTimer_ = nullptr;       ///< hover picks wait for the mouse to rest
+  QPoint hoverAt_;
 };
 
 }  // namespace volpost::app

@@ -2,6 +2,7 @@
 // The window under a (virtual) X display: open a model, switch the result, take a
 // screenshot, fail to open a bad file without losing the model.
 #include "gui/MainWindow.hpp"
+#include "gui/ProbePanel.hpp"
 #include "gui/Viewport.hpp"
 
 #include <QApplication>
@@ -11,6 +12,8 @@
 #include <QFile>
 #include <QProcess>
 #include <QDockWidget>
+#include <QLineEdit>
+#include <QTableWidget>
 #include <QMouseEvent>
 #include <QSettings>
 #include <QSignalSpy>
@@ -276,6 +279,57 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("streamlinesAction")->setChecked(false);
     QVERIFY(!view->scene().streamlines().shown);
     view->scene().setSurfaceOpacity(1.0);
+    window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
+  void probingByClickAndByTypingListsTheValues() {
+    // View > Probe, then a click on the middle of the bar seen from +y: one probed point
+    // on its side face, listed with its element; a typed point adds a second.
+    Viewport* view = window_->viewport();
+    view->setStandardView(StandardView::PlusY);
+    QVERIFY(view->scene().probes().empty());
+    window_->findChild<QAction*>("probeAction")->setChecked(true);
+    QVERIFY(view->probeMode());
+    auto* dock = window_->findChild<QDockWidget*>("probeDock");
+    QVERIFY(dock && dock->isVisible());
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->rect().center());
+    QCOMPARE(view->scene().probes().size(), std::size_t(1));
+    const glm::dvec3 hit = view->scene().probes()[0];
+    QVERIFY2(std::abs(hit.y - 1.0) < 1e-9, "on the face y = 1, facing the viewer from +y");
+    auto* panel = window_->findChild<ProbePanel*>("probePanel");
+    QVERIFY(panel);
+    QCOMPARE(panel->results().size(), std::size_t(1));
+    QVERIFY(panel->results()[0].inside());
+    auto* typed = window_->findChild<QLineEdit*>("probeTyped");
+    typed->setText("5, 0.5, 0.5");
+    QTest::keyClick(typed, Qt::Key_Return);
+    QCOMPARE(panel->results().size(), std::size_t(2));
+    QVERIFY(std::abs(*panel->results()[1].value("S.xx") - 100.0) < 0.05);
+    QCOMPARE(window_->findChild<QTableWidget*>("probePicks")->rowCount(), 2);
+    QVERIFY(window_->findChild<QTableWidget*>("probeDetails")->rowCount() > 10);  // every quantity
+    const std::string table = panel->table(',');
+    QVERIFY(table.rfind("x,y,z,element,element_type,node,", 0) == 0);
+    // Min and max marked: the picture changes; the state keeps both.
+    view->fit();
+    const QImage before = view->grabFramebuffer();
+    window_->findChild<QAction*>("extremesAction")->setChecked(true);
+    QVERIFY(view->scene().marksExtremes());
+    const QImage after = view->grabFramebuffer();
+    QVERIFY(after != before);
+    const SceneState state = view->scene().state();
+    QCOMPARE(state.probes.size(), std::size_t(2));
+    QVERIFY(state.markExtremes);
+    // A drag still orbits and adds nothing.
+    QTest::mousePress(view, Qt::LeftButton, {}, view->rect().center());
+    QMouseEvent move(QEvent::MouseMove, QPointF(view->rect().center() + QPoint(40, 10)),
+                     view->mapToGlobal(QPointF(view->rect().center() + QPoint(40, 10))), Qt::LeftButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+    QTest::mouseRelease(view, Qt::LeftButton, {}, view->rect().center() + QPoint(40, 10));
+    QCOMPARE(view->scene().probes().size(), std::size_t(2));
+    window_->findChild<QAction*>("probeAction")->setChecked(false);
+    window_->findChild<QAction*>("extremesAction")->setChecked(false);
+    view->scene().setProbes({});
     window_->viewport()->setStandardView(StandardView::Isometric);
   }
 

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+#include "ProbeController.hpp"
+
+#include "../core/Probe.hpp"
+#include "../core/ProbeTable.hpp"
+#include "ProbePanel.hpp"
+#include "Viewport.hpp"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMenu>
+#include <QStatusBar>
+#include <QToolTip>
+
+namespace volpost::app {
+
+ProbeController::ProbeController(QMainWindow& window, Viewport& viewport, QMenu& viewMenu, SessionGetter session)
+    : QObject(&window), window_(window), viewport_(viewport), session_(std::move(session)) {
+  dock_ = new QDockWidget("Probe", &window);
+  dock_->setObjectName("probeDock");
+  panel_ = new ProbePanel(dock_);
+  panel_->setObjectName("probePanel");
+  dock_->setWidget(panel_);
+  window.addDockWidget(Qt::RightDockWidgetArea, dock_);
+  dock_->hide();  // until the first probe
+
+  viewMenu.addSeparator();
+  probeAction_ = viewMenu.addAction("&Probe");
+  probeAction_->setObjectName("probeAction");
+  probeAction_->setCheckable(true);
+  probeAction_->setShortcut(QKeySequence(Qt::Key_I));
+  probeAction_->setStatusTip("Click the model to probe it; rest the mouse on it to see the element and value");
+  connect(probeAction_, &QAction::toggled, this, [this](bool on) {
+    viewport_.setProbeMode(on);
+    if (on) {
+      dock_->show();
+      dock_->raise();
+      window_.statusBar()->showMessage("Probe: click the model to add a point; rest the mouse to see the value there");
+    }
+  });
+  extremesAction_ = viewMenu.addAction("Mark Min and &Max");
+  extremesAction_->setObjectName("extremesAction");
+  extremesAction_->setCheckable(true);
+  extremesAction_->setShortcut(QKeySequence(Qt::Key_M));
+  connect(extremesAction_, &QAction::toggled, this, [this](bool on) {
+    viewport_.scene().setMarkExtremes(on);
+    viewport_.update();
+  });
+
+  connect(&viewport_, &Viewport::picked, this, &ProbeController::addPoint);
+  connect(&viewport_, &Viewport::hovered, this, &ProbeController::showHover);
+  connect(panel_, &ProbePanel::pointsChanged, this, &ProbeController::setPoints);
+  connect(panel_, &ProbePanel::message, this, [this](const QString& text) { window_.statusBar()->showMessage(text); });
+}
+
+void ProbeController::refresh() {
+  const Scene& scene = viewport_.scene();
+  panel_->showProbes(session_(), scene.probes(), scene.state().step, scene.view() ? scene.view()->quantity.key() : "");
+  if (!scene.probes().empty() && !dock_->isVisible()) dock_->show();
+}
+
+void ProbeController::syncToScene() {
+  const QSignalBlocker block(extremesAction_);
+  extremesAction_->setChecked(viewport_.scene().marksExtremes());
+  refresh();
+}
+
+void ProbeController::setPoints(const std::vector<glm::dvec3>& points) {
+  try {
+    viewport_.scene().setProbes(points);
+  } catch (const std::exception& e) {
+    window_.statusBar()->showMessage(e.what());
+    return;
+  }
+  refresh();
+  viewport_.update();
+}
+
+void ProbeController::addPoint(const glm::dvec3& point) {
+  std::vector<glm::dvec3> points = viewport_.scene().probes();
+  points.push_back(point);
+  setPoints(points);
+  const auto& results = panel_->results();
+  if (!results.empty() && results.back().inside())
+    window_.statusBar()->showMessage(QString("Probed point %1 in element %2").arg(results.size()).arg(results.back().cellId));
+}
+
+// The tooltip of a resting mouse: the element, the nearest node and the shown value.
+void ProbeController::showHover(QPoint globalPosition, bool hit, const glm::dvec3& point) {
+  const auto session = session_();
+  if (!hit || !session) {
+    QToolTip::hideText();
+    return;
+  }
+  const Scene& scene = viewport_.scene();
+  try {
+    const ProbeResult r = probeAt(*session, point, scene.state().step);
+    if (!r.inside()) return;
+    QString text = QString("element %1 (%2), nearest node %3")
+                       .arg(r.cellId)
+                       .arg(QString::fromStdString(std::string(cellTypeName(r.cellType))))
+                       .arg(r.nearestNodeId);
+    if (scene.view()) {
+      const auto& view = *scene.view();
+      const auto v = r.value(view.quantity.key());
+      text += QString("\n%1 = %2").arg(QString::fromStdString(view.quantity.displayName()),
+                                        v ? QString::fromStdString(exactNumber(*v)) : QString("no value"));
+      if (view.location == FieldLocation::Node && r.nearestNode < view.values.size())
+        text += QString("\nat node %1: %2").arg(r.nearestNodeId).arg(QString::fromStdString(exactNumber(view.values[r.nearestNode])));
+    }
+    QToolTip::showText(globalPosition, text, &viewport_);
+  } catch (const std::exception&) {
+    QToolTip::hideText();
+  }
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: MIT
+#include "ProbePanel.hpp"
+
+#include "../core/ProbeTable.hpp"
+#include "../core/SceneState.hpp"
+#include "../core/VolumeSpecs.hpp"
+#include "host/AtomicFile.hpp"
+
+#include <QApplication>
+#include <QClipboard>
+#include <QFileDialog>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace volpost::app {
+
+namespace {
+
+QString number(double v) { return QString::fromStdString(exactNumber(v)); }
+
+QTableWidgetItem* readOnly(const QString& text) {
+  auto* item = new QTableWidgetItem(text);
+  item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+  return item;
+}
+
+}  // namespace
+
+ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(4, 4, 4, 4);
+  auto* hint = new QLabel("View > Probe (I), then click the model; or type a point:", this);
+  hint->setWordWrap(true);
+  layout->addWidget(hint);
+  auto* typedRow = new QHBoxLayout;
+  typed_ = new QLineEdit(this);
+  typed_->setObjectName("probeTyped");
+  typed_->setPlaceholderText("X, Y, Z");
+  auto* add = new QPushButton("Add", this);
+  typedRow->addWidget(typed_);
+  typedRow->addWidget(add);
+  layout->addLayout(typedRow);
+  connect(add, &QPushButton::clicked, this, &ProbePanel::addTyped);
+  connect(typed_, &QLineEdit::returnPressed, this, &ProbePanel::addTyped);
+
+  auto* split = new QSplitter(Qt::Vertical, this);
+  picks_ = new QTableWidget(0, 6, split);
+  picks_->setObjectName("probePicks");
+  picks_->setSelectionBehavior(QAbstractItemView::SelectRows);
+  picks_->verticalHeader()->setVisible(false);
+  picks_->horizontalHeader()->setStretchLastSection(true);
+  auto* lower = new QWidget(split);
+  auto* lowerLayout = new QVBoxLayout(lower);
+  lowerLayout->setContentsMargins(0, 0, 0, 0);
+  where_ = new QLabel(lower);
+  where_->setWordWrap(true);
+  where_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  details_ = new QTableWidget(0, 2, lower);
+  details_->setObjectName("probeDetails");
+  details_->setHorizontalHeaderLabels({"quantity", "value"});
+  details_->verticalHeader()->setVisible(false);
+  details_->horizontalHeader()->setStretchLastSection(true);
+  lowerLayout->addWidget(where_);
+  lowerLayout->addWidget(details_);
+  layout->addWidget(split, 1);
+  connect(picks_, &QTableWidget::itemSelectionChanged, this, &ProbePanel::fillDetails);
+
+  auto* buttons = new QHBoxLayout;
+  const auto button = [&](const QString& text, auto slot) {
+    auto* b = new QPushButton(text, this);
+    buttons->addWidget(b);
+    connect(b, &QPushButton::clicked, this, slot);
+  };
+  button("Copy", &ProbePanel::copyAll);
+  button("Export CSV...", &ProbePanel::exportCsv);
+  button("Remove", &ProbePanel::removeSelected);
+  button("Clear", [this] { emit pointsChanged({}); });
+  layout->addLayout(buttons);
+}
+
+void ProbePanel::showProbes(std::shared_ptr<const ModelSession> session, const std::vector<glm::dvec3>& points,
+                            std::size_t step, const std::string& quantityKey) {
+  session_ = std::move(session);
+  quantityKey_ = quantityKey;
+  results_.clear();
+  try {
+    if (session_)
+      for (const glm::dvec3& p : points) results_.push_back(probeAt(*session_, p, step));
+  } catch (const std::exception& e) {  // a lazy read of a damaged file
+    results_.clear();
+    emit message(QString("Probe: %1").arg(e.what()));
+  }
+  fillPicks();
+}
+
+void ProbePanel::fillPicks() {
+  const int selected = picks_->currentRow();
+  const QSignalBlocker block(picks_);
+  picks_->setRowCount(int(results_.size()));
+  picks_->setHorizontalHeaderLabels(
+      {"#", "x", "y", "z", "element", quantityKey_.empty() ? QString("value") : QString::fromStdString(quantityKey_)});
+  for (int row = 0; row < int(results_.size()); ++row) {
+    const ProbeResult& r = results_[std::size_t(row)];
+    const auto value = r.inside() && !quantityKey_.empty() ? r.value(quantityKey_) : std::nullopt;
+    const QString cells[6] = {QString::number(row + 1),
+                              number(r.point.x),
+                              number(r.point.y),
+                              number(r.point.z),
+                              r.inside() ? QString::number(r.cellId) : QString("outside"),
+                              value ? number(*value) : QString()};
+    for (int c = 0; c < 6; ++c) picks_->setItem(row, c, readOnly(cells[c]));
+  }
+  picks_->resizeColumnsToContents();
+  if (!results_.empty()) picks_->selectRow(selected >= 0 && selected < int(results_.size()) ? selected : int(results_.size()) - 1);
+  fillDetails();
+}
+
+// The selected pick: where it is, and every quantity at full precision.
+void ProbePanel::fillDetails() {
+  const int row = picks_->currentRow();
+  details_->setRowCount(0);
+  if (row < 0 || row >= int(results_.size())) {
+    where_->setText(results_.empty() ? "No points probed." : QString());
+    return;
+  }
+  const ProbeResult& r = results_[std::size_t(row)];
+  if (!r.inside()) {
+    where_->setText(QString("Point %1 is outside the mesh.").arg(row + 1));
+    return;
+  }
+  QStringList nodes;
+  for (std::int64_t id : r.nodeIds) nodes << QString::number(id);
+  where_->setText(QString("Point %1: element %2 (%3)%4; nodes %5. Values %6.")
+                      .arg(row + 1)
+                      .arg(r.cellId)
+                      .arg(QString::fromStdString(std::string(cellTypeName(r.cellType))))
+                      .arg(r.nodeId ? QString(", at node %1").arg(*r.nodeId) : QString())
+                      .arg(nodes.join(' '))
+                      .arg(describe(r.method)));
+  for (const ProbedField& f : r.fields)
+    for (const ProbedQuantity& q : f.quantities) {
+      const int at = details_->rowCount();
+      details_->insertRow(at);
+      details_->setItem(at, 0, readOnly(QString::fromStdString(q.quantity.key()) +
+                                        (f.location == FieldLocation::Cell ? " (element)" : "")));
+      details_->setItem(at, 1, readOnly(number(q.value)));
+    }
+  details_->resizeColumnsToContents();
+}
+
+std::vector<glm::dvec3> ProbePanel::points() const {
+  std::vector<glm::dvec3> p;
+  for (const ProbeResult& r : results_) p.push_back(r.point);
+  return p;
+}
+
+void ProbePanel::addTyped() {
+  const auto p = parsePoint(typed_->text());
+  if (!p) {
+    emit message(QString("'%1' is not a point: type X, Y, Z").arg(typed_->text()));
+    return;
+  }
+  if (results_.size() >= kMaxProbes) {
+    emit message(QString("At most %1 probed points").arg(kMaxProbes));
+    return;
+  }
+  std::vector<glm::dvec3> all = points();
+  all.push_back(*p);
+  typed_->clear();
+  emit pointsChanged(all);
+}
+
+void ProbePanel::removeSelected() {
+  std::vector<glm::dvec3> all = points();
+  std::vector<int> rows;
+  for (const QModelIndex& index : picks_->selectionModel()->selectedRows()) rows.push_back(index.row());
+  std::sort(rows.rbegin(), rows.rend());
+  for (int row : rows)
+    if (row >= 0 && row < int(all.size())) all.erase(all.begin() + row);
+  emit pointsChanged(all);
+}
+
+std::string ProbePanel::table(char separator) const {
+  return session_ ? probeTable(results_, allQuantityKeys(*session_), separator) : std::string();
+}
+
+void ProbePanel::copyAll() {
+  if (results_.empty()) return;
+  QApplication::clipboard()->setText(QString::fromStdString(table('\t')));
+  emit message(QString("Copied %1 probed point(s), every quantity, to the clipboard").arg(results_.size()));
+}
+
+void ProbePanel::exportCsv() {
+  if (results_.empty()) {
+    emit message("No points probed to export");
+    return;
+  }
+  QSettings settings("volpost", "volpost");
+  const QString path = QFileDialog::getSaveFileName(this, "Export probed points", settings.value("files/lastDir").toString(),
+                                                    "CSV (*.csv)");
+  if (path.isEmpty()) return;
+  try {
+    writeFileAtomically(path.toStdString(), table(','));
+    emit message(QString("Wrote %1").arg(path));
+  } catch (const std::exception& e) {
+    emit message(QString("Could not write %1: %2").arg(path, e.what()));
+  }
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// The Probe panel: the points probed (clicked in the view or typed), each with its
+// element and the shown quantity, every quantity of the selected one at full precision,
+// and Copy / Export CSV / Remove / Clear. The points live in the scene (state files keep
+// them); the panel shows what the model holds there.
+#pragma once
+
+#include "../core/Probe.hpp"
+
+#include <QWidget>
+
+#include <memory>
+#include <vector>
+
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QTableWidget;
+
+namespace volpost::app {
+
+class ProbePanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  explicit ProbePanel(QWidget* parent = nullptr);
+
+  /// What to probe: the model, the points, the step and the quantity shown (its column).
+  void showProbes(std::shared_ptr<const ModelSession> session, const std::vector<glm::dvec3>& points, std::size_t step,
+                  const std::string& quantityKey);
+  const std::vector<ProbeResult>& results() const { return results_; }
+  /// The table of every pick and quantity (as `volpost probe --csv` writes it).
+  std::string table(char separator) const;
+
+ signals:
+  /// The user added, removed or cleared points: the scene should hold these now.
+  void pointsChanged(const std::vector<glm::dvec3>& points);
+  void message(const QString& text);
+
+ private:
+  void addTyped();
+  void fillPicks();
+  void fillDetails();
+  void removeSelected();
+  void copyAll();
+  void exportCsv();
+  std::vector<glm::dvec3> points() const;
+
+  std::shared_ptr<const ModelSession> session_;
+  std::vector<ProbeResult> results_;
+  std::string quantityKey_;
+  QLineEdit* typed_ = nullptr;
+  QTableWidget* picks_ = nullptr;
+  QTableWidget* details_ = nullptr;
+  QLabel* where_ = nullptr;
+};
+
+}  // namespace volpost::app
