@@ -5,6 +5,7 @@
 #include "../core/FloatImageFile.hpp"
 #include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
+#include "../core/Probe.hpp"
 #include "../core/SceneImage.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "../core/CameraSpec.hpp"
@@ -334,6 +335,12 @@ int runRender(const QStringList& args) {
       if (const auto lines = scene.streamlineResult(); lines && lines->outside)
         std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
                      lines->outside, lines->seeds);
+      for (std::size_t i = 0; i < scene.probes().size(); ++i) {  // drawn, labelled "outside": say so here too
+        const glm::dvec3& at = scene.probes()[i];
+        if (!probeAt(*scene.session(), at, scene.state().step).inside())
+          std::fprintf(stderr, "volpost: note: probed point %zu (%.9g, %.9g, %.9g) lies outside the mesh\n", i + 1,
+                       at.x, at.y, at.z);
+      }
       savePicture(image.picture, out);
       if (parser.isSet(o.floatOut))
         writeFloatImage(pathBytes(parser.value(o.floatOut)), image.width, image.height, image.volumeRgba,

@@ -22,7 +22,7 @@ QString shortNumber(double v) { return std::isfinite(v) ? QString::number(v, 'g'
 // Labels placed so far in this picture: a new one moves down past any it would cover.
 using PlacedLabels = std::vector<QRectF>;
 
-// A label in a rounded box next to a marker, kept inside the picture and off the others.
+// A label in a rounded box next to a marker, kept inside `area` and off the others.
 void drawLabel(QPainter& painter, const QRect& area, QPointF at, const QString& text, const QColor& edge,
                PlacedLabels& placed) {
   const QFontMetrics fm(painter.font());
@@ -124,8 +124,10 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   PlacedLabels placed;  // the markers first: no label covers one
   for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7), QSizeF(14, 14)));
   for (const Marker& m : markers) drawMarkerShape(painter, m);
+  QRect room = area;  // labels stay left of the legend's strip
+  if (scene.legend()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
   for (const Marker& m : markers)
-    if (!m.text.isEmpty()) drawLabel(painter, area, m.at, m.text, m.color, placed);
+    if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
   painter.restore();
   if (const auto legend = scene.legend()) paintLegend(painter, area, legend->colors, legend->content);
 }

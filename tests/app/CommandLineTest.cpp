@@ -228,6 +228,27 @@ TEST(ProbeCommand, WritesEveryQuantityAtFullPrecisionAsCsvFromAPointsFile) {
   EXPECT_NE(noField.output.find("S.bogus"), std::string::npos) << noField.output;
 }
 
+// Probed points and the min/max markers change the picture; a point off the model is
+// drawn "outside" and noted; the markers need a quantity.
+TEST(RenderCommand, MarksProbedPointsAndExtremesAndNotesPointsOutside) {
+  const std::string model = dataFile("bar/bar_tet4.vtu");
+  const std::string common = " --field S.mises --size 128x96 --no-legend --camera +y";
+  const std::string bare = ::testing::TempDir() + "/bare.png", marked = ::testing::TempDir() + "/marked.png";
+  ASSERT_EQ(runVolpost("render " + model + common + " -o " + bare).exitCode, 0);
+  const auto r = runVolpost("render " + model + common + " --probe 5,1,0.5 --probe 50,0,0 --mark-extremes -o " + marked);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("probed point 2 (50, 0, 0) lies outside the mesh"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("probed point 1"), std::string::npos) << r.output;
+  const QImage without(QString::fromStdString(bare)), with(QString::fromStdString(marked));
+  ASSERT_EQ(without.size(), with.size());
+  int changed = 0;
+  for (int y = 0; y < with.height(); ++y)
+    for (int x = 0; x < with.width(); ++x) changed += with.pixel(x, y) != without.pixel(x, y);
+  EXPECT_GT(changed, 100) << "markers and their labels are drawn";
+  EXPECT_EQ(runVolpost("render " + model + " --mark-extremes -o " + marked).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --probe 1,2 -o " + marked).exitCode, 2);
+}
+
 TEST(RenderCommand, ClipBoxKeepsTheInsideAndBadBoxesAreRefused) {
   const std::string out = ::testing::TempDir() + "/boxed.png";
   const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +

@@ -316,6 +316,7 @@ class MainWindowTest : public QObject {
     QVERIFY(view->scene().marksExtremes());
     const QImage after = view->grabFramebuffer();
     QVERIFY(after != before);
+    if (const char* shot = std::getenv("VOLPOST_PROBE_SCREENSHOT")) window_->grab().save(shot);
     const SceneState state = view->scene().state();
     QCOMPARE(state.probes.size(), std::size_t(2));
     QVERIFY(state.markExtremes);
