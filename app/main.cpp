@@ -18,6 +18,7 @@
 #include <QTimer>
 
 #include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -52,7 +53,22 @@ QStringList argsAfter(int argc, char** argv, int first) {
   return out;
 }
 
+// Without a display Qt aborts with a page of advice about platform plugins; one line says
+// what is missing and what works instead.
+bool displayAvailable() {
+  const auto set = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value;
+  };
+  return set("DISPLAY") || set("WAYLAND_DISPLAY") || set("QT_QPA_PLATFORM");
+}
+
 int runWindow(int argc, char** argv) {
+  if (!displayAvailable()) {
+    std::fprintf(stderr, "volpost: error: no display to open the window on (DISPLAY is not set); "
+                         "`volpost render` draws pictures without one\n");
+    return 1;
+  }
   QSurfaceFormat format;
   format.setVersion(4, 5);
   format.setProfile(QSurfaceFormat::CoreProfile);

@@ -51,18 +51,19 @@ struct Marker {
   MarkerShape shape = MarkerShape::Dot;
 };
 
-void drawMarkerShape(QPainter& painter, const Marker& m) {
-  painter.setPen(QPen(Qt::white, 1.5));
+// `scale`: 1 for text of 12 px; markers grow with the text in large pictures.
+void drawMarkerShape(QPainter& painter, const Marker& m, double scale) {
+  painter.setPen(QPen(Qt::white, 1.5 * scale));
   painter.setBrush(m.color);
   if (m.shape == MarkerShape::Dot) {
-    painter.drawEllipse(m.at, 4.5, 4.5);
+    painter.drawEllipse(m.at, 4.5 * scale, 4.5 * scale);
     return;
   }
   QPainterPath triangle;  // pointing up for a max, down for a min
-  const double s = m.shape == MarkerShape::Up ? -7.0 : 7.0;
+  const double s = (m.shape == MarkerShape::Up ? -7.0 : 7.0) * scale;
   triangle.moveTo(m.at + QPointF(0, s));
-  triangle.lineTo(m.at + QPointF(-6, -s * 0.6));
-  triangle.lineTo(m.at + QPointF(6, -s * 0.6));
+  triangle.lineTo(m.at + QPointF(-6 * scale, -s * 0.6));
+  triangle.lineTo(m.at + QPointF(6 * scale, -s * 0.6));
   triangle.closeSubpath();
   painter.drawPath(triangle);
 }
@@ -116,14 +117,15 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
   QFont font = painter.font();
-  font.setPixelSize(std::clamp(area.height() / 36, 8, 13));
+  font.setPixelSize(std::clamp(area.height() / 46, 9, 84));  // a little smaller than the legend
   painter.setFont(font);
   std::vector<Marker> markers;
   addExtremes(markers, area, scene);
   addProbes(markers, area, scene);
+  const double scale = std::max(1.0, font.pixelSize() / 12.0);
   PlacedLabels placed;  // the markers first: no label covers one
-  for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7), QSizeF(14, 14)));
-  for (const Marker& m : markers) drawMarkerShape(painter, m);
+  for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7) * scale, QSizeF(14, 14) * scale));
+  for (const Marker& m : markers) drawMarkerShape(painter, m, scale);
   QRect room = area;  // labels stay left of the legend's strip
   if (scene.legend()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
   for (const Marker& m : markers)

@@ -5,6 +5,7 @@
 
 #include <QImage>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -263,4 +264,14 @@ TEST(RenderCommand, ClipBoxKeepsTheInsideAndBadBoxesAreRefused) {
                                " --clip 5,0,0,1,0,0 --clip 5,0,0,1,0,0 -o " + out);
   EXPECT_EQ(many.exitCode, 2);
   EXPECT_NE(many.output.find("at most 8"), std::string::npos) << many.output;
+}
+
+// The window without a display: one line that says so and what works instead, exit 1 (not
+// Qt's abort with a page about platform plugins).
+TEST(Window, WithoutADisplaySaysSoInOneLine) {
+  const auto r = volpost::test::runVolpostLimited(dataFile("bar/bar_tet4.vtu"), 4L << 20, 30,
+                                                  "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("no display to open the window on"), std::string::npos) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }

@@ -117,7 +117,7 @@ void TfEditorPanel::buildUi() {
     top->addWidget(b);
     return b;
   };
-  button("PV...", "Import the colors of a ParaView color map (.json)", [this] {
+  button("ParaView...", "Import the colors of a ParaView color map (.json)", [this] {
     const QString path = QFileDialog::getOpenFileName(this, "Import ParaView color map", {}, "ParaView color maps (*.json)");
     QString error;
     if (!path.isEmpty() && !importParaView(path, &error)) QMessageBox::warning(this, "Import", error);
@@ -174,11 +174,11 @@ void TfEditorPanel::buildUi() {
   lengthBox_->setDecimals(4);
   lengthBox_->setRange(1e-4, 1e12);
   lengthBox_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
-  lengthBox_->setToolTip("The thickness (model length units) whose opacity the curve shows; the function itself is an extinction per length");
+  lengthBox_->setToolTip("The thickness of material, in model units, whose opacity the curve shows; the function itself is an extinction per unit length");
   connect(lengthBox_, &QDoubleSpinBox::valueChanged, this, [this](double v) { model_.setReferenceLength(v); });
-  grid->addWidget(new QLabel("Opacity over", this), 1, 0);
+  grid->addWidget(new QLabel("Opacity through", this), 1, 0);
   grid->addWidget(lengthBox_, 1, 1);
-  grid->addWidget(new QLabel("length units", this), 1, 2, 1, 2);
+  grid->addWidget(new QLabel("model units of thickness", this), 1, 2, 1, 2);
   auto* fit = new QPushButton("Fit", this);
   fit->setToolTip("Show the whole data range (or double-click the curve)");
   connect(fit, &QPushButton::clicked, curve_, &TfCurveWidget::resetView);
@@ -333,7 +333,7 @@ void TfEditorPanel::showSelection() {
     opacityEdit_->clear();
     colorButton_->setStyleSheet({});
   }
-  status_->setText(QString("%1 points · %2 selected · iso table %3 ms · renderer %4 ms")
+  status_->setText(QString("%1 points · %2 selected · iso-surface lookup %3 ms · volume update %4 ms")
                        .arg(model_.points().size())
                        .arg(sel.size())
                        .arg(isoMs_, 0, 'f', 1)
