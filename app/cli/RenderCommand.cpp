@@ -2,6 +2,7 @@
 // `volpost render MODEL --field Q -o out.png`: a picture with no window and no X server.
 // The options (or a state file saved by the window) make a SceneState; the Scene draws it
 // exactly as the window does.
+#include "../core/AnimationFrames.hpp"
 #include "../core/FloatImageFile.hpp"
 #include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
@@ -20,6 +21,7 @@
 #include <QFileInfo>
 
 #include <cmath>
+#include <functional>
 #include <cstdio>
 
 namespace volpost::app {
@@ -56,8 +58,8 @@ struct Options {
   QCommandLineOption size{"size", "Image size (default 800x600).", "WxH", "800x600"};
   QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale; also the colors of "
                                           "the default volume transfer function.", "NAME"};
-  QCommandLineOption range{"range", "Fixed color range instead of the data's (also the default transfer "
-                                    "function's range).", "MIN:MAX"};
+  QCommandLineOption range{"range", "Fixed color range MIN:MAX instead of the step's own, or all-steps: the range "
+                                    "over every step (also the default transfer function's range).", "MIN:MAX"};
   QCommandLineOption noEdges{"no-edges", "Hide element edges on the surface."};
   QCommandLineOption noLegend{"no-legend", "Hide the color legend."};
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
@@ -99,8 +101,28 @@ struct Options {
   QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
   QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
   QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
+  QCommandLineOption allSteps{"all-steps", "One picture per step of the result: OUT_001.png, OUT_002.png, ... "
+                                           "(colors span every step unless --range is given)."};
   StreamlineOptions lineOptions;
 };
+
+// --all-steps: the scene at each step of its result, one numbered picture each, the colors
+// over every step unless a range was given. Each path is printed as it is written.
+int renderEveryStep(Scene& scene, const QString& out, bool rangeGiven, const std::function<SceneImage()>& draw) {
+  if (!scene.view()) throw UsageError("--all-steps needs --field (the result whose steps to show)");
+  const std::string quantity = scene.state().quantity;
+  const std::size_t count = scene.session()->fieldOf(scene.view()->quantity).stepCount();
+  if (!rangeGiven && !scene.state().fixedRange) scene.setRangeOverSteps(true);
+  for (std::size_t step = 0; step < count; ++step) {
+    std::fprintf(stderr, "volpost: step %zu of %zu\n", step + 1, count);
+    scene.setResult(quantity, step);
+    const QString path = framePath(out, step, count);
+    savePicture(draw().picture, path);
+    std::printf("%s\n", qPrintable(QFileInfo(path).absoluteFilePath()));
+    std::fflush(stdout);
+  }
+  return 0;
+}
 
 // The state the options describe: a state file's, or the defaults, changed by every option
 // that is set.
@@ -200,9 +222,11 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.state)) scene.applyState(base);
   applyResultOptions(p, o, scene);
   if (p.isSet(o.colormap)) scene.setColorMap(p.value(o.colormap).toStdString());
-  if (p.isSet(o.range)) {
+  if (p.isSet(o.range) && p.value(o.range) == "all-steps") {
+    scene.setRangeOverSteps(true);
+  } else if (p.isSet(o.range)) {
     const auto r = parseRange(p.value(o.range));
-    if (!r) throw UsageError(QString("--range %1 is not MIN:MAX with finite MIN < MAX").arg(p.value(o.range)).toStdString());
+    if (!r) throw UsageError(QString("--range %1 is not MIN:MAX with finite MIN < MAX, nor all-steps").arg(p.value(o.range)).toStdString());
     scene.setFixedRange(*r);
   }
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
@@ -274,7 +298,7 @@ int runRender(const QStringList& args) {
   parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes});
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -292,6 +316,11 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("-o %1").arg(e.what()).toStdString());
     }
 
+    if (parser.isSet(o.allSteps))
+      for (const auto* option : {&o.step, &o.floatOut, &o.saveState})
+        if (parser.isSet(*option))
+          throw UsageError(QString("--%1 is for one picture; --all-steps writes one per step").arg(option->names().first()).toStdString());
+
     SceneState base;
     if (parser.isSet(o.state)) base = SceneState::load(pathBytes(parser.value(o.state)));
     if (!positional.isEmpty()) base.modelPath = pathBytes(positional.first());
@@ -305,7 +334,7 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("--threads %1 is not a thread count (1..1024, 0: all cores)").arg(parser.value(o.threads)).toStdString());
 
     // Outputs are checked before the work: a missing folder is said at once, not after it.
-    checkWritable(pathBytes(out));
+    checkWritable(pathBytes(parser.isSet(o.allSteps) ? framePath(out, 0, 1) : out));
     if (parser.isSet(o.floatOut)) checkWritable(pathBytes(parser.value(o.floatOut)));
     if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
     auto plugins = loadPluginsForCli();
@@ -329,9 +358,13 @@ int runRender(const QStringList& args) {
         throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
       if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
       scene.setVolumeShown(rendererName != "surface");
-      const SceneImage image = rendererName == "reference"
-                                   ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
-                                   : renderSceneImage(scene, width, height);
+      const auto draw = [&] {
+        return rendererName == "reference"
+                   ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
+                   : renderSceneImage(scene, width, height);
+      };
+      if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, parser.isSet(o.range), draw);
+      const SceneImage image = draw();
       if (const auto lines = scene.streamlineResult(); lines && lines->outside)
         std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
                      lines->outside, lines->seeds);

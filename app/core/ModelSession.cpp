@@ -3,6 +3,7 @@
 
 #include <volpost/core/ResourceLimits.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace volpost::app {
@@ -80,6 +81,26 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
   view.range = rangeOf(view.values);
   view.stepLabel = f.steps()[step].label;
   return view;
+}
+
+ValueRange ModelSession::rangeOverSteps(const Quantity& q) const {
+  {
+    const std::lock_guard lock(rangesMutex_);
+    if (const auto known = rangesOverSteps_.find(q.key()); known != rangesOverSteps_.end()) return known->second;
+  }
+  ValueRange all;
+  for (std::size_t step = 0; step < fieldOf(q).stepCount(); ++step) {
+    const ValueRange r = evaluate(q, step).range;
+    if (r.valid()) {
+      all.min = all.valid() ? std::min(all.min, r.min) : r.min;
+      all.max = all.valid() ? std::max(all.max, r.max) : r.max;
+    }
+    all.finiteCount += r.finiteCount;
+    all.nanCount += r.nanCount;
+  }
+  const std::lock_guard lock(rangesMutex_);
+  rangesOverSteps_[q.key()] = all;
+  return all;
 }
 
 const TetMesh& ModelSession::tetrahedra() const {

@@ -11,6 +11,7 @@
 
 #include "host/PointLocator.hpp"
 
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -49,6 +50,9 @@ class ModelSession {
 
   /// Values of the quantity at a step (0-based), with their range.
   ScalarView evaluate(const Quantity& q, std::size_t step) const;
+  /// The quantity's range over every step of its field (evaluated once, kept; any thread):
+  /// one color scale for a whole animation.
+  ValueRange rangeOverSteps(const Quantity& q) const;
 
   /// The cells as conforming tetrahedra for volume rendering (built on first use, kept).
   const TetMesh& tetrahedra() const;
@@ -60,6 +64,8 @@ class ModelSession {
  private:
   mutable std::once_flag tetOnce_;
   mutable std::unique_ptr<TetMesh> tets_;
+  mutable std::mutex rangesMutex_;
+  mutable std::map<std::string, ValueRange> rangesOverSteps_;  ///< by quantity key
   mutable std::once_flag locatorOnce_;
   mutable std::unique_ptr<PointLocator> locator_;
   std::shared_ptr<Model> model_;

@@ -86,8 +86,16 @@ void Scene::setFixedRange(std::optional<DisplayRange> range) {
   if (range && !(range->max > range->min && std::isfinite(range->min) && std::isfinite(range->max)))
     throw std::invalid_argument("a color range needs finite min < max");
   state_.fixedRange = range;
+  if (range) state_.rangeOverSteps = false;
   changed_.scalars = true;
   if (!state_.volume.transferFunction) changed_.tables = true;  // the default spans the range
+}
+
+void Scene::setRangeOverSteps(bool on) {
+  state_.rangeOverSteps = on;
+  state_.fixedRange.reset();  // either way, the values' own range: over all steps or per step
+  changed_.scalars = true;
+  if (!state_.volume.transferFunction) changed_.tables = true;
 }
 
 void Scene::setShowEdges(bool show) { state_.edges = show; }
@@ -267,13 +275,20 @@ std::optional<Scene::Extremes> Scene::extremes() const {
 
 DisplayRange Scene::displayRange() const {
   if (state_.fixedRange) return *state_.fixedRange;
-  return view_ ? autoRange(*view_) : DisplayRange{};
+  if (!view_) return DisplayRange{};
+  if (state_.rangeOverSteps && session_) {
+    const ValueRange all = session_->rangeOverSteps(view_->quantity);
+    if (all.valid()) return all.max > all.min ? DisplayRange{all.min, all.max} : autoRange(*view_);
+  }
+  return autoRange(*view_);
 }
 
 TransferFunction Scene::transferFunction() const {
   if (state_.volume.transferFunction) return *state_.volume.transferFunction;
   if (!view_ || !session_) return {};
-  return defaultTransferFunction(*view_, session_->model().mesh.bounds().diagonal(), state_.colorMap, state_.fixedRange);
+  // The default follows the color range the user chose (fixed, over all steps or per step).
+  const auto chosen = state_.fixedRange || state_.rangeOverSteps ? std::optional(displayRange()) : std::nullopt;
+  return defaultTransferFunction(*view_, session_->model().mesh.bounds().diagonal(), state_.colorMap, chosen);
 }
 
 std::optional<LegendPicture> Scene::legend() const {

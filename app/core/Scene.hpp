@@ -72,7 +72,12 @@ class Scene {
   /// Throws std::invalid_argument (no such quantity or step) and changes nothing then.
   void setResult(const std::string& quantity, std::size_t step);
   void setColorMap(const std::string& name);
+  /// A fixed color range (nullopt: the values' own). Setting one turns the range over
+  /// steps off.
   void setFixedRange(std::optional<DisplayRange> range);
+  /// Colors (and the default transfer function) span the quantity's range over every step
+  /// (on) or each step's own (off); either turns a fixed range off.
+  void setRangeOverSteps(bool on);
   void setShowEdges(bool show);
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }

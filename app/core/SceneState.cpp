@@ -263,7 +263,9 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
     out["camera"] = nullptr;
   }
   out["colors"] = {{"map", colorMap},
-                   {"range", fixedRange ? json::array({fixedRange->min, fixedRange->max}) : json("auto")}};
+                   {"range", fixedRange       ? json::array({fixedRange->min, fixedRange->max})
+                             : rangeOverSteps ? json("all-steps")
+                                              : json("auto")}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
   out["volume"] = jsonOf(volume);
@@ -329,10 +331,12 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     r.object(*colors, "colors");
     if (const json* m = r.find(*colors, "map")) s.colorMap = r.text(*m, "colors.map");
     if (const json* range = r.find(*colors, "range")) {
-      if (range->is_string() && range->get<std::string>() == "auto") {
+      if (range->is_string() && (range->get<std::string>() == "auto" || range->get<std::string>() == "all-steps")) {
         s.fixedRange.reset();
+        s.rangeOverSteps = range->get<std::string>() == "all-steps";
       } else {
-        if (!range->is_array() || range->size() != 2) r.fail("colors.range", "must be \"auto\" or [min, max]");
+        if (!range->is_array() || range->size() != 2)
+          r.fail("colors.range", "must be \"auto\" (each step's own), \"all-steps\" or [min, max]");
         DisplayRange d{r.number((*range)[0], "colors.range[0]"), r.number((*range)[1], "colors.range[1]")};
         if (!(d.max > d.min)) r.fail("colors.range", "needs min < max");
         s.fixedRange = d;

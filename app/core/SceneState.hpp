@@ -88,6 +88,9 @@ struct SceneState {
   std::optional<CameraState> camera;  ///< nullopt: the isometric view fitted to the model
   std::string colorMap = "cool-warm";
   std::optional<DisplayRange> fixedRange;  ///< nullopt: the values' own range
+  /// Without a fixed range: the range over every step (one scale for an animation)
+  /// instead of each step's own.
+  bool rangeOverSteps = false;
   bool edges = true;          ///< element edges on the surface view
   bool lighting = true;       ///< shading; off: the color map's exact colors
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)

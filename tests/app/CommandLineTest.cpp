@@ -275,3 +275,32 @@ TEST(Window, WithoutADisplaySaysSoInOneLine) {
   EXPECT_NE(r.output.find("no display to open the window on"), std::string::npos) << r.output;
   EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
+
+// --all-steps: one numbered picture per step, on one color scale, so the steps differ; the
+// options for one picture are refused.
+TEST(RenderCommand, AllStepsWritesOneNumberedPicturePerStep) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "volpost_all_steps";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string model = dataFile("formats/golden.frd"), out = (dir / "t.png").string();
+  const auto r = runVolpost("render " + model + " --field T --all-steps --size 96x64 --no-legend -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("step 2 of 2"), std::string::npos) << r.output;
+  const QImage first(QString::fromStdString((dir / "t_001.png").string()));
+  const QImage second(QString::fromStdString((dir / "t_002.png").string()));
+  ASSERT_FALSE(first.isNull());
+  ASSERT_FALSE(second.isNull());
+  EXPECT_FALSE(std::filesystem::exists(dir / "t.png")) << "only the numbered pictures";
+  EXPECT_NE(first, second) << "step 1 is half of step 2 on the common scale";
+  // Per step, each step spans the whole map: T doubles and the pictures are the same.
+  const std::string one = (dir / "one.png").string(), two = (dir / "two.png").string();
+  ASSERT_EQ(runVolpost("render " + model + " --field T --step 1 --size 96x64 --no-legend -o " + one).exitCode, 0);
+  ASSERT_EQ(runVolpost("render " + model + " --field T --step 2 --size 96x64 --no-legend -o " + two).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(one)), QImage(QString::fromStdString(two)));
+  const std::string common = (dir / "common.png").string();
+  ASSERT_EQ(runVolpost("render " + model + " --field T --step 2 --range all-steps --size 96x64 --no-legend -o " + common).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(common)), second) << "--range all-steps: the same scale as the animation";
+  EXPECT_EQ(runVolpost("render " + model + " --field T --all-steps --step 2 -o " + out).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --all-steps -o " + out).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --field T --range everything -o " + out).exitCode, 2);
+}

@@ -7,6 +7,7 @@
 #include "support/TestSupport.hpp"
 
 #include "RayCaster.hpp"
+#include "core/AnimationFrames.hpp"
 #include "core/SceneImage.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
@@ -203,4 +204,38 @@ TEST(Scene, TheDefaultTransferFunctionTakesTheColorMapAndRange) {
   EXPECT_THROW(scene.setResult("S.mises", 7), std::invalid_argument);
   EXPECT_THROW(scene.setVolumeRenderer("no-such-renderer"), std::invalid_argument);
   EXPECT_THROW(scene.setColorMap("no-such-map"), std::invalid_argument);
+}
+
+// Per step, the colors span each step's own values; over all steps, one range for every
+// step (and the default transfer function follows); a fixed range turns it off; the
+// state file keeps the choice.
+TEST(Scene, TheColorRangeCanSpanEveryStep) {
+  const auto session = ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/golden.frd"));
+  Scene scene(rayCasterOnly());
+  scene.setSession(session);
+  scene.setResult("T", 0);  // T: [0, 111] at step 1, [0, 222] at step 2
+  EXPECT_DOUBLE_EQ(scene.displayRange().max, 111.0);
+  scene.setRangeOverSteps(true);
+  EXPECT_DOUBLE_EQ(scene.displayRange().min, 0.0);
+  EXPECT_DOUBLE_EQ(scene.displayRange().max, 222.0);
+  EXPECT_DOUBLE_EQ(scene.transferFunction().maxValue(), 222.0);
+  scene.setResult("T", 1);
+  EXPECT_DOUBLE_EQ(scene.displayRange().max, 222.0);
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "view.json");
+  EXPECT_TRUE(back.rangeOverSteps);
+  EXPECT_NE(scene.state().toJson().find("all-steps"), std::string::npos);
+  scene.setFixedRange(DisplayRange{10.0, 20.0});
+  EXPECT_FALSE(scene.state().rangeOverSteps);
+  EXPECT_DOUBLE_EQ(scene.displayRange().max, 20.0);
+  scene.setRangeOverSteps(false);
+  EXPECT_FALSE(scene.state().fixedRange.has_value()) << "setRangeOverSteps(false) leaves the step's own range";
+  scene.setResult("T", 0);
+  EXPECT_DOUBLE_EQ(scene.displayRange().max, 111.0);
+}
+
+TEST(AnimationFrames, NumbersGoBeforeTheExtensionPaddedToTheCount) {
+  EXPECT_EQ(framePath("frames/wheel.png", 0, 2), "frames/wheel_001.png");
+  EXPECT_EQ(framePath("frames/wheel.png", 1233, 1234), "frames/wheel_1234.png");
+  EXPECT_EQ(framePath("a.b/wheel", 4, 10), "a.b/wheel_005");
+  EXPECT_EQ(framePath("out.tar.jpg", 9, 10), "out.tar_010.jpg");
 }
