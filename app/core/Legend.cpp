@@ -32,7 +32,7 @@ std::vector<double> niceTicks(double min, double max, int target) {
 namespace {
 
 QFont legendFont(QFont font, const QRect& area) {
-  font.setPixelSize(std::clamp(area.height() / 40, 9, 96));  // in proportion to the picture, readable when small
+  font.setPixelSize(std::clamp(area.height() / 48, 9, 96));  // in proportion to the picture, readable when small
   return font;
 }
 

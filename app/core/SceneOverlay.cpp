@@ -117,7 +117,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
   QFont font = painter.font();
-  font.setPixelSize(std::clamp(area.height() / 46, 9, 84));  // a little smaller than the legend
+  font.setPixelSize(std::clamp(area.height() / 54, 9, 84));  // a little smaller than the legend
   painter.setFont(font);
   std::vector<Marker> markers;
   addExtremes(markers, area, scene);

@@ -7,6 +7,7 @@
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
 #include "ProbeController.hpp"
+#include "StepController.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
@@ -105,6 +106,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 
 void MainWindow::buildActions() {
   QMenu* file = menuBar()->addMenu("&File");
+  fileMenu_ = file;
   file->addAction("&Open...", QKeySequence::Open, this, &MainWindow::chooseFile);
   file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
   file->addSeparator();
@@ -114,6 +116,7 @@ void MainWindow::buildActions() {
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
 
   QMenu* view = menuBar()->addMenu("&View");
+  viewMenu_ = view;
   view->addAction("&Fit", QKeySequence(Qt::Key_F), viewport_, &Viewport::fit);
   const std::pair<const char*, StandardView> views[] = {
       {"From +X", StandardView::PlusX}, {"From -X", StandardView::MinusX}, {"From +Y", StandardView::PlusY},
@@ -481,8 +484,9 @@ void MainWindow::buildToolbar() {
   bar->addWidget(new QLabel("  Step: "));
   stepBox_ = new QComboBox(this);
   stepBox_->setObjectName("stepBox");
-  stepBox_->setMinimumContentsLength(8);
+  stepBox_->setMinimumContentsLength(14);
   bar->addWidget(stepBox_);
+  steps_ = new StepController(*this, *viewport_, *bar, *stepBox_, *viewMenu_, *fileMenu_, [this] { notifyPanels(); });
   bar->addWidget(new QLabel("  Colors: "));
   colorMapBox_ = new QComboBox(this);
   colorMapBox_->setObjectName("colorMapBox");
@@ -492,6 +496,7 @@ void MainWindow::buildToolbar() {
   bar->addWidget(colorMapBox_);
   connect(quantityBox_, &QComboBox::currentIndexChanged, this, [this] {
     fillSteps();
+    steps_->quantityChanged();
     refreshScalars();
   });
   connect(stepBox_, &QComboBox::currentIndexChanged, this, &MainWindow::refreshScalars);
@@ -729,6 +734,7 @@ double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStat
 
 void MainWindow::notifyPanels() {
   if (probes_) probes_->refresh();
+  if (steps_) steps_->refresh();
   for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
 }
 
@@ -860,6 +866,7 @@ void MainWindow::syncControlsToScene() {
   check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
   if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);
   probes_->syncToScene();
+  steps_->syncToScene();
 }
 
 void MainWindow::saveImage() {

@@ -28,6 +28,7 @@ class VolumeRenderer;
 namespace volpost::app {
 
 class ProbeController;
+class StepController;
 class Viewport;
 
 class MainWindow : public QMainWindow, public PanelHost {
@@ -117,6 +118,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
   QAction* streamlinesAction_ = nullptr;
+  StepController* steps_ = nullptr;
+  QMenu* fileMenu_ = nullptr;
+  QMenu* viewMenu_ = nullptr;
   ProbeController* probes_ = nullptr;
   bool tracing_ = false;
   bool loading_ = false;

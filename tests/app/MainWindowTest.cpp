@@ -3,6 +3,7 @@
 // screenshot, fail to open a bad file without losing the model.
 #include "gui/MainWindow.hpp"
 #include "gui/ProbePanel.hpp"
+#include "gui/StepController.hpp"
 #include "gui/Viewport.hpp"
 
 #include <QApplication>
@@ -17,6 +18,7 @@
 #include <QMouseEvent>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QStandardPaths>
 #include <QSurfaceFormat>
 #include <QTest>
@@ -335,6 +337,71 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("extremesAction")->setChecked(false);
     view->scene().setProbes({});
     window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
+  void steppingPlayingAndTheRangeOverSteps() {
+    // golden.frd: T is 0..111 at step 1 and 0..222 at step 2 (twice the values).
+    QVERIFY(open(VOLPOST_TEST_DATA "/formats/golden.frd"));
+    QVERIFY(window_->selectQuantity("T"));
+    window_->resize(1280, 600);  // the window's default width: the toolbar shows the range fields
+    auto* stepBox = window_->findChild<QComboBox*>("stepBox");
+    QCOMPARE(stepBox->count(), 2);
+    Viewport* view = window_->viewport();
+    view->scene().setShowLegend(false);  // the model alone
+    auto* next = window_->findChild<QAction*>("nextStepAction");
+    auto* previous = window_->findChild<QAction*>("previousStepAction");
+    QVERIFY(next && previous && next->isEnabled());
+    const QImage step1 = view->grabFramebuffer();
+    next->trigger();
+    QCOMPARE(view->scene().state().step, std::size_t(1));
+    next->trigger();  // the last step stays
+    QCOMPARE(view->scene().state().step, std::size_t(1));
+    // Each step spans the map: twice the values, the same picture.
+    QCOMPARE(view->grabFramebuffer(), step1);
+    auto* range = window_->findChild<QComboBox*>("rangeBox");
+    range->setCurrentIndex(1);  // all steps
+    QVERIFY(view->scene().state().rangeOverSteps);
+    const QImage step2All = view->grabFramebuffer();
+    previous->trigger();
+    QCOMPARE(view->scene().state().step, std::size_t(0));
+    QCOMPARE(view->scene().displayRange().max, 222.0);
+    QVERIFY2(view->grabFramebuffer() != step2All, "on one scale the steps differ");
+    // Typed: a bad range changes nothing and says so; a good one is used.
+    range->setCurrentIndex(2);
+    auto* min = window_->findChild<QLineEdit*>("rangeMin");
+    auto* max = window_->findChild<QLineEdit*>("rangeMax");
+    QTRY_VERIFY(min->isVisible() && max->isVisible());
+    min->setText("50");
+    max->setText("abc");
+    QTest::keyClick(max, Qt::Key_Return);
+    QCOMPARE(view->scene().displayRange().max, 222.0);
+    QVERIFY(window_->statusBar()->currentMessage().contains("min < max"));
+    QCOMPARE(min->text(), QString("0"));  // the fields show what is in force again
+    min->setText("50");
+    max->setText("60");
+    QTest::keyClick(max, Qt::Key_Return);
+    QCOMPARE(view->scene().displayRange().min, 50.0);
+    QCOMPARE(view->scene().displayRange().max, 60.0);
+    // Play walks the steps and stops again.
+    auto* play = window_->findChild<QAction*>("playStepsAction");
+    play->setChecked(true);
+    QTRY_COMPARE_WITH_TIMEOUT(view->scene().state().step, std::size_t(1), 3000);
+    play->setChecked(false);
+    // Export: one numbered picture per step, the step the user had kept.
+    range->setCurrentIndex(1);
+    const QString dir = QDir::temp().filePath("volpost_gui_animation");
+    QDir(dir).removeRecursively();
+    QDir().mkpath(dir);
+    stepBox->setCurrentIndex(0);
+    auto* steps = window_->findChild<StepController*>();
+    QVERIFY(steps);
+    QCOMPARE(steps->exportAnimation(dir + "/t.png"), 2);
+    QVERIFY(QFile::exists(dir + "/t_001.png") && QFile::exists(dir + "/t_002.png"));
+    QVERIFY(QImage(dir + "/t_001.png") != QImage(dir + "/t_002.png"));
+    QCOMPARE(view->scene().state().step, std::size_t(0));
+    view->scene().setShowLegend(true);
+    range->setCurrentIndex(0);
+    window_->resize(900, 600);
   }
 
   void aBadFileLeavesTheModelAsItWas() {
