@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Build time and error of the optical tables against the exact integration.
 //   volpost_optics_bench [--csv FILE]   (the CSV holds psi-table error versus resolution)
+#include "BenchUsage.hpp"
+
 #include <volpost/core/optics/IsoTables.hpp>
 #include "host/optics/IsoSurfaceTable.hpp"
 #include <volpost/core/optics/PreintegrationTable.hpp>
@@ -34,7 +36,13 @@ TransferFunction segments(int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* csv = argc > 2 && !std::strcmp(argv[1], "--csv") ? argv[2] : nullptr;
+  const char* csv = nullptr;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csv = argv[++i];
+    else
+      return volpost::bench::usageFor(argv[i], "volpost_optics_bench: accuracy and build time of the optics tables\n"
+                                               "usage: volpost_optics_bench [--csv FILE]\n");
+  }
   FILE* out = csv ? std::fopen(csv, "w") : nullptr;
   if (out) std::fprintf(out, "resolution,max_abs_error,rms_error,build_ms\n");
   std::mt19937 rng(11);

@@ -4,6 +4,8 @@
 // Abaqus deck and VTU. Each case runs in its own child process so its peak memory (max
 // RSS) is its own. Prints a Markdown table.
 //   volpost_read_bench [--cells-per-axis N] [--keep DIR]
+#include "BenchUsage.hpp"
+
 #include "AllReaders.hpp"
 
 #include <volpost/core/ReaderRegistry.hpp>
@@ -124,10 +126,9 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--cells-per-axis") && i + 1 < argc) n = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--keep") && i + 1 < argc) keep = argv[++i];
-    else {
-      std::fprintf(stderr, "usage: volpost_read_bench [--cells-per-axis N] [--keep DIR]\n");
-      return 2;
-    }
+    else
+      return volpost::bench::usageFor(argv[i], "volpost_read_bench: reading speed and memory of every format\n"
+                                               "usage: volpost_read_bench [--cells-per-axis N] [--keep DIR]\n");
   }
   std::vector<std::string> files;
   const std::filesystem::path shared = VOLPOST_SHARED_DATA;

@@ -2,6 +2,8 @@
 // Visibility sorting for cell projection (issue 5's CPU half): MPVO, MPVONC and the
 // image-space order on the real meshes, per frame along an orbit. Prints a Markdown table.
 //   volpost_sort_bench [--size N] [--frames N]
+#include "BenchUsage.hpp"
+
 #include "VisibilityOrder.hpp"
 
 #include "AbaqusInputReader.hpp"
@@ -22,10 +24,9 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else {
-      std::fprintf(stderr, "usage: volpost_sort_bench [--size N] [--frames N]\\n");
-      return 2;
-    }
+    else
+      return volpost::bench::usageFor(argv[i], "volpost_sort_bench: visibility sorting for cell projection\n"
+                                               "usage: volpost_sort_bench [--size N] [--frames N]\n");
   }
   const std::filesystem::path shared = VOLPOST_SHARED_DATA;
   meshio::VtuReader reader;

@@ -5,6 +5,8 @@
 // which also holds the interpolation error), then lines per second traced on all cores
 // and drawn as lit lines. Prints Markdown tables.
 //   volpost_streamline_bench [--cubes N] [--lines N] [--size N]
+#include "BenchUsage.hpp"
+
 #include "support/TetGrid.hpp"
 
 #include "host/Streamlines.hpp"
@@ -65,11 +67,9 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--cubes") && i + 1 < argc) cubes = std::max(4, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--lines") && i + 1 < argc) lineCount = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::max(16, std::atoi(argv[++i]));
-    else {
-      std::printf("volpost_streamline_bench: streamline accuracy and speed\n"
-                  "usage: volpost_streamline_bench [--cubes N] [--lines N] [--size N]\n");
-      return std::strcmp(argv[i], "--help") ? 2 : 0;
-    }
+    else
+      return volpost::bench::usageFor(argv[i], "volpost_streamline_bench: streamline accuracy and speed\n"
+                                               "usage: volpost_streamline_bench [--cubes N] [--lines N] [--size N]\n");
   }
   const StreamlineMethod methods[] = {StreamlineMethod::RK2, StreamlineMethod::RK4, StreamlineMethod::RK45};
 

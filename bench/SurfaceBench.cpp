@@ -2,6 +2,8 @@
 // Loading and surface rendering on the real meshes: read, check, boundary extraction,
 // and frame time of the boundary view at 512x512 along an orbit. Prints a Markdown table.
 //   volpost_bench [--frames N] [--size N]
+#include "BenchUsage.hpp"
+
 #include "core/ModelSession.hpp"
 #include "core/BoundaryRenderer.hpp"
 
@@ -44,9 +46,12 @@ const Case kCases[] = {
 
 int main(int argc, char** argv) {
   int frames = 30, size = 512;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--frames")) frames = std::max(3, std::atoi(argv[i + 1]));
-    if (!std::strcmp(argv[i], "--size")) size = std::max(16, std::atoi(argv[i + 1]));
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(3, std::atoi(argv[++i]));
+    else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::max(16, std::atoi(argv[++i]));
+    else
+      return volpost::bench::usageFor(argv[i], "volpost_bench: surface rendering frame times while orbiting\n"
+                                               "usage: volpost_bench [--frames N] [--size N]\n");
   }
   meshio::VtuReader vtu;
   meshio::VtkLegacyReader legacy;

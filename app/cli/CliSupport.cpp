@@ -78,7 +78,15 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
     return 2;
   }
   if (parser.isSet(help)) {
-    std::printf("%s", qPrintable(parser.helpText()));
+    // Qt names the executable's path in the usage line; the user typed "volpost VERB".
+    QString text = parser.helpText();
+    const QString usage = "Usage: ";
+    if (text.startsWith(usage)) {
+      qsizetype end = text.indexOf(" [options]", usage.size());
+      if (end < 0 || end > text.indexOf('\n')) end = text.indexOf(' ', usage.size());
+      if (end > 0) text.replace(usage.size(), end - usage.size(), verb);
+    }
+    std::printf("%s", qPrintable(text));
     return 0;
   }
   return std::nullopt;

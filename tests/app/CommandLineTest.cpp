@@ -304,3 +304,14 @@ TEST(RenderCommand, AllStepsWritesOneNumberedPicturePerStep) {
   EXPECT_EQ(runVolpost("render " + model + " --all-steps -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --field T --range everything -o " + out).exitCode, 2);
 }
+
+TEST(CommandLine, EveryVerbsHelpNamesTheVerbAndExitsZero) {
+  for (const char* verb : {"info", "render", "probe", "convert", "surface", "streamlines", "plugins"}) {
+    const auto r = runVolpost(std::string(verb) + " --help");
+    EXPECT_EQ(r.exitCode, 0) << verb;
+    EXPECT_EQ(r.output.rfind("Usage: volpost " + std::string(verb) + " [options]", 0), 0u) << r.output;
+  }
+  const auto unknown = runVolpost("render --no-such-option");
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("no-such-option"), std::string::npos) << unknown.output;
+}

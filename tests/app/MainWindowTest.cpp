@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFile>
 #include <QProcess>
+#include <QProgressDialog>
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QTableWidget>
@@ -404,6 +405,28 @@ class MainWindowTest : public QObject {
     window_->resize(900, 600);
   }
 
+  // `volpost --screenshot`: exit 0 only with the picture written; a missing model or an
+  // unwritable path is exit 1 with the reason.
+  void screenshotExitCodesSayWhetherThePictureWasWritten() {
+    const auto run = [](const QStringList& args) {
+      QProcess p;
+      p.start(VOLPOST_EXECUTABLE, args);
+      if (!p.waitForFinished(60000)) return std::pair(-1, QString("timed out"));
+      return std::pair(p.exitCode(), QString::fromUtf8(p.readAllStandardError()));
+    };
+    const QString shot = QDir::temp().filePath("volpost_screenshot_test.png");
+    QFile::remove(shot);
+    const auto good = run({"--screenshot", shot, VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"});
+    QCOMPARE(good.first, 0);
+    QVERIFY(!QImage(shot).isNull());
+    const auto missing = run({"--screenshot", shot, "/no/such/model.vtu"});
+    QCOMPARE(missing.first, 1);
+    QVERIFY2(missing.second.contains("/no/such/model.vtu"), qPrintable(missing.second));
+    const auto unwritable = run({"--screenshot", "/no/such/folder/shot.png", VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"});
+    QCOMPARE(unwritable.first, 1);
+    QVERIFY2(unwritable.second.contains("/no/such/folder"), qPrintable(unwritable.second));
+  }
+
   void aBadFileLeavesTheModelAsItWas() {
     const auto before = window_->session();
     QTimer closer;  // dismiss the error box the window shows
@@ -411,9 +434,16 @@ class MainWindowTest : public QObject {
       if (QWidget* modal = QApplication::activeModalWidget()) modal->close();
     });
     closer.start(50);
-    QVERIFY(!open(VOLPOST_TEST_DATA "/bad/truncated_appended.vtu"));
+    // No dialog outlives its load: a leftover "Reading..." one would block every button.
+    for (const char* bad : {"/bad/truncated_appended.vtu", "/bad/truncated_in_results.frd", "/bad/unknown_cell_type.vtu",
+                            "/bad/wrong_count_cells.vtu"}) {
+      QVERIFY2(!open(QString(VOLPOST_TEST_DATA) + bad), bad);
+      QTest::qWait(400);  // longer than the dialogs' delay before showing
+      QCOMPARE(window_->session(), before);
+      for (const QProgressDialog* d : window_->findChildren<QProgressDialog*>()) QVERIFY2(!d->isVisible(), bad);
+      QVERIFY(!QApplication::activeModalWidget());
+    }
     closer.stop();
-    QCOMPARE(window_->session(), before);
   }
 
   void cleanupTestCase() { window_.reset(); }
