@@ -8,6 +8,7 @@
 #include "../core/PluginRenderers.hpp"
 #include "../core/Probe.hpp"
 #include "../core/SceneImage.hpp"
+#include "../core/VolumeDefaults.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "../core/CameraSpec.hpp"
 #include "CliSupport.hpp"
@@ -368,6 +369,9 @@ int runRender(const QStringList& args) {
       if (const auto lines = scene.streamlineResult(); lines && lines->outside)
         std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
                      lines->outside, lines->seeds);
+      if (scene.volumeShown() && scene.view() && scene.state().volume.transferFunction)
+        if (const auto note = transferFunctionRangeNote(scene.transferFunction(), *scene.view()))
+          std::fprintf(stderr, "volpost: warning: %s\n", note->c_str());
       for (std::size_t i = 0; i < scene.probes().size(); ++i) {  // drawn, labelled "outside": say so here too
         const glm::dvec3& at = scene.probes()[i];
         if (!probeAt(*scene.session(), at, scene.state().step).inside())

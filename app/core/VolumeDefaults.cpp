@@ -2,6 +2,8 @@
 #include "VolumeDefaults.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace volpost::app {
 
@@ -14,10 +16,42 @@ TransferFunction defaultTransferFunction(const ScalarView& view, double modelDia
     hi = range->max;
   }
   // A thin fog everywhere (10%) so the part's shape shows, dense where the result peaks.
+  // A signed result (a stress component, a pressure) peaks at both ends: dense at both,
+  // clear near zero, so no shell of high values hides the lowest ones.
   const double tauMax = 24.0 / std::max(modelDiagonal, 1e-300);
   std::vector<ControlPoint> points = TransferFunction::ramp(lo, hi, colorMap, tauMax).points();
-  for (auto& p : points) p.extinction = tauMax * (0.1 + 0.9 * (p.value - lo) / (hi - lo));
+  const bool signedResult = lo < 0.0 && hi > 0.0;
+  const double largest = std::max(-lo, hi);
+  for (auto& p : points) {
+    const double weight = signedResult ? std::abs(p.value) / largest : (p.value - lo) / (hi - lo);
+    p.extinction = tauMax * (0.1 + 0.9 * weight);
+  }
+  if (signedResult) {  // a point at zero, so the clear middle is where the sign changes
+    const glm::dvec3 zeroColor = ColorMap::named(colorMap).at(-lo / (hi - lo));
+    points.push_back({0.0, zeroColor, tauMax * 0.1});
+    std::sort(points.begin(), points.end(), [](const ControlPoint& a, const ControlPoint& b) { return a.value < b.value; });
+    points.erase(std::unique(points.begin(), points.end(),
+                             [](const ControlPoint& a, const ControlPoint& b) { return a.value == b.value; }),
+                 points.end());
+  }
   return TransferFunction(std::move(points));
+}
+
+std::optional<std::string> transferFunctionRangeNote(const TransferFunction& tf, const ScalarView& view) {
+  if (!view.range.valid() || tf.points().empty()) return std::nullopt;
+  const double lo = view.range.min, hi = view.range.max;
+  const double overlap = std::min(hi, tf.maxValue()) - std::max(lo, tf.minValue());
+  const bool covered = hi > lo ? overlap >= 0.5 * (hi - lo) : (lo >= tf.minValue() && lo <= tf.maxValue());
+  if (covered) return std::nullopt;
+  const auto number = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return std::string(text);
+  };
+  const std::string what = overlap > 0.0 ? "covers less than half of it" : "misses it";
+  return "the transfer function spans " + number(tf.minValue()) + " to " + number(tf.maxValue()) + " but " +
+         view.quantity.displayName() + " spans " + number(lo) + " to " + number(hi) + ": it " + what +
+         " (made for another result?)";
 }
 
 ColorMap colorMapOf(const TransferFunction& tf) {

@@ -6,6 +6,7 @@
 #include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
+#include "../core/VolumeDefaults.hpp"
 #include "ProbeController.hpp"
 #include "StepController.hpp"
 #include "StreamlineDialog.hpp"
@@ -720,7 +721,8 @@ void MainWindow::setTransferFunction(const TransferFunction& tf) {
   const auto& view = viewport_->scene().view();
   if (!session_ || !view) return;
   userTransferFunctions_[view->quantity.key()] = tf;
-  changeScene([&](Scene& s) { s.setTransferFunction(tf); });
+  if (changeScene([&](Scene& s) { s.setTransferFunction(tf); }))
+    if (const auto note = transferFunctionRangeNote(tf, *view)) statusBar()->showMessage("Note: " + QString::fromStdString(*note));
 }
 
 std::vector<double> MainWindow::activeValues() const {

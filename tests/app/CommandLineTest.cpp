@@ -315,3 +315,14 @@ TEST(CommandLine, EveryVerbsHelpNamesTheVerbAndExitsZero) {
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("no-such-option"), std::string::npos) << unknown.output;
 }
+
+TEST(RenderCommand, WarnsWhenTheTransferFunctionMissesTheResult) {
+  const std::string tf = ::testing::TempDir() + "/other_field_tf.json", out = ::testing::TempDir() + "/tf_missing.png";
+  std::ofstream(tf) << R"({"format": "volpost-tf", "version": 1, "points": [)"
+                    << R"({"value": 1000, "color": [0,0,1], "extinction": 0.5}, {"value": 2000, "color": [1,0,0], "extinction": 1}]})";
+  const auto r = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                            " --field S.mises --renderer reference --size 32x32 --tf " + tf + " -o " + out);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: the transfer function spans 1000 to 2000 but S von Mises spans"), std::string::npos)
+      << r.output;
+}

@@ -9,6 +9,7 @@
 #include "RayCaster.hpp"
 #include "core/AnimationFrames.hpp"
 #include "core/SceneImage.hpp"
+#include "core/VolumeDefaults.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -238,4 +239,39 @@ TEST(AnimationFrames, NumbersGoBeforeTheExtensionPaddedToTheCount) {
   EXPECT_EQ(framePath("frames/wheel.png", 1233, 1234), "frames/wheel_1234.png");
   EXPECT_EQ(framePath("a.b/wheel", 4, 10), "a.b/wheel_005");
   EXPECT_EQ(framePath("out.tar.jpg", 9, 10), "out.tar_010.jpg");
+}
+
+// A signed result's default is dense at both ends and clear at zero (no shell of high
+// values hides the lowest); a one-signed result's rises with the value.
+TEST(VolumeDefaults, SignedResultsAreDenseAtBothEndsAndClearAtZero) {
+  ScalarView signedView;
+  signedView.values = {-40.0, 0.0, 100.0};
+  signedView.range = rangeOf(signedView.values);
+  const TransferFunction tf = defaultTransferFunction(signedView, 1.0);
+  const double tauMax = 24.0;
+  EXPECT_NEAR(tf.extinction(0.0), 0.1 * tauMax, 1e-9);
+  EXPECT_NEAR(tf.extinction(100.0), tauMax, 1e-9);
+  EXPECT_NEAR(tf.extinction(-40.0), tauMax * (0.1 + 0.9 * 0.4), 1e-9);
+  EXPECT_GT(tf.extinction(-40.0), tf.extinction(-10.0));
+  ScalarView positive;
+  positive.values = {10.0, 30.0};
+  positive.range = rangeOf(positive.values);
+  const TransferFunction rising = defaultTransferFunction(positive, 1.0);
+  EXPECT_NEAR(rising.extinction(10.0), 0.1 * tauMax, 1e-9);
+  EXPECT_NEAR(rising.extinction(30.0), tauMax, 1e-9);
+}
+
+TEST(VolumeDefaults, ATransferFunctionMadeForOtherValuesIsNoted) {
+  ScalarView view;
+  view.quantity = Quantity{"S", ScalarOp::VonMises, 0, FieldKind::SymTensor};
+  view.values = {58.0, 103.0};
+  view.range = rangeOf(view.values);
+  EXPECT_FALSE(transferFunctionRangeNote(defaultTransferFunction(view, 1.0), view));
+  const TransferFunction other({{1000.0, {0, 0, 1}, 0.5}, {2000.0, {1, 0, 0}, 1.0}});
+  const auto note = transferFunctionRangeNote(other, view);
+  ASSERT_TRUE(note);
+  EXPECT_NE(note->find("misses it"), std::string::npos) << *note;
+  EXPECT_NE(note->find("1000"), std::string::npos) << *note;
+  const TransferFunction partly({{90.0, {0, 0, 1}, 0.5}, {200.0, {1, 0, 0}, 1.0}});
+  EXPECT_NE(transferFunctionRangeNote(partly, view)->find("less than half"), std::string::npos);
 }

@@ -109,6 +109,22 @@ void TfEditorPanel::buildUi() {
     presets_->setCurrentIndex(0);
   });
   top->addWidget(presets_, 1);
+  shapes_ = new QComboBox(this);
+  shapes_->setObjectName("tfOpacityShape");
+  shapes_->setMinimumContentsLength(8);
+  shapes_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  shapes_->setToolTip("Reshape the opacity curve, keeping the colors: which values are dense");
+  shapes_->addItem("Opacity...", QString());
+  shapes_->addItem("Rising: high values dense", "rising");
+  shapes_->addItem("Falling: low values dense", "falling");
+  shapes_->addItem("Both ends dense (signed results: clear at zero)", "ends");
+  shapes_->addItem("Middle dense", "middle");
+  connect(shapes_, &QComboBox::activated, this, [this](int index) {
+    const QString shape = shapes_->itemData(index).toString();
+    if (!shape.isEmpty()) applyOpacityShape(shape);
+    shapes_->setCurrentIndex(0);
+  });
+  top->addWidget(shapes_, 1);
   const auto button = [&](const QString& text, const QString& tip, auto slot) {
     auto* b = new QToolButton(this);
     b->setText(text);
@@ -386,6 +402,26 @@ void TfEditorPanel::applyPreset(const QString& name) {
   }
   model_.replaceAll(points, "Preset " + name);
   settings().setValue("tfeditor/preset", name);
+}
+
+void TfEditorPanel::applyOpacityShape(const QString& shape) {
+  auto points = model_.points();
+  if (points.size() < 2) return;
+  const double lo = points.front().value, hi = points.back().value;
+  if (!(hi > lo)) return;
+  double peak = 0.0;
+  for (const auto& p : points) peak = std::max(peak, p.opacity);
+  if (!(peak > 0.0)) peak = 0.5;
+  const bool signedRange = lo < 0.0 && hi > 0.0;
+  for (auto& p : points) {
+    const double t = (p.value - lo) / (hi - lo);
+    double weight = t;
+    if (shape == "falling") weight = 1.0 - t;
+    else if (shape == "ends") weight = signedRange ? std::abs(p.value) / std::max(-lo, hi) : std::abs(2.0 * t - 1.0);
+    else if (shape == "middle") weight = 1.0 - std::abs(2.0 * t - 1.0);
+    p.opacity = std::clamp(peak * (0.1 + 0.9 * weight), 0.0, 1.0);
+  }
+  model_.replaceAll(points, "Opacity " + shape);
 }
 
 bool TfEditorPanel::loadFile(const QString& path, QString* error) {

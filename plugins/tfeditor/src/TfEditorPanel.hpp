@@ -46,6 +46,10 @@ class TfEditorPanel : public QWidget {
   /// Sends pending edits to the host now (the coalescing timer would do it shortly).
   void flush();
   void applyPreset(const QString& name);
+  /// Reshapes the opacity curve over the points' values, keeping their colors and the
+  /// curve's peak: "rising" (high values dense), "falling" (low values dense), "ends"
+  /// (both ends dense, clear at zero for a signed range, else at the middle), "middle".
+  void applyOpacityShape(const QString& shape);
   bool loadFile(const QString& path, QString* error = nullptr);
   bool saveFile(const QString& path, QString* error = nullptr) const;
   bool importParaView(const QString& path, QString* error = nullptr);
@@ -64,6 +68,7 @@ class TfEditorPanel : public QWidget {
   TfEditModel model_;
   TfCurveWidget* curve_ = nullptr;
   QComboBox* presets_ = nullptr;
+  QComboBox* shapes_ = nullptr;
   QLineEdit* valueEdit_ = nullptr;
   QLineEdit* opacityEdit_ = nullptr;
   QPushButton* colorButton_ = nullptr;

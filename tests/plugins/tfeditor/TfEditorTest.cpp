@@ -167,6 +167,24 @@ class TfEditorTest : public QObject {
     QVERIFY(std::abs(host_->tf.points().back().extinction - opacityToExtinction(0.003, 1.0)) < 1e-15);
   }
 
+  void opacityShapesKeepTheColorsAndThePeak() {
+    const auto before = panel_->model().points();
+    double peak = 0.0;
+    for (const auto& p : before) peak = std::max(peak, p.opacity);
+    panel_->applyOpacityShape("falling");
+    const auto& after = panel_->model().points();
+    QCOMPARE(after.size(), before.size());
+    for (std::size_t i = 0; i < after.size(); ++i) QCOMPARE(after[i].color, before[i].color);
+    QVERIFY(std::abs(after.front().opacity - peak) < 1e-12);
+    QVERIFY(std::abs(after.back().opacity - 0.1 * peak) < 1e-12);
+    panel_->applyOpacityShape("rising");
+    QVERIFY(std::abs(panel_->model().points().back().opacity - peak) < 1e-12);
+    panel_->model().undoStack()->undo();  // one undo step each
+    QVERIFY(std::abs(panel_->model().points().front().opacity - peak) < 1e-12);
+    panel_->model().undoStack()->undo();
+    QCOMPARE(panel_->model().points(), before);
+  }
+
   void presetsRecolorAndFilesRoundTrip() {
     panel_->applyPreset("grayscale");
     const auto& p = panel_->model().points();
