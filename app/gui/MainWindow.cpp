@@ -737,6 +737,11 @@ double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStat
 void MainWindow::notifyPanels() {
   if (probes_) probes_->refresh();
   if (steps_) steps_->refresh();
+  // One color control at a time: the volume's colors are its transfer function's.
+  const bool volume = viewport_->scene().volumeShown();
+  colorMapBox_->setEnabled(!volume);
+  colorMapBox_->setToolTip(volume ? "The volume's colors are set in the Transfer Function panel (Colors...)"
+                                  : "The color map of the surface and of a new volume's transfer function");
   for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
 }
 

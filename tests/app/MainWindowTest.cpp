@@ -112,8 +112,12 @@ class MainWindowTest : public QObject {
     QVERIFY2(action->isEnabled(), "the volume plugin provides a renderer");
     Viewport* view = window_->viewport();
     const auto surface = summarize(view->grabFramebuffer());
+    auto* colors = window_->findChild<QComboBox*>("colorMapBox");
+    QVERIFY(colors->isEnabled());
     action->setChecked(true);
     QVERIFY(view->scene().volumeShown());
+    QVERIFY2(!colors->isEnabled(), "one color control: the transfer function's");
+    QVERIFY(!view->scene().volume().edges);  // no cage of element edges over the volume
     const auto volume = summarize(view->grabFramebuffer());
     QVERIFY(volume.second != surface.second);
     window_->findChild<QAction*>("clip:0")->trigger();

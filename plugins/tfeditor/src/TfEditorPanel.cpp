@@ -152,6 +152,16 @@ void TfEditorPanel::buildUi() {
   QAction* redo = model_.undoStack()->createRedoAction(this, "Redo");
   undo->setShortcuts(QKeySequence::Undo);
   redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+  // The buttons keep their width (the panel, and so the view, must not resize with every
+  // edit): the step's name goes to the tooltip.
+  const auto keepText = [](QAction* a, const QString& word) {
+    return [a, word](const QString& step) {  // runs after the action's own update
+      a->setToolTip(step.isEmpty() ? word : word + " " + step);
+      a->setText(word);
+    };
+  };
+  connect(model_.undoStack(), &QUndoStack::undoTextChanged, undo, keepText(undo, "Undo"));
+  connect(model_.undoStack(), &QUndoStack::redoTextChanged, redo, keepText(redo, "Redo"));
   for (QAction* a : {undo, redo}) {
     a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
     addAction(a);

@@ -11,6 +11,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 
 #include <cmath>
 
@@ -179,6 +180,13 @@ class TfEditorTest : public QObject {
     QVERIFY(std::abs(after.back().opacity - 0.1 * peak) < 1e-12);
     panel_->applyOpacityShape("rising");
     QVERIFY(std::abs(panel_->model().points().back().opacity - peak) < 1e-12);
+    // The Undo button keeps its word (the panel does not change width); the step is in its tooltip.
+    QToolButton* undoButton = nullptr;
+    for (auto* b : panel_->findChildren<QToolButton*>())
+      if (b->defaultAction() && b->defaultAction()->text() == "Undo") undoButton = b;
+    QVERIFY(undoButton);
+    QCOMPARE(undoButton->text(), QString("Undo"));
+    QVERIFY2(undoButton->defaultAction()->toolTip().contains("Opacity rising"), qPrintable(undoButton->defaultAction()->toolTip()));
     panel_->model().undoStack()->undo();  // one undo step each
     QVERIFY(std::abs(panel_->model().points().front().opacity - peak) < 1e-12);
     panel_->model().undoStack()->undo();
