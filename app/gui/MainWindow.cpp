@@ -8,6 +8,7 @@
 #include "PluginsDialog.hpp"
 #include "../core/VolumeDefaults.hpp"
 #include "ProbeController.hpp"
+#include "RecentFiles.hpp"
 #include "StepController.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
@@ -22,6 +23,10 @@
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QMimeData>
+#include <QUrl>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
@@ -76,6 +81,7 @@ bool MainWindow::changeScene(Change&& change) {
 
 MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(parent), plugins_(plugins) {
   setWindowTitle("volpost");
+  setAcceptDrops(true);
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
@@ -98,6 +104,29 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
 
 MainWindow::~MainWindow() = default;
 
+namespace {
+
+QString droppedFile(const QMimeData* mime) {
+  if (!mime || !mime->hasUrls() || mime->urls().isEmpty()) return {};
+  const QUrl url = mime->urls().first();
+  return url.isLocalFile() ? url.toLocalFile() : QString();
+}
+
+}  // namespace
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+  if (!droppedFile(event->mimeData()).isEmpty()) event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+  const QString path = droppedFile(event->mimeData());
+  if (path.isEmpty()) return;
+  event->acceptProposedAction();
+  if (event->mimeData()->urls().size() > 1) statusBar()->showMessage("Opening the first of the dropped files: " + path);
+  if (QFileInfo(path).suffix().compare("json", Qt::CaseInsensitive) == 0) openStateFile(path);
+  else openFile(path);
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
   QSettings settings("volpost", "volpost");
   settings.setValue("window/geometry", saveGeometry());
@@ -109,6 +138,9 @@ void MainWindow::buildActions() {
   QMenu* file = menuBar()->addMenu("&File");
   fileMenu_ = file;
   file->addAction("&Open...", QKeySequence::Open, this, &MainWindow::chooseFile);
+  QMenu* recent = file->addMenu("Open &Recent");
+  recent->setObjectName("recentMenu");
+  new RecentFiles(*recent, [this](const QString& path) { openFile(path); }, this);
   file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
   file->addSeparator();
   file->addAction("Open S&tate...", this, &MainWindow::chooseStateToOpen);
@@ -143,6 +175,16 @@ void MainWindow::buildActions() {
   connect(edgesAction_, &QAction::toggled, this, [this](bool on) {
     changeScene([on](Scene& s) { s.setShowEdges(on); });
     QSettings("volpost", "volpost").setValue("view/edges", on);
+  });
+  auto* trackball = view->addAction("&Trackball Rotation");
+  trackball->setObjectName("trackballAction");
+  trackball->setCheckable(true);
+  trackball->setStatusTip("Off: dragging turns the model like a turntable, upright; on: freely about the screen's axes");
+  trackball->setChecked(QSettings("volpost", "volpost").value("view/trackball", false).toBool());
+  viewport_->setTrackball(trackball->isChecked());
+  connect(trackball, &QAction::toggled, this, [this](bool on) {
+    viewport_->setTrackball(on);
+    QSettings("volpost", "volpost").setValue("view/trackball", on);
   });
   legendAction_ = view->addAction("&Legend");
   legendAction_->setCheckable(true);
@@ -529,6 +571,10 @@ void MainWindow::buildPanels() {
       tabifiedProbes = true;
     }
   }
+  // View > Panels brings back a panel that was closed.
+  QMenu* panels = viewMenu_->addMenu("P&anels");
+  panels->setObjectName("panelsMenu");
+  for (QDockWidget* d : findChildren<QDockWidget*>()) panels->addAction(d->toggleViewAction());
 }
 
 void MainWindow::chooseFile() {
@@ -623,6 +669,7 @@ void MainWindow::openFile(const QString& path) {
 
 void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   session_ = std::move(session);
+  RecentFiles::add(QString::fromStdString(session_->model().sourcePath));
   userTransferFunctions_.clear();  // a new model: its fields get their own defaults
   const Model& m = session_->model();
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));

@@ -70,6 +70,9 @@ class MainWindow : public QMainWindow, public PanelHost {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  /// A model file dropped on the window opens; a state file (.json) is applied.
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
  private:
   void buildActions();

@@ -86,9 +86,13 @@ StepController::StepController(QMainWindow& window, Viewport& viewport, QToolBar
   maxField_ = toolbar.addWidget(maxEdit_);
   connect(rangeBox_, &QComboBox::currentIndexChanged, this, &StepController::chooseRangeMode);
 
-  // After File > Save Image, its neighbour.
+  // After File > Save Image, its neighbour (or at the end of the menu).
   auto* exportAction = new QAction("Export &Animation...", &fileMenu);
-  fileMenu.insertAction(fileMenu.actions().value(2), exportAction);
+  QAction* before = nullptr;
+  const auto actions = fileMenu.actions();
+  for (qsizetype i = 0; i + 1 < actions.size(); ++i)
+    if (actions[i]->text().contains("Save &Image")) before = actions[i + 1];
+  fileMenu.insertAction(before, exportAction);
   exportAction->setObjectName("exportAnimationAction");
   connect(exportAction, &QAction::triggered, this, [this] {
     QSettings settings("volpost", "volpost");

@@ -155,6 +155,13 @@ std::optional<glm::dvec3> Viewport::surfacePointAt(const QPointF& pixel) const {
 void Viewport::mousePressEvent(QMouseEvent* event) {
   lastMouse_ = event->position().toPoint();
   if (event->button() == Qt::LeftButton) pressedAt_ = event->position();
+  // The turntable turns about the world axis closest to the screen's up, signed.
+  const glm::dvec3 up = scene_.camera().up();
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(up[k]) > std::abs(up[axis])) axis = k;
+  dragUp_ = glm::dvec3(0.0);
+  dragUp_[axis] = up[axis] < 0.0 ? -1.0 : 1.0;
   if (rakeMode_ && event->button() == Qt::LeftButton) {
     rakeStart_ = rakeEnd_ = event->position();
     update();
@@ -217,7 +224,8 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   const bool pan = (event->buttons() & (Qt::RightButton | Qt::MiddleButton)) ||
                    ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier));
   if (pan) camera.pan(double(d.x()) / height(), -double(d.y()) / height());
-  else if (event->buttons() & Qt::LeftButton) camera.orbit(-0.4 * d.x(), -0.4 * d.y());
+  else if ((event->buttons() & Qt::LeftButton) && trackball_) camera.orbit(-0.4 * d.x(), -0.4 * d.y());
+  else if (event->buttons() & Qt::LeftButton) camera.turntable(-0.4 * d.x(), -0.4 * d.y(), dragUp_);
   else return;
   update();
 }

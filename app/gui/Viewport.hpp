@@ -30,6 +30,11 @@ class Viewport : public QOpenGLWidget {
   void fit();
   void setStandardView(StandardView view);
   void setProjection(Camera::Projection projection);
+  /// A left drag turns the model like a turntable (about the world axis nearest the
+  /// screen's up when the drag starts: the model stays upright), or with trackball on
+  /// about the screen's axes (free, can roll).
+  void setTrackball(bool on) { trackball_ = on; }
+  bool trackball() const { return trackball_; }
   /// Moves the first free clip plane along its normal (model units); Ctrl+drag does this.
   void moveClipPlane(double distance);
 
@@ -77,6 +82,8 @@ class Viewport : public QOpenGLWidget {
   bool overlayReady_ = false;
   QPoint lastMouse_;
   bool rakeMode_ = false;
+  bool trackball_ = false;
+  glm::dvec3 dragUp_{0.0, 0.0, 1.0};  ///< the turntable's axis for the drag in progress
   std::optional<QPointF> rakeStart_, rakeEnd_;  ///< the rake being drawn, widget pixels
   bool probeMode_ = false;
   std::optional<QPointF> pressedAt_;  ///< where the left button went down (a click or a drag)

@@ -17,6 +17,11 @@
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QMouseEvent>
+#include <QMenu>
+#include <QMimeData>
+#include <QUrl>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStatusBar>
@@ -429,6 +434,36 @@ class MainWindowTest : public QObject {
     const auto unwritable = run({"--screenshot", "/no/such/folder/shot.png", VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"});
     QCOMPARE(unwritable.first, 1);
     QVERIFY2(unwritable.second.contains("/no/such/folder"), qPrintable(unwritable.second));
+  }
+
+  // A dropped file opens; what opened is in File > Open Recent; a closed panel comes back
+  // from View > Panels.
+  void dropRecentFilesAndPanels() {
+    QSignalSpy finished(window_.get(), &MainWindow::loadFinished);
+    auto* mime = new QMimeData;
+    mime->setUrls({QUrl::fromLocalFile(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu")});
+    QDragEnterEvent enter(QPoint(100, 100), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &enter);
+    QVERIFY(enter.isAccepted());
+    QDropEvent drop(QPointF(100, 100), Qt::CopyAction, mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(window_.get(), &drop);
+    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.first().first().toBool());
+    QCOMPARE(window_->session()->model().mesh.cellCount(), std::size_t(12431));
+    delete mime;
+    auto* recent = window_->findChild<QMenu*>("recentMenu");
+    QVERIFY(recent);
+    emit recent->aboutToShow();
+    QVERIFY(!recent->actions().isEmpty());
+    QVERIFY2(recent->actions().first()->text().contains("bar_tet4.vtu"), qPrintable(recent->actions().first()->text()));
+    auto* model = window_->findChild<QDockWidget*>("modelDock");
+    model->close();
+    QVERIFY(!model->isVisible());
+    auto* panels = window_->findChild<QMenu*>("panelsMenu");
+    QVERIFY(panels && panels->actions().size() >= 3);  // Model, Probe and the plugins' panels
+    for (QAction* a : panels->actions())
+      if (a == model->toggleViewAction()) a->trigger();
+    QVERIFY(model->isVisible());
   }
 
   void aBadFileLeavesTheModelAsItWas() {

@@ -76,6 +76,24 @@ void Camera::orbit(double azimuthDeg, double elevationDeg) {
                              glm::angleAxis(glm::radians(-elevationDeg), glm::dvec3(1, 0, 0)));
 }
 
+void Camera::turntable(double azimuthDeg, double elevationDeg, const glm::dvec3& up) {
+  if (!(glm::length(up) > 0.0) || !std::isfinite(azimuthDeg) || !std::isfinite(elevationDeg)) return;
+  const glm::dvec3 axis = glm::normalize(up);
+  rotation_ = glm::normalize(glm::angleAxis(glm::radians(-azimuthDeg), axis) * rotation_);
+  // The screen's up keeps a positive part along the axis (at least sin 1 degree): the
+  // model never turns over the pole. A step that would is shortened until it does not.
+  const glm::dvec3 right = rotation_ * glm::dvec3(1, 0, 0);
+  double step = elevationDeg;
+  for (int tries = 0; tries < 12 && step != 0.0; ++tries, step *= 0.5) {
+    const glm::dquat raised = glm::normalize(glm::angleAxis(glm::radians(-step), right) * rotation_);
+    const double upright = glm::dot(raised * glm::dvec3(0, 1, 0), axis);
+    if (upright >= std::sin(glm::radians(1.0)) || upright >= glm::dot(rotation_ * glm::dvec3(0, 1, 0), axis)) {
+      rotation_ = raised;  // upright enough, or no worse than before
+      return;
+    }
+  }
+}
+
 void Camera::pan(double dxFraction, double dyFraction) {
   const double h = viewHeight();
   target_ -= rotation_ * glm::dvec3(dxFraction * h, dyFraction * h, 0.0);

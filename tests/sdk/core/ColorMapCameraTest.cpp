@@ -91,3 +91,27 @@ TEST(Camera, FittedModelStaysInsideTallPicturesAndLeftOfTheMargin) {
   c.setRightMargin(std::nan(""));
   EXPECT_EQ(c.rightMargin(), 0.0);
 }
+
+// A turntable keeps the model upright: after any drags the screen's x axis stays level
+// (no roll), and the elevation stops short of looking straight down the axis. The
+// trackball, by contrast, rolls after a loop of drags.
+TEST(Camera, TurntableKeepsTheModelUprightWhereTheTrackballRolls) {
+  Camera table, ball;
+  table.setView(StandardView::Isometric);
+  ball.setView(StandardView::Isometric);
+  const glm::dvec3 z(0, 0, 1);
+  for (int i = 0; i < 40; ++i) {  // a loop: right, up, left, down
+    const double az = i % 4 == 0 ? 30.0 : i % 4 == 2 ? -30.0 : 0.0;
+    const double el = i % 4 == 1 ? 25.0 : i % 4 == 3 ? -25.0 : 0.0;
+    table.turntable(az, el, z);
+    ball.orbit(az, el);
+  }
+  const glm::dvec3 tableRight = glm::cross(table.viewDirection(), table.up());
+  EXPECT_NEAR(glm::dot(tableRight, z), 0.0, 1e-9) << "no roll";
+  EXPECT_GT(glm::dot(table.up(), z), 0.0);
+  const glm::dvec3 ballRight = glm::cross(ball.viewDirection(), ball.up());
+  EXPECT_GT(std::abs(glm::dot(ballRight, z)), 1e-3) << "the trackball rolled (the reason for the turntable)";
+  for (int i = 0; i < 100; ++i) table.turntable(0.0, -10.0, z);  // far past the pole
+  EXPECT_LT(std::abs(glm::dot(table.viewDirection(), z)), std::cos(glm::radians(0.99))) << "a degree short of the pole";
+  EXPECT_GT(glm::dot(table.up(), z), -1e-9) << "not flipped over the pole";
+}

@@ -24,8 +24,12 @@ class Camera {
   /// Places the target at the bounds' center and backs off so the bounding sphere fits.
   void fit(const Bounds& bounds);
   void setView(StandardView view);
-  /// Turntable rotation: azimuth about the up axis, elevation about the screen's x axis (deg).
+  /// Trackball rotation about the camera's own axes: azimuth about the screen's y axis,
+  /// elevation about its x axis (degrees). Repeated drags can roll the model.
   void orbit(double azimuthDeg, double elevationDeg);
+  /// Turntable rotation: azimuth about the world direction `up` (the model stays upright),
+  /// elevation about the screen's x axis, stopping a degree short of looking along `up`.
+  void turntable(double azimuthDeg, double elevationDeg, const glm::dvec3& up);
   /// Moves the target in the screen plane by a fraction of the view height.
   void pan(double dxFraction, double dyFraction);
   /// factor > 1 moves closer (perspective) or magnifies (orthographic).
