@@ -56,6 +56,11 @@ struct Options {
   QCommandLineOption step{"step", "Load case / time step, 1-based (default 1).", "K"};
   QCommandLineOption camera{"camera", "View: iso, +x, -x, +y, -y, +z, -z; then az=DEG, el=DEG, zoom=F, "
                                       "ortho or persp, comma-separated (default iso).", "SPEC"};
+  QCommandLineOption eye{"eye", "Explicit camera: where the eye is (model coordinates; after --camera).", "X,Y,Z"};
+  QCommandLineOption target{"target", "Explicit camera: the point looked at (default: the model's centre).", "X,Y,Z"};
+  QCommandLineOption up{"up", "Explicit camera: the direction that is up in the picture.", "X,Y,Z"};
+  QCommandLineOption viewAngle{"view-angle", "Angle of view across the picture's narrower side, degrees (default 30).",
+                               "DEG"};
   QCommandLineOption size{"size", "Image size (default 800x600).", "WxH", "800x600"};
   QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale; also the colors of "
                                           "the default volume transfer function.", "NAME"};
@@ -219,6 +224,28 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
                      "and values are used: leave them out");
 }
 
+// --eye, --target, --up, --view-angle: each replaces that part of the camera so far (the
+// state file's, --camera's or the default view).
+void applyExplicitCamera(const QCommandLineParser& p, const Options& o, Camera& camera) {
+  const auto point = [&](const QCommandLineOption& option, glm::dvec3 fallback) {
+    if (!p.isSet(option)) return fallback;
+    const auto v = parsePoint(p.value(option));
+    if (!v) throw UsageError(QString("--%1 %2 is not X,Y,Z").arg(option.names().first(), p.value(option)).toStdString());
+    return *v;
+  };
+  if (p.isSet(o.viewAngle)) {
+    bool ok = false;
+    const double degrees = p.value(o.viewAngle).toDouble(&ok);
+    if (!ok || !(degrees > 0.0 && degrees < 180.0))
+      throw UsageError(QString("--view-angle %1 is not an angle between 0 and 180 degrees").arg(p.value(o.viewAngle)).toStdString());
+    camera.setFieldOfView(degrees);
+  }
+  if (!p.isSet(o.eye) && !p.isSet(o.target) && !p.isSet(o.up)) return;
+  const glm::dvec3 target = point(o.target, camera.target());
+  const glm::dvec3 eye = point(o.eye, target - camera.viewDirection() * glm::length(camera.eye() - camera.target()));
+  camera.lookAt(eye, target, point(o.up, camera.up()));  // invalid_argument (eye at target, up along view): usage
+}
+
 void applyOptions(const QCommandLineParser& p, const Options& o, const SceneState& base, Scene& scene) {
   if (p.isSet(o.state)) scene.applyState(base);
   applyResultOptions(p, o, scene);
@@ -238,6 +265,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     scene.fitCamera();
     applyCameraSpec(scene.camera(), p.value(o.camera).toStdString());  // invalid_argument: a usage error
   }
+  applyExplicitCamera(p, o, scene.camera());
   applyVolumeOptions(p, o, scene);
   if (p.isSet(o.noSurface)) scene.setSurfaceShown(false);
   if (p.isSet(o.surfaceOpacity)) {
@@ -296,7 +324,7 @@ int runRender(const QStringList& args) {
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   const Options o;
-  parser.addOptions({o.field, o.step, o.camera, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
+  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});

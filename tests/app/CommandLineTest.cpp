@@ -326,3 +326,20 @@ TEST(RenderCommand, WarnsWhenTheTransferFunctionMissesTheResult) {
   EXPECT_NE(r.output.find("warning: the transfer function spans 1000 to 2000 but S von Mises spans"), std::string::npos)
       << r.output;
 }
+
+// An explicit camera: the state file keeps it, and renders the same picture back.
+TEST(RenderCommand, ExplicitCameraRoundTripsThroughTheStateFile) {
+  const std::string dir = ::testing::TempDir(), model = dataFile("bar/bar_tet4.vtu");
+  const std::string first = dir + "/explicit.png", again = dir + "/explicit_again.png", state = dir + "/explicit.json";
+  const auto r = runVolpost("render " + model + " --field S.mises --eye 5,-20,0.5 --target 5,0.5,0.5 --up 0,0,1 "
+                            "--view-angle 40 --size 96x64 -o " + first + " --save-state " + state);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(state);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"fieldOfView\": 40.0"), std::string::npos) << text;
+  ASSERT_EQ(runVolpost("render --state " + state + " --size 96x64 -o " + again).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(first)), QImage(QString::fromStdString(again)));
+  EXPECT_EQ(runVolpost("render " + model + " --eye 5,0.5,0.5 --target 5,0.5,0.5 -o " + first).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --view-angle 180 -o " + first).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --up 0,0 -o " + first).exitCode, 2);
+}
