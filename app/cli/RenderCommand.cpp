@@ -68,6 +68,7 @@ struct Options {
                                     "over every step (also the default transfer function's range).", "MIN:MAX"};
   QCommandLineOption noEdges{"no-edges", "Hide element edges on the surface."};
   QCommandLineOption noLegend{"no-legend", "Hide the color legend."};
+  QCommandLineOption noTriad{"no-triad", "Hide the orientation axes in the lower left corner."};
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
   QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
   QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result; reference: exact "
@@ -259,6 +260,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   }
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
+  if (p.isSet(o.noTriad)) scene.setShowTriad(false);
   if (p.isSet(o.flat)) scene.setLighting(false);
   if (p.isSet(o.camera)) {
     scene.camera().setView(StandardView::Isometric);
@@ -324,7 +326,7 @@ int runRender(const QStringList& args) {
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   const Options o;
-  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.flat, o.output,
+  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});

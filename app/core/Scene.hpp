@@ -82,6 +82,8 @@ class Scene {
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }
   void setShowLegend(bool show) { state_.legend = show; }
+  /// The orientation axes (x red, y green, z blue) in the lower left corner.
+  void setShowTriad(bool show) { state_.triad = show; }
   /// Throws std::invalid_argument when there is no result to show as a volume.
   void setVolumeShown(bool shown);
   /// Throws std::invalid_argument naming the choices when no plugin offers `name`.
@@ -117,6 +119,8 @@ class Scene {
   const std::vector<glm::dvec3>& probes() const { return state_.probes; }
   void setMarkExtremes(bool on) { state_.markExtremes = on; }
   bool marksExtremes() const { return state_.markExtremes; }
+  bool showsTriad() const { return state_.triad; }
+  std::size_t step() const { return state_.step; }  ///< 0-based
   /// Where the shown quantity is smallest and largest: a node, or an element's centre for
   /// element results (the first of equal values). nullopt without a result or values.
   struct Extremes {

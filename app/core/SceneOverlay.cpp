@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace volpost::app {
@@ -80,7 +81,7 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
     if (labels) {
       m.text = QString("%1").arg(i + 1);
       if (scene.view()) {
-        const ProbeResult r = probeAt(*scene.session(), probes[i], scene.state().step);
+        const ProbeResult r = probeAt(*scene.session(), probes[i], scene.step());
         const auto v = r.value(scene.view()->quantity.key());
         m.text += r.inside() && v ? QString(": %1").arg(shortNumber(*v)) : QString(": outside");
       }
@@ -100,6 +101,36 @@ void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& s
   };
   add(e->maxAt, QString("max %1").arg(shortNumber(e->max)), QColor(200, 30, 30), MarkerShape::Up);
   add(e->minAt, QString("min %1").arg(shortNumber(e->min)), QColor(30, 60, 200), MarkerShape::Down);
+}
+
+// The model's axes as the camera sees them, in the lower left corner: x red, y green, z
+// blue, the ones pointing away drawn first (behind).
+void paintTriad(QPainter& painter, const QRect& area, const Camera& camera, double scale) {
+  const glm::dvec3 right = glm::cross(camera.viewDirection(), camera.up());
+  const double length = 26.0 * scale;
+  const QPointF centre(area.left() + 14.0 * scale + length, area.bottom() - 14.0 * scale - length);
+  struct Axis {
+    glm::dvec3 direction;
+    QColor color;
+    const char* name;
+  };
+  std::array<Axis, 3> axes{{{{1, 0, 0}, QColor(210, 40, 40), "x"},
+                            {{0, 1, 0}, QColor(40, 160, 40), "y"},
+                            {{0, 0, 1}, QColor(40, 80, 220), "z"}}};
+  std::sort(axes.begin(), axes.end(), [&](const Axis& a, const Axis& b) {
+    return glm::dot(a.direction, camera.viewDirection()) > glm::dot(b.direction, camera.viewDirection());
+  });
+  const QFontMetricsF fm(painter.font());
+  for (const Axis& a : axes) {
+    const QPointF tip = centre + QPointF(glm::dot(a.direction, right), -glm::dot(a.direction, camera.up())) * length;
+    painter.setPen(QPen(a.color, 2.0 * scale, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(centre, tip);
+    const QPointF away = tip - centre;
+    const double n = std::hypot(away.x(), away.y());
+    const QPointF at = tip + (n > 1e-6 ? away / n : QPointF(0, 0)) * 7.0 * scale;
+    const QSizeF size(fm.horizontalAdvance(a.name), fm.height());
+    painter.drawText(QRectF(at - QPointF(size.width(), size.height()) / 2.0, size), Qt::AlignCenter, a.name);
+  }
 }
 
 }  // namespace
@@ -130,6 +161,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   if (scene.legend()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
   for (const Marker& m : markers)
     if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
+  if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);
   painter.restore();
   if (const auto legend = scene.legend()) paintLegend(painter, area, legend->colors, legend->content);
 }

@@ -268,6 +268,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                                               : json("auto")}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
+  out["triad"] = triad;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
   json points = json::array();
@@ -354,6 +355,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     }
   }
   if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
+  if (const json* triad = r.find(in, "triad")) s.triad = r.boolean(*triad, "triad");
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
   if (const json* markers = r.find(in, "markers")) {

@@ -96,6 +96,7 @@ struct SceneState {
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)
   double surfaceOpacity = 1.0;  ///< below 1 the surface is see-through (streamlines show)
   bool legend = true;
+  bool triad = true;          ///< the orientation axes in the lower left corner
   VolumeLayer volume;
   StreamlineLayer streamlines;
   /// Points probed (the window's Probe panel), marked and numbered in the view.

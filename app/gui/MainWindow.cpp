@@ -186,6 +186,11 @@ void MainWindow::buildActions() {
     viewport_->setTrackball(on);
     QSettings("volpost", "volpost").setValue("view/trackball", on);
   });
+  triadAction_ = view->addAction("Orientation A&xes");
+  triadAction_->setObjectName("triadAction");
+  triadAction_->setCheckable(true);
+  triadAction_->setChecked(true);
+  connect(triadAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowTriad(on); }); });
   legendAction_ = view->addAction("&Legend");
   legendAction_->setCheckable(true);
   legendAction_->setChecked(true);
@@ -913,6 +918,7 @@ void MainWindow::syncControlsToScene() {
   };
   check(edgesAction_, state.edges);
   check(legendAction_, state.legend);
+  check(triadAction_, state.triad);
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);

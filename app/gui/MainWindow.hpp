@@ -120,6 +120,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* volumeAction_ = nullptr;
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
+  QAction* triadAction_ = nullptr;
   QAction* streamlinesAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;

@@ -96,7 +96,7 @@ void Viewport::paintGL() {
 // texture: no QPainter on the GL context, so the core-profile state stays ours.
 void Viewport::drawLegend(int w, int h) {
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
-  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes()) return;
+  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad()) return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
   image.fill(Qt::transparent);

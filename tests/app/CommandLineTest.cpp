@@ -343,3 +343,22 @@ TEST(RenderCommand, ExplicitCameraRoundTripsThroughTheStateFile) {
   EXPECT_EQ(runVolpost("render " + model + " --view-angle 180 -o " + first).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --up 0,0 -o " + first).exitCode, 2);
 }
+
+// The orientation axes sit in the lower left corner; --no-triad leaves them out, and the
+// state file keeps the choice.
+TEST(RenderCommand, OrientationAxesInTheCornerUnlessTurnedOff) {
+  const std::string dir = ::testing::TempDir(), model = dataFile("bar/bar_tet4.vtu");
+  const std::string with = dir + "/triad.png", without = dir + "/no_triad.png", state = dir + "/no_triad.json";
+  ASSERT_EQ(runVolpost("render " + model + " --size 128x96 --no-legend -o " + with).exitCode, 0);
+  ASSERT_EQ(runVolpost("render " + model + " --size 128x96 --no-legend --no-triad -o " + without + " --save-state " + state).exitCode, 0);
+  const QImage a(QString::fromStdString(with)), b(QString::fromStdString(without));
+  int corner = 0, elsewhere = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      if (a.pixel(x, y) != b.pixel(x, y)) (x < 80 && y > a.height() - 80 ? corner : elsewhere)++;
+  EXPECT_GT(corner, 20);
+  EXPECT_EQ(elsewhere, 0);
+  std::ifstream in(state);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"triad\": false"), std::string::npos);
+}

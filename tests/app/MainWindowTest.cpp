@@ -186,8 +186,9 @@ class MainWindowTest : public QObject {
 
   void aSavedStateRendersTheSamePictureHeadless() {
     // The window's view saved as a state file; `volpost render --state` draws it pixel for
-    // pixel (same size, legend off: the legend's text is painted by two font paths).
+    // pixel (same size, legend and axes off: their text is painted by two font paths).
     QVERIFY(window_->selectQuantity("S.mises"));
+    window_->findChild<QAction*>("triadAction")->setChecked(false);
     auto* action = window_->findChild<QAction*>("volumeAction");
     action->setChecked(true);
     window_->findChild<QAction*>("clip:1")->trigger();
