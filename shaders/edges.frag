@@ -1,4 +1,9 @@
 #version 450 core
+#include "common/clip_planes.glsl"
+in vec3 vModelPosition;
 uniform vec3 color;
 out vec4 fragColor;
-void main() { fragColor = vec4(color, 1.0); }
+void main() {
+  if (clippedAway(vModelPosition)) discard;
+  fragColor = vec4(color, 1.0);
+}

@@ -1,6 +1,8 @@
 #version 450 core
 #include "common/colormap.glsl"
+#include "common/clip_planes.glsl"
 
+in vec3 vModelPosition;
 in vec3 vViewPosition;
 in vec3 vViewNormal;
 in float vValue;
@@ -19,6 +21,7 @@ uniform float opacity;
 out vec4 fragColor;
 
 void main() {
+  if (clippedAway(vModelPosition)) discard;
   vec3 base = scalarLocation < 0 ? plainColor
              : vMissing > 0.0    ? noValueColor
                                  : colorForValue(colorMap, vValue, valueMin, valueMax, noValueColor);

@@ -14,6 +14,7 @@ uniform mat4 modelView;
 uniform mat4 projection;
 uniform int scalarLocation;  // -1 none, 0 per node, 1 per cell
 
+out vec3 vModelPosition;  // relative to the model center, for the clip planes
 out vec3 vViewPosition;
 out vec3 vViewNormal;
 out float vValue;
@@ -21,6 +22,7 @@ out float vMissing;  // > 0 where any vertex of the triangle has no value
 
 void main() {
   vec4 viewPos = modelView * vec4(position, 1.0);
+  vModelPosition = position;
   vViewPosition = viewPos.xyz;
   vViewNormal = mat3(modelView) * normal;  // rotation + translation only: no inverse needed
   float value = scalarLocation == 0 ? scalars[node] : scalarLocation == 1 ? scalars[cell] : 0.0;

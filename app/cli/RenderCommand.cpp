@@ -79,9 +79,9 @@ struct Options {
   QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
                               "color map over the result's range.", "FILE"};
   QCommandLineOption clip{"clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
-                                  "(repeatable; volume rendering).", "PLANE"};
-  QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (volume "
-                                         "rendering).", "BOX"};
+                                  "(repeatable; the surface shows the cut face colored by the result).", "PLANE"};
+  QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (the "
+                                         "surface shows the cut faces).", "BOX"};
   QCommandLineOption iso{"iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; repeatable, up to 8; "
                                 "volume rendering).", "ISO"};
   QCommandLineOption volumeEdges{"volume-edges", "Volume rendering: draw the boundary's element edges, which hide "
@@ -206,7 +206,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   };
   if (surface) {
     const QString why = "works with volume renderers (--renderer raycast, vicp, reference)";
-    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.clip, &o.clipBox, &o.iso, &o.volumeEdges,
+    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.iso, &o.volumeEdges,
                                              &o.samplingStep, &o.termination, &o.floatOut, &o.threads})
       refuse(*option, why);
   } else {

@@ -12,7 +12,10 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace volpost::app {
 
@@ -25,12 +28,26 @@ class BoundaryRenderer {
   void setSession(std::shared_ptr<const ModelSession> session);
   /// Colors by the view's values; nullptr shows the plain surface.
   void setScalars(const ScalarView* view, DisplayRange range);
-  void setColorMap(const ColorMap& map) { surface_.setColorMap(map); }
+  void setColorMap(const ColorMap& map) {
+    surface_.setColorMap(map);
+    sections_.setColorMap(map);
+  }
+  /// Section cuts: the surface is cut away on the far side of each plane (the side its
+  /// normal points away from) and the model's cross-section on each plane is drawn, colored
+  /// by the view's values interpolated in the tets, as the surface is. Recomputed only when
+  /// the planes, `viewVersion` (the values) or the range change. Empty: no cuts.
+  void setCuts(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
+               DisplayRange range);
+  /// Triangles of the cross-sections now shown (for tests and the status bar).
+  std::size_t sectionTriangles() const { return sectionTriangles_; }
   void setShowEdges(bool show) { surface_.setShowEdges(show); }
   bool showEdges() const { return surface_.showEdges(); }
   /// Faces off: render() draws only the element edges (the opaque geometry over a volume).
   void setShowFaces(bool show) { surface_.setShowFaces(show); }
-  void setLighting(bool on) { surface_.setLighting(on); }
+  void setLighting(bool on) {
+    surface_.setLighting(on);
+    sections_.setLighting(on);
+  }
 
   void setOpacity(float opacity) { surface_.setOpacity(opacity); }
 
@@ -45,7 +62,17 @@ class BoundaryRenderer {
 
  private:
   SurfaceRenderer surface_;
+  SurfaceRenderer sections_;
   std::shared_ptr<const ModelSession> session_;
+  struct CutKey {
+    std::vector<ClipPlane> planes;
+    std::uint64_t viewVersion = 0;
+    DisplayRange range;
+    bool hasView = false;
+    bool operator==(const CutKey&) const = default;
+  };
+  std::optional<CutKey> cutFor_;  ///< what the sections now uploaded were cut for
+  std::size_t sectionTriangles_ = 0;
   bool initialized_ = false;
 };
 

@@ -499,6 +499,9 @@ void Scene::applyToBoundary() {
   if (changed_.model) boundary_.setSession(session_);
   if (changed_.model || changed_.scalars) boundary_.setScalars(view_ ? &*view_ : nullptr, displayRange());
   if (changed_.colorMap) boundary_.setColorMap(ColorMap::named(state_.colorMap));
+  // Section cuts in the surface view: the volume's planes and box cut the surface too.
+  boundary_.setCuts(state_.volume.shown ? std::vector<ClipPlane>{} : state_.volume.allClipPlanes(),
+                    view_ ? &*view_ : nullptr, viewVersion_, displayRange());
   changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
 }
 

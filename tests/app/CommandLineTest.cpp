@@ -362,3 +362,22 @@ TEST(RenderCommand, OrientationAxesInTheCornerUnlessTurnedOff) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("\"triad\": false"), std::string::npos);
 }
+
+// A section cut in the surface view: the bar (fixed at x = 0, pulled at x = 10, so U.x
+// grows linearly) cut at x = 5 and seen from +x shows the cut face in the middle color of
+// the map, where the uncut bar shows its loaded end in the top color, and a hollow shell
+// would show the fixed end's inside in the bottom color.
+TEST(RenderCommand, ASectionCutShowsTheCutFaceColoredByTheResult) {
+  const std::string model = dataFile("bar/bar_tet4.vtu");
+  const std::string common = " --field U.x --camera +x,ortho --flat --no-legend --no-triad --no-edges --size 64x64 -o ";
+  const std::string whole = ::testing::TempDir() + "/bar_whole.png", cut = ::testing::TempDir() + "/bar_cut.png";
+  ASSERT_EQ(runVolpost("render " + model + common + whole).exitCode, 0);
+  const auto r = runVolpost("render " + model + common + cut + " --clip 5,0.5,0.5,-1,0,0");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const QColor end = QImage(QString::fromStdString(whole)).pixelColor(32, 32);
+  const QColor middle = QImage(QString::fromStdString(cut)).pixelColor(32, 32);
+  EXPECT_GT(end.red() - end.blue(), 100) << "the loaded end: the top of cool-warm";
+  EXPECT_LT(std::abs(middle.red() - middle.blue()), 40) << "halfway: the middle of cool-warm, not the fixed end's blue";
+  EXPECT_GT(middle.green(), 150);
+  EXPECT_EQ(runVolpost("render " + model + " --clip 1,2,3 -o " + cut).exitCode, 2);
+}

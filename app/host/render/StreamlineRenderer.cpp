@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "host/render/StreamlineRenderer.hpp"
 
+#include "host/render/ClipUniforms.hpp"
 #include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
@@ -221,15 +222,7 @@ void StreamlineRenderer::setCommonUniforms(GLuint p, const RenderContext& ctx) c
   glProgramUniform1i(p, u("orthographic"), ctx.camera.projection() == Camera::Projection::Orthographic);
   glProgramUniform3fv(p, u("lightDirection"), 1, glm::value_ptr(lightDirection));
   glProgramUniform3fv(p, u("noValueColor"), 1, glm::value_ptr(noValueColor));
-  std::vector<glm::vec4> planes;
-  for (const ClipPlane& c : clipPlanes_) {
-    const double scale = std::max({std::abs(c.normal.x), std::abs(c.normal.y), std::abs(c.normal.z)});
-    if (!(scale > 0.0) || planes.size() == 8) continue;
-    const glm::dvec3 n = glm::normalize(c.normal / scale);
-    planes.push_back(glm::vec4(glm::vec3(n), float(-glm::dot(n, c.point - origin_))));
-  }
-  glProgramUniform1i(p, u("clipCount"), int(planes.size()));
-  if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
+  setClipUniforms(p, clipPlanes_, origin_);
   glBindTextureUnit(0, colorMap_.id());
 }
 

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "host/render/SurfaceRenderer.hpp"
 
+#include "host/render/ClipUniforms.hpp"
 #include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <unordered_map>
@@ -78,6 +81,7 @@ void SurfaceRenderer::release() {
 }
 
 void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
+  origin_ = surface.origin;
   const SurfaceMesh& m = surface.mesh;
   std::vector<SurfaceVertex> vertices;
   vertices.reserve(m.n_faces() * 3);
@@ -114,6 +118,25 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
   glNamedBufferData(edgeVbo_.id(), GLsizeiptr(edgeData.size() * sizeof(float)), edgeData.data(), GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 3 * sizeof(float));
   gl::check("SurfaceRenderer::setSurface");
+}
+
+void SurfaceRenderer::setTriangles(const std::vector<glm::dvec3>& corners, const glm::dvec3& origin) {
+  origin_ = origin;
+  std::vector<SurfaceVertex> vertices;
+  vertices.reserve(corners.size());
+  for (std::size_t t = 0; t + 2 < corners.size(); t += 3) {
+    const glm::vec3 n(glm::normalize(glm::cross(corners[t + 1] - corners[t], corners[t + 2] - corners[t])));
+    for (std::size_t k = t; k < t + 3; ++k) {
+      const glm::vec3 p(corners[k] - origin);
+      vertices.push_back({{p.x, p.y, p.z}, {n.x, n.y, n.z}, std::uint32_t(k), 0u});
+    }
+  }
+  triangleVertices_ = GLsizei(vertices.size());
+  glNamedBufferData(surfaceVbo_.id(), GLsizeiptr(std::max<std::size_t>(vertices.size(), 1) * sizeof(SurfaceVertex)),
+                    vertices.empty() ? nullptr : vertices.data(), GL_DYNAMIC_DRAW);
+  glVertexArrayVertexBuffer(surfaceVao_.id(), 0, surfaceVbo_.id(), 0, sizeof(SurfaceVertex));
+  edgeVertices_ = 0;
+  gl::check("SurfaceRenderer::setTriangles");
 }
 
 void SurfaceRenderer::setScalars(FieldLocation location, std::span<const double> values, double min, double max) {
@@ -154,6 +177,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glProgramUniform3fv(p, glGetUniformLocation(p, "noValueColor"), 1, glm::value_ptr(noValueColor));
   glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
   glProgramUniform1i(p, glGetUniformLocation(p, "colorMap"), 0);
+  setClipUniforms(p, clipPlanes_, origin_, clipTolerance_);
   glBindTextureUnit(0, colorMap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scalars_.id());
   glBindVertexArray(surfaceVao_.id());
@@ -179,6 +203,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "modelView"), 1, GL_FALSE, glm::value_ptr(view));
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "projection"), 1, GL_FALSE, glm::value_ptr(proj));
     glProgramUniform3fv(e, glGetUniformLocation(e, "color"), 1, glm::value_ptr(edgeColor));
+    setClipUniforms(e, clipPlanes_, origin_, clipTolerance_);
     glBindVertexArray(edgeVao_.id());
     glDrawArrays(GL_LINES, 0, edgeVertices_);
   }

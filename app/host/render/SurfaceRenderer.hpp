@@ -3,9 +3,12 @@
 #pragma once
 
 #include <volpost/core/BoundarySurface.hpp>
+#include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/ColorMap.hpp>
 #include <volpost/core/Field.hpp>
 #include <volpost/render/GlObjects.hpp>
+
+#include <vector>
 #include <volpost/render/Renderer.hpp>
 
 #include <glm/vec3.hpp>
@@ -23,6 +26,15 @@ class SurfaceRenderer : public Renderer {
 
   /// Uploads the triangles and edges (once per model).
   void setSurface(const BoundarySurface& surface);
+  /// Uploads triangles given by their corners (model coordinates, three per triangle; a
+  /// section cut) without edges. Vertex i takes value i of setScalars(FieldLocation::Node, ...).
+  void setTriangles(const std::vector<glm::dvec3>& corners, const glm::dvec3& origin);
+  /// Fragments on the cut side of any plane are not drawn; `tolerance` (model units) keeps
+  /// geometry lying on a plane (a section) from being cut by its own plane.
+  void setClipPlanes(std::vector<ClipPlane> planes, double tolerance = 0.0) {
+    clipPlanes_ = std::move(planes);
+    clipTolerance_ = tolerance;
+  }
   /// Uploads one value per node or per cell (only this changes with the field or step).
   /// Non-finite values are drawn in noValueColor. [min, max] maps onto the color map.
   void setScalars(FieldLocation location, std::span<const double> values, double min, double max);
@@ -53,6 +65,9 @@ class SurfaceRenderer : public Renderer {
   float min_ = 0.f, max_ = 1.f;
   bool showEdges_ = true, showFaces_ = true, lighting_ = true;
   float opacity_ = 1.0f;
+  glm::dvec3 origin_{0.0};  ///< what the uploaded positions are relative to
+  std::vector<ClipPlane> clipPlanes_;
+  double clipTolerance_ = 0.0;
 };
 
 }  // namespace volpost

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+// The cross-section of a tetrahedral mesh by a plane: the polygons where the plane cuts
+// each tet (marching tetrahedra on the signed distances), with the result interpolated
+// linearly along the cut edges. What a section cut shows, colored by the result.
+#pragma once
+
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <span>
+#include <vector>
+
+namespace volpost {
+
+struct SectionTriangles {
+  std::vector<glm::dvec3> positions;  ///< three per triangle, model coordinates
+  std::vector<double> values;         ///< one per position (NaN where the result has none)
+  std::size_t cutTets = 0;            ///< tets the plane passes through
+};
+
+/// `values`: one per node of tets.mesh (`perNode`) or one per tet (element results), or
+/// empty (geometry only). Triangles face along the plane's normal, the side it keeps.
+SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> values, bool perNode, const ClipPlane& plane);
+
+}  // namespace volpost
