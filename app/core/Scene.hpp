@@ -171,6 +171,8 @@ class Scene {
   /// The last frame's volume alone: premultiplied RGBA floats, top row first; empty when
   /// no volume is shown.
   std::vector<float> readVolumeImage() const;
+  /// Triangles of the section cuts the last surface frame drew.
+  std::size_t sectionTriangles() const { return boundary_.sectionTriangles(); }
   bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
 
  private:

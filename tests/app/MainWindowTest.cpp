@@ -467,6 +467,31 @@ class MainWindowTest : public QObject {
     QVERIFY(model->isVisible());
   }
 
+  // Clip Plane in the surface view: the model is cut and the cut face drawn; Ctrl+drag moves it.
+  void aClipPlaneCutsTheSurfaceView() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QVERIFY(window_->selectQuantity("U.x"));
+    Viewport* view = window_->viewport();
+    QVERIFY(!view->scene().volumeShown());
+    view->setStandardView(StandardView::Isometric);
+    const QImage whole = view->grabFramebuffer();
+    window_->findChild<QAction*>("clip:0")->trigger();  // normal +x through the centre
+    const QImage cut = view->grabFramebuffer();
+    QVERIFY(view->scene().sectionTriangles() > 0);
+    QVERIFY(cut != whole);
+    QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, view->rect().center());
+    QMouseEvent move(QEvent::MouseMove, QPointF(view->rect().center() + QPoint(0, 30)),
+                     view->mapToGlobal(QPointF(view->rect().center() + QPoint(0, 30))), Qt::LeftButton, Qt::LeftButton,
+                     Qt::ControlModifier);
+    QApplication::sendEvent(view, &move);
+    QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, view->rect().center() + QPoint(0, 30));
+    QVERIFY(view->grabFramebuffer() != cut);
+    window_->findChild<QAction*>("clip:-1")->trigger();
+    QVERIFY(view->scene().volume().clipPlanes.empty());
+    QCOMPARE(view->grabFramebuffer(), whole);
+    QCOMPARE(view->scene().sectionTriangles(), std::size_t(0));
+  }
+
   void aBadFileLeavesTheModelAsItWas() {
     const auto before = window_->session();
     QTimer closer;  // dismiss the error box the window shows
