@@ -83,7 +83,7 @@ struct Options {
   QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (the "
                                          "surface shows the cut faces).", "BOX"};
   QCommandLineOption iso{"iso", "Iso-surface VALUE[:r,g,b[:opacity]] (colors and opacity 0..1; repeatable, up to 8; "
-                                "volume rendering).", "ISO"};
+                                "opaque surfaces in the surface view).", "ISO"};
   QCommandLineOption volumeEdges{"volume-edges", "Volume rendering: draw the boundary's element edges, which hide "
                                                  "what lies behind them."};
   QCommandLineOption samplingStep{"sampling-step", "Sampling mode's step in model units (default: a quarter of the "
@@ -206,7 +206,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   };
   if (surface) {
     const QString why = "works with volume renderers (--renderer raycast, vicp, reference)";
-    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.iso, &o.volumeEdges,
+    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.volumeEdges,
                                              &o.samplingStep, &o.termination, &o.floatOut, &o.threads})
       refuse(*option, why);
   } else {

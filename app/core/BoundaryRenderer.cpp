@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "BoundaryRenderer.hpp"
 
+#include "host/IsoSurfaceExtraction.hpp"
 #include "host/SectionCut.hpp"
 
 #include <algorithm>
@@ -25,6 +26,10 @@ void BoundaryRenderer::initialize() {
 void BoundaryRenderer::release() {
   surface_.release();
   sections_.release();
+  for (auto& r : isoRenderers_) r->release();
+  isoRenderers_.clear();
+  isoFor_.reset();
+  isoTriangles_ = 0;
   cutFor_.reset();
   initialized_ = false;
 }
@@ -32,6 +37,7 @@ void BoundaryRenderer::release() {
 void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   cutFor_.reset();
+  isoFor_.reset();
   surface_.clearScalars();
   if (initialized_ && session_) surface_.setSurface(session_->surface());
 }
@@ -67,10 +73,49 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
       values.insert(values.end(), cut.values.begin(), cut.values.end());
     }
   }
+  for (auto& r : isoRenderers_) r->setClipPlanes(planes, tolerance);
   sectionTriangles_ = corners.size() / 3;
   sections_.setTriangles(corners, session_->surface().origin);
   if (view) sections_.setScalars(FieldLocation::Node, values, range.min, range.max);
   else sections_.clearScalars();
+}
+
+void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces, const ScalarView* view,
+                                      std::uint64_t viewVersion) {
+  if (!initialized_ || !session_) return;
+  std::vector<double> key;
+  if (view && view->location == FieldLocation::Node)  // extraction needs values at the nodes
+    for (const auto& iso : surfaces) key.insert(key.end(), {iso.value, iso.color.r, iso.color.g, iso.color.b, iso.opacity});
+  if (isoFor_ && isoFor_->first == key && isoFor_->second == viewVersion) return;
+  isoFor_ = std::pair(key, viewVersion);
+  for (auto& r : isoRenderers_) r->release();
+  isoRenderers_.clear();
+  isoTriangles_ = 0;
+  if (key.empty()) return;
+  const TetMesh& tets = session_->tetrahedra();
+  const std::vector<double> values = session_->tetValues(*view);
+  for (const auto& iso : surfaces) {
+    const ExtractedSurface extracted = extractIsoSurface(tets, values, iso.value);
+    std::vector<glm::dvec3> corners;
+    corners.reserve(extracted.mesh.n_faces() * 3);
+    for (const auto f : extracted.mesh.faces())
+      for (const auto v : f.vertices()) {
+        const auto p = extracted.mesh.point(v);
+        corners.push_back(extracted.origin + glm::dvec3(p[0], p[1], p[2]));
+      }
+    auto renderer = std::make_unique<SurfaceRenderer>();
+    renderer->initialize();
+    renderer->setShowEdges(false);
+    renderer->plainColor = glm::vec3(iso.color);
+    renderer->setOpacity(float(iso.opacity));
+    renderer->setTriangles(corners, session_->surface().origin);
+    if (cutFor_) {
+      const double tolerance = 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300);
+      renderer->setClipPlanes(cutFor_->planes, tolerance);
+    }
+    isoTriangles_ += corners.size() / 3;
+    isoRenderers_.push_back(std::move(renderer));
+  }
 }
 
 void BoundaryRenderer::renderBackground(const RenderContext& ctx) {
@@ -94,8 +139,12 @@ void BoundaryRenderer::renderOver(const RenderContext& ctx) {
   if (session_) {
     RenderContext local = ctx;
     local.origin = session_->surface().origin;
-    surface_.render(local);
+    // The opaque sections and iso-surfaces first: a see-through surface blends over them.
+    const bool seeThrough = opacity_ < 1.0f;
+    if (surfaceShown_ && !seeThrough) surface_.render(local);
     if (sectionTriangles_ > 0) sections_.render(local);
+    for (auto& iso : isoRenderers_) iso->render(local);
+    if (surfaceShown_ && seeThrough) surface_.render(local);
   }
   glDisable(GL_DEPTH_TEST);
 }

@@ -7,6 +7,8 @@
 #include "ModelSession.hpp"
 #include "SceneState.hpp"
 
+#include <volpost/core/optics/IsoTables.hpp>
+
 #include <volpost/core/ColorMap.hpp>
 #include "host/render/SurfaceRenderer.hpp"
 
@@ -38,6 +40,10 @@ class BoundaryRenderer {
   /// the planes, `viewVersion` (the values) or the range change. Empty: no cuts.
   void setCuts(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
                DisplayRange range);
+  /// Iso-surfaces of the view's values (nodal results) drawn in their colors, cut by the
+  /// same planes. Re-extracted only when the surfaces or `viewVersion` change.
+  void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces, const ScalarView* view, std::uint64_t viewVersion);
+  std::size_t isoTriangles() const { return isoTriangles_; }
   /// Triangles of the cross-sections now shown (for tests and the status bar).
   std::size_t sectionTriangles() const { return sectionTriangles_; }
   void setShowEdges(bool show) { surface_.setShowEdges(show); }
@@ -49,7 +55,12 @@ class BoundaryRenderer {
     sections_.setLighting(on);
   }
 
-  void setOpacity(float opacity) { surface_.setOpacity(opacity); }
+  /// Off: only the sections and iso-surfaces are drawn, not the boundary surface.
+  void setSurfaceShown(bool shown) { surfaceShown_ = shown; }
+  void setOpacity(float opacity) {
+    opacity_ = opacity;
+    surface_.setOpacity(opacity);
+  }
 
   /// Clears ctx.framebuffer to the background and draws.
   void render(const RenderContext& ctx);
@@ -72,6 +83,11 @@ class BoundaryRenderer {
     bool operator==(const CutKey&) const = default;
   };
   std::optional<CutKey> cutFor_;  ///< what the sections now uploaded were cut for
+  std::vector<std::unique_ptr<SurfaceRenderer>> isoRenderers_;  ///< one per iso-surface
+  std::optional<std::pair<std::vector<double>, std::uint64_t>> isoFor_;  ///< values and view version extracted
+  std::size_t isoTriangles_ = 0;
+  float opacity_ = 1.0f;
+  bool surfaceShown_ = true;
   std::size_t sectionTriangles_ = 0;
   bool initialized_ = false;
 };

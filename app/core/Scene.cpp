@@ -502,6 +502,8 @@ void Scene::applyToBoundary() {
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   boundary_.setCuts(state_.volume.shown ? std::vector<ClipPlane>{} : state_.volume.allClipPlanes(),
                     view_ ? &*view_ : nullptr, viewVersion_, displayRange());
+  boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces,
+                           view_ ? &*view_ : nullptr, viewVersion_);
   changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
 }
 
@@ -567,12 +569,11 @@ void Scene::render(const RenderContext& target) {
   // it is blended over them.
   boundary_.renderBackground(ctx);
   if (streamlinesDrawn()) streamlineRenderer_.render(ctx);
-  if (state_.surfaceShown) {
-    boundary_.setShowEdges(state_.edges && state_.surfaceOpacity >= 1.0);  // edges would cage what shows through
-    boundary_.setLighting(state_.lighting);
-    boundary_.setOpacity(float(state_.surfaceOpacity));
-    boundary_.renderOver(ctx);
-  }
+  boundary_.setShowEdges(state_.edges && state_.surfaceOpacity >= 1.0);  // edges would cage what shows through
+  boundary_.setLighting(state_.lighting);
+  boundary_.setOpacity(float(state_.surfaceOpacity));
+  boundary_.setSurfaceShown(state_.surfaceShown);  // hidden, the sections and iso-surfaces still show
+  boundary_.renderOver(ctx);
 }
 
 // The element edges stay visible over the volume and end its rays: they are drawn into
@@ -587,6 +588,7 @@ void Scene::renderVolume(const RenderContext& ctx) {
     if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
       depthTarget_ = std::make_unique<OffscreenTarget>(ctx.width, ctx.height);
     boundary_.setShowFaces(false);
+    boundary_.setSurfaceShown(true);  // its edges, that is
     boundary_.setShowEdges(state_.volume.edges);
     boundary_.setOpacity(1.0f);
     for (const GLuint target : {depthTarget_->framebuffer(), ctx.framebuffer}) {

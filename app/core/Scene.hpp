@@ -173,6 +173,8 @@ class Scene {
   std::vector<float> readVolumeImage() const;
   /// Triangles of the section cuts the last surface frame drew.
   std::size_t sectionTriangles() const { return boundary_.sectionTriangles(); }
+  /// Triangles of the iso-surfaces the last surface frame drew.
+  std::size_t isoTriangles() const { return boundary_.isoTriangles(); }
   bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
 
  private:

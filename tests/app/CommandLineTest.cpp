@@ -381,3 +381,15 @@ TEST(RenderCommand, ASectionCutShowsTheCutFaceColoredByTheResult) {
   EXPECT_GT(middle.green(), 150);
   EXPECT_EQ(runVolpost("render " + model + " --clip 1,2,3 -o " + cut).exitCode, 2);
 }
+
+// Iso-surfaces in the surface view: opaque, in their own color, also with the surface hidden.
+TEST(RenderCommand, IsoSurfacesShowInTheSurfaceView) {
+  const std::string model = dataFile("bar/bar_tet4.vtu"), out = ::testing::TempDir() + "/bar_iso_surface.png";
+  const auto r = runVolpost("render " + model + " --field U.x --iso 0.002:0,1,0 --no-surface --flat --no-legend "
+                            "--no-triad --camera +x --size 64x64 -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const QImage image(QString::fromStdString(out));
+  const QColor centre = image.pixelColor(32, 32);
+  EXPECT_GT(centre.green(), 200) << "the iso-surface across the bar, seen end on, in its color";
+  EXPECT_LT(centre.red(), 60);
+}
