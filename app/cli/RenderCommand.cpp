@@ -68,6 +68,9 @@ struct Options {
                                     "over every step (also the default transfer function's range).", "MIN:MAX"};
   QCommandLineOption noEdges{"no-edges", "Hide element edges on the surface."};
   QCommandLineOption noLegend{"no-legend", "Hide the color legend."};
+  QCommandLineOption deform{"deform", "Draw the model deformed by a nodal vector field (a displacement) times a "
+                                      "scale: FIELD (largest displacement 10 % of the model's size) or FIELD:SCALE.",
+                             "FIELD[:SCALE]"};
   QCommandLineOption noTriad{"no-triad", "Hide the orientation axes in the lower left corner."};
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
   QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
@@ -261,6 +264,19 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
   if (p.isSet(o.noTriad)) scene.setShowTriad(false);
+  if (p.isSet(o.deform)) {
+    const QString text = p.value(o.deform);
+    DeformationLayer d;
+    d.shown = true;
+    d.field = text.section(':', 0, 0).toStdString();
+    if (text.contains(':')) {
+      bool ok = false;
+      d.scale = text.section(':', 1).toDouble(&ok);
+      if (!ok || !std::isfinite(*d.scale))
+        throw UsageError(QString("--deform %1: the scale after ':' is not a number").arg(text).toStdString());
+    }
+    scene.setDeformation(d);  // invalid_argument (not a nodal vector field): a usage error
+  }
   if (p.isSet(o.flat)) scene.setLighting(false);
   if (p.isSet(o.camera)) {
     scene.camera().setView(StandardView::Isometric);
@@ -326,7 +342,7 @@ int runRender(const QStringList& args) {
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   const Options o;
-  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.flat, o.output,
+  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});
@@ -399,6 +415,10 @@ int runRender(const QStringList& args) {
       if (const auto lines = scene.streamlineResult(); lines && lines->outside)
         std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
                      lines->outside, lines->seeds);
+      if (scene.deformation().shown)
+        std::fprintf(stderr, "volpost: note: drawn deformed: %s x %.6g%s\n", scene.deformation().field.c_str(),
+                     scene.deformationScale(),
+                     scene.deformation().scale ? "" : " (automatic: the largest displacement is 10% of the model's size)");
       if (scene.volumeShown() && scene.view() && scene.state().volume.transferFunction)
         if (const auto note = transferFunctionRangeNote(scene.transferFunction(), *scene.view()))
           std::fprintf(stderr, "volpost: warning: %s\n", note->c_str());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "Scene.hpp"
 
+#include "Deformation.hpp"
 #include "StreamlineSeeds.hpp"
 #include "VolumeDefaults.hpp"
 
@@ -28,7 +29,10 @@ Scene::~Scene() = default;
 // ---- the model ----
 
 void Scene::setSession(std::shared_ptr<const ModelSession> session) {
-  session_ = std::move(session);
+  session_ = session;
+  baseSession_ = std::move(session);
+  state_.deformation.shown = false;
+  deformationScale_ = 0.0;
   view_.reset();
   ++viewVersion_;
   state_.probes.clear();
@@ -50,6 +54,35 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   fitCamera();
 }
 
+void Scene::setDeformation(const DeformationLayer& layer) {
+  if (layer.shown && baseSession_) checkDeformationField(*baseSession_, layer.field);
+  if (layer.scale && !std::isfinite(*layer.scale)) throw std::invalid_argument("the deformation scale must be finite");
+  state_.deformation = layer;
+  rebuildDeformation();
+}
+
+// The drawn model follows the deformation: everything that holds geometry is rebuilt, the
+// result and the state stay.
+void Scene::rebuildDeformation() {
+  if (!baseSession_) return;
+  const DeformationLayer& d = state_.deformation;
+  if (d.shown) {
+    deformationScale_ = d.scale ? *d.scale : automaticDeformationScale(*baseSession_, d.field, state_.step);
+    session_ = deformedSession(*baseSession_, d.field, state_.step, deformationScale_);
+  } else {
+    deformationScale_ = 0.0;
+    if (session_ == baseSession_) return;
+    session_ = baseSession_;
+  }
+  deformedStep_ = state_.step;
+  ++viewVersion_;
+  streamlineResult_.reset();
+  streamlinesUploaded_ = false;
+  culled_.reset();
+  culledFor_.clear();
+  changed_ = Changes{};
+}
+
 void Scene::fitCamera() {
   if (session_) camera_.fit(session_->model().mesh.bounds());
 }
@@ -69,6 +102,7 @@ void Scene::setResult(const std::string& quantity, std::size_t step) {
     view_ = std::move(view);
     state_.quantity = quantity;
     state_.step = step;
+    if (state_.deformation.shown && step != deformedStep_) rebuildDeformation();  // the step's displacement
   }
   changed_.scalars = changed_.values = true;
   if (!state_.volume.transferFunction) changed_.tables = true;  // the default follows the range
@@ -195,6 +229,7 @@ void Scene::applyState(const SceneState& s) {
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   checkStreamlines(s.streamlines);
   checkProbes(s.probes);
+  if (s.deformation.shown) checkDeformationField(*baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   if (s.volume.allClipPlanes().size() > std::size_t(kMaxClipPlanes) ||
       s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
@@ -223,6 +258,7 @@ void Scene::applyState(const SceneState& s) {
   changed_.values = changed_.tables = changed_.planes = changed_.iso = changed_.mode = true;
   if (locationChanged) changed_.geometry = true;
   if (volumeName_ != state_.volume.renderer) changed_.renderer = true;
+  if (state_.deformation.shown || session_ != baseSession_) rebuildDeformation();
 }
 
 // ---- probed points and markers ----

@@ -66,7 +66,18 @@ class Scene {
   /// A new model: the result is cleared, the camera fitted, the volume's planes and
   /// iso-surfaces dropped (they belong to the old model); the rest of the state stays.
   void setSession(std::shared_ptr<const ModelSession> session);
+  /// The model as drawn, probed and picked: deformed while a deformation is shown.
   const ModelSession* session() const { return session_.get(); }
+  std::shared_ptr<const ModelSession> sharedSession() const { return session_; }
+  /// The model as read.
+  const ModelSession* baseSession() const { return baseSession_.get(); }
+
+  /// Shows the model deformed (nodes moved by the field at the shown step times the scale)
+  /// or not. Throws std::invalid_argument (not a nodal vector field) and changes nothing then.
+  void setDeformation(const DeformationLayer& layer);
+  const DeformationLayer& deformation() const { return state_.deformation; }
+  /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
+  double deformationScale() const { return deformationScale_; }
 
   // ---- what is shown (no GL; render() applies it) ----
   /// Throws std::invalid_argument (no such quantity or step) and changes nothing then.
@@ -188,7 +199,11 @@ class Scene {
   std::vector<double> tetValues() const;
 
   VolumeRendererFactory factory_;
-  std::shared_ptr<const ModelSession> session_;
+  std::shared_ptr<const ModelSession> session_;      ///< drawn: baseSession_ or its deformed copy
+  std::shared_ptr<const ModelSession> baseSession_;  ///< as read
+  double deformationScale_ = 0.0;
+  std::size_t deformedStep_ = 0;
+  void rebuildDeformation();
   SceneState state_;
   Camera camera_;
   double devicePixelRatio_ = 1.0;

@@ -271,6 +271,9 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["triad"] = triad;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
+  out["deformation"] = {{"shown", deformation.shown},
+                        {"field", deformation.field},
+                        {"scale", deformation.scale ? json(*deformation.scale) : json("auto")}};
   json points = json::array();
   for (const glm::dvec3& p : probes) points.push_back(jsonOf(p));
   out["markers"] = {{"probes", points}, {"extremes", markExtremes}};
@@ -358,6 +361,15 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* triad = r.find(in, "triad")) s.triad = r.boolean(*triad, "triad");
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
+  if (const json* d = r.find(in, "deformation")) {
+    r.object(*d, "deformation");
+    if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");
+    if (const json* x = r.find(*d, "field")) s.deformation.field = r.text(*x, "deformation.field");
+    if (const json* x = r.find(*d, "scale")) {
+      if (x->is_string() && x->get<std::string>() == "auto") s.deformation.scale.reset();
+      else s.deformation.scale = r.number(*x, "deformation.scale");
+    }
+  }
   if (const json* markers = r.find(in, "markers")) {
     r.object(*markers, "markers");
     if (const json* e = r.find(*markers, "extremes")) s.markExtremes = r.boolean(*e, "markers.extremes");

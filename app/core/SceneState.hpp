@@ -79,6 +79,14 @@ struct StreamlineLayer {
 /// At most this many probed points in a view (and a state file).
 inline constexpr std::size_t kMaxProbes = 10000;
 
+/// The deformed shape: nodes moved by a displacement field times a scale.
+struct DeformationLayer {
+  bool shown = false;
+  std::string field = "U";
+  std::optional<double> scale;  ///< nullopt: automatic (the largest displacement is 10 % of the model's size)
+  bool operator==(const DeformationLayer&) const = default;
+};
+
 struct SceneState {
   static constexpr int kVersion = 1;
 
@@ -101,7 +109,8 @@ struct SceneState {
   StreamlineLayer streamlines;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
-  bool markExtremes = false;  ///< the shown quantity's smallest and largest values marked where they are
+  bool markExtremes = false;
+  DeformationLayer deformation;  ///< the shown quantity's smallest and largest values marked where they are
 
   /// The file's text. `relativeTo`: a folder; a model path inside it is written relative
   /// to it, so the state and the model can move together.

@@ -195,7 +195,9 @@ void MainWindow::buildActions() {
   legendAction_->setCheckable(true);
   legendAction_->setChecked(true);
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
-  probes_ = new ProbeController(*this, *viewport_, *view, [this] { return std::shared_ptr<const ModelSession>(session_); });
+  buildDeformationActions(view);
+  // Probing follows what is drawn: the deformed model while a deformation is shown.
+  probes_ = new ProbeController(*this, *viewport_, *view, [this] { return viewport_->scene().sharedSession(); });
   buildVolumeMenu(view);
 
   QMenu* tools = menuBar()->addMenu("&Tools");
@@ -311,6 +313,60 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
     if (changeScene([&](Scene& s) { s.setStreamlines(layer); }) && on) traceStreamlines();
   });
   connect(viewport_, &Viewport::rakePlaced, this, &MainWindow::placeRake);
+}
+
+// View > Deformed Shape (D): the displacement (U, else the first nodal vector) times an
+// automatic or typed scale.
+void MainWindow::buildDeformationActions(QMenu* view) {
+  deformAction_ = view->addAction("&Deformed Shape");
+  deformAction_->setObjectName("deformAction");
+  deformAction_->setCheckable(true);
+  deformAction_->setShortcut(QKeySequence(Qt::Key_D));
+  connect(deformAction_, &QAction::toggled, this, [this](bool on) { showDeformation(on, viewport_->scene().deformation().scale); });
+  view->addAction("Deformation &Scale...", this, [this] {
+    bool ok = false;
+    const auto current = viewport_->scene().deformation().scale;
+    const QString text = QInputDialog::getText(this, "Deformation scale",
+                                               "Displacement x this factor (empty: automatic, the largest displacement "
+                                               "10 % of the model's size):",
+                                               QLineEdit::Normal, current ? QString::number(*current, 'g', 10) : QString(), &ok);
+    if (!ok) return;
+    std::optional<double> scale;
+    if (!text.trimmed().isEmpty()) {
+      bool number = false;
+      scale = text.trimmed().toDouble(&number);
+      if (!number || !std::isfinite(*scale)) {
+        statusBar()->showMessage(QString("'%1' is not a scale factor").arg(text));
+        return;
+      }
+    }
+    showDeformation(true, scale);
+  });
+}
+
+void MainWindow::showDeformation(bool on, std::optional<double> scale) {
+  if (!session_) return;
+  DeformationLayer d = viewport_->scene().deformation();
+  if (on && !session_->model().findField(d.field))  // U, else the first nodal vector
+    for (const auto& f : session_->model().fields)
+      if (f->location() == FieldLocation::Node && f->components() == 3) {
+        d.field = f->name();
+        break;
+      }
+  d.shown = on;
+  d.scale = scale;
+  const bool ok = changeScene([&](Scene& s) { s.setDeformation(d); });
+  {
+    const QSignalBlocker block(deformAction_);
+    deformAction_->setChecked(viewport_->scene().deformation().shown);
+  }
+  if (ok && on)
+    statusBar()->showMessage(QString("Deformed: %1 x %2%3; probing uses the deformed coordinates")
+                                 .arg(QString::fromStdString(d.field))
+                                 .arg(viewport_->scene().deformationScale(), 0, 'g', 4)
+                                 .arg(scale ? "" : " (automatic: largest displacement = 10 % of the model)"));
+  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();
+  notifyPanels();
 }
 
 void MainWindow::chooseStreamlines() {
@@ -919,6 +975,7 @@ void MainWindow::syncControlsToScene() {
   check(edgesAction_, state.edges);
   check(legendAction_, state.legend);
   check(triadAction_, state.triad);
+  check(deformAction_, state.deformation.shown);
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);

@@ -99,6 +99,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void chooseClipBox();
   void chooseIsoSurfaces();
   void chooseStreamlines();
+  void buildDeformationActions(QMenu* view);
+  void showDeformation(bool on, std::optional<double> scale);
   void placeRake(glm::dvec3 from, glm::dvec3 to);
 
  public:
@@ -121,6 +123,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
   QAction* triadAction_ = nullptr;
+  QAction* deformAction_ = nullptr;
   QAction* streamlinesAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;

@@ -492,6 +492,22 @@ class MainWindowTest : public QObject {
     QCOMPARE(view->scene().sectionTriangles(), std::size_t(0));
   }
 
+  void theDeformedShapeIsDrawnAndProbed() {
+    Viewport* view = window_->viewport();
+    view->setStandardView(StandardView::PlusY);
+    const QImage straight = view->grabFramebuffer();
+    auto* deform = window_->findChild<QAction*>("deformAction");
+    QVERIFY(deform);
+    deform->setChecked(true);
+    QVERIFY(view->scene().deformation().shown);
+    QVERIFY(view->scene().deformationScale() > 0.0);
+    QVERIFY(view->grabFramebuffer() != straight);
+    QVERIFY(window_->statusBar()->currentMessage().contains("deformed coordinates"));
+    deform->setChecked(false);
+    QCOMPARE(view->scene().session(), view->scene().baseSession());
+    QCOMPARE(view->grabFramebuffer(), straight);
+  }
+
   void aBadFileLeavesTheModelAsItWas() {
     const auto before = window_->session();
     QTimer closer;  // dismiss the error box the window shows

@@ -8,6 +8,7 @@
 
 #include "RayCaster.hpp"
 #include "core/AnimationFrames.hpp"
+#include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
 #include "core/VolumeDefaults.hpp"
 
@@ -274,4 +275,39 @@ TEST(VolumeDefaults, ATransferFunctionMadeForOtherValuesIsNoted) {
   EXPECT_NE(note->find("1000"), std::string::npos) << *note;
   const TransferFunction partly({{90.0, {0, 0, 1}, 0.5}, {200.0, {1, 0, 0}, 1.0}});
   EXPECT_NE(transferFunctionRangeNote(partly, view)->find("less than half"), std::string::npos);
+}
+
+// The deformed shape: the bar (fixed at x = 0, stretched along x) drawn with its nodes
+// moved by U x scale; automatic: the largest displacement becomes 10 % of the model's size;
+// probing follows the drawn (deformed) geometry; off gives the model as read back.
+TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("U.x", 0);
+  const Bounds read = bar()->model().mesh.bounds();
+  const double uMax = bar()->rangeOverSteps(bar()->findQuantity("U.magnitude")).max;
+  DeformationLayer d;
+  d.shown = true;
+  d.scale = 100.0;
+  scene.setDeformation(d);
+  ASSERT_NE(scene.session(), scene.baseSession());
+  const Bounds moved = scene.session()->model().mesh.bounds();
+  const double uxMax = scene.view()->range.max;
+  EXPECT_NEAR(moved.max.x, read.max.x + 100.0 * uxMax, 1e-6 * read.diagonal());
+  EXPECT_EQ(scene.deformationScale(), 100.0);
+  d.scale.reset();
+  scene.setDeformation(d);
+  EXPECT_NEAR(scene.deformationScale() * uMax, 0.1 * read.diagonal(), 1e-9 * read.diagonal());
+  // The loaded end, where it is drawn now, probes to the end's value.
+  d.scale = 100.0;
+  scene.setDeformation(d);
+  const ProbeResult end = probeAt(*scene.session(), glm::dvec3(read.max.x + 100.0 * uxMax - 1e-3, 0.5, 0.5), 0);
+  ASSERT_TRUE(end.inside());
+  EXPECT_NEAR(*end.value("U.x"), uxMax, 0.02 * uxMax);
+  EXPECT_NE(scene.state().toJson().find("\"deformation\""), std::string::npos);
+  EXPECT_THROW(scene.setDeformation(DeformationLayer{true, "S", std::nullopt}), std::invalid_argument);
+  EXPECT_EQ(scene.deformationScale(), 100.0) << "a refused deformation changes nothing";
+  scene.setDeformation(DeformationLayer{});
+  EXPECT_EQ(scene.session(), scene.baseSession());
+  EXPECT_EQ(scene.deformationScale(), 0.0);
 }
