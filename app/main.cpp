@@ -41,6 +41,7 @@ void printUsage() {
       "  volpost surface MODEL OUT.obj     boundary (or --field Q --iso V: iso-surface) as obj/ply/stl/off\n"
       "  volpost probe MODEL --field Q --at X,Y,Z   value of Q at a point\n"
       "  volpost streamlines MODEL --field V --seeds SPEC -o lines.vtp   streamlines to .vtp/.csv\n"
+      "  volpost plot MODEL --from X,Y,Z --to X,Y,Z --field Q -o plot.png   quantities along a line (also --csv)\n"
       "  volpost --version | --help\n\n"
       "Any verb or the window also takes --memory-budget SIZE (512M, 8G, ...): files that would need\n"
       "more are refused with a message (default: 3/4 of the memory, or $VOLPOST_MEMORY_BUDGET).\n",
@@ -187,7 +188,7 @@ int main(int argc, char** argv) {
     if (!std::strcmp(verb, "streamlines")) return volpost::app::runStreamlines(args);
     return volpost::app::runPlugins(args);
   }
-  if (!std::strcmp(verb, "render")) {
+  if (!std::strcmp(verb, "render") || !std::strcmp(verb, "plot")) {
     // Rendering uses EGL, never a display; Qt is only needed for the legend's text.
     qputenv("QT_QPA_PLATFORM", "offscreen");
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {  // what Qt would pick, without its warning
@@ -196,6 +197,7 @@ int main(int argc, char** argv) {
       qputenv("XDG_RUNTIME_DIR", dir);
     }
     QGuiApplication app(argc, argv);
+    if (!std::strcmp(verb, "plot")) return volpost::app::runPlot(argsAfter(argc, argv, 2));
     return volpost::app::runRender(argsAfter(argc, argv, 2));
   }
   return runWindow(argc, argv);

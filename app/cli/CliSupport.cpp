@@ -92,6 +92,15 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
   return std::nullopt;
 }
 
+bool parseSize(const QString& text, int& w, int& h) {
+  const QStringList parts = text.toLower().split('x');
+  if (parts.size() != 2) return false;
+  bool okW = false, okH = false;
+  w = parts[0].toInt(&okW);
+  h = parts[1].toInt(&okH);
+  return okW && okH && w > 0 && h > 0 && w <= 16384 && h <= 16384;
+}
+
 std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option) {
   bool ok = false;
   const int step = parser.value(option).toInt(&ok);

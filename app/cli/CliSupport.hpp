@@ -35,6 +35,9 @@ std::string pathBytes(const QString& text);
 std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args);
 
 /// The 0-based step of a 1-based --step option; prints what is wrong and gives nullopt.
+/// "WIDTHxHEIGHT", each 1..16384.
+bool parseSize(const QString& text, int& w, int& h);
+
 std::optional<std::size_t> parseStep(const QCommandLineParser& parser, const QCommandLineOption& option);
 
 /// Runs a verb's work and returns its exit code; a cancel (Ctrl+C on the progress) is 1,

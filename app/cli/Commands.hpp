@@ -15,5 +15,6 @@ int runConvert(const QStringList& args);
 int runSurface(const QStringList& args);
 int runProbe(const QStringList& args);
 int runStreamlines(const QStringList& args);
+int runPlot(const QStringList& args);
 
 }  // namespace volpost::app

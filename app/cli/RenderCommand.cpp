@@ -32,15 +32,6 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-bool parseSize(const QString& text, int& w, int& h) {
-  const QStringList parts = text.toLower().split('x');
-  if (parts.size() != 2) return false;
-  bool okW = false, okH = false;
-  w = parts[0].toInt(&okW);
-  h = parts[1].toInt(&okH);
-  return okW && okH && w > 0 && h > 0 && w <= 16384 && h <= 16384;
-}
-
 std::optional<DisplayRange> parseRange(const QString& text) {
   const int colon = text.indexOf(':', 1);  // skip a leading minus sign
   if (colon < 0) return std::nullopt;

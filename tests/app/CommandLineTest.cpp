@@ -306,7 +306,7 @@ TEST(RenderCommand, AllStepsWritesOneNumberedPicturePerStep) {
 }
 
 TEST(CommandLine, EveryVerbsHelpNamesTheVerbAndExitsZero) {
-  for (const char* verb : {"info", "render", "probe", "convert", "surface", "streamlines", "plugins"}) {
+  for (const char* verb : {"info", "render", "probe", "convert", "surface", "streamlines", "plugins", "plot"}) {
     const auto r = runVolpost(std::string(verb) + " --help");
     EXPECT_EQ(r.exitCode, 0) << verb;
     EXPECT_EQ(r.output.rfind("Usage: volpost " + std::string(verb) + " [options]", 0), 0u) << r.output;
@@ -392,4 +392,38 @@ TEST(RenderCommand, IsoSurfacesShowInTheSurfaceView) {
   const QColor centre = image.pixelColor(32, 32);
   EXPECT_GT(centre.green(), 200) << "the iso-surface across the bar, seen end on, in its color";
   EXPECT_LT(centre.red(), 60);
+}
+
+// Plot over line: the bar's stress along its axis is F/A = 100 away from the ends; a line
+// that starts outside the mesh has gaps (nan) there; the chart is written.
+TEST(PlotCommand, SamplesALineAsATableAndAChart) {
+  const std::string model = dataFile("bar/bar_tet4.vtu");
+  const std::string csv = ::testing::TempDir() + "/line.csv", png = ::testing::TempDir() + "/line.png";
+  const auto r = runVolpost("plot " + model + " --from -1,0.5,0.5 --to 10,0.5,0.5 --samples 23 --field S.xx --field U.x"
+                            " --csv " + csv + " -o " + png + " --size 320x200");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("samples lie outside the mesh"), std::string::npos) << r.output;
+  std::ifstream in(csv);
+  std::string header, line;
+  std::getline(in, header);
+  EXPECT_EQ(header, "arc_length,x,y,z,element,S.xx,U.x");
+  int rows = 0, gaps = 0, hundred = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    gaps += line.find(",nan,nan") != std::string::npos;
+    const auto x = std::stod(line.substr(line.find(',') + 1));
+    if (x > 3.0 && x < 7.0) {  // away from the ends: uniform stress
+      const auto sxx = line.substr(0, line.rfind(','));
+      EXPECT_NEAR(std::stod(sxx.substr(sxx.rfind(',') + 1)), 100.0, 0.5) << line;
+      ++hundred;
+    }
+  }
+  EXPECT_EQ(rows, 23);
+  EXPECT_EQ(gaps, 2) << "x = -1 and -0.5 lie before the bar";
+  EXPECT_GT(hundred, 5);
+  EXPECT_EQ(QImage(QString::fromStdString(png)).size(), QSize(320, 200));
+  EXPECT_NE(runVolpost("plot " + model + " --from 1,1,1 --to 1,1,1 --csv " + csv).exitCode, 0);
+  EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1").exitCode, 2) << "no output asked for";
+  EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1 --samples 1 --csv " + csv).exitCode, 2);
+  EXPECT_NE(runVolpost("plot " + model + " --from 20,5,5 --to 30,5,5 --csv " + csv).exitCode, 0) << "all outside";
 }

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// `volpost plot MODEL --from X,Y,Z --to X,Y,Z [--field Q ...] [--samples N] [--csv F] [-o plot.png]`:
+// plot over line: quantities sampled along a segment, as a table and as a chart.
+#include "../core/LinePlot.hpp"
+#include "../core/LineSampling.hpp"
+#include "../core/PictureFile.hpp"
+#include "../core/VolumeSpecs.hpp"
+#include "CliSupport.hpp"
+#include "Commands.hpp"
+
+#include "host/AtomicFile.hpp"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+#include <cstdio>
+
+namespace volpost::app {
+
+int runPlot(const QStringList& args) {
+  QCommandLineParser parser;
+  parser.setApplicationDescription(
+      "volpost plot: quantities along a line (plot over line): evenly spaced samples from A to B, each "
+      "interpolated with its element's shape functions, as a CSV table and a chart.");
+  parser.addPositionalArgument("MODEL", "mesh or results file");
+  const QCommandLineOption from("from", "The line's first end X,Y,Z.", "X,Y,Z");
+  const QCommandLineOption to("to", "The line's other end X,Y,Z.", "X,Y,Z");
+  const QCommandLineOption field("field", "A quantity to plot (repeatable; default: the model's first).", "Q");
+  const QCommandLineOption samples("samples", "Samples along the line, ends included (default 200).", "N", "200");
+  const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
+  const QCommandLineOption csv("csv", "Write the samples (arc_length, x, y, z, element, quantities) to this CSV "
+                                      "file, or - for the terminal.", "FILE");
+  const QCommandLineOption output(QStringList{"o", "output"}, "The chart as a picture (.png, .jpg).", "FILE");
+  const QCommandLineOption size("size", "The chart's size (default 800x500).", "WxH", "800x500");
+  parser.addOptions({from, to, field, samples, step, csv, output, size});
+  if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
+  if (parser.positionalArguments().size() != 1 || !parser.isSet(from) || !parser.isSet(to) ||
+      (!parser.isSet(csv) && !parser.isSet(output))) {
+    printError("plot needs MODEL, --from, --to and --csv FILE or -o chart.png "
+               "(volpost plot bar.vtu --from 0,0.5,0.5 --to 10,0.5,0.5 --field S.xx -o plot.png)");
+    return 2;
+  }
+  const auto a = parsePoint(parser.value(from)), b = parsePoint(parser.value(to));
+  if (!a || !b) {
+    printError(QString("--from %1 / --to %2: not X,Y,Z").arg(parser.value(from), parser.value(to)));
+    return 2;
+  }
+  bool countOk = false;
+  const long long count = parser.value(samples).toLongLong(&countOk);
+  if (!countOk || count < 2 || count > static_cast<long long>(kMaxLineSamples)) {
+    printError(QString("--samples %1 is not a count from 2 to %2").arg(parser.value(samples)).arg(kMaxLineSamples));
+    return 2;
+  }
+  int width = 0, height = 0;
+  if (!parseSize(parser.value(size), width, height)) {
+    printError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(size)));
+    return 2;
+  }
+  const QString picture = parser.value(output);
+  if (parser.isSet(output)) {
+    try {
+      pictureFormatOf(picture);
+    } catch (const std::invalid_argument& e) {
+      printError(QString("-o %1").arg(e.what()));
+      return 2;
+    }
+  }
+  const auto stepIndex = parseStep(parser, step);
+  if (!stepIndex) return 2;
+  const std::string csvPath = parser.isSet(csv) && parser.value(csv) != "-" ? pathBytes(parser.value(csv)) : std::string();
+  auto plugins = loadPluginsForCli();
+  return exitCodeOf([&] {
+    if (!csvPath.empty()) checkWritable(csvPath);
+    if (parser.isSet(output)) checkWritable(pathBytes(picture));
+    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
+                                            terminalProgress("reading"));
+    std::vector<std::string> keys;
+    for (const QString& q : parser.values(field)) keys.push_back(q.toStdString());
+    if (keys.empty()) {
+      const auto first = session->defaultQuantity();
+      if (!first) throw std::invalid_argument("the model has no result to plot");
+      keys.push_back(first->key());
+    }
+    for (const std::string& key : keys) {
+      const Field& f = session->fieldOf(session->findQuantity(key));
+      if (*stepIndex >= f.stepCount())
+        throw std::invalid_argument("--step " + std::to_string(*stepIndex + 1) + ": " + f.name() + " has " +
+                                    std::to_string(f.stepCount()) + " step(s)");
+    }
+    const LineSamples line = sampleLine(*session, *a, *b, std::size_t(count), keys, *stepIndex, terminalProgress("sampling"));
+    std::size_t outside = 0;
+    for (const ProbeResult& r : line.points) outside += !r.inside();
+    if (outside == line.points.size()) throw std::runtime_error("the whole line lies outside the mesh");
+    if (parser.isSet(csv)) {
+      const std::string table = lineTable(line);
+      if (csvPath.empty()) std::fwrite(table.data(), 1, table.size(), stdout);
+      else writeFileAtomically(csvPath, table);
+    }
+    if (parser.isSet(output)) {
+      savePicture(linePlotImage(line, width, height), picture);
+      std::printf("%s\n", qPrintable(QFileInfo(picture).absoluteFilePath()));
+    }
+    if (!csvPath.empty()) std::printf("%s: %zu samples\n", csvPath.c_str(), line.points.size());
+    if (outside)
+      std::fprintf(stderr, "volpost: note: %zu of the %zu samples lie outside the mesh (gaps in the chart)\n", outside,
+                   line.points.size());
+    return 0;
+  });
+}
+
+}  // namespace volpost::app
