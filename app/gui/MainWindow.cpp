@@ -7,6 +7,7 @@
 #include "../core/VolumeSpecs.hpp"
 #include "PluginsDialog.hpp"
 #include "../core/VolumeDefaults.hpp"
+#include "LinePlotPanel.hpp"
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "StepController.hpp"
@@ -632,6 +633,22 @@ void MainWindow::buildPanels() {
       tabifiedProbes = true;
     }
   }
+  // View > Plot Over Line: a dock beside the Probe panel.
+  auto* lineDock = new QDockWidget("Plot Over Line", this);
+  lineDock->setObjectName("linePlotDock");
+  linePlot_ = new LinePlotPanel([this]() -> const Scene& { return viewport_->scene(); }, lineDock);
+  linePlot_->setObjectName("linePlotPanel");
+  lineDock->setWidget(linePlot_);
+  addDockWidget(Qt::RightDockWidgetArea, lineDock);
+  if (probes_) tabifyDockWidget(probes_->dock(), lineDock);
+  lineDock->hide();
+  connect(linePlot_, &LinePlotPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m); });
+  QAction* plotAction = viewMenu_->addAction("Plot Over &Line...", this, [this, lineDock] {
+    lineDock->show();
+    lineDock->raise();
+    if (linePlot_->useLastProbes()) linePlot_->plot();
+  });
+  plotAction->setObjectName("linePlotAction");
   // View > Panels brings back a panel that was closed.
   QMenu* panels = viewMenu_->addMenu("P&anels");
   panels->setObjectName("panelsMenu");

@@ -28,6 +28,7 @@ class VolumeRenderer;
 namespace volpost::app {
 
 class ProbeController;
+class LinePlotPanel;
 class StepController;
 class Viewport;
 
@@ -129,6 +130,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QMenu* fileMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
   ProbeController* probes_ = nullptr;
+  LinePlotPanel* linePlot_ = nullptr;
   bool tracing_ = false;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key

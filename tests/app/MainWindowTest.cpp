@@ -2,6 +2,7 @@
 // The window under a (virtual) X display: open a model, switch the result, take a
 // screenshot, fail to open a bad file without losing the model.
 #include "gui/MainWindow.hpp"
+#include "gui/LinePlotPanel.hpp"
 #include "gui/ProbePanel.hpp"
 #include "gui/StepController.hpp"
 #include "gui/Viewport.hpp"
@@ -13,6 +14,7 @@
 #include <QFile>
 #include <QProcess>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QTableWidget>
@@ -506,6 +508,23 @@ class MainWindowTest : public QObject {
     deform->setChecked(false);
     QCOMPARE(view->scene().session(), view->scene().baseSession());
     QCOMPARE(view->grabFramebuffer(), straight);
+  }
+
+  void plotOverLineChartsTheShownQuantity() {
+    QVERIFY(window_->selectQuantity("S.xx"));
+    window_->findChild<QAction*>("linePlotAction")->trigger();
+    auto* panel = window_->findChild<LinePlotPanel*>("linePlotPanel");
+    QVERIFY(panel && panel->isVisible());
+    window_->findChild<QLineEdit*>("lineFrom")->setText("1, 0.5, 0.5");
+    window_->findChild<QLineEdit*>("lineTo")->setText("9, 0.5, 0.5");
+    QTest::mouseClick(window_->findChild<QPushButton*>("linePlot"), Qt::LeftButton);
+    QVERIFY(panel->samples().has_value());
+    const LineSamples& s = *panel->samples();
+    QCOMPARE(s.keys, std::vector<std::string>{"S.xx"});
+    QVERIFY(std::abs(s.value(s.points.size() / 2, 0) - 100.0) < 0.5);
+    window_->findChild<QLineEdit*>("lineTo")->setText("nonsense");
+    QVERIFY(!panel->plot());
+    QVERIFY(window_->statusBar()->currentMessage().contains("X, Y, Z"));
   }
 
   void aBadFileLeavesTheModelAsItWas() {

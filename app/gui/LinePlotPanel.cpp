@@ -1,0 +1,158 @@
+// SPDX-License-Identifier: MIT
+#include "LinePlotPanel.hpp"
+
+#include "../core/LinePlot.hpp"
+#include "../core/PictureFile.hpp"
+#include "../core/ProbeTable.hpp"
+#include "../core/Scene.hpp"
+#include "../core/VolumeSpecs.hpp"
+
+#include "host/AtomicFile.hpp"
+
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPainter>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace volpost::app {
+namespace {
+
+// The chart, repainted from the panel's samples at whatever size the dock has.
+class ChartWidget : public QWidget {
+ public:
+  ChartWidget(const std::optional<LineSamples>& samples, QWidget* parent) : QWidget(parent), samples_(samples) {
+    setMinimumSize(240, 160);
+  }
+
+ protected:
+  void paintEvent(QPaintEvent*) override {
+    QPainter painter(this);
+    painter.fillRect(rect(), Qt::white);
+    if (samples_) paintLinePlot(painter, rect(), *samples_);
+    else painter.drawText(rect(), Qt::AlignCenter, "Type two points (or take the last two probes) and Plot");
+  }
+
+ private:
+  const std::optional<LineSamples>& samples_;
+};
+
+QString pointText(const glm::dvec3& p) {
+  return QString("%1, %2, %3").arg(QString::fromStdString(exactNumber(p.x)), QString::fromStdString(exactNumber(p.y)),
+                                   QString::fromStdString(exactNumber(p.z)));
+}
+
+}  // namespace
+
+LinePlotPanel::LinePlotPanel(SceneGetter scene, QWidget* parent) : QWidget(parent), scene_(std::move(scene)) {
+  auto* layout = new QVBoxLayout(this);
+  auto* form = new QFormLayout;
+  from_ = new QLineEdit(this);
+  from_->setObjectName("lineFrom");
+  from_->setPlaceholderText("X, Y, Z");
+  to_ = new QLineEdit(this);
+  to_->setObjectName("lineTo");
+  to_->setPlaceholderText("X, Y, Z");
+  count_ = new QSpinBox(this);
+  count_->setObjectName("lineSamples");
+  count_->setRange(2, int(kMaxLineSamples));
+  count_->setValue(200);
+  form->addRow("From", from_);
+  form->addRow("To", to_);
+  form->addRow("Samples", count_);
+  layout->addLayout(form);
+  auto* buttons = new QHBoxLayout;
+  const auto button = [&](const QString& text, const char* name, auto slot) {
+    auto* b = new QPushButton(text, this);
+    b->setObjectName(name);
+    connect(b, &QPushButton::clicked, this, slot);
+    buttons->addWidget(b);
+  };
+  button("Plot", "linePlot", [this] { plot(); });
+  button("Last Two Probes", "lineFromProbes", [this] {
+    if (useLastProbes()) plot();
+  });
+  button("CSV...", "lineCsv", [this] { exportCsv(); });
+  button("PNG...", "linePng", [this] { exportPicture(); });
+  layout->addLayout(buttons);
+  chart_ = new ChartWidget(samples_, this);
+  chart_->setObjectName("lineChart");
+  layout->addWidget(chart_, 1);
+  for (QLineEdit* e : {from_, to_}) connect(e, &QLineEdit::returnPressed, this, [this] { plot(); });
+}
+
+void LinePlotPanel::setEnds(const glm::dvec3& from, const glm::dvec3& to) {
+  from_->setText(pointText(from));
+  to_->setText(pointText(to));
+}
+
+bool LinePlotPanel::useLastProbes() {
+  const auto& probes = scene_().probes();
+  if (probes.size() < 2) {
+    emit message("Plot Over Line: probe two points first (View > Probe), or type the ends");
+    return false;
+  }
+  setEnds(probes[probes.size() - 2], probes.back());
+  return true;
+}
+
+bool LinePlotPanel::plot() {
+  const Scene& scene = scene_();
+  const auto a = parsePoint(from_->text().simplified().replace(' ', QString()));
+  const auto b = parsePoint(to_->text().simplified().replace(' ', QString()));
+  if (!a || !b) {
+    emit message(QString("Plot Over Line: '%1' and '%2' must both be X, Y, Z").arg(from_->text(), to_->text()));
+    return false;
+  }
+  if (!scene.session() || !scene.view()) {
+    emit message("Plot Over Line: choose a result to plot first");
+    return false;
+  }
+  try {
+    samples_ = sampleLine(*scene.session(), *a, *b, std::size_t(count_->value()), {scene.view()->quantity.key()},
+                          scene.step());
+  } catch (const std::exception& e) {
+    emit message(QString("Plot Over Line: %1").arg(e.what()));
+    return false;
+  }
+  std::size_t outside = 0;
+  for (const ProbeResult& r : samples_->points) outside += !r.inside();
+  emit message(outside ? QString("Plot Over Line: %1 of %2 samples lie outside the mesh (gaps)").arg(outside).arg(samples_->points.size())
+                       : QString("Plot Over Line: %1 samples").arg(samples_->points.size()));
+  chart_->update();
+  return true;
+}
+
+void LinePlotPanel::exportCsv() {
+  if (!samples_ && !plot()) return;
+  QSettings settings("volpost", "volpost");
+  const QString path = QFileDialog::getSaveFileName(this, "Export the line's samples", settings.value("files/lastDir").toString(),
+                                                    "CSV (*.csv)");
+  if (path.isEmpty()) return;
+  try {
+    writeFileAtomically(path.toStdString(), lineTable(*samples_));
+    emit message("Wrote " + path);
+  } catch (const std::exception& e) {
+    emit message(QString("Could not write %1: %2").arg(path, e.what()));
+  }
+}
+
+void LinePlotPanel::exportPicture() {
+  if (!samples_ && !plot()) return;
+  QSettings settings("volpost", "volpost");
+  const QString path = QFileDialog::getSaveFileName(this, "Save the chart", settings.value("files/lastDir").toString(),
+                                                    "PNG image (*.png)");
+  if (path.isEmpty()) return;
+  try {
+    savePicture(linePlotImage(*samples_, 800, 500), path);
+    emit message("Wrote " + path);
+  } catch (const std::exception& e) {
+    emit message(QString("Could not write %1: %2").arg(path, e.what()));
+  }
+}
+
+}  // namespace volpost::app
