@@ -24,8 +24,19 @@ std::vector<double> niceTicks(double min, double max, int target) {
       step = m * mag;
       break;
     }
-  for (double t = std::ceil(min / step - 1e-9) * step; t <= max + step * 1e-9; t += step)
-    ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
+  // Counted, not accumulated: far from zero (1e17 + a range of 10) adding the step to a
+  // tick would not move it, and the loop would never end.
+  const double first = std::ceil(min / step - 1e-9), last = std::floor(max / step + 1e-9);
+  if (!(step > 0.0) || !std::isfinite(first) || !std::isfinite(last) || last - first > 4.0 * target + 10.0) {
+    ticks = {min, max};
+    return ticks;
+  }
+  const auto count = static_cast<long long>(last - first);
+  for (long long i = 0; i <= count; ++i) {
+    const double t = (first + double(i)) * step;
+    if (ticks.empty() || t != ticks.back()) ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
+  }
+  if (ticks.empty()) ticks = {min, max};
   return ticks;
 }
 

@@ -8,6 +8,7 @@
 
 #include "RayCaster.hpp"
 #include "core/AnimationFrames.hpp"
+#include "core/Legend.hpp"
 #include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
 #include "core/VolumeDefaults.hpp"
@@ -310,4 +311,17 @@ TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
   scene.setDeformation(DeformationLayer{});
   EXPECT_EQ(scene.session(), scene.baseSession());
   EXPECT_EQ(scene.deformationScale(), 0.0);
+}
+
+// Ticks for the legend and charts: nice values inside the range; a range far from zero
+// (where adding the step to a tick does not move it) ends with a few ticks, not a hang.
+TEST(Legend, NiceTicksAreBoundedEvenFarFromZero) {
+  EXPECT_EQ(niceTicks(0.0, 100.0, 6), (std::vector<double>{0, 20, 40, 60, 80, 100}));
+  EXPECT_EQ(niceTicks(-0.3, 0.3, 6), (std::vector<double>{-0.2, 0.0, 0.2}));
+  for (const auto& [lo, hi] : {std::pair{1e17, 1e17 + 10.0}, std::pair{1e300, 1.0000001e300}, std::pair{-1e308, 1e308},
+                                std::pair{5e-324, 2e-323}}) {
+    const auto ticks = niceTicks(lo, hi, 6);
+    EXPECT_FALSE(ticks.empty());
+    EXPECT_LE(ticks.size(), 40u) << lo << " " << hi;
+  }
 }
