@@ -92,6 +92,15 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
   return std::nullopt;
 }
 
+void checkStepExists(const ModelSession& session, const std::vector<std::string>& keys, std::size_t step) {
+  for (const std::string& key : keys) {
+    const Field& f = session.fieldOf(session.findQuantity(key));
+    if (step >= f.stepCount())
+      throw std::invalid_argument("--step " + std::to_string(step + 1) + ": " + f.name() + " has " +
+                                  std::to_string(f.stepCount()) + " step(s)");
+  }
+}
+
 bool parseSize(const QString& text, int& w, int& h) {
   const QStringList parts = text.toLower().split('x');
   if (parts.size() != 2) return false;

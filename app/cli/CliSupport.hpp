@@ -35,6 +35,10 @@ std::string pathBytes(const QString& text);
 std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args);
 
 /// The 0-based step of a 1-based --step option; prints what is wrong and gives nullopt.
+/// Throws std::invalid_argument (a usage error for the verbs) when a quantity's field has
+/// no step `step` (0-based), naming the field and its step count.
+void checkStepExists(const ModelSession& session, const std::vector<std::string>& keys, std::size_t step);
+
 /// "WIDTHxHEIGHT", each 1..16384.
 bool parseSize(const QString& text, int& w, int& h);
 

@@ -81,12 +81,7 @@ int runPlot(const QStringList& args) {
       if (!first) throw std::invalid_argument("the model has no result to plot");
       keys.push_back(first->key());
     }
-    for (const std::string& key : keys) {
-      const Field& f = session->fieldOf(session->findQuantity(key));
-      if (*stepIndex >= f.stepCount())
-        throw std::invalid_argument("--step " + std::to_string(*stepIndex + 1) + ": " + f.name() + " has " +
-                                    std::to_string(f.stepCount()) + " step(s)");
-    }
+    checkStepExists(*session, keys, *stepIndex);
     const LineSamples line = sampleLine(*session, *a, *b, std::size_t(count), keys, *stepIndex, terminalProgress("sampling"));
     std::size_t outside = 0;
     for (const ProbeResult& r : line.points) outside += !r.inside();

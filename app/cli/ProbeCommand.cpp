@@ -103,12 +103,7 @@ int runProbe(const QStringList& args) {
     std::vector<std::string> keys;
     for (const QString& q : parser.values(field)) keys.push_back(session->findQuantity(q.toStdString()).key());
     if (keys.empty()) keys = allQuantityKeys(*session);
-    for (const std::string& key : keys) {
-      const Field& f = session->fieldOf(session->findQuantity(key));
-      if (*stepIndex >= f.stepCount())
-        throw std::invalid_argument("--step " + std::to_string(*stepIndex + 1) + ": " + f.name() + " has " +
-                                    std::to_string(f.stepCount()) + " step(s)");
-    }
+    checkStepExists(*session, keys, *stepIndex);
     std::vector<ProbeResult> results;
     std::size_t outside = 0;
     Progress progress = terminalProgress("probing");

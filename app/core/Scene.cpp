@@ -2,6 +2,7 @@
 #include "Scene.hpp"
 
 #include "Deformation.hpp"
+#include "Probe.hpp"
 #include "StreamlineSeeds.hpp"
 #include "VolumeDefaults.hpp"
 
@@ -273,6 +274,20 @@ void Scene::checkProbes(const std::vector<glm::dvec3>& points) const {
 void Scene::setProbes(std::vector<glm::dvec3> points) {
   checkProbes(points);
   state_.probes = std::move(points);
+}
+
+const std::vector<std::optional<double>>& Scene::probedValues() const {
+  if (probedVersion_ == viewVersion_ && probedPoints_ == state_.probes) return probedValues_;
+  probedVersion_ = viewVersion_;
+  probedPoints_ = state_.probes;
+  probedValues_.assign(state_.probes.size(), std::nullopt);
+  if (!session_ || !view_) return probedValues_;
+  const std::string key = view_->quantity.key();
+  for (std::size_t i = 0; i < state_.probes.size(); ++i) {
+    const ProbeResult r = probeAt(*session_, state_.probes[i], state_.step);
+    if (r.inside()) probedValues_[i] = r.value(key);
+  }
+  return probedValues_;
 }
 
 std::optional<Scene::Extremes> Scene::extremes() const {

@@ -140,6 +140,9 @@ class Scene {
     std::int64_t minId = 0, maxId = 0;  ///< the node's or element's id
   };
   std::optional<Extremes> extremes() const;
+  /// The shown quantity at each probed point (nullopt: outside the mesh, or no result),
+  /// probed once per change of the points, result, step or geometry, not per frame.
+  const std::vector<std::optional<double>>& probedValues() const;
 
   /// Interactive use (the window): slow tables build off the GUI thread.
   void setInteractive(bool on) { interactive_ = on; }
@@ -211,6 +214,9 @@ class Scene {
   std::uint64_t viewVersion_ = 0;  ///< counts changes of view_ (what extremes_ was found for)
   mutable std::optional<Extremes> extremes_;
   mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
+  mutable std::vector<std::optional<double>> probedValues_;
+  mutable std::uint64_t probedVersion_ = ~std::uint64_t(0);  ///< viewVersion_ probedValues_ is for
+  mutable std::vector<glm::dvec3> probedPoints_;              ///< and the points
   bool interactive_ = false;
 
   // What changed since the last render().

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "SceneOverlay.hpp"
 
-#include "Probe.hpp"
 
 #include <QFontMetrics>
 #include <QPainter>
@@ -81,9 +80,8 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
     if (labels) {
       m.text = QString("%1").arg(i + 1);
       if (scene.view()) {
-        const ProbeResult r = probeAt(*scene.session(), probes[i], scene.step());
-        const auto v = r.value(scene.view()->quantity.key());
-        m.text += r.inside() && v ? QString(": %1").arg(shortNumber(*v)) : QString(": outside");
+        const auto& v = scene.probedValues()[i];
+        m.text += v ? QString(": %1").arg(shortNumber(*v)) : QString(": outside");
       }
     }
     markers.push_back(m);

@@ -128,27 +128,22 @@ bool LinePlotPanel::plot() {
 }
 
 void LinePlotPanel::exportCsv() {
-  if (!samples_ && !plot()) return;
-  QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getSaveFileName(this, "Export the line's samples", settings.value("files/lastDir").toString(),
-                                                    "CSV (*.csv)");
-  if (path.isEmpty()) return;
-  try {
-    writeFileAtomically(path.toStdString(), lineTable(*samples_));
-    emit message("Wrote " + path);
-  } catch (const std::exception& e) {
-    emit message(QString("Could not write %1: %2").arg(path, e.what()));
-  }
+  exportTo("Export the line's samples", "CSV (*.csv)",
+           [this](const QString& path) { writeFileAtomically(path.toStdString(), lineTable(*samples_)); });
 }
 
 void LinePlotPanel::exportPicture() {
+  exportTo("Save the chart", "PNG image (*.png)",
+           [this](const QString& path) { savePicture(linePlotImage(*samples_, 800, 500), path); });
+}
+
+void LinePlotPanel::exportTo(const QString& title, const QString& filter, const std::function<void(const QString&)>& write) {
   if (!samples_ && !plot()) return;
   QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getSaveFileName(this, "Save the chart", settings.value("files/lastDir").toString(),
-                                                    "PNG image (*.png)");
+  const QString path = QFileDialog::getSaveFileName(this, title, settings.value("files/lastDir").toString(), filter);
   if (path.isEmpty()) return;
   try {
-    savePicture(linePlotImage(*samples_, 800, 500), path);
+    write(path);
     emit message("Wrote " + path);
   } catch (const std::exception& e) {
     emit message(QString("Could not write %1: %2").arg(path, e.what()));

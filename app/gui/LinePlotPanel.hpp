@@ -39,6 +39,8 @@ class LinePlotPanel : public QWidget {
  private:
   void exportCsv();
   void exportPicture();
+  /// Asks where (a save dialog), then writes; a failure is said in the status bar.
+  void exportTo(const QString& title, const QString& filter, const std::function<void(const QString&)>& write);
 
   SceneGetter scene_;
   QLineEdit* from_ = nullptr;
