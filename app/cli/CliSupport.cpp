@@ -92,11 +92,23 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
   return std::nullopt;
 }
 
+std::vector<std::string> quantityKeys(const ModelSession& session, const QStringList& names) {
+  std::vector<std::string> keys;
+  for (const QString& name : names) {
+    try {
+      keys.push_back(session.findQuantity(name.toStdString()).key());
+    } catch (const std::invalid_argument& e) {
+      throw OptionError(e.what());
+    }
+  }
+  return keys;
+}
+
 void checkStepExists(const ModelSession& session, const std::vector<std::string>& keys, std::size_t step) {
   for (const std::string& key : keys) {
     const Field& f = session.fieldOf(session.findQuantity(key));
     if (step >= f.stepCount())
-      throw std::invalid_argument("--step " + std::to_string(step + 1) + ": " + f.name() + " has " +
+      throw OptionError("--step " + std::to_string(step + 1) + ": " + f.name() + " has " +
                                   std::to_string(f.stepCount()) + " step(s)");
   }
 }

@@ -10,6 +10,7 @@
 #include <QString>
 
 #include <exception>
+#include <stdexcept>
 #include <memory>
 #include <optional>
 
@@ -35,7 +36,17 @@ std::string pathBytes(const QString& text);
 std::optional<int> parseArguments(QCommandLineParser& parser, const QString& verb, const QStringList& args);
 
 /// The 0-based step of a 1-based --step option; prints what is wrong and gives nullopt.
-/// Throws std::invalid_argument (a usage error for the verbs) when a quantity's field has
+/// An option the model cannot honour (a quantity it lacks, a step it does not have): a
+/// usage error, exit code 2 through exitCodeOf.
+struct OptionError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+/// The written forms of these quantities; OptionError naming the valid ones for one the
+/// model does not have.
+std::vector<std::string> quantityKeys(const ModelSession& session, const QStringList& names);
+
+/// Throws OptionError when a quantity's field has
 /// no step `step` (0-based), naming the field and its step count.
 void checkStepExists(const ModelSession& session, const std::vector<std::string>& keys, std::size_t step);
 
@@ -52,6 +63,9 @@ int exitCodeOf(Work&& work) {
     return work();
   } catch (const Cancelled&) {
     return 1;
+  } catch (const OptionError& e) {  // what the README promises for usage errors
+    printError(e.what());
+    return 2;
   } catch (const std::exception& e) {
     printError(e.what());
     return 1;

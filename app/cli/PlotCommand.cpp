@@ -74,8 +74,7 @@ int runPlot(const QStringList& args) {
     if (parser.isSet(output)) checkWritable(pathBytes(picture));
     const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
                                             terminalProgress("reading"));
-    std::vector<std::string> keys;
-    for (const QString& q : parser.values(field)) keys.push_back(q.toStdString());
+    std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) {
       const auto first = session->defaultQuantity();
       if (!first) throw std::invalid_argument("the model has no result to plot");

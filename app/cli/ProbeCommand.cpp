@@ -100,8 +100,7 @@ int runProbe(const QStringList& args) {
       for (const glm::dvec3& p : readPoints(pathBytes(parser.value(pointsFile)))) points.push_back(p);
     const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
                                             terminalProgress("reading"));
-    std::vector<std::string> keys;
-    for (const QString& q : parser.values(field)) keys.push_back(session->findQuantity(q.toStdString()).key());
+    std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);
     std::vector<ProbeResult> results;

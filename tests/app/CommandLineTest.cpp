@@ -426,4 +426,8 @@ TEST(PlotCommand, SamplesALineAsATableAndAChart) {
   EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1").exitCode, 2) << "no output asked for";
   EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1 --samples 1 --csv " + csv).exitCode, 2);
   EXPECT_NE(runVolpost("plot " + model + " --from 20,5,5 --to 30,5,5 --csv " + csv).exitCode, 0) << "all outside";
+  // A quantity or step the model does not have is a usage error, as the README says.
+  EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1 --field S.nope --csv " + csv).exitCode, 2);
+  EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1 --step 3 --csv " + csv).exitCode, 2);
+  EXPECT_EQ(runVolpost("probe " + model + " --at 5,0.5,0.5 --field S.nope").exitCode, 2);
 }
