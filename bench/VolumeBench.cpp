@@ -14,6 +14,7 @@
 
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+#include "CpuRayCaster.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -178,6 +179,43 @@ int main(int argc, char** argv) {
     const double refMs = msSince(refStart);
     std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | - | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
                 volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
+    // The CPU renderer: without early termination (like with like), then with its default.
+    {
+      const auto prepStart = Clock::now();
+      const volume::TetWalkMesh walkMesh(c.mesh, c.location, c.values);
+      const double prepMs = msSince(prepStart);
+      for (double stopAt : {0.0, volume::CpuRaySettings{}.terminationTransmittance}) {
+        volume::CpuRaySettings settings;
+        settings.terminationTransmittance = stopAt;
+        const volume::CpuImage first = volume::renderCpu(walkMesh, tf, camera, size, size, settings);
+        double sum = 0.0, worst = 0.0;
+        for (std::size_t i = 0; i < reference.pixels.size(); ++i)
+          for (int k = 0; k < 4; ++k) {
+            const double d = double(first.rgba[4 * i + std::size_t(k)]) - reference.pixels[i][k];
+            sum += d * d;
+            worst = std::max(worst, std::abs(d));
+          }
+        const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
+        std::vector<double> times;
+        Camera orbit = camera;
+        for (int f = 0; f < frames; ++f) {
+          const auto t0 = Clock::now();
+          (void)volume::renderCpu(walkMesh, tf, orbit, size, size, settings);
+          times.push_back(msSince(t0));
+          orbit.orbit(360.0 / frames, 0.0);
+        }
+        std::sort(times.begin(), times.end());
+        const double median = times[times.size() / 2];
+        char label[160];
+        std::snprintf(label, sizeof label, "cpu (%u threads, stop at %g; entries %.0f ms, walk %.0f ms, prepare %.0f ms)",
+                      first.stats.threads, stopAt, first.stats.entryMs, first.stats.walkMs, prepMs);
+        std::printf("| %s | %zu | %s | %.0f / %.0f / %.0f | - | %.3g | - | host %.1f (%.0f) | %.2g | %.2g |\n", c.name.c_str(),
+                    walkMesh.tetCount(), label, times.front(), median, times.back(), double(walkMesh.tetCount()) / (median / 1e3),
+                    walkMesh.bytes() / 1048576.0, double(walkMesh.bytes()) / double(walkMesh.tetCount()), rmse, worst);
+        std::fflush(stdout);
+        if (csv) std::fprintf(csv, "%s,cpu stop %g,%.3f,%.6g,%.6g\n", c.name.c_str(), stopAt, median, rmse, worst);
+      }
+    }
     // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the
     // exact, pre-integrated and sampling modes, with its sort time per frame.
     volume::RayCaster raycaster;

@@ -66,8 +66,10 @@ struct Options {
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
   QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
   QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result; reference: exact "
-                                          "CPU volume rendering; a GPU volume renderer from a plugin (raycast, vicp, "
-                                          "vicp-exact; volpost plugins lists them).", "NAME"};
+                                          "CPU volume rendering in double precision (slow, the yardstick); a volume "
+                                          "renderer from a plugin: raycast, vicp, vicp-exact (GPU), cpu (exact ray "
+                                          "casting on all cores, the fast choice without a GPU); volpost plugins "
+                                          "lists them.", "NAME"};
   QCommandLineOption mode{"mode", QString("GPU volume integration: %1 (default linear: exact cuts at every control "
                                           "point).").arg(QString::fromStdString(integrationModeChoices())), "MODE"};
   QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
@@ -199,7 +201,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     if (p.isSet(option)) throw UsageError(QString("--%1 %2").arg(option.names().constLast(), why).toStdString());
   };
   if (surface) {
-    const QString why = "works with volume renderers (--renderer raycast, vicp, reference)";
+    const QString why = "works with volume renderers (--renderer raycast, vicp, cpu, reference)";
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.volumeEdges,
                                              &o.samplingStep, &o.termination, &o.floatOut, &o.threads})
       refuse(*option, why);
@@ -208,6 +210,10 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
   }
   if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
+  if (renderer == "cpu") {
+    refuse(o.mode, "chooses a GPU integration; the CPU ray caster integrates exactly");
+    refuse(o.samplingStep, "is not used by the CPU ray caster (it integrates exactly)");
+  }
   if (reference) {
     refuse(o.mode, "chooses a GPU integration; the reference renderer integrates exactly");
     refuse(o.volumeEdges, "is not drawn by the reference renderer");

@@ -151,7 +151,7 @@ TEST_F(RayCast, LimitsAreStatedAndEnforced) {
 TEST_F(RayCast, EveryVolumeShaderCompilesInEveryMode) {
   for (IntegrationMode mode : allIntegrationModes()) {
     caster_->setIntegrationMode(mode);
-    auto& volume = caster_->volume();
+    auto& volume = static_cast<volume::TetVolumeRenderer&>(*caster_).volume();
     EXPECT_NO_THROW(volume.program({"volume/raycast.comp"})) << toString(mode);
     EXPECT_NO_THROW(volume.program({"volume/vicp.vert", "volume/vicp.frag"})) << toString(mode);
   }

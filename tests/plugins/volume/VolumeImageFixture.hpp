@@ -9,6 +9,7 @@
 #include "support/ReaderSupport.hpp"
 
 #include "CellProjector.hpp"
+#include "CpuVolumeRenderer.hpp"
 #include "RayCaster.hpp"
 #include "TetVolumeRenderer.hpp"
 
@@ -43,7 +44,7 @@ class RayCast : public ::testing::Test {
     caster_ = makeRenderer();
     caster_->initialize();
   }
-  virtual std::unique_ptr<volume::TetVolumeRenderer> makeRenderer() const { return std::make_unique<volume::RayCaster>(); }
+  virtual std::unique_ptr<VolumeRenderer> makeRenderer() const { return std::make_unique<volume::RayCaster>(); }
   void TearDown() override {
     if (context_ && caster_) caster_->release();
   }
@@ -69,6 +70,8 @@ class RayCast : public ::testing::Test {
     return renderer.readImage();
   }
 
+
+ public:
   static ImageError compare(const std::vector<float>& gpu, const optics::ReferenceImage& ref) {
     ImageError e;
     double sum = 0.0;
@@ -81,6 +84,8 @@ class RayCast : public ::testing::Test {
     e.rmse = std::sqrt(sum / double(ref.pixels.size() * 4));
     return e;
   }
+
+ protected:
 
   ImageError againstReference(const Mesh& mesh, FieldLocation loc, const std::vector<double>& values,
                               const TransferFunction& tf, const Camera& camera, int size,
@@ -164,16 +169,20 @@ class RayCast : public ::testing::Test {
   }
 
   std::unique_ptr<HeadlessContext> context_;
-  std::unique_ptr<volume::TetVolumeRenderer> caster_;
+  std::unique_ptr<VolumeRenderer> caster_;
 };
 
 // Cell projection: the same fixture, the tets drawn in visibility order instead of walked.
 class CellProjection : public RayCast {
  protected:
-  std::unique_ptr<volume::TetVolumeRenderer> makeRenderer() const override {
-    return std::make_unique<volume::CellProjector>(method);
-  }
+  std::unique_ptr<VolumeRenderer> makeRenderer() const override { return std::make_unique<volume::CellProjector>(method); }
   volume::OrderMethod method = volume::OrderMethod::ImageSpace;
+};
+
+// The CPU ray caster: the same fixture and the same comparisons as the GPU renderers.
+class CpuRayCast : public RayCast {
+ protected:
+  std::unique_ptr<VolumeRenderer> makeRenderer() const override { return std::make_unique<volume::CpuVolumeRenderer>(); }
 };
 
 inline std::vector<double> field(const Mesh& m) {

@@ -1,0 +1,539 @@
+// SPDX-License-Identifier: MIT
+// Built with -ffp-contract=off (see CMakeLists.txt): a fused multiply-add would make
+// cross(a, b) differ from -cross(b, a) in the last bit, and the two tets sharing a face
+// must compute the very same edge products.
+#include "CpuRayCaster.hpp"
+
+#include "ExactRaySide.hpp"
+#include "PiecewiseIntegrator.hpp"
+
+#include <volpost/core/WorkerThreads.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <thread>
+
+namespace volpost::volume {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+struct PixelRay {
+  glm::vec3 o, d;  ///< mesh-relative origin (the ray's point nearest the mesh centre), unit direction
+  float tStart, tEnd;  ///< the near and far planes (or opaque geometry)
+  float tEye;          ///< the camera (the near plane of an orthographic view)
+  glm::dvec3 exactO, exactD;  ///< the same in double, for decisions float cannot make
+};
+
+// The product of the ray with the directed edge p -> q, and which side it counts as.
+struct Side {
+  float value;
+  bool positive;
+  bool nearZero = false;  ///< decided in double or exactly: too small to weigh a crossing with
+};
+
+inline float l1(const glm::vec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
+
+// Each edge's product is computed from the lower id to the higher (then negated), so every
+// tet sharing the edge gets the same bits. A float product within its rounding bound of
+// zero is decided exactly instead.
+[[gnu::always_inline]] inline Side edgeSide(const TetWalkMesh& mesh, const PixelRay& ray, std::uint32_t p, const glm::vec3& rp, std::uint32_t q,
+                     const glm::vec3& rq) {
+  const bool ascending = p < q;
+  const glm::vec3& lo = ascending ? rp : rq;
+  const glm::vec3& hi = ascending ? rq : rp;
+  const float c = glm::dot(ray.d, glm::cross(lo, hi));
+  Side side{c, c > 0.0f};
+  // |rounding| of d . (A x B) with A, B rounded differences: under 8 ulp of |A|_1 |B|_1.
+  if (std::abs(c) <= 1e-6f * l1(lo) * l1(hi)) {
+    const auto& exact = mesh.exactPositions();
+    double value;
+    const bool positive = rayEdgeSidePositive(ray.exactO, ray.exactD, exact[ascending ? p : q], exact[ascending ? q : p], value);
+    side = {float(value), positive, true};
+  }
+  return ascending ? side : Side{-side.value, !side.positive, side.nearZero};
+}
+
+// Weight of a face corner where the ray crosses it: the product of the edge opposite the
+// corner, counted only on the side the ray passes (negative for an entering face).
+inline float cornerWeight(const Side& s) { return s.positive ? 0.0f : std::max(0.0f, -s.value); }
+
+// The face a ray is crossing into a tet: its three vertex ids listed counter-clockwise
+// seen from outside that tet (so a ray entering gives negative products), their positions
+// relative to the ray origin, their values, and the products of the edges AB, BC, CA.
+struct EntryFace {
+  std::uint32_t id[3];
+  glm::vec3 r[3];
+  float s[3];
+  Side ab, bc, ca;
+};
+
+// Barycentric weights of p (in the face's plane) in the triangle abc, clamped to it.
+double faceValue(const glm::dvec3& n, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& p,
+                 const float* values) {
+  double w[3] = {glm::dot(n, glm::cross(c - b, p - b)), glm::dot(n, glm::cross(a - c, p - c)), glm::dot(n, glm::cross(b - a, p - a))};
+  double sum = 0.0;
+  for (double& x : w) sum += (x = std::max(x, 0.0));
+  return sum > 0.0 ? (w[0] * values[0] + w[1] * values[1] + w[2] * values[2]) / sum : values[0];
+}
+
+// Where the ray crosses the face, from the face's plane in double: for rays through a
+// vertex or an edge of the face (the edge products are rounding noise there), and where the
+// ray enters or leaves the mesh (the float point's error would add to the ray's length;
+// inside the mesh the errors of consecutive crossings cancel in the sum). A ray
+// lying in the plane (within rounding) runs along the face: any point of the stretch it
+// shares with the triangle is right (the tets on both sides get the rest), so the noisy
+// estimate `guess` is kept within that stretch.
+[[gnu::noinline]] void crossingInDouble(const TetWalkMesh& mesh, const PixelRay& ray, const EntryFace& f, float guess, float& t, float& s) {
+  const auto& exact = mesh.exactPositions();
+  const glm::dvec3 a = exact[f.id[0]], b = exact[f.id[1]], c = exact[f.id[2]];
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double along = glm::dot(n, ray.exactD);
+  if (std::abs(along) > 1e-9 * glm::length(n)) {
+    const double tp = glm::dot(n, a - ray.exactO) / along;
+    t = float(tp);
+    s = float(faceValue(n, a, b, c, ray.exactO + tp * ray.exactD, f.s));
+    return;
+  }
+  double t0 = -INFINITY, t1 = INFINITY;
+  const glm::dvec3 corners[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {  // inside each edge's half-plane: dot(m, o + t d - p) >= 0
+    const glm::dvec3 &p = corners[i], &q = corners[(i + 1) % 3];
+    const glm::dvec3 m = glm::cross(n, q - p);
+    const double at = glm::dot(m, ray.exactO - p), rate = glm::dot(m, ray.exactD);
+    if (rate > 0.0) t0 = std::max(t0, -at / rate);
+    else if (rate < 0.0) t1 = std::min(t1, -at / rate);
+  }
+  const double tp = t0 <= t1 ? std::clamp(double(guess), t0, t1) : double(guess);
+  t = float(tp);
+  s = float(faceValue(n, a, b, c, ray.exactO + tp * ray.exactD, f.s));
+}
+
+// Parameter and value where the ray crosses the face (barycentric weights from the edge
+// products; in double where those cannot tell, or always with `boundary`); false when no
+// point can be told.
+[[gnu::always_inline]] inline bool crossing(const TetWalkMesh& mesh, const PixelRay& ray, const EntryFace& f, float& t, float& s,
+                     bool boundary = false) {
+  const float wa = cornerWeight(f.bc), wb = cornerWeight(f.ca), wc = cornerWeight(f.ab);
+  const float sum = wa + wb + wc;
+  const bool weighed = sum > 0.0f;
+  if (weighed) {
+    const glm::vec3 p = (wa * f.r[0] + wb * f.r[1] + wc * f.r[2]) / sum;
+    t = glm::dot(p, ray.d);
+    s = (wa * f.s[0] + wb * f.s[1] + wc * f.s[2]) / sum;
+  }
+  if (boundary || f.ab.nearZero || f.bc.nearZero || f.ca.nearZero) {
+    const float guess = weighed ? t : glm::dot((f.r[0] + f.r[1] + f.r[2]) / 3.0f, ray.d);
+    crossingInDouble(mesh, ray, f, guess, t, s);
+    return true;
+  }
+  return weighed;
+}
+
+struct Entry {
+  std::uint32_t pixel;
+  float t;
+  std::uint32_t face;
+  bool operator<(const Entry& o) const { return pixel < o.pixel || (pixel == o.pixel && t < o.t); }
+};
+
+struct Shared {
+  const TetWalkMesh& mesh;
+  const PiecewiseIntegrator& tf;
+  const CpuRaySettings& settings;
+  std::size_t stepCap;
+  float reentryTolerance;
+};
+
+
+EntryFace boundaryEntry(const TetWalkMesh& mesh, const BoundaryFace& f, const PixelRay& ray) {
+  EntryFace e;
+  const auto& nodes = mesh.nodes();
+  for (int i = 0; i < 3; ++i) {
+    e.id[i] = f.v[i];
+    e.r[i] = glm::vec3(nodes[f.v[i]]) - ray.o;
+    e.s[i] = nodes[f.v[i]].w;
+  }
+  e.ab = edgeSide(mesh, ray, e.id[0], e.r[0], e.id[1], e.r[1]);
+  e.bc = edgeSide(mesh, ray, e.id[1], e.r[1], e.id[2], e.r[2]);
+  e.ca = edgeSide(mesh, ray, e.id[2], e.r[2], e.id[0], e.r[0]);
+  return e;
+}
+
+// Gradient of the scalar in a tet (for shading iso-surfaces), from its four corners.
+glm::dvec3 tetGradient(const TetWalkMesh& mesh, const glm::uvec4& v) {
+  const auto& pos = mesh.exactPositions();
+  const auto& nodes = mesh.nodes();
+  const glm::dvec3 p0 = pos[v[0]];
+  const glm::dmat3 edges{pos[v[1]] - p0, pos[v[2]] - p0, pos[v[3]] - p0};
+  const double s0 = nodes[v[0]].w;
+  const glm::dvec3 ds(nodes[v[1]].w - s0, nodes[v[2]].w - s0, nodes[v[3]].w - s0);
+  const double det = glm::determinant(edges);
+  return det != 0.0 ? glm::inverse(glm::transpose(edges)) * ds : glm::dvec3(0.0);
+}
+
+// A tet's segment (values relative to the mesh's value offset) with the iso-surfaces it
+// crosses, as the reference: a surface counts when its value lies in (sFront, sBack].
+optics::SegmentLight segmentLight(const Shared& sh, double sFront, double sBack, double length, const glm::uvec4& tet,
+                          const glm::vec3& d) {
+  const double offset = sh.mesh.valueOffset();
+  const double a = sFront + offset, b = sBack + offset;
+  if (sh.settings.isoSurfaces.empty() || sFront == sBack) {
+    if (sh.tf.transparent(a, b)) return {};
+    return sh.tf.integrate(a, b, length);
+  }
+  double hits[16];
+  const optics::IsoSurface* surfaces[16];
+  int n = 0;
+  for (const optics::IsoSurface& s : sh.settings.isoSurfaces) {
+    const bool crossed = b > a ? (s.value > a && s.value <= b) : (s.value < a && s.value >= b);
+    if (crossed && n < 16) hits[n] = (s.value - a) / (b - a), surfaces[n++] = &s;
+  }
+  if (n == 0) return sh.tf.transparent(a, b) ? optics::SegmentLight{} : sh.tf.integrate(a, b, length);
+  for (int i = 1; i < n; ++i)  // few surfaces: insertion sort by position
+    for (int j = i; j > 0 && hits[j] < hits[j - 1]; --j) std::swap(hits[j], hits[j - 1]), std::swap(surfaces[j], surfaces[j - 1]);
+  const glm::dvec3 g = tetGradient(sh.mesh, tet);
+  const double gl = glm::length(g);
+  const double shade = gl > 0.0 ? 0.3 + 0.7 * std::abs(glm::dot(g / gl, glm::dvec3(d))) : 1.0;
+  optics::SegmentLight total;
+  double x0 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    optics::compositeBehind(total, sh.tf.integrate(a + (b - a) * x0, surfaces[i]->value, (hits[i] - x0) * length));
+    optics::compositeBehind(total, {surfaces[i]->color * shade * surfaces[i]->opacity, 1.0 - surfaces[i]->opacity});
+    x0 = hits[i];
+  }
+  optics::compositeBehind(total, sh.tf.integrate(a + (b - a) * x0, b, (1.0 - x0) * length));
+  return total;
+}
+
+struct RayTotals {
+  std::size_t steps = 0, stopped = 0, ambiguous = 0, capped = 0;
+  double maxStop = 0.0;
+};
+
+// The exit face of the tet entered through `in`, whose fourth vertex is k (r, s): each
+// of the three faces through k is named by the signs of the edges k->A, k->B, k->C.
+// Returns 0, 1 or 2: the face opposite A, B or C.
+inline int exitFace(const Side& eA, const Side& eB, const Side& eC, bool& ambiguous) {
+  // Leaving through the face opposite A (k, B, C) needs k->B negative and k->C positive.
+  const bool nA = !eA.positive, nB = !eB.positive, nC = !eC.positive;
+  ambiguous = false;
+  if (nB && !nC) return 0;
+  if (nC && !nA) return 1;
+  if (nA && !nB) return 2;
+  // All three alike: float signs name no face. Take the face the ray misses by the least.
+  ambiguous = true;
+  const float m0 = std::min(-eB.value, eC.value), m1 = std::min(-eC.value, eA.value), m2 = std::min(-eA.value, eB.value);
+  return m0 >= m1 && m0 >= m2 ? 0 : (m1 >= m2 ? 1 : 2);
+}
+
+// Walks one ray from a boundary entry until it leaves the mesh, stops, or passes the end of
+// its window [w0, w1]. Returns the parameter where it left the mesh (or +inf when done).
+float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t tet, float tIn, float sIn, float w0,
+           float w1, optics::SegmentLight& light, RayTotals& totals) {
+  const TetWalkMesh& mesh = sh.mesh;
+  const auto& nodes = mesh.nodes();
+  const bool cellData = mesh.cellValues();
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  for (std::size_t step = 0;; ++step) {
+    if (step >= sh.stepCap) {
+      ++totals.capped;
+      return inf;
+    }
+    ++totals.steps;
+    const WalkTet& record = mesh.tet(tet);
+    const glm::uvec4 v = record.nodes;
+    // The fourth vertex and where A, B, C sit in this tet.
+    int local[3] = {-1, -1, -1}, kLocal = -1;
+    for (int i = 0; i < 4; ++i) {
+      if (v[i] == in.id[0]) local[0] = i;
+      else if (v[i] == in.id[1]) local[1] = i;
+      else if (v[i] == in.id[2]) local[2] = i;
+      else kLocal = i;
+    }
+    if (kLocal < 0 || local[0] < 0 || local[1] < 0 || local[2] < 0) {  // adjacency disagrees with the ids
+      ++totals.capped;
+      return inf;
+    }
+    const std::uint32_t k = v[kLocal];
+    const glm::vec4 node = nodes[k];
+    const glm::vec3 rk = glm::vec3(node) - ray.o;
+    const float sk = node.w;
+    const Side eA = edgeSide(mesh, ray, k, rk, in.id[0], in.r[0]);
+    const Side eB = edgeSide(mesh, ray, k, rk, in.id[1], in.r[1]);
+    const Side eC = edgeSide(mesh, ray, k, rk, in.id[2], in.r[2]);
+    bool ambiguous;
+    const int exit = exitFace(eA, eB, eC, ambiguous);
+    totals.ambiguous += ambiguous;
+    // The exit face listed (k, X, Y) continues the entry's orientation; its edge products
+    // are k->X, X->Y (an edge of the entry face) and Y->k.
+    EntryFace out;
+    const int x = (exit + 1) % 3, y = (exit + 2) % 3;
+    const Side kx = exit == 0 ? eB : (exit == 1 ? eC : eA);
+    const Side ky = exit == 0 ? eC : (exit == 1 ? eA : eB);
+    const Side xy = exit == 0 ? in.bc : (exit == 1 ? in.ca : in.ab);
+    out.id[0] = k, out.id[1] = in.id[x], out.id[2] = in.id[y];
+    out.r[0] = rk, out.r[1] = in.r[x], out.r[2] = in.r[y];
+    out.s[0] = sk, out.s[1] = in.s[x], out.s[2] = in.s[y];
+    out.ab = kx;
+    out.bc = xy;
+    out.ca = {-ky.value, !ky.positive, ky.nearZero};
+    const int next = record.neighbors[local[exit]];
+    float tOut = tIn, sOut = sIn;
+    if (!crossing(mesh, ray, out, tOut, sOut, next < 0)) tOut = tIn, sOut = sIn;
+    tOut = std::max(tOut, tIn);
+    // The segment [tIn, tOut], cut to the window.
+    if (tIn >= w1) return inf;
+    if (tOut > w0 && tOut > tIn) {
+      float a = tIn, b = tOut, sa = sIn, sb = sOut;
+      if (cellData) sa = sb = mesh.tetValue(tet);
+      const float span = tOut - tIn;
+      if (a < w0) sa = sIn + (sOut - sIn) * ((w0 - tIn) / span), a = w0;
+      if (b > w1) sb = sIn + (sOut - sIn) * ((w1 - tIn) / span), b = w1;
+      if (cellData) sa = sb = mesh.tetValue(tet);
+      optics::compositeBehind(light, segmentLight(sh, sa, sb, double(b) - double(a), v, ray.d));
+      if (light.transmittance < sh.settings.terminationTransmittance) {
+        ++totals.stopped;
+        totals.maxStop = std::max(totals.maxStop, light.transmittance);
+        return inf;
+      }
+    }
+    if (next < 0) return tOut;
+    tet = std::uint32_t(next);
+    in = out;
+    tIn = tOut;
+    sIn = sOut;
+  }
+}
+
+std::vector<PixelRay> pixelRays(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
+                                const std::vector<float>& sceneDepth, unsigned threads) {
+  std::vector<PixelRay> rays(std::size_t(width) * std::size_t(height));
+  const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
+  const bool ortho = camera.projection() == Camera::Projection::Orthographic;
+  const auto unproject = [&](double x, double y, double z) {
+    const glm::dvec4 p = toModel * glm::dvec4(x, y, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  };
+  std::atomic<int> nextRow{0};
+  runOnThreads(threads, [&](unsigned) {
+  for (int y; (y = nextRow++) < height;)
+    for (int x = 0; x < width; ++x) {
+      const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
+      const glm::dvec3 nearPoint = unproject(nx, ny, -1.0), farPoint = unproject(nx, ny, 1.0);
+      const glm::dvec3 start = ortho ? nearPoint : camera.eye();
+      const glm::dvec3 dir = farPoint - start;
+      const double length = glm::length(dir);
+      PixelRay& r = rays[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+      // Parameters count from the ray's point nearest the mesh centre: the vectors from it to
+      // the vertices stay short, so float products and parameters keep their precision.
+      const glm::dvec3 unit = dir / length;
+      const double shift = -glm::dot(start - mesh.origin(), unit);
+      r.exactO = start - mesh.origin() + shift * unit;
+      r.exactD = unit;
+      r.o = glm::vec3(r.exactO);
+      r.d = glm::vec3(unit);
+      r.tEye = float(-shift);
+      r.tStart = float((ortho ? 0.0 : glm::length(nearPoint - start)) - shift);
+      double end = length;
+      if (sceneDepth.size() == rays.size()) {  // stop at the opaque geometry in front
+        const double z = sceneDepth[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)];
+        if (z < 1.0) end = std::min(end, glm::dot(unproject(nx, ny, 2.0 * z - 1.0) - start, unit));
+      }
+      r.tEnd = float(end - shift);
+    }
+  });
+  return rays;
+}
+
+// Every boundary face tested against the pixels its projection covers: the entries of
+// each pixel's ray into the mesh, sorted by pixel then parameter.
+struct Entries {
+  std::vector<Entry> list;            ///< by pixel, then parameter
+  std::vector<std::uint32_t> first;   ///< pixel p's entries: [first[p], first[p + 1])
+};
+
+Entries findEntries(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
+                    const std::vector<PixelRay>& rays, unsigned threads) {
+  const glm::dmat4 viewProjection = camera.projectionMatrix(double(width) / height) * camera.viewMatrix(mesh.origin());
+  const bool ortho = camera.projection() == Camera::Projection::Orthographic;
+  const glm::dvec3 eye = camera.eye() - mesh.origin();
+  const glm::dvec3 viewDir = camera.viewDirection();
+  const auto& faces = mesh.boundaryFaces();
+  const auto& pos = mesh.exactPositions();
+  // Is the eye inside the mesh's box? Then rays may start inside the mesh: they are walked
+  // from where they entered behind the eye, and integrated from the near plane on.
+  glm::dvec3 boxLo(INFINITY), boxHi(-INFINITY);
+  for (const glm::dvec3& p : pos) boxLo = glm::min(boxLo, p), boxHi = glm::max(boxHi, p);
+  const bool eyeInside = !ortho && glm::all(glm::greaterThanEqual(eye, boxLo)) && glm::all(glm::lessThanEqual(eye, boxHi));
+  std::vector<std::vector<Entry>> perThread(threads);
+  std::atomic<std::size_t> next{0};
+  constexpr std::size_t kChunk = 256;
+  runOnThreads(threads, [&](unsigned worker) {
+    std::vector<Entry>& out = perThread[worker];
+    for (std::size_t first; (first = next.fetch_add(kChunk)) < faces.size();)
+      for (std::size_t fi = first; fi < std::min(first + kChunk, faces.size()); ++fi) {
+        const BoundaryFace& f = faces[fi];
+        const glm::dvec3 a = pos[f.v[0]], b = pos[f.v[1]], c = pos[f.v[2]];
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        int x0 = 0, x1 = width - 1, y0 = 0, y1 = height - 1;
+        int front = 0;
+        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+        for (const glm::dvec3& p : {a, b, c}) {
+          const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
+          front += clip.w > 0.0;
+          // Also right for corners behind the eye: the line through the eye and the pixel.
+          const double px = (clip.x / clip.w + 1.0) * 0.5 * width - 0.5, py = (1.0 - clip.y / clip.w) * 0.5 * height - 0.5;
+          lo[0] = std::min(lo[0], px), hi[0] = std::max(hi[0], px);
+          lo[1] = std::min(lo[1], py), hi[1] = std::max(hi[1], py);
+        }
+        const bool behind = !ortho && front == 0, straddles = !ortho && front > 0 && front < 3;
+        // Faces behind the eye matter only to rays that start inside the mesh (entered behind).
+        if (behind && !eyeInside) continue;
+        // Back faces cannot be entered: every ray passes through the eye, so a face turns
+        // the same side to all of them (the other side when it lies behind the eye).
+        const double facing = glm::dot(n, ortho ? viewDir : a - eye);
+        if (!straddles && (behind ? facing < 0.0 : facing > 0.0)) continue;
+        if (!straddles) {  // else the projection is no bounding box: test every pixel
+          if (!(hi[0] >= -1.0 && lo[0] <= width && hi[1] >= -1.0 && lo[1] <= height)) continue;
+          x0 = std::max(0, int(std::floor(lo[0]))), x1 = std::min(width - 1, int(std::ceil(hi[0])));
+          y0 = std::max(0, int(std::floor(lo[1]))), y1 = std::min(height - 1, int(std::ceil(hi[1])));
+        }
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(x);
+            const EntryFace e = boundaryEntry(mesh, f, rays[pixel]);
+            if (e.ab.positive || e.bc.positive || e.ca.positive) continue;  // not entering through this face
+            float t, s;
+            if (!crossing(mesh, rays[pixel], e, t, s, true)) continue;
+            if (!eyeInside && t < rays[pixel].tEye) continue;  // behind the eye
+            out.push_back({pixel, t, std::uint32_t(fi)});
+          }
+      }
+  });
+  std::size_t total = 0;
+  for (const auto& v : perThread) total += v.size();
+  // Counting sort by pixel, then each pixel's few entries by parameter.
+  Entries out;
+  out.first.assign(rays.size() + 1, 0);
+  for (const auto& v : perThread)
+    for (const Entry& e : v) ++out.first[e.pixel + 1];
+  for (std::size_t i = 1; i < out.first.size(); ++i) out.first[i] += out.first[i - 1];
+  out.list.resize(total);
+  std::vector<std::uint32_t> fill(out.first.begin(), out.first.end() - 1);
+  for (auto& v : perThread) {
+    for (const Entry& e : v) out.list[fill[e.pixel]++] = e;
+    std::vector<Entry>().swap(v);
+  }
+  for (std::size_t p = 0; p < rays.size(); ++p)
+    if (out.first[p + 1] - out.first[p] > 1)
+      std::sort(out.list.begin() + out.first[p], out.list.begin() + out.first[p + 1]);
+  return out;
+}
+
+// Where the clip half-spaces leave the ray: [t0, t1] (empty when t0 >= t1).
+void clipWindow(const std::vector<ClipPlane>& planes, const glm::dvec3& origin, const PixelRay& ray, float& t0,
+                float& t1) {
+  for (const ClipPlane& c : planes) {
+    const double a = glm::dot(c.normal, glm::dvec3(ray.o) - (c.point - origin)), b = glm::dot(c.normal, glm::dvec3(ray.d));
+    if (b == 0.0) {
+      if (a < 0.0) t1 = t0;
+      continue;
+    }
+    const float t = float(-a / b);
+    if (b > 0.0) t0 = std::max(t0, t);
+    else t1 = std::min(t1, t);
+  }
+}
+
+}  // namespace
+
+CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Camera& camera, int width, int height,
+                   const CpuRaySettings& settings, const Progress& progress, int threadCount) {
+  CpuImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 4, 0.0f), {}};
+  const unsigned threads = threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
+  const auto entryStart = Clock::now();
+  const std::vector<PixelRay> rays = pixelRays(mesh, camera, width, height, settings.sceneDepth, threads);
+  const Entries found = findEntries(mesh, camera, width, height, rays, threads);
+  const std::vector<Entry>& entries = found.list;
+  const std::vector<std::uint32_t>& firstEntry = found.first;
+  image.stats.entryMs = msSince(entryStart);
+
+  const PiecewiseIntegrator integrator(tf);
+  const Shared shared{mesh, integrator, settings, mesh.tetCount() + 16, float(1e-6 * mesh.diagonal())};
+  constexpr int kTile = 16;
+  const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+  std::atomic<int> nextTile{0}, tilesDone{0};
+  std::atomic<bool> stop{false};
+  std::mutex totalsMutex;
+  RayTotals all;
+  std::size_t raysHit = 0;
+  const auto walkStart = Clock::now();
+  const unsigned ran = runOnThreads(threads, [&](unsigned worker) {
+    RayTotals totals;
+    std::size_t hit = 0;
+    try {
+      for (int tile; !stop && (tile = nextTile++) < tilesX * tilesY;) {
+        const int tx = tile % tilesX, ty = tile / tilesX;
+        for (int y = ty * kTile; y < std::min(height, (ty + 1) * kTile); ++y)
+          for (int x = tx * kTile; x < std::min(width, (tx + 1) * kTile); ++x) {
+            const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
+            const std::uint32_t begin = firstEntry[pixel], end = firstEntry[pixel + 1];
+            if (begin == end) continue;
+            const PixelRay& ray = rays[pixel];
+            float w0 = ray.tStart, w1 = ray.tEnd;
+            clipWindow(settings.clipPlanes, mesh.origin(), ray, w0, w1);
+            if (!(w0 < w1)) continue;
+            ++hit;
+            optics::SegmentLight light;
+            float leftAt = -std::numeric_limits<float>::infinity();
+            for (std::uint32_t i = begin; i < end; ++i) {
+              const Entry& e = entries[i];
+              if (e.t < leftAt - shared.reentryTolerance) continue;  // inside what was walked already
+              if (e.t >= w1) break;
+              const BoundaryFace& f = mesh.boundaryFaces()[e.face];
+              const EntryFace in = boundaryEntry(mesh, f, ray);
+              float t, s;
+              if (!crossing(mesh, ray, in, t, s, true)) continue;
+              leftAt = walk(shared, ray, in, f.tet, t, s, w0, w1, light, totals);
+              if (std::isinf(leftAt)) break;
+            }
+            float* out = &image.rgba[4 * pixel];
+            out[0] = float(light.color.r), out[1] = float(light.color.g), out[2] = float(light.color.b);
+            out[3] = float(1.0 - light.transmittance);
+          }
+        const int done = ++tilesDone;
+        if (worker == 0) progress.report(double(done) / (tilesX * tilesY));
+      }
+    } catch (...) {
+      stop = true;
+      throw;
+    }
+    const std::lock_guard lock(totalsMutex);
+    all.steps += totals.steps, all.stopped += totals.stopped, all.ambiguous += totals.ambiguous;
+    all.capped += totals.capped, all.maxStop = std::max(all.maxStop, totals.maxStop);
+    raysHit += hit;
+  });
+  image.stats.walkMs = msSince(walkStart);
+  image.stats.rays = raysHit;
+  image.stats.steps = all.steps;
+  image.stats.stoppedRays = all.stopped;
+  image.stats.maxStopTransmittance = all.maxStop;
+  image.stats.ambiguousExits = all.ambiguous;
+  image.stats.cappedRays = all.capped;
+  image.stats.threads = ran;
+  return image;
+}
+
+}  // namespace volpost::volume

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// The production CPU volume renderer: one ray per pixel walked tet to tet through face
+// adjacency, in float, on all cores in tiles, with exact linear-segment integration.
+//
+// Watertight by construction. Every decision (where a ray enters the mesh, through which
+// face it leaves a tet) is made from the signs of Plucker products of the ray with the
+// tets' edges, and each edge's product is computed once per ray from its two vertex ids in
+// ascending order, so the two tets sharing a face see bit-identical numbers (zero counts
+// as positive for the ascending direction): a ray can neither slip between two tets nor be
+// claimed by both, and where it crosses a face (point, parameter, value) is the same for
+// both sides. Rays leave a non-convex mesh through a boundary face and re-enter through
+// the next boundary face along them.
+#pragma once
+
+#include <volpost/core/Camera.hpp>
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/Progress.hpp>
+#include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
+#include "TetWalkMesh.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace volpost::volume {
+
+struct CpuRaySettings {
+  std::vector<ClipPlane> clipPlanes;    ///< in model coordinates
+  std::vector<optics::IsoSurface> isoSurfaces;  ///< composited where the ray meets them (as the reference)
+  /// A ray stops when what lies behind would count less than this (0: never); the default
+  /// is the GPU renderers'. It is also the bound of the error it makes, per channel: the
+  /// frame reports the largest as maxStopTransmittance.
+  double terminationTransmittance = 0.002;
+  /// Window depth (0..1, bottom row first, one per pixel) of opaque geometry already drawn:
+  /// rays end there. Empty: none.
+  std::vector<float> sceneDepth;
+};
+
+struct CpuRenderStats {
+  std::size_t rays = 0;             ///< pixels whose ray meets the mesh
+  std::size_t steps = 0;            ///< tets crossed, all rays together
+  std::size_t stoppedRays = 0;      ///< stopped early (nearly opaque)
+  double maxStopTransmittance = 0;  ///< the most any stopped ray left behind: its error bound
+  std::size_t ambiguousExits = 0;   ///< float signs that named no exit face (resolved by the largest margin)
+  std::size_t cappedRays = 0;       ///< walks cut at the step limit (a corrupt mesh)
+  double entryMs = 0, walkMs = 0;   ///< finding entries, walking rays
+  unsigned threads = 0;
+};
+
+struct CpuImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;  ///< premultiplied RGBA, top row first
+  CpuRenderStats stats;
+};
+
+/// Renders the volume as seen by the camera, with the same rays as the other renderers
+/// (through pixel centres, perspective or orthographic). threads = 0: all cores. Throws
+/// Cancelled if progress says so.
+CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Camera& camera, int width, int height,
+                   const CpuRaySettings& settings = {}, const Progress& progress = {}, int threads = 0);
+
+}  // namespace volpost::volume

@@ -1,0 +1,39 @@
+// SPDX-License-Identifier: MIT
+// Exact integration of ray segments through a piecewise-linear transfer function, made for
+// the inner loop of a renderer: the control points in flat arrays (no allocation per
+// segment), and a test that answers "is the extinction zero over this whole value range?"
+// in one lookup, so segments in the transparent part of the range cost nothing.
+#pragma once
+
+#include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/SegmentIntegral.hpp>
+
+#include <vector>
+
+namespace volpost::volume {
+
+class PiecewiseIntegrator {
+ public:
+  explicit PiecewiseIntegrator(const TransferFunction& tf);
+
+  /// True when the extinction is zero for every value between a and b: such a segment
+  /// neither emits nor absorbs.
+  bool transparent(double a, double b) const;
+
+  /// The segment over which the scalar goes linearly from sFront to sBack: cut at every
+  /// control point crossed, each piece integrated exactly (as integrateSegment).
+  optics::SegmentLight integrate(double sFront, double sBack, double length) const;
+
+  /// The series used for thin pieces (tf + tb <= 1), exposed for its accuracy test.
+  static double psiThin(double tf, double tb);
+
+ private:
+  int pieceOf(double s) const;  ///< j with value[j] <= s < value[j + 1]; -1 below, n - 1 above
+  void at(int piece, double s, glm::dvec3& color, double& tau) const;
+
+  std::vector<double> values_, tau_;
+  std::vector<glm::dvec3> colors_;
+  std::vector<double> zeroUntil_;  ///< per piece + 1: extinction is zero from there up to this value
+};
+
+}  // namespace volpost::volume

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#include "TetWalkMesh.hpp"
+
+#include <volpost/core/TetAdjacency.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace volpost::volume {
+namespace {
+constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // face k is opposite vertex k
+}
+
+TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<const double> values)
+    : location_(location) {
+  requireTetrahedraAndValues(mesh, location == FieldLocation::Node, values.size());
+  const Bounds b = mesh.bounds();
+  origin_ = b.valid ? b.center() : glm::dvec3(0.0);
+  diagonal_ = b.valid ? b.diagonal() : 0.0;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double v : values)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  valueOffset_ = lo <= hi ? 0.5 * (lo + hi) : 0.0;
+
+  nodes_.reserve(mesh.nodeCount());
+  exactPositions_.reserve(mesh.nodeCount());
+  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+    const glm::dvec3 p = mesh.nodes[i] - origin_;
+    const double v = location == FieldLocation::Node && std::isfinite(values[i]) ? values[i] - valueOffset_ : 0.0;
+    exactPositions_.push_back(p);
+    nodes_.push_back(glm::vec4(glm::vec3(p), float(v)));
+  }
+  std::vector<glm::uvec4> tets;
+  tets.reserve(mesh.cellCount());
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const auto nodes = mesh.cellNodes(c);
+    glm::dvec3 p[4];
+    bool finite = true;
+    for (int k = 0; k < 4; ++k) {
+      p[k] = mesh.nodes[nodes[k]] - origin_;
+      const double s = location == FieldLocation::Node ? values[nodes[k]] : values[c];
+      finite = finite && std::isfinite(s) && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z);
+    }
+    if (!finite || glm::determinant(glm::dmat3(p[1] - p[0], p[2] - p[0], p[3] - p[0])) == 0.0) {
+      ++skipped_;
+      continue;
+    }
+    tets.push_back(glm::uvec4(nodes[0], nodes[1], nodes[2], nodes[3]));
+    if (location == FieldLocation::Cell) cellValues_.push_back(float(values[c] - valueOffset_));
+  }
+  const std::vector<glm::ivec4> neighbors = faceNeighbors(tets);
+  tets_.resize(tets.size());
+  for (std::size_t t = 0; t < tets.size(); ++t) tets_[t] = {tets[t], neighbors[t]};
+  for (std::size_t t = 0; t < tets.size(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      if (neighbors[t][f] >= 0) continue;
+      std::uint32_t v[3] = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
+      const glm::dvec3 a = mesh.nodes[v[0]], bb = mesh.nodes[v[1]], c = mesh.nodes[v[2]];
+      const glm::dvec3 inside = mesh.nodes[tets[t][f]];
+      if (glm::dot(glm::cross(bb - a, c - a), inside - a) > 0.0) std::swap(v[1], v[2]);  // normal outward
+      boundary_.push_back({std::uint32_t(t), {v[0], v[1], v[2]}});
+    }
+}
+
+std::size_t TetWalkMesh::bytes() const {
+  return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + tets_.size() * sizeof(WalkTet) +
+         cellValues_.size() * sizeof(float) + boundary_.size() * sizeof(BoundaryFace);
+}
+
+}  // namespace volpost::volume

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// A tetrahedral mesh prepared for walking rays from tet to tet on the CPU: float vertex
+// positions relative to the mesh centre, each tet's four vertex ids, the tet across each
+// face, one value per node (linear in each tet) or per tet (constant), and the boundary
+// faces, each listed counter-clockwise seen from outside (where rays enter).
+#pragma once
+
+#include <volpost/core/Field.hpp>
+#include <volpost/core/Mesh.hpp>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace volpost::volume {
+
+/// A tet's four vertex ids and the tet across the face opposite each (-1: none), side by
+/// side so that a step of a walk reads one cache line.
+struct alignas(32) WalkTet {
+  glm::uvec4 nodes;
+  glm::ivec4 neighbors;
+};
+
+struct BoundaryFace {
+  std::uint32_t tet;
+  std::uint32_t v[3];  ///< vertex ids, counter-clockwise seen from outside the tet
+};
+
+class TetWalkMesh {
+ public:
+  /// Tets of the mesh (tet4, or tet10 through its corners) with one scalar per node or per
+  /// cell. Throws std::invalid_argument for other cell types or a wrong number of values.
+  /// Tets of zero volume and tets touching a non-finite value are left out and counted
+  /// (their faces become boundary faces, where rays leave and re-enter).
+  TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<const double> values);
+
+  const glm::dvec3& origin() const { return origin_; }
+  double diagonal() const { return diagonal_; }
+  std::size_t tetCount() const { return tets_.size(); }
+  std::size_t skippedTets() const { return skipped_; }
+  bool cellValues() const { return location_ == FieldLocation::Cell; }
+
+  /// Per node: position (xyz, relative to origin()) and value (w; 0 with cell data), minus
+  /// valueOffset(): floats keep their precision for fields such as 293.15 K +- 0.01.
+  const std::vector<glm::vec4>& nodes() const { return nodes_; }
+  /// The positions in double: where float cannot decide on which side of an edge a ray passes.
+  const std::vector<glm::dvec3>& exactPositions() const { return exactPositions_; }
+  const WalkTet& tet(std::size_t i) const { return tets_[i]; }
+  /// Cell data: the tet's value minus valueOffset().
+  float tetValue(std::size_t tet) const { return cellValues_[tet]; }
+  double valueOffset() const { return valueOffset_; }
+  const std::vector<BoundaryFace>& boundaryFaces() const { return boundary_; }
+
+  /// Bytes held, for the renderer's statistics.
+  std::size_t bytes() const;
+
+ private:
+  glm::dvec3 origin_{0.0};
+  double diagonal_ = 0.0;
+  FieldLocation location_ = FieldLocation::Node;
+  std::vector<glm::vec4> nodes_;
+  std::vector<glm::dvec3> exactPositions_;
+  std::vector<WalkTet> tets_;
+  std::vector<float> cellValues_;
+  double valueOffset_ = 0.0;
+  std::vector<BoundaryFace> boundary_;
+  std::size_t skipped_ = 0;
+};
+
+}  // namespace volpost::volume

@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: MIT
+// The CPU ray caster against the exact reference renderer: the same cases as the GPU
+// renderers with bounds a hundred times tighter, and the watertightness cases (slivers,
+// needles, Delaunay slivers, rays through vertices and along edges, eye inside the mesh).
+#include "VolumeImageFixture.hpp"
+
+#include "CpuRayCaster.hpp"
+#include "PiecewiseIntegrator.hpp"
+
+#include <volpost/core/optics/SegmentIntegral.hpp>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <random>
+
+using namespace volpost;
+using namespace volpost::test;
+
+namespace {
+
+// The reference's image of the same scene, and the largest channel difference.
+ImageError cpuAgainstReference(const volume::TetWalkMesh& walk, const Mesh& mesh, FieldLocation loc,
+                               const std::vector<double>& values, const TransferFunction& tf, const Camera& camera, int size,
+                               volume::CpuRaySettings settings = {}) {
+  settings.terminationTransmittance = 0.0;
+  const volume::CpuImage image = volume::renderCpu(walk, tf, camera, size, size, settings);
+  const optics::TetVolume volume(mesh, loc, values);
+  optics::RaySettings ref;
+  ref.clipPlanes = settings.clipPlanes;
+  ref.isoSurfaces = settings.isoSurfaces;
+  return RayCast::compare(image.rgba, optics::renderReference(volume, tf, camera, size, size, ref));
+}
+
+Mesh scaled(Mesh m, glm::dvec3 scale) {
+  for (auto& p : m.nodes) p *= scale;
+  return m;
+}
+
+Mesh jittered(Mesh m, double amount, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  const Bounds b = m.bounds();
+  for (auto& p : m.nodes)
+    for (int k = 0; k < 3; ++k)
+      if (p[k] > b.min[k] && p[k] < b.max[k]) p[k] += u(rng);  // the box stays a box
+  return m;
+}
+
+// Delaunay tetrahedralization of a lattice jittered by 1e-7: its cubes' eight nearly
+// co-spherical points give many slivers (flat tets with four nearly coplanar corners).
+Mesh delaunaySlivers(int n) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Delaunay = CGAL::Delaunay_triangulation_3<Kernel>;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1e-7, 1e-7);
+  std::vector<Kernel::Point_3> points;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) points.emplace_back(i + u(rng), j + u(rng), k + u(rng));
+  const Delaunay dt(points.begin(), points.end());
+  Mesh m;
+  std::map<Delaunay::Vertex_handle, NodeIndex> ids;
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    ids[v] = NodeIndex(m.nodes.size());
+    m.nodes.push_back({v->point().x(), v->point().y(), v->point().z()});
+  }
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    NodeIndex t[4];
+    for (int i = 0; i < 4; ++i) t[i] = ids[c->vertex(i)];
+    m.addCell(CellType::Tet4, t);
+  }
+  return m;
+}
+
+// Constant field, constant extinction: every pixel's alpha is 1 - exp(-tau L), L the ray's
+// length inside the mesh. A ray slipping between tets or counted twice shows at once.
+double worstAlphaError(const Mesh& mesh, const char* name) {
+  const Bounds b = mesh.bounds();
+  const glm::dvec3 extent = b.max - b.min;
+  const double tau = 1.0 / std::min({extent.x, extent.y, extent.z});
+  const std::vector<double> values(mesh.nodeCount(), 1.0);
+  const TransferFunction tf({{0.0, {1, 1, 1}, tau}, {2.0, {1, 1, 1}, tau}});
+  const volume::TetWalkMesh walk(mesh, FieldLocation::Node, values);
+  double worst = 0.0;
+  const std::pair<StandardView, Camera::Projection> views[] = {
+      {StandardView::PlusZ, Camera::Projection::Orthographic}, {StandardView::PlusX, Camera::Projection::Orthographic},
+      {StandardView::MinusY, Camera::Projection::Perspective}, {StandardView::Isometric, Camera::Projection::Orthographic},
+      {StandardView::Isometric, Camera::Projection::Perspective}};
+  for (auto [view, projection] : views)
+    for (int size : {33, 64}) {
+      Camera camera;
+      camera.setProjection(projection);
+      camera.setView(view);
+      camera.fit(b);
+      const ImageError e = cpuAgainstReference(walk, mesh, FieldLocation::Node, values, tf, camera, size);
+      worst = std::max(worst, e.max);
+    }
+  std::printf("cpu %s (%zu tets): worst alpha error over 10 views %.3g\n", name, walk.tetCount(), worst);
+  return worst;
+}
+
+}  // namespace
+
+TEST_F(CpuRayCast, LinearSegmentsMatchTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
+  std::printf("cpu vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);  // float geometry; the integration is exact to 1e-8
+  EXPECT_LE(e.max, 3e-5);
+}
+
+TEST_F(CpuRayCast, NoPixelIsLostOnAxisAlignedAndDiagonalViewsOfATetrahedralizedGrid) {
+  EXPECT_EQ(lostPixelsOnDegenerateViews(), 0);
+}
+
+TEST_F(CpuRayCast, ClipPlanesCutLikeTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const std::vector<ClipPlane> clips = {{{0, 0, 1.3}, {0, 0.2, 1}}, {{2.5, 0, 0}, {-1, 0, 0}}};
+  const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64, clips);
+  std::printf("cpu with 2 clip planes vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);
+  EXPECT_LE(e.max, 3e-5);
+}
+
+TEST_F(CpuRayCast, ElementResultsAreConstantPerCell) {
+  const Mesh grid = test::tetGrid(3, 3, 3);
+  std::vector<double> cells(grid.cellCount());
+  for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = double(c % 7);
+  const ImageError e = againstReference(grid, FieldLocation::Cell, cells, kTf, isoCamera(grid), 48);
+  std::printf("cpu element results vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);
+  EXPECT_LE(e.max, 3e-5);
+}
+
+TEST_F(CpuRayCast, RaysReenterANonConvexMeshLikeTheReference) {
+  Mesh m;  // three slabs along z with gaps: every ray through them enters three times
+  for (int k = 0; k < 3; ++k) {
+    const Mesh slab = test::tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
+    const NodeIndex base = NodeIndex(m.nodeCount());
+    m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
+    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
+      NodeIndex t[4];
+      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
+      m.addCell(CellType::Tet4, t);
+    }
+  }
+  const ImageError e = againstReference(m, FieldLocation::Node, field(m), kTf, isoCamera(m), 48);
+  std::printf("cpu non-convex (3 slabs) vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);
+  EXPECT_LE(e.max, 3e-5);
+}
+
+TEST_F(CpuRayCast, IsoSurfacesMatchTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  volume::CpuRaySettings settings;
+  settings.isoSurfaces = {{1.7, {0.9, 0.8, 0.1}, 0.6}, {3.9, {0.1, 0.7, 0.9}, 1.0}};
+  const volume::TetWalkMesh walk(grid, FieldLocation::Node, field(grid));
+  const ImageError e = cpuAgainstReference(walk, grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64, settings);
+  std::printf("cpu with 2 iso-surfaces vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-5);
+  EXPECT_LE(e.max, 1e-3);  // a float crossing can fall on the other side of a pixel's surface edge
+}
+
+TEST_F(CpuRayCast, OpaqueGeometryEndsRaysAtItsDepth) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  Camera camera = isoCamera(grid);
+  camera.setProjection(Camera::Projection::Orthographic);
+  const float depth = 0.5f;
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setTerminationThreshold(0.0);
+  const auto image = gpuImage(camera, 64, 64, depth);
+  const glm::dvec4 p = glm::inverse(camera.projectionMatrix(1.0) * camera.viewMatrix()) * glm::dvec4(0, 0, 2.0 * depth - 1.0, 1.0);
+  optics::RaySettings settings;
+  settings.clipPlanes = {{glm::dvec3(p) / p.w, -camera.viewDirection()}};
+  const optics::TetVolume volume(grid, FieldLocation::Node, field(grid));
+  const ImageError e = compare(image, optics::renderReference(volume, kTf, camera, 64, 64, settings));
+  std::printf("cpu ended by scene depth vs reference clipped there: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-5);
+  EXPECT_LE(e.max, 1e-4);
+}
+
+TEST_F(CpuRayCast, TinyAndOffsetValuesRenderLikeTheReference) {
+  const Mesh grid = test::tetGrid(3, 3, 3);
+  for (const auto& [offset, scale] : {std::pair{0.0, 1e-30}, std::pair{1e6, 1e-3}}) {
+    std::vector<double> values;
+    for (double v : field(grid)) values.push_back(offset + scale * v);
+    std::vector<ControlPoint> points = kTf.points();
+    for (ControlPoint& c : points) c.value = offset + scale * c.value;
+    const TransferFunction tf(points);
+    const ImageError e = againstReference(grid, FieldLocation::Node, values, tf, isoCamera(grid), 40);
+    std::printf("cpu values %g + %g x: RMSE %.3g, max %.3g\n", offset, scale, e.rmse, e.max);
+    EXPECT_LE(e.max, 1e-4) << offset << " " << scale;
+  }
+}
+
+TEST_F(CpuRayCast, EarlyTerminationStaysWithinItsStatedBound) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const volume::TetWalkMesh walk(grid, FieldLocation::Node, field(grid));
+  std::vector<ControlPoint> dense = kTf.points();
+  for (ControlPoint& c : dense) c.extinction *= 8.0;  // most rays become opaque
+  const TransferFunction tf(dense);
+  const Camera camera = isoCamera(grid);
+  volume::CpuRaySettings exact, early;
+  exact.terminationTransmittance = 0.0;
+  early.terminationTransmittance = 1e-2;
+  const volume::CpuImage a = volume::renderCpu(walk, tf, camera, 48, 48, exact);
+  const volume::CpuImage b = volume::renderCpu(walk, tf, camera, 48, 48, early);
+  EXPECT_GT(b.stats.stoppedRays, 100u);
+  EXPECT_LT(b.stats.steps, a.stats.steps);
+  EXPECT_LT(b.stats.maxStopTransmittance, 1e-2);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) worst = std::max(worst, double(std::abs(a.rgba[i] - b.rgba[i])));
+  std::printf("cpu early termination at 1e-2: %zu rays stopped, worst difference %.3g (bound %.3g)\n", b.stats.stoppedRays,
+              worst, b.stats.maxStopTransmittance);
+  EXPECT_LE(worst, b.stats.maxStopTransmittance + 1e-6);
+  EXPECT_GT(worst, 0.0);
+}
+
+TEST_F(CpuRayCast, TheEyeInsideTheMeshSeesFromTheNearPlaneOn) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  Camera camera;
+  camera.setView(StandardView::Isometric);
+  camera.fit(grid.bounds());
+  camera.lookAt({1.3, 1.7, 2.2}, {3.5, 3.0, 0.5}, {0, 0, 1});  // the eye inside, looking across
+  const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), kTf, camera, 48);
+  std::printf("cpu eye inside the mesh vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);
+  EXPECT_LE(e.max, 3e-5);
+}
+
+TEST(CpuRayCastWatertight, SliversNeedlesAndJitteredCellsLoseNoRay) {
+  const Mesh grid = test::tetGrid(5, 5, 5);
+  // 1000:1 parts with an extinction of 1 / thickness: float parameters along rays 1000
+  // thicknesses long leave ~2e-4 in alpha (the bound is 1e-3); no ray is lost.
+  EXPECT_LE(worstAlphaError(scaled(grid, {1.0, 1.0, 1e-3}), "slivers (grid 1000:1 flat)"), 1e-3);
+  EXPECT_LE(worstAlphaError(scaled(grid, {1e-3, 1.0, 1.0}), "needles (grid 1:1000 long)"), 1e-3);
+  EXPECT_LE(worstAlphaError(jittered(grid, 0.15, 3), "jittered grid"), 1e-4);
+  EXPECT_LE(worstAlphaError(delaunaySlivers(5), "Delaunay slivers"), 1e-4);
+}
+
+TEST(CpuRayCastWatertight, EveryRayOfACurvedThinShellIsKept) {
+  // The case of quadratic models of thin parts: a thin curved shell (300 degrees of a tube,
+  // 1/500 of its radius thick), cells split into tets: thin, curved, nearly flat tets.
+  Mesh shell = test::tetGrid(30, 6, 1);
+  for (glm::dvec3& p : shell.nodes) {
+    const double a = 5.0 * M_PI / 3.0 * p.x / 30.0, r = 1.0 + 0.002 * p.z;
+    p = {r * std::cos(a), r * std::sin(a), 0.2 * p.y};
+  }
+  EXPECT_LE(worstAlphaError(shell, "curved thin shell"), 1e-3);
+}
+
+TEST(CpuRayCastIntegration, ThinPieceSeriesMatchesTheExactPsi) {
+  double worst = 0.0;
+  for (double tf = 0.0; tf <= 1.0; tf += 0.01)
+    for (double tb = 0.0; tf + tb <= 1.0; tb += 0.01)
+      worst = std::max(worst, std::abs(volume::PiecewiseIntegrator::psiThin(tf, tb) - optics::psi(tf, tb)));
+  std::printf("thin-piece psi series: worst error %.3g over (tf + tb) / 2 <= 0.5\n", worst);
+  EXPECT_LE(worst, 6e-9);
+}
+
+TEST(CpuRayCastIntegration, PiecesMatchTheExactSegmentIntegral) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> value(-1.0, 7.0), length(0.0, 3.0);
+  const volume::PiecewiseIntegrator pieces(kTf);
+  double worst = 0.0;
+  for (int i = 0; i < 20000; ++i) {
+    const double a = value(rng), b = i % 10 == 0 ? a : value(rng), l = length(rng);
+    const optics::SegmentLight x = pieces.integrate(a, b, l), y = optics::integrateSegment(kTf, a, b, l);
+    worst = std::max({worst, std::abs(x.transmittance - y.transmittance), glm::length(x.color - y.color)});
+  }
+  EXPECT_LE(worst, 1e-8);
+  // Transparent runs: zero extinction over a whole range, nowhere else.
+  const TransferFunction peak({{0.0, {1, 1, 1}, 0.0}, {1.0, {1, 1, 1}, 0.0}, {1.5, {1, 0, 0}, 2.0}, {2.0, {1, 1, 1}, 0.0},
+                               {5.0, {1, 1, 1}, 0.0}});
+  const volume::PiecewiseIntegrator p(peak);
+  EXPECT_TRUE(p.transparent(-3.0, 1.0));
+  EXPECT_TRUE(p.transparent(0.2, 0.9));
+  EXPECT_FALSE(p.transparent(0.9, 1.2));
+  EXPECT_FALSE(p.transparent(1.9, 3.0));
+  EXPECT_TRUE(p.transparent(2.0, 9.0));
+  EXPECT_TRUE(p.transparent(9.0, 2.0));
+  EXPECT_FALSE(p.transparent(-1.0, 9.0));
+}
