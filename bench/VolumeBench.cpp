@@ -15,6 +15,8 @@
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 #include "CpuRayCaster.hpp"
+#include "core/FloatImageFile.hpp"
+#include "host/VtuWriter.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -26,6 +28,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 #include <tuple>
 
@@ -78,6 +81,7 @@ struct Case {
   Mesh mesh;
   FieldLocation location = FieldLocation::Node;
   std::vector<double> values;
+  bool sharpPeak = false;  ///< the transfer function: a narrow opacity peak instead of a ramp
 };
 
 std::vector<Case> cases(bool quick) {
@@ -86,6 +90,15 @@ std::vector<Case> cases(bool quick) {
     if (quick && n == 32) continue;
     Case c{"grid " + std::to_string(n) + "^3", kuhnGrid(n), FieldLocation::Node, {}};
     for (const auto& p : c.mesh.nodes) c.values.push_back(p.x);  // s varies along x (Espinha 2005, 5.1)
+    out.push_back(std::move(c));
+  }
+  {
+    // A wave field seen through a sharp opacity peak: most of the range transparent, one
+    // narrow iso-band opaque (what fast approximate renderers blur or miss).
+    const int n = quick ? 16 : 32;
+    Case c{"grid " + std::to_string(n) + "^3 wave, sharp peak", kuhnGrid(n), FieldLocation::Node, {}, true};
+    for (const auto& p : c.mesh.nodes)
+      c.values.push_back(std::sin(6.0 * p.x / n) * std::cos(5.0 * p.y / n) + 0.5 * std::sin(7.0 * p.z / n));
     out.push_back(std::move(c));
   }
   const std::string shared = VOLPOST_SHARED_DATA;
@@ -112,6 +125,38 @@ std::vector<Case> cases(bool quick) {
   return out;
 }
 
+// What another program needs to render a case as this bench does and compare with its
+// reference (docs/scripts/vtk_side_by_side.py): the mesh and field (.vtu), the transfer
+// function (.tf.json), the camera (.camera.json) and the exact reference image (.npy).
+void exportCase(const std::filesystem::path& dir, const Case& c, const TransferFunction& tf, const Camera& camera,
+                const optics::ReferenceImage& reference) {
+  std::string slug = c.name;
+  std::replace_if(slug.begin(), slug.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+  std::filesystem::create_directories(dir);
+  Model model;
+  model.mesh = c.mesh;
+  model.fields.push_back(Field::fromValues("s", c.location, 1, {c.values}));
+  writeVtu(model, (dir / (slug + ".vtu")).string());
+  std::ofstream(dir / (slug + ".tf.json")) << tf.toJson();
+  const glm::dvec3 e = camera.eye(), t = camera.target(), u = camera.up();
+  std::ofstream(dir / (slug + ".camera.json"))
+      << "{\"eye\": [" << e.x << ", " << e.y << ", " << e.z << "], \"target\": [" << t.x << ", " << t.y << ", " << t.z
+      << "], \"up\": [" << u.x << ", " << u.y << ", " << u.z << "], \"viewAngle\": " << camera.fieldOfView()
+      << ", \"size\": " << reference.width << "}\n";
+  std::vector<float> rgba;
+  for (const glm::dvec4& p : reference.pixels)
+    for (int k = 0; k < 4; ++k) rgba.push_back(float(p[k]));
+  app::writeFloatImage((dir / (slug + ".reference.npy")).string(), reference.width, reference.height, rgba, glm::dvec3(0.0));
+}
+
+TransferFunction sharpPeakTf(const std::vector<double>& values, double diagonal) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
+  const double mid = lo + 0.6 * (hi - lo), half = 0.015 * (hi - lo), tau = 60.0 / diagonal;
+  return TransferFunction({{lo, {0.2, 0.3, 0.9}, 0.0}, {mid - half, {0.2, 0.3, 0.9}, 0.0}, {mid, {1.0, 0.6, 0.1}, tau},
+                           {mid + half, {0.9, 0.2, 0.1}, 0.0}, {hi, {0.9, 0.2, 0.1}, 0.0}});
+}
+
 TransferFunction benchTf(const std::vector<double>& values, double diagonal) {
   // 10 linear segments (Espinha 2005's "10 segments" rows), cool-warm, extinction as the
   // default TF: a light fog rising to dense color at the top of the range.
@@ -131,6 +176,8 @@ int main(int argc, char** argv) {
   bool quick = false;
   const char* only = nullptr;  // --mesh SUBSTRING: just the meshes whose name contains it
   const char* errorImages = nullptr;
+  const char* exportDir = nullptr;
+  bool cpuOnly = false;  // --cpu-only: leave out the GPU renderers  // --export DIR: each case's mesh, TF, camera and reference for other programs
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
@@ -138,18 +185,23 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) only = argv[++i];
     else if (!std::strcmp(argv[i], "--error-images") && i + 1 < argc) errorImages = argv[++i];
+    else if (!std::strcmp(argv[i], "--export") && i + 1 < argc) exportDir = argv[++i];
+    else if (!std::strcmp(argv[i], "--cpu-only")) cpuOnly = true;
     else {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::fprintf(help ? stdout : stderr,
                    "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
                    "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
-                   "                            [--error-images DIR]\n"
+                   "                            [--error-images DIR] [--export DIR] [--cpu-only]\n"
                    "  --size N            image N x N (default 512)\n"
                    "  --frames N          frames along the orbit (default 5)\n"
                    "  --csv FILE          also write mesh, mode, median ms, RMSE, max error (for the plot)\n"
                    "  --quick             leave out the largest meshes\n"
                    "  --mesh SUBSTRING    only the meshes whose name contains it\n"
-                   "  --error-images DIR  one PGM per row: where the renderer is off (white = 0.05 or more)\n",
+                   "  --error-images DIR  one PGM per row: where the renderer is off (white = 0.05 or more)\n"
+                   "  --export DIR        each case's mesh (.vtu), transfer function, camera and reference image\n"
+                   "                      (.npy), for docs/scripts/vtk_side_by_side.py\n"
+                   "  --cpu-only          the reference and the CPU ray caster only (no GPU renderer)\n",
                    help ? "" : ("unknown argument '" + std::string(argv[i]) + "'\n").c_str());
       return help ? 0 : 2;
     }
@@ -169,7 +221,7 @@ int main(int argc, char** argv) {
   for (Case& c : cases(quick)) {
     if (only && c.name.find(only) == std::string::npos) continue;
     const double diagonal = c.mesh.bounds().diagonal();
-    const TransferFunction tf = benchTf(c.values, diagonal);
+    const TransferFunction tf = c.sharpPeak ? sharpPeakTf(c.values, diagonal) : benchTf(c.values, diagonal);
     Camera camera;
     camera.setView(StandardView::Isometric);
     camera.fit(c.mesh.bounds());
@@ -177,6 +229,7 @@ int main(int argc, char** argv) {
     const optics::TetVolume volume(c.mesh, c.location, c.values);
     const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
     const double refMs = msSince(refStart);
+    if (exportDir) exportCase(exportDir, c, tf, camera, reference);
     std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | - | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
                 volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
     // The CPU renderer: without early termination (like with like), then with its default.
@@ -184,7 +237,7 @@ int main(int argc, char** argv) {
       const auto prepStart = Clock::now();
       const volume::TetWalkMesh walkMesh(c.mesh, c.location, c.values);
       const double prepMs = msSince(prepStart);
-      for (double stopAt : {0.0, volume::CpuRaySettings{}.terminationTransmittance}) {
+      for (double stopAt : {0.0, 1e-4, volume::CpuRaySettings{}.terminationTransmittance}) {
         volume::CpuRaySettings settings;
         settings.terminationTransmittance = stopAt;
         const volume::CpuImage first = volume::renderCpu(walkMesh, tf, camera, size, size, settings);
@@ -216,6 +269,7 @@ int main(int argc, char** argv) {
         if (csv) std::fprintf(csv, "%s,cpu stop %g,%.3f,%.6g,%.6g\n", c.name.c_str(), stopAt, median, rmse, worst);
       }
     }
+    if (cpuOnly) continue;
     // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the
     // exact, pre-integrated and sampling modes, with its sort time per frame.
     volume::RayCaster raycaster;

@@ -128,6 +128,11 @@ double faceValue(const glm::dvec3& n, const glm::dvec3& a, const glm::dvec3& b, 
   const float wa = cornerWeight(f.bc), wb = cornerWeight(f.ca), wc = cornerWeight(f.ab);
   const float sum = wa + wb + wc;
   const bool weighed = sum > 0.0f;
+  // Each weight is off by up to its product's rounding bound (edgeSide): where they sum to
+  // less than a thousand bounds (a ray grazing the face, or near its edges), the float point
+  // and value would be off by more than 1e-3 of the face: take the plane in double.
+  const float la = l1(f.r[0]), lb = l1(f.r[1]), lc = l1(f.r[2]);
+  boundary = boundary || !(sum > 3e-4f * (la * lb + lb * lc + lc * la));
   if (weighed) {
     const glm::vec3 p = (wa * f.r[0] + wb * f.r[1] + wc * f.r[2]) / sum;
     t = glm::dot(p, ray.d);
@@ -152,9 +157,42 @@ struct Shared {
   const TetWalkMesh& mesh;
   const PiecewiseIntegrator& tf;
   const CpuRaySettings& settings;
+  const std::vector<std::uint8_t>& visible;  ///< per tet: can it add anything to a picture?
   std::size_t stepCap;
   float reentryTolerance;
 };
+
+// Empty-space skipping: a tet whose values all map to zero extinction (and hold no
+// iso-surface) adds nothing, so rays are walked only through the others. They leave that
+// part of the mesh through its boundary and re-enter through the next boundary face along
+// them, found like the mesh's own boundary: typical transfer functions, transparent over
+// most of the range, leave most tets out.
+std::vector<std::uint8_t> visibleTets(const TetWalkMesh& mesh, const PiecewiseIntegrator& tf,
+                                      const std::vector<optics::IsoSurface>& isoSurfaces, unsigned threads) {
+  std::vector<std::uint8_t> visible(mesh.tetCount());
+  const double offset = mesh.valueOffset();
+  std::atomic<std::size_t> next{0};
+  constexpr std::size_t kChunk = 4096;
+  runOnThreads(threads, [&](unsigned) {
+    for (std::size_t first; (first = next.fetch_add(kChunk)) < visible.size();)
+      for (std::size_t t = first; t < std::min(first + kChunk, visible.size()); ++t) {
+        double lo, hi;
+        if (mesh.cellValues()) {
+          lo = hi = mesh.tetValue(t);
+        } else {
+          const glm::uvec4 v = mesh.tet(t).nodes;
+          const auto& n = mesh.nodes();
+          lo = std::min({n[v[0]].w, n[v[1]].w, n[v[2]].w, n[v[3]].w});
+          hi = std::max({n[v[0]].w, n[v[1]].w, n[v[2]].w, n[v[3]].w});
+        }
+        lo += offset, hi += offset;
+        bool shows = !tf.transparent(lo, hi);
+        for (const optics::IsoSurface& s : isoSurfaces) shows = shows || (s.value >= lo && s.value <= hi);
+        visible[t] = shows;
+      }
+  });
+  return visible;
+}
 
 
 EntryFace boundaryEntry(const TetWalkMesh& mesh, const BoundaryFace& f, const PixelRay& ray) {
@@ -289,7 +327,8 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
     out.ab = kx;
     out.bc = xy;
     out.ca = {-ky.value, !ky.positive, ky.nearZero};
-    const int next = record.neighbors[local[exit]];
+    int next = record.neighbors[local[exit]];
+    if (next >= 0 && !sh.visible[std::size_t(next)]) next = -1;  // leaving what shows
     float tOut = tIn, sOut = sIn;
     if (!crossing(mesh, ray, out, tOut, sOut, next < 0)) tOut = tIn, sOut = sIn;
     tOut = std::max(tOut, tIn);
@@ -364,13 +403,12 @@ struct Entries {
   std::vector<std::uint32_t> first;   ///< pixel p's entries: [first[p], first[p + 1])
 };
 
-Entries findEntries(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
-                    const std::vector<PixelRay>& rays, unsigned threads) {
+Entries findEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& faces, const Camera& camera, int width,
+                    int height, const std::vector<PixelRay>& rays, unsigned threads) {
   const glm::dmat4 viewProjection = camera.projectionMatrix(double(width) / height) * camera.viewMatrix(mesh.origin());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;
   const glm::dvec3 eye = camera.eye() - mesh.origin();
   const glm::dvec3 viewDir = camera.viewDirection();
-  const auto& faces = mesh.boundaryFaces();
   const auto& pos = mesh.exactPositions();
   // Is the eye inside the mesh's box? Then rays may start inside the mesh: they are walked
   // from where they entered behind the eye, and integrated from the near plane on.
@@ -465,13 +503,15 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Ca
   const unsigned threads = threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
   const auto entryStart = Clock::now();
   const std::vector<PixelRay> rays = pixelRays(mesh, camera, width, height, settings.sceneDepth, threads);
-  const Entries found = findEntries(mesh, camera, width, height, rays, threads);
+  const PiecewiseIntegrator integrator(tf);
+  const std::vector<std::uint8_t> visible = visibleTets(mesh, integrator, settings.isoSurfaces, threads);
+  const std::vector<BoundaryFace> faces = mesh.boundaryOf(visible);
+  const Entries found = findEntries(mesh, faces, camera, width, height, rays, threads);
   const std::vector<Entry>& entries = found.list;
   const std::vector<std::uint32_t>& firstEntry = found.first;
   image.stats.entryMs = msSince(entryStart);
 
-  const PiecewiseIntegrator integrator(tf);
-  const Shared shared{mesh, integrator, settings, mesh.tetCount() + 16, float(1e-6 * mesh.diagonal())};
+  const Shared shared{mesh, integrator, settings, visible, mesh.tetCount() + 16, float(1e-6 * mesh.diagonal())};
   constexpr int kTile = 16;
   const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
   std::atomic<int> nextTile{0}, tilesDone{0};
@@ -502,7 +542,7 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Ca
               const Entry& e = entries[i];
               if (e.t < leftAt - shared.reentryTolerance) continue;  // inside what was walked already
               if (e.t >= w1) break;
-              const BoundaryFace& f = mesh.boundaryFaces()[e.face];
+              const BoundaryFace& f = faces[e.face];
               const EntryFace in = boundaryEntry(mesh, f, ray);
               float t, s;
               if (!crossing(mesh, ray, in, t, s, true)) continue;

@@ -74,6 +74,10 @@ PiecewiseIntegrator::PiecewiseIntegrator(const TransferFunction& tf) {
     tau_.push_back(p.extinction);
   }
   const int n = int(values_.size());
+  for (int i = 0; i + 1 < n; ++i) {
+    const double width = values_[std::size_t(i) + 1] - values_[std::size_t(i)];
+    inverseWidth_.push_back(width > 0.0 ? 1.0 / width : 0.0);
+  }
   constexpr double inf = std::numeric_limits<double>::infinity();
   // zeroUntil_[j + 1] for piece j: the extinction is zero from anywhere in the piece up to
   // this value (-inf when it is not zero over the piece). Built from the top down.
@@ -105,8 +109,7 @@ void PiecewiseIntegrator::at(int piece, double s, glm::dvec3& color, double& tau
     return;
   }
   const std::size_t i = std::size_t(piece);
-  const double width = values_[i + 1] - values_[i];
-  const double w = width > 0.0 ? std::clamp((s - values_[i]) / width, 0.0, 1.0) : 0.0;
+  const double w = std::clamp((s - values_[i]) * inverseWidth_[i], 0.0, 1.0);
   color = colors_[i] + (colors_[i + 1] - colors_[i]) * w;
   tau = tau_[i] + (tau_[i + 1] - tau_[i]) * w;
 }

@@ -32,6 +32,7 @@ class PiecewiseIntegrator {
   void at(int piece, double s, glm::dvec3& color, double& tau) const;
 
   std::vector<double> values_, tau_;
+  std::vector<double> inverseWidth_;  ///< per piece (0 for a step: two points at one value)
   std::vector<glm::dvec3> colors_;
   std::vector<double> zeroUntil_;  ///< per piece + 1: extinction is zero from there up to this value
 };

@@ -57,20 +57,29 @@ TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<con
   const std::vector<glm::ivec4> neighbors = faceNeighbors(tets);
   tets_.resize(tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t) tets_[t] = {tets[t], neighbors[t]};
-  for (std::size_t t = 0; t < tets.size(); ++t)
+}
+
+std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t>& visible) const {
+  std::vector<BoundaryFace> faces;
+  for (std::size_t t = 0; t < tets_.size(); ++t) {
+    if (!visible[t]) continue;
+    const WalkTet& tet = tets_[t];
     for (int f = 0; f < 4; ++f) {
-      if (neighbors[t][f] >= 0) continue;
-      std::uint32_t v[3] = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
-      const glm::dvec3 a = mesh.nodes[v[0]], bb = mesh.nodes[v[1]], c = mesh.nodes[v[2]];
-      const glm::dvec3 inside = mesh.nodes[tets[t][f]];
-      if (glm::dot(glm::cross(bb - a, c - a), inside - a) > 0.0) std::swap(v[1], v[2]);  // normal outward
-      boundary_.push_back({std::uint32_t(t), {v[0], v[1], v[2]}});
+      const int across = tet.neighbors[f];
+      if (across >= 0 && visible[std::size_t(across)]) continue;
+      std::uint32_t v[3] = {tet.nodes[kFaces[f][0]], tet.nodes[kFaces[f][1]], tet.nodes[kFaces[f][2]]};
+      const glm::dvec3 a = exactPositions_[v[0]], b = exactPositions_[v[1]], c = exactPositions_[v[2]];
+      const glm::dvec3 inside = exactPositions_[tet.nodes[f]];
+      if (glm::dot(glm::cross(b - a, c - a), inside - a) > 0.0) std::swap(v[1], v[2]);  // normal outward
+      faces.push_back({std::uint32_t(t), {v[0], v[1], v[2]}});
     }
+  }
+  return faces;
 }
 
 std::size_t TetWalkMesh::bytes() const {
   return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + tets_.size() * sizeof(WalkTet) +
-         cellValues_.size() * sizeof(float) + boundary_.size() * sizeof(BoundaryFace);
+         cellValues_.size() * sizeof(float);
 }
 
 }  // namespace volpost::volume

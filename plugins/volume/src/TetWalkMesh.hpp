@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // A tetrahedral mesh prepared for walking rays from tet to tet on the CPU: float vertex
 // positions relative to the mesh centre, each tet's four vertex ids, the tet across each
-// face, one value per node (linear in each tet) or per tet (constant), and the boundary
-// faces, each listed counter-clockwise seen from outside (where rays enter).
+// face, one value per node (linear in each tet) or per tet (constant), and the boundary of
+// any part of it (where rays enter and leave that part).
 #pragma once
 
 #include <volpost/core/Field.hpp>
@@ -52,7 +52,9 @@ class TetWalkMesh {
   /// Cell data: the tet's value minus valueOffset().
   float tetValue(std::size_t tet) const { return cellValues_[tet]; }
   double valueOffset() const { return valueOffset_; }
-  const std::vector<BoundaryFace>& boundaryFaces() const { return boundary_; }
+  /// The faces of the tets marked in `visible` (one flag per tet) that no other visible tet
+  /// shares, listed outward: where rays enter and leave the part of the mesh that shows.
+  std::vector<BoundaryFace> boundaryOf(const std::vector<std::uint8_t>& visible) const;
 
   /// Bytes held, for the renderer's statistics.
   std::size_t bytes() const;
@@ -66,7 +68,6 @@ class TetWalkMesh {
   std::vector<WalkTet> tets_;
   std::vector<float> cellValues_;
   double valueOffset_ = 0.0;
-  std::vector<BoundaryFace> boundary_;
   std::size_t skipped_ = 0;
 };
 
