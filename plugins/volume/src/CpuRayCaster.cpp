@@ -567,6 +567,7 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Ca
   });
   image.stats.walkMs = msSince(walkStart);
   image.stats.rays = raysHit;
+  image.stats.visibleTets = std::size_t(std::count(visible.begin(), visible.end(), std::uint8_t(1)));
   image.stats.steps = all.steps;
   image.stats.stoppedRays = all.stopped;
   image.stats.maxStopTransmittance = all.maxStop;

@@ -38,6 +38,7 @@ struct CpuRaySettings {
 
 struct CpuRenderStats {
   std::size_t rays = 0;             ///< pixels whose ray meets the mesh
+  std::size_t visibleTets = 0;      ///< tets the transfer function can see: the only ones walked
   std::size_t steps = 0;            ///< tets crossed, all rays together
   std::size_t stoppedRays = 0;      ///< stopped early (nearly opaque)
   double maxStopTransmittance = 0;  ///< the most any stopped ray left behind: its error bound

@@ -218,6 +218,27 @@ TEST_F(CpuRayCast, EarlyTerminationStaysWithinItsStatedBound) {
   EXPECT_GT(worst, 0.0);
 }
 
+TEST_F(CpuRayCast, TransparentRangesAreSkippedWithoutChangingThePicture) {
+  // A narrow opacity peak (most tets transparent) and an iso-surface in the transparent
+  // part: rays walk only the tets that show, and the picture is the reference's.
+  const Mesh grid = test::tetGrid(6, 6, 6);
+  const TransferFunction peak({{0.0, {0.2, 0.3, 0.9}, 0.0}, {4.0, {0.2, 0.3, 0.9}, 0.0}, {4.2, {1.0, 0.6, 0.1}, 3.0},
+                               {4.4, {0.9, 0.2, 0.1}, 0.0}, {9.0, {0.9, 0.2, 0.1}, 0.0}});
+  volume::CpuRaySettings settings;
+  settings.isoSurfaces = {{1.5, {0.9, 0.9, 0.9}, 0.5}};
+  const volume::TetWalkMesh walk(grid, FieldLocation::Node, field(grid));
+  const ImageError e = cpuAgainstReference(walk, grid, FieldLocation::Node, field(grid), peak, isoCamera(grid), 64, settings);
+  std::printf("cpu sharp peak + iso-surface in the transparent range vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 1e-6);
+  EXPECT_LE(e.max, 3e-5);
+  settings.terminationTransmittance = 0.0;
+  const volume::CpuImage skipped = volume::renderCpu(walk, peak, isoCamera(grid), 64, 64, settings);
+  const volume::CpuImage dense = volume::renderCpu(walk, kTf, isoCamera(grid), 64, 64, settings);
+  EXPECT_EQ(dense.stats.visibleTets, walk.tetCount());
+  EXPECT_LT(skipped.stats.visibleTets, walk.tetCount() / 2);
+  EXPECT_LT(skipped.stats.steps, dense.stats.steps / 2);
+}
+
 TEST_F(CpuRayCast, TheEyeInsideTheMeshSeesFromTheNearPlaneOn) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   Camera camera;
