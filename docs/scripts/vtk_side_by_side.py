@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""VTK's unstructured volume renderers on the cases volpost_volume_bench exports, for a
+side-by-side table: milliseconds per frame (wall and process CPU) and the image error
+against volpost's exact reference (premultiplied RGBA in 0..1, as the bench reports).
+
+    build/bin/volpost_volume_bench --size 512 --frames 5 --mesh wave --cpu-only --export /tmp/cases
+    xvfb-run -a /usr/bin/python3 docs/scripts/vtk_side_by_side.py /tmp/cases --frames 5
+
+Needs Debian's python3-vtk9 and python3-numpy (not volpost itself). VTK's opacity is per
+unit distance: alpha = 1 - (1 - o)^(L / u); volpost's extinction tau gives
+alpha = 1 - exp(-tau L), so o = 1 - exp(-tau u) with u = 1 model unit, sampled at 512
+values so that VTK's piecewise-linear opacity follows volpost's piecewise-linear tau.
+"""
+import argparse
+import glob
+import json
+import math
+import os
+import time
+
+import numpy as np
+import vtk
+from vtk.util import numpy_support
+
+
+def transfer_functions(tf_path):
+    points = json.load(open(tf_path))["points"]
+    values = [p["value"] for p in points]
+    color = vtk.vtkColorTransferFunction()
+    for p in points:
+        color.AddRGBPoint(p["value"], *p["color"])
+    opacity = vtk.vtkPiecewiseFunction()
+    lo, hi = values[0], values[-1]
+    samples = sorted(set([lo + (hi - lo) * i / 511.0 for i in range(512)] + values))
+    for s in samples:
+        tau = np.interp(s, values, [p["extinction"] for p in points])
+        opacity.AddPoint(s, 1.0 - math.exp(-tau * 1.0))
+    return color, opacity
+
+
+def render(case, mapper_name, frames):
+    camera_spec = json.load(open(case + ".camera.json"))
+    size = camera_spec["size"]
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(case + ".vtu")
+    reader.Update()
+    grid = reader.GetOutput()
+    grid.GetPointData().SetActiveScalars("s")
+    color, opacity = transfer_functions(case + ".tf.json")
+    prop = vtk.vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(1.0)
+    prop.SetInterpolationTypeToLinear()
+    prop.ShadeOff()
+    if mapper_name == "projected tetrahedra":
+        mapper = vtk.vtkProjectedTetrahedraMapper()
+    elif mapper_name == "ray cast":
+        mapper = vtk.vtkUnstructuredGridVolumeRayCastMapper()
+    else:
+        mapper = vtk.vtkUnstructuredGridVolumeZSweepMapper()
+    mapper.SetInputData(grid)
+    volume = vtk.vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    renderer = vtk.vtkRenderer()
+    renderer.AddVolume(volume)
+    renderer.SetBackground(0, 0, 0)
+    window = vtk.vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetAlphaBitPlanes(1)
+    window.SetSize(size, size)
+    window.AddRenderer(renderer)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*camera_spec["eye"])
+    camera.SetFocalPoint(*camera_spec["target"])
+    camera.SetViewUp(*camera_spec["up"])
+    camera.SetViewAngle(camera_spec["viewAngle"])
+    renderer.ResetCameraClippingRange()
+    setup = time.perf_counter()
+    window.Render()  # the first frame builds VTK's structures: reported apart
+    first_ms = (time.perf_counter() - setup) * 1e3
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.SetInputBufferTypeToRGBA()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    image = grab.GetOutput()
+    rgba = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(size, size, 4)[::-1] / 255.0
+    walls, cpus = [], []
+    for _ in range(frames):
+        camera.Azimuth(360.0 / frames)
+        renderer.ResetCameraClippingRange()
+        w0, c0 = time.perf_counter(), time.process_time()
+        window.Render()
+        walls.append((time.perf_counter() - w0) * 1e3)
+        cpus.append((time.process_time() - c0) * 1e3)
+    reference = np.load(case + ".reference.npy")
+    diff = rgba - reference
+    return first_ms, float(np.median(walls)), float(np.median(cpus)), float(np.sqrt(np.mean(diff ** 2))), float(np.abs(diff).max())
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("cases", help="the folder volpost_volume_bench --export wrote")
+    parser.add_argument("--frames", type=int, default=5)
+    args = parser.parse_args()
+    print("VTK %s, %s" % (vtk.vtkVersion.GetVTKVersion(), os.uname().nodename))
+    print("| case | VTK mapper | first frame ms | ms/frame (wall, median) | process CPU ms/frame | RMSE | max error |")
+    print("|---|---|---:|---:|---:|---:|---:|")
+    for case in sorted(glob.glob(os.path.join(args.cases, "*.vtu"))):
+        case = case[:-4]
+        for mapper in ("projected tetrahedra", "ray cast", "z-sweep"):
+            first, wall, cpu, rmse, worst = render(case, mapper, args.frames)
+            print("| %s | %s | %.0f | %.0f | %.0f | %.2g | %.2g |" % (os.path.basename(case), mapper, first, wall, cpu, rmse, worst),
+                  flush=True)
+
+
+if __name__ == "__main__":
+    main()
