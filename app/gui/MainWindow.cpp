@@ -86,8 +86,15 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
+  glLabel_->setObjectName("glLabel");
   statusBar()->addPermanentWidget(glLabel_);
   connect(viewport_, &Viewport::glInfo, glLabel_, &QLabel::setText);
+  connect(viewport_, &Viewport::glInfo, this, &MainWindow::preferCpuOnSoftwareGl);
+  refiningLabel_ = new QLabel("Refining the picture...", this);
+  refiningLabel_->setObjectName("refiningLabel");
+  refiningLabel_->setVisible(false);
+  statusBar()->addPermanentWidget(refiningLabel_);
+  connect(viewport_, &Viewport::refining, refiningLabel_, &QLabel::setVisible);
   connect(viewport_, &Viewport::renderFailed, this, [this](const QString& m) {
     statusBar()->showMessage("Rendering error: " + m);
   });
@@ -234,6 +241,20 @@ void MainWindow::buildActions() {
   });
 }
 
+// OpenGL drawn by the CPU (no GPU, a remote desktop): the GPU renderers then run on the same
+// cores several times slower than the CPU ray caster, so volume rendering starts with it
+// unless the user or a state file chose a renderer.
+void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
+  if (rendererChosen_ || !gl::isSoftwareRasterizer(description.toStdString())) return;
+  QAction* cpu = findChild<QAction*>("renderer:cpu");
+  if (!cpu || cpu->isChecked()) return;
+  if (!changeScene([](Scene& s) { s.setVolumeRenderer("cpu"); })) return;
+  const QSignalBlocker block(cpu);
+  cpu->setChecked(true);
+  statusBar()->showMessage("OpenGL is drawn by the CPU here: volume rendering uses " + cpu->text() +
+                           " (View > Volume Renderer to change)", 10000);
+}
+
 void MainWindow::buildVolumeMenu(QMenu* view) {
   // Every GPU volume renderer the plugins offer, named as the plugin names it; the first
   // is used until another is chosen.
@@ -252,6 +273,7 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
       a->setChecked(true);
     }
     connect(a, &QAction::triggered, this, [this, name, a] {
+      rendererChosen_ = true;
       if (changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); }))
         statusBar()->showMessage("Volume renderer: " + a->text());
     });
@@ -965,6 +987,7 @@ void MainWindow::applyState(const SceneState& state) {
   }
   if (state.volume.transferFunction && !state.quantity.empty())
     userTransferFunctions_[viewport_->scene().view()->quantity.key()] = *state.volume.transferFunction;
+  rendererChosen_ = true;  // the state names its renderer
   syncControlsToScene();
   viewport_->update();
   notifyPanels();

@@ -96,6 +96,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void showModelInfo();
   void notifyPanels();
   void buildVolumeMenu(QMenu* view);
+  void preferCpuOnSoftwareGl(const QString& description);
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();
@@ -119,6 +120,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   QComboBox* colorMapBox_ = nullptr;
   QTextBrowser* modelInfo_ = nullptr;
   QLabel* glLabel_ = nullptr;
+  QLabel* refiningLabel_ = nullptr;  ///< shown while the renderer refines a quick frame
+  bool rendererChosen_ = false;      ///< by the user or a state file: no automatic choice then
   QAction* edgesAction_ = nullptr;
   QAction* volumeAction_ = nullptr;
   QAction* orthoAction_ = nullptr;

@@ -87,8 +87,10 @@ void Viewport::paintGL() {
     emit renderFailed(e.what());
     return;
   }
-  // A table still building on a worker thread: draw again when it may be there.
-  if (scene_.hasPendingWork()) QTimer::singleShot(30, this, [this] { update(); });
+  // A table or a full frame still computed on worker threads: draw again when it may be there.
+  const bool pending = scene_.hasPendingWork();
+  if (pending) QTimer::singleShot(30, this, [this] { update(); });
+  if (pending != refining_) emit refining(refining_ = pending);
   if (overlayReady_) drawLegend(ctx.width, ctx.height);
 }
 

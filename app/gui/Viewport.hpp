@@ -58,6 +58,8 @@ class Viewport : public QOpenGLWidget {
 
  signals:
   void glInfo(const QString& description);
+  /// The picture shown is a quick one; the renderer is computing the full one (or is done).
+  void refining(bool on);
   void renderFailed(const QString& message);
   void rakePlaced(glm::dvec3 from, glm::dvec3 to);
   void picked(glm::dvec3 point);
@@ -80,6 +82,7 @@ class Viewport : public QOpenGLWidget {
   Scene scene_;
   OverlayRenderer overlay_;
   bool overlayReady_ = false;
+  bool refining_ = false;  ///< last said by refining()
   QPoint lastMouse_;
   bool rakeMode_ = false;
   bool trackball_ = false;

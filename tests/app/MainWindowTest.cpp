@@ -7,6 +7,8 @@
 #include "gui/StepController.hpp"
 #include "gui/Viewport.hpp"
 
+#include <volpost/render/GL.hpp>
+
 #include <QApplication>
 #include <QAction>
 #include <QComboBox>
@@ -16,6 +18,7 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QDockWidget>
+#include <QLabel>
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QMouseEvent>
@@ -52,6 +55,17 @@ class MainWindowTest : public QObject {
   }
 
   // Counts pixels that are not background, and a checksum of the picture.
+  // The view's frame once the renderer has refined it (the CPU ray caster shows a quick
+  // frame at once and the full one when its worker threads are done).
+  static QImage settled(Viewport* view) {
+    QImage image = view->grabFramebuffer();
+    for (int i = 0; i < 3000 && view->scene().hasPendingWork(); ++i) {
+      QTest::qWait(10);
+      image = view->grabFramebuffer();
+    }
+    return image;
+  }
+
   static std::pair<int, quint64> summarize(const QImage& image) {
     int drawn = 0;
     quint64 sum = 0;
@@ -84,19 +98,39 @@ class MainWindowTest : public QObject {
     QVERIFY(box);
     QCOMPARE(box->currentData().toString(), QString("S.mises"));
     QCOMPARE(window_->session()->model().mesh.cellCount(), std::size_t(12431));
-    const QImage image = window_->viewport()->grabFramebuffer();
+    const QImage image = settled(window_->viewport());
     const auto [drawn, sum] = summarize(image);
     QVERIFY2(drawn > image.width() / 2 * image.height() / 50, "the model covers part of the view");
     if (const char* shot = std::getenv("VOLPOST_SCREENSHOT")) window_->grab().save(shot);
   }
 
+  void volumeRenderingRunsOnTheCpuWhereOpenGlIsDrawnByIt() {
+    Viewport* view = window_->viewport();
+    if (!gl::isSoftwareRasterizer(window_->findChild<QLabel*>("glLabel")->text().toStdString()))
+      QSKIP("OpenGL here is a GPU's: the GPU ray caster stays the first choice");
+    auto* cpu = window_->findChild<QAction*>("renderer:cpu");
+    QVERIFY2(cpu && cpu->isChecked(), "software OpenGL: the CPU ray caster is chosen");
+    QCOMPARE(view->scene().state().volume.renderer, std::string("cpu"));
+    QVERIFY(window_->selectQuantity("S.mises"));
+    auto* volume = window_->findChild<QAction*>("volumeAction");
+    volume->setChecked(true);
+    auto* refining = window_->findChild<QLabel*>("refiningLabel");
+    QVERIFY(refining);
+    const auto picture = summarize(settled(view));
+    QVERIFY(picture.first > 0);
+    QTest::qWait(50);
+    view->repaint();
+    QVERIFY2(!refining->isVisible(), "no \"refining\" once the full frame is shown");
+    volume->setChecked(false);
+  }
+
   void switchingTheResultChangesThePicture() {
     // The model alone (the legend's words and numbers differ between results).
     window_->viewport()->scene().setShowLegend(false);
-    const auto before = summarize(window_->viewport()->grabFramebuffer());
+    const auto before = summarize(settled(window_->viewport()));
     QVERIFY(window_->selectQuantity("U.magnitude"));
     QCOMPARE(window_->activeQuantity()->key(), std::string("U.magnitude"));
-    const auto after = summarize(window_->viewport()->grabFramebuffer());
+    const auto after = summarize(settled(window_->viewport()));
     window_->viewport()->scene().setShowLegend(true);
     // Same geometry, the same pixels drawn...
     QVERIFY2(std::abs(after.first - before.first) < before.first / 100,
@@ -105,9 +139,9 @@ class MainWindowTest : public QObject {
   }
 
   void standardViewsAndProjectionMoveTheCamera() {
-    const auto iso = summarize(window_->viewport()->grabFramebuffer());
+    const auto iso = summarize(settled(window_->viewport()));
     window_->viewport()->setStandardView(StandardView::PlusX);  // looking down the bar's axis
-    const auto end = summarize(window_->viewport()->grabFramebuffer());
+    const auto end = summarize(settled(window_->viewport()));
     QVERIFY(end.first < iso.first);
     window_->viewport()->setStandardView(StandardView::Isometric);
   }
@@ -118,14 +152,14 @@ class MainWindowTest : public QObject {
     QVERIFY(action);
     QVERIFY2(action->isEnabled(), "the volume plugin provides a renderer");
     Viewport* view = window_->viewport();
-    const auto surface = summarize(view->grabFramebuffer());
+    const auto surface = summarize(settled(view));
     auto* colors = window_->findChild<QComboBox*>("colorMapBox");
     QVERIFY(colors->isEnabled());
     action->setChecked(true);
     QVERIFY(view->scene().volumeShown());
     QVERIFY2(!colors->isEnabled(), "one color control: the transfer function's");
     QVERIFY(!view->scene().volume().edges);  // no cage of element edges over the volume
-    const auto volume = summarize(view->grabFramebuffer());
+    const auto volume = summarize(settled(view));
     QVERIFY(volume.second != surface.second);
     window_->findChild<QAction*>("clip:0")->trigger();
     QCOMPARE(view->scene().volume().clipPlanes.size(), std::size_t(1));
@@ -141,7 +175,7 @@ class MainWindowTest : public QObject {
     }
     QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, start + QPoint(0, -40));
     QVERIFY2(view->scene().volume().clipPlanes[0].point.x > before, "Ctrl+drag upward moves the plane along its normal");
-    const auto clipped = summarize(view->grabFramebuffer());
+    const auto clipped = summarize(settled(view));
     QVERIFY(clipped.second != volume.second);
     QCOMPARE(view->volumeStats().meshUploads, beforeDrag.meshUploads);   // the drag costs only frames
     QCOMPARE(view->volumeStats().tableBuilds, beforeDrag.tableBuilds);
@@ -149,21 +183,21 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("clip:-1")->trigger();
     view->scene().setClipBox(ClipBox{2.0, 8.0, -1.0, 2.0, -1.0, 2.0});
     view->update();
-    const auto boxed = summarize(view->grabFramebuffer());
+    const auto boxed = summarize(settled(view));
     QVERIFY(boxed.second != volume.second && boxed.first < volume.first);
     QVERIFY2(view->uploadedTetCount() < window_->session()->tetrahedra().mesh.cellCount() * 3 / 4,
              "the GPU holds only the tets the box can show");
     view->scene().setClipBox(std::nullopt);
     view->scene().setIsoSurfaces({{100.0, {1.0, 0.85, 0.2}, 1.0}});
     view->update();
-    const auto iso = summarize(view->grabFramebuffer());
+    const auto iso = summarize(settled(view));
     QVERIFY(iso.second != volume.second);
     view->scene().setIsoSurfaces({});
     // The same view by cell projection (View > Volume Renderer): close to the ray caster's.
     auto* vicp = window_->findChild<QAction*>("renderer:vicp-exact");
     QVERIFY2(vicp, "the volume plugin offers cell projection");
     vicp->trigger();
-    const auto projected = summarize(view->grabFramebuffer());
+    const auto projected = summarize(settled(view));
     QVERIFY(view->scene().volumeShown());
     QVERIFY2(std::abs(projected.first - volume.first) < volume.first / 20,
              qPrintable(QString("%1 vs %2 pixels").arg(projected.first).arg(volume.first)));
@@ -198,7 +232,7 @@ class MainWindowTest : public QObject {
     view->scene().setShowLegend(false);
     view->scene().camera().orbit(30.0, 12.0);
     view->update();
-    const QImage shown = view->grabFramebuffer();
+    const QImage shown = settled(view);
     const QString state = QDir::temp().filePath("volpost_gui_state_test.json");
     const QString png = QDir::temp().filePath("volpost_gui_state_test.png");
     QVERIFY(window_->saveStateFile(state));
@@ -227,7 +261,7 @@ class MainWindowTest : public QObject {
     QVERIFY(applied.count() == 1 || applied.wait(30000));
     QVERIFY(applied.first().first().toBool());
     QCOMPARE(view->scene().volume().clipPlanes.size(), std::size_t(1));
-    QVERIFY(view->grabFramebuffer().convertToFormat(QImage::Format_RGB32) == window);
+    QVERIFY(settled(view).convertToFormat(QImage::Format_RGB32) == window);
     QFile::remove(state);
     QFile::remove(png);
     view->scene().setShowLegend(true);
@@ -244,14 +278,14 @@ class MainWindowTest : public QObject {
     auto* action = window_->findChild<QAction*>("volumeAction");
     action->setChecked(true);
     Viewport* view = window_->viewport();
-    const auto before = summarize(view->grabFramebuffer());
+    const auto before = summarize(settled(view));
     const std::size_t points = window_->transferFunction().points().size();
     // A click low near the top of the range (where most of the bar's stress is, between
     // the last two points) adds a nearly clear point: the host's function and the picture change.
     QTest::mouseClick(curve, Qt::LeftButton, {}, QPoint(6 + int(0.94 * (curve->width() - 12)), curve->height() * 3 / 4));
     QTRY_COMPARE(window_->transferFunction().points().size(), points + 1);
     QCOMPARE(view->scene().transferFunction(), window_->transferFunction());
-    const auto after = summarize(view->grabFramebuffer());
+    const auto after = summarize(settled(view));
     QVERIFY(after.second != before.second);
     if (const char* shot = std::getenv("VOLPOST_TF_SCREENSHOT")) window_->grab().save(shot);
     action->setChecked(false);
@@ -262,7 +296,7 @@ class MainWindowTest : public QObject {
     // of the displacement field traced on a worker thread and drawn.
     Viewport* view = window_->viewport();
     window_->viewport()->setStandardView(StandardView::PlusY);
-    const auto before = summarize(view->grabFramebuffer());
+    const auto before = summarize(settled(view));
     window_->findChild<QAction*>("placeRake")->trigger();
     QVERIFY(view->rakeMode());
     QTest::keyClick(view, Qt::Key_Escape);  // Esc leaves placement with nothing changed
@@ -291,7 +325,7 @@ class MainWindowTest : public QObject {
     const auto result = view->scene().streamlineResult();
     QVERIFY(result);
     QVERIFY2(result->lines.size() >= 10, qPrintable(QString("%1 lines").arg(result->lines.size())));
-    const auto after = summarize(view->grabFramebuffer());
+    const auto after = summarize(settled(view));
     QVERIFY(after.second != before.second);
     if (const char* shot = std::getenv("VOLPOST_STREAMLINE_SCREENSHOT")) window_->grab().save(shot);
     window_->findChild<QAction*>("streamlinesAction")->setChecked(false);
@@ -329,10 +363,10 @@ class MainWindowTest : public QObject {
     QVERIFY(table.rfind("x,y,z,element,element_type,node,", 0) == 0);
     // Min and max marked: the picture changes; the state keeps both.
     view->fit();
-    const QImage before = view->grabFramebuffer();
+    const QImage before = settled(view);
     window_->findChild<QAction*>("extremesAction")->setChecked(true);
     QVERIFY(view->scene().marksExtremes());
-    const QImage after = view->grabFramebuffer();
+    const QImage after = settled(view);
     QVERIFY(after != before);
     if (const char* shot = std::getenv("VOLPOST_PROBE_SCREENSHOT")) window_->grab().save(shot);
     const SceneState state = view->scene().state();
@@ -364,21 +398,21 @@ class MainWindowTest : public QObject {
     auto* next = window_->findChild<QAction*>("nextStepAction");
     auto* previous = window_->findChild<QAction*>("previousStepAction");
     QVERIFY(next && previous && next->isEnabled());
-    const QImage step1 = view->grabFramebuffer();
+    const QImage step1 = settled(view);
     next->trigger();
     QCOMPARE(view->scene().state().step, std::size_t(1));
     next->trigger();  // the last step stays
     QCOMPARE(view->scene().state().step, std::size_t(1));
     // Each step spans the map: twice the values, the same picture.
-    QCOMPARE(view->grabFramebuffer(), step1);
+    QCOMPARE(settled(view), step1);
     auto* range = window_->findChild<QComboBox*>("rangeBox");
     range->setCurrentIndex(1);  // all steps
     QVERIFY(view->scene().state().rangeOverSteps);
-    const QImage step2All = view->grabFramebuffer();
+    const QImage step2All = settled(view);
     previous->trigger();
     QCOMPARE(view->scene().state().step, std::size_t(0));
     QCOMPARE(view->scene().displayRange().max, 222.0);
-    QVERIFY2(view->grabFramebuffer() != step2All, "on one scale the steps differ");
+    QVERIFY2(settled(view) != step2All, "on one scale the steps differ");
     // Typed: a bad range changes nothing and says so; a good one is used.
     range->setCurrentIndex(2);
     auto* min = window_->findChild<QLineEdit*>("rangeMin");
@@ -476,9 +510,9 @@ class MainWindowTest : public QObject {
     Viewport* view = window_->viewport();
     QVERIFY(!view->scene().volumeShown());
     view->setStandardView(StandardView::Isometric);
-    const QImage whole = view->grabFramebuffer();
+    const QImage whole = settled(view);
     window_->findChild<QAction*>("clip:0")->trigger();  // normal +x through the centre
-    const QImage cut = view->grabFramebuffer();
+    const QImage cut = settled(view);
     QVERIFY(view->scene().sectionTriangles() > 0);
     QVERIFY(cut != whole);
     QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, view->rect().center());
@@ -487,27 +521,27 @@ class MainWindowTest : public QObject {
                      Qt::ControlModifier);
     QApplication::sendEvent(view, &move);
     QTest::mouseRelease(view, Qt::LeftButton, Qt::ControlModifier, view->rect().center() + QPoint(0, 30));
-    QVERIFY(view->grabFramebuffer() != cut);
+    QVERIFY(settled(view) != cut);
     window_->findChild<QAction*>("clip:-1")->trigger();
     QVERIFY(view->scene().volume().clipPlanes.empty());
-    QCOMPARE(view->grabFramebuffer(), whole);
+    QCOMPARE(settled(view), whole);
     QCOMPARE(view->scene().sectionTriangles(), std::size_t(0));
   }
 
   void theDeformedShapeIsDrawnAndProbed() {
     Viewport* view = window_->viewport();
     view->setStandardView(StandardView::PlusY);
-    const QImage straight = view->grabFramebuffer();
+    const QImage straight = settled(view);
     auto* deform = window_->findChild<QAction*>("deformAction");
     QVERIFY(deform);
     deform->setChecked(true);
     QVERIFY(view->scene().deformation().shown);
     QVERIFY(view->scene().deformationScale() > 0.0);
-    QVERIFY(view->grabFramebuffer() != straight);
+    QVERIFY(settled(view) != straight);
     QVERIFY(window_->statusBar()->currentMessage().contains("deformed coordinates"));
     deform->setChecked(false);
     QCOMPARE(view->scene().session(), view->scene().baseSession());
-    QCOMPARE(view->grabFramebuffer(), straight);
+    QCOMPARE(settled(view), straight);
   }
 
   void plotOverLineChartsTheShownQuantity() {

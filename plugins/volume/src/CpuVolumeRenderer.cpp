@@ -6,6 +6,10 @@
 
 #include <volpost/render/ShaderLibrary.hpp>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -20,24 +24,31 @@ void CpuVolumeRenderer::initialize() {
   meshUploads_ = valueUploads_ = 0;
 }
 
+CpuVolumeRenderer::~CpuVolumeRenderer() { cancelJob(); }
+
 void CpuVolumeRenderer::release() {
+  cancelJob();
+  shownKey_ = {};
   texture_.reset();
+  uploaded_ = false;
   composite_.reset();
   quad_.reset();
   textureWidth_ = textureHeight_ = 0;
 }
 
 void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
-  walkMesh_ = std::make_unique<TetWalkMesh>(mesh, location, values);  // throws before anything changes
+  walkMesh_ = std::make_shared<const TetWalkMesh>(mesh, location, values);  // throws before anything changes
   mesh_ = &mesh;
   location_ = location;
   ++meshUploads_;
+  ++revision_;
 }
 
 void CpuVolumeRenderer::setValues(std::span<const double> values) {
   if (!mesh_) throw std::logic_error("CpuVolumeRenderer::setValues before setVolume");
-  walkMesh_ = std::make_unique<TetWalkMesh>(*mesh_, location_, values);
+  walkMesh_ = std::make_shared<const TetWalkMesh>(*mesh_, location_, values);
   ++valueUploads_;
+  ++revision_;
 }
 
 void CpuVolumeRenderer::setClipPlanes(const std::vector<ClipPlane>& planes) {
@@ -45,6 +56,7 @@ void CpuVolumeRenderer::setClipPlanes(const std::vector<ClipPlane>& planes) {
     throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
                                 std::to_string(kMaxClipPlanes));
   settings_.clipPlanes = planes;
+  ++revision_;
 }
 
 void CpuVolumeRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
@@ -55,36 +67,120 @@ void CpuVolumeRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& su
     if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
       throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
   settings_.isoSurfaces = surfaces;
+  ++revision_;
 }
 
 void CpuVolumeRenderer::setTerminationThreshold(double transmittance) {
   if (!(transmittance >= 0.0 && transmittance < 1.0))
     throw std::invalid_argument("the early-termination transmittance must lie in [0, 1), not " + std::to_string(transmittance));
+  if (settings_.terminationTransmittance != transmittance) ++revision_;
   settings_.terminationTransmittance = transmittance;
+}
+
+void CpuVolumeRenderer::setAsynchronousUpdates(bool on) {
+  if (!on) cancelJob();
+  asynchronous_ = on;
+}
+
+void CpuVolumeRenderer::cancelJob() {
+  if (!job_.valid()) return;
+  *jobCancelled_ = true;
+  try {
+    job_.get();  // it stops at its next tile
+  } catch (...) {  // Cancelled, or a failure nobody waits for any more
+  }
+}
+
+int CpuVolumeRenderer::reductionFor(int width, int height) const {
+  if (msPerRay_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
+  const double fullMs = msPerRay_ * double(width) * double(height);
+  return std::clamp(int(std::ceil(std::sqrt(fullMs / quickFrameMs_))), 1, 16);
 }
 
 void CpuVolumeRenderer::render(const RenderContext& ctx) {
   if (!walkMesh_ || ctx.width <= 0 || ctx.height <= 0) return;
-  settings_.sceneDepth.clear();
+  FrameKey key;
+  key.viewProjection = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix();
+  key.width = ctx.width;
+  key.height = ctx.height;
+  key.revision = revision_;
   if (ctx.depthTexture) {  // rays end at the opaque geometry already drawn
-    settings_.sceneDepth.resize(std::size_t(ctx.width) * std::size_t(ctx.height));
-    glGetTextureImage(ctx.depthTexture, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                      GLsizei(settings_.sceneDepth.size() * sizeof(float)), settings_.sceneDepth.data());
+    key.depth.resize(std::size_t(ctx.width) * std::size_t(ctx.height));
+    glGetTextureImage(ctx.depthTexture, 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(key.depth.size() * sizeof(float)),
+                      key.depth.data());
   }
-  image_ = renderCpu(*walkMesh_, tf_, ctx.camera, ctx.width, ctx.height, settings_, {}, threads_);
-  if (!texture_ || textureWidth_ != ctx.width || textureHeight_ != ctx.height) {
+  const auto measured = [this](const CpuImage& frame) {
+    uploaded_ = false;  // a new image
+    const double rays = double(frame.width) * double(frame.height);
+    if (rays > 0.0) msPerRay_ = (frame.stats.entryMs + frame.stats.walkMs) / rays;
+  };
+  CpuRaySettings settings = settings_;
+  settings.sceneDepth = key.depth;
+  if (!asynchronous_) {
+    image_ = renderCpu(*walkMesh_, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+    measured(image_);
+    shownKey_ = key;
+    shownReduction_ = 1;
+    show(ctx);
+    return;
+  }
+  if (job_.valid() && jobKey_ == key) {  // the full frame of this very view is on its way
+    if (job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+      image_ = job_.get();  // a failure surfaces here, in the GUI thread
+      measured(image_);
+      shownKey_ = key;
+      shownReduction_ = 1;
+    }
+    show(ctx);
+    return;
+  }
+  if (!(shownKey_ == key && shownReduction_ == 1)) {
+    cancelJob();
+    const int reduction = reductionFor(ctx.width, ctx.height);
+    if (reduction == 1) {
+      image_ = renderCpu(*walkMesh_, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+      measured(image_);
+    } else {
+      // A quick frame now (same camera, fewer rays), the full one on worker threads.
+      const int w = std::max(1, ctx.width / reduction), h = std::max(1, ctx.height / reduction);
+      CpuRaySettings quick = settings;
+      quick.sceneDepth.clear();  // one depth per full-size pixel: not for the reduced rays
+      image_ = renderCpu(*walkMesh_, tf_, ctx.camera, w, h, quick, {}, threads_);
+      measured(image_);
+      jobCancelled_ = std::make_shared<std::atomic<bool>>(false);
+      jobKey_ = key;
+      job_ = std::async(std::launch::async, [mesh = walkMesh_, tf = tf_, camera = ctx.camera, width = ctx.width,
+                                             height = ctx.height, settings, threads = threads_, cancelled = jobCancelled_] {
+        return renderCpu(*mesh, tf, camera, width, height, settings,
+                         Progress([cancelled](double, const std::string&) { return !*cancelled; }), threads);
+      });
+    }
+    shownKey_ = key;
+    shownReduction_ = reduction;
+  }
+  show(ctx);
+}
+
+void CpuVolumeRenderer::show(const RenderContext& ctx) {
+  if (image_.width <= 0 || image_.height <= 0) return;
+  if (!texture_ || textureWidth_ != image_.width || textureHeight_ != image_.height) {
     texture_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture_.id(), 1, GL_RGBA32F, ctx.width, ctx.height);
+    glTextureStorage2D(texture_.id(), 1, GL_RGBA32F, image_.width, image_.height);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    textureWidth_ = ctx.width;
-    textureHeight_ = ctx.height;
+    textureWidth_ = image_.width;
+    textureHeight_ = image_.height;
+    uploaded_ = false;
   }
-  glTextureSubImage2D(texture_.id(), 0, 0, 0, ctx.width, ctx.height, GL_RGBA, GL_FLOAT, image_.rgba.data());
+  if (!uploaded_)
+    glTextureSubImage2D(texture_.id(), 0, 0, 0, image_.width, image_.height, GL_RGBA, GL_FLOAT, image_.rgba.data());
+  uploaded_ = true;
   // Blended over the target as the GPU renderers do (the image's first row is the top).
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
   glViewport(0, 0, ctx.width, ctx.height);
   glUseProgram(composite_.id());
+  glProgramUniform2f(composite_.id(), glGetUniformLocation(composite_.id(), "viewportSize"), float(ctx.width),
+                     float(ctx.height));
   glBindTextureUnit(binding::kImage, texture_.id());
   glBindVertexArray(quad_.id());
   glDisable(GL_DEPTH_TEST);

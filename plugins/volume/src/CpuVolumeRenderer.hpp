@@ -4,6 +4,11 @@
 // frame computed on all cores and blended over the target like theirs. For machines whose
 // OpenGL is a software rasterizer, where it is several times faster than the GPU renderers
 // and exact.
+//
+// With asynchronous updates (the window), a frame never blocks for long: when the view or
+// the scene changes, a quick frame at reduced resolution (sized from the measured cost per
+// ray to take ~40 ms) is drawn at once, and the full frame is computed on worker threads
+// and shown when done (hasPendingWork() says to draw again); a newer change cancels it.
 #pragma once
 
 #include "CpuRayCaster.hpp"
@@ -11,6 +16,8 @@
 #include <volpost/render/GlObjects.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
+#include <atomic>
+#include <future>
 #include <memory>
 #include <optional>
 
@@ -25,7 +32,10 @@ class CpuVolumeRenderer : public VolumeRenderer {
 
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
   void setValues(std::span<const double> values) override;
-  void setTransferFunction(const TransferFunction& tf) override { tf_ = tf; }
+  void setTransferFunction(const TransferFunction& tf) override {
+    tf_ = tf;
+    ++revision_;
+  }
   void setClipPlanes(const std::vector<ClipPlane>& planes) override;
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) override;
   /// The CPU ray caster always integrates exactly: every mode gives the exact image.
@@ -34,16 +44,44 @@ class CpuVolumeRenderer : public VolumeRenderer {
   void setTerminationThreshold(double transmittance) override;
   VolumeStats stats() const override;
   std::vector<float> readImage() const override { return image_.rgba; }
+  void setAsynchronousUpdates(bool on) override;
+  bool hasPendingWork() const override { return job_.valid(); }
 
   /// The last frame's counts and times (rays, tets crossed, early stops and their error bound).
   const CpuRenderStats& lastFrame() const { return image_.stats; }
+  /// The shown image's reduction (1: full resolution; n: one ray per n x n pixels).
+  int shownReduction() const { return shownReduction_; }
   /// Threads for the frames (0: all cores).
   void setThreads(int threads) { threads_ = threads; }
+  /// What a quick frame may take while the full one is computed (asynchronous updates).
+  void setQuickFrameBudget(double ms) { quickFrameMs_ = ms; }
+  ~CpuVolumeRenderer() override;
 
  private:
+  // What a frame depends on besides the state setters (their revision).
+  struct FrameKey {
+    glm::dmat4 viewProjection{0.0};
+    int width = 0, height = 0;
+    std::uint64_t revision = 0;
+    std::vector<float> depth;
+    bool operator==(const FrameKey&) const = default;
+  };
+  void show(const RenderContext& ctx);  ///< uploads image_ and blends it over the target
+  void cancelJob();
+  int reductionFor(int width, int height) const;
+
   const Mesh* mesh_ = nullptr;
   FieldLocation location_ = FieldLocation::Node;
-  std::unique_ptr<TetWalkMesh> walkMesh_;
+  std::shared_ptr<const TetWalkMesh> walkMesh_;
+  std::uint64_t revision_ = 0;
+  bool asynchronous_ = false;
+  double quickFrameMs_ = 40.0;
+  double msPerRay_ = 0.0;  ///< measured, for sizing quick frames
+  FrameKey shownKey_;
+  int shownReduction_ = 1;
+  std::future<CpuImage> job_;
+  FrameKey jobKey_;
+  std::shared_ptr<std::atomic<bool>> jobCancelled_;
   TransferFunction tf_;
   CpuRaySettings settings_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
@@ -53,6 +91,7 @@ class CpuVolumeRenderer : public VolumeRenderer {
   gl::Program composite_;
   gl::VertexArray quad_;
   int textureWidth_ = 0, textureHeight_ = 0;
+  bool uploaded_ = false;  ///< image_ is in texture_
   std::size_t meshUploads_ = 0, valueUploads_ = 0;
 };
 

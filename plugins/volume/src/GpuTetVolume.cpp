@@ -330,6 +330,8 @@ void GpuTetVolume::compositeOver(const RenderContext& ctx) const {
   glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
   glViewport(0, 0, ctx.width, ctx.height);
   glUseProgram(compositeProgram_.id());
+  glProgramUniform2f(compositeProgram_.id(), glGetUniformLocation(compositeProgram_.id(), "viewportSize"), float(ctx.width),
+                     float(ctx.height));
   glBindTextureUnit(binding::kImage, image_.id());
   glBindVertexArray(quad_.id());
   glDisable(GL_DEPTH_TEST);

@@ -23,4 +23,10 @@ std::string describeContext() {
   return "OpenGL " + str(GL_VERSION) + ", " + str(GL_RENDERER);
 }
 
+bool isSoftwareRasterizer(const std::string& description) {
+  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader", "GDI Generic", "Software Rasterizer"})
+    if (description.find(name) != std::string::npos) return true;
+  return false;
+}
+
 }  // namespace volpost::gl

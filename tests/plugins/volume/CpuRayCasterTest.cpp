@@ -239,6 +239,33 @@ TEST_F(CpuRayCast, TransparentRangesAreSkippedWithoutChangingThePicture) {
   EXPECT_LT(skipped.stats.steps, dense.stats.steps / 2);
 }
 
+TEST_F(CpuRayCast, TheWindowGetsAQuickFrameAtOnceAndTheFullOneWhenReady) {
+  const Mesh grid = test::tetGrid(5, 5, 5);
+  auto& cpu = static_cast<volume::CpuVolumeRenderer&>(*caster_);
+  cpu.setVolume(grid, FieldLocation::Node, field(grid));
+  cpu.setTransferFunction(kTf);
+  cpu.setTerminationThreshold(0.0);
+  const Camera camera = isoCamera(grid);
+  const auto full = gpuImage(camera, 96, 96);  // synchronous: the command line's way
+  ASSERT_EQ(cpu.shownReduction(), 1);
+  cpu.setAsynchronousUpdates(true);
+  cpu.setQuickFrameBudget(1e-6);  // every full frame is "too slow": a quick one first
+  Camera moved = camera;
+  moved.orbit(30.0, 0.0);
+  (void)gpuImage(moved, 96, 96);
+  EXPECT_GT(cpu.shownReduction(), 1);
+  EXPECT_TRUE(cpu.hasPendingWork());
+  Camera back = camera;  // a newer view cancels the full frame of the previous one
+  (void)gpuImage(back, 96, 96);
+  for (int i = 0; i < 2000 && cpu.hasPendingWork(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    (void)gpuImage(back, 96, 96);
+  }
+  ASSERT_FALSE(cpu.hasPendingWork());
+  EXPECT_EQ(cpu.shownReduction(), 1);
+  EXPECT_EQ(gpuImage(back, 96, 96), full) << "the refined frame is the synchronous one";
+}
+
 TEST_F(CpuRayCast, TheEyeInsideTheMeshSeesFromTheNearPlaneOn) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   Camera camera;

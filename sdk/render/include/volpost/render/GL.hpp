@@ -16,4 +16,9 @@ void check(const char* where);
 /// "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)"
 std::string describeContext();
 
+/// Whether a context description (describeContext()) names a software rasterizer (Mesa's
+/// llvmpipe or softpipe, SwiftShader, Windows' GDI Generic): there the CPU ray caster is
+/// the faster volume renderer.
+bool isSoftwareRasterizer(const std::string& description);
+
 }  // namespace volpost::gl
