@@ -46,6 +46,7 @@ for f in "${files[@]}"; do
     check render "$f" --field "$q" --size 32x24 -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --renderer reference -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --renderer raycast -o "$out/r.png"
+    check render "$f" --field "$q" --size 32x24 --renderer cpu --clip 0,0,0,1,0,0 --iso 0 -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --clip 0,0,0,1,0,0 --iso 0 --deform "${q%%.*}" -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --all-steps -o "$out/a.png"
     check plot "$f" --field "$q" --from 0,0,0 --to 1,1,1 --samples 20 --csv "$out/p.csv" -o "$out/p.png"

@@ -103,6 +103,43 @@ TEST(RenderCommand, ReferenceRendererExplainsWhatItCannotDo) {
   EXPECT_NE(badTf.output.find("not a volpost transfer function"), std::string::npos) << badTf.output;
 }
 
+namespace {
+// The float32 values of a .npy file (version 1 header).
+std::vector<float> readNpyFloats(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (bytes.size() < 10) return {};
+  const std::size_t header = 10 + std::size_t(std::uint8_t(bytes[8])) + 256 * std::size_t(std::uint8_t(bytes[9]));
+  std::vector<float> values((bytes.size() - header) / 4);
+  std::memcpy(values.data(), bytes.data() + header, values.size() * 4);
+  return values;
+}
+}  // namespace
+
+TEST(RenderCommand, CpuRayCasterMatchesTheReferenceAndRefusesGpuOptions) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string png = (dir / "volpost_cpu.png").string(), cpuNpy = (dir / "volpost_cpu.npy").string(),
+                    refNpy = (dir / "volpost_cpu_ref.npy").string();
+  const std::string common = "render " + dataFile("bar/bar_tet4.vtu") + " --field S.mises --size 64x48 --clip 5,0,0,-1,0,0 -o " + png;
+  const auto cpu = runVolpost(common + " --renderer cpu --termination 0 --float " + cpuNpy);
+  ASSERT_EQ(cpu.exitCode, 0) << cpu.output;
+  EXPECT_EQ(QImage(QString::fromStdString(png)).size(), QSize(64, 48));
+  const auto ref = runVolpost(common + " --renderer reference --float " + refNpy);
+  ASSERT_EQ(ref.exitCode, 0) << ref.output;
+  const std::vector<float> a = readNpyFloats(cpuNpy), b = readNpyFloats(refNpy);
+  ASSERT_EQ(a.size(), 64u * 48u * 4u);
+  ASSERT_EQ(a.size(), b.size());
+  float worst = 0.0f, alpha = 0.0f;
+  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+  for (std::size_t i = 3; i < a.size(); i += 4) alpha = std::max(alpha, a[i]);
+  EXPECT_GT(alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(worst, 1e-4f) << "the CPU ray caster is exact up to float";
+  const auto mode = runVolpost(common + " --renderer cpu --mode sampling");
+  EXPECT_EQ(mode.exitCode, 2);
+  EXPECT_NE(mode.output.find("integrates exactly"), std::string::npos) << mode.output;
+  EXPECT_EQ(runVolpost(common + " --renderer cpu --sampling-step 0.1").exitCode, 2);
+}
+
 TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
   const std::string png = (std::filesystem::temp_directory_path() / "volpost_raycast.png").string();
   std::filesystem::remove(png);
