@@ -54,6 +54,7 @@ for f in "${files[@]}"; do
 done
 for tf in tests/data/hostile/*.json; do
   check render tests/data/hostile/seed.vtu --field T --renderer raycast --tf "$tf" --size 32x24 -o "$out/t.png"
+  check render tests/data/hostile/seed.vtu --field T --renderer cpu --tf "$tf" --size 32x24 -o "$out/t.png"
 done
 echo "sanitizers: ${#files[@]} files through every verb, $failures failure(s)"
 [ "$failures" -eq 0 ]
