@@ -228,8 +228,7 @@ optics::SegmentLight segmentLight(const Shared& sh, double sFront, double sBack,
   const double offset = sh.mesh.valueOffset();
   const double a = sFront + offset, b = sBack + offset;
   if (sh.settings.isoSurfaces.empty() || sFront == sBack) {
-    if (sh.tf.transparent(a, b)) return {};
-    return sh.tf.integrate(a, b, length);
+    return sh.tf.integrate(a, b, length);  // nothing to do where the range is transparent
   }
   double hits[16];
   const optics::IsoSurface* surfaces[16];
@@ -238,7 +237,7 @@ optics::SegmentLight segmentLight(const Shared& sh, double sFront, double sBack,
     const bool crossed = b > a ? (s.value > a && s.value <= b) : (s.value < a && s.value >= b);
     if (crossed && n < 16) hits[n] = (s.value - a) / (b - a), surfaces[n++] = &s;
   }
-  if (n == 0) return sh.tf.transparent(a, b) ? optics::SegmentLight{} : sh.tf.integrate(a, b, length);
+  if (n == 0) return sh.tf.integrate(a, b, length);
   for (int i = 1; i < n; ++i)  // few surfaces: insertion sort by position
     for (int j = i; j > 0 && hits[j] < hits[j - 1]; --j) std::swap(hits[j], hits[j - 1]), std::swap(surfaces[j], surfaces[j - 1]);
   const glm::dvec3 g = tetGradient(sh.mesh, tet);

@@ -49,6 +49,8 @@ double thinPsi(double a, double d) {
   const double depth = a + d;
   if (depth <= 0.01) return series<3>(a, d);  // 4e-10
   if (depth <= 0.1) return series<5>(a, d);   // 1.4e-9
+  if (depth <= 0.2) return series<6>(a, d);   // 2.5e-9
+  if (depth <= 0.35) return series<7>(a, d);  // 5.6e-9
   return series<kOrder>(a, d);                // 5.4e-9 at 0.5
 }
 
@@ -120,6 +122,8 @@ optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack,
   glm::dvec3 c0, c1;
   double t0, t1;
   int piece = pieceOf(sFront);
+  // Transparent over the whole range (zero extinction): nothing emitted, nothing absorbed.
+  if (std::max(sFront, sBack) <= zeroUntil_[std::size_t(pieceOf(std::min(sFront, sBack)) + 1)]) return total;
   if (sFront == sBack) {
     at(piece, sFront, c0, t0);
     return t0 > 0.0 ? optics::constantSegment(c0, t0, length) : total;

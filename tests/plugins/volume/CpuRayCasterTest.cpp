@@ -12,6 +12,9 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include <filesystem>
 #include <random>
 
 using namespace volpost;
@@ -297,6 +300,22 @@ TEST(CpuRayCastWatertight, EveryRayOfACurvedThinShellIsKept) {
     p = {r * std::cos(a), r * std::sin(a), 0.2 * p.y};
   }
   EXPECT_LE(worstAlphaError(shell, "curved thin shell"), 1e-3);
+}
+
+TEST(CpuRayCastWatertight, NoRayIsLostOnTheCorpusMeshes) {
+  // Every tetrahedralized corpus mesh (the bundled bar, and the shared meshes when present),
+  // constant field: no pixel may differ from the exact path length's alpha.
+  std::vector<std::string> files = {std::string(VOLPOST_TEST_DATA) + "/bar/bar_tet4.vtu"};
+  for (const char* shared : {"bar/hex8/bar_hex8.vtu", "bar/tet10/bar_tet10.vtu", "bar/wedge6/bar_wedge6.vtu",
+                             "wheel/tet4/wheel_tet4.vtu", "wheel/mixed/wheel_mixed.vtu", "bracket/tet10/bracket_tet10.frd",
+                             "post/coarse/post_coarse.vtu", "post/fine/post_fine.vtu"})
+    if (const std::string path = test::sharedFile(shared); !path.empty()) files.push_back(path);
+    else std::printf("not run on %s: ../shared/data is absent\n", shared);
+  for (const std::string& file : files) {
+    const auto model = test::meshioReaders().load(file);
+    const Mesh tets = tetrahedralize(model->mesh).mesh;
+    EXPECT_LE(worstAlphaError(tets, std::filesystem::path(file).filename().c_str()), 1e-4) << file;
+  }
 }
 
 TEST(CpuRayCastIntegration, ThinPieceSeriesMatchesTheExactPsi) {
