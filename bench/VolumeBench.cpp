@@ -15,6 +15,7 @@
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 #include "CpuRayCaster.hpp"
+#include "CpuVolumeRenderer.hpp"
 #include "core/FloatImageFile.hpp"
 #include "host/VtuWriter.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
@@ -177,7 +178,8 @@ int main(int argc, char** argv) {
   const char* only = nullptr;  // --mesh SUBSTRING: just the meshes whose name contains it
   const char* errorImages = nullptr;
   const char* exportDir = nullptr;
-  bool cpuOnly = false;  // --cpu-only: leave out the GPU renderers  // --export DIR: each case's mesh, TF, camera and reference for other programs
+  bool cpuOnly = false;  // --cpu-only: leave out the GPU renderers
+  bool interactive = false;  // --interactive: the window's quick frames while the view turns  // --export DIR: each case's mesh, TF, camera and reference for other programs
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
@@ -187,12 +189,13 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--error-images") && i + 1 < argc) errorImages = argv[++i];
     else if (!std::strcmp(argv[i], "--export") && i + 1 < argc) exportDir = argv[++i];
     else if (!std::strcmp(argv[i], "--cpu-only")) cpuOnly = true;
+    else if (!std::strcmp(argv[i], "--interactive")) interactive = true;
     else {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::fprintf(help ? stdout : stderr,
                    "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
                    "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
-                   "                            [--error-images DIR] [--export DIR] [--cpu-only]\n"
+                   "                            [--error-images DIR] [--export DIR] [--cpu-only] [--interactive]\n"
                    "  --size N            image N x N (default 512)\n"
                    "  --frames N          frames along the orbit (default 5)\n"
                    "  --csv FILE          also write mesh, mode, median ms, RMSE, max error (for the plot)\n"
@@ -201,7 +204,10 @@ int main(int argc, char** argv) {
                    "  --error-images DIR  one PGM per row: where the renderer is off (white = 0.05 or more)\n"
                    "  --export DIR        each case's mesh (.vtu), transfer function, camera and reference image\n"
                    "                      (.npy), for docs/scripts/vtk_side_by_side.py\n"
-                   "  --cpu-only          the reference and the CPU ray caster only (no GPU renderer)\n",
+                   "  --cpu-only          the reference and the CPU ray caster only (no GPU renderer)\n"
+                   "  --interactive       also the CPU renderer as the window drives it: 1024x768, the view\n"
+                   "                      turning 5 degrees per frame, quick frames while the full one is\n"
+                   "                      computed and cancelled (frames per second, rays per pixel)\n",
                    help ? "" : ("unknown argument '" + std::string(argv[i]) + "'\n").c_str());
       return help ? 0 : 2;
     }
@@ -268,6 +274,38 @@ int main(int argc, char** argv) {
         std::fflush(stdout);
         if (csv) std::fprintf(csv, "%s,cpu stop %g,%.3f,%.6g,%.6g\n", c.name.c_str(), stopAt, median, rmse, worst);
       }
+    }
+    if (interactive) {
+      // As in the window: every frame a new view, so a quick frame is drawn and the full one
+      // started (and cancelled by the next frame). What the user sees: frames per second.
+      volume::CpuVolumeRenderer cpu;
+      cpu.initialize();
+      cpu.setVolume(c.mesh, c.location, c.values);
+      cpu.setTransferFunction(tf);
+      cpu.setAsynchronousUpdates(true);
+      OffscreenTarget window(1024, 768);
+      RenderContext ctx;
+      ctx.width = 1024;
+      ctx.height = 768;
+      ctx.framebuffer = window.framebuffer();
+      ctx.camera = camera;
+      std::vector<double> times;
+      int reduction = 1;
+      for (int f = 0; f < 40; ++f) {
+        ctx.camera.orbit(5.0, 0.0);
+        const auto t0 = Clock::now();
+        cpu.render(ctx);
+        glFinish();
+        times.push_back(msSince(t0));
+        reduction = cpu.shownReduction();
+      }
+      cpu.release();
+      std::sort(times.begin() + 5, times.end());  // the first frames measure the cost per ray
+      const double median = times[5 + (times.size() - 5) / 2];
+      std::printf("| %s | %zu | cpu, window 1024x768 turning: quick frames (1 ray per %dx%d pixels) | %.0f / %.0f / %.0f | - | "
+                  "%.1f frames/s | - | - | - | - |\n", c.name.c_str(), c.mesh.cellCount(), reduction, reduction, times[5], median,
+                  times.back(), 1000.0 / median);
+      std::fflush(stdout);
     }
     if (cpuOnly) continue;
     // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the

@@ -20,6 +20,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -355,9 +356,34 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
   }
 }
 
-std::vector<PixelRay> pixelRays(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
-                                const std::vector<float>& sceneDepth, unsigned threads) {
-  std::vector<PixelRay> rays(std::size_t(width) * std::size_t(height));
+// Asks progress whether to go on (the calling thread's worker does); on cancellation the
+// other workers see `stop` at their next item.
+void stopIfCancelled(const Progress& progress, std::atomic<bool>& stop) {
+  try {
+    progress.report(0.0);
+  } catch (...) {
+    stop = true;
+    throw;
+  }
+}
+
+// One ray per pixel, left uninitialized until the workers fill them (a frame's tens of MB
+// are not zeroed first, and each page is first touched by the thread that fills it).
+class PixelRays {
+ public:
+  explicit PixelRays(std::size_t count) : rays_(new PixelRay[count]), count_(count) {}
+  std::size_t size() const { return count_; }
+  PixelRay& operator[](std::size_t i) { return rays_[i]; }
+  const PixelRay& operator[](std::size_t i) const { return rays_[i]; }
+
+ private:
+  std::unique_ptr<PixelRay[]> rays_;
+  std::size_t count_;
+};
+
+PixelRays pixelRays(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
+                                const std::vector<float>& sceneDepth, unsigned threads, const Progress& progress) {
+  PixelRays rays(std::size_t(width) * std::size_t(height));
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;
   const auto unproject = [&](double x, double y, double z) {
@@ -365,8 +391,10 @@ std::vector<PixelRay> pixelRays(const TetWalkMesh& mesh, const Camera& camera, i
     return glm::dvec3(p) / p.w;
   };
   std::atomic<int> nextRow{0};
-  runOnThreads(threads, [&](unsigned) {
-  for (int y; (y = nextRow++) < height;)
+  std::atomic<bool> stop{false};
+  runOnThreads(threads, [&](unsigned worker) {
+  for (int y; !stop && (y = nextRow++) < height;) {
+    if (worker == 0 && y % 16 == 0) stopIfCancelled(progress, stop);  // a cancelled frame stops here too
     for (int x = 0; x < width; ++x) {
       const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
       const glm::dvec3 nearPoint = unproject(nx, ny, -1.0), farPoint = unproject(nx, ny, 1.0);
@@ -391,6 +419,7 @@ std::vector<PixelRay> pixelRays(const TetWalkMesh& mesh, const Camera& camera, i
       }
       r.tEnd = float(end - shift);
     }
+  }
   });
   return rays;
 }
@@ -403,7 +432,7 @@ struct Entries {
 };
 
 Entries findEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& faces, const Camera& camera, int width,
-                    int height, const std::vector<PixelRay>& rays, unsigned threads) {
+                    int height, const PixelRays& rays, unsigned threads, const Progress& progress) {
   const glm::dmat4 viewProjection = camera.projectionMatrix(double(width) / height) * camera.viewMatrix(mesh.origin());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;
   const glm::dvec3 eye = camera.eye() - mesh.origin();
@@ -416,10 +445,12 @@ Entries findEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& fa
   const bool eyeInside = !ortho && glm::all(glm::greaterThanEqual(eye, boxLo)) && glm::all(glm::lessThanEqual(eye, boxHi));
   std::vector<std::vector<Entry>> perThread(threads);
   std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
   constexpr std::size_t kChunk = 256;
   runOnThreads(threads, [&](unsigned worker) {
     std::vector<Entry>& out = perThread[worker];
-    for (std::size_t first; (first = next.fetch_add(kChunk)) < faces.size();)
+    for (std::size_t first; !stop && (first = next.fetch_add(kChunk)) < faces.size();) {
+      if (worker == 0) stopIfCancelled(progress, stop);  // a cancelled frame stops here too
       for (std::size_t fi = first; fi < std::min(first + kChunk, faces.size()); ++fi) {
         const BoundaryFace& f = faces[fi];
         const glm::dvec3 a = pos[f.v[0]], b = pos[f.v[1]], c = pos[f.v[2]];
@@ -458,6 +489,7 @@ Entries findEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& fa
             out.push_back({pixel, t, std::uint32_t(fi)});
           }
       }
+    }
   });
   std::size_t total = 0;
   for (const auto& v : perThread) total += v.size();
@@ -496,16 +528,38 @@ void clipWindow(const std::vector<ClipPlane>& planes, const glm::dvec3& origin, 
 
 }  // namespace
 
+namespace {
+unsigned threadsFor(int threadCount) {
+  return threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
+}
+}  // namespace
+
+VisiblePart findVisiblePart(const TetWalkMesh& mesh, const TransferFunction& tf,
+                            const std::vector<optics::IsoSurface>& isoSurfaces, int threadCount) {
+  VisiblePart part;
+  part.tets = visibleTets(mesh, PiecewiseIntegrator(tf), isoSurfaces, threadsFor(threadCount));
+  part.faces = mesh.boundaryOf(part.tets);
+  return part;
+}
+
 CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Camera& camera, int width, int height,
                    const CpuRaySettings& settings, const Progress& progress, int threadCount) {
+  return renderCpu(mesh, findVisiblePart(mesh, tf, settings.isoSurfaces, threadCount), tf, camera, width, height, settings,
+                   progress, threadCount);
+}
+
+CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const TransferFunction& tf, const Camera& camera,
+                   int width, int height, const CpuRaySettings& settings, const Progress& progress, int threadCount) {
   CpuImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 4, 0.0f), {}};
-  const unsigned threads = threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = threadsFor(threadCount);
   const auto entryStart = Clock::now();
-  const std::vector<PixelRay> rays = pixelRays(mesh, camera, width, height, settings.sceneDepth, threads);
+  const PixelRays rays = pixelRays(mesh, camera, width, height, settings.sceneDepth, threads, progress);
+  progress.report(0.0);  // a cancelled frame stops between its stages too
   const PiecewiseIntegrator integrator(tf);
-  const std::vector<std::uint8_t> visible = visibleTets(mesh, integrator, settings.isoSurfaces, threads);
-  const std::vector<BoundaryFace> faces = mesh.boundaryOf(visible);
-  const Entries found = findEntries(mesh, faces, camera, width, height, rays, threads);
+  const std::vector<std::uint8_t>& visible = part.tets;
+  const std::vector<BoundaryFace>& faces = part.faces;
+  const Entries found = findEntries(mesh, faces, camera, width, height, rays, threads, progress);
+  progress.report(0.0);
   const std::vector<Entry>& entries = found.list;
   const std::vector<std::uint32_t>& firstEntry = found.first;
   image.stats.entryMs = msSince(entryStart);

@@ -54,10 +54,27 @@ struct CpuImage {
   CpuRenderStats stats;
 };
 
+/// The part of the mesh a transfer function can show: the tets whose values do not all map
+/// to zero extinction or that hold an iso-surface, and that part's boundary faces (where rays
+/// enter and leave it). Rays are walked only there (empty-space skipping). It depends on
+/// the values, the transfer function and the iso-surfaces, not on the view: kept between
+/// frames.
+struct VisiblePart {
+  std::vector<std::uint8_t> tets;   ///< one flag per tet
+  std::vector<BoundaryFace> faces;  ///< listed outward
+};
+VisiblePart findVisiblePart(const TetWalkMesh& mesh, const TransferFunction& tf,
+                            const std::vector<optics::IsoSurface>& isoSurfaces, int threads = 0);
+
 /// Renders the volume as seen by the camera, with the same rays as the other renderers
 /// (through pixel centres, perspective or orthographic). threads = 0: all cores. Throws
 /// Cancelled if progress says so.
 CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Camera& camera, int width, int height,
                    const CpuRaySettings& settings = {}, const Progress& progress = {}, int threads = 0);
+/// The same with the visible part found already (findVisiblePart with the same transfer
+/// function and settings.isoSurfaces).
+CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const TransferFunction& tf, const Camera& camera,
+                   int width, int height, const CpuRaySettings& settings = {}, const Progress& progress = {},
+                   int threads = 0);
 
 }  // namespace volpost::volume

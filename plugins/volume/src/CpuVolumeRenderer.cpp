@@ -42,6 +42,7 @@ void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std:
   location_ = location;
   ++meshUploads_;
   ++revision_;
+  visible_.reset();
 }
 
 void CpuVolumeRenderer::setValues(std::span<const double> values) {
@@ -49,6 +50,7 @@ void CpuVolumeRenderer::setValues(std::span<const double> values) {
   walkMesh_ = std::make_shared<const TetWalkMesh>(*mesh_, location_, values);
   ++valueUploads_;
   ++revision_;
+  visible_.reset();
 }
 
 void CpuVolumeRenderer::setClipPlanes(const std::vector<ClipPlane>& planes) {
@@ -68,6 +70,7 @@ void CpuVolumeRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& su
       throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
   settings_.isoSurfaces = surfaces;
   ++revision_;
+  visible_.reset();
 }
 
 void CpuVolumeRenderer::setTerminationThreshold(double transmittance) {
@@ -89,6 +92,11 @@ void CpuVolumeRenderer::cancelJob() {
     job_.get();  // it stops at its next tile
   } catch (...) {  // Cancelled, or a failure nobody waits for any more
   }
+}
+
+std::shared_ptr<const VisiblePart> CpuVolumeRenderer::visiblePart() {
+  if (!visible_) visible_ = std::make_shared<const VisiblePart>(findVisiblePart(*walkMesh_, tf_, settings_.isoSurfaces, threads_));
+  return visible_;
 }
 
 int CpuVolumeRenderer::reductionFor(int width, int height) const {
@@ -117,7 +125,7 @@ void CpuVolumeRenderer::render(const RenderContext& ctx) {
   CpuRaySettings settings = settings_;
   settings.sceneDepth = key.depth;
   if (!asynchronous_) {
-    image_ = renderCpu(*walkMesh_, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+    image_ = renderCpu(*walkMesh_, *visiblePart(), tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
     measured(image_);
     shownKey_ = key;
     shownReduction_ = 1;
@@ -137,21 +145,22 @@ void CpuVolumeRenderer::render(const RenderContext& ctx) {
   if (!(shownKey_ == key && shownReduction_ == 1)) {
     cancelJob();
     const int reduction = reductionFor(ctx.width, ctx.height);
+    const std::shared_ptr<const VisiblePart> part = visiblePart();
     if (reduction == 1) {
-      image_ = renderCpu(*walkMesh_, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+      image_ = renderCpu(*walkMesh_, *part, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
       measured(image_);
     } else {
       // A quick frame now (same camera, fewer rays), the full one on worker threads.
       const int w = std::max(1, ctx.width / reduction), h = std::max(1, ctx.height / reduction);
       CpuRaySettings quick = settings;
       quick.sceneDepth.clear();  // one depth per full-size pixel: not for the reduced rays
-      image_ = renderCpu(*walkMesh_, tf_, ctx.camera, w, h, quick, {}, threads_);
+      image_ = renderCpu(*walkMesh_, *part, tf_, ctx.camera, w, h, quick, {}, threads_);
       measured(image_);
       jobCancelled_ = std::make_shared<std::atomic<bool>>(false);
       jobKey_ = key;
-      job_ = std::async(std::launch::async, [mesh = walkMesh_, tf = tf_, camera = ctx.camera, width = ctx.width,
+      job_ = std::async(std::launch::async, [mesh = walkMesh_, part, tf = tf_, camera = ctx.camera, width = ctx.width,
                                              height = ctx.height, settings, threads = threads_, cancelled = jobCancelled_] {
-        return renderCpu(*mesh, tf, camera, width, height, settings,
+        return renderCpu(*mesh, *part, tf, camera, width, height, settings,
                          Progress([cancelled](double, const std::string&) { return !*cancelled; }), threads);
       });
     }

@@ -35,6 +35,7 @@ class CpuVolumeRenderer : public VolumeRenderer {
   void setTransferFunction(const TransferFunction& tf) override {
     tf_ = tf;
     ++revision_;
+    visible_.reset();
   }
   void setClipPlanes(const std::vector<ClipPlane>& planes) override;
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) override;
@@ -68,12 +69,14 @@ class CpuVolumeRenderer : public VolumeRenderer {
   };
   void show(const RenderContext& ctx);  ///< uploads image_ and blends it over the target
   void cancelJob();
+  std::shared_ptr<const VisiblePart> visiblePart();  ///< found once per mesh, values, TF and iso-surfaces
   int reductionFor(int width, int height) const;
 
   const Mesh* mesh_ = nullptr;
   FieldLocation location_ = FieldLocation::Node;
   std::shared_ptr<const TetWalkMesh> walkMesh_;
   std::uint64_t revision_ = 0;
+  std::shared_ptr<const VisiblePart> visible_;  ///< reset by what changes it
   bool asynchronous_ = false;
   double quickFrameMs_ = 40.0;
   double msPerRay_ = 0.0;  ///< measured, for sizing quick frames
