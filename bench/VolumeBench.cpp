@@ -11,6 +11,7 @@
 #include "TetVolumeRenderer.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
+#include "AllReaders.hpp"
 
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
@@ -30,6 +31,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <thread>
 #include <tuple>
 
@@ -84,6 +87,26 @@ struct Case {
   std::vector<double> values;
   bool sharpPeak = false;  ///< the transfer function: a narrow opacity peak instead of a ramp
 };
+
+// --model FILE --field NAME [--tf FILE]: any model the readers know, one scalar field (the
+// first step), hexahedra and others tetrahedralized.
+Case modelCase(const std::string& path, const std::string& field) {
+  auto model = meshio::allReadersRegistry().load(path);
+  checkModel(*model);
+  const Field* f = model->findField(field);
+  if (!f) throw std::runtime_error(path + " has no field '" + field + "'");
+  if (f->components() != 1) throw std::runtime_error("'" + field + "' has " + std::to_string(f->components()) +
+                                                     " components: choose a scalar field");
+  const TetMesh tets = tetrahedralize(model->mesh);
+  return {std::filesystem::path(path).stem().string(), tets.mesh, f->location(),
+          f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh, f->values(0)) : tets.cellValues(f->values(0))};
+}
+
+bool parseVec3(const char* text, glm::dvec3& v) {
+  char tail = 0;
+  return std::sscanf(text, "%lf,%lf,%lf%c", &v.x, &v.y, &v.z, &tail) == 3 && std::isfinite(v.x) && std::isfinite(v.y) &&
+         std::isfinite(v.z);
+}
 
 std::vector<Case> cases(bool quick) {
   std::vector<Case> out;
@@ -179,7 +202,12 @@ int main(int argc, char** argv) {
   const char* errorImages = nullptr;
   const char* exportDir = nullptr;
   bool cpuOnly = false;  // --cpu-only: leave out the GPU renderers
-  bool interactive = false;  // --interactive: the window's quick frames while the view turns  // --export DIR: each case's mesh, TF, camera and reference for other programs
+  bool interactive = false;  // --interactive: the window's quick frames while the view turns
+  const char* modelPath = nullptr;  // --model FILE --field NAME: that model instead of the built-in cases
+  const char* fieldName = nullptr;
+  const char* tfPath = nullptr;     // --tf FILE: a volpost transfer function instead of the bench's
+  std::optional<glm::dvec3> eye, lookAt, up;  // --eye/--target/--up X,Y,Z: an explicit camera
+  double viewAngle = 0.0;  // --export DIR: each case's mesh, TF, camera and reference for other programs
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
@@ -190,12 +218,28 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--export") && i + 1 < argc) exportDir = argv[++i];
     else if (!std::strcmp(argv[i], "--cpu-only")) cpuOnly = true;
     else if (!std::strcmp(argv[i], "--interactive")) interactive = true;
+    else if (!std::strcmp(argv[i], "--model") && i + 1 < argc) modelPath = argv[++i];
+    else if (!std::strcmp(argv[i], "--field") && i + 1 < argc) fieldName = argv[++i];
+    else if (!std::strcmp(argv[i], "--tf") && i + 1 < argc) tfPath = argv[++i];
+    else if (!std::strcmp(argv[i], "--view-angle") && i + 1 < argc) viewAngle = std::atof(argv[++i]);
+    else if ((!std::strcmp(argv[i], "--eye") || !std::strcmp(argv[i], "--target") || !std::strcmp(argv[i], "--up")) &&
+             i + 1 < argc) {
+      glm::dvec3 v;
+      if (!parseVec3(argv[i + 1], v)) {
+        std::fprintf(stderr, "volpost_volume_bench: %s wants X,Y,Z (finite numbers), not '%s'\n", argv[i], argv[i + 1]);
+        return 2;
+      }
+      (!std::strcmp(argv[i], "--eye") ? eye : !std::strcmp(argv[i], "--target") ? lookAt : up) = v;
+      ++i;
+    }
     else {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::fprintf(help ? stdout : stderr,
                    "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
                    "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
                    "                            [--error-images DIR] [--export DIR] [--cpu-only] [--interactive]\n"
+                   "                            [--model FILE --field NAME] [--tf FILE]\n"
+                   "                            [--eye X,Y,Z --target X,Y,Z [--up X,Y,Z] [--view-angle DEG]]\n"
                    "  --size N            image N x N (default 512)\n"
                    "  --frames N          frames along the orbit (default 5)\n"
                    "  --csv FILE          also write mesh, mode, median ms, RMSE, max error (for the plot)\n"
@@ -205,12 +249,37 @@ int main(int argc, char** argv) {
                    "  --export DIR        each case's mesh (.vtu), transfer function, camera and reference image\n"
                    "                      (.npy), for docs/scripts/vtk_side_by_side.py\n"
                    "  --cpu-only          the reference and the CPU ray caster only (no GPU renderer)\n"
+                   "  --model FILE        this model instead of the built-in cases (any format volpost reads),\n"
+                   "  --field NAME        with this scalar field (first step)\n"
+                   "  --tf FILE           this transfer function (volpost TF JSON) instead of the bench's\n"
+                   "  --eye, --target, --up, --view-angle   an explicit camera instead of the isometric fit\n"
                    "  --interactive       also the CPU renderer as the window drives it: 1024x768, the view\n"
                    "                      turning 5 degrees per frame, quick frames while the full one is\n"
                    "                      computed and cancelled (frames per second, rays per pixel)\n",
                    help ? "" : ("unknown argument '" + std::string(argv[i]) + "'\n").c_str());
       return help ? 0 : 2;
     }
+  }
+  if (bool(modelPath) != bool(fieldName)) {
+    std::fprintf(stderr, "volpost_volume_bench: --model and --field go together\n");
+    return 2;
+  }
+  if (bool(eye) != bool(lookAt) || viewAngle < 0.0 || viewAngle >= 180.0) {
+    std::fprintf(stderr, "volpost_volume_bench: an explicit camera needs --eye and --target (and a view angle in (0, 180))\n");
+    return 2;
+  }
+  std::optional<TransferFunction> fileTf;
+  std::vector<Case> chosen;
+  try {
+    if (tfPath) {
+      std::ifstream in(tfPath);
+      if (!in) throw std::runtime_error(std::string("cannot open ") + tfPath);
+      fileTf = TransferFunction::fromJson(std::string(std::istreambuf_iterator<char>(in), {}));
+    }
+    if (modelPath) chosen.push_back(modelCase(modelPath, fieldName));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "volpost_volume_bench: %s\n", e.what());
+    return 1;
   }
   if (size < 8 || size > 8192 || frames < 1) {
     std::fprintf(stderr, "volpost_volume_bench: --size must lie in 8..8192 and --frames be at least 1\n");
@@ -224,13 +293,15 @@ int main(int argc, char** argv) {
   FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
   if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
   OffscreenTarget target(size, size);
-  for (Case& c : cases(quick)) {
+  for (Case& c : modelPath ? std::move(chosen) : cases(quick)) {
     if (only && c.name.find(only) == std::string::npos) continue;
     const double diagonal = c.mesh.bounds().diagonal();
-    const TransferFunction tf = c.sharpPeak ? sharpPeakTf(c.values, diagonal) : benchTf(c.values, diagonal);
+    const TransferFunction tf = fileTf ? *fileTf : c.sharpPeak ? sharpPeakTf(c.values, diagonal) : benchTf(c.values, diagonal);
     Camera camera;
     camera.setView(StandardView::Isometric);
     camera.fit(c.mesh.bounds());
+    if (eye) camera.lookAt(*eye, *lookAt, up.value_or(glm::dvec3(0.0, 0.0, 1.0)));
+    if (viewAngle > 0.0) camera.setFieldOfView(viewAngle);
     const auto refStart = Clock::now();
     const optics::TetVolume volume(c.mesh, c.location, c.values);
     const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
