@@ -2,8 +2,9 @@
 // GPU ray casting through tetrahedra, one invocation per pixel: enter at a boundary face
 // (found in a BVH over boundary faces, which also finds where a ray re-enters a
 // non-convex mesh), walk tet to tet through face adjacency, leave each tet through the
-// face with the smallest exit parameter, integrate each segment (three modes), composite
-// front to back, stop early when nearly opaque.
+// face the signs of the ray's Plucker products with its edges name (shared bit for bit
+// with the neighbour), integrate each segment (four modes), composite front to back, stop
+// early when nearly opaque.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D outImage;
 layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { ivec4 neighbors[]; };
@@ -12,6 +13,60 @@ layout(std430, binding = BINDING_BOUNDARY_FACES) readonly buffer BoundaryFaces {
 uniform int maxSteps;
 
 #include "common/tet_segment.glsl"
+
+// ---- the exit decision ---------------------------------------------------------------
+// The ray's Plucker product with the edge p -> q (vertex ids), computed from the lower id to
+// the higher whatever the direction asked (then negated), so two tets sharing a face see the
+// same numbers and agree on every decision: no ray slips between them or is claimed by both.
+// Within its float rounding bound of zero the product is taken in double, and an exact zero
+// (a ray through a vertex, along an edge, in a face) is decided by a symbolic perturbation of
+// the ray (its origin moved by (e, e^2, e^3), then its direction by (h, h^2, h^3)), the same
+// for every edge: the signs are those of one ray in general position. Never returns 0.
+float l1(vec3 v) { return abs(v.x) + abs(v.y) + abs(v.z); }
+double firstNonZero(dvec3 v) { return v.x != 0.0lf ? v.x : v.y != 0.0lf ? v.y : v.z; }
+
+float edgeProduct(uint p, uint q) {
+  bool ascending = p < q;
+  uint lo = ascending ? p : q, hi = ascending ? q : p;
+  precise vec3 a = nodes[lo].xyz - rayOrigin;
+  precise vec3 b = nodes[hi].xyz - rayOrigin;
+  precise float c = dot(rayDir, cross(a, b));
+  if (abs(c) <= 1e-6 * l1(a) * l1(b)) {
+    dvec3 o = dvec3(rayOrigin), d = dvec3(rayDir);
+    precise dvec3 da = dvec3(nodes[lo].xyz) - o;
+    precise dvec3 db = dvec3(nodes[hi].xyz) - o;
+    precise double v = dot(d, cross(da, db));
+    if (v == 0.0lf) v = firstNonZero(cross(da - db, d));  // the origin's move
+    if (v == 0.0lf) {  // the edge is parallel to the ray: the direction's move
+      double lambda = dot(db - da, d) > 0.0lf ? 1.0lf : -1.0lf;
+      v = lambda * firstNonZero(cross(da, d));
+      if (v == 0.0lf) {  // on the ray's own line
+        double g = d.z != 0.0lf ? sign(d.z) : d.y != 0.0lf ? -sign(d.y) : sign(d.x);
+        v = -lambda * g;
+      }
+    }
+    c = v > 0.0lf ? max(float(v), 1e-30) : min(float(v), -1e-30);
+  }
+  return ascending ? c : -c;
+}
+
+// The face (its index in the tet, opposite that vertex) a ray entered through face `entry`
+// leaves by: with the entry face's vertices a, b, c (in FACE order) and the fourth vertex k,
+// the ray leaves through the face opposite a when k->b turns like the entry face and k->c
+// the other way, and so on round. Float signs that name no face (only in near-degenerate
+// tets) give the face the ray misses by the least.
+int exitFaceOf(uvec4 tv, int entry) {
+  ivec3 f = FACE[entry];
+  uint A = tv[f.x], B = tv[f.y], C = tv[f.z], K = tv[entry];
+  int votes = int(edgeProduct(A, B) > 0.0) + int(edgeProduct(B, C) > 0.0) + int(edgeProduct(C, A) > 0.0);
+  float s = votes >= 2 ? 1.0 : -1.0;  // how the entry face turns around the ray
+  float eA = s * edgeProduct(K, A), eB = s * edgeProduct(K, B), eC = s * edgeProduct(K, C);
+  if (eB > 0.0 && eC < 0.0) return f.x;
+  if (eC > 0.0 && eA < 0.0) return f.y;
+  if (eA > 0.0 && eB < 0.0) return f.z;
+  float m0 = min(eB, -eC), m1 = min(eC, -eA), m2 = min(eA, -eB);
+  return m0 >= m1 && m0 >= m2 ? f.x : (m1 >= m2 ? f.y : f.z);
+}
 
 // Nearest entry (front-facing boundary face) hit with parameter >= tMin, other than the
 // face `excluded` (tet * 4 + face); -1 if none.
@@ -46,15 +101,16 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
       if (den >= 0.0) continue;  // leaving through it, not entering
       float t = dot(n, a - rayOrigin) / den;
       if (t < tMin || t >= tHit) continue;
-      // Inside the triangle, with a little slack so rays through shared edges are not lost.
-      // (Barycentrics against the face's own winding: n may have been flipped outward.)
-      vec3 p = rayOrigin + t * rayDir;
-      vec3 p0 = nodes[tv[FACE[k].x]].xyz, p1 = nodes[tv[FACE[k].y]].xyz, p2 = nodes[tv[FACE[k].z]].xyz;
-      vec3 w = cross(p1 - p0, p2 - p0);
-      float area = dot(w, w);
-      float u = dot(cross(p1 - p, p2 - p), w) / area, v = dot(cross(p2 - p, p0 - p), w) / area;
-      float eps = 1e-5;
-      if (u < -eps || v < -eps || u + v > 1.0 + eps) continue;
+      // Through the triangle: the signs of the ray's products with its edges, the very numbers
+      // the walk uses, so a ray through an edge shared by two boundary faces enters by exactly
+      // one of them (and the walk agrees with it).
+      ivec3 f = FACE[k];
+      uint A = tv[f.x], B = tv[f.y], C = tv[f.z];
+      float sAB = edgeProduct(A, B), sBC = edgeProduct(B, C), sCA = edgeProduct(C, A);
+      vec3 p0 = nodes[A].xyz, p1 = nodes[B].xyz, p2 = nodes[C].xyz;
+      bool outwardListing = dot(cross(p1 - p0, p2 - p0), n) > 0.0;  // then entering turns negative
+      bool entering = outwardListing ? (sAB < 0.0 && sBC < 0.0 && sCA < 0.0) : (sAB > 0.0 && sBC > 0.0 && sCA > 0.0);
+      if (!entering) continue;
       best = int(tet);
       faceOut = k;
       tHit = t;
@@ -83,45 +139,17 @@ void main() {
     while (tet >= 0 && steps < maxSteps && accT >= terminationTransmittance) {
       ++steps;
       uvec4 tv = tets[tet];
-      // Exit: the face the ray leaves through first, among those not behind the entry
-      // point (rounding can put a face sharing the entry edge slightly behind it).
-      float eps = 1e-5 * (abs(tIn) + length(nodes[tv.x].xyz - nodes[tv.y].xyz));
-      float tOut = 3.4e38, tBehind = -3.4e38;
-      int exitFace = -1, behindFace = -1;
-      float tk[4];
-      for (int k = 0; k < 4; ++k) {
-        tk[k] = 3.4e38;
-        if (k == face) continue;
-        vec3 n, a;
-        facePlane(tv, k, n, a);
-        float den = dot(n, rayDir);
-        if (den <= 0.0) continue;
-        tk[k] = dot(n, a - rayOrigin) / den;
-        if (tk[k] >= tIn - eps) {
-          if (tk[k] < tOut) { tOut = tk[k]; exitFace = k; }  // ties: the lowest face index
-        } else if (tk[k] > tBehind) {
-          tBehind = tk[k];
-          behindFace = k;
-        }
-      }
-      // No segment through a tet is longer than its longest edge: a longer one means the
-      // ray only grazes this tet (its true exit rounded to just behind the entry).
+      int exitFace = exitFaceOf(tv, face);
+      // Where it leaves: the exit face's plane, kept within the tet's extent along the ray
+      // (a ray running in the face's plane may cross it anywhere along the face).
       vec3 q0 = nodes[tv.x].xyz, q1 = nodes[tv.y].xyz, q2 = nodes[tv.z].xyz, q3 = nodes[tv.w].xyz;
       float diameter = max(max(max(distance(q0, q1), distance(q0, q2)), max(distance(q0, q3), distance(q1, q2))),
                            max(distance(q1, q3), distance(q2, q3)));
-      if (exitFace >= 0 && tOut - tIn > 1.001 * diameter + eps && behindFace >= 0) exitFace = -1;
-      if (exitFace < 0) { exitFace = behindFace; tOut = tIn; }  // the ray only grazes this tet
-      // A ray through an edge or vertex may tie a boundary face with an interior one: leaving
-      // through the boundary there would skip the rest of the mesh, so take the interior one.
-      if (exitFace >= 0 && neighbors[tet][exitFace] < 0) {
-        for (int k = 0; k < 4; ++k)
-          if (k != exitFace && tk[k] <= tOut + eps && tk[k] >= tIn - eps && neighbors[tet][k] >= 0) {
-            exitFace = k;
-            break;
-          }
-      }
-      if (exitFace < 0) { t = tIn; break; }  // degenerate: search again from here
-      tOut = max(tOut, tIn);  // a grazing exit (through the entry edge) has no length
+      vec3 n, a;
+      facePlane(tv, exitFace, n, a);
+      float den = dot(n, rayDir);
+      float tOut = den > 0.0 ? dot(n, a - rayOrigin) / den : tIn;
+      tOut = clamp(tOut, tIn, tIn + 1.001 * diameter);
       integrate(tv, uint(tet), tIn, min(tOut, tEnd));
       t = tOut;
       if (tOut >= tEnd) { tet = -1; steps = maxSteps; break; }
