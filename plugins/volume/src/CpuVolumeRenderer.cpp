@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "CpuVolumeRenderer.hpp"
 
-#include "VolumeBindings.hpp"
-#include "VolumeShaders.hpp"
 
-#include <volpost/render/ShaderLibrary.hpp>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -17,9 +14,7 @@
 namespace volpost::volume {
 
 void CpuVolumeRenderer::initialize() {
-  registerVolumeShaders();
-  composite_ = gl::buildProgram({"volume/composite.vert", "volume/composite.frag"}, binding::glslDefines());
-  quad_ = gl::createVertexArray();
+  composite_.initialize();
   textureWidth_ = textureHeight_ = 0;
   meshUploads_ = valueUploads_ = 0;
 }
@@ -31,8 +26,7 @@ void CpuVolumeRenderer::release() {
   shownKey_ = {};
   texture_.reset();
   uploaded_ = false;
-  composite_.reset();
-  quad_.reset();
+  composite_.release();
   textureWidth_ = textureHeight_ = 0;
 }
 
@@ -184,22 +178,7 @@ void CpuVolumeRenderer::show(const RenderContext& ctx) {
   if (!uploaded_)
     glTextureSubImage2D(texture_.id(), 0, 0, 0, image_.width, image_.height, GL_RGBA, GL_FLOAT, image_.rgba.data());
   uploaded_ = true;
-  // Blended over the target as the GPU renderers do (the image's first row is the top).
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glUseProgram(composite_.id());
-  glProgramUniform2f(composite_.id(), glGetUniformLocation(composite_.id(), "viewportSize"), float(ctx.width),
-                     float(ctx.height));
-  glBindTextureUnit(binding::kImage, texture_.id());
-  glBindVertexArray(quad_.id());
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  glDisable(GL_BLEND);
-  glEnable(GL_DEPTH_TEST);
-  glBindVertexArray(0);
-  glUseProgram(0);
+  composite_.draw(ctx, texture_.id());  // as the GPU renderers do
 }
 
 VolumeStats CpuVolumeRenderer::stats() const {

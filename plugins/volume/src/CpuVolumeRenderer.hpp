@@ -12,6 +12,7 @@
 #pragma once
 
 #include "CpuRayCaster.hpp"
+#include "ImageComposite.hpp"
 
 #include <volpost/render/GlObjects.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
@@ -91,8 +92,7 @@ class CpuVolumeRenderer : public VolumeRenderer {
   int threads_ = 0;
   CpuImage image_;
   gl::Texture texture_;
-  gl::Program composite_;
-  gl::VertexArray quad_;
+  ImageComposite composite_;
   int textureWidth_ = 0, textureHeight_ = 0;
   bool uploaded_ = false;  ///< image_ is in texture_
   std::size_t meshUploads_ = 0, valueUploads_ = 0;

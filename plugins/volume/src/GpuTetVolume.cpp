@@ -116,8 +116,7 @@ void GpuTetVolume::setIntegrationMode(IntegrationMode mode) {
 
 void GpuTetVolume::initialize() {
   registerVolumeShaders();
-  compositeProgram_ = gl::buildProgram({"volume/composite.vert", "volume/composite.frag"}, binding::glslDefines());
-  quad_ = gl::createVertexArray();
+  composite_.initialize();
   const optics::PsiTable psi(psiResolution);
   psiTable_ = texture2D(GL_R32F, psiResolution, psiResolution);
   setFilter(psiTable_.id(), GL_LINEAR);
@@ -135,8 +134,7 @@ void GpuTetVolume::release() {
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
   for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
   programs_.clear();
-  compositeProgram_.reset();
-  quad_.reset();
+  composite_.release();
   imageWidth_ = imageHeight_ = 0;
   initialized_ = false;
 }
@@ -327,20 +325,7 @@ void GpuTetVolume::bindSegmentResources(const RenderContext& ctx) const {
 
 void GpuTetVolume::compositeOver(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, 0);  // the depth texture may be attached to the target: no feedback
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glUseProgram(compositeProgram_.id());
-  glProgramUniform2f(compositeProgram_.id(), glGetUniformLocation(compositeProgram_.id(), "viewportSize"), float(ctx.width),
-                     float(ctx.height));
-  glBindTextureUnit(binding::kImage, image_.id());
-  glBindVertexArray(quad_.id());
-  glDisable(GL_DEPTH_TEST);
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-  glDisable(GL_BLEND);
-  glBindVertexArray(0);
-  glUseProgram(0);
+  composite_.draw(ctx, image_.id());
 }
 
 VolumeStats GpuTetVolume::stats() const {

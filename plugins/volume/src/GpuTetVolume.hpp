@@ -11,9 +11,11 @@
 // Clip planes, iso-surfaces and the camera are uniforms and cost nothing to change.
 #pragma once
 
+#include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
 
 #include <volpost/render/GlObjects.hpp>
+
 #include <volpost/render/VolumeRenderer.hpp>
 
 #include <chrono>
@@ -101,8 +103,7 @@ class GpuTetVolume {
   bool initialized_ = false;
 
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
-  gl::Program compositeProgram_;
-  gl::VertexArray quad_;
+  ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
   gl::Texture psiTable_, isoTable_, preTable_, image_;
   int imageWidth_ = 0, imageHeight_ = 0;

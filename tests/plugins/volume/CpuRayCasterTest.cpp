@@ -167,19 +167,7 @@ TEST_F(CpuRayCast, IsoSurfacesMatchTheReference) {
 }
 
 TEST_F(CpuRayCast, OpaqueGeometryEndsRaysAtItsDepth) {
-  const Mesh grid = test::tetGrid(4, 4, 4);
-  Camera camera = isoCamera(grid);
-  camera.setProjection(Camera::Projection::Orthographic);
-  const float depth = 0.5f;
-  caster_->setVolume(grid, FieldLocation::Node, field(grid));
-  caster_->setTransferFunction(kTf);
-  caster_->setTerminationThreshold(0.0);
-  const auto image = gpuImage(camera, 64, 64, depth);
-  const glm::dvec4 p = glm::inverse(camera.projectionMatrix(1.0) * camera.viewMatrix()) * glm::dvec4(0, 0, 2.0 * depth - 1.0, 1.0);
-  optics::RaySettings settings;
-  settings.clipPlanes = {{glm::dvec3(p) / p.w, -camera.viewDirection()}};
-  const optics::TetVolume volume(grid, FieldLocation::Node, field(grid));
-  const ImageError e = compare(image, optics::renderReference(volume, kTf, camera, 64, 64, settings));
+  const ImageError e = opaqueDepthAgainstReference();
   std::printf("cpu ended by scene depth vs reference clipped there: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-5);
   EXPECT_LE(e.max, 1e-4);

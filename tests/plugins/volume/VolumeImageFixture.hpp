@@ -33,6 +33,23 @@ struct ImageError {
   double rmse = 0.0, max = 0.0;
 };
 
+inline std::vector<double> field(const Mesh& m) {
+  std::vector<double> v;
+  for (const auto& p : m.nodes) v.push_back(p.x + 0.5 * p.z);
+  return v;
+}
+
+inline const TransferFunction kTf({{0.0, {0.1, 0.2, 0.9}, 0.05}, {2.0, {0.2, 0.9, 0.3}, 0.6},
+                            {3.5, {1.0, 1.0, 1.0}, 1.5}, {6.0, {0.9, 0.1, 0.1}, 0.2}});
+
+inline Camera isoCamera(const Mesh& m) {
+  Camera c;
+  c.setView(StandardView::Isometric);
+  c.fit(m.bounds());
+  c.orbit(17.0, 9.0);
+  return c;
+}
+
 class RayCast : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -99,6 +116,27 @@ class RayCast : public ::testing::Test {
     optics::RaySettings settings;
     settings.clipPlanes = clips;
     return compare(gpu, optics::renderReference(volume, tf, camera, size, size, settings));
+  }
+
+  // A constant depth in an orthographic view is a plane facing the camera: the volume
+  // behind it must vanish exactly as behind a clip plane there. The renderer's image (opaque
+  // geometry at window depth 0.5) against the reference clipped at that plane.
+  ImageError opaqueDepthAgainstReference() {
+    const Mesh grid = test::tetGrid(4, 4, 4);
+    Camera camera = isoCamera(grid);
+    camera.setProjection(Camera::Projection::Orthographic);
+    const float depth = 0.5f;
+    caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+    caster_->setVolume(grid, FieldLocation::Node, field(grid));
+    caster_->setTransferFunction(kTf);
+    caster_->setTerminationThreshold(0.0);
+    const auto image = gpuImage(camera, 64, 64, depth);
+    const glm::dvec4 p =
+        glm::inverse(camera.projectionMatrix(1.0) * camera.viewMatrix()) * glm::dvec4(0, 0, 2.0 * depth - 1.0, 1.0);
+    optics::RaySettings settings;
+    settings.clipPlanes = {{glm::dvec3(p) / p.w, -camera.viewDirection()}};
+    const optics::TetVolume volume(grid, FieldLocation::Node, field(grid));
+    return compare(image, optics::renderReference(volume, kTf, camera, 64, 64, settings));
   }
 
   // A constant field on the Kuhn grid [0,4]^3 seen where rays are degenerate: along the
@@ -185,22 +223,6 @@ class CpuRayCast : public RayCast {
   std::unique_ptr<VolumeRenderer> makeRenderer() const override { return std::make_unique<volume::CpuVolumeRenderer>(); }
 };
 
-inline std::vector<double> field(const Mesh& m) {
-  std::vector<double> v;
-  for (const auto& p : m.nodes) v.push_back(p.x + 0.5 * p.z);
-  return v;
-}
-
-inline const TransferFunction kTf({{0.0, {0.1, 0.2, 0.9}, 0.05}, {2.0, {0.2, 0.9, 0.3}, 0.6},
-                            {3.5, {1.0, 1.0, 1.0}, 1.5}, {6.0, {0.9, 0.1, 0.1}, 0.2}});
-
-inline Camera isoCamera(const Mesh& m) {
-  Camera c;
-  c.setView(StandardView::Isometric);
-  c.fit(m.bounds());
-  c.orbit(17.0, 9.0);
-  return c;
-}
 
 // Values far from float32's comfort: a concentration of order 1e-38 (where float32 is
 // denormal and shader arithmetic flushes to zero) and a field riding on a large offset
