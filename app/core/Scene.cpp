@@ -197,8 +197,11 @@ void Scene::setSamplingStep(double step) {
 }
 
 void Scene::setTermination(double transmittance) {
-  if (!(transmittance >= 0.0 && transmittance < 1.0))
-    throw std::invalid_argument("the early-termination transmittance must lie in [0, 1)");
+  if (!(transmittance >= 0.0 && transmittance < 1.0)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", transmittance);
+    throw std::invalid_argument(std::string("the early-termination transmittance must lie in [0, 1), not ") + value);
+  }
   state_.volume.termination = transmittance;
   changed_.mode = true;
 }
