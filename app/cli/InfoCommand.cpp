@@ -36,6 +36,19 @@ void printFields(const Model& model) {
   }
 }
 
+// "grid:     23 inline (111 .. 133 by 1) x 18 crossline (...) x 75 time (ms) (4 .. 300 by 4)".
+void printGrid(const RegularGrid& grid) {
+  std::printf("grid:     ");
+  for (int a = 0; a < 3; ++a)
+    std::printf("%s%zu %s (%.6g .. %.6g by %.6g)", a ? " x " : "", grid.dims[a], grid.axisNames[a].c_str(),
+                grid.label(a, 0.0), grid.label(a, double(grid.dims[a] - 1)), grid.labelStep[a]);
+  std::printf("\n");
+  for (int a = 0; a < 3; ++a)
+    std::printf("  %-12s step (%.6g, %.6g, %.6g) model units\n", grid.axisNames[a].c_str(), grid.axes[a].x,
+                grid.axes[a].y, grid.axes[a].z);
+  if (!grid.sampleStorage.empty()) std::printf("samples:  %s in the file\n", grid.sampleStorage.c_str());
+}
+
 }  // namespace
 
 int runInfo(const QStringList& args) {
@@ -63,6 +76,7 @@ int runInfo(const QStringList& args) {
                   b.min.z, b.max.z);
     else
       std::printf("bounds:   (empty model)\n");
+    if (model->grid) printGrid(*model->grid);
     printFields(*model);
     std::printf("defects:  %s\n", model->diagnostics.empty() ? "none found" : "");
     for (const Diagnostic& d : model->diagnostics)

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
-// A loaded FE model: the mesh, its result fields and what was found wrong with it.
+// A loaded FE model (or a regular grid such as a seismic cube): the mesh, its result fields and what was found wrong with it.
 #pragma once
 
 #include <volpost/core/Diagnostics.hpp>
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
+#include <volpost/core/RegularGrid.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,9 @@ struct Model {
   std::string formatName;   ///< e.g. "VTK XML unstructured grid"
   std::string title;        ///< header/title line of the file, if any
   Mesh mesh;
+  /// Set when the mesh is this regular grid's hexahedra (hexahedraOfGrid): grid renderers
+  /// then sample its point fields as a 3D texture.
+  std::optional<RegularGrid> grid;
   std::vector<std::shared_ptr<Field>> fields;
   std::vector<Diagnostic> diagnostics;
 

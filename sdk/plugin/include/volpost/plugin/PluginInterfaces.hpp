@@ -79,9 +79,9 @@ class PanelPlugin {
 
 }  // namespace volpost
 
-#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/2"
-#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/2"
-#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/2"
+#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/3"
+#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/3"
+#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/3"
 
 Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
 Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)

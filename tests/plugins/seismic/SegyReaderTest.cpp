@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// The SEG-Y reader: every sample format in both byte orders round-trips through the
+// writer; geometry from the headers (rotation, labels, missing traces); refusals that name
+// the defect (truncated, text only, pre-stack, a count that does not fit); the real F3
+// crop in its five formats and both byte orders reads the same numbers.
+#include "SegyReader.hpp"
+#include "SegyWriter.hpp"
+
+#include "support/TestSupport.hpp"
+
+#include <volpost/core/Error.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace volpost::seismic {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempFile(const std::string& name) { return fs::temp_directory_path() / ("volpost_segy_" + name); }
+
+std::vector<char> bytesOf(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+void writeBytes(const fs::path& p, const std::vector<char>& bytes) {
+  std::ofstream out(p, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+// A 4 x 3 x 6 survey, rotated 30 degrees, 25 m x 12.5 m bins, inlines 100, 102, ...,
+// crosslines 7, 8, ..., times 8, 12, ... ms; integer amplitudes so every format is exact.
+RegularGrid surveyGrid() {
+  RegularGrid g;
+  g.dims = {4, 3, 6};
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  g.origin = {620000.0, 6070000.0, -8.0};
+  g.axes = {glm::dvec3(25 * c, 25 * s, 0), glm::dvec3(-12.5 * s, 12.5 * c, 0), glm::dvec3(0, 0, -4)};
+  g.firstLabel = {100, 7, 8};
+  g.labelStep = {2, 1, 4};
+  return g;
+}
+std::vector<double> surveyValues(const RegularGrid& g) {
+  std::vector<double> v(g.pointCount());
+  for (std::size_t n = 0; n < v.size(); ++n) v[n] = double(int(n * 7 % 101) - 50);
+  return v;
+}
+
+TEST(SegyLayout, IbmFloatsDecodeExactly) {
+  EXPECT_EQ(ibmToDouble(0xC276A000u), -118.625);  // the standard's example
+  EXPECT_EQ(ibmToDouble(0x42640000u), 100.0);
+  EXPECT_EQ(ibmToDouble(0x00000000u), 0.0);
+  EXPECT_EQ(ibmToDouble(0x41100000u), 1.0);
+}
+
+TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
+  const RegularGrid grid = surveyGrid();
+  const std::vector<double> values = surveyValues(grid);
+  for (SampleFormat f : {SampleFormat::IbmFloat32, SampleFormat::Int32, SampleFormat::Int16, SampleFormat::IeeeFloat32,
+                         SampleFormat::IeeeFloat64, SampleFormat::Int8})
+    for (ByteOrder order : {ByteOrder::Big, ByteOrder::Little}) {
+      SCOPED_TRACE(describe(f) + (order == ByteOrder::Big ? " big" : " little"));
+      const fs::path p = tempFile("roundtrip.sgy");
+      writeSegy(p.string(), grid, values, {f, order});
+      EXPECT_GT(SegyReader().sniff(std::string_view(bytesOf(p).data(), 3600)), 50);
+      const auto model = readSegy(p.string(), {});
+      ASSERT_TRUE(model->grid);
+      const RegularGrid& r = *model->grid;
+      EXPECT_EQ(r.dims, grid.dims);
+      EXPECT_EQ(r.firstLabel, grid.firstLabel);
+      EXPECT_EQ(r.labelStep, grid.labelStep);
+      for (int a = 0; a < 3; ++a) EXPECT_LT(glm::distance(r.axes[a], grid.axes[a]), 0.02) << "axis " << a;
+      EXPECT_LT(glm::distance(r.origin, grid.origin), 0.02);
+      EXPECT_EQ(model->mesh.nodeCount(), grid.pointCount());
+      EXPECT_EQ(model->mesh.cellCount(), grid.cellCount());
+      EXPECT_EQ(model->fields.at(0)->values(0), values);
+      EXPECT_TRUE(model->diagnostics.empty());
+      fs::remove(p);
+    }
+}
+
+TEST(SegyReader, MissingTracesAreFilledWithZeroAndFlagged) {
+  const RegularGrid grid = surveyGrid();
+  const std::vector<double> values = surveyValues(grid);
+  const fs::path p = tempFile("missing.sgy");
+  writeSegy(p.string(), grid, values, {SampleFormat::IeeeFloat32, ByteOrder::Big});
+  std::vector<char> bytes = bytesOf(p);
+  const std::size_t traceBytes = 240 + 6 * 4;
+  // Drop the 5th trace (inline index 1, crossline index 1).
+  bytes.erase(bytes.begin() + std::ptrdiff_t(3600 + 4 * traceBytes), bytes.begin() + std::ptrdiff_t(3600 + 5 * traceBytes));
+  writeBytes(p, bytes);
+  const auto model = readSegy(p.string(), {});
+  ASSERT_EQ(model->diagnostics.size(), 1u);
+  EXPECT_EQ(model->diagnostics[0].code, "missing-traces");
+  const std::vector<double>& read = model->fields[0]->values(0);
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(read[grid.pointIndex(1, 1, k)], 0.0);
+    EXPECT_EQ(read[grid.pointIndex(1, 2, k)], values[grid.pointIndex(1, 2, k)]);
+  }
+  fs::remove(p);
+}
+
+void expectRefused(const fs::path& p, const std::string& words) {
+  try {
+    (void)readSegy(p.string(), {});
+    ADD_FAILURE() << p << " was read";
+  } catch (const ReadError& e) {
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(SegyReader, RefusesDamagedFilesNamingTheDefect) {
+  const RegularGrid grid = surveyGrid();
+  const fs::path p = tempFile("damaged.sgy");
+  writeSegy(p.string(), grid, surveyValues(grid), {SampleFormat::IeeeFloat32, ByteOrder::Big});
+  const std::vector<char> good = bytesOf(p);
+
+  writeBytes(p, std::vector<char>(good.begin(), good.end() - 100));
+  expectRefused(p, "ends inside trace 12");
+  writeBytes(p, std::vector<char>(good.begin(), good.begin() + 3600));
+  expectRefused(p, "no traces");
+  writeBytes(p, std::vector<char>(good.begin(), good.begin() + 1000));
+  expectRefused(p, "3600 bytes of headers");
+  std::vector<char> bad = good;
+  bad[3224] = 0x00, bad[3225] = 0x07;  // format code 7
+  writeBytes(p, bad);
+  expectRefused(p, "format code");
+  bad = good;
+  bad[3220] = char(0xEA), bad[3221] = 0x60;  // 60000 samples per trace: far more than the file holds
+  writeBytes(p, bad);
+  expectRefused(p, "ends inside trace 1");
+  // One inline only: not a volume.
+  RegularGrid line = grid;
+  line.dims = {1, 3, 6};
+  writeSegy(p.string(), line, std::vector<double>(18, 1.0));
+  expectRefused(p, "at least 2");
+  fs::remove(p);
+}
+
+TEST(SegyReader, PreStackFilesAreRefusedOrReadAtTheChosenOffset) {
+  const RegularGrid grid = surveyGrid();
+  const fs::path p = tempFile("prestack.sgy");
+  writeSegy(p.string(), grid, surveyValues(grid), {SampleFormat::IeeeFloat32, ByteOrder::Big});
+  std::vector<char> bytes = bytesOf(p);
+  const std::size_t traceBytes = 240 + 6 * 4;
+  std::vector<char> extra(bytes.begin() + 3600, bytes.begin() + std::ptrdiff_t(3600 + traceBytes));
+  extra[36 + 3] = 50;  // offset 50 at bytes 37-40
+  bytes.insert(bytes.end(), extra.begin(), extra.end());
+  writeBytes(p, bytes);
+  expectRefused(p, "pre-stack data: 2 offsets (0, 50)");
+  const auto model = readSegy(p.string(), {TraceFieldPositions{}, 0});
+  EXPECT_EQ(model->grid->dims, grid.dims);
+  EXPECT_THROW((void)readSegy(p.string(), {TraceFieldPositions{}, 7}), ReadError);
+  fs::remove(p);
+}
+
+// ---- the shared test files ----------------------------------------------------------------
+
+std::vector<double> readAmplitudes(const std::string& path, RegularGrid* grid = nullptr) {
+  const auto model = readSegy(path, {});
+  if (grid) *grid = *model->grid;
+  return model->fields.at(0)->values(0);
+}
+
+TEST(SegyReader, TheF3CropReadsTheSameInEveryFormatAndByteOrder) {
+  VOLPOST_SHARED_OR_SKIP(f3, "seismic/segyio/f3.sgy");
+  RegularGrid grid;
+  const std::vector<double> reference = readAmplitudes(f3, &grid);
+  EXPECT_EQ(grid.dims, (std::array<std::size_t, 3>{23, 18, 75}));
+  EXPECT_EQ(grid.firstLabel[0], 111);
+  EXPECT_EQ(grid.firstLabel[1], 875);
+  EXPECT_EQ(grid.labelStep[2], 4.0);
+  EXPECT_NEAR(glm::length(grid.axes[0]), 25.0, 0.1);  // the F3 block's 25 m bins
+  EXPECT_NEAR(glm::length(grid.axes[1]), 25.0, 0.1);
+  EXPECT_EQ(*std::min_element(reference.begin(), reference.end()), -10239.0);
+  EXPECT_EQ(*std::max_element(reference.begin(), reference.end()), 10827.0);
+  const std::string dir = fs::path(f3).parent_path().string() + "/";
+  for (const char* same : {"f3-lsb.sgy", "Format1msb.sgy", "Format1lsb.sgy", "Format3msb.sgy", "Format5msb.sgy"}) {
+    SCOPED_TRACE(same);
+    EXPECT_EQ(readAmplitudes(dir + same), reference);
+  }
+  const std::vector<double> int8 = readAmplitudes(dir + "Format8msb.sgy");
+  EXPECT_EQ(*std::min_element(int8.begin(), int8.end()), -128.0);
+  EXPECT_EQ(*std::max_element(int8.begin(), int8.end()), 127.0);
+}
+
+TEST(SegyReader, SmallSyntheticFilesAndARotatedSurvey) {
+  VOLPOST_SHARED_OR_SKIP(small, "seismic/segyio/small.sgy");
+  const std::string dir = fs::path(small).parent_path().string() + "/";
+  RegularGrid grid;
+  const std::vector<double> values = readAmplitudes(small, &grid);
+  EXPECT_EQ(grid.dims, (std::array<std::size_t, 3>{5, 5, 50}));
+  EXPECT_NEAR(*std::min_element(values.begin(), values.end()), 1.2, 1e-6);
+  EXPECT_NEAR(*std::max_element(values.begin(), values.end()), 5.24, 1e-3);
+  EXPECT_EQ(readAmplitudes(dir + "small-lsb.sgy"), values);
+  RegularGrid acute;
+  EXPECT_EQ(readAmplitudes(dir + "acute-small.sgy", &acute), values);
+  // 45 degrees against the CDP x/y axes, as its coordinates say.
+  EXPECT_NEAR(std::abs(acute.axes[0].x), std::abs(acute.axes[0].y), 1e-9);
+  EXPECT_NEAR(glm::dot(acute.axes[0], acute.axes[1]), 0.0, 1e-9);
+  RegularGrid tiny;
+  (void)readAmplitudes(dir + "tiny.sgy", &tiny);
+  EXPECT_EQ(tiny.dims, (std::array<std::size_t, 3>{3, 2, 4}));
+  RegularGrid rev2;
+  EXPECT_EQ(readAmplitudes(dir + "rotated-small-rev2.sgy", &rev2).size(), 1250u);
+}
+
+TEST(SegyReader, TheSharedBrokenFilesAreRefusedWithoutACrash) {
+  VOLPOST_SHARED_OR_SKIP(broken, "seismic/segyio/broken.sgy");
+  const std::string dir = fs::path(broken).parent_path().string() + "/";
+  expectRefused(broken, "ends inside trace");
+  expectRefused(dir + "text.sgy", "no traces");
+  expectRefused(dir + "small-ps.sgy", "pre-stack");
+  EXPECT_THROW((void)readSegy(dir + "long.sgy", {}), ReadError);  // segyio 1.8.3 aborts here
+}
+
+}  // namespace
+}  // namespace volpost::seismic
