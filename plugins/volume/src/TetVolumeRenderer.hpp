@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The part of the VolumeRenderer interface that every renderer of this plugin answers the
-// same way: state goes to its GpuTetVolume. A renderer adds how it turns that volume into
+// same way: state goes to its GpuVolume. A renderer adds how it turns that volume into
 // a frame (walking rays, projecting tets).
 #pragma once
 
-#include "GpuTetVolume.hpp"
+#include "GpuVolume.hpp"
 
 #include <volpost/render/VolumeRenderer.hpp>
 
@@ -28,11 +28,11 @@ class TetVolumeRenderer : public VolumeRenderer {
   std::vector<float> readImage() const override { return volume_.readImage(); }
 
   /// For tests and benches that look inside.
-  const GpuTetVolume& volume() const { return volume_; }
-  GpuTetVolume& volume() { return volume_; }
+  const GpuVolume& volume() const { return volume_; }
+  GpuVolume& volume() { return volume_; }
 
  protected:
-  GpuTetVolume volume_;
+  GpuVolume volume_;
 };
 
 }  // namespace volpost::volume

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "GpuTetVolume.hpp"
+#include "GpuVolume.hpp"
 
 #include "VolumeBindings.hpp"
 #include "VolumeShaders.hpp"
@@ -65,7 +65,7 @@ glm::dvec3 unitNormal(const ClipPlane& c) {
 
 // ---- state ---------------------------------------------------------------------------
 
-void GpuTetVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
+void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
   gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
   mesh_ = &mesh;
   location_ = location;
@@ -73,7 +73,7 @@ void GpuTetVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span
   meshDirty_ = true;
 }
 
-void GpuTetVolume::setValues(std::span<const double> values) {
+void GpuVolume::setValues(std::span<const double> values) {
   if (!mesh_) return;
   if (!replaceValues(gpu_, *mesh_, location_, values)) {
     setVolume(*mesh_, location_, values);  // the set of renderable tets changed
@@ -82,13 +82,13 @@ void GpuTetVolume::setValues(std::span<const double> values) {
   valuesDirty_ = true;
 }
 
-void GpuTetVolume::setTransferFunction(const TransferFunction& tf) {
+void GpuVolume::setTransferFunction(const TransferFunction& tf) {
   if (tf == tf_) return;
   tf_ = tf;
   tablesDirty_ = true;
 }
 
-void GpuTetVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
+void GpuVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
   if (planes.size() > std::size_t(kMaxClipPlanes))
     throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
                                 std::to_string(kMaxClipPlanes) + " (a clip box is 6)");
@@ -96,7 +96,7 @@ void GpuTetVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
   clipPlanes_ = planes;
 }
 
-void GpuTetVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
+void GpuVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
   if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
     throw std::invalid_argument(std::to_string(surfaces.size()) + " iso-surfaces: a volume takes at most " +
                                 std::to_string(kMaxIsoSurfaces));
@@ -106,7 +106,7 @@ void GpuTetVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surface
   isoSurfaces_ = surfaces;
 }
 
-void GpuTetVolume::setIntegrationMode(IntegrationMode mode) {
+void GpuVolume::setIntegrationMode(IntegrationMode mode) {
   if (mode == mode_) return;
   mode_ = mode;
   tablesDirty_ = true;
@@ -114,7 +114,7 @@ void GpuTetVolume::setIntegrationMode(IntegrationMode mode) {
 
 // ---- GL ------------------------------------------------------------------------------
 
-void GpuTetVolume::initialize() {
+void GpuVolume::initialize() {
   registerVolumeShaders();
   composite_.initialize();
   const optics::PsiTable psi(psiResolution);
@@ -124,10 +124,10 @@ void GpuTetVolume::initialize() {
   initialized_ = true;
   meshDirty_ = tablesDirty_ = true;  // a fresh context holds nothing yet
   meshUploads_ = valueUploads_ = tableBuilds_ = 0;
-  gl::check("GpuTetVolume::initialize");
+  gl::check("GpuVolume::initialize");
 }
 
-void GpuTetVolume::release() {
+void GpuVolume::release() {
   if (preFuture_.valid()) preFuture_.wait();
   preFuture_ = {};
   preOutdated_ = false;
@@ -139,7 +139,7 @@ void GpuTetVolume::release() {
   initialized_ = false;
 }
 
-void GpuTetVolume::prepare(const RenderContext& ctx) {
+void GpuVolume::prepare(const RenderContext& ctx) {
   if (meshDirty_) {
     uploadMesh();
     meshDirty_ = valuesDirty_ = false;
@@ -153,7 +153,7 @@ void GpuTetVolume::prepare(const RenderContext& ctx) {
   ensureImage(ctx.width, ctx.height);
 }
 
-void GpuTetVolume::uploadMesh() {
+void GpuVolume::uploadMesh() {
   upload(nodes_, gpu_.nodes);
   upload(tets_, gpu_.tets);
   upload(neighbors_, gpu_.neighbors);
@@ -162,11 +162,11 @@ void GpuTetVolume::uploadMesh() {
   upload(boundary_, gpu_.boundaryFaces);
   builtRevision_ = meshRevision_;
   ++meshUploads_;
-  gl::check("GpuTetVolume::uploadMesh");
+  gl::check("GpuVolume::uploadMesh");
 }
 
 // Only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet.
-void GpuTetVolume::uploadValues() {
+void GpuVolume::uploadValues() {
   if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
   else upload(cellValues_, gpu_.cellValues);
   ++valueUploads_;
@@ -174,7 +174,7 @@ void GpuTetVolume::uploadValues() {
 
 // The tables depend on the transfer function, the mode and the values' range (the tables
 // span it, and control points travel in the values' frame).
-bool GpuTetVolume::tablesNeedRebuild() const {
+bool GpuVolume::tablesNeedRebuild() const {
   if (tablesDirty_) return true;
   const double lo = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
   const double hi = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
@@ -183,7 +183,7 @@ bool GpuTetVolume::tablesNeedRebuild() const {
 
 // What a TF edit costs: the control points and the table the mode uses (the 2D
 // iso-detection table or the 3D pre-integration table). The mesh is not touched.
-void GpuTetVolume::rebuildTables() {
+void GpuVolume::rebuildTables() {
   const auto start = std::chrono::steady_clock::now();
   std::vector<glm::vec4> colorTau;
   std::vector<float> values;
@@ -215,12 +215,12 @@ void GpuTetVolume::rebuildTables() {
   tfChanged_ = start;
   tablesDirty_ = false;
   ++tableBuilds_;
-  gl::check("GpuTetVolume::rebuildTables");
+  gl::check("GpuVolume::rebuildTables");
 }
 
 // The pre-integrated table (seconds at 128^3) is computed off the GL thread from a copy of
 // the TF and the table's range.
-void GpuTetVolume::launchPreintegration() {
+void GpuVolume::launchPreintegration() {
   preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
   preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, length = preMaxLength_,
                                                n = preResolution] {
@@ -228,7 +228,7 @@ void GpuTetVolume::launchPreintegration() {
   });
 }
 
-void GpuTetVolume::collectPreintegration(bool wait) {
+void GpuVolume::collectPreintegration(bool wait) {
   if (!preFuture_.valid()) return;
   if (!wait && preFuture_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   uploadPreintegration(preFuture_.get());
@@ -241,7 +241,7 @@ void GpuTetVolume::collectPreintegration(bool wait) {
   lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tfChanged_).count();
 }
 
-void GpuTetVolume::uploadPreintegration(const std::vector<float>& values) {
+void GpuVolume::uploadPreintegration(const std::vector<float>& values) {
   if (!preTable_) {
     preTable_ = gl::createTexture(GL_TEXTURE_3D);
     glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
@@ -253,7 +253,7 @@ void GpuTetVolume::uploadPreintegration(const std::vector<float>& values) {
                       values.data());
 }
 
-void GpuTetVolume::ensureImage(int width, int height) {
+void GpuVolume::ensureImage(int width, int height) {
   if (image_ && width == imageWidth_ && height == imageHeight_) return;
   image_ = texture2D(GL_RGBA32F, width, height);
   setFilter(image_.id(), GL_NEAREST);
@@ -261,7 +261,7 @@ void GpuTetVolume::ensureImage(int width, int height) {
   imageHeight_ = height;
 }
 
-GLuint GpuTetVolume::program(const std::vector<std::string>& stageFiles) {
+GLuint GpuVolume::program(const std::vector<std::string>& stageFiles) {
   const int mode = modeIndex(mode_);
   std::string key = std::to_string(mode);
   for (const std::string& f : stageFiles) key += " " + f;
@@ -272,7 +272,7 @@ GLuint GpuTetVolume::program(const std::vector<std::string>& stageFiles) {
   return p.id();
 }
 
-void GpuTetVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
+void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   const glm::dmat4 vp = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpu_.origin);
   const glm::mat4 inv(glm::inverse(vp));
   const glm::vec3 eye(ctx.camera.eye() - gpu_.origin);
@@ -310,7 +310,7 @@ void GpuTetVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const 
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
 }
 
-void GpuTetVolume::bindSegmentResources(const RenderContext& ctx) const {
+void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, ctx.depthTexture);
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
@@ -323,12 +323,12 @@ void GpuTetVolume::bindSegmentResources(const RenderContext& ctx) const {
   for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
 }
 
-void GpuTetVolume::compositeOver(const RenderContext& ctx) const {
+void GpuVolume::compositeOver(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, 0);  // the depth texture may be attached to the target: no feedback
   composite_.draw(ctx, image_.id());
 }
 
-VolumeStats GpuTetVolume::stats() const {
+VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tets.size();
   s.meshBytes = gpu_.bytes();
@@ -343,7 +343,7 @@ VolumeStats GpuTetVolume::stats() const {
   return s;
 }
 
-std::vector<float> GpuTetVolume::readImage() const {
+std::vector<float> GpuVolume::readImage() const {
   std::vector<float> pixels(std::size_t(imageWidth_) * std::size_t(imageHeight_) * 4);
   if (!image_) return pixels;
   glGetTextureImage(image_.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)), pixels.data());

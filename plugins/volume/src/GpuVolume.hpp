@@ -26,7 +26,7 @@
 
 namespace volpost::volume {
 
-class GpuTetVolume {
+class GpuVolume {
  public:
   // ---- state (no GL) ----
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values);

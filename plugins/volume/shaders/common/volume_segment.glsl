@@ -1,0 +1,214 @@
+// Shared by every volume shader of the plugin (the tet ray caster, cell projection, the
+// grid ray marcher): the transfer-function tables, the integration of one ray piece over
+// which the scalar is linear (exact linear segments, pre-integrated, sampled), clip planes,
+// iso-surfaces, and the ray of a pixel. The includer sets rayOrigin/rayDir, defines
+// isoGradient(t) (the scalar's gradient where the ray crosses an iso-surface, for its
+// shading) and calls integrateValues(); the result accumulates front to back in
+// accColor/accT.
+// Binding points (BINDING_*, UNIT_*), limits (MAX_*) and INTEGRATION_MODE are #defines the
+// plugin prepends (VolumeBindings.hpp, kMaxClipPlanes...): one source for C++ and GLSL.
+#include "common/transfer_function.glsl"
+
+uniform mat4 inverseViewProjection;  // NDC -> mesh-relative coordinates
+uniform vec3 eye;                    // mesh-relative (perspective)
+uniform bool orthographic;
+uniform ivec2 imageSize_;
+// INTEGRATION_MODE (0 linear segments with exact cuts, 1 pre-integrated, 2 sampling, 3
+// linear segments cut where a 2D table says) is compiled in, one program per mode: as a
+// run-time branch, some drivers (llvmpipe) run every mode's code for every segment (the
+// ray caster took 37% longer on the fine post).
+uniform float samplingStep;
+uniform float terminationTransmittance;
+uniform int clipCount;
+uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-relative)
+layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
+layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
+layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, length) -> premultiplied rgba
+uniform float sLo, sHi;              // range of the iso and pre-integration tables
+uniform float preMaxLength;
+layout(binding = UNIT_SCENE_DEPTH) uniform sampler2D sceneDepth;  // opaque geometry's depth (window 0..1), bottom row first
+uniform bool hasSceneDepth;
+uniform int isoCount;
+uniform float isoValue[MAX_ISO_SURFACES];
+uniform vec4 isoColor[MAX_ISO_SURFACES];  // rgb, opacity
+
+vec3 accColor = vec3(0.0);
+float accT = 1.0;
+
+void composite(vec3 color, float transmittance) {
+  accColor += accT * color;
+  accT *= transmittance;
+}
+
+// ---- segment integration ---------------------------------------------------------
+float gammaUv(float t) {
+  float n = float(textureSize(psiTable, 0).x);
+  return ((t / (t + 1.0)) * (n - 1.0) + 0.5) / n;
+}
+
+// psi for thin pieces (optical depth <= 0.1) by its series: sum_k (-1)^k/k! int (a x + d x^2)^k,
+// 6 terms leave < 0.1^6 / 720 ~ 1e-9. The table's interpolation error would otherwise
+// add up over the many thin segments of a fine mesh.
+float psiSeries(float a, float d) {
+  float a2 = a * a, a3 = a2 * a, a4 = a3 * a, a5 = a4 * a, d2 = d * d, d3 = d2 * d, d4 = d3 * d, d5 = d4 * d;
+  float k1 = a / 2.0 + d / 3.0;
+  float k2 = a2 / 3.0 + a * d / 2.0 + d2 / 5.0;
+  float k3 = a3 / 4.0 + 3.0 * a2 * d / 5.0 + a * d2 / 2.0 + d3 / 7.0;
+  float k4 = a4 / 5.0 + 4.0 * a3 * d / 6.0 + 6.0 * a2 * d2 / 7.0 + 4.0 * a * d3 / 8.0 + d4 / 9.0;
+  float k5 = a5 / 6.0 + 5.0 * a4 * d / 7.0 + 10.0 * a3 * d2 / 8.0 + 10.0 * a2 * d3 / 9.0 + 5.0 * a * d4 / 10.0 + d5 / 11.0;
+  return 1.0 - k1 + k2 / 2.0 - k3 / 6.0 + k4 / 24.0 - k5 / 120.0;
+}
+
+void linearPiece(vec4 front, vec4 back, float len) {  // rgb color, a extinction
+  float tf = front.a * len, tb = back.a * len;
+  float zeta = exp(-0.5 * (tf + tb));
+  float psi = 0.5 * (tf + tb) <= 0.1 ? psiSeries(tf, 0.5 * (tb - tf))
+                                      : textureLod(psiTable, vec2(gammaUv(tf), gammaUv(tb)), 0.0).r;
+  psi = clamp(psi, zeta, 1.0);
+  composite(back.rgb * (psi - zeta) + front.rgb * (1.0 - psi), zeta);
+}
+
+float rangePos(float s) { return (s - sLo) / (sHi - sLo); }
+float rangeValue(float p) { return sLo + p * (sHi - sLo); }
+
+void integrateLinear(float sf, float sb, float len) {
+  // Constant (or varying below float resolution, where sb - sf may flush to zero and the
+  // piece lengths below would divide by it): no division, no cut.
+  if (abs(sb - sf) <= 1e-6 * max(abs(sf), abs(sb)) || sb - sf == 0.0) {
+    vec4 c = tfEval(0.5 * (sf + sb));
+    float alpha = 1.0 - exp(-c.a * len);
+    composite(c.rgb * alpha, 1.0 - alpha);
+    return;
+  }
+  float s = sf;
+  for (int k = 0; k <= tfCount + 1; ++k) {
+#if INTEGRATION_MODE == 3
+    // Espinha 2005, 4.2: the iso-detection texture says where to cut.
+    float n = float(textureSize(isoTable, 0).x);
+    float end = sb;
+    vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
+    float iso = textureLod(isoTable, uv, 0.0).r;
+    if (iso >= 0.0) {
+      float v = rangeValue(iso);
+      // The table is quantised: cut only where the point really lies ahead.
+      if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
+    }
+#else
+    float end = tfNextCut(s, sb);
+#endif
+    float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
+    linearPiece(tfEval(s), tfEval(end), pieceLen);
+    if (end == sb || accT < terminationTransmittance) return;
+    s = end;
+  }
+}
+
+void integratePreintegrated(float sf, float sb, float len) {
+  int pieces = max(1, int(ceil(len / preMaxLength)));
+  vec3 size = vec3(textureSize(preTable, 0));
+  for (int i = 0; i < pieces; ++i) {
+    float a = mix(sf, sb, float(i) / float(pieces)), b = mix(sf, sb, float(i + 1) / float(pieces));
+    vec3 x = clamp(vec3(rangePos(a), rangePos(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
+    vec4 v = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0);
+    composite(v.rgb, 1.0 - v.a);
+  }
+}
+
+// Midpoint rule on one lattice along the ray: the piece [t0, t1) is cut at every multiple
+// of the step and each part gives one sample, at its middle, over its own length. The
+// lattice is the same wherever a piece starts, so pieces integrated one by one (the tets
+// along a ray, the fragments of cell projection, the pieces between iso-surfaces) take
+// exactly the samples of one walk along the whole ray, and where the ray enters or leaves
+// the mesh between two lattice points only the part inside counts.
+void integrateSampling(float t0, float t1, float sf, float sb) {
+  float h = samplingStep;
+  for (float k = floor(t0 / h); accT >= terminationTransmittance; k += 1.0) {
+    float a = max(t0, k * h), b = min(t1, (k + 1.0) * h);
+    if (a >= t1) break;
+    if (b <= a) continue;  // the division rounded down
+    float w = (0.5 * (a + b) - t0) / max(t1 - t0, 1e-30);
+    vec4 c = tfEval(mix(sf, sb, w));
+    float alpha = 1.0 - exp(-c.a * (b - a));
+    composite(c.rgb * alpha, 1.0 - alpha);
+  }
+}
+
+// ---- the ray ---------------------------------------------------------------------
+vec3 rayOrigin, rayDir;
+
+bool clipSegment(inout float t0, inout float t1) {
+  for (int i = 0; i < clipCount; ++i) {
+    float a = dot(clipPlanes[i].xyz, rayOrigin) + clipPlanes[i].w, b = dot(clipPlanes[i].xyz, rayDir);
+    if (b == 0.0) { if (a < 0.0) return false; continue; }
+    float t = -a / b;
+    if (b > 0.0) t0 = max(t0, t); else t1 = min(t1, t);
+  }
+  return t0 < t1;
+}
+
+void integratePiece(float t0, float t1, float sf, float sb) {
+  if (t1 <= t0) return;
+#if INTEGRATION_MODE == 0 || INTEGRATION_MODE == 3
+  integrateLinear(sf, sb, t1 - t0);
+#elif INTEGRATION_MODE == 1
+  integratePreintegrated(sf, sb, t1 - t0);
+#else
+  integrateSampling(t0, t1, sf, sb);
+#endif
+}
+
+// The scalar's gradient at parameter t of the ray (the includer's geometry knows it).
+vec3 isoGradient(float t);
+
+// A piece [t0, t1] of the ray over which the scalar goes linearly from sf to sb, cut at the
+// iso-surfaces it crosses: volume pieces between crossings, each surface composited there,
+// shaded by the gradient (0.3 + 0.7 |cos| headlight).
+void integrateValues(float t0, float t1, float sf, float sb) {
+  if (isoCount == 0 || sf == sb) { integratePiece(t0, t1, sf, sb); return; }
+  // Iso-surfaces crossed in (sf, sb], in ray order (picked one by one: no local arrays,
+  // which cost registers on every invocation), between volume pieces.
+  float x0 = 0.0;
+  float shade = -1.0;
+  for (int h = 0; h < isoCount; ++h) {
+    float best = 2.0;
+    int which = -1;
+    for (int i = 0; i < isoCount; ++i) {
+      float v = isoValue[i];
+      if ((sb > sf && v > sf && v <= sb) || (sb < sf && v < sf && v >= sb)) {
+        float x = (v - sf) / (sb - sf);
+        if (x > x0 && x < best) { best = x; which = i; }
+      }
+    }
+    if (which < 0) break;
+    if (shade < 0.0) {
+      vec3 g = isoGradient(mix(t0, t1, best));
+      shade = dot(g, g) > 0.0 ? 0.3 + 0.7 * abs(dot(normalize(g), rayDir)) : 1.0;
+    }
+    integratePiece(mix(t0, t1, x0), mix(t0, t1, best), mix(sf, sb, x0), isoValue[which]);
+    vec4 c = isoColor[which];
+    composite(c.rgb * shade * c.a, 1.0 - c.a);
+    x0 = best;
+  }
+  integratePiece(mix(t0, t1, x0), t1, mix(sf, sb, x0), sb);
+}
+
+// ---- the ray of a pixel ------------------------------------------------------------
+// Sets rayOrigin and rayDir for the point `ndc` of the image (pixel `fromTop`, row 0 at
+// the top) and returns the ray's parameters at the near plane and at the far plane, or at
+// the opaque scene drawn before the volume where there is one.
+vec2 setupRay(vec2 ndc, ivec2 fromTop) {
+  vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
+  rayOrigin = orthographic ? nearPoint : eye;
+  rayDir = normalize(farPoint - rayOrigin);
+  float tNear = orthographic ? 0.0 : length(nearPoint - eye);
+  float tFar = length(farPoint - rayOrigin);
+  if (hasSceneDepth) {  // opaque geometry ends the ray where it is
+    float depth = texelFetch(sceneDepth, ivec2(fromTop.x, imageSize_.y - 1 - fromTop.y), 0).r;
+    if (depth < 1.0) {
+      vec4 hit = inverseViewProjection * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+      tFar = min(tFar, dot(hit.xyz / hit.w - rayOrigin, rayDir));
+    }
+  }
+  return vec2(tNear, tFar);
+}
