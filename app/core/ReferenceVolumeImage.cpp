@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "ReferenceVolumeImage.hpp"
 
+#include "host/optics/GridReference.hpp"
+
 #include <stdexcept>
 
 namespace volpost::app {
@@ -9,10 +11,16 @@ optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int 
                                              const Progress& progress) {
   if (!scene.session() || !scene.view()) throw std::invalid_argument("the reference renderer needs a result to render");
   const ScalarView& view = *scene.view();
-  const optics::TetVolume volume(scene.session()->tetrahedra().mesh, view.location, scene.session()->tetValues(view));
   optics::RaySettings settings;
   settings.clipPlanes = scene.volume().allClipPlanes();
   settings.isoSurfaces = scene.volume().isoSurfaces;
+  // A regular grid's own field is the trilinear interpolant of its points (what the
+  // texture renderers draw); a mesh's is linear on its tetrahedra.
+  const Model& model = scene.session()->model();
+  if (model.grid && view.location == FieldLocation::Node)
+    return optics::renderGridReference(*model.grid, view.values, scene.transferFunction(),
+                                       scene.pictureCamera(width, height), width, height, settings, progress, threads);
+  const optics::TetVolume volume(scene.session()->tetrahedra().mesh, view.location, scene.session()->tetValues(view));
   return optics::renderReference(volume, scene.transferFunction(), scene.pictureCamera(width, height), width, height, settings, progress,
                                  threads);
 }

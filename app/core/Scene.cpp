@@ -578,7 +578,10 @@ void Scene::applyToVolume() {
     changed_.volumeAll();
     culledFor_.clear();
   }
-  const std::vector<ClipPlane> planes = v.allClipPlanes();
+  if (auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get())) {
+    applyToGridVolume(*grid);
+    return;
+  }
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
   if (cullPlanes != culledFor_) changed_.geometry = true;
   const Mesh& tets = session_->tetrahedra().mesh;
@@ -596,8 +599,15 @@ void Scene::applyToVolume() {
     const std::vector<double> values = tetValues();
     volume_->setValues(culled_ ? culled_->values(view_->location, values) : values);  // only the values travel
   }
+  applyVolumeSettings();
+}
+
+// What every volume renderer takes the same way: the transfer function, planes,
+// iso-surfaces and the mode's settings.
+void Scene::applyVolumeSettings() {
+  const VolumeLayer& v = state_.volume;
   if (changed_.tables) volume_->setTransferFunction(transferFunction());
-  if (changed_.planes) volume_->setClipPlanes(planes);
+  if (changed_.planes) volume_->setClipPlanes(v.allClipPlanes());
   if (changed_.iso) volume_->setIsoSurfaces(v.isoSurfaces);
   if (changed_.mode) {
     volume_->setIntegrationMode(v.mode);
@@ -606,6 +616,27 @@ void Scene::applyToVolume() {
   }
   changed_.renderer = changed_.geometry = changed_.values = changed_.tables = false;
   changed_.planes = changed_.iso = changed_.mode = false;
+}
+
+// A grid renderer samples the grid's point values itself: no tetrahedra, no culling (the
+// clip box's planes cut exactly).
+void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
+  const Model& model = session_->model();
+  if (!model.grid)
+    throw std::invalid_argument("the volume renderer '" + state_.volume.renderer +
+                                "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
+  if (view_->location != FieldLocation::Node)
+    throw std::invalid_argument("the volume renderer '" + state_.volume.renderer +
+                                "' draws values at the grid's points; '" + view_->quantity.displayName() +
+                                "' is given per cell");
+  if (changed_.geometry) {
+    culled_.reset();
+    culledFor_.clear();
+    renderer.setGrid(*model.grid, view_->values);
+  } else if (changed_.values) {
+    renderer.setValues(view_->values);
+  }
+  applyVolumeSettings();
 }
 
 void Scene::render(const RenderContext& target) {

@@ -19,7 +19,7 @@
 
 #include <volpost/core/Camera.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/GridVolumeRenderer.hpp>
 
 #include <functional>
 #include <memory>
@@ -194,6 +194,8 @@ class Scene {
  private:
   void applyToBoundary();
   void applyToVolume();
+  void applyToGridVolume(GridVolumeRenderer& renderer);
+  void applyVolumeSettings();
   void renderVolume(const RenderContext& ctx);
   void applyToStreamlines();
   void checkStreamlines(const StreamlineLayer& layer) const;

@@ -62,6 +62,13 @@ LocalRay localRay(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 directi
   return {origin - volume.origin(), direction / len, tMin, tMax};
 }
 
+}  // namespace
+
+double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction) {
+  const double g = glm::length(gradient);
+  return g > 0.0 && std::isfinite(g) ? 0.3 + 0.7 * std::abs(glm::dot(gradient / g, direction)) : 1.0;
+}
+
 // A tet's segment with the iso-surfaces it crosses: volume pieces between crossings, each
 // surface composited at its crossing. A crossing counts when the value lies in
 // (sFront, sBack] along the ray, so a surface on a shared face is met once.
@@ -75,8 +82,7 @@ SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& 
   }
   if (hits.empty()) return integrateSegment(tf, sFront, sBack, length);
   std::sort(hits.begin(), hits.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  const double g = glm::length(gradient);
-  const double shade = g > 0.0 ? 0.3 + 0.7 * std::abs(glm::dot(gradient / g, direction)) : 1.0;
+  const double shade = isoShade(gradient, direction);
   SegmentLight total;
   double x0 = 0.0;
   for (const auto& [x, surface] : hits) {
@@ -87,8 +93,6 @@ SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& 
   compositeBehind(total, integrateSegment(tf, sFront + (sBack - sFront) * x0, sBack, (1.0 - x0) * length));
   return total;
 }
-
-}  // namespace
 
 SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
                           double tMin, double tMax, const RaySettings& settings) {
@@ -112,8 +116,8 @@ double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direc
   return length;
 }
 
-ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& tf, const Camera& camera, int width,
-                               int height, const RaySettings& settings, const Progress& progress, int threads) {
+ReferenceImage renderPixelRays(const Camera& camera, int width, int height, const PixelRay& ray,
+                               const Progress& progress, int threads) {
   ReferenceImage image{width, height, std::vector<glm::dvec4>(std::size_t(width) * std::size_t(height))};
   const double aspect = double(width) / double(height);
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
@@ -137,7 +141,7 @@ ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& 
           const glm::dvec3 dir = farPoint - start;
           const double length = glm::length(dir);
           const double tStart = ortho ? 0.0 : glm::length(nearPoint - start);
-          const SegmentLight light = integrateRay(volume, tf, start, dir, tStart, length, settings);
+          const SegmentLight light = ray(start, dir, tStart, length);
           image.pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)] =
               glm::dvec4(light.color, 1.0 - light.transmittance);
         }
@@ -151,6 +155,16 @@ ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& 
   };
   runOnThreads(unsigned(threads), work);
   return image;
+}
+
+ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& tf, const Camera& camera, int width,
+                               int height, const RaySettings& settings, const Progress& progress, int threads) {
+  return renderPixelRays(
+      camera, width, height,
+      [&](glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {
+        return integrateRay(volume, tf, origin, direction, tMin, tMax, settings);
+      },
+      progress, threads);
 }
 
 }  // namespace volpost::optics

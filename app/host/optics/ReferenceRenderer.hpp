@@ -19,6 +19,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace volpost::optics {
@@ -41,6 +42,14 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
 double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
                     const RaySettings& settings = {});
 
+/// A piece over which the scalar goes linearly from sFront to sBack, cut at the
+/// iso-surfaces it crosses (in (sFront, sBack]), each composited there, shaded by
+/// `gradient` (0.3 + 0.7 |cos| headlight against the unit `direction`).
+SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& settings, double sFront, double sBack,
+                                 double length, const glm::dvec3& gradient, const glm::dvec3& direction);
+/// The shading factor of an iso-surface with this gradient seen along the unit direction.
+double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction);
+
 struct ReferenceImage {
   int width = 0, height = 0;
   std::vector<glm::dvec4> pixels;  ///< premultiplied RGB and alpha, top row first
@@ -49,6 +58,13 @@ struct ReferenceImage {
 /// Renders the volume as seen by the camera (the same rays as the GPU renderers: through
 /// pixel centres, perspective or orthographic). Multithreaded (threads = 0: all cores).
 /// Throws Cancelled if progress says so.
+/// The pixel loop every reference shares: one ray per pixel centre (perspective or
+/// orthographic, near plane to far plane), `ray(origin, direction, tMin, tMax)` on
+/// `threads` cores (0: all), rows handed out in turn. Throws Cancelled.
+using PixelRay = std::function<SegmentLight(glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax)>;
+ReferenceImage renderPixelRays(const Camera& camera, int width, int height, const PixelRay& ray,
+                               const Progress& progress = {}, int threads = 0);
+
 ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& tf, const Camera& camera, int width,
                                int height, const RaySettings& settings = {}, const Progress& progress = {},
                                int threads = 0);

@@ -68,12 +68,48 @@ glm::dvec3 unitNormal(const ClipPlane& c) {
 void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
   gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
   mesh_ = &mesh;
+  grid_.reset();
+  gridValues_.clear();
   location_ = location;
   ++meshRevision_;
   meshDirty_ = true;
 }
 
+void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values) {
+  if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
+  if (values.size() != grid.pointCount())
+    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
+                                std::to_string(grid.pointCount()) + " points");
+  gpu_ = TetMeshGpu{};
+  gpu_.origin = grid.bounds().center();
+  // The shortest step between grid points: the tables' segment length and the march's unit.
+  gpu_.maxEdge = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
+  mesh_ = nullptr;
+  location_ = FieldLocation::Node;
+  grid_ = grid;
+  setGridValues(values);
+  ++meshRevision_;
+  meshDirty_ = true;
+}
+
+// Values go to the texture in their own frame (see TetMeshGpu::valueOffset); a value that
+// is not a finite number is drawn as the field's minimum.
+void GpuVolume::setGridValues(std::span<const double> values) {
+  setValueFrame(gpu_, values);
+  gridValues_.resize(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    gridValues_[i] = std::isfinite(values[i]) ? gpu_.gpuValue(values[i]) : 0.0f;
+}
+
 void GpuVolume::setValues(std::span<const double> values) {
+  if (grid_) {
+    if (values.size() != grid_->pointCount())
+      throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
+                                  std::to_string(grid_->pointCount()) + " points");
+    setGridValues(values);
+    valuesDirty_ = true;
+    return;
+  }
   if (!mesh_) return;
   if (!replaceValues(gpu_, *mesh_, location_, values)) {
     setVolume(*mesh_, location_, values);  // the set of renderable tets changed
@@ -132,7 +168,7 @@ void GpuVolume::release() {
   preFuture_ = {};
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &gridTexture_}) t->reset();
   programs_.clear();
   composite_.release();
   imageWidth_ = imageHeight_ = 0;
@@ -154,6 +190,8 @@ void GpuVolume::prepare(const RenderContext& ctx) {
 }
 
 void GpuVolume::uploadMesh() {
+  if (grid_) uploadGrid();
+  else gridTexture_.reset();
   upload(nodes_, gpu_.nodes);
   upload(tets_, gpu_.tets);
   upload(neighbors_, gpu_.neighbors);
@@ -167,9 +205,33 @@ void GpuVolume::uploadMesh() {
 
 // Only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet.
 void GpuVolume::uploadValues() {
-  if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
+  if (grid_) uploadGrid();
+  else if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
   else upload(cellValues_, gpu_.cellValues);
   ++valueUploads_;
+}
+
+// The grid's values as a 3D float texture, fetched texel by texel (the shader interpolates
+// in float itself: hardware filtering weighs with as few as 8 bits on some GPUs).
+void GpuVolume::uploadGrid() {
+  const auto [nx, ny, nz] = grid_->dims;
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+  if (nx > std::size_t(largest) || ny > std::size_t(largest) || nz > std::size_t(largest))
+    throw std::invalid_argument("a grid of " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
+                                std::to_string(nz) + " points is larger than this GPU's 3D textures (" +
+                                std::to_string(largest) + " per side)");
+  const bool sameSize = gridTexture_ && builtRevision_ == meshRevision_;
+  if (!sameSize) {
+    gridTexture_ = gl::createTexture(GL_TEXTURE_3D);
+    glTextureStorage3D(gridTexture_.id(), 1, GL_R32F, GLsizei(nx), GLsizei(ny), GLsizei(nz));
+    setFilter(gridTexture_.id(), GL_NEAREST);
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTextureSubImage3D(gridTexture_.id(), 0, 0, 0, 0, GLsizei(nx), GLsizei(ny), GLsizei(nz), GL_RED, GL_FLOAT,
+                      gridValues_.data());
+  if (sameSize) ++valueUploads_;
+  gl::check("GpuVolume::uploadGrid");
 }
 
 // The tables depend on the transfer function, the mode and the values' range (the tables
@@ -331,8 +393,8 @@ void GpuVolume::compositeOver(const RenderContext& ctx) const {
 VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tets.size();
-  s.meshBytes = gpu_.bytes();
-  s.gpuBytes = gpu_.bytes() + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
+  s.meshBytes = gpu_.bytes() + gridValues_.size() * sizeof(float);
+  s.gpuBytes = s.meshBytes + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
                (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
                (preTable_ ? std::size_t(preResolution) * preResolution * preResolution * 16 : 0) +
                std::size_t(imageWidth_) * imageHeight_ * 16;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
-// What every tetrahedral volume renderer of this plugin shares: the mesh and its values on
-// the GPU (TetMeshGpu), the transfer-function tables, clip planes and iso-surfaces, the
-// float image a frame is integrated into, and the GLSL that integrates one ray segment
-// through one tet (common/tet_segment.glsl). The ray caster walks rays through it; cell
-// projection rasterizes tets into it. Each owns one.
+// What every GPU volume renderer of this plugin shares: the volume on the GPU (tetrahedra
+// and their values, TetMeshGpu, or a regular grid's values as a 3D texture), the
+// transfer-function tables, clip planes and iso-surfaces, the float image a frame is
+// integrated into, and the GLSL that integrates a ray piece (common/volume_segment.glsl;
+// through one tet: common/tet_segment.glsl). The ray caster walks rays through the tets;
+// cell projection rasterizes them; the grid ray marcher samples the texture. Each owns one.
 //
 // The setters only record state (no GL). prepare(), with the context current, uploads
 // and rebuilds what changed since the last frame, once: the mesh after setVolume, the
@@ -14,6 +15,7 @@
 #include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
 
+#include <volpost/core/RegularGrid.hpp>
 #include <volpost/render/GlObjects.hpp>
 
 #include <volpost/render/VolumeRenderer.hpp>
@@ -21,6 +23,7 @@
 #include <chrono>
 #include <future>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +33,9 @@ class GpuVolume {
  public:
   // ---- state (no GL) ----
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values);
+  /// A regular grid instead of tetrahedra: its point values go to a 3D texture. Throws
+  /// std::invalid_argument for a wrong count or a grid with a defect.
+  void setGrid(const RegularGrid& grid, std::span<const double> values);
   void setValues(std::span<const double> values);
   void setTransferFunction(const TransferFunction& tf);
   void setClipPlanes(const std::vector<ClipPlane>& planes);
@@ -44,6 +50,11 @@ class GpuVolume {
   /// Changes whenever the set of tets changes (another mesh, or values that drop tets).
   std::size_t meshRevision() const { return meshRevision_; }
   bool hasTets() const { return !gpu_.tets.empty(); }
+  bool hasGrid() const { return grid_.has_value(); }
+  const RegularGrid& grid() const { return *grid_; }
+  /// The grid's values (R32F, in the values' frame), once prepare() has uploaded them.
+  GLuint gridTexture() const { return gridTexture_.id(); }
+  double samplingStep() const { return samplingStep_; }
 
   // ---- GL (a context current) ----
   void initialize();
@@ -71,6 +82,8 @@ class GpuVolume {
  private:
   void uploadMesh();
   void uploadValues();
+  void uploadGrid();
+  void setGridValues(std::span<const double> values);
   void rebuildTables();
   bool tablesNeedRebuild() const;
   void launchPreintegration();
@@ -80,6 +93,8 @@ class GpuVolume {
 
   // State.
   const Mesh* mesh_ = nullptr;
+  std::optional<RegularGrid> grid_;
+  std::vector<float> gridValues_;  ///< gpuValue per point, for the texture
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
   TransferFunction tf_;
@@ -105,7 +120,7 @@ class GpuVolume {
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
-  gl::Texture psiTable_, isoTable_, preTable_, image_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_, gridTexture_;
   int imageWidth_ = 0, imageHeight_ = 0;
 };
 

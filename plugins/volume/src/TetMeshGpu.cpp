@@ -90,6 +90,8 @@ void buildBvh(TetMeshGpu& g) {
   g.boundaryFaces = std::move(faces);
 }
 
+}  // namespace
+
 // The range of the finite values (see TetMeshGpu::valueOffset).
 void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
   double lo = INFINITY, hi = -INFINITY;
@@ -104,8 +106,6 @@ void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
   // spread beyond double's range is halved first.
   g.valueScale = std::isfinite(scale) ? scale : std::isfinite(hi - lo) ? 1.0 : 0.5 / (0.5 * hi - 0.5 * lo);
 }
-
-}  // namespace
 
 std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stays on the CPU)
   return nodes.size() * sizeof(glm::vec4) + tets.size() * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +

@@ -48,6 +48,9 @@ struct TetMeshGpu {
 
 using volpost::faceNeighbors;  // volpost/core/TetAdjacency.hpp: shared by the GPU structure and the sorter
 
+/// Sets valueMin/Max and the frame (valueOffset, valueScale) from the finite values.
+void setValueFrame(TetMeshGpu& gpu, std::span<const double> values);
+
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);
 

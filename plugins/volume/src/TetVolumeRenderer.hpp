@@ -1,16 +1,18 @@
 // SPDX-License-Identifier: MIT
-// The part of the VolumeRenderer interface that every renderer of this plugin answers the
-// same way: state goes to its GpuVolume. A renderer adds how it turns that volume into
-// a frame (walking rays, projecting tets).
+// The part of the VolumeRenderer interface that every GPU renderer of this plugin answers
+// the same way: state goes to its GpuVolume. A renderer adds how it turns that volume into
+// a frame (walking rays, projecting tets, marching through a grid). `Interface` is
+// VolumeRenderer, or GridVolumeRenderer for the grid renderers.
 #pragma once
 
 #include "GpuVolume.hpp"
 
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/GridVolumeRenderer.hpp>
 
 namespace volpost::volume {
 
-class TetVolumeRenderer : public VolumeRenderer {
+template <typename Interface>
+class GpuVolumeRenderer : public Interface {
  public:
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override {
     volume_.setVolume(mesh, location, values);
@@ -34,5 +36,7 @@ class TetVolumeRenderer : public VolumeRenderer {
  protected:
   GpuVolume volume_;
 };
+
+using TetVolumeRenderer = GpuVolumeRenderer<VolumeRenderer>;
 
 }  // namespace volpost::volume

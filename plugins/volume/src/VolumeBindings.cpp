@@ -13,7 +13,8 @@ std::string glslDefines() {
       {"BINDING_TF_COLOR_TAU", kTfColorTau}, {"BINDING_TF_VALUES", kTfValues},
       {"BINDING_ORDER", kOrder},         {"UNIT_PSI", kPsiTable},
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
-      {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage}};
+      {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
+      {"UNIT_GRID", kGrid}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

@@ -28,6 +28,7 @@ inline constexpr GLuint kIsoTable = 1;
 inline constexpr GLuint kPreTable = 2;
 inline constexpr GLuint kSceneDepth = 3;
 inline constexpr GLuint kImage = 4;          ///< the float image (composite pass, image unit 0)
+inline constexpr GLuint kGrid = 5;           ///< a regular grid's values (3D texture)
 
 /// "#define BINDING_NODES 0\n..." for every constant above.
 std::string glslDefines();

@@ -1,0 +1,109 @@
+#version 450 core
+// GPU ray marching through a regular grid, one invocation per pixel: the ray is cut to the
+// grid's box and the clip planes, stepped on a lattice of marchStep along it (the same
+// lattice wherever a ray starts, so the picture does not shimmer as the camera moves), the
+// value at each step interpolated trilinearly from the 8 points around it, and each piece
+// between two steps integrated with the scalar linear along it (common/volume_segment.glsl).
+// A frame is one or more passes of at most stepsPerPass steps per ray: each pass resumes
+// where the last stopped (its parameter and transmittance in resumeAt). Long loops in one
+// invocation are what drivers cut short: llvmpipe ends every loop of an invocation after
+// 65535 iterations in all, silently; a GPU's watchdog resets the device.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f, binding = 0) uniform image2D outImage;    // premultiplied color, alpha
+layout(rg32f, binding = 1) uniform image2D resumeAt;      // (t to resume at, or -1 when done; transmittance)
+uniform bool firstPass;
+uniform int stepsPerPass;
+
+#include "common/volume_segment.glsl"
+
+layout(binding = UNIT_GRID) uniform sampler3D gridValues;  // R32F, values in their frame
+uniform mat4 worldToIndex;  // volume-relative position -> continuous grid index
+uniform ivec3 gridSize;     // points per axis
+uniform float marchStep;    // along the ray, model units
+
+vec3 rayIndexOrigin, rayIndexDir;  // the ray in index space
+
+// Trilinear interpolation in float from the 8 points around `index` (clamped to the grid).
+float valueAtIndex(vec3 index) {
+  vec3 top = vec3(gridSize - 1);
+  vec3 x = clamp(index, vec3(0.0), top);
+  vec3 cell = min(floor(x), max(top - 1.0, vec3(0.0)));
+  vec3 w = x - cell;
+  ivec3 c = ivec3(cell);
+  ivec3 step1 = ivec3(greaterThan(gridSize, ivec3(1)));
+  float v000 = texelFetch(gridValues, c, 0).r;
+  float v100 = texelFetch(gridValues, c + ivec3(step1.x, 0, 0), 0).r;
+  float v010 = texelFetch(gridValues, c + ivec3(0, step1.y, 0), 0).r;
+  float v110 = texelFetch(gridValues, c + ivec3(step1.x, step1.y, 0), 0).r;
+  float v001 = texelFetch(gridValues, c + ivec3(0, 0, step1.z), 0).r;
+  float v101 = texelFetch(gridValues, c + ivec3(step1.x, 0, step1.z), 0).r;
+  float v011 = texelFetch(gridValues, c + ivec3(0, step1.y, step1.z), 0).r;
+  float v111 = texelFetch(gridValues, c + step1, 0).r;
+  float a = mix(mix(v000, v100, w.x), mix(v010, v110, w.x), w.y);
+  float b = mix(mix(v001, v101, w.x), mix(v011, v111, w.x), w.y);
+  return mix(a, b, w.z);
+}
+
+float valueAlongRay(float t) { return valueAtIndex(rayIndexOrigin + t * rayIndexDir); }
+
+// The trilinear field's gradient by central differences of half a grid step, in model units.
+vec3 isoGradient(float t) {
+  vec3 index = rayIndexOrigin + t * rayIndexDir;
+  vec3 g = vec3(valueAtIndex(index + vec3(0.5, 0.0, 0.0)) - valueAtIndex(index - vec3(0.5, 0.0, 0.0)),
+                valueAtIndex(index + vec3(0.0, 0.5, 0.0)) - valueAtIndex(index - vec3(0.0, 0.5, 0.0)),
+                valueAtIndex(index + vec3(0.0, 0.0, 0.5)) - valueAtIndex(index - vec3(0.0, 0.0, 0.5)));
+  return transpose(mat3(worldToIndex)) * g;  // ds/dworld = J^T ds/dindex
+}
+
+// The part of the ray inside the grid's box [0, size - 1]^3 (in index space): false if none.
+bool insideGrid(inout float t0, inout float t1) {
+  vec3 top = vec3(gridSize - 1);
+  for (int a = 0; a < 3; ++a) {
+    float o = rayIndexOrigin[a], d = rayIndexDir[a];
+    if (d == 0.0) {
+      if (o < 0.0 || o > top[a]) return false;
+      continue;
+    }
+    float ta = (0.0 - o) / d, tb = (top[a] - o) / d;
+    t0 = max(t0, min(ta, tb));
+    t1 = min(t1, max(ta, tb));
+  }
+  return t0 < t1;
+}
+
+void main() {
+  ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+  if (pix.x >= imageSize_.x || pix.y >= imageSize_.y) return;
+  vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
+                  1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
+  float t = -1.0;
+  if (!firstPass) {
+    vec2 resume = imageLoad(resumeAt, pix).xy;
+    if (resume.x < 0.0) return;  // this ray is done
+    t = resume.x;
+    accColor = imageLoad(outImage, pix).rgb;
+    accT = resume.y;
+  }
+  // The ray and its extent, the same numbers in every pass.
+  vec2 range = setupRay(ndc, pix);
+  rayIndexOrigin = (worldToIndex * vec4(rayOrigin, 1.0)).xyz;
+  rayIndexDir = mat3(worldToIndex) * rayDir;
+  float t0 = range.x, t1 = range.y;
+  bool inside = insideGrid(t0, t1) && clipSegment(t0, t1);
+  if (firstPass) t = inside ? t0 : t1;
+  if (inside && t < t1) {
+    float sf = valueAlongRay(t);
+    for (int n = 0; n < stepsPerPass && t < t1 && accT >= terminationTransmittance; ++n) {
+      float next = min((floor(t / marchStep) + 1.0) * marchStep, t1);
+      if (next <= t) next = min(t + marchStep, t1);  // t beyond float's resolution of the lattice
+      if (next <= t) { t = t1; break; }
+      float sb = valueAlongRay(next);
+      integrateValues(t, next, sf, sb);
+      t = next;
+      sf = sb;
+    }
+  }
+  bool done = !inside || t >= t1 || accT < terminationTransmittance;
+  imageStore(resumeAt, pix, vec4(done ? -1.0 : t, accT, 0.0, 0.0));
+  imageStore(outImage, pix, vec4(accColor, 1.0 - accT));
+}

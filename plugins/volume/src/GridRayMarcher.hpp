@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// GPU ray marching through a regular grid (compute shader, one invocation per pixel): each
+// ray is cut to the grid's box and the clip planes, then stepped on a fixed lattice along
+// it (half the shortest grid spacing unless a sampling step is set); the value at each
+// step is the trilinear interpolation of the 8 surrounding points (in float, in the
+// shader), and each piece between steps is integrated with the scalar linear along it, in
+// the chosen mode (exact linear segments, pre-integrated, sampled), iso-surfaces shaded by
+// the trilinear gradient. The float image is composited over the target.
+#pragma once
+
+#include "TetVolumeRenderer.hpp"
+
+namespace volpost::volume {
+
+class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
+ public:
+  std::string name() const override { return "texture-raymarch"; }
+  void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
+  void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
+  void initialize() override { volume_.initialize(); }
+  void release() override;
+  void render(const RenderContext& ctx) override;
+  /// The step along the ray the next frame uses, model units.
+  double marchStep() const;
+  /// Compute passes the last frame took (each at most kStepsPerPass steps per ray).
+  int lastPasses() const { return lastPasses_; }
+  /// Steps per ray in one pass: with the ~14 loop iterations a step costs in the shader,
+  /// far below the 65535 loop iterations llvmpipe allows an invocation.
+  static constexpr int kStepsPerPass = 1024;
+
+ private:
+  void ensureResumeImage(int width, int height);
+  gl::Texture resume_;
+  int resumeWidth_ = 0, resumeHeight_ = 0;
+  int lastPasses_ = 0;
+};
+
+}  // namespace volpost::volume

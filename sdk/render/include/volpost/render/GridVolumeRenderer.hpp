@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Volume renderers of regular grids (seismic cubes, image data): the values of a
+// RegularGrid's points sampled as a 3D texture. The rest of the contract (transfer
+// function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's; a grid
+// renderer's setVolume() throws std::invalid_argument (it draws grids, not tetrahedra).
+#pragma once
+
+#include <volpost/core/RegularGrid.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
+
+namespace volpost {
+
+class GridVolumeRenderer : public VolumeRenderer {
+ public:
+  /// One value per grid point (RegularGrid::pointIndex order); the values are copied, the
+  /// grid too. Throws std::invalid_argument for a wrong count or a grid with a defect().
+  /// setValues() then replaces the values only.
+  virtual void setGrid(const RegularGrid& grid, std::span<const double> pointValues) = 0;
+};
+
+}  // namespace volpost
