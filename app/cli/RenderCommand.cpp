@@ -212,7 +212,6 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
   if (renderer == "cpu") {
     refuse(o.mode, "chooses a GPU integration; the CPU ray caster integrates exactly");
-    refuse(o.samplingStep, "is not used by the CPU ray caster (it integrates exactly)");
   }
   if (reference) {
     refuse(o.mode, "chooses a GPU integration; the reference renderer integrates exactly");
@@ -400,6 +399,9 @@ int runRender(const QStringList& args) {
       }
       if (rendererName != "surface" && !scene.view())
         throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
+      if (rendererName == "cpu" && parser.isSet(o.samplingStep) && !session->model().grid)
+        throw UsageError("--sampling-step is not used by the CPU ray caster on meshes (it integrates exactly); on "
+                         "regular grids it sets the step of its march");
       if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
       scene.setVolumeShown(rendererName != "surface");
       const auto draw = [&] {

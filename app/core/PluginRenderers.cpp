@@ -2,6 +2,7 @@
 #include "PluginRenderers.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
+#include <volpost/render/GridVolumeRenderer.hpp>
 
 namespace volpost::app {
 namespace {
@@ -24,7 +25,10 @@ std::vector<RendererEntry> volumeRenderers(const PluginManager& plugins) {
   std::vector<RendererEntry> out;
   for (RendererPlugin* plugin : plugins.rendererPlugins())
     for (const QString& name : plugin->rendererNames())
-      if (create(plugins, name)) out.push_back({name, plugin->rendererLabel(name)});
+      if (const auto renderer = create(plugins, name)) {
+        const auto* grid = dynamic_cast<const GridVolumeRenderer*>(renderer.get());
+        out.push_back({name, plugin->rendererLabel(name), !grid || grid->drawsTetrahedra(), grid != nullptr});
+      }
   return out;
 }
 

@@ -15,6 +15,8 @@ namespace volpost::app {
 struct RendererEntry {
   QString name;   ///< what the command line and state files say ("raycast")
   QString label;  ///< what the menu says ("Ray casting"), from the plugin
+  bool drawsMeshes = true;   ///< meshes of tetrahedra (any mesh, split into them)
+  bool drawsGrids = false;   ///< regular grids as grids (a GridVolumeRenderer)
 };
 
 /// Every volume renderer of every loaded renderer plugin, in plugin order.

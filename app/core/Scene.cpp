@@ -578,7 +578,8 @@ void Scene::applyToVolume() {
     changed_.volumeAll();
     culledFor_.clear();
   }
-  if (auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get())) {
+  if (auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get());
+      grid && (session_->model().grid || !grid->drawsTetrahedra())) {
     applyToGridVolume(*grid);
     return;
   }

@@ -255,10 +255,33 @@ void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
                            " (View > Volume Renderer to change)", 10000);
 }
 
+void MainWindow::fitRendererToModel() {
+  if (rendererChosen_ || !session_) return;
+  const bool grid = session_->model().grid.has_value();
+  const std::string current = viewport_->scene().volume().renderer;
+  const auto entry = [this](const std::string& name) -> const RendererEntry* {
+    for (const RendererEntry& r : renderers_)
+      if (r.name.toStdString() == name) return &r;
+    return nullptr;
+  };
+  const RendererEntry* now = entry(current);
+  if (now && (grid ? now->drawsGrids : now->drawsMeshes)) return;
+  for (const RendererEntry& r : renderers_) {
+    if (!(grid ? r.drawsGrids : r.drawsMeshes)) continue;
+    if (!changeScene([&](Scene& s) { s.setVolumeRenderer(r.name.toStdString()); })) return;
+    if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
+      const QSignalBlocker block(a);
+      a->setChecked(true);
+    }
+    return;
+  }
+}
+
 void MainWindow::buildVolumeMenu(QMenu* view) {
   // Every GPU volume renderer the plugins offer, named as the plugin names it; the first
   // is used until another is chosen.
-  const std::vector<RendererEntry> renderers = volumeRenderers(plugins_);
+  renderers_ = volumeRenderers(plugins_);
+  const std::vector<RendererEntry>& renderers = renderers_;
   view->addSeparator();
   QMenu* rendererMenu = view->addMenu("Volume &Renderer");
   auto* rendererGroup = new QActionGroup(this);
@@ -780,6 +803,7 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
     const QSignalBlocker block(action);
     action->setChecked(false);
   }
+  fitRendererToModel();
   fillQuantities();
   showModelInfo();
   std::size_t warnings = 0;

@@ -3,6 +3,7 @@
 // and plugin panels. Loading runs on a worker thread behind a cancellable progress dialog.
 #pragma once
 
+#include "../core/PluginRenderers.hpp"
 #include "../core/ModelSession.hpp"
 #include "../core/SceneState.hpp"
 
@@ -97,6 +98,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   void notifyPanels();
   void buildVolumeMenu(QMenu* view);
   void preferCpuOnSoftwareGl(const QString& description);
+  /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
+  /// renderer for a seismic cube, a mesh renderer for a mesh).
+  void fitRendererToModel();
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();
@@ -121,6 +125,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QTextBrowser* modelInfo_ = nullptr;
   QLabel* glLabel_ = nullptr;
   QLabel* refiningLabel_ = nullptr;  ///< shown while the renderer refines a quick frame
+  std::vector<RendererEntry> renderers_;  ///< the volume renderers of the menu, in its order
   bool rendererChosen_ = false;      ///< by the user or a state file: no automatic choice then
   QAction* edgesAction_ = nullptr;
   QAction* volumeAction_ = nullptr;

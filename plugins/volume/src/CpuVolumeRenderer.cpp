@@ -32,6 +32,7 @@ void CpuVolumeRenderer::release() {
 
 void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
   walkMesh_ = std::make_shared<const TetWalkMesh>(mesh, location, values);  // throws before anything changes
+  grid_.reset();
   mesh_ = &mesh;
   location_ = location;
   ++meshUploads_;
@@ -39,7 +40,30 @@ void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std:
   visible_.reset();
 }
 
+void CpuVolumeRenderer::setGrid(const RegularGrid& grid, std::span<const double> values) {
+  grid_ = std::make_shared<const GridSamples>(grid, values);  // throws before anything changes
+  walkMesh_.reset();
+  mesh_ = nullptr;
+  location_ = FieldLocation::Node;
+  ++meshUploads_;
+  ++revision_;
+  visible_.reset();
+}
+
+void CpuVolumeRenderer::setSamplingStep(double step) {
+  if (!(step >= 0.0) || !std::isfinite(step))
+    throw std::invalid_argument("the sampling step must be a length >= 0, not " + std::to_string(step));
+  if (step != gridStep_) ++revision_;
+  gridStep_ = step;
+}
+
 void CpuVolumeRenderer::setValues(std::span<const double> values) {
+  if (grid_) {
+    grid_ = std::make_shared<const GridSamples>(grid_->grid(), values);
+    ++valueUploads_;
+    ++revision_;
+    return;
+  }
   if (!mesh_) throw std::logic_error("CpuVolumeRenderer::setValues before setVolume");
   walkMesh_ = std::make_shared<const TetWalkMesh>(*mesh_, location_, values);
   ++valueUploads_;
@@ -93,6 +117,18 @@ std::shared_ptr<const VisiblePart> CpuVolumeRenderer::visiblePart() {
   return visible_;
 }
 
+std::function<CpuImage(const Camera&, int, int, const CpuRaySettings&, const Progress&)> CpuVolumeRenderer::frameMaker() {
+  if (grid_)
+    return [grid = grid_, tf = tf_, step = gridStep_, threads = threads_](const Camera& camera, int w, int h,
+                                                                          const CpuRaySettings& s, const Progress& p) {
+      return renderCpuGrid(*grid, tf, camera, w, h, s, step, p, threads);
+    };
+  return [mesh = walkMesh_, part = visiblePart(), tf = tf_, threads = threads_](const Camera& camera, int w, int h,
+                                                                               const CpuRaySettings& s, const Progress& p) {
+    return renderCpu(*mesh, *part, tf, camera, w, h, s, p, threads);
+  };
+}
+
 int CpuVolumeRenderer::reductionFor(int width, int height) const {
   if (msPerRay_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
   const double fullMs = msPerRay_ * double(width) * double(height);
@@ -100,7 +136,7 @@ int CpuVolumeRenderer::reductionFor(int width, int height) const {
 }
 
 void CpuVolumeRenderer::render(const RenderContext& ctx) {
-  if (!walkMesh_ || ctx.width <= 0 || ctx.height <= 0) return;
+  if ((!walkMesh_ && !grid_) || ctx.width <= 0 || ctx.height <= 0) return;
   FrameKey key;
   key.viewProjection = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix();
   key.width = ctx.width;
@@ -119,7 +155,7 @@ void CpuVolumeRenderer::render(const RenderContext& ctx) {
   CpuRaySettings settings = settings_;
   settings.sceneDepth = key.depth;
   if (!asynchronous_) {
-    image_ = renderCpu(*walkMesh_, *visiblePart(), tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+    image_ = frameMaker()(ctx.camera, ctx.width, ctx.height, settings, {});
     measured(image_);
     shownKey_ = key;
     shownReduction_ = 1;
@@ -139,23 +175,23 @@ void CpuVolumeRenderer::render(const RenderContext& ctx) {
   if (!(shownKey_ == key && shownReduction_ == 1)) {
     cancelJob();
     const int reduction = reductionFor(ctx.width, ctx.height);
-    const std::shared_ptr<const VisiblePart> part = visiblePart();
+    const auto frame = frameMaker();
     if (reduction == 1) {
-      image_ = renderCpu(*walkMesh_, *part, tf_, ctx.camera, ctx.width, ctx.height, settings, {}, threads_);
+      image_ = frame(ctx.camera, ctx.width, ctx.height, settings, {});
       measured(image_);
     } else {
       // A quick frame now (same camera, fewer rays), the full one on worker threads.
       const int w = std::max(1, ctx.width / reduction), h = std::max(1, ctx.height / reduction);
       CpuRaySettings quick = settings;
       quick.sceneDepth.clear();  // one depth per full-size pixel: not for the reduced rays
-      image_ = renderCpu(*walkMesh_, *part, tf_, ctx.camera, w, h, quick, {}, threads_);
+      image_ = frame(ctx.camera, w, h, quick, {});
       measured(image_);
       jobCancelled_ = std::make_shared<std::atomic<bool>>(false);
       jobKey_ = key;
-      job_ = std::async(std::launch::async, [mesh = walkMesh_, part, tf = tf_, camera = ctx.camera, width = ctx.width,
-                                             height = ctx.height, settings, threads = threads_, cancelled = jobCancelled_] {
-        return renderCpu(*mesh, *part, tf, camera, width, height, settings,
-                         Progress([cancelled](double, const std::string&) { return !*cancelled; }), threads);
+      job_ = std::async(std::launch::async, [frame, camera = ctx.camera, width = ctx.width, height = ctx.height,
+                                             settings, cancelled = jobCancelled_] {
+        return frame(camera, width, height, settings,
+                     Progress([cancelled](double, const std::string&) { return !*cancelled; }));
       });
     }
     shownKey_ = key;
@@ -183,7 +219,7 @@ void CpuVolumeRenderer::show(const RenderContext& ctx) {
 
 VolumeStats CpuVolumeRenderer::stats() const {
   VolumeStats s;
-  s.tetrahedra = walkMesh_ ? walkMesh_->tetCount() : 0;
+  s.tetrahedra = walkMesh_ ? walkMesh_->tetCount() : 0;  // a grid is marched: none
   s.gpuBytes = std::size_t(textureWidth_) * std::size_t(textureHeight_) * 16;  // the image only: the mesh stays in host memory
   s.meshBytes = 0;
   s.meshUploads = meshUploads_;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Volume renderers of regular grids (seismic cubes, image data): the values of a
 // RegularGrid's points sampled as a 3D texture. The rest of the contract (transfer
-// function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's; a grid
-// renderer's setVolume() throws std::invalid_argument (it draws grids, not tetrahedra).
+// function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's. A
+// renderer that draws only grids says so (drawsTetrahedra() false) and its setVolume()
+// throws std::invalid_argument; one that draws both is given grids as grids.
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
@@ -16,6 +17,8 @@ class GridVolumeRenderer : public VolumeRenderer {
   /// grid too. Throws std::invalid_argument for a wrong count or a grid with a defect().
   /// setValues() then replaces the values only.
   virtual void setGrid(const RegularGrid& grid, std::span<const double> pointValues) = 0;
+  /// Whether setVolume() takes meshes of tetrahedra too.
+  virtual bool drawsTetrahedra() const { return false; }
 };
 
 }  // namespace volpost
