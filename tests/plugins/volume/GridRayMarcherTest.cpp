@@ -7,6 +7,7 @@
 // clip planes and iso-surfaces, on a rotated, anisotropic grid.
 #include "VolumeImageFixture.hpp"
 
+#include "CpuGridMarcher.hpp"
 #include "GridRayMarcher.hpp"
 #include "host/optics/GridReference.hpp"
 
@@ -182,4 +183,114 @@ TEST_F(GridMarch, RefusesMeshesAndWrongValueCounts) {
   RegularGrid flat = g;
   flat.dims = {9, 1, 6};
   EXPECT_THROW(marcher().setGrid(flat, std::vector<double>(54, 1.0)), std::invalid_argument);
+}
+
+// ---- the CPU marcher (renderer "cpu" on grids) -----------------------------------------
+
+namespace {
+
+ImageError cpuAgainstReference(const RegularGrid& g, const std::vector<double>& values, const TransferFunction& tf,
+                               double step, const Camera& camera, int size, const optics::RaySettings& settings = {},
+                               volume::CpuRenderStats* stats = nullptr) {
+  volume::CpuRaySettings cpu;
+  cpu.clipPlanes = settings.clipPlanes;
+  cpu.isoSurfaces = settings.isoSurfaces;
+  cpu.terminationTransmittance = 0.0;
+  const volume::CpuImage image =
+      volume::renderCpuGrid(volume::GridSamples(g, values), tf, camera, size, size, cpu, step);
+  if (stats) *stats = image.stats;
+  return RayCast::compare(image.rgba, optics::renderGridReference(g, values, tf, camera, size, size, settings));
+}
+
+}  // namespace
+
+TEST(CpuGridMarch, ConvergesToTheReferenceAtSecondOrderInItsStep) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  const Camera camera = gridCamera(g);
+  const ImageError half = cpuAgainstReference(g, values, kGridTf, 0.0, camera, 64);  // default: half the shortest spacing
+  const ImageError eighth = cpuAgainstReference(g, values, kGridTf, 0.075, camera, 64);
+  std::printf("cpu grid march vs trilinear reference: default step RMSE %.3g max %.3g; step 0.075 RMSE %.3g max %.3g\n",
+              half.rmse, half.max, eighth.rmse, eighth.max);
+  EXPECT_LE(half.rmse, 3e-3);
+  EXPECT_LE(half.max, 3e-2);
+  EXPECT_LE(eighth.rmse, half.rmse / 8.0);
+  EXPECT_LE(eighth.rmse, 2e-4);
+}
+
+TEST(CpuGridMarch, SkipsBricksTheTransferFunctionHidesWithoutChangingThePicture) {
+  // 40 x 30 x 24 points (5 x 4 x 3 bricks); only values above 4.5 are visible.
+  RegularGrid g;
+  g.dims = {40, 30, 24};
+  g.origin = {0, 0, 0};
+  g.axes = {glm::dvec3(0.25, 0, 0), glm::dvec3(0, 0.25, 0), glm::dvec3(0, 0, 0.25)};
+  std::vector<double> values(g.pointCount());
+  for (std::size_t k = 0; k < g.dims[2]; ++k)
+    for (std::size_t j = 0; j < g.dims[1]; ++j)
+      for (std::size_t i = 0; i < g.dims[0]; ++i) {
+        const glm::dvec3 p = g.position(double(i), double(j), double(k)) - glm::dvec3(7.0, 5.0, 3.0);
+        values[g.pointIndex(i, j, k)] = 6.0 * std::exp(-glm::dot(p, p) / 2.0);  // a blob in one corner
+      }
+  const TransferFunction peak({{4.5, {1, 0.5, 0.2}, 0.0}, {6.0, {1, 1, 0.5}, 3.0}});
+  const TransferFunction everywhere({{0.0, {1, 0.5, 0.2}, 0.01}, {6.0, {1, 1, 0.5}, 3.0}});
+  const Camera camera = gridCamera(g);
+  volume::CpuRenderStats skipping, walking;
+  const ImageError e = cpuAgainstReference(g, values, peak, 0.05, camera, 64, {}, &skipping);
+  (void)cpuAgainstReference(g, values, everywhere, 0.05, camera, 64, {}, &walking);
+  std::printf("cpu grid march, sharp peak in one corner: RMSE %.3g max %.3g; %zu steps (%zu with nothing to skip)\n",
+              e.rmse, e.max, skipping.steps, walking.steps);
+  EXPECT_LE(e.rmse, 2e-4);
+  EXPECT_LE(e.max, 5e-3);
+  EXPECT_LT(skipping.steps * 3, walking.steps);  // most of the box is crossed a brick at a time
+}
+
+TEST(CpuGridMarch, ClipPlanesAndIsoSurfacesMatchTheReference) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  optics::RaySettings settings;
+  settings.clipPlanes = {{g.bounds().center(), {0.3, -1.0, 0.2}}};
+  settings.isoSurfaces = {{4.2, {1.0, 0.7, 0.1}, 0.5}};
+  const ImageError e = cpuAgainstReference(g, values, kGridTf, 0.05, gridCamera(g), 64, settings);
+  std::printf("cpu grid march with a clip plane and an iso-surface: RMSE %.3g max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-3);
+  EXPECT_LE(e.max, 0.1);
+}
+
+TEST_F(GridMarch, TheCpuAndGpuMarchersAgreeAndTheCpuRendererConvergesToItsFullFrame) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  const Camera camera = gridCamera(g);
+  marcher().setGrid(g, values);
+  marcher().setTransferFunction(kGridTf);
+  marcher().setTerminationThreshold(0.0);
+  const std::vector<float> gpu = gpuImage(camera, 64, 64);
+
+  volume::CpuVolumeRenderer cpu;
+  cpu.initialize();
+  cpu.setGrid(g, values);
+  cpu.setTransferFunction(kGridTf);
+  cpu.setTerminationThreshold(0.0);
+  const std::vector<float> full = imageOf(cpu, camera, 64, 64);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < gpu.size(); ++i) worst = std::max(worst, std::abs(double(gpu[i]) - full[i]));
+  std::printf("cpu vs gpu grid march, same step: max %.3g\n", worst);
+  EXPECT_LE(worst, 1e-4);  // the same lattice and pieces; float on the GPU, exact psi on the CPU
+
+  cpu.setAsynchronousUpdates(true);
+  cpu.setQuickFrameBudget(0.001);  // forces a reduced frame first
+  cpu.setTransferFunction(TransferFunction(kGridTf.points()));  // a change: a new frame
+  Camera moved = camera;
+  moved.orbit(5.0, 0.0);
+  (void)imageOf(cpu, moved, 64, 64);
+  EXPECT_GT(cpu.shownReduction(), 1);
+  for (int i = 0; i < 500 && cpu.hasPendingWork(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    (void)imageOf(cpu, moved, 64, 64);
+  }
+  const std::vector<float> converged = imageOf(cpu, moved, 64, 64);
+  EXPECT_EQ(cpu.shownReduction(), 1);
+  cpu.setAsynchronousUpdates(false);
+  cpu.setTransferFunction(TransferFunction(kGridTf.points()));
+  EXPECT_EQ(converged, imageOf(cpu, moved, 64, 64));
+  cpu.release();
 }
