@@ -402,7 +402,11 @@ int runRender(const QStringList& args) {
       if (rendererName == "cpu" && parser.isSet(o.samplingStep) && !session->model().grid)
         throw UsageError("--sampling-step is not used by the CPU ray caster on meshes (it integrates exactly); on "
                          "regular grids it sets the step of its march");
-      if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
+      try {
+        if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+      }
       scene.setVolumeShown(rendererName != "surface");
       const auto draw = [&] {
         return rendererName == "reference"

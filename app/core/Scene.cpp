@@ -141,7 +141,12 @@ void Scene::setVolumeShown(bool shown) {
 }
 
 void Scene::setVolumeRenderer(const std::string& name) {
-  if (!factory_(name)) throw std::invalid_argument("no volume renderer named '" + name + "' is loaded");
+  const std::unique_ptr<VolumeRenderer> candidate = factory_(name);
+  if (!candidate) throw std::invalid_argument("no volume renderer named '" + name + "' is loaded");
+  const auto* grid = dynamic_cast<const GridVolumeRenderer*>(candidate.get());
+  if (grid && !grid->drawsTetrahedra() && session_ && !session_->model().grid)
+    throw std::invalid_argument("the volume renderer '" + name +
+                                "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
   if (name == state_.volume.renderer) return;
   state_.volume.renderer = name;
   changed_.renderer = true;

@@ -249,30 +249,34 @@ void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
   QAction* cpu = findChild<QAction*>("renderer:cpu");
   if (!cpu || cpu->isChecked()) return;
   if (!changeScene([](Scene& s) { s.setVolumeRenderer("cpu"); })) return;
-  const QSignalBlocker block(cpu);
-  cpu->setChecked(true);
+  checkRendererAction("cpu");
   statusBar()->showMessage("OpenGL is drawn by the CPU here: volume rendering uses " + cpu->text() +
                            " (View > Volume Renderer to change)", 10000);
 }
 
-void MainWindow::fitRendererToModel() {
-  if (rendererChosen_ || !session_) return;
-  const bool grid = session_->model().grid.has_value();
-  const std::string current = viewport_->scene().volume().renderer;
-  const auto entry = [this](const std::string& name) -> const RendererEntry* {
-    for (const RendererEntry& r : renderers_)
-      if (r.name.toStdString() == name) return &r;
-    return nullptr;
-  };
-  const RendererEntry* now = entry(current);
-  if (now && (grid ? now->drawsGrids : now->drawsMeshes)) return;
-  for (const RendererEntry& r : renderers_) {
-    if (!(grid ? r.drawsGrids : r.drawsMeshes)) continue;
-    if (!changeScene([&](Scene& s) { s.setVolumeRenderer(r.name.toStdString()); })) return;
+// The menu shows `name` as the renderer, without triggering it (signals blocked, so the
+// group's exclusivity is done by hand).
+void MainWindow::checkRendererAction(const QString& name) {
+  for (const RendererEntry& r : renderers_)
     if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
       const QSignalBlocker block(a);
-      a->setChecked(true);
+      a->setChecked(r.name == name);
     }
+}
+
+void MainWindow::fitRendererToModel() {
+  if (!session_) return;
+  const bool grid = session_->model().grid.has_value();
+  const auto draws = [grid](const RendererEntry& r) { return grid ? r.drawsGrids : r.drawsMeshes; };
+  const std::string current = viewport_->scene().volume().renderer;
+  for (const RendererEntry& r : renderers_)
+    if (r.name.toStdString() == current && (draws(r) || (rendererChosen_ && r.drawsMeshes))) return;
+  // The first in the menu's order that draws this kind of model.
+  for (const RendererEntry& r : renderers_) {
+    if (!draws(r)) continue;
+    if (!changeScene([&](Scene& s) { s.setVolumeRenderer(r.name.toStdString()); })) return;
+    checkRendererAction(r.name);
+    if (rendererChosen_) statusBar()->showMessage("Volume renderer for this model: " + r.label, 10000);
     return;
   }
 }

@@ -101,6 +101,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
   /// renderer for a seismic cube, a mesh renderer for a mesh).
   void fitRendererToModel();
+  void checkRendererAction(const QString& name);
   void setVolumeShown(bool on);
   void chooseClipBox();
   void chooseIsoSurfaces();

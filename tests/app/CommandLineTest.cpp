@@ -468,3 +468,48 @@ TEST(PlotCommand, SamplesALineAsATableAndAChart) {
   EXPECT_EQ(runVolpost("plot " + model + " --from 1,1,1 --to 2,1,1 --step 3 --csv " + csv).exitCode, 2);
   EXPECT_EQ(runVolpost("probe " + model + " --at 5,0.5,0.5 --field S.nope").exitCode, 2);
 }
+
+// ---- seismic volumes ------------------------------------------------------------------
+
+TEST(SeismicCommands, InfoDescribesTheGridAndRenderersDrawIt) {
+  const std::string cube = dataFile("seismic/synthetic_12x10x40.sgy");
+  const auto info = runVolpost("info " + cube);
+  EXPECT_EQ(info.exitCode, 0) << info.output;
+  EXPECT_NE(info.output.find("SEG-Y seismic volume (revision 1, big-endian)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("grid:     12 inline (1000 .. 1011 by 1) x 10 crossline (2000 .. 2009 by 1) x 40 time (ms) "
+                             "(0 .. 156 by 4)"),
+            std::string::npos)
+      << info.output;
+  EXPECT_NE(info.output.find("samples:  16-bit integer (format 3) in the file"), std::string::npos) << info.output;
+  const std::string out = (std::filesystem::temp_directory_path() / "volpost_seismic.png").string();
+  for (const std::string renderer : {"texture-raymarch", "cpu --sampling-step 2", "reference", "surface"}) {
+    std::filesystem::remove(out);
+    const auto r = runVolpost("render " + cube + " --field amplitude --size 64x48 --renderer " + renderer + " -o " + out);
+    EXPECT_EQ(r.exitCode, 0) << renderer << ": " << r.output;
+    EXPECT_TRUE(std::filesystem::exists(out)) << renderer;
+  }
+}
+
+TEST(SeismicCommands, GridRenderersAndGridOptionsRefuseMeshesByName) {
+  const std::string mesh = dataFile("bar/bar_tet4.vtu");
+  const std::string out = (std::filesystem::temp_directory_path() / "volpost_refused.png").string();
+  std::filesystem::remove(out);
+  const auto grid = runVolpost("render " + mesh + " --field S.mises --renderer texture-raymarch -o " + out);
+  EXPECT_EQ(grid.exitCode, 2) << grid.output;
+  EXPECT_NE(grid.output.find("draws regular grids"), std::string::npos) << grid.output;
+  const auto step = runVolpost("render " + mesh + " --field S.mises --renderer cpu --sampling-step 0.1 -o " + out);
+  EXPECT_EQ(step.exitCode, 2) << step.output;
+  EXPECT_NE(step.output.find("--sampling-step"), std::string::npos) << step.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(SeismicCommands, DamagedSegyFilesAreRefusedNamingTheByte) {
+  const std::string cube = dataFile("seismic/synthetic_12x10x40.sgy");
+  const auto truncated = (std::filesystem::temp_directory_path() / "volpost_truncated.sgy").string();
+  std::filesystem::copy_file(cube, truncated, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(truncated, std::filesystem::file_size(cube) - 7);
+  const auto r = runVolpost("info " + truncated);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find(truncated + ": byte "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ends inside trace 120"), std::string::npos) << r.output;
+}

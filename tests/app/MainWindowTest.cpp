@@ -580,6 +580,26 @@ class MainWindowTest : public QObject {
     closer.stop();
   }
 
+  void aSeismicCubeIsVolumeRenderedAndAGridRendererMakesWayForAMesh() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/seismic/synthetic_12x10x40.sgy"));
+    Viewport* view = window_->viewport();
+    QVERIFY(window_->session()->model().grid.has_value());
+    QVERIFY(window_->selectQuantity("amplitude"));
+    auto* volume = window_->findChild<QAction*>("volumeAction");
+    auto* marcher = window_->findChild<QAction*>("renderer:texture-raymarch");
+    QVERIFY(volume && marcher);
+    marcher->trigger();  // the user's choice
+    QCOMPARE(view->scene().state().volume.renderer, std::string("texture-raymarch"));
+    volume->setChecked(true);
+    QVERIFY(settled(view).isNull() == false);
+    QVERIFY2(summarize(settled(view)).first > 0, "the cube is drawn");
+    volume->setChecked(false);
+    // A mesh next: the grid-only renderer gives way to one that draws meshes.
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QVERIFY(view->scene().state().volume.renderer != "texture-raymarch");
+    QVERIFY(!marcher->isChecked());
+  }
+
   void cleanupTestCase() { window_.reset(); }
 };
 
