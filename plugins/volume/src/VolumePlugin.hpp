@@ -5,6 +5,7 @@
 #include "CellProjector.hpp"
 #include "CpuVolumeRenderer.hpp"
 #include "GridRayMarcher.hpp"
+#include "GridSlicer.hpp"
 #include "RayCaster.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
@@ -21,14 +22,19 @@ class VolumePlugin : public QObject, public RendererPlugin {
  public:
   /// raycast; vicp: cell projection sorted by MPVONC (fast); vicp-exact: cell projection
   /// sorted in image space (valid on every pixel ray of non-convex meshes); cpu: ray casting on
-  /// the CPU's cores (exact; the fast choice where OpenGL is a software rasterizer).
-  QStringList rendererNames() const override { return {"raycast", "vicp", "vicp-exact", "cpu", "texture-raymarch"}; }
+  /// the CPU's cores (exact on meshes, marching on grids; the fast choice where OpenGL is a
+  /// software rasterizer); texture-raymarch: regular grids (seismic cubes, image data) as a
+  /// 3D texture marched along rays; texture-slices: the same texture in view-aligned slices.
+  QStringList rendererNames() const override {
+    return {"raycast", "vicp", "vicp-exact", "cpu", "texture-raymarch", "texture-slices"};
+  }
   QString rendererLabel(const QString& name) const override {
     if (name == "raycast") return "Ray casting";
     if (name == "vicp") return "Cell projection (fast sort, may err on non-convex meshes)";
     if (name == "vicp-exact") return "Cell projection (exact sort per pixel)";
     if (name == "cpu") return "Ray casting on the CPU (exact, all cores)";
     if (name == "texture-raymarch") return "Ray marching through a 3D texture (regular grids)";
+    if (name == "texture-slices") return "View-aligned texture slices (regular grids)";
     return name;
   }
   std::unique_ptr<Renderer> createRenderer(const QString& name) const override {
@@ -37,6 +43,7 @@ class VolumePlugin : public QObject, public RendererPlugin {
     if (name == "vicp-exact") return std::make_unique<CellProjector>(OrderMethod::ImageSpace);
     if (name == "cpu") return std::make_unique<CpuVolumeRenderer>();
     if (name == "texture-raymarch") return std::make_unique<GridRayMarcher>();
+    if (name == "texture-slices") return std::make_unique<GridSlicer>();
     return nullptr;
   }
 };

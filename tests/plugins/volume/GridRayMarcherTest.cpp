@@ -9,6 +9,7 @@
 
 #include "CpuGridMarcher.hpp"
 #include "GridRayMarcher.hpp"
+#include "GridSlicer.hpp"
 #include "host/optics/GridReference.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>
@@ -293,4 +294,70 @@ TEST_F(GridMarch, TheCpuAndGpuMarchersAgreeAndTheCpuRendererConvergesToItsFullFr
   cpu.setTransferFunction(TransferFunction(kGridTf.points()));
   EXPECT_EQ(converged, imageOf(cpu, moved, 64, 64));
   cpu.release();
+}
+
+// ---- view-aligned slices ----------------------------------------------------------------
+
+TEST(SlicePolygons, CutTheBoxBackToFrontOnALatticeOfDepths) {
+  // The unit cube seen along +z from z = -5: planes at depths 6, 5.75, 5.5, 5.25 (z = 1 .. 0.25)
+  // cut squares, farthest first (the one at 6 is the back face).
+  std::size_t slices = 0;
+  const std::vector<glm::vec3> t = volume::slicePolygons({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0.5, -5.0},
+                                                        {0, 0, 1}, 0.25, 0.0, &slices);
+  EXPECT_EQ(slices, 4u);
+  ASSERT_EQ(t.size(), 4u * 2u * 3u);  // two triangles per square
+  EXPECT_FLOAT_EQ(t.front().z, 1.0f);
+  EXPECT_FLOAT_EQ(t.back().z, 0.25f);
+  double area = 0.0;
+  for (std::size_t i = 0; i < t.size(); i += 3) area += 0.5 * glm::length(glm::cross(glm::dvec3(t[i + 1] - t[i]), glm::dvec3(t[i + 2] - t[i])));
+  EXPECT_NEAR(area, 4.0, 1e-6);
+  // Seen along a diagonal, each cut is a triangle or hexagon inside the cube.
+  const std::vector<glm::vec3> d = volume::slicePolygons({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-3, -3, -3},
+                                                        glm::normalize(glm::dvec3(1, 1, 1)), 0.1, 0.0, &slices);
+  EXPECT_EQ(slices, 18u);  // depths 5.2 .. 6.9 lie inside the cube (5.196 .. 6.928)
+  for (const glm::vec3& p : d)
+    for (int a = 0; a < 3; ++a) EXPECT_TRUE(p[a] >= -1e-6f && p[a] <= 1.0f + 1e-6f);
+}
+
+class GridSlices : public GridMarch {
+ protected:
+  std::unique_ptr<VolumeRenderer> makeRenderer() const override { return std::make_unique<volume::GridSlicer>(); }
+  volume::GridSlicer& slicer() { return static_cast<volume::GridSlicer&>(*caster_); }
+};
+
+TEST_F(GridSlices, ConvergeToTheReferenceAsTheSlicesCloseUp) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  const Camera camera = gridCamera(g);
+  const ImageError coarse = marchAgainstReference(g, values, 0.3, camera, 64);
+  const std::size_t coarseSlices = slicer().lastSlices();
+  const ImageError fine = marchAgainstReference(g, values, 0.075, camera, 64);
+  std::printf("texture slices vs trilinear reference: spacing 0.3 (%zu slices) RMSE %.3g max %.3g; spacing 0.075 (%zu "
+              "slices) RMSE %.3g max %.3g\n",
+              coarseSlices, coarse.rmse, coarse.max, slicer().lastSlices(), fine.rmse, fine.max);
+  EXPECT_GT(slicer().lastSlices(), 3 * coarseSlices);
+  EXPECT_LE(coarse.rmse, 3e-3);
+  EXPECT_LE(coarse.max, 5e-2);
+  EXPECT_LE(fine.rmse, coarse.rmse / 8.0);
+  EXPECT_LE(fine.rmse, 2e-4);
+}
+
+TEST_F(GridSlices, ClipPlanesIsoSurfacesAndOrthographicViews) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  optics::RaySettings settings;
+  settings.clipPlanes = {{g.bounds().center(), {0.3, -1.0, 0.2}}};
+  settings.isoSurfaces = {{4.2, {1.0, 0.7, 0.1}, 0.5}};
+  const ImageError e = marchAgainstReference(g, values, 0.05, gridCamera(g), 64, settings);
+  Camera ortho = gridCamera(g);
+  ortho.setProjection(Camera::Projection::Orthographic);
+  const ImageError o = marchAgainstReference(g, values, 0.05, ortho, 48);
+  std::printf("texture slices, clip plane + iso-surface: RMSE %.3g max %.3g; orthographic: RMSE %.3g max %.3g\n",
+              e.rmse, e.max, o.rmse, o.max);
+  EXPECT_LE(e.rmse, 2e-3);
+  EXPECT_LE(e.max, 0.1);
+  EXPECT_LE(o.rmse, 1e-4);
+  EXPECT_LE(o.max, 2e-3);
+  EXPECT_THROW(slicer().setVolume(test::tetGrid(2, 2, 2), FieldLocation::Node, field(test::tetGrid(2, 2, 2))),
+               std::invalid_argument);
 }

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+#include "GridSlicer.hpp"
+
+#include "VolumeBindings.hpp"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace volpost::volume {
+
+namespace {
+
+// The box's corners and their depths along the view direction.
+struct Box {
+  std::array<glm::dvec3, 8> p;
+  std::array<double, 8> depth;
+  glm::dvec3 e1, e2;  // a basis of the planes, to order a cut's points round its centre
+  Box(const glm::dvec3& corner, const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w, const glm::dvec3& eye,
+      const glm::dvec3& viewDir) {
+    for (int c = 0; c < 8; ++c)
+      p[std::size_t(c)] = corner + double(c & 1) * u + double((c >> 1) & 1) * v + double((c >> 2) & 1) * w;
+    for (std::size_t c = 0; c < 8; ++c) depth[c] = glm::dot(p[c] - eye, viewDir);
+    const glm::dvec3 side = std::abs(viewDir.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    e1 = glm::normalize(glm::cross(viewDir, side));
+    e2 = glm::cross(viewDir, e1);
+  }
+  double nearest() const { return *std::min_element(depth.begin(), depth.end()); }
+  double farthest() const { return *std::max_element(depth.begin(), depth.end()); }
+
+  // The polygon where the plane at depth d cuts the box, its corners moved `grow` further
+  // from its centre, as a triangle fan; false if none.
+  bool cut(double d, double grow, std::vector<glm::vec3>& triangles) const {
+    static constexpr int kEdges[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                          {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    std::vector<glm::dvec3> points;
+    for (const auto& e : kEdges) {
+      const double a = depth[std::size_t(e[0])] - d, b = depth[std::size_t(e[1])] - d;
+      if ((a < 0.0) == (b < 0.0) || a == b) continue;
+      points.push_back(p[std::size_t(e[0])] + (a / (a - b)) * (p[std::size_t(e[1])] - p[std::size_t(e[0])]));
+    }
+    if (points.size() < 3) return false;
+    glm::dvec3 centre(0.0);
+    for (const glm::dvec3& q : points) centre += q;
+    centre /= double(points.size());
+    for (glm::dvec3& q : points)
+      if (const double r = glm::length(q - centre); r > 0.0) q += (grow / r) * (q - centre);
+    std::sort(points.begin(), points.end(), [&](const glm::dvec3& a, const glm::dvec3& b) {
+      return std::atan2(glm::dot(a - centre, e2), glm::dot(a - centre, e1)) <
+             std::atan2(glm::dot(b - centre, e2), glm::dot(b - centre, e1));
+    });
+    for (std::size_t i = 1; i + 1 < points.size(); ++i)
+      for (const glm::dvec3& q : {points[0], points[i], points[i + 1]}) triangles.push_back(glm::vec3(q));
+    return true;
+  }
+};
+
+}  // namespace
+
+std::vector<glm::vec3> slicePolygons(const glm::dvec3& corner, const glm::dvec3& u, const glm::dvec3& v,
+                                     const glm::dvec3& w, const glm::dvec3& eye, const glm::dvec3& viewDir,
+                                     double spacing, double nearest, std::size_t* slices,
+                                     const std::function<double(double)>& grow) {
+  const Box box(corner, u, v, w, eye, viewDir);
+  const double lo = std::max(box.nearest(), nearest), hi = box.farthest();
+  std::vector<glm::vec3> triangles;
+  std::size_t count = 0;
+  if (spacing > 0.0 && hi > lo && (hi - lo) / spacing <= 1e6)
+    for (double k = std::floor(hi / spacing); k * spacing > lo; k -= 1.0)
+      count += box.cut(k * spacing, grow ? grow(k * spacing) : 0.0, triangles);
+  if (slices) *slices = count;
+  return triangles;
+}
+
+void GridSlicer::setVolume(const Mesh&, FieldLocation, std::span<const double>) {
+  throw std::invalid_argument("the texture slicer draws regular grids (SEG-Y, image data), not meshes of "
+                              "tetrahedra: choose another volume renderer for this model");
+}
+
+void GridSlicer::initialize() {
+  volume_.initialize();
+  framebuffer_ = gl::createFramebuffer();
+  vertexArray_ = gl::createVertexArray();
+  vertices_ = gl::createBuffer();
+  glEnableVertexArrayAttrib(vertexArray_.id(), 0);
+  glVertexArrayAttribFormat(vertexArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vertexArray_.id(), 0, 0);
+  attachedImage_ = 0;
+  gl::check("GridSlicer::initialize");
+}
+
+void GridSlicer::release() {
+  framebuffer_.reset();
+  vertexArray_.reset();
+  vertices_.reset();
+  attachedImage_ = 0;
+  volume_.release();
+}
+
+double GridSlicer::sliceSpacing() const {
+  if (volume_.samplingStep() > 0.0) return volume_.samplingStep();
+  return 0.5 * volume_.mesh().maxEdge;  // two slices per grid spacing
+}
+
+void GridSlicer::render(const RenderContext& ctx) {
+  if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
+  volume_.prepare(ctx);
+  const RegularGrid& grid = volume_.grid();
+  const glm::dvec3 origin = volume_.mesh().origin;
+  const double spacing = sliceSpacing();
+  // Depths along the view direction from the eye (orthographic too: any point of the view
+  // axis serves); perspective slices lie in front of the eye.
+  const glm::dvec3 viewDir = ctx.camera.viewDirection();
+  const glm::dvec3 eye = ctx.camera.eye() - origin;
+  const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;
+  const double nearest = ortho ? -1e300 : 0.0;  // in front of the eye (the near plane clips the rest)
+  const glm::dvec3 corner = grid.origin - origin;
+  const glm::dvec3 u = grid.axes[0] * double(grid.dims[0] - 1), v = grid.axes[1] * double(grid.dims[1] - 1),
+                   w = grid.axes[2] * double(grid.dims[2] - 1);
+  // Slices grown by two pixels at their depth (fragments off the box discard themselves).
+  const double pixelsAcross = double(std::min(ctx.width, ctx.height));
+  const double halfAngle = std::tan(0.5 * glm::radians(ctx.camera.fieldOfView()));
+  const auto twoPixels = [&](double depth) {
+    return 2.0 * (ortho ? ctx.camera.viewHeight() : 2.0 * depth * halfAngle) / pixelsAcross;
+  };
+  std::vector<glm::vec3> triangles =
+      slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &lastSlices_, twoPixels);
+  const std::size_t sliceVertices = triangles.size();
+  // The entry pass: one fragment per pixel (clip-space x, y).
+  for (const glm::vec3 q : {glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, -1, 0),
+                            glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)})
+    triangles.push_back(q);
+  glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(triangles.size() * sizeof(glm::vec3), 16)),
+                    triangles.data(), GL_STREAM_DRAW);
+  glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
+
+  if (attachedImage_ != volume_.image()) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, volume_.image(), 0);
+    attachedImage_ = volume_.image();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, ctx.width, ctx.height);
+  const float clear[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
+  const GLuint p = volume_.program({"volume/gridslice.vert", "volume/gridslice.frag"});
+  glUseProgram(p);
+  volume_.setSegmentUniforms(p, ctx);
+  const glm::dmat3 toIndex = glm::inverse(grid.indexToWorld());
+  glm::mat4 worldToIndex{glm::mat3(toIndex)};
+  worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (origin - grid.origin)), 1.0f);
+  // Drawn upside down so that the image's first row is the top, as the ray marcher's.
+  const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
+  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(origin));
+  const auto uniform = [p](const char* n) { return glGetUniformLocation(p, n); };
+  glProgramUniformMatrix4fv(p, uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
+  glProgramUniformMatrix4fv(p, uniform("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
+  glProgramUniform3i(p, uniform("gridSize"), GLint(grid.dims[0]), GLint(grid.dims[1]), GLint(grid.dims[2]));
+  glProgramUniform3f(p, uniform("viewDir"), float(viewDir.x), float(viewDir.y), float(viewDir.z));
+  glProgramUniform1f(p, uniform("sliceSpacing"), float(spacing));
+  glProgramUniform3f(p, uniform("sliceEye"), float(eye.x), float(eye.y), float(eye.z));
+  volume_.bindSegmentResources(ctx);
+  glBindTextureUnit(binding::kGrid, volume_.gridTexture());
+  glBindVertexArray(vertexArray_.id());
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
+  glProgramUniform1i(p, uniform("entryPass"), 0);
+  glProgramUniform1i(p, uniform("screenQuad"), 0);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(sliceVertices));  // farthest first
+  glProgramUniform1i(p, uniform("entryPass"), 1);
+  glProgramUniform1i(p, uniform("screenQuad"), 1);
+  glDrawArrays(GL_TRIANGLES, GLint(sliceVertices), GLsizei(triangles.size() - sliceVertices));  // nearest of all
+  glDisable(GL_BLEND);
+  glBindVertexArray(0);
+  glBindTextureUnit(binding::kGrid, 0);
+  volume_.compositeOver(ctx);
+  gl::check("GridSlicer::render");
+}
+
+}  // namespace volpost::volume

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// View-aligned slicing of a regular grid's 3D texture (texture-based volume rendering as
+// Silva et al. survey it): planes perpendicular to the view direction, sliceSpacing apart on
+// a fixed lattice of depths (the picture does not shimmer while the camera moves), are cut
+// with the grid's box on the CPU into polygons and drawn back to front, then a quad over
+// the picture for where rays enter. Each fragment integrates its ray from
+// its slice to the next one behind, or from where the ray enters to the first slice, with
+// the scalar linear along it and perspective-correct lengths: the parts partition every
+// ray exactly, so the same integration modes, clip planes and iso-surfaces as the ray
+// marcher apply and the two pictures converge to the same reference. The slice spacing is the sampling step (0:
+// half the shortest grid spacing); a larger one is the interactive mode.
+#pragma once
+
+#include "TetVolumeRenderer.hpp"
+
+#include <functional>
+
+namespace volpost::volume {
+
+class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
+ public:
+  std::string name() const override { return "texture-slices"; }
+  void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
+  void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
+  void initialize() override;
+  void release() override;
+  void render(const RenderContext& ctx) override;
+  /// The distance between slices the next frame uses, model units.
+  double sliceSpacing() const;
+  /// Slices the last frame drew.
+  std::size_t lastSlices() const { return lastSlices_; }
+
+ private:
+  gl::Framebuffer framebuffer_;
+  gl::VertexArray vertexArray_;
+  gl::Buffer vertices_;
+  GLuint attachedImage_ = 0;
+  std::size_t lastSlices_ = 0;
+};
+
+/// The polygons (as triangles, 3 points each) where planes at depths spacing * k along
+/// `viewDir` from `eye` cut the parallelepiped `corner + a u + b v + c w` (a, b, c in 0..1),
+/// farthest plane first; only planes deeper than `nearest`. `grow(depth)`, if given, moves
+/// each polygon's corners that much further from its centre. For tests and the renderer.
+std::vector<glm::vec3> slicePolygons(const glm::dvec3& corner, const glm::dvec3& u, const glm::dvec3& v,
+                                     const glm::dvec3& w, const glm::dvec3& eye, const glm::dvec3& viewDir,
+                                     double spacing, double nearest, std::size_t* slices = nullptr,
+                                     const std::function<double(double)>& grow = {});
+
+}  // namespace volpost::volume
