@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "SegyReader.hpp"
 
+#include "SeismicAttributes.hpp"
+
 #include <volpost/core/Error.hpp>
 #include <volpost/core/ResourceLimits.hpp>
 
@@ -338,6 +340,7 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
   model->mesh = hexahedraOfGrid(grid);
   model->grid = grid;
   model->fields.push_back(Field::fromValues("amplitude", FieldLocation::Node, 1, {std::move(values)}));
+  addSeismicAttributes(*model);
   progress.report(1.0);
   return model;
 }

@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: MIT
+#include "SeismicAttributes.hpp"
+
+#include <kiss_fft.h>
+
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <stdexcept>
+
+namespace volpost::seismic {
+namespace {
+
+struct FftPlan {
+  kiss_fft_cfg forward, inverse;
+  explicit FftPlan(std::size_t n)
+      : forward(kiss_fft_alloc(int(n), 0, nullptr, nullptr)), inverse(kiss_fft_alloc(int(n), 1, nullptr, nullptr)) {
+    if (!forward || !inverse) throw std::runtime_error("no memory for an FFT of " + std::to_string(n) + " samples");
+  }
+  ~FftPlan() {
+    kiss_fft_free(forward);
+    kiss_fft_free(inverse);
+  }
+  FftPlan(const FftPlan&) = delete;
+  FftPlan& operator=(const FftPlan&) = delete;
+};
+
+// The analytic signal: the spectrum's negative frequencies dropped, the positive doubled
+// (zero and Nyquist kept), back to time. Float FFT, so the result is good to ~1e-6 of the
+// trace's peak.
+std::vector<std::complex<double>> analyticSignal(std::span<const double> x) {
+  const std::size_t n = x.size();
+  std::vector<std::complex<double>> z(n);
+  if (n == 0) return z;
+  const FftPlan plan(n);
+  std::vector<kiss_fft_cpx> in(n), spectrum(n), out(n);
+  for (std::size_t k = 0; k < n; ++k) in[k] = {float(x[k]), 0.0f};
+  kiss_fft(plan.forward, in.data(), spectrum.data());
+  for (std::size_t k = 1; k < n; ++k) {
+    const bool positive = 2 * k < n, nyquist = 2 * k == n;
+    const float scale = positive ? 2.0f : nyquist ? 1.0f : 0.0f;
+    spectrum[k].r *= scale;
+    spectrum[k].i *= scale;
+  }
+  kiss_fft(plan.inverse, spectrum.data(), out.data());
+  for (std::size_t k = 0; k < n; ++k) z[k] = {double(out[k].r) / double(n), double(out[k].i) / double(n)};
+  return z;
+}
+
+}  // namespace
+
+TraceAttributes traceAttributes(std::span<const double> trace, double intervalSeconds) {
+  TraceAttributes a;
+  const std::size_t n = trace.size();
+  const std::vector<std::complex<double>> z = analyticSignal(trace);
+  a.envelope.resize(n);
+  a.phaseDegrees.resize(n);
+  a.frequencyHz.assign(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    a.envelope[k] = std::abs(z[k]);
+    a.phaseDegrees[k] = std::arg(z[k]) * 180.0 / M_PI;
+  }
+  if (n < 2 || !(intervalSeconds > 0.0)) return a;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t before = k > 0 ? k - 1 : 0, after = k + 1 < n ? k + 1 : n - 1;
+    const double turn = std::arg(z[after] * std::conj(z[before]));  // the phase advance, in (-pi, pi]
+    a.frequencyHz[k] = turn / (2.0 * M_PI * double(after - before) * intervalSeconds);
+  }
+  return a;
+}
+
+std::vector<double> rmsAmplitude(std::span<const double> trace, std::size_t window) {
+  const std::size_t n = trace.size(), half = window / 2;
+  std::vector<double> out(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t first = k >= half ? k - half : 0, last = std::min(n - 1, k + half);
+    double sum = 0.0;
+    for (std::size_t m = first; m <= last; ++m) sum += trace[m] * trace[m];
+    out[k] = std::sqrt(sum / double(last - first + 1));
+  }
+  return out;
+}
+
+void addSeismicAttributes(Model& model) {
+  if (!model.grid || model.fields.empty()) return;
+  const RegularGrid grid = *model.grid;
+  const std::shared_ptr<const Field> amplitude = model.fields.front();
+  const double dt = grid.labelStep[2] / 1000.0;
+  enum class Kind { Envelope, Phase, Frequency, Rms };
+  const auto field = [&](const std::string& name, Kind kind) {
+    return std::make_shared<Field>(
+        name, FieldLocation::Node, 1, grid.pointCount(), amplitude->steps(), [grid, amplitude, dt, kind](std::size_t step) {
+          const std::vector<double>& x = amplitude->values(step);
+          std::vector<double> out(x.size(), 0.0);
+          const std::size_t traces = grid.dims[0] * grid.dims[1], samples = grid.dims[2];
+          std::vector<double> trace(samples);
+          for (std::size_t t = 0; t < traces; ++t) {
+            for (std::size_t k = 0; k < samples; ++k) trace[k] = x[t + traces * k];
+            std::vector<double> result;
+            if (kind == Kind::Rms) {
+              result = rmsAmplitude(trace, kRmsWindow);
+            } else {
+              TraceAttributes a = traceAttributes(trace, dt);
+              result = kind == Kind::Envelope ? std::move(a.envelope)
+                       : kind == Kind::Phase  ? std::move(a.phaseDegrees)
+                                              : std::move(a.frequencyHz);
+            }
+            for (std::size_t k = 0; k < samples; ++k) out[t + traces * k] = result[k];
+          }
+          return out;
+        });
+  };
+  model.fields.push_back(field("envelope", Kind::Envelope));
+  model.fields.push_back(field("phase (degrees)", Kind::Phase));
+  model.fields.push_back(field("frequency (Hz)", Kind::Frequency));
+  model.fields.push_back(field("RMS amplitude", Kind::Rms));
+}
+
+}  // namespace volpost::seismic
