@@ -68,8 +68,9 @@ struct Options {
   QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result; reference: exact "
                                           "CPU volume rendering in double precision (slow, the yardstick); a volume "
                                           "renderer from a plugin: raycast, vicp, vicp-exact (GPU), cpu (exact ray "
-                                          "casting on all cores, the fast choice without a GPU); volpost plugins "
-                                          "lists them.", "NAME"};
+                                          "casting on all cores, the fast choice without a GPU; marching on regular "
+                                          "grids), texture-raymarch, texture-slices (regular grids such as SEG-Y "
+                                          "cubes, GPU); volpost plugins lists them.", "NAME"};
   QCommandLineOption mode{"mode", QString("GPU volume integration: %1 (default linear: exact cuts at every control "
                                           "point).").arg(QString::fromStdString(integrationModeChoices())), "MODE"};
   QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
@@ -83,7 +84,9 @@ struct Options {
   QCommandLineOption volumeEdges{"volume-edges", "Volume rendering: draw the boundary's element edges, which hide "
                                                  "what lies behind them."};
   QCommandLineOption samplingStep{"sampling-step", "Sampling mode's step in model units (default: a quarter of the "
-                                                   "mean edge).", "H"};
+                                                   "mean edge); on regular grids the step of the march or the slice "
+                                                   "spacing of every mode (default: half the shortest grid spacing).",
+                                  "H"};
   QCommandLineOption termination{"termination", "Rays stop when the light left behind is below this fraction "
                                                 "(default 0.002; 0: never).", "T"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "

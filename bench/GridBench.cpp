@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: MIT
+// volpost_grid_bench: regular-grid volume rendering, speed against error. A synthetic seismic
+// cube (convolution model) is drawn by the texture ray marcher and the texture slicer on the
+// GPU and by the CPU marcher, at several steps (slice spacings) per grid spacing, against
+// the exact trilinear reference; one table row per renderer and step.
+#include "BenchUsage.hpp"
+
+#include "CpuVolumeRenderer.hpp"
+#include "GridRayMarcher.hpp"
+#include "GridSlicer.hpp"
+#include "SyntheticSeismic.hpp"
+#include "host/optics/GridReference.hpp"
+
+#include <volpost/render/GL.hpp>
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace volpost;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+const char* kUsage =
+    "volpost_grid_bench: regular-grid volume rendering (a synthetic seismic cube), speed against\n"
+    "error: texture ray marching, texture slicing and the CPU marcher at several steps per grid\n"
+    "spacing, against the exact trilinear reference. Prints a Markdown table.\n"
+    "  --grid N        points per axis of the cube (default 128; 64 quick, 256 big)\n"
+    "  --size N        image size in pixels (default 512)\n"
+    "  --frames N      timed frames per row (default 3; the median is shown)\n"
+    "  --steps A,B,..  steps as fractions of the grid spacing (default 1,0.5,0.25)\n"
+    "  --cpu-only      only the CPU marcher (no GL rows)\n";
+
+// Opaque where the amplitude is strong, either sign: reflectors show, the quiet rock is clear.
+TransferFunction seismicTf(double extinction) {
+  return TransferFunction({{-1.0, {0.1, 0.2, 0.9}, extinction},
+                           {-0.35, {0.5, 0.6, 1.0}, 0.0},
+                           {0.35, {1.0, 0.6, 0.5}, 0.0},
+                           {1.0, {0.9, 0.1, 0.1}, extinction}});
+}
+
+struct Errors {
+  double rmse = 0, max = 0;
+};
+Errors compare(const std::vector<float>& image, const optics::ReferenceImage& ref) {
+  Errors e;
+  double sum = 0;
+  for (std::size_t i = 0; i < ref.pixels.size(); ++i)
+    for (int c = 0; c < 4; ++c) {
+      const double d = double(image[4 * i + std::size_t(c)]) - ref.pixels[i][c];
+      sum += d * d;
+      e.max = std::max(e.max, std::abs(d));
+    }
+  e.rmse = std::sqrt(sum / double(ref.pixels.size() * 4));
+  return e;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::size_t n = 128;
+  int size = 512, frames = 3;
+  bool cpuOnly = false;
+  std::vector<double> steps = {1.0, 0.5, 0.25};
+  for (int a = 1; a < argc; ++a) {
+    const bool more = a + 1 < argc;
+    if (!std::strcmp(argv[a], "--grid") && more) n = std::size_t(std::atoi(argv[++a]));
+    else if (!std::strcmp(argv[a], "--size") && more) size = std::atoi(argv[++a]);
+    else if (!std::strcmp(argv[a], "--frames") && more) frames = std::atoi(argv[++a]);
+    else if (!std::strcmp(argv[a], "--cpu-only")) cpuOnly = true;
+    else if (!std::strcmp(argv[a], "--steps") && more) {
+      steps.clear();
+      for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ",")) steps.push_back(std::atof(s));
+    } else
+      return bench::usageFor(argv[a], kUsage);
+  }
+  if (n < 4 || size < 8 || frames < 1 || steps.empty()) return bench::usageFor("(a value out of range)", kUsage);
+
+  seismic::SyntheticSurvey survey;
+  survey.inlines = survey.crosslines = survey.samples = n;
+  survey.binSize = 4.0;  // the cube is about as wide as it is deep in model units
+  const seismic::SyntheticVolume cube = seismic::makeSyntheticSeismic(survey);
+  const RegularGrid& grid = cube.grid;
+  const double spacing = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
+  const TransferFunction tf = seismicTf(4.0 / (double(n) * spacing));
+  Camera camera;
+  camera.setView(StandardView::Isometric);
+  camera.fit(grid.bounds());
+  camera.orbit(20.0, -8.0);
+
+  std::fprintf(stderr, "reference (exact trilinear) at %dx%d...\n", size, size);
+  const auto refStart = Clock::now();
+  const optics::ReferenceImage reference = optics::renderGridReference(grid, cube.values, tf, camera, size, size);
+  const double refMs = std::chrono::duration<double, std::milli>(Clock::now() - refStart).count();
+
+  std::printf("Synthetic seismic cube %zu^3 (%.1f M points), %dx%d, early termination off; reference %.0f ms\n\n", n,
+              double(grid.pointCount()) / 1e6, size, size, refMs);
+  std::printf("| renderer | step / spacing | ms/frame (median of %d) | RMSE | max error |\n|---|---:|---:|---:|---:|\n",
+              frames);
+  const auto row = [&](const char* name, double fraction, VolumeRenderer& r, const std::function<void()>& frame) {
+    // Frames after the first: the grid and tables are on the GPU, only the frame is timed.
+    r.setTransferFunction(tf);
+    r.setTerminationThreshold(0.0);
+    r.setSamplingStep(fraction * spacing);
+    frame();  // not timed: shader compilation, the upload
+    std::vector<double> times;
+    for (int f = 0; f < frames; ++f) {
+      const auto start = Clock::now();
+      frame();
+      times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    const Errors e = compare(r.readImage(), reference);
+    std::printf("| %s | %g | %.0f | %.2g | %.2g |\n", name, fraction, times[times.size() / 2], e.rmse, e.max);
+    std::fflush(stdout);
+  };
+
+  HeadlessContext context;
+  OffscreenTarget target(size, size);
+  RenderContext ctx;
+  ctx.camera = camera;
+  ctx.width = ctx.height = size;
+  ctx.framebuffer = target.framebuffer();
+  const auto draw = [&](VolumeRenderer& r) {
+    return [&] {
+      glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+      glClearColor(0, 0, 0, 0);
+      glClear(GL_COLOR_BUFFER_BIT);
+      r.render(ctx);
+      glFinish();
+    };
+  };
+  volume::CpuVolumeRenderer cpu;
+  cpu.initialize();
+  cpu.setGrid(grid, cube.values);
+  for (double s : steps) row("cpu (march)", s, cpu, draw(cpu));
+  cpu.release();
+  if (!cpuOnly) {
+    volume::GridRayMarcher marcher;
+    marcher.initialize();
+    marcher.setGrid(grid, cube.values);
+    for (double s : steps) row("texture-raymarch", s, marcher, draw(marcher));
+    marcher.release();
+    volume::GridSlicer slicer;
+    slicer.initialize();
+    slicer.setGrid(grid, cube.values);
+    for (double s : steps) row("texture-slices", s, slicer, draw(slicer));
+    slicer.release();
+  }
+  std::printf("\nOpenGL: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  return 0;
+}
