@@ -54,6 +54,7 @@ void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
   std::printf("element %lld (%s)", static_cast<long long>(r.cellId), std::string(cellTypeName(r.cellType)).c_str());
   if (r.nodeId) std::printf(", node %lld", static_cast<long long>(*r.nodeId));
   std::printf(", %s\n", describe(r.method));
+  if (!r.gridPosition.empty()) std::printf("  %s\n", r.gridPositionText().c_str());
   for (const std::string& key : keys) {
     const auto v = r.value(key);
     std::printf("  %s = %s\n", key.c_str(), v ? exactNumber(*v).c_str() : "not probed");

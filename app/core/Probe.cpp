@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace volpost::app {
 
@@ -158,6 +159,16 @@ std::optional<double> ProbeResult::value(const std::string& key) const {
   return std::nullopt;
 }
 
+std::string ProbeResult::gridPositionText() const {
+  std::string text;
+  for (const auto& [axis, label] : gridPosition) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%.6g", label);
+    text += (text.empty() ? "" : ", ") + axis + " " + number;
+  }
+  return text;
+}
+
 ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::size_t step) {
   ProbeResult r;
   r.point = point;
@@ -182,6 +193,10 @@ ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::s
   }
   r.nearestNodeId = mesh.nodeId(r.nearestNode);
   if (atNode) r.nodeId = mesh.nodeId(*atNode);
+  if (const auto& grid = session.model().grid) {
+    const glm::dvec3 index = grid->indexOf(point);
+    for (int a = 0; a < 3; ++a) r.gridPosition.push_back({grid->axisNames[std::size_t(a)], grid->label(a, index[a])});
+  }
   const auto weights = nodalWeights(mesh, session.tetrahedra(), found);
   for (const auto& field : session.model().fields)
     if (field->stepCount() > 0) r.fields.push_back(probeField(*field, step, found.cell, weights, atNode));

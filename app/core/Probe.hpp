@@ -52,10 +52,15 @@ struct ProbeResult {
   std::int64_t nearestNodeId = 0;       ///< and its id
   glm::dvec3 natural{0.0};              ///< natural coordinates in the element (Isoparametric)
   std::size_t step = 0;
+  /// On a regular grid, where the point is in the grid's own words: each axis's name and
+  /// label there ("inline" 1005.25, "crossline" 2003, "time (ms)" 120).
+  std::vector<std::pair<std::string, double>> gridPosition;
   std::vector<ProbedField> fields;
   bool inside() const { return method != ProbeMethod::Outside; }
   /// The value of a quantity by its written form ("S.mises"); nullopt when not probed.
   std::optional<double> value(const std::string& key) const;
+  /// "inline 1005.25, crossline 2003, time (ms) 120"; empty off a grid.
+  std::string gridPositionText() const;
 };
 
 /// Probes a point at a step (0-based; fields with fewer steps give their last). Thread-safe

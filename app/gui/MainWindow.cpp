@@ -930,6 +930,19 @@ void MainWindow::showModelInfo() {
   const Bounds b = m.mesh.bounds();
   if (b.valid)
     html += QString("size %1 x %2 x %3<br>").arg(b.size().x, 0, 'g', 4).arg(b.size().y, 0, 'g', 4).arg(b.size().z, 0, 'g', 4);
+  if (const auto& grid = m.grid) {  // a seismic cube or other regular grid: its axes in its own words
+    html += "<br><b>Grid</b><br>";
+    for (int a = 0; a < 3; ++a)
+      html += QString("%1 %2: %3 .. %4 by %5<br>")
+                  .arg(grid->dims[std::size_t(a)])
+                  .arg(QString::fromStdString(grid->axisNames[std::size_t(a)]).toHtmlEscaped())
+                  .arg(grid->label(a, 0.0), 0, 'g', 6)
+                  .arg(grid->label(a, double(grid->dims[std::size_t(a)] - 1)), 0, 'g', 6)
+                  .arg(grid->labelStep[std::size_t(a)], 0, 'g', 6);
+    if (!grid->sampleStorage.empty())
+      html += QString("samples stored as %1<br>").arg(QString::fromStdString(grid->sampleStorage).toHtmlEscaped());
+    html += "<br>";
+  }
   html += QString("%1 boundary faces<br><br><b>Fields</b><br>").arg(session_->surface().boundaryFaceCount);
   for (const auto& f : m.fields)
     html += QString("%1 (%2, per %3, %4 step%5)<br>")

@@ -137,13 +137,14 @@ void ProbePanel::fillDetails() {
   }
   QStringList nodes;
   for (std::int64_t id : r.nodeIds) nodes << QString::number(id);
-  where_->setText(QString("Point %1: element %2 (%3)%4; nodes %5. Values %6.")
+  where_->setText(QString("Point %1: %7element %2 (%3)%4; nodes %5. Values %6.")
                       .arg(row + 1)
                       .arg(r.cellId)
                       .arg(QString::fromStdString(std::string(cellTypeName(r.cellType))))
                       .arg(r.nodeId ? QString(", at node %1").arg(*r.nodeId) : QString())
                       .arg(nodes.join(' '))
-                      .arg(describe(r.method)));
+                      .arg(describe(r.method))
+                      .arg(r.gridPosition.empty() ? QString() : QString::fromStdString(r.gridPositionText()) + "; "));
   for (const ProbedField& f : r.fields)
     for (const ProbedQuantity& q : f.quantities) {
       const int at = details_->rowCount();

@@ -6,6 +6,7 @@
 #include <QImage>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -488,6 +489,20 @@ TEST(SeismicCommands, InfoDescribesTheGridAndRenderersDrawIt) {
     EXPECT_EQ(r.exitCode, 0) << renderer << ": " << r.output;
     EXPECT_TRUE(std::filesystem::exists(out)) << renderer;
   }
+}
+
+TEST(SeismicCommands, ProbeSaysWhereInTheSurveyAPointIs) {
+  // Inline 1005, crossline 2003, 120 ms of the 30-degree survey (origin 620000, 6080000; 25 m bins).
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  const double x = 620000.0 + 5 * 25 * c - 3 * 25 * s, y = 6080000.0 + 5 * 25 * s + 3 * 25 * c;
+  char at[96];
+  std::snprintf(at, sizeof at, "%.6f,%.6f,-120", x, y);
+  const auto r = runVolpost("probe " + dataFile("seismic/synthetic_12x10x40.sgy") + " --at " + at +
+                            " --field amplitude --field envelope");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("inline 1005, crossline 2003, time (ms) 120"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("amplitude = "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("envelope = "), std::string::npos) << r.output;
 }
 
 TEST(SeismicCommands, GridRenderersAndGridOptionsRefuseMeshesByName) {
