@@ -49,21 +49,12 @@ void CellProjector::render(const RenderContext& ctx) {
   lastOrder_ = sorter_->order(ctx.camera, method_, ctx.width, ctx.height);
   glNamedBufferData(order_.id(), GLsizeiptr(std::max<std::size_t>(lastOrder_.backToFront.size() * 4, 16)),
                     lastOrder_.backToFront.data(), GL_STREAM_DRAW);
-  if (attachedImage_ != volume_.image()) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, volume_.image(), 0);
-    attachedImage_ = volume_.image();
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, ctx.width, ctx.height);
-  const float clear[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
+  volume_.beginDrawingIntoImage(framebuffer_, attachedImage_, ctx);
 
   const GLuint p = volume_.program({"volume/vicp.vert", "volume/vicp.frag"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
-  // Drawn upside down so that the image's first row is the top, as the ray caster's.
-  const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
-  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(volume_.mesh().origin));
+  const glm::mat4 vp = volume_.imageViewProjection(ctx);
   glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
   glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
   volume_.bindSegmentResources(ctx);

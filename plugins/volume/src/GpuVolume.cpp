@@ -370,6 +370,29 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("clipCount"), int(planes.size()));
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
+  if (grid_) {
+    const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
+    glm::mat4 worldToIndex{glm::mat3(toIndex)};
+    worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (gpu_.origin - grid_->origin)), 1.0f);
+    glProgramUniformMatrix4fv(p, u("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
+    glProgramUniform3i(p, u("gridSize"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
+  }
+}
+
+void GpuVolume::beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, const RenderContext& ctx) const {
+  if (attachedImage != image_.id()) {
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, image_.id(), 0);
+    attachedImage = image_.id();
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+  glViewport(0, 0, ctx.width, ctx.height);
+  const float clear[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
+}
+
+glm::mat4 GpuVolume::imageViewProjection(const RenderContext& ctx) const {
+  const glm::dmat4 flip(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
+  return glm::mat4(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(gpu_.origin));
 }
 
 void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
@@ -377,6 +400,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
+  glBindTextureUnit(binding::kGrid, gridTexture_ ? gridTexture_.id() : 0);
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {
       {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
       {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},
@@ -387,6 +411,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
 
 void GpuVolume::compositeOver(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, 0);  // the depth texture may be attached to the target: no feedback
+  glBindTextureUnit(binding::kGrid, 0);
   composite_.draw(ctx, image_.id());
 }
 

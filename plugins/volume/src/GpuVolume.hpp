@@ -65,10 +65,18 @@ class GpuVolume {
   /// The program for these stage files in the current integration mode (built on first
   /// use; the mode, the bindings and the limits are compiled in).
   GLuint program(const std::vector<std::string>& stageFiles);
-  /// The uniforms of common/tet_segment.glsl: camera, tables' range, clip planes,
-  /// iso-surfaces, scene depth.
+  /// The uniforms of common/volume_segment.glsl: camera, tables' range, clip planes,
+  /// iso-surfaces, scene depth; with a grid, those of common/grid_sampling.glsl too.
   void setSegmentUniforms(GLuint program, const RenderContext& ctx) const;
+  /// With a grid, also its uniforms (worldToIndex: volume-relative positions to continuous
+  /// indices; gridSize) for common/grid_sampling.glsl.
   void bindSegmentResources(const RenderContext& ctx) const;
+  /// For renderers that rasterize into the float image (cell projection, slicing): attaches
+  /// it to `framebuffer` (once), binds it, sets the viewport and clears it to transparent.
+  void beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, const RenderContext& ctx) const;
+  /// Their view-projection, volume-relative, drawn upside down so the image's first row is
+  /// the top as the compute renderers write it.
+  glm::mat4 imageViewProjection(const RenderContext& ctx) const;
   /// Composites the premultiplied float image over what the target already holds.
   void compositeOver(const RenderContext& ctx) const;
   GLuint image() const { return image_.id(); }

@@ -42,25 +42,16 @@ void GridRayMarcher::render(const RenderContext& ctx) {
   const GLuint p = volume_.program({"volume/gridmarch.comp"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
-  // Volume-relative positions (model minus the GPU origin) to continuous grid indices.
-  const RegularGrid& grid = volume_.grid();
-  const glm::dmat3 toIndex = glm::inverse(grid.indexToWorld());
-  const glm::dvec3 shift = toIndex * (volume_.mesh().origin - grid.origin);
-  glm::mat4 worldToIndex{glm::mat3(toIndex)};
-  worldToIndex[3] = glm::vec4(glm::vec3(shift), 1.0f);
   const auto u = [p](const char* n) { return glGetUniformLocation(p, n); };
-  glProgramUniformMatrix4fv(p, u("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
-  glProgramUniform3i(p, u("gridSize"), GLint(grid.dims[0]), GLint(grid.dims[1]), GLint(grid.dims[2]));
   const double step = marchStep();
   glProgramUniform1f(p, u("marchStep"), float(step));
   glProgramUniform1i(p, u("stepsPerPass"), kStepsPerPass);
   volume_.bindSegmentResources(ctx);
-  glBindTextureUnit(binding::kGrid, volume_.gridTexture());
   ensureResumeImage(ctx.width, ctx.height);
   glBindImageTexture(0, volume_.image(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, resume_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
   // Enough passes for the longest ray inside the grid (its diagonal) at this step.
-  const Bounds box = grid.bounds();
+  const Bounds box = volume_.grid().bounds();
   const double steps = glm::length(box.size()) / step + 4.0;
   const int passes = int(std::min(std::ceil(steps / kStepsPerPass), 1e6));
   for (int pass = 0; pass < passes; ++pass) {
@@ -70,7 +61,6 @@ void GridRayMarcher::render(const RenderContext& ctx) {
                     GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
   lastPasses_ = passes;
-  glBindTextureUnit(binding::kGrid, 0);
   volume_.compositeOver(ctx);
   gl::check("GridRayMarcher::render");
 }

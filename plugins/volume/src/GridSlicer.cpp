@@ -140,32 +140,17 @@ void GridSlicer::render(const RenderContext& ctx) {
                     triangles.data(), GL_STREAM_DRAW);
   glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
 
-  if (attachedImage_ != volume_.image()) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, volume_.image(), 0);
-    attachedImage_ = volume_.image();
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, ctx.width, ctx.height);
-  const float clear[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, clear);
+  volume_.beginDrawingIntoImage(framebuffer_, attachedImage_, ctx);
   const GLuint p = volume_.program({"volume/gridslice.vert", "volume/gridslice.frag"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
-  const glm::dmat3 toIndex = glm::inverse(grid.indexToWorld());
-  glm::mat4 worldToIndex{glm::mat3(toIndex)};
-  worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (origin - grid.origin)), 1.0f);
-  // Drawn upside down so that the image's first row is the top, as the ray marcher's.
-  const glm::dmat4 flip = glm::dmat4(glm::dvec4(1, 0, 0, 0), glm::dvec4(0, -1, 0, 0), glm::dvec4(0, 0, 1, 0), glm::dvec4(0, 0, 0, 1));
-  const glm::mat4 vp(flip * ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix(origin));
+  const glm::mat4 vp = volume_.imageViewProjection(ctx);
   const auto uniform = [p](const char* n) { return glGetUniformLocation(p, n); };
   glProgramUniformMatrix4fv(p, uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
-  glProgramUniformMatrix4fv(p, uniform("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
-  glProgramUniform3i(p, uniform("gridSize"), GLint(grid.dims[0]), GLint(grid.dims[1]), GLint(grid.dims[2]));
   glProgramUniform3f(p, uniform("viewDir"), float(viewDir.x), float(viewDir.y), float(viewDir.z));
   glProgramUniform1f(p, uniform("sliceSpacing"), float(spacing));
   glProgramUniform3f(p, uniform("sliceEye"), float(eye.x), float(eye.y), float(eye.z));
   volume_.bindSegmentResources(ctx);
-  glBindTextureUnit(binding::kGrid, volume_.gridTexture());
   glBindVertexArray(vertexArray_.id());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -179,7 +164,6 @@ void GridSlicer::render(const RenderContext& ctx) {
   glDrawArrays(GL_TRIANGLES, GLint(sliceVertices), GLsizei(triangles.size() - sliceVertices));  // nearest of all
   glDisable(GL_BLEND);
   glBindVertexArray(0);
-  glBindTextureUnit(binding::kGrid, 0);
   volume_.compositeOver(ctx);
   gl::check("GridSlicer::render");
 }
