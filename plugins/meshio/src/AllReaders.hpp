@@ -19,6 +19,7 @@ namespace volpost::meshio {
 
 struct AllReaders {
   VtuReader vtu;
+  VtiReader vti;
   VtkLegacyReader legacy;
   GmshReader gmsh;
   AbaqusInputReader inp;
@@ -26,7 +27,7 @@ struct AllReaders {
   ExodusReader exodus;
   NeutralFileReader neutral;
 
-  std::vector<const MeshReader*> list() const { return {&vtu, &legacy, &gmsh, &inp, &frd, &exodus, &neutral}; }
+  std::vector<const MeshReader*> list() const { return {&vtu, &vti, &legacy, &gmsh, &inp, &frd, &exodus, &neutral}; }
 };
 
 /// A registry of one process-wide set of the readers, for programs that do not load the

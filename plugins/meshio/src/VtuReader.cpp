@@ -15,6 +15,8 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
+#include <array>
 
 namespace volpost::meshio {
 namespace {
@@ -41,9 +43,10 @@ class VtuReading {
     if (!root) throw ReadError(path_, "no <VTKFile> element: not a VTK XML file");
     readEncoding(root);
     checkAppendedOffsets(root);
+    if (const pugi::xml_node image = root.child("ImageData")) return readImage(image);
     const pugi::xml_node grid = root.child("UnstructuredGrid");
     if (!grid) throw ReadError(path_, "this VTK XML file holds a " + std::string(root.attribute("type").as_string("?")) +
-                                          "; volpost reads UnstructuredGrid (.vtu)");
+                                          "; volpost reads UnstructuredGrid (.vtu) and ImageData (.vti)");
     auto model = std::make_unique<Model>();
     model->title = grid.attribute("VolpostTitle").as_string("");
     std::size_t pieces = 0;
@@ -244,6 +247,140 @@ class VtuReading {
     ++pieceCount_;
   }
 
+  // ---- ImageData (.vti): a regular grid ----------------------------------------------
+
+  // `count` numbers from an attribute ("0 10 0 10 0 5"), or the defaults when it is absent.
+  std::vector<double> numbers(const pugi::xml_node& node, const char* attribute, std::vector<double> defaults) {
+    const pugi::xml_attribute a = node.attribute(attribute);
+    if (!a) return defaults;
+    std::vector<double> out;
+    std::istringstream in(a.as_string());
+    for (double v; in >> v;) out.push_back(v);
+    if (out.size() != defaults.size() || !std::all_of(out.begin(), out.end(), [](double v) { return std::isfinite(v); }))
+      failAt(node, std::string(attribute) + "=\"" + a.as_string() + "\" needs " + std::to_string(defaults.size()) +
+                       " finite numbers");
+    return out;
+  }
+
+  struct Extent {
+    std::array<long long, 6> e{};
+    std::array<std::size_t, 3> points() const {
+      return {std::size_t(e[1] - e[0] + 1), std::size_t(e[3] - e[2] + 1), std::size_t(e[5] - e[4] + 1)};
+    }
+  };
+  Extent extentOf(const pugi::xml_node& node, const char* attribute) {
+    const std::vector<double> v = numbers(node, attribute, std::vector<double>(6, NAN));
+    Extent x;
+    for (int a = 0; a < 6; ++a) {
+      if (!(std::abs(v[std::size_t(a)]) < 1e15) || v[std::size_t(a)] != std::floor(v[std::size_t(a)]))
+        failAt(node, std::string(attribute) + " needs 6 integers");
+      x.e[std::size_t(a)] = (long long)v[std::size_t(a)];
+    }
+    for (int a = 0; a < 3; ++a)
+      if (x.e[std::size_t(2 * a + 1)] < x.e[std::size_t(2 * a)])
+        failAt(node, std::string(attribute) + " runs backwards along axis " + std::to_string(a));
+    return x;
+  }
+
+  std::unique_ptr<Model> readImage(const pugi::xml_node& image) {
+    const Extent whole = extentOf(image, "WholeExtent");
+    const std::vector<double> origin = numbers(image, "Origin", {0, 0, 0});
+    const std::vector<double> spacing = numbers(image, "Spacing", {1, 1, 1});
+    const std::vector<double> d = numbers(image, "Direction", {1, 0, 0, 0, 1, 0, 0, 0, 1});
+    RegularGrid grid;
+    grid.dims = whole.points();
+    for (int a = 0; a < 3; ++a)  // VTK's Direction is row-major, its columns the index axes
+      grid.axes[std::size_t(a)] = spacing[std::size_t(a)] * glm::dvec3(d[std::size_t(a)], d[std::size_t(3 + a)], d[std::size_t(6 + a)]);
+    grid.origin = glm::dvec3(origin[0], origin[1], origin[2]) + double(whole.e[0]) * grid.axes[0] +
+                  double(whole.e[2]) * grid.axes[1] + double(whole.e[4]) * grid.axes[2];
+    grid.axisNames = {"i", "j", "k"};
+    grid.firstLabel = {double(whole.e[0]), double(whole.e[2]), double(whole.e[4])};
+    if (const std::string defect = grid.defect(); !defect.empty())
+      failAt(image, defect + " (WholeExtent, Spacing, Direction): volpost reads volumes, not 2D images");
+    const std::size_t pointCount = checkedProduct(checkedProduct(grid.dims[0], grid.dims[1], path_, "the image"),
+                                                  grid.dims[2], path_, "the image");
+    requireMemory(double(pointCount) * 80.0, path_, "an image of " + std::to_string(pointCount) + " points");
+
+    auto model = std::make_unique<Model>();
+    model->title = image.attribute("VolpostTitle").as_string("");
+    struct ImageArray {
+      Extent extent;  // the piece's points
+      VtuArraySource source;
+    };
+    std::map<std::string, std::vector<ImageArray>> arrays;
+    std::map<std::string, int> components;
+    std::vector<std::string> order;
+    for (pugi::xml_node piece : image.children("Piece")) {
+      const Extent e = extentOf(piece, "Extent");
+      for (int a = 0; a < 3; ++a)
+        if (e.e[std::size_t(2 * a)] < whole.e[std::size_t(2 * a)] || e.e[std::size_t(2 * a + 1)] > whole.e[std::size_t(2 * a + 1)])
+          failAt(piece, "the piece's Extent reaches outside the WholeExtent");
+      const std::array<std::size_t, 3> pp = e.points();
+      for (const auto& [section, location] : {std::pair{"PointData", FieldLocation::Node}, std::pair{"CellData", FieldLocation::Cell}})
+        for (pugi::xml_node array : piece.child(section).children("DataArray")) {
+          VtuArraySource s = source(array);
+          if (s.name.empty()) failAt(array, "DataArray without a Name");
+          const std::size_t entities = location == FieldLocation::Node
+                                           ? pp[0] * pp[1] * pp[2]
+                                           : std::max<std::size_t>(pp[0] - 1, 1) * std::max<std::size_t>(pp[1] - 1, 1) *
+                                                 std::max<std::size_t>(pp[2] - 1, 1);
+          const std::size_t values = guarded(array, [&] { return vtuValueCount(s, enc_); });
+          if (values != entities * std::size_t(s.components))
+            failAt(array, "DataArray \"" + s.name + "\" holds " + std::to_string(values) + " values; the piece's " +
+                              std::to_string(entities) + (location == FieldLocation::Node ? " points" : " cells") +
+                              " x " + std::to_string(s.components) + " components need " +
+                              std::to_string(entities * std::size_t(s.components)));
+          const std::string key = std::string(location == FieldLocation::Node ? "n:" : "c:") + s.name;
+          const auto [it, inserted] = components.try_emplace(key, s.components);
+          if (it->second != s.components) failAt(array, "DataArray \"" + s.name + "\" changes its components between pieces");
+          if (inserted) order.push_back(key);
+          Extent cellsOrPoints = e;
+          if (location == FieldLocation::Cell)  // the piece's cells: one fewer than its points along each axis
+            for (int a = 0; a < 3; ++a) cellsOrPoints.e[std::size_t(2 * a + 1)] -= 1;
+          arrays[key].push_back({cellsOrPoints, std::move(s)});
+        }
+    }
+    model->mesh = hexahedraOfGrid(grid);
+    model->grid = grid;
+    const std::array<long long, 3> low = {whole.e[0], whole.e[2], whole.e[4]};
+    for (const std::string& key : order) {
+      const FieldLocation location = key[0] == 'n' ? FieldLocation::Node : FieldLocation::Cell;
+      const int comps = components[key];
+      std::array<std::size_t, 3> size = grid.dims;
+      if (location == FieldLocation::Cell)
+        for (std::size_t& n : size) n -= 1;
+      const std::size_t entities = size[0] * size[1] * size[2];
+      auto parts = std::make_shared<std::vector<ImageArray>>(std::move(arrays[key]));
+      // Every piece's values placed at its extent in the whole image (NaN where no piece is).
+      StepLoader loader = [parts, size, low, comps, entities, enc = enc_, path = path_](std::size_t) {
+        std::vector<double> all(entities * std::size_t(comps), NAN);
+        for (const ImageArray& part : *parts) {
+          std::vector<double> v;
+          try {
+            v = vtuDoubles(part.source, enc);
+          } catch (const VtuArrayError& e) {
+            throw ReadError(path, e.message);
+          }
+          const std::array<std::size_t, 3> n = part.extent.points();
+          std::size_t at = 0;
+          for (std::size_t k = 0; k < n[2]; ++k)
+            for (std::size_t j = 0; j < n[1]; ++j)
+              for (std::size_t i = 0; i < n[0]; ++i, ++at) {
+                const std::size_t gi = std::size_t(part.extent.e[0] - low[0]) + i, gj = std::size_t(part.extent.e[2] - low[1]) + j,
+                                  gk = std::size_t(part.extent.e[4] - low[2]) + k;
+                if (at * std::size_t(comps) + std::size_t(comps) > v.size()) continue;
+                const std::size_t to = gi + size[0] * (gj + size[1] * gk);
+                for (int c = 0; c < comps; ++c) all[to * std::size_t(comps) + std::size_t(c)] = v[at * std::size_t(comps) + std::size_t(c)];
+              }
+        }
+        return all;
+      };
+      model->fields.push_back(std::make_shared<Field>(key.substr(2), location, comps, entities,
+                                                      std::vector<Step>{{"", 0.0}}, std::move(loader)));
+    }
+    return model;
+  }
+
   struct PieceArray {
     VtuArraySource source;
     std::shared_ptr<VtkCellMapping> mapping;  // cell arrays of pieces with skipped cells
@@ -395,6 +532,21 @@ class VtuReading {
 
 }  // namespace
 
+int VtiReader::sniff(std::string_view head) const {
+  const auto xml = head.find("<VTKFile");
+  if (xml == std::string_view::npos) return 0;
+  return head.find("ImageData", xml) != std::string_view::npos ? 100 : 0;
+}
+
+std::unique_ptr<Model> VtiReader::read(const std::string& path, const Progress& progress) const {
+  auto bytes = readFileBytes(path, progress);
+  auto model = VtuReading(bytes, path, progress).run();
+  if (!model->grid) throw ReadError(path, "this VTK XML file holds no <ImageData>; for unstructured grids use .vtu");
+  model->formatName = formatName();
+  progress.report(1.0);
+  return model;
+}
+
 int VtuReader::sniff(std::string_view head) const {
   const auto xml = head.find("<VTKFile");
   if (xml == std::string_view::npos) return 0;
@@ -404,7 +556,7 @@ int VtuReader::sniff(std::string_view head) const {
 std::unique_ptr<Model> VtuReader::read(const std::string& path, const Progress& progress) const {
   auto bytes = readFileBytes(path, progress);
   auto model = VtuReading(bytes, path, progress).run();
-  model->formatName = formatName();
+  model->formatName = model->grid ? "VTK XML image data" : formatName();
   progress.report(1.0);
   return model;
 }

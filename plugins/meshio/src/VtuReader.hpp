@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// VTK XML unstructured grids (.vtu): ascii, inline base64 and appended (raw or base64)
+// VTK XML unstructured grids (.vtu) and image data (.vti): ascii, inline base64 and appended (raw or base64)
 // data, zlib compression, UInt32 or UInt64 headers, either byte order, several pieces.
 #pragma once
 
@@ -11,6 +11,17 @@ class VtuReader : public MeshReader {
  public:
   std::string formatName() const override { return "VTK XML unstructured grid"; }
   std::vector<std::string> extensions() const override { return {"vtu"}; }
+  int sniff(std::string_view head) const override;
+  std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
+};
+
+/// VTK XML image data (.vti): a regular grid (WholeExtent, Origin, Spacing and VTK 9's
+/// Direction), its pieces' point and cell arrays placed at their extents; read by the same
+/// XML machinery as .vtu (every encoding). The model carries the grid and its hexahedra.
+class VtiReader : public MeshReader {
+ public:
+  std::string formatName() const override { return "VTK XML image data"; }
+  std::vector<std::string> extensions() const override { return {"vti"}; }
   int sniff(std::string_view head) const override;
   std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
 };

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+// VTK XML image data (.vti) as written by VTK itself in three encodings: the grid (extent
+// not starting at 0, spacing, a rotated Direction), point and cell arrays at the right
+// points, and refusals of damaged files that name the line.
+#include "VtuReader.hpp"
+
+#include "support/TestSupport.hpp"
+
+#include <volpost/core/Error.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace volpost::meshio {
+namespace {
+
+std::string text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class ImageData : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ImageData, ReadsTheGridAndItsArraysAsVtkWroteThem) {
+  const auto model = VtiReader().read(test::dataFile(std::string("formats/") + GetParam()), {});
+  ASSERT_TRUE(model->grid);
+  const RegularGrid& g = *model->grid;
+  EXPECT_EQ(g.dims, (std::array<std::size_t, 3>{5, 4, 3}));
+  EXPECT_EQ(g.firstLabel, (std::array<double, 3>{1, 0, 2}));
+  // VTK's TransformIndexToPhysicalPoint(3, 2, 3):
+  const glm::dvec3 vtkPoint(11.28524463035774, -1.0790514454451876, 6.5);
+  EXPECT_LT(glm::distance(g.position(3 - 1, 2 - 0, 3 - 2), vtkPoint), 1e-12);
+  EXPECT_EQ(model->mesh.nodeCount(), 60u);
+  EXPECT_EQ(model->mesh.cellCount(), 24u);
+  const Field* temperature = model->findField("temperature");
+  const Field* velocity = model->findField("velocity");
+  const Field* material = model->findField("material");
+  ASSERT_TRUE(temperature && velocity && material);
+  EXPECT_EQ(material->location(), FieldLocation::Cell);
+  EXPECT_EQ(velocity->components(), 3);
+  for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t j = 0; j < 4; ++j)
+      for (std::size_t i = 0; i < 5; ++i) {
+        const std::size_t p = g.pointIndex(i, j, k);
+        EXPECT_EQ(temperature->values(0)[p], 100.0 + double(i + 1) + 10.0 * double(j) + 100.0 * double(k + 2));
+        EXPECT_EQ(velocity->values(0)[3 * p + 2], double(k + 2));
+      }
+  for (std::size_t c = 0; c < 24; ++c) EXPECT_EQ(material->values(0)[c], double(c % 3));
+  // Every hexahedron is right-handed (the model checks would flag inverted ones).
+  for (std::size_t c = 0; c < model->mesh.cellCount(); ++c) EXPECT_GT(signedCellVolume(model->mesh, c), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, ImageData,
+                         ::testing::Values("image_ascii.vti", "image_binary.vti", "image_appended_zlib.vti"));
+
+TEST(ImageDataDefects, AreRefusedNamingTheLine) {
+  const std::string good = text(test::dataFile("formats/image_ascii.vti"));
+  const auto path = (std::filesystem::temp_directory_path() / "volpost_bad.vti").string();
+  const auto refused = [&](const std::string& from, const std::string& to, const std::string& words) {
+    std::string bad = good;
+    const auto at = bad.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bad.replace(at, from.size(), to);
+    std::ofstream(path, std::ios::binary) << bad;
+    try {
+      (void)VtiReader().read(path, {});
+      ADD_FAILURE() << "read with " << to;
+    } catch (const ReadError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_GE(e.line(), 1) << e.what();
+    }
+  };
+  refused("WholeExtent=\"1 5 0 3 2 4\"", "WholeExtent=\"1 5 0 3 2\"", "needs 6");
+  refused("WholeExtent=\"1 5 0 3 2 4\"", "WholeExtent=\"1 5 0 3 4 4\"", "not 2D images");
+  refused("Piece Extent=\"1 5 0 3 2 4\"", "Piece Extent=\"1 5 0 3 2 9\"", "outside the WholeExtent");
+  refused("Spacing=\"0.5 0.25 2\"", "Spacing=\"0.5 0 2\"", "spacing 0");
+  refused("Spacing=\"0.5 0.25 2\"", "Spacing=\"0.5 nan 2\"", "finite");
+  refused("Name=\"temperature\" format=\"ascii\"", "Name=\"temperature\" NumberOfComponents=\"2\" format=\"ascii\"",
+          "holds 60 values");
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace volpost::meshio
