@@ -240,6 +240,8 @@ class LegacyReading {
     header(*model);
     std::size_t pointCount = 0;
     bool haveCells = false;
+    RegularGrid grid;  // STRUCTURED_POINTS: filled by DIMENSIONS, ORIGIN, SPACING
+    bool haveDimensions = false;
     VtkCellMapping mapping;
     FieldLocation location = FieldLocation::Node;
     std::size_t sectionCount = 0;
@@ -250,6 +252,27 @@ class LegacyReading {
       if (key == "POINTS" || key == "CELLS" || key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
         const auto [it, first] = seen.emplace(key, p_.currentLine());
         if (!first) p_.fail("a second " + key + " section (the first is at line " + std::to_string(it->second) + "): a file has one");
+      }
+      if (structured_ && (key == "DIMENSIONS" || key == "ORIGIN" || key == "SPACING" || key == "ASPECT_RATIO")) {
+        if (haveCells) p_.fail(key + " after the point or cell data: it describes the grid and comes first");
+        if (key == "DIMENSIONS") {
+          for (std::size_t& n : grid.dims) n = p_.count("a DIMENSIONS entry");
+          haveDimensions = true;
+        } else {
+          glm::dvec3 v;
+          for (int a = 0; a < 3; ++a) v[a] = number(key);  // in order: not three arguments of one call
+          if (key == "ORIGIN") grid.origin = v;
+          else grid.axes = {glm::dvec3(v.x, 0, 0), glm::dvec3(0, v.y, 0), glm::dvec3(0, 0, v.z)};
+        }
+        continue;
+      }
+      if (structured_ && (key == "POINTS" || key == "CELLS" || key == "CELL_TYPES"))
+        p_.fail(key + " in a STRUCTURED_POINTS file (its points are DIMENSIONS, ORIGIN and SPACING)");
+      if (structured_ && !haveCells && (key == "POINT_DATA" || key == "CELL_DATA")) {
+        if (!haveDimensions) p_.fail(key + " before DIMENSIONS");
+        buildGrid(*model, grid, mapping);
+        pointCount = grid.pointCount();
+        haveCells = true;
       }
       if (key == "POINTS") {
         if (seen.count("CELLS")) p_.fail("POINTS after CELLS: the cells would refer to points not read yet");
@@ -294,6 +317,11 @@ class LegacyReading {
         p_.fail("unexpected keyword '" + key.substr(0, 40) + "'");
       }
     }
+    if (structured_ && !haveCells) {
+      if (!haveDimensions) p_.fail("a STRUCTURED_POINTS file without DIMENSIONS");
+      buildGrid(*model, grid, mapping);
+      haveCells = true;
+    }
     if (!haveCells) p_.fail(cells_.offsets.empty() ? "no CELLS section" : "CELLS without CELL_TYPES");
     for (auto& a : arrays_) addField(*model, a, mapping);
     model->diagnostics.insert(model->diagnostics.end(), diagnostics_.begin(), diagnostics_.end());
@@ -310,8 +338,33 @@ class LegacyReading {
     else if (format != "ASCII") p_.fail("third line must be ASCII or BINARY, found '" + std::string(format.substr(0, 40)) + "'");
     if (p_.token() != "DATASET") p_.fail("expected DATASET");
     const auto dataset = p_.token();
-    if (dataset != "UNSTRUCTURED_GRID")
-      p_.fail("DATASET " + std::string(dataset.substr(0, 40)) + " is not a mesh of cells; volpost reads UNSTRUCTURED_GRID");
+    structured_ = dataset == "STRUCTURED_POINTS";
+    if (dataset != "UNSTRUCTURED_GRID" && !structured_)
+      p_.fail("DATASET " + std::string(dataset.substr(0, 40)) +
+              " is not a mesh of cells or a regular grid; volpost reads UNSTRUCTURED_GRID and STRUCTURED_POINTS");
+  }
+
+  // A number written as text (DIMENSIONS, ORIGIN, SPACING are text in binary files too).
+  double number(const std::string& what) {
+    const std::string text(p_.token());
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(v)) p_.fail(what + ": '" + text.substr(0, 40) + "' is not a number");
+    return v;
+  }
+
+  // The regular grid of a STRUCTURED_POINTS file, its hexahedra, and cells numbered as the
+  // file's cell data numbers them (x fastest, as VTK and hexahedraOfGrid both do).
+  void buildGrid(Model& model, RegularGrid& grid, VtkCellMapping& mapping) {
+    if (const std::string defect = grid.defect(); !defect.empty())
+      p_.fail(defect + " (DIMENSIONS, SPACING): volpost reads volumes, not 2D images");
+    const std::size_t points = p_.product(p_.product(grid.dims[0], grid.dims[1], "DIMENSIONS"), grid.dims[2], "DIMENSIONS");
+    requireMemory(double(points) * 80.0, path_, "a grid of " + std::to_string(points) + " points");
+    model.mesh = hexahedraOfGrid(grid);
+    model.grid = grid;
+    mapping.modelCell.resize(model.mesh.cellCount());
+    for (std::size_t c = 0; c < mapping.modelCell.size(); ++c) mapping.modelCell[c] = std::int64_t(c);
+    mapping.skipped = 0;
   }
 
   VtkCellArrays readCells() {
@@ -442,6 +495,7 @@ class LegacyReading {
   }
 
   LegacyParser p_;
+  bool structured_ = false;
   std::string path_;
   const Progress& progress_;
   VtkCellArrays cells_;

@@ -2,6 +2,7 @@
 // VTK XML image data (.vti) as written by VTK itself in three encodings: the grid (extent
 // not starting at 0, spacing, a rotated Direction), point and cell arrays at the right
 // points, and refusals of damaged files that name the line.
+#include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
 #include "support/TestSupport.hpp"
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace volpost::meshio {
 namespace {
@@ -83,6 +85,46 @@ TEST(ImageDataDefects, AreRefusedNamingTheLine) {
   refused("Spacing=\"0.5 0.25 2\"", "Spacing=\"0.5 nan 2\"", "finite");
   refused("Name=\"temperature\" format=\"ascii\"", "Name=\"temperature\" NumberOfComponents=\"2\" format=\"ascii\"",
           "holds 60 values");
+  std::filesystem::remove(path);
+}
+
+class LegacyStructuredPoints : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(LegacyStructuredPoints, ReadAsARegularGrid) {
+  const auto model = VtkLegacyReader().read(test::dataFile(std::string("formats/") + GetParam()), {});
+  ASSERT_TRUE(model->grid);
+  const RegularGrid& g = *model->grid;
+  EXPECT_EQ(g.dims, (std::array<std::size_t, 3>{5, 4, 3}));
+  EXPECT_EQ(g.origin, glm::dvec3(10.0, -2.0, 0.5));
+  EXPECT_EQ(g.axes[0], glm::dvec3(0.5, 0, 0));
+  EXPECT_EQ(g.axes[2], glm::dvec3(0, 0, 2.0));
+  const Field* temperature = model->findField("temperature");
+  const Field* material = model->findField("material");
+  ASSERT_TRUE(temperature && material);
+  EXPECT_EQ(temperature->values(0)[g.pointIndex(3, 2, 1)], 223.0);
+  EXPECT_EQ(material->values(0)[7], 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, LegacyStructuredPoints,
+                         ::testing::Values("image_points_ascii.vtk", "image_points_binary.vtk"));
+
+TEST(LegacyStructuredPointsDefects, AreRefusedNamingTheLine) {
+  const std::string good = text(test::dataFile("formats/image_points_ascii.vtk"));
+  const auto path = (std::filesystem::temp_directory_path() / "volpost_bad_points.vtk").string();
+  for (const auto& [from, to, words] : {std::tuple{"DIMENSIONS 5 4 3", "DIMENSIONS 5 4 1", "not 2D images"},
+                                        std::tuple{"SPACING 0.5 0.25 2", "SPACING 0.5 0.25 x", "is not a number"},
+                                        std::tuple{"ORIGIN 10 -2 0.5", "POINTS 3 float", "in a STRUCTURED_POINTS file"},
+                                        std::tuple{"CELL_DATA 24", "CELL_DATA 25", "does not match the 24 cells"}}) {
+    std::string bad = good;
+    bad.replace(bad.find(from), std::string(from).size(), to);
+    std::ofstream(path, std::ios::binary) << bad;
+    try {
+      (void)VtkLegacyReader().read(path, {});
+      ADD_FAILURE() << "read with " << to;
+    } catch (const ReadError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  }
   std::filesystem::remove(path);
 }
 
