@@ -87,6 +87,8 @@ struct Options {
                                                    "mean edge); on regular grids the step of the march or the slice "
                                                    "spacing of every mode (default: half the shortest grid spacing).",
                                   "H"};
+  QCommandLineOption shading{"shading", "Regular grids: light the volume's emission by the gradient, the light at the "
+                                        "eye (texture-raymarch, texture-slices, cpu, reference)."};
   QCommandLineOption termination{"termination", "Rays stop when the light left behind is below this fraction "
                                                 "(default 0.002; 0: never).", "T"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
@@ -195,6 +197,7 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
   };
   if (p.isSet(o.samplingStep)) scene.setSamplingStep(number(o.samplingStep, "sampling-step"));
   if (p.isSet(o.termination)) scene.setTermination(number(o.termination, "termination"));
+  if (p.isSet(o.shading)) scene.setShading(true);
 }
 
 // Options a chosen renderer cannot honour are errors, never silently ignored.
@@ -206,13 +209,16 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   if (surface) {
     const QString why = "works with volume renderers (--renderer raycast, vicp, cpu, reference)";
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.volumeEdges,
-                                             &o.samplingStep, &o.termination, &o.floatOut, &o.threads})
+                                             &o.samplingStep, &o.termination, &o.shading, &o.floatOut, &o.threads})
       refuse(*option, why);
   } else {
     refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
     refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
   }
   if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
+  if (renderer == "raycast" || renderer == "vicp" || renderer == "vicp-exact")
+    refuse(o.shading, "is drawn by the regular-grid renderers (texture-raymarch, texture-slices, cpu, reference), not by " +
+                          renderer);
   if (renderer == "cpu") {
     refuse(o.mode, "chooses a GPU integration; the CPU ray caster integrates exactly");
   }
@@ -343,7 +349,7 @@ int runRender(const QStringList& args) {
   const Options o;
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
-                     o.termination, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
+                     o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;

@@ -14,6 +14,7 @@ optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int 
   optics::RaySettings settings;
   settings.clipPlanes = scene.volume().allClipPlanes();
   settings.isoSurfaces = scene.volume().isoSurfaces;
+  settings.shading = scene.volume().shading;
   // A regular grid's own field is the trilinear interpolant of its points (what the
   // texture renderers draw); a mesh's is linear on its tetrahedra.
   const Model& model = scene.session()->model();

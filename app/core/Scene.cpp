@@ -41,6 +41,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.step = 0;
   state_.modelPath = session_ ? session_->model().sourcePath : std::string();
   state_.volume.shown = false;
+  if (!session_ || !session_->model().grid) state_.volume.shading = false;  // lighting by the gradient is for grids
+  changed_.mode = true;
   state_.volume.clipPlanes.clear();
   state_.volume.clipBox.reset();
   state_.volume.isoSurfaces.clear();
@@ -152,6 +154,14 @@ void Scene::setVolumeRenderer(const std::string& name) {
   changed_.renderer = true;
 }
 
+void Scene::setShading(bool on) {
+  if (on && session_ && !session_->model().grid)
+    throw std::invalid_argument("shading by the gradient applies to regular grids (SEG-Y, image data); this model is a "
+                                "mesh");
+  state_.volume.shading = on;
+  changed_.mode = true;
+}
+
 void Scene::setIntegrationMode(IntegrationMode mode) {
   state_.volume.mode = mode;
   changed_.mode = true;
@@ -256,6 +266,9 @@ void Scene::applyState(const SceneState& s) {
 
   const bool locationChanged = !view_ || !view || view_->location != view->location;
   const std::string keptModel = state_.modelPath;
+  if (s.volume.shading && session_ && !session_->model().grid)
+    throw std::invalid_argument("the state lights the volume by its gradient (volume.shading), which applies to regular "
+                                "grids; this model is a mesh");
   state_ = s;
   state_.modelPath = keptModel;
   state_.camera.reset();  // the live camera holds it
@@ -642,6 +655,7 @@ void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
   } else if (changed_.values) {
     renderer.setValues(view_->values);
   }
+  if (changed_.mode) renderer.setShading(state_.volume.shading);
   applyVolumeSettings();
 }
 

@@ -108,6 +108,9 @@ class Scene {
   void setIsoSurfaces(std::vector<optics::IsoSurface> surfaces);
   void setSamplingStep(double step);
   void setTermination(double transmittance);
+  /// Regular grids: the volume's emission lit by the trilinear gradient (light at the eye).
+  /// Throws std::invalid_argument, changing nothing, to turn it on for a mesh.
+  void setShading(bool on);
   void setVolumeEdges(bool show);
   void setSurfaceShown(bool shown) { state_.surfaceShown = shown; }
   /// 0..1; below 1 the surface is see-through. Throws std::invalid_argument otherwise.

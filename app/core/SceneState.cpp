@@ -78,6 +78,7 @@ json jsonOf(const VolumeLayer& v) {
   out["isoSurfaces"] = isos;
   out["samplingStep"] = v.samplingStep;
   out["termination"] = v.termination;
+  out["shading"] = v.shading;
   out["edges"] = v.edges;
   return out;
 }
@@ -152,6 +153,7 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
     if (v.termination < 0.0 || v.termination >= 1.0) r.fail("volume.termination", "must lie in [0, 1)");
   }
   if (const json* x = r.find(in, "edges")) v.edges = r.boolean(*x, "volume.edges");
+  if (const json* x = r.find(in, "shading")) v.shading = r.boolean(*x, "volume.shading");
   return v;
 }
 

@@ -55,6 +55,7 @@ struct VolumeLayer {
   std::vector<optics::IsoSurface> isoSurfaces;
   double samplingStep = 0.0;    ///< sampling mode; 0: a quarter of the mean edge
   double termination = 0.002;   ///< rays stop below this transmittance
+  bool shading = false;         ///< regular grids: the emission lit by the gradient (headlight)
   bool edges = false;           ///< element edges over the volume (they end the rays)
   /// All the planes the renderer cuts with: the box's six, then the free ones.
   std::vector<ClipPlane> allClipPlanes() const;

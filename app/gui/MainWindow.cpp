@@ -313,6 +313,18 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   if (renderers.empty()) volumeAction_->setToolTip("No volume renderer plugin is loaded");
   connect(volumeAction_, &QAction::toggled, this, &MainWindow::setVolumeShown);
 
+  QAction* shading = view->addAction("&Shade the Volume by Its Gradient (grids)");
+  shading->setObjectName("shadingAction");
+  shading->setCheckable(true);
+  shading->setShortcut(QKeySequence(Qt::Key_L));
+  shading->setToolTip("Light a regular grid's volume (a seismic cube) with the light at the eye");
+  connect(shading, &QAction::toggled, this, [this, shading](bool on) {
+    if (!changeScene([on](Scene& s) { s.setShading(on); })) {
+      const QSignalBlocker block(shading);
+      shading->setChecked(false);  // a mesh: the message says why
+    }
+  });
+
   QMenu* modes = view->addMenu("Volume &Integration");
   auto* modeGroup = new QActionGroup(this);
   for (IntegrationMode mode : allIntegrationModes()) {
@@ -808,6 +820,10 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
     action->setChecked(false);
   }
   fitRendererToModel();
+  if (auto* shading = findChild<QAction*>("shadingAction")) {
+    const QSignalBlocker block(shading);
+    shading->setChecked(viewport_->scene().volume().shading);
+  }
   fillQuantities();
   showModelInfo();
   std::size_t warnings = 0;
@@ -1060,6 +1076,7 @@ void MainWindow::syncControlsToScene() {
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);
+  check(findChild<QAction*>("shadingAction"), state.volume.shading);
   check(findChild<QAction*>("renderer:" + QString::fromStdString(state.volume.renderer)), true);
   check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
   if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);

@@ -483,7 +483,8 @@ TEST(SeismicCommands, InfoDescribesTheGridAndRenderersDrawIt) {
       << info.output;
   EXPECT_NE(info.output.find("samples:  16-bit integer (format 3) in the file"), std::string::npos) << info.output;
   const std::string out = (std::filesystem::temp_directory_path() / "volpost_seismic.png").string();
-  for (const std::string renderer : {"texture-raymarch", "cpu --sampling-step 2", "reference", "surface"}) {
+  for (const std::string renderer : {"texture-raymarch", "texture-slices --shading", "cpu --sampling-step 2 --shading",
+                                     "reference --shading", "surface"}) {
     std::filesystem::remove(out);
     const auto r = runVolpost("render " + cube + " --field amplitude --size 64x48 --renderer " + renderer + " -o " + out);
     EXPECT_EQ(r.exitCode, 0) << renderer << ": " << r.output;
@@ -512,6 +513,12 @@ TEST(SeismicCommands, GridRenderersAndGridOptionsRefuseMeshesByName) {
   const auto grid = runVolpost("render " + mesh + " --field S.mises --renderer texture-raymarch -o " + out);
   EXPECT_EQ(grid.exitCode, 2) << grid.output;
   EXPECT_NE(grid.output.find("draws regular grids"), std::string::npos) << grid.output;
+  const auto shadedMesh = runVolpost("render " + mesh + " --field S.mises --renderer cpu --shading -o " + out);
+  EXPECT_EQ(shadedMesh.exitCode, 2) << shadedMesh.output;
+  EXPECT_NE(shadedMesh.output.find("regular grids"), std::string::npos) << shadedMesh.output;
+  const auto shadedTets = runVolpost("render " + dataFile("seismic/synthetic_12x10x40.sgy") +
+                                     " --field amplitude --renderer raycast --shading -o " + out);
+  EXPECT_EQ(shadedTets.exitCode, 2) << shadedTets.output;
   const auto step = runVolpost("render " + mesh + " --field S.mises --renderer cpu --sampling-step 0.1 -o " + out);
   EXPECT_EQ(step.exitCode, 2) << step.output;
   EXPECT_NE(step.output.find("--sampling-step"), std::string::npos) << step.output;

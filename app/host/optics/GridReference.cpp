@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "host/optics/GridReference.hpp"
 
+#include <volpost/core/optics/Headlight.hpp>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 namespace volpost::optics {
@@ -152,7 +155,10 @@ LinearOptics opticsAt(const TransferFunction& tf, double s) {
 
 // One piece [ua, ub] of a cell's cubic over which the TF is one linear segment: optical
 // depth exactly, emission by Gauss-Legendre on panels of bounded optical depth.
-SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double length, const TransferFunction& tf) {
+// `shade(u)`, if given, is the emission's shading there (multiplier, white added).
+using ShadeAt = std::function<glm::dvec2(double u)>;
+SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double length, const TransferFunction& tf,
+                                  const ShadeAt& shade) {
   SegmentLight out;
   if (!(ub > ua)) return out;
   const LinearOptics o = opticsAt(tf, p(0.5 * (ua + ub)));
@@ -170,7 +176,7 @@ SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double l
   out.transmittance = std::exp(-total);
   if (total == 0.0) return out;
   static constexpr double x8[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
-  static constexpr double w8[4] = {0.3626837833783620, 0.3137066371691159, 0.2223810344533745, 0.1012285362903763};
+  static constexpr double w8[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
   const int panels = int(std::clamp(std::ceil(total / 0.25), 1.0, 4096.0));
   const double h = (ub - ua) / panels;
   for (int n = 0; n < panels; ++n) {
@@ -179,7 +185,11 @@ SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double l
     for (int q = 0; q < 4; ++q)
       for (double u : {mid - half * x8[q], mid + half * x8[q]}) {
         const double w = weight(u);
-        const glm::dvec3 color = o.c0 + w * (o.c1 - o.c0);
+        glm::dvec3 color = o.c0 + w * (o.c1 - o.c0);
+        if (shade) {
+          const glm::dvec2 lit = shade(u);
+          color = color * lit.x + glm::dvec3(lit.y);
+        }
         out.color += (w8[q] * half * length) * color * std::max(tau(u), 0.0) * std::exp(-depth(u));
       }
   }
@@ -234,16 +244,19 @@ SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> v
     const Cell cell = cellAt(grid, values, o + (0.5 * (ta + tb)) * e);
     const auto sAt = [&](double u) { return cell.at(o + (ta + u * length) * e); };
     const Cubic p = Cubic::through(sAt(0.0), sAt(1.0 / 3.0), sAt(2.0 / 3.0), sAt(1.0));
+    ShadeAt shade;
+    if (settings.shading)
+      shade = [&](double u) { return headlight(gradientToWorld * cell.gradient(o + (ta + u * length) * e), d); };
     double ua = 0.0;
     for (const Cut& cut : cutsOf(p, tf, settings)) {
-      compositeBehind(total, integrateSmoothPiece(p, ua, cut.u, length, tf));
+      compositeBehind(total, integrateSmoothPiece(p, ua, cut.u, length, tf, shade));
       if (cut.iso) {
-        const double shade = isoShade(gradientToWorld * cell.gradient(o + (ta + cut.u * length) * e), d);
-        compositeBehind(total, {cut.iso->color * shade * cut.iso->opacity, 1.0 - cut.iso->opacity});
+        const double surfaceShade = isoShade(gradientToWorld * cell.gradient(o + (ta + cut.u * length) * e), d);
+        compositeBehind(total, {cut.iso->color * surfaceShade * cut.iso->opacity, 1.0 - cut.iso->opacity});
       }
       ua = cut.u;
     }
-    compositeBehind(total, integrateSmoothPiece(p, ua, 1.0, length, tf));
+    compositeBehind(total, integrateSmoothPiece(p, ua, 1.0, length, tf, shade));
     if (total.transmittance < settings.terminationTransmittance) break;
   }
   return total;

@@ -30,6 +30,9 @@ struct RaySettings {
   /// shaded by the cell gradient (0.3 + 0.7 |cos| headlight; unshaded for element results).
   std::vector<IsoSurface> isoSurfaces;
   double terminationTransmittance = 0.0;  ///< stop when what is behind counts less (0: never)
+  /// Regular grids: the emission shaded by the trilinear gradient with the light at the eye
+  /// (volpost/core/optics/Headlight.hpp), exactly at every quadrature point.
+  bool shading = false;
 };
 
 /// Integrates one ray: origin in model coordinates, direction of any length (distances

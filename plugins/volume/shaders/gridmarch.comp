@@ -39,15 +39,20 @@ void main() {
   bool inside = insideGrid(t0, t1) && clipSegment(t0, t1);
   if (firstPass) t = inside ? t0 : t1;
   if (inside && t < t1) {
-    float sf = valueAlongRay(t);
+    vec4 front = sampleAlongRay(t);
+    vec2 frontShade = shadeOf(front);
     for (int n = 0; n < stepsPerPass && t < t1 && accT >= terminationTransmittance; ++n) {
       float next = min((floor(t / marchStep) + 1.0) * marchStep, t1);
       if (next <= t) next = min(t + marchStep, t1);  // t beyond float's resolution of the lattice
       if (next <= t) { t = t1; break; }
-      float sb = valueAlongRay(next);
-      integrateValues(t, next, sf, sb);
+      vec4 back = sampleAlongRay(next);
+      vec2 backShade = shadeOf(back);
+      shadeFront = frontShade;
+      shadeBack = backShade;
+      integrateValues(t, next, front.x, back.x);
       t = next;
-      sf = sb;
+      front = back;
+      frontShade = backShade;
     }
   }
   bool done = !inside || t >= t1 || accT < terminationTransmittance;

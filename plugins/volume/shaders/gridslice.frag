@@ -40,6 +40,9 @@ void main() {
     b = min(here + sliceSpacing / cosine, tOut);
   }
   if (!(b > a)) discard;
-  integrateValues(a, b, valueAlongRay(a), valueAlongRay(b));
+  vec4 front = sampleAlongRay(a), back = sampleAlongRay(b);
+  shadeFront = shadeOf(front);
+  shadeBack = shadeOf(back);
+  integrateValues(a, b, front.x, back.x);
   fragColor = vec4(accColor, 1.0 - accT);
 }

@@ -2,6 +2,7 @@
 #include "CpuGridMarcher.hpp"
 
 #include <volpost/core/WorkerThreads.hpp>
+#include <volpost/core/optics/Headlight.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -58,6 +59,11 @@ GridSamples::GridSamples(const RegularGrid& grid, std::span<const double> values
 }
 
 float GridSamples::at(const glm::dvec3& index) const {
+  glm::dvec3 unused;
+  return at(index, unused);
+}
+
+float GridSamples::at(const glm::dvec3& index, glm::dvec3& gradient) const {
   std::size_t base[3];
   float w[3];
   for (int a = 0; a < 3; ++a) {
@@ -69,20 +75,13 @@ float GridSamples::at(const glm::dvec3& index) const {
   }
   const std::size_t dj = grid_.dims[0], dk = grid_.dims[0] * grid_.dims[1];
   const float* v = values_.data() + grid_.pointIndex(base[0], base[1], base[2]);
-  const float a = v[0] + w[0] * (v[1] - v[0]), b = v[dj] + w[0] * (v[dj + 1] - v[dj]);
-  const float c = v[dk] + w[0] * (v[dk + 1] - v[dk]), d = v[dk + dj] + w[0] * (v[dk + dj + 1] - v[dk + dj]);
-  const float e = a + w[1] * (b - a), f = c + w[1] * (d - c);
-  return e + w[2] * (f - e);
-}
-
-glm::dvec3 GridSamples::indexGradient(const glm::dvec3& index) const {
-  glm::dvec3 g;
-  for (int a = 0; a < 3; ++a) {
-    glm::dvec3 h(0.0);
-    h[a] = 0.5;
-    g[a] = double(at(index + h)) - double(at(index - h));
-  }
-  return g;
+  const float y0 = v[0] + w[0] * (v[1] - v[0]), y1 = v[dj] + w[0] * (v[dj + 1] - v[dj]);
+  const float y2 = v[dk] + w[0] * (v[dk + 1] - v[dk]), y3 = v[dk + dj] + w[0] * (v[dk + dj + 1] - v[dk + dj]);
+  const float a = y0 + w[1] * (y1 - y0), b = y2 + w[1] * (y3 - y2);
+  const auto lerp = [](float p, float q, float t) { return p + t * (q - p); };
+  gradient = {lerp(lerp(v[1] - v[0], v[dj + 1] - v[dj], w[1]), lerp(v[dk + 1] - v[dk], v[dk + dj + 1] - v[dk + dj], w[1]), w[2]),
+              lerp(y1 - y0, y3 - y2, w[2]), b - a};
+  return a + w[2] * (b - a);
 }
 
 namespace {
@@ -111,9 +110,14 @@ struct Marcher {
   std::vector<float> isoValues;                  // relative to the grid's value offset
   double step;
 
+  // The shading of a sample (its index gradient), or unlit.
+  glm::dvec2 shadeOf(const glm::dvec3& indexGradient, const GridRay& r) const {
+    return settings.shading ? optics::headlight(glm::transpose(grid.toIndex()) * indexGradient, r.dir) : glm::dvec2(1.0, 0.0);
+  }
+
   // A piece over which the scalar is linear, cut at the iso-surfaces it crosses.
   void piece(const GridRay& r, const glm::dvec3& o, const glm::dvec3& e, double ta, double tb, float sa, float sb,
-             optics::SegmentLight& light) const {
+             const EmissionShade& shade, optics::SegmentLight& light) const {
     const double length = tb - ta;
     double x0 = 0.0;
     for (std::size_t n = 0; n < isoValues.size() && sa != sb; ++n) {
@@ -127,23 +131,28 @@ struct Marcher {
         }
       }
       if (which == isoValues.size()) break;
-      integratePart(sa, sb, x0, best, length, light);
+      integratePart(sa, sb, x0, best, length, shade, light);
       const optics::IsoSurface& s = settings.isoSurfaces[which];
-      const glm::dvec3 g = glm::transpose(grid.toIndex()) * grid.indexGradient(o + (ta + best * length) * e);
+      glm::dvec3 indexGradient;
+      (void)grid.at(o + (ta + best * length) * e, indexGradient);
+      const glm::dvec3 g = glm::transpose(grid.toIndex()) * indexGradient;
       const double gl = glm::length(g);
-      const double shade = gl > 0.0 ? 0.3 + 0.7 * std::abs(glm::dot(g / gl, r.dir)) : 1.0;
-      optics::compositeBehind(light, {s.color * shade * s.opacity, 1.0 - s.opacity});
+      const double isoShade = gl > 0.0 ? 0.3 + 0.7 * std::abs(glm::dot(g / gl, r.dir)) : 1.0;
+      optics::compositeBehind(light, {s.color * isoShade * s.opacity, 1.0 - s.opacity});
       x0 = best;
     }
-    integratePart(sa, sb, x0, 1.0, length, light);
+    integratePart(sa, sb, x0, 1.0, length, shade, light);
   }
 
-  void integratePart(float sa, float sb, double x0, double x1, double length, optics::SegmentLight& light) const {
+  // The part [x0, x1] of a piece, its shading interpolated from the piece's ends.
+  void integratePart(float sa, float sb, double x0, double x1, double length, const EmissionShade& shade,
+                     optics::SegmentLight& light) const {
     if (!(x1 > x0)) return;
     const double offset = grid.valueOffset();
     const double a = offset + double(sa) + x0 * double(sb - sa), b = offset + double(sa) + x1 * double(sb - sa);
     if (integrator.transparent(a, b)) return;
-    optics::compositeBehind(light, integrator.integrate(a, b, (x1 - x0) * length));
+    const EmissionShade part{shade.front + x0 * (shade.back - shade.front), shade.front + x1 * (shade.back - shade.front)};
+    optics::compositeBehind(light, integrator.integrate(a, b, (x1 - x0) * length, settings.shading ? &part : nullptr));
   }
 
   // The brick holding index point p (clamped to the grid).
@@ -186,7 +195,9 @@ struct Marcher {
     if (!(t0 < t1)) return 0;
     std::size_t steps = 0;
     double t = t0;
-    float sf = grid.at(o + t * e);
+    glm::dvec3 g;
+    float sf = grid.at(o + t * e, g);
+    glm::dvec2 frontShade = shadeOf(g, r);
     const double nudge = 1e-9 * (std::abs(t1) + step);
     while (t < t1) {
       ++steps;
@@ -195,16 +206,19 @@ struct Marcher {
       if (clearBricks[brick]) {  // nothing to see in it: across in one step
         const double exit = std::min(brickExit(o, e, b, t), t1);
         t = exit > t ? exit : std::min(t + step, t1);
-        sf = grid.at(o + t * e);
+        sf = grid.at(o + t * e, g);
+        frontShade = shadeOf(g, r);
         continue;
       }
       double next = std::min((std::floor(t / step) + 1.0) * step, t1);
       if (!(next > t)) next = std::min(t + step, t1);
       if (!(next > t)) break;
-      const float sb = grid.at(o + next * e);
-      piece(r, o, e, t, next, sf, sb, light);
+      const float sb = grid.at(o + next * e, g);
+      const glm::dvec2 backShade = shadeOf(g, r);
+      piece(r, o, e, t, next, sf, sb, {frontShade, backShade}, light);
       t = next;
       sf = sb;
+      frontShade = backShade;
       if (light.transmittance < settings.terminationTransmittance) {
         stopped = t < t1;
         break;

@@ -32,8 +32,9 @@ class GridSamples {
   const glm::dmat3& toIndex() const { return toIndex_; }
   /// The value (relative to valueOffset) at a continuous index, trilinear.
   float at(const glm::dvec3& index) const;
-  /// d value / d index there (central differences of half a step, as the GPU marcher).
-  glm::dvec3 indexGradient(const glm::dvec3& index) const;
+  /// The value there and d value / d index: the cell's own trilinear gradient (as the GPU
+  /// marchers and the reference).
+  float at(const glm::dvec3& index, glm::dvec3& indexGradient) const;
 
   static constexpr std::size_t kBrickCells = 8;
   const std::array<std::size_t, 3>& bricks() const { return bricks_; }

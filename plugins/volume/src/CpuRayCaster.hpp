@@ -34,6 +34,9 @@ struct CpuRaySettings {
   /// Window depth (0..1, bottom row first, one per pixel) of opaque geometry already drawn:
   /// rays end there. Empty: none.
   std::vector<float> sceneDepth;
+  /// Regular grids: the emission shaded by the trilinear gradient, light at the eye
+  /// (volpost/core/optics/Headlight.hpp). The tetrahedral walk ignores it.
+  bool shading = false;
 };
 
 struct CpuRenderStats {

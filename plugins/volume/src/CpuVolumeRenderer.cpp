@@ -50,6 +50,11 @@ void CpuVolumeRenderer::setGrid(const RegularGrid& grid, std::span<const double>
   visible_.reset();
 }
 
+void CpuVolumeRenderer::setShading(bool on) {
+  if (settings_.shading != on) ++revision_;
+  settings_.shading = on;
+}
+
 void CpuVolumeRenderer::setSamplingStep(double step) {
   if (!(step >= 0.0) || !std::isfinite(step))
     throw std::invalid_argument("the sampling step must be a length >= 0, not " + std::to_string(step));

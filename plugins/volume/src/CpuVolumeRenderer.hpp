@@ -36,6 +36,8 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override;
   bool drawsTetrahedra() const override { return true; }
+  /// Grids only (the marcher shades by the trilinear gradient); meshes are drawn unlit.
+  void setShading(bool on) override;
   void setValues(std::span<const double> values) override;
   void setTransferFunction(const TransferFunction& tf) override {
     tf_ = tf;

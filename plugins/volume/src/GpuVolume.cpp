@@ -370,6 +370,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("clipCount"), int(planes.size()));
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
+  glProgramUniform1i(p, u("shading"), shading_ && grid_);
   if (grid_) {
     const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
     glm::mat4 worldToIndex{glm::mat3(toIndex)};

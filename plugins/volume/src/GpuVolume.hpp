@@ -43,6 +43,8 @@ class GpuVolume {
   void setIntegrationMode(IntegrationMode mode);
   void setSamplingStep(double step) { samplingStep_ = step; }
   void setTerminationThreshold(double transmittance) { termination_ = transmittance; }
+  /// Headlight shading by the gradient (the grid renderers' shaders honour it).
+  void setShading(bool on) { shading_ = on; }
   void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
   bool hasPendingWork() const { return preFuture_.valid(); }
 
@@ -111,6 +113,7 @@ class GpuVolume {
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
   double samplingStep_ = 0.0;  ///< 0: a quarter of the mean edge
   double termination_ = 0.002;
+  bool shading_ = false;
   bool asynchronous_ = false;
   std::size_t meshRevision_ = 0;
 

@@ -17,6 +17,7 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   std::string name() const override { return "texture-raymarch"; }
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
+  void setShading(bool on) override { volume_.setShading(on); }
   void initialize() override { volume_.initialize(); }
   void release() override;
   void render(const RenderContext& ctx) override;

@@ -22,6 +22,7 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   std::string name() const override { return "texture-slices"; }
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
+  void setShading(bool on) override { volume_.setShading(on); }
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;

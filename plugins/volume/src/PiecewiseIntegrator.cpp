@@ -116,8 +116,16 @@ void PiecewiseIntegrator::at(int piece, double s, glm::dvec3& color, double& tau
   tau = tau_[i] + (tau_[i + 1] - tau_[i]) * w;
 }
 
-optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack, double length) const {
+optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack, double length,
+                                                   const EmissionShade* shade) const {
   optics::SegmentLight total;
+  // The color at value x, shaded as interpolated along the segment.
+  const auto lit = [&](glm::dvec3& c, double x) {
+    if (!shade) return;
+    const double w = sBack != sFront ? std::clamp((x - sFront) / (sBack - sFront), 0.0, 1.0) : 0.5;
+    const glm::dvec2 k = shade->front + w * (shade->back - shade->front);
+    c = c * k.x + glm::dvec3(k.y);
+  };
   if (values_.empty() || !(length > 0.0)) return total;
   glm::dvec3 c0, c1;
   double t0, t1;
@@ -126,6 +134,7 @@ optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack,
   if (std::max(sFront, sBack) <= zeroUntil_[std::size_t(pieceOf(std::min(sFront, sBack)) + 1)]) return total;
   if (sFront == sBack) {
     at(piece, sFront, c0, t0);
+    lit(c0, sFront);
     return t0 > 0.0 ? optics::constantSegment(c0, t0, length) : total;
   }
   const bool rising = sBack > sFront;
@@ -134,17 +143,20 @@ optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack,
   // With a falling value, a point exactly at x0 belongs to the piece below.
   if (!rising && piece >= 0 && values_[std::size_t(piece)] == x0) --piece;
   at(piece, x0, c0, t0);
+  lit(c0, x0);
   while (true) {
     // The next control point toward sBack, or sBack itself.
     double x1 = sBack;
     if (rising && piece + 1 < int(values_.size()) && values_[std::size_t(piece) + 1] < sBack) x1 = values_[std::size_t(piece) + 1];
     if (!rising && piece >= 0 && values_[std::size_t(piece)] > sBack) x1 = values_[std::size_t(piece)];
     at(piece, x1, c1, t1);
+    lit(c1, x1);
     if (t0 > 0.0 || t1 > 0.0) optics::compositeBehind(total, linearPiece(c0, t0, c1, t1, std::abs(x1 - x0) * perValue));
     if (x1 == sBack) break;
     piece += rising ? 1 : -1;
     x0 = x1;
     at(piece, x0, c0, t0);
+    lit(c0, x0);
   }
   return total;
 }

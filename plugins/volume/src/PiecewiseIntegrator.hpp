@@ -8,9 +8,17 @@
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
+#include <glm/vec2.hpp>
+
 #include <vector>
 
 namespace volpost::volume {
+
+/// Shading of the emission at the two ends of a segment (multiplier of the color, white
+/// added: volpost/core/optics/Headlight.hpp), interpolated linearly along it.
+struct EmissionShade {
+  glm::dvec2 front{1.0, 0.0}, back{1.0, 0.0};
+};
 
 class PiecewiseIntegrator {
  public:
@@ -22,7 +30,7 @@ class PiecewiseIntegrator {
 
   /// The segment over which the scalar goes linearly from sFront to sBack: cut at every
   /// control point crossed, each piece integrated exactly (as integrateSegment).
-  optics::SegmentLight integrate(double sFront, double sBack, double length) const;
+  optics::SegmentLight integrate(double sFront, double sBack, double length, const EmissionShade* shade = nullptr) const;
 
   /// The series used for thin pieces (tf + tb <= 1), exposed for its accuracy test.
   static double psiThin(double tf, double tb);

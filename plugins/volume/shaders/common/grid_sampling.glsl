@@ -1,6 +1,7 @@
 // A regular grid's values as a 3D texture, sampled along the ray: trilinear interpolation
 // in float from the 8 points around a continuous index, the trilinear field's gradient for
-// iso-surface shading (isoGradient, which common/volume_segment.glsl asks for), and the
+// the shading of the volume and of iso-surfaces (isoGradient, which common/volume_segment.glsl
+// asks for), and the
 // part of a ray inside the grid's box. Shared by the ray marcher and the slicer; the
 // includer sets rayIndexOrigin and rayIndexDir from rayOrigin and rayDir.
 layout(binding = UNIT_GRID) uniform sampler3D gridValues;  // R32F, values in their frame
@@ -10,8 +11,9 @@ uniform float marchStep;    // along the ray, model units
 
 vec3 rayIndexOrigin, rayIndexDir;  // the ray in index space
 
-// Trilinear interpolation in float from the 8 points around `index` (clamped to the grid).
-float valueAtIndex(vec3 index) {
+// Trilinear interpolation in float from the 8 points around `index` (clamped to the
+// grid): the value (x) and its gradient in index space (yzw), exactly the cell's own.
+vec4 trilinearAtIndex(vec3 index) {
   vec3 top = vec3(gridSize - 1);
   vec3 x = clamp(index, vec3(0.0), top);
   vec3 cell = min(floor(x), max(top - 1.0, vec3(0.0)));
@@ -26,21 +28,25 @@ float valueAtIndex(vec3 index) {
   float v101 = texelFetch(gridValues, c + ivec3(step1.x, 0, step1.z), 0).r;
   float v011 = texelFetch(gridValues, c + ivec3(0, step1.y, step1.z), 0).r;
   float v111 = texelFetch(gridValues, c + step1, 0).r;
-  float a = mix(mix(v000, v100, w.x), mix(v010, v110, w.x), w.y);
-  float b = mix(mix(v001, v101, w.x), mix(v011, v111, w.x), w.y);
-  return mix(a, b, w.z);
+  float y0 = mix(v000, v100, w.x), y1 = mix(v010, v110, w.x), y2 = mix(v001, v101, w.x), y3 = mix(v011, v111, w.x);
+  float a = mix(y0, y1, w.y), b = mix(y2, y3, w.y);
+  float gx = mix(mix(v100 - v000, v110 - v010, w.y), mix(v101 - v001, v111 - v011, w.y), w.z);
+  float gy = mix(y1 - y0, y3 - y2, w.z);
+  return vec4(mix(a, b, w.z), gx, gy, b - a);
 }
 
-float valueAlongRay(float t) { return valueAtIndex(rayIndexOrigin + t * rayIndexDir); }
+float valueAtIndex(vec3 index) { return trilinearAtIndex(index).x; }
+vec4 sampleAlongRay(float t) { return trilinearAtIndex(rayIndexOrigin + t * rayIndexDir); }
+float valueAlongRay(float t) { return sampleAlongRay(t).x; }
 
-// The trilinear field's gradient by central differences of half a grid step, in model units.
-vec3 isoGradient(float t) {
-  vec3 index = rayIndexOrigin + t * rayIndexDir;
-  vec3 g = vec3(valueAtIndex(index + vec3(0.5, 0.0, 0.0)) - valueAtIndex(index - vec3(0.5, 0.0, 0.0)),
-                valueAtIndex(index + vec3(0.0, 0.5, 0.0)) - valueAtIndex(index - vec3(0.0, 0.5, 0.0)),
-                valueAtIndex(index + vec3(0.0, 0.0, 0.5)) - valueAtIndex(index - vec3(0.0, 0.0, 0.5)));
-  return transpose(mat3(worldToIndex)) * g;  // ds/dworld = J^T ds/dindex
-}
+// An index-space gradient in model units: ds/dworld = J^T ds/dindex.
+vec3 worldGradient(vec3 indexGradient) { return transpose(mat3(worldToIndex)) * indexGradient; }
+
+// The shading at a sample (value and index gradient), lit or not.
+vec2 shadeOf(vec4 sampled) { return shading ? headlight(worldGradient(sampled.yzw), rayDir) : vec2(1.0, 0.0); }
+
+// The trilinear field's gradient where the ray crosses an iso-surface, in model units.
+vec3 isoGradient(float t) { return worldGradient(sampleAlongRay(t).yzw); }
 
 // The part of the ray inside the grid's box [0, size - 1]^3 (in index space): false if none.
 bool insideGrid(inout float t0, inout float t1) {

@@ -35,6 +35,29 @@ uniform vec4 isoColor[MAX_ISO_SURFACES];  // rgb, opacity
 vec3 accColor = vec3(0.0);
 float accT = 1.0;
 
+// Shading of the emission by the gradient, the light at the eye (volpost/core/optics/
+// Headlight.hpp): the color C becomes C (0.3 + 0.7 |cos|) + 0.3 |cos|^20. The includer sets
+// the shading (multiplier, white added) at the two ends of each piece it integrates, where
+// the value is shadeFromS and shadeToS; between them it is interpolated with the value
+// (linearly along the piece). Off, colors are the transfer function's.
+uniform bool shading;
+vec2 shadeFront = vec2(1.0, 0.0), shadeBack = vec2(1.0, 0.0);
+float shadeFromS = 0.0, shadeToS = 0.0;
+
+vec4 lit(vec4 c, float s) {
+  if (!shading) return c;
+  float x = shadeToS != shadeFromS ? clamp((s - shadeFromS) / (shadeToS - shadeFromS), 0.0, 1.0) : 0.5;
+  vec2 k = mix(shadeFront, shadeBack, x);
+  return vec4(c.rgb * k.x + k.y, c.a);
+}
+
+vec2 headlight(vec3 gradient, vec3 direction) {
+  float g = length(gradient);
+  if (!(g > 0.0)) return vec2(1.0, 0.0);
+  float c = abs(dot(gradient / g, direction));
+  return vec2(0.3 + 0.7 * c, 0.3 * pow(c, 20.0));
+}
+
 void composite(vec3 color, float transmittance) {
   accColor += accT * color;
   accT *= transmittance;
@@ -75,7 +98,7 @@ void integrateLinear(float sf, float sb, float len) {
   // Constant (or varying below float resolution, where sb - sf may flush to zero and the
   // piece lengths below would divide by it): no division, no cut.
   if (abs(sb - sf) <= 1e-6 * max(abs(sf), abs(sb)) || sb - sf == 0.0) {
-    vec4 c = tfEval(0.5 * (sf + sb));
+    vec4 c = lit(tfEval(0.5 * (sf + sb)), 0.5 * (sf + sb));
     float alpha = 1.0 - exp(-c.a * len);
     composite(c.rgb * alpha, 1.0 - alpha);
     return;
@@ -97,7 +120,7 @@ void integrateLinear(float sf, float sb, float len) {
     float end = tfNextCut(s, sb);
 #endif
     float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
-    linearPiece(tfEval(s), tfEval(end), pieceLen);
+    linearPiece(lit(tfEval(s), s), lit(tfEval(end), end), pieceLen);
     if (end == sb || accT < terminationTransmittance) return;
     s = end;
   }
@@ -110,6 +133,10 @@ void integratePreintegrated(float sf, float sb, float len) {
     float a = mix(sf, sb, float(i) / float(pieces)), b = mix(sf, sb, float(i + 1) / float(pieces));
     vec3 x = clamp(vec3(rangePos(a), rangePos(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
     vec4 v = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0);
+    if (shading) {  // the table holds unlit light: the piece's mean shading on it
+      vec2 k = mix(shadeFront, shadeBack, 0.5);
+      v.rgb = v.rgb * k.x + k.y * v.a;
+    }
     composite(v.rgb, 1.0 - v.a);
   }
 }
@@ -127,7 +154,7 @@ void integrateSampling(float t0, float t1, float sf, float sb) {
     if (a >= t1) break;
     if (b <= a) continue;  // the division rounded down
     float w = (0.5 * (a + b) - t0) / max(t1 - t0, 1e-30);
-    vec4 c = tfEval(mix(sf, sb, w));
+    vec4 c = lit(tfEval(mix(sf, sb, w)), mix(sf, sb, w));
     float alpha = 1.0 - exp(-c.a * (b - a));
     composite(c.rgb * alpha, 1.0 - alpha);
   }
@@ -164,6 +191,8 @@ vec3 isoGradient(float t);
 // iso-surfaces it crosses: volume pieces between crossings, each surface composited there,
 // shaded by the gradient (0.3 + 0.7 |cos| headlight).
 void integrateValues(float t0, float t1, float sf, float sb) {
+  shadeFromS = sf;
+  shadeToS = sb;
   if (isoCount == 0 || sf == sb) { integratePiece(t0, t1, sf, sb); return; }
   // Iso-surfaces crossed in (sf, sb], in ray order (picked one by one: no local arrays,
   // which cost registers on every invocation), between volume pieces.

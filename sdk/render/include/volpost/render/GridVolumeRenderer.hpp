@@ -17,6 +17,9 @@ class GridVolumeRenderer : public VolumeRenderer {
   /// grid too. Throws std::invalid_argument for a wrong count or a grid with a defect().
   /// setValues() then replaces the values only.
   virtual void setGrid(const RegularGrid& grid, std::span<const double> pointValues) = 0;
+  /// Shading of the emission by the trilinear gradient with the light at the eye
+  /// (volpost/core/optics/Headlight.hpp); off by default.
+  virtual void setShading(bool on) = 0;
   /// Whether setVolume() takes meshes of tetrahedra too.
   virtual bool drawsTetrahedra() const { return false; }
 };
