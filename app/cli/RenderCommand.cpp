@@ -53,7 +53,7 @@ struct Options {
   QCommandLineOption viewAngle{"view-angle", "Angle of view across the picture's narrower side, degrees (default 30).",
                                "DEG"};
   QCommandLineOption size{"size", "Image size (default 800x600).", "WxH", "800x600"};
-  QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale; also the colors of "
+  QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale, seismic; also the colors of "
                                           "the default volume transfer function.", "NAME"};
   QCommandLineOption range{"range", "Fixed color range MIN:MAX instead of the step's own, or all-steps: the range "
                                     "over every step (also the default transfer function's range).", "MIN:MAX"};

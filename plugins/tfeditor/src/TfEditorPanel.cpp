@@ -103,6 +103,7 @@ void TfEditorPanel::buildUi() {
   presets_->addItem("Viridis", "viridis");
   presets_->addItem("Rainbow", "rainbow");
   presets_->addItem("Grayscale", "grayscale");
+  presets_->addItem("Seismic red-white-blue", "seismic");
   connect(presets_, &QComboBox::activated, this, [this](int index) {
     const QString name = presets_->itemData(index).toString();
     if (!name.isEmpty()) applyPreset(name);

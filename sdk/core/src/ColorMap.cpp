@@ -28,7 +28,7 @@ ColorMap::ColorMap(std::string name, std::vector<Point> points)
                    [](const Point& a, const Point& b) { return a.t < b.t; });
 }
 
-std::vector<std::string> ColorMap::names() { return {"cool-warm", "viridis", "rainbow", "grayscale"}; }
+std::vector<std::string> ColorMap::names() { return {"cool-warm", "viridis", "rainbow", "grayscale", "seismic"}; }
 
 ColorMap ColorMap::named(const std::string& name) {
   // Moreland's diverging cool-warm and a viridis approximation, sampled at 9 points.
@@ -43,7 +43,10 @@ ColorMap ColorMap::named(const std::string& name) {
   if (name == "rainbow")
     return from8bit(name, {{0, 0, 255}, {0, 255, 255}, {0, 255, 0}, {255, 255, 0}, {255, 0, 0}});
   if (name == "grayscale") return from8bit(name, {{0, 0, 0}, {255, 255, 255}});
-  throw std::invalid_argument("unknown color map '" + name + "' (known: cool-warm, viridis, rainbow, grayscale)");
+  // Interpreters' red-white-blue: troughs blue, zero white, peaks red (dark at the ends).
+  if (name == "seismic")
+    return from8bit(name, {{0, 0, 77}, {0, 0, 255}, {255, 255, 255}, {255, 0, 0}, {128, 0, 0}});
+  throw std::invalid_argument("unknown color map '" + name + "' (known: cool-warm, viridis, rainbow, grayscale, seismic)");
 }
 
 glm::dvec3 ColorMap::at(double t) const {

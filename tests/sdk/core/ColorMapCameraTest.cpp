@@ -17,6 +17,8 @@ TEST(ColorMap, EndsAndMiddleOfEveryMap) {
     EXPECT_EQ(m.at(std::nan("")), m.at(0.0)) << name;
   }
   EXPECT_EQ(ColorMap::named("grayscale").at(0.25), glm::dvec3(0.25));
+  EXPECT_EQ(ColorMap::named("seismic").at(0.5), glm::dvec3(1.0));  // zero amplitude is white
+  EXPECT_EQ(ColorMap::named("seismic").at(0.25), glm::dvec3(0, 0, 1));
   EXPECT_THROW(ColorMap::named("jet2"), std::invalid_argument);
 }
 
