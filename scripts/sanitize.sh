@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # Builds volpost with AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/), runs the
 # unit, plugin and command-line tests under them, then every command-line verb on every
-# hostile and broken file (tests/data/hostile, tests/data/bad, and ../shared/data/hostile and
-# ../shared/data/bad when present). Any sanitizer report or crash fails the script. Run it
+# hostile and broken file (tests/data/hostile, tests/data/bad, the seismic and image-data test
+# files, and ../shared/data/hostile, ../shared/data/bad and ../shared/data/seismic when present). Any sanitizer report or crash fails the script. Run it
 # before handing work in:   scripts/sanitize.sh            (about 20 minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -34,8 +34,8 @@ check() {  # runs volpost with a time limit; a sanitizer report or a crash is a 
     failures=$((failures + 1))
   fi
 }
-files=(tests/data/hostile/* tests/data/bad/*)
-for dir in ../shared/data/hostile ../shared/data/bad; do [ -d "$dir" ] && files+=("$dir"/*); done
+files=(tests/data/hostile/* tests/data/bad/* tests/data/seismic/*.sgy tests/data/formats/*.vti)
+for dir in ../shared/data/hostile ../shared/data/bad ../shared/data/seismic/segyio; do [ -d "$dir" ] && files+=("$dir"/*); done
 for f in "${files[@]}"; do
   case "$f" in *.md|*.json) continue ;; esac
   check info "$f"
@@ -47,6 +47,8 @@ for f in "${files[@]}"; do
     check render "$f" --field "$q" --size 32x24 --renderer reference -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --renderer raycast -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --renderer cpu --clip 0,0,0,1,0,0 --iso 0 -o "$out/r.png"
+    check render "$f" --field "$q" --size 32x24 --renderer texture-raymarch --shading --iso 0 -o "$out/r.png"
+    check render "$f" --field "$q" --size 32x24 --renderer texture-slices -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --clip 0,0,0,1,0,0 --iso 0 --deform "${q%%.*}" -o "$out/r.png"
     check render "$f" --field "$q" --size 32x24 --all-steps -o "$out/a.png"
     check plot "$f" --field "$q" --from 0,0,0 --to 1,1,1 --samples 20 --csv "$out/p.csv" -o "$out/p.png"
