@@ -57,6 +57,9 @@ class GpuVolume {
   /// The grid's values (R32F, in the values' frame), once prepare() has uploaded them.
   GLuint gridTexture() const { return gridTexture_.id(); }
   double samplingStep() const { return samplingStep_; }
+  /// The grid renderers' step along rays (or slice spacing): the sampling step when set,
+  /// else half the shortest grid spacing (two samples per spacing).
+  double gridStep() const { return samplingStep_ > 0.0 ? samplingStep_ : 0.5 * gpu_.maxEdge; }
 
   // ---- GL (a context current) ----
   void initialize();

@@ -31,11 +31,6 @@ void GridRayMarcher::release() {
   volume_.release();
 }
 
-double GridRayMarcher::marchStep() const {
-  if (volume_.samplingStep() > 0.0) return volume_.samplingStep();
-  return 0.5 * volume_.mesh().maxEdge;  // two samples per grid spacing
-}
-
 void GridRayMarcher::render(const RenderContext& ctx) {
   if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
   volume_.prepare(ctx);

@@ -22,7 +22,7 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void release() override;
   void render(const RenderContext& ctx) override;
   /// The step along the ray the next frame uses, model units.
-  double marchStep() const;
+  double marchStep() const { return volume_.gridStep(); }
   /// Compute passes the last frame took (each at most kStepsPerPass steps per ray).
   int lastPasses() const { return lastPasses_; }
   /// Steps per ray in one pass: with the ~14 loop iterations a step costs in the shader,

@@ -103,11 +103,6 @@ void GridSlicer::release() {
   volume_.release();
 }
 
-double GridSlicer::sliceSpacing() const {
-  if (volume_.samplingStep() > 0.0) return volume_.samplingStep();
-  return 0.5 * volume_.mesh().maxEdge;  // two slices per grid spacing
-}
-
 void GridSlicer::render(const RenderContext& ctx) {
   if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
   volume_.prepare(ctx);

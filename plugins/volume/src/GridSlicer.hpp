@@ -27,7 +27,7 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void release() override;
   void render(const RenderContext& ctx) override;
   /// The distance between slices the next frame uses, model units.
-  double sliceSpacing() const;
+  double sliceSpacing() const { return volume_.gridStep(); }
   /// Slices the last frame drew.
   std::size_t lastSlices() const { return lastSlices_; }
 
