@@ -399,7 +399,10 @@ int runRender(const QStringList& args) {
     }
     {
       Scene scene(volumeRendererFactory(*plugins));
-      const auto session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"));
+      // A volume picture never draws the boundary surface: it is left unextracted.
+      const auto session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"),
+                                              rendererName == "surface" ? ModelSession::Boundary::Now
+                                                                        : ModelSession::Boundary::OnFirstUse);
       scene.setSession(session);
       try {  // an option (or a state file) this model cannot honour is a usage error
         applyOptions(parser, o, base, scene);

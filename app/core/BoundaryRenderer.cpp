@@ -19,8 +19,22 @@ void BoundaryRenderer::initialize() {
   sections_.initialize();
   sections_.setShowEdges(false);
   cutFor_.reset();
+  surfaceUploaded_ = false;
   initialized_ = true;
-  if (session_) surface_.setSurface(session_->surface());
+}
+
+// The boundary goes to the GPU (and is extracted, when the session has not yet) the
+// first time it is drawn: a volume picture never pays for it.
+void BoundaryRenderer::ensureSurface() {
+  if (surfaceUploaded_ || !initialized_ || !session_) return;
+  surface_.setSurface(session_->surface());
+  if (pendingScalars_)
+    surface_.setScalars(pendingScalars_->location, pendingScalars_->values, pendingScalars_->range.min,
+                        pendingScalars_->range.max);
+  else
+    surface_.clearScalars();
+  pendingScalars_.reset();
+  surfaceUploaded_ = true;
 }
 
 void BoundaryRenderer::release() {
@@ -31,6 +45,7 @@ void BoundaryRenderer::release() {
   isoFor_.reset();
   isoTriangles_ = 0;
   cutFor_.reset();
+  surfaceUploaded_ = false;
   initialized_ = false;
 }
 
@@ -39,10 +54,16 @@ void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   cutFor_.reset();
   isoFor_.reset();
   surface_.clearScalars();
-  if (initialized_ && session_) surface_.setSurface(session_->surface());
+  pendingScalars_.reset();
+  surfaceUploaded_ = false;
 }
 
 void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range) {
+  if (!surfaceUploaded_) {  // kept until the surface is first drawn
+    pendingScalars_.reset();
+    if (view) pendingScalars_ = PendingScalars{view->location, view->values, range};
+    return;
+  }
   if (!view) {
     surface_.clearScalars();
     return;
@@ -75,7 +96,7 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
   }
   for (auto& r : isoRenderers_) r->setClipPlanes(planes, tolerance);
   sectionTriangles_ = corners.size() / 3;
-  sections_.setTriangles(corners, session_->surface().origin);
+  sections_.setTriangles(corners, session_->origin());
   if (view) sections_.setScalars(FieldLocation::Node, values, range.min, range.max);
   else sections_.clearScalars();
 }
@@ -108,7 +129,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
     renderer->setShowEdges(false);
     renderer->plainColor = glm::vec3(iso.color);
     renderer->setOpacity(float(iso.opacity));
-    renderer->setTriangles(corners, session_->surface().origin);
+    renderer->setTriangles(corners, session_->origin());
     if (cutFor_) {
       const double tolerance = 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300);
       renderer->setClipPlanes(cutFor_->planes, tolerance);
@@ -138,7 +159,8 @@ void BoundaryRenderer::renderOver(const RenderContext& ctx) {
   glDepthFunc(GL_LESS);
   if (session_) {
     RenderContext local = ctx;
-    local.origin = session_->surface().origin;
+    local.origin = session_->origin();
+    if (surfaceShown_) ensureSurface();
     // The opaque sections and iso-surfaces first: a see-through surface blends over them.
     const bool seeThrough = opacity_ < 1.0f;
     if (surfaceShown_ && !seeThrough) surface_.render(local);

@@ -90,6 +90,14 @@ class BoundaryRenderer {
   bool surfaceShown_ = true;
   std::size_t sectionTriangles_ = 0;
   bool initialized_ = false;
+  void ensureSurface();
+  bool surfaceUploaded_ = false;
+  struct PendingScalars {
+    FieldLocation location;
+    std::vector<double> values;
+    DisplayRange range;
+  };
+  std::optional<PendingScalars> pendingScalars_;  ///< colors for the surface not yet uploaded
 };
 
 /// The range a view maps onto the color map: its own, or a tiny span around a constant.

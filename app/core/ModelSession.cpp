@@ -9,30 +9,46 @@
 namespace volpost::app {
 
 std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
-                                                 const Progress& progress) {
+                                                 const Progress& progress, Boundary boundary) {
   // The caller's progress sees one bar with named stages; cancelling it cancels the stage.
   Progress stage = progress;
   stage.setStage("reading");
+  const double readShare = boundary == Boundary::Now ? 0.8 : 1.0;
   Progress readProgress([&](double f, const std::string&) {
-    stage.report(0.8 * f);
+    stage.report(readShare * f);
     return true;
   });
   std::shared_ptr<Model> model = readers.load(path, readProgress);
-  stage.setStage("extracting the boundary");
   Progress rest([&](double f, const std::string&) {
-    stage.report(0.8 + 0.2 * f);
+    stage.report(readShare + (1.0 - readShare) * f);
     return true;
   });
-  return fromModel(std::move(model), rest);
+  return fromModel(std::move(model), rest, boundary);
 }
 
-std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> model, const Progress& progress) {
+std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> model, const Progress& progress,
+                                                      Boundary boundary) {
   auto session = std::make_shared<ModelSession>();
-  Progress stage = progress;
-  stage.setStage("extracting the boundary");
   session->model_ = std::move(model);
-  session->surface_ = std::make_shared<BoundarySurface>(extractBoundary(session->model_->mesh, stage));
+  const Bounds b = session->model_->mesh.bounds();
+  session->origin_ = b.valid ? b.center() : glm::dvec3(0.0);
+  if (boundary == Boundary::Now) {
+    Progress stage = progress;
+    stage.setStage("extracting the boundary");
+    std::call_once(session->surfaceOnce_, [&] {
+      session->surface_ = std::make_unique<BoundarySurface>(extractBoundary(session->model_->mesh, stage));
+      session->surfaceExtracted_ = true;
+    });
+  }
   return session;
+}
+
+const BoundarySurface& ModelSession::surface() const {
+  std::call_once(surfaceOnce_, [this] {
+    surface_ = std::make_unique<BoundarySurface>(extractBoundary(model_->mesh));
+    surfaceExtracted_ = true;
+  });
+  return *surface_;
 }
 
 std::vector<Quantity> ModelSession::quantities() const {

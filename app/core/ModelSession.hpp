@@ -11,6 +11,7 @@
 
 #include "host/PointLocator.hpp"
 
+#include <atomic>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -30,14 +31,26 @@ struct ScalarView {
 
 class ModelSession {
  public:
-  /// Reads, checks and extracts the boundary (the long part, runs on a worker thread).
+  /// When the boundary surface is extracted: at once (the window, a surface picture: the
+  /// long part runs here, with progress), or on the first call of surface() (a volume
+  /// picture, a probe, `info` never need it; at 12.6M tets it costs 9 s and 100 B/tet).
+  enum class Boundary { Now, OnFirstUse };
+
+  /// Reads and checks the model (the long part, runs on a worker thread).
   static std::shared_ptr<ModelSession> load(const ReaderRegistry& readers, const std::string& path,
-                                            const Progress& progress = {});
-  /// A session on a model already in memory (checked or made by the caller): extracts the boundary.
-  static std::shared_ptr<ModelSession> fromModel(std::shared_ptr<Model> model, const Progress& progress = {});
+                                            const Progress& progress = {}, Boundary boundary = Boundary::OnFirstUse);
+  /// A session on a model already in memory (checked or made by the caller).
+  static std::shared_ptr<ModelSession> fromModel(std::shared_ptr<Model> model, const Progress& progress = {},
+                                                 Boundary boundary = Boundary::OnFirstUse);
 
   const Model& model() const { return *model_; }
-  const BoundarySurface& surface() const { return *surface_; }
+  /// The boundary surface (extracted on first use, kept; any thread).
+  const BoundarySurface& surface() const;
+  /// Whether surface() has been extracted yet (what a volume picture must not pay for).
+  bool surfaceExtracted() const { return surfaceExtracted_.load(); }
+  /// The point every float position on the GPU is relative to: the centre of the used
+  /// nodes' bounds (the boundary surface's origin too), known without extracting it.
+  const glm::dvec3& origin() const { return origin_; }
 
   /// All quantities of all fields, in field order.
   std::vector<Quantity> quantities() const;
@@ -68,8 +81,11 @@ class ModelSession {
   mutable std::map<std::string, ValueRange> rangesOverSteps_;  ///< by quantity key
   mutable std::once_flag locatorOnce_;
   mutable std::unique_ptr<PointLocator> locator_;
+  mutable std::once_flag surfaceOnce_;
+  mutable std::unique_ptr<BoundarySurface> surface_;
+  mutable std::atomic<bool> surfaceExtracted_{false};
   std::shared_ptr<Model> model_;
-  std::shared_ptr<BoundarySurface> surface_;
+  glm::dvec3 origin_{0.0};
 };
 
 }  // namespace volpost::app

@@ -530,7 +530,7 @@ void Scene::applyToStreamlines() {
   const double size = session_->model().mesh.bounds().diagonal();
   if (style.tubeRadius <= 0.0) style.tubeRadius = 0.003 * size;
   if (style.arrowSpacing <= 0.0) style.arrowSpacing = 0.08 * size;
-  streamlineRenderer_.setLines(lines, r.values, session_->surface().origin, style);
+  streamlineRenderer_.setLines(lines, r.values, session_->origin(), style);
   streamlineRenderer_.setColorMap(ColorMap::named(state_.colorMap));
   streamlineRenderer_.setRange(r.min, r.max);
   streamlinesUploaded_ = true;

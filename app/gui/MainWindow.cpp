@@ -796,7 +796,7 @@ void MainWindow::openFile(const QString& path) {
         *stage = QString::fromStdString(name);
         return !*cancel;
       });
-      r.session = ModelSession::load(readers, path.toStdString(), p);
+      r.session = ModelSession::load(readers, path.toStdString(), p, ModelSession::Boundary::Now);
     } catch (const Cancelled&) {
       r.cancelled = true;
     } catch (const std::exception& e) {

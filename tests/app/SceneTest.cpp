@@ -97,6 +97,35 @@ TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   scene.release();
 }
 
+// A volume picture never draws the boundary surface, so it never extracts it (at 12.6M
+// tets that is 9 s and 100 bytes per tet); the surface view extracts it when first drawn.
+TEST_F(SceneWithContext, AVolumePictureLeavesTheBoundaryUnextracted) {
+  const auto session = ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
+  Scene scene(rayCasterOnly());
+  scene.setSession(session);
+  scene.setResult("S.mises", 0);
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+  OffscreenTarget target(32, 24);
+  RenderContext ctx;
+  ctx.width = 32;
+  ctx.height = 24;
+  ctx.framebuffer = target.framebuffer();
+  scene.initialize();
+  scene.render(ctx);
+  EXPECT_FALSE(session->surfaceExtracted());
+  EXPECT_FALSE(scene.readVolumeImage().empty());
+  scene.setVolumeShown(false);
+  scene.render(ctx);
+  EXPECT_TRUE(session->surfaceExtracted());
+  const std::vector<std::uint8_t> pixels = target.readPixels();
+  int drawn = 0;  // the surface is drawn over the background (245, 245, 247)
+  for (std::size_t i = 0; i < pixels.size(); i += 4)
+    drawn += std::abs(int(pixels[i]) - 245) + std::abs(int(pixels[i + 1]) - 245) + std::abs(int(pixels[i + 2]) - 247) > 30;
+  EXPECT_GT(drawn, 20);
+  scene.release();
+}
+
 TEST_F(SceneWithContext, AStateFileGivesTheSamePicture) {
   Scene scene(rayCasterOnly());
   scene.setSession(bar());
