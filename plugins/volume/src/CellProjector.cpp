@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "CellProjector.hpp"
 
+#include "GpuLimits.hpp"
+
 #include "VolumeBindings.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -64,7 +66,7 @@ void CellProjector::render(const RenderContext& ctx) {
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(lastOrder_.backToFront.size() * 6));  // two triangles per tet
+  glDrawArrays(GL_TRIANGLES, 0, projectionVertexCount(lastOrder_.backToFront.size()));  // two triangles per tet
   glDisable(GL_BLEND);
   glBindVertexArray(0);
   volume_.compositeOver(ctx);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "GpuVolume.hpp"
 
+#include "GpuLimits.hpp"
+
 #include "VolumeBindings.hpp"
 #include "VolumeShaders.hpp"
 
@@ -13,6 +15,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <stdexcept>
 
@@ -192,6 +195,20 @@ void GpuVolume::prepare(const RenderContext& ctx) {
 void GpuVolume::uploadMesh() {
   if (grid_) uploadGrid();
   else gridTexture_.reset();
+  // Checked before anything is uploaded: a buffer past the device's limit would read as
+  // zeros (or fault) on drivers that enforce it.
+  GLint64 limit = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+  // Mesa's llvmpipe states 128 MiB but binds and addresses whole buffers of any size
+  // (reported working on a 2-core llvmpipe machine up to 48M tets, 768 MiB of tetrahedra).
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (renderer && std::strstr(renderer, "llvmpipe")) limit = 0;
+  requireStorageBlockFits("nodes", gpu_.nodes.size() * sizeof(glm::vec4), limit);
+  requireStorageBlockFits("tetrahedra", gpu_.tets.size() * sizeof(glm::uvec4), limit);
+  requireStorageBlockFits("face neighbours", gpu_.neighbors.size() * sizeof(glm::ivec4), limit);
+  requireStorageBlockFits("cell values", gpu_.cellValues.size() * sizeof(float), limit);
+  requireStorageBlockFits("boundary faces", gpu_.boundaryFaces.size() * sizeof(std::uint32_t), limit);
+  requireStorageBlockFits("boundary hierarchy", gpu_.bvh.size() * sizeof(glm::vec4), limit);
   upload(nodes_, gpu_.nodes);
   upload(tets_, gpu_.tets);
   upload(neighbors_, gpu_.neighbors);

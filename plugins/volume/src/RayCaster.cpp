@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "RayCaster.hpp"
 
+#include "GpuLimits.hpp"
+
 #include <algorithm>
 
 namespace volpost::volume {
@@ -12,7 +14,7 @@ void RayCaster::render(const RenderContext& ctx) {
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
   const std::size_t tets = volume_.mesh().tets.size();
-  glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), int(std::min<std::size_t>(tets + 16, 1u << 20)));
+  glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), rayStepCap(tets));
   volume_.bindSegmentResources(ctx);
   glBindImageTexture(0, volume_.image(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);

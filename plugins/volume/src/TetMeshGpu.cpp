@@ -124,6 +124,9 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
     const double v = location == FieldLocation::Node ? values[i] : g.valueOffset;
     g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? g.gpuValue(v) : 0.0f);
   }
+  g.tets.reserve(mesh.cellCount());
+  g.cellOfTet.reserve(mesh.cellCount());
+  if (location == FieldLocation::Cell) g.cellValues.reserve(mesh.cellCount());
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
     const auto n = mesh.cellNodes(c);
     glm::dvec3 p[4];

@@ -5,6 +5,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 namespace volpost {
 namespace {
@@ -25,32 +26,68 @@ void Bounds::extend(const glm::dvec3& p) {
   max = glm::max(max, p);
 }
 
+Mesh::Mesh() : cells_(std::make_shared<CellArrays>()) {}
+
+// A moved-from mesh stays a valid empty mesh.
+Mesh::Mesh(Mesh&& other) noexcept
+    : nodes(std::move(other.nodes)), nodeIds(std::move(other.nodeIds)), cellIds(std::move(other.cellIds)),
+      cells_(std::exchange(other.cells_, std::make_shared<CellArrays>())) {}
+
+Mesh& Mesh::operator=(Mesh&& other) noexcept {
+  if (this != &other) {
+    nodes = std::move(other.nodes);
+    nodeIds = std::move(other.nodeIds);
+    cellIds = std::move(other.cellIds);
+    cells_ = std::exchange(other.cells_, std::make_shared<CellArrays>());
+  }
+  return *this;
+}
+
+Mesh::CellArrays& Mesh::cellsToChange() {
+  if (cells_.use_count() > 1) cells_ = std::make_shared<CellArrays>(*cells_);
+  return *cells_;
+}
+
 void Mesh::reserveCells(std::size_t cells, std::size_t connectivityEntries) {
-  types_.reserve(cells);
-  offsets_.reserve(cells + 1);
-  connectivity_.reserve(connectivityEntries);
+  CellArrays& c = cellsToChange();
+  c.types.reserve(cells);
+  c.connectivity.reserve(connectivityEntries);
 }
 
 void Mesh::addCell(CellType type, std::span<const NodeIndex> cellNodes) {
   assert(static_cast<int>(cellNodes.size()) == topology(type).nodeCount);
-  types_.push_back(type);
-  connectivity_.insert(connectivity_.end(), cellNodes.begin(), cellNodes.end());
-  offsets_.push_back(connectivity_.size());
+  CellArrays& c = cellsToChange();
+  const auto size = std::uint32_t(cellNodes.size());
+  if (c.types.empty() && c.offsets.empty()) {
+    c.uniformSize = size;
+  } else if (c.uniformSize && size != c.uniformSize) {  // the first cell of another size: offsets from now on
+    c.offsets.reserve(c.types.capacity() + 1);
+    for (std::size_t i = 0; i <= c.types.size(); ++i) c.offsets.push_back(i * c.uniformSize);
+    c.uniformSize = 0;
+  }
+  c.types.push_back(type);
+  c.connectivity.insert(c.connectivity.end(), cellNodes.begin(), cellNodes.end());
+  if (!c.uniformSize) c.offsets.push_back(c.connectivity.size());
 }
 
 void Mesh::remapNodes(const std::vector<NodeIndex>& map) {
-  for (NodeIndex& n : connectivity_) n = map[n];
+  for (NodeIndex& n : cellsToChange().connectivity) n = map[n];
+}
+
+std::size_t Mesh::cellBytes() const {
+  return cells_->types.size() * sizeof(CellType) + cells_->offsets.size() * sizeof(std::size_t) +
+         cells_->connectivity.size() * sizeof(NodeIndex);
 }
 
 std::map<CellType, std::size_t> Mesh::countsByType() const {
   std::map<CellType, std::size_t> counts;
-  for (CellType t : types_) ++counts[t];
+  for (CellType t : cells_->types) ++counts[t];
   return counts;
 }
 
 Bounds Mesh::bounds() const {
   std::vector<char> used(nodes.size(), 0);
-  for (NodeIndex n : connectivity_)
+  for (NodeIndex n : cells_->connectivity)
     if (n < used.size()) used[n] = 1;
   Bounds b;
   for (std::size_t i = 0; i < nodes.size(); ++i)

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace volpost {
@@ -24,46 +26,65 @@ void parallelRanges(std::size_t n, unsigned ranges, Body body) {
 
 }  // namespace
 
+void requireFaceIndexable(std::size_t tets) {
+  if (tets > kMaxTetsForFaceIndex)
+    throw std::length_error(std::to_string(tets) + " tetrahedra: more than face adjacency can number (" +
+                            std::to_string(kMaxTetsForFaceIndex) + ", tet x 4 + face in 32 bits); clip the model "
+                            "or split it into parts");
+}
+
 // Face adjacency by sorting the 4 faces of every tet. In parallel: faces are bucketed by
 // their smallest vertex id (both copies of a shared face land in the same bucket), each
 // worker lists the faces of a range of tets, then each bucket is sorted and matched on
-// its own. Every tet face is written by exactly one bucket.
+// its own. Every tet face is written by exactly one bucket. Large meshes go in passes over
+// a share of the buckets each, so the face list (16 bytes per face) never holds more than
+// about 16 bytes per tet at once, besides the result.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
+  requireFaceIndexable(tets.size());
   struct FaceKey {
     std::array<std::uint32_t, 3> v;
     std::uint32_t tetFace;
     bool operator<(const FaceKey& o) const { return v < o.v; }
   };
   const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-  const std::size_t buckets = std::size_t(workers) * 8;
-  std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(buckets));
-  parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-      for (int f = 0; f < 4; ++f) {
-        std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
-        std::sort(v.begin(), v.end());
-        listed[w][v[0] % buckets].push_back({v, std::uint32_t(t) * 4 + std::uint32_t(f)});
-      }
-  });
+  const std::size_t passes = std::clamp<std::size_t>(tets.size() >> 20, 1, 4);
+  const std::size_t buckets = std::size_t(workers) * 8 * passes;
   std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
-  parallelRanges(buckets, workers, [&](unsigned, std::size_t first, std::size_t last) {
-    std::vector<FaceKey> faces;
-    for (std::size_t b = first; b < last; ++b) {
-      faces.clear();
-      for (unsigned w = 0; w < workers; ++w) faces.insert(faces.end(), listed[w][b].begin(), listed[w][b].end());
-      std::sort(faces.begin(), faces.end());
-      for (std::size_t i = 0; i < faces.size();) {
-        std::size_t j = i + 1;
-        while (j < faces.size() && faces[j].v == faces[i].v) ++j;
-        if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
-          const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
-          neighbors[a / 4][int(a % 4)] = int(b2 / 4);
-          neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
+  for (std::size_t pass = 0; pass < passes; ++pass) {
+    const std::size_t firstBucket = buckets * pass / passes, endBucket = buckets * (pass + 1) / passes;
+    std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(endBucket - firstBucket));
+    parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+        for (int f = 0; f < 4; ++f) {
+          std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
+          std::sort(v.begin(), v.end());
+          const std::size_t bucket = v[0] % buckets;
+          if (bucket >= firstBucket && bucket < endBucket)
+            listed[w][bucket - firstBucket].push_back({v, std::uint32_t(t) * 4 + std::uint32_t(f)});
         }
-        i = j;
+    });
+    parallelRanges(endBucket - firstBucket, workers, [&](unsigned, std::size_t first, std::size_t last) {
+      std::vector<FaceKey> faces;
+      for (std::size_t b = first; b < last; ++b) {
+        faces.clear();
+        for (unsigned w = 0; w < workers; ++w) {
+          faces.insert(faces.end(), listed[w][b].begin(), listed[w][b].end());
+          std::vector<FaceKey>().swap(listed[w][b]);  // freed as it is taken
+        }
+        std::sort(faces.begin(), faces.end());
+        for (std::size_t i = 0; i < faces.size();) {
+          std::size_t j = i + 1;
+          while (j < faces.size() && faces[j].v == faces[i].v) ++j;
+          if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
+            const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
+            neighbors[a / 4][int(a % 4)] = int(b2 / 4);
+            neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
+          }
+          i = j;
+        }
       }
-    }
-  });
+    });
+  }
   return neighbors;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/WorkerThreads.hpp>
 
 #include "CellSplitTemplates.hpp"
 
@@ -9,6 +10,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <numeric>
+#include <thread>
 #include <stdexcept>
 #include <string>
 
@@ -134,8 +138,43 @@ class Builder {
 
 }  // namespace
 
+namespace {
+
+// A mesh of positively oriented tet4 only (the usual tet mesh) is its own tetrahedra: its
+// cells are shared, not copied. Checked on all cores with the exact predicate.
+bool allPositiveTet4(const Mesh& mesh) {
+  const std::size_t n = mesh.cellCount();
+  if (n == 0) return false;
+  const auto types = mesh.cellTypes();
+  if (std::any_of(types.begin(), types.end(), [](CellType t) { return t != CellType::Tet4; })) return false;
+  std::atomic<bool> allGood{true};
+  std::atomic<std::size_t> next{0};
+  constexpr std::size_t kChunk = 1 << 14;
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
+    for (std::size_t begin; allGood && (begin = next.fetch_add(kChunk)) < n;)
+      for (std::size_t c = begin; c < std::min(n, begin + kChunk); ++c) {
+        const auto v = mesh.cellNodes(c);
+        if (cellRepeatsANode(mesh, c) || orientationOf(mesh.nodes, {v[0], v[1], v[2], v[3]}) != CGAL::POSITIVE) {
+          allGood = false;
+          break;
+        }
+      }
+  });
+  return allGood;
+}
+
+}  // namespace
+
 TetMesh tetrahedralize(const Mesh& mesh) {
   TetMesh out;
+  if (allPositiveTet4(mesh)) {
+    out.mesh.nodes = mesh.nodes;
+    out.mesh.shareCellsOf(mesh);
+    out.originalNodes = mesh.nodeCount();
+    out.cellOfTet.resize(mesh.cellCount());
+    std::iota(out.cellOfTet.begin(), out.cellOfTet.end(), 0u);
+    return out;
+  }
   out.mesh.nodes = mesh.nodes;
   out.originalNodes = mesh.nodeCount();
   Builder b(out);

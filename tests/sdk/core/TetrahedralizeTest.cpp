@@ -187,3 +187,77 @@ TEST(Tetrahedralize, MirroredCellsSplitCleanlyAndBowTiesAreListedAsFolded) {
   bowTie.addCell(CellType::Hex8, std::vector<NodeIndex>{n[0], n[1], n[2], n[3], n[4], n[5], n[7], n[6]});
   EXPECT_EQ(tetrahedralize(bowTie).foldedCells, std::vector<std::uint32_t>{0});
 }
+
+// Two unit tets sharing a face, both positive.
+namespace {
+volpost::Mesh twoTets() {
+  volpost::Mesh m;
+  m.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  const std::array<volpost::NodeIndex, 4> a = {0, 1, 2, 3}, b = {1, 2, 3, 4};
+  m.addCell(volpost::CellType::Tet4, a);
+  m.addCell(volpost::CellType::Tet4, b);
+  if (volpost::signedCellVolume(m, 1) < 0.0) {  // orient the second one positively
+    volpost::Mesh fixed;
+    fixed.nodes = m.nodes;
+    fixed.addCell(volpost::CellType::Tet4, a);
+    const std::array<volpost::NodeIndex, 4> c = {2, 1, 3, 4};
+    fixed.addCell(volpost::CellType::Tet4, c);
+    return fixed;
+  }
+  return m;
+}
+}  // namespace
+
+// An all-tet mesh (the usual case) is its own tetrahedralization: its cells are shared,
+// not copied (17 bytes per tet at 100M tets is 1.7 GB).
+TEST(Tetrahedralize, APositiveTetMeshSharesItsCellsInsteadOfCopying) {
+  using namespace volpost;
+  const Mesh m = twoTets();
+  ASSERT_GT(signedCellVolume(m, 0), 0.0);
+  ASSERT_GT(signedCellVolume(m, 1), 0.0);
+  const TetMesh t = tetrahedralize(m);
+  EXPECT_TRUE(t.mesh.sharesCellsWith(m));
+  EXPECT_EQ(t.cellOfTet, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(t.mesh.nodeCount(), m.nodeCount());
+  // An inverted tet is reoriented in a copy of its own; the source keeps its order.
+  Mesh inverted;
+  inverted.nodes = m.nodes;
+  const std::array<NodeIndex, 4> flipped = {0, 2, 1, 3};
+  inverted.addCell(CellType::Tet4, flipped);
+  const TetMesh u = tetrahedralize(inverted);
+  EXPECT_FALSE(u.mesh.sharesCellsWith(inverted));
+  EXPECT_GT(signedCellVolume(u.mesh, 0), 0.0);
+  EXPECT_LT(signedCellVolume(inverted, 0), 0.0);
+}
+
+// Cells are shared between copies until one of them changes (copy on write); meshes of one
+// cell size keep no offsets, and a cell of another size brings them back, exact.
+TEST(MeshStorage, CopiesShareCellsUntilChangedAndOneSizeKeepsNoOffsets) {
+  using namespace volpost;
+  Mesh m = twoTets();
+  EXPECT_EQ(m.cellBytes(), 2u * (1 + 16)) << "types and connectivity only";
+  Mesh copy = m;
+  EXPECT_TRUE(copy.sharesCellsWith(m));
+  copy.remapNodes({4, 3, 2, 1, 0});
+  EXPECT_FALSE(copy.sharesCellsWith(m));
+  EXPECT_EQ(m.cellNodes(0)[0], 0u) << "the original is unchanged";
+  EXPECT_EQ(copy.cellNodes(0)[0], 4u);
+  // A pyramid after the tets: offsets from then on, every cell still right.
+  Mesh mixed = m;
+  mixed.nodes.push_back({0.5, 0.5, -1});
+  const std::array<NodeIndex, 5> pyramid = {0, 1, 4, 2, 5};
+  mixed.addCell(CellType::Pyramid5, pyramid);
+  EXPECT_EQ(m.cellCount(), 2u);
+  ASSERT_EQ(mixed.cellCount(), 3u);
+  EXPECT_EQ(mixed.cellNodes(1).size(), 4u);
+  EXPECT_EQ(mixed.cellNodes(1)[3], m.cellNodes(1)[3]);
+  ASSERT_EQ(mixed.cellNodes(2).size(), 5u);
+  EXPECT_EQ(mixed.cellNodes(2)[4], 5u);
+  EXPECT_EQ(mixed.cellBytes(), 3u + 13u * 4u + 4u * 8u);
+  // A moved-from mesh is a valid empty one.
+  Mesh taken = std::move(mixed);
+  EXPECT_EQ(taken.cellCount(), 3u);
+  EXPECT_EQ(mixed.cellCount(), 0u);  // NOLINT(bugprone-use-after-move): defined to be empty
+  mixed.addCell(CellType::Tet4, std::array<NodeIndex, 4>{0, 1, 2, 3});
+  EXPECT_EQ(mixed.cellNodes(0)[3], 3u);
+}

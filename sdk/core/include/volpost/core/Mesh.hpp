@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -45,15 +46,23 @@ class Mesh {
   void addCell(CellType type, std::span<const NodeIndex> cellNodes);
 
   std::size_t nodeCount() const { return nodes.size(); }
-  std::size_t cellCount() const { return types_.size(); }
-  CellType cellType(std::size_t cell) const { return types_[cell]; }
+  std::size_t cellCount() const { return cells_->types.size(); }
+  CellType cellType(std::size_t cell) const { return cells_->types[cell]; }
   std::span<const NodeIndex> cellNodes(std::size_t cell) const {
-    return {connectivity_.data() + offsets_[cell], offsets_[cell + 1] - offsets_[cell]};
+    const CellArrays& c = *cells_;
+    if (c.uniformSize) return {c.connectivity.data() + cell * c.uniformSize, c.uniformSize};
+    return {c.connectivity.data() + c.offsets[cell], c.offsets[cell + 1] - c.offsets[cell]};
   }
-  std::span<const CellType> cellTypes() const { return types_; }
-  std::span<const NodeIndex> connectivity() const { return connectivity_; }
+  std::span<const CellType> cellTypes() const { return cells_->types; }
+  std::span<const NodeIndex> connectivity() const { return cells_->connectivity; }
   /// Replaces every node index n in the cells by map[n] (used to merge coincident nodes).
   void remapNodes(const std::vector<NodeIndex>& map);
+  /// Bytes the cells take (types, connectivity and, for meshes of mixed cell sizes, offsets).
+  std::size_t cellBytes() const;
+  /// Takes `other`'s cells as they are, shared (see below): nodes and ids stay this mesh's own.
+  void shareCellsOf(const Mesh& other) { cells_ = other.cells_; }
+  /// Whether this mesh and `other` share one copy of their cells (see below).
+  bool sharesCellsWith(const Mesh& other) const { return cells_ == other.cells_; }
 
   std::map<CellType, std::size_t> countsByType() const;
   /// Bounds of the nodes that cells use (unused and non-finite points are ignored).
@@ -61,10 +70,24 @@ class Mesh {
   /// Bounds of every node, used or not.
   Bounds allNodeBounds() const;
 
+  Mesh();
+  Mesh(const Mesh&) = default;
+  Mesh& operator=(const Mesh&) = default;
+  Mesh(Mesh&& other) noexcept;
+  Mesh& operator=(Mesh&& other) noexcept;
+
  private:
-  std::vector<CellType> types_;
-  std::vector<std::size_t> offsets_{0};
-  std::vector<NodeIndex> connectivity_;
+  // A copy of a mesh shares its cells until one of the two changes them (copy on write):
+  // the tetrahedra of an all-tet mesh are the mesh itself, not a second copy of 17 bytes
+  // per tet. Meshes whose cells all have one node count (all-tet, all-hex) keep no offsets.
+  struct CellArrays {
+    std::vector<CellType> types;
+    std::vector<std::size_t> offsets;  ///< cells + 1 entries; empty while uniformSize is set
+    std::vector<NodeIndex> connectivity;
+    std::uint32_t uniformSize = 0;     ///< nodes of every cell, or 0 (mixed sizes, or no cell yet)
+  };
+  CellArrays& cellsToChange();
+  std::shared_ptr<CellArrays> cells_;
 };
 
 /// Signed volume of a cell from its corner faces (negative = inverted or mirrored).

@@ -7,13 +7,22 @@
 
 #include <glm/vec4.hpp>
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
 namespace volpost {
 
+/// The most tets face adjacency can take: a face is numbered tet x 4 + face in 32 bits
+/// here and in the GPU renderers' shaders (2^30 - 1 = 1.07G tets).
+inline constexpr std::size_t kMaxTetsForFaceIndex = (std::size_t(1) << 30) - 1;
+/// Throws std::length_error (naming both counts) for more tets than that.
+void requireFaceIndexable(std::size_t tets);
+
 /// For every tet (4 vertex ids), the tet across the face opposite vertex k, or -1 (the
-/// boundary, or a face shared by more than two tets). Built on all cores by sorting faces.
+/// boundary, or a face shared by more than two tets). Built on all cores by sorting faces,
+/// with at most about 16 bytes per tet besides the result. Throws std::length_error beyond
+/// kMaxTetsForFaceIndex tets.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets);
 /// The same for a mesh of tet4 cells (a TetMesh's mesh).
 std::vector<glm::ivec4> faceNeighbors(const Mesh& tets);
