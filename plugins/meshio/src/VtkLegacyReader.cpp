@@ -284,7 +284,7 @@ class LegacyReading {
           model->mesh.nodes[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
         progress_.report(0.4);
       } else if (key == "CELLS") {
-        cells_ = readCells();
+        cells_ = readCells(pointCount);
       } else if (key == "CELL_TYPES") {
         const std::size_t n = p_.count("the number of cell types");
         if (n + 1 != cells_.offsets.size())
@@ -300,7 +300,7 @@ class LegacyReading {
       } else if (key == "POINT_DATA" || key == "CELL_DATA") {
         location = key == "POINT_DATA" ? FieldLocation::Node : FieldLocation::Cell;
         sectionCount = p_.count("the number of values");
-        const std::size_t expected = location == FieldLocation::Node ? pointCount : mapping.modelCell.size();
+        const std::size_t expected = location == FieldLocation::Node ? pointCount : mapping.fileCells;
         if (sectionCount != expected)
           p_.fail(key + " " + std::to_string(sectionCount) + " does not match the " + std::to_string(expected) +
                   (location == FieldLocation::Node ? " points" : " cells"));
@@ -362,29 +362,31 @@ class LegacyReading {
     requireMemory(double(points) * 80.0, path_, "a grid of " + std::to_string(points) + " points");
     model.mesh = hexahedraOfGrid(grid);
     model.grid = grid;
-    mapping.modelCell.resize(model.mesh.cellCount());
-    for (std::size_t c = 0; c < mapping.modelCell.size(); ++c) mapping.modelCell[c] = std::int64_t(c);
+    mapping.modelCell.clear();
+    mapping.fileCells = model.mesh.cellCount();
     mapping.skipped = 0;
   }
 
-  VtkCellArrays readCells() {
+  VtkCellArrays readCells(std::size_t pointCount) {
     VtkCellArrays cells;
     const std::size_t a = p_.count("the number of cells"), b = p_.count("the CELLS size");
     if (p_.peekToken() == "OFFSETS") {  // format 5.x: OFFSETS and CONNECTIVITY arrays
       p_.token();
       cells.offsets = p_.integers(a, p_.type(), "OFFSETS");
       if (p_.token() != "CONNECTIVITY") p_.fail("expected CONNECTIVITY after OFFSETS");
-      cells.connectivity = p_.integers(b, p_.type(), "CONNECTIVITY");
+      const std::vector<std::int64_t> connectivity = p_.integers(b, p_.type(), "CONNECTIVITY");
       if (cells.offsets.empty() || cells.offsets.front() != 0) p_.fail("OFFSETS must start at 0");
       for (std::size_t i = 1; i < cells.offsets.size(); ++i)
         if (cells.offsets[i] < cells.offsets[i - 1] || std::uint64_t(cells.offsets[i]) > b)
           p_.fail("OFFSETS entry " + std::to_string(i) + " is out of order or beyond CONNECTIVITY");
+      cells.connectivity = nodeIndicesOf(connectivity, cells.offsets, pointCount, [&](const std::string& m) { p_.fail(m); });
       return cells;
     }
     const auto packed = p_.integers(b, NumericType::Int32, "CELLS");
     cells.offsets.reserve(a + 1);
     cells.offsets.push_back(0);
-    cells.connectivity.reserve(b - std::min(a, b));
+    std::vector<std::int64_t> connectivity;
+    connectivity.reserve(b - std::min(a, b));
     std::size_t i = 0;
     for (std::size_t c = 0; c < a; ++c) {
       if (i >= packed.size())
@@ -394,13 +396,14 @@ class LegacyReading {
       if (n < 0 || std::uint64_t(n) > packed.size() - i)
         p_.fail("CELLS: cell " + std::to_string(c) + " claims " + std::to_string(n) +
                 " points, more than the CELLS size " + std::to_string(b) + " leaves");
-      cells.connectivity.insert(cells.connectivity.end(), packed.begin() + std::ptrdiff_t(i),
-                                packed.begin() + std::ptrdiff_t(i + std::size_t(n)));
+      connectivity.insert(connectivity.end(), packed.begin() + std::ptrdiff_t(i),
+                          packed.begin() + std::ptrdiff_t(i + std::size_t(n)));
       i += std::size_t(n);
-      cells.offsets.push_back(std::int64_t(cells.connectivity.size()));
+      cells.offsets.push_back(std::int64_t(connectivity.size()));
     }
     if (i != packed.size())
       p_.fail("CELLS size is " + std::to_string(b) + " but its " + std::to_string(a) + " cells use " + std::to_string(i) + " values");
+    cells.connectivity = nodeIndicesOf(connectivity, cells.offsets, pointCount, [&](const std::string& m) { p_.fail(m); });
     return cells;
   }
 
@@ -475,7 +478,7 @@ class LegacyReading {
   }
 
   void addField(Model& model, PendingArray& a, const VtkCellMapping& mapping) {
-    const std::size_t expected = a.location == FieldLocation::Node ? model.mesh.nodeCount() : mapping.modelCell.size();
+    const std::size_t expected = a.location == FieldLocation::Node ? model.mesh.nodeCount() : mapping.fileCells;
     if (a.tuples != expected) {
       model.diagnostics.push_back({Severity::Warning, "field-dropped",
                                    "field " + a.name + " dropped: " + std::to_string(a.tuples) + " values for " +

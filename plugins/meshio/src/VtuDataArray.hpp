@@ -42,5 +42,17 @@ struct VtuArrayError {
 std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc);
 std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc);
 std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc);
+/// Thrown by vtuIndices for a value outside [0, limit): its position and the value.
+struct VtuIndexError {
+  std::size_t position = 0;
+  std::int64_t value = 0;
+};
+/// An integer array of indices in [0, limit), each plus `base`, as 32-bit node indices,
+/// decoded without a 64-bit copy (at 100M tets that copy alone is 3.2 GB).
+std::vector<std::uint32_t> vtuIndices(const VtuArraySource& src, const VtuEncoding& enc, std::uint64_t limit,
+                                      std::uint32_t base);
+/// The same array holding only its own bytes (a copy), so that a lazy loader does not keep
+/// the whole file in memory. Throws VtuArrayError for a header that does not fit the data.
+VtuArraySource vtuDetached(const VtuArraySource& src, const VtuEncoding& enc);
 
 }  // namespace volpost::meshio

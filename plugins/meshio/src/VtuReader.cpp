@@ -202,36 +202,41 @@ class VtuReading {
       if (!cellsNode) failAt(piece, "<Piece> has cells but no <Cells>");
       const pugi::xml_node offsetsNode = arrayNamed(cellsNode, "offsets");
       const pugi::xml_node typesNode = arrayNamed(cellsNode, "types");
-      cells.connectivity = integers(arrayNamed(cellsNode, "connectivity"));
-      auto offsets = integers(offsetsNode);
+      const pugi::xml_node connectivityNode = arrayNamed(cellsNode, "connectivity");
+      const VtuArraySource connectivitySource = source(connectivityNode);
+      const std::size_t entries = guarded(connectivityNode, [&] { return vtuValueCount(connectivitySource, enc_); });
       cells.types = integers(typesNode);
       const std::size_t n = std::size_t(cellCount);
       if (cells.types.size() != n)
         failAt(typesNode, "types holds " + std::to_string(cells.types.size()) + " cells, NumberOfCells says " + std::to_string(n));
+      cells.offsets = integers(offsetsNode);
+      std::vector<std::int64_t>& offsets = cells.offsets;
       if (offsets.size() == n + 1 && offsets.front() == 0) offsets.erase(offsets.begin());
       if (offsets.size() != n)
         failAt(offsetsNode, "offsets holds " + std::to_string(offsets.size()) + " cells, NumberOfCells says " + std::to_string(n));
-      cells.offsets.reserve(n + 1);
-      cells.offsets.push_back(0);
-      for (std::size_t i = 0; i < n; ++i) {
-        if (offsets[i] < cells.offsets.back() || std::uint64_t(offsets[i]) > cells.connectivity.size())
+      for (std::size_t i = 0; i < n; ++i)
+        if (offsets[i] < (i ? offsets[i - 1] : 0) || std::uint64_t(offsets[i]) > entries)
           failAt(offsetsNode, "offset of cell " + std::to_string(i) + " (" + std::to_string(offsets[i]) +
-                                  ") is out of order or beyond the " + std::to_string(cells.connectivity.size()) +
-                                  " connectivity entries");
-        cells.offsets.push_back(offsets[i]);
-      }
+                                  ") is out of order or beyond the " + std::to_string(entries) + " connectivity entries");
+      offsets.insert(offsets.begin(), 0);
       // Each piece numbers its own points from 0: an index outside them (negative, or past
       // this piece's points) must not silently land on another piece's nodes.
-      for (std::size_t i = 0; i < cells.connectivity.size(); ++i) {
-        std::int64_t& c = cells.connectivity[i];
-        if (c < 0 || c >= points) {
-          const auto cell = std::upper_bound(cells.offsets.begin(), cells.offsets.end(), std::int64_t(i)) - cells.offsets.begin() - 1;
-          failAt(arrayNamed(cellsNode, "connectivity"),
-                 "cell " + std::to_string(cell) + " uses point " + std::to_string(c) + ", outside this piece's " +
-                     std::to_string(points) + " points (0.." + std::to_string(points - 1) + ")");
-        }
-        c += std::int64_t(nodeBase);
+      if (std::uint64_t(nodeBase) + std::uint64_t(points) > std::numeric_limits<NodeIndex>::max())
+        failAt(piece, "the pieces hold " + std::to_string(nodeBase + std::size_t(points)) +
+                          " points, more than volpost's 32-bit node numbers can count (4,294,967,295)");
+      try {
+        cells.connectivity = vtuIndices(connectivitySource, enc_, std::uint64_t(points), NodeIndex(nodeBase));
+      } catch (const VtuArrayError& e) {
+        failAt(connectivityNode, e.message);
+      } catch (const VtuIndexError& e) {
+        const auto cell = std::upper_bound(offsets.begin(), offsets.end(), std::int64_t(e.position)) - offsets.begin() - 1;
+        failAt(connectivityNode, "cell " + std::to_string(cell) + " uses point " + std::to_string(e.value) +
+                                     ", outside this piece's " + std::to_string(points) + " points (0.." +
+                                     std::to_string(points - 1) + ")");
       }
+      if (cells.connectivity.size() != entries)
+        failAt(connectivityNode, "holds " + std::to_string(cells.connectivity.size()) + " values, its header says " +
+                                     std::to_string(entries));
     }
     const std::size_t pointTotal = nodeBase + std::size_t(points);
     const pugi::xml_node cellsNode = piece.child("Cells");
@@ -427,6 +432,9 @@ class VtuReading {
       }
       std::shared_ptr<VtkCellMapping> m;
       if (mapping && mapping->skipped) m = std::make_shared<VtkCellMapping>(*mapping);
+      // A large file is not kept alive for its fields: each lazy array holds a copy of its
+      // own bytes (a 12.6M-tet mesh's file is 550 MB, its nodal field 8 MB).
+      if (s.file == bytes_ && bytes_->size() > kKeepWholeFileBelow) s = guarded(array, [&] { return vtuDetached(s, enc_); });
       f.parts.push_back({std::move(s), std::move(m)});
       if (inserted) order_.push_back(key);
     }
@@ -519,6 +527,7 @@ class VtuReading {
   }
 
   std::shared_ptr<const std::string> bytes_;
+  static constexpr std::size_t kKeepWholeFileBelow = std::size_t(64) << 20;
   std::string path_;
   const Progress& progress_;
   std::string xml_;

@@ -5,6 +5,8 @@
 
 #include <cassert>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace volpost {
@@ -68,6 +70,18 @@ void Mesh::addCell(CellType type, std::span<const NodeIndex> cellNodes) {
   c.types.push_back(type);
   c.connectivity.insert(c.connectivity.end(), cellNodes.begin(), cellNodes.end());
   if (!c.uniformSize) c.offsets.push_back(c.connectivity.size());
+}
+
+void Mesh::takeCells(CellType type, std::vector<NodeIndex>&& connectivity) {
+  const auto size = std::size_t(topology(type).nodeCount);
+  if (cellCount() != 0 || connectivity.size() % size != 0)
+    throw std::invalid_argument("takeCells: the mesh has cells already, or " + std::to_string(connectivity.size()) +
+                                " node indices are not whole cells of " + std::to_string(size));
+  CellArrays& c = cellsToChange();
+  c.types.assign(connectivity.size() / size, type);
+  c.offsets.clear();
+  c.connectivity = std::move(connectivity);
+  c.uniformSize = c.types.empty() ? 0 : std::uint32_t(size);
 }
 
 void Mesh::remapNodes(const std::vector<NodeIndex>& map) {

@@ -200,8 +200,25 @@ void checkDuplicateCells(Model& model) {
         entries[c] = {h, std::uint32_t(c)};
       }
   });
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : a.cell < b.cell; });
+  // Sorted on all cores in place: split by the hash's top bits into parts (their order is
+  // the hash order), then each part sorted on its own.
+  std::vector<std::pair<std::size_t, std::size_t>> parts = {{0, entries.size()}};
+  for (int bit = 63; bit > 59; --bit) {
+    std::vector<std::pair<std::size_t, std::size_t>> split;
+    for (auto [begin, end] : parts) {
+      const auto middle = std::partition(entries.begin() + std::ptrdiff_t(begin), entries.begin() + std::ptrdiff_t(end),
+                                         [bit](const Entry& e) { return !((e.hash >> bit) & 1u); });
+      const auto m = std::size_t(middle - entries.begin());
+      split.insert(split.end(), {{begin, m}, {m, end}});
+    }
+    parts = std::move(split);
+  }
+  std::atomic<std::size_t> nextPart{0};
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
+    for (std::size_t k; (k = nextPart++) < parts.size();)
+      std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
+                [](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : a.cell < b.cell; });
+  });
   std::vector<std::size_t> dup;
   for (std::size_t i = 1; i < entries.size(); ++i) {
     if (entries[i].hash != entries[i - 1].hash) continue;

@@ -42,9 +42,11 @@ void requireFaceIndexable(std::size_t tets) {
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
   requireFaceIndexable(tets.size());
   struct FaceKey {
-    std::array<std::uint32_t, 3> v;
+    std::uint64_t high;  ///< the face's two smallest vertex ids
+    std::uint32_t low;   ///< its largest
     std::uint32_t tetFace;
-    bool operator<(const FaceKey& o) const { return v < o.v; }
+    bool operator<(const FaceKey& o) const { return high != o.high ? high < o.high : low < o.low; }
+    bool sameFace(const FaceKey& o) const { return high == o.high && low == o.low; }
   };
   const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
   const std::size_t passes = std::clamp<std::size_t>(tets.size() >> 20, 1, 4);
@@ -54,19 +56,26 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
     const std::size_t firstBucket = buckets * pass / passes, endBucket = buckets * (pass + 1) / passes;
     std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(endBucket - firstBucket));
     parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
+      for (auto& bucket : listed[w]) bucket.reserve((end - begin) * 4 / buckets + (end - begin) / buckets / 2 + 16);
       for (std::size_t t = begin; t < end; ++t)
         for (int f = 0; f < 4; ++f) {
           std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
-          std::sort(v.begin(), v.end());
+          if (v[0] > v[1]) std::swap(v[0], v[1]);
+          if (v[1] > v[2]) std::swap(v[1], v[2]);
+          if (v[0] > v[1]) std::swap(v[0], v[1]);
           const std::size_t bucket = v[0] % buckets;
           if (bucket >= firstBucket && bucket < endBucket)
-            listed[w][bucket - firstBucket].push_back({v, std::uint32_t(t) * 4 + std::uint32_t(f)});
+            listed[w][bucket - firstBucket].push_back(
+                {std::uint64_t(v[0]) << 32 | v[1], v[2], std::uint32_t(t) * 4 + std::uint32_t(f)});
         }
     });
     parallelRanges(endBucket - firstBucket, workers, [&](unsigned, std::size_t first, std::size_t last) {
       std::vector<FaceKey> faces;
       for (std::size_t b = first; b < last; ++b) {
         faces.clear();
+        std::size_t total = 0;
+        for (unsigned w = 0; w < workers; ++w) total += listed[w][b].size();
+        faces.reserve(total);
         for (unsigned w = 0; w < workers; ++w) {
           faces.insert(faces.end(), listed[w][b].begin(), listed[w][b].end());
           std::vector<FaceKey>().swap(listed[w][b]);  // freed as it is taken
@@ -74,7 +83,7 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
         std::sort(faces.begin(), faces.end());
         for (std::size_t i = 0; i < faces.size();) {
           std::size_t j = i + 1;
-          while (j < faces.size() && faces[j].v == faces[i].v) ++j;
+          while (j < faces.size() && faces[j].sameFace(faces[i])) ++j;
           if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
             const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
             neighbors[a / 4][int(a % 4)] = int(b2 / 4);

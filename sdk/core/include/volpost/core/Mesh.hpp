@@ -55,6 +55,10 @@ class Mesh {
   }
   std::span<const CellType> cellTypes() const { return cells_->types; }
   std::span<const NodeIndex> connectivity() const { return cells_->connectivity; }
+  /// Cells of one type for a mesh that has none yet, taking `connectivity` (nodeCount of
+  /// the type per cell) without a copy: how readers hand over a large uniform mesh.
+  /// Throws std::invalid_argument when the mesh has cells or the count does not divide.
+  void takeCells(CellType type, std::vector<NodeIndex>&& connectivity);
   /// Replaces every node index n in the cells by map[n] (used to merge coincident nodes).
   void remapNodes(const std::vector<NodeIndex>& map);
   /// Bytes the cells take (types, connectivity and, for meshes of mixed cell sizes, offsets).
