@@ -10,6 +10,7 @@
 #include <limits>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <numeric>
 #include <thread>
@@ -53,35 +54,74 @@ void checkNodes(Model& model) {
       Severity::Info);
 }
 
+// Sorts entries (each with a well-mixed 64-bit `hash`) by hash, then by `tie`, on all
+// cores in place: split by the hash's top bits into parts (their order is the hash order),
+// then each part sorted on its own.
+template <typename Entry, typename Tie>
+void sortByHashOnAllCores(std::vector<Entry>& entries, Tie tie) {
+  std::vector<std::pair<std::size_t, std::size_t>> parts = {{0, entries.size()}};
+  for (int bit = 63; bit > 59; --bit) {
+    std::vector<std::pair<std::size_t, std::size_t>> split;
+    for (auto [begin, end] : parts) {
+      const auto middle = std::partition(entries.begin() + std::ptrdiff_t(begin), entries.begin() + std::ptrdiff_t(end),
+                                         [bit](const Entry& e) { return !((e.hash >> bit) & 1u); });
+      const auto m = std::size_t(middle - entries.begin());
+      split.insert(split.end(), {{begin, m}, {m, end}});
+    }
+    parts = std::move(split);
+  }
+  std::atomic<std::size_t> nextPart{0};
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
+    for (std::size_t k; (k = nextPart++) < parts.size();)
+      std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
+                [&tie](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : tie(a, b); });
+  });
+}
+
+std::uint64_t mixed(std::uint64_t h) {  // splitmix64's finalizer: every input bit moves the top bits
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
 // Coincident nodes that cells do not share make every face look like boundary; they are
 // merged (cells re-pointed to the first node at that position) and reported. Found by
 // sorting node indices by position (8 bytes per node, no hash map).
 void mergeCoincidentNodes(Model& model) {
   Mesh& mesh = model.mesh;
-  std::vector<NodeIndex> order;
-  order.reserve(mesh.nodeCount());
-  for (std::size_t i = 0; i < mesh.nodeCount(); ++i)
-    if (finite(mesh.nodes[i])) order.push_back(NodeIndex(i));
-  const auto& p = mesh.nodes;
-  std::sort(order.begin(), order.end(), [&p](NodeIndex a, NodeIndex b) {
-    if (p[a].x != p[b].x) return p[a].x < p[b].x;
-    if (p[a].y != p[b].y) return p[a].y < p[b].y;
-    if (p[a].z != p[b].z) return p[a].z < p[b].z;
-    return a < b;  // the first node of a position comes first
-  });
+  struct Entry {
+    std::uint64_t hash;
+    NodeIndex node;
+  };
+  const auto bitsOf = [](double v) {
+    if (v == 0.0) v = 0.0;  // -0 and +0 are one position
+    std::uint64_t b;
+    std::memcpy(&b, &v, sizeof b);
+    return b;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(mesh.nodeCount());
+  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+    const glm::dvec3& p = mesh.nodes[i];
+    if (finite(p)) entries.push_back({mixed(bitsOf(p.x) ^ mixed(bitsOf(p.y) ^ mixed(bitsOf(p.z)))), NodeIndex(i)});
+  }
+  // The first node of a position comes first among its equals.
+  sortByHashOnAllCores(entries, [](const Entry& a, const Entry& b) { return a.node < b.node; });
   std::vector<NodeIndex> map;
   std::vector<std::size_t> merged;
-  for (std::size_t i = 1, first = 0; i < order.size(); ++i) {
-    if (p[order[i]] != p[order[first]]) {
-      first = i;
-      continue;
+  for (std::size_t i = 1; i < entries.size(); ++i) {
+    if (entries[i].hash != entries[i - 1].hash) continue;
+    const glm::dvec3& p = mesh.nodes[entries[i].node];
+    for (std::size_t j = i; j-- > 0 && entries[j].hash == entries[i].hash;) {  // the first equal one before it
+      if (mesh.nodes[entries[j].node] != p) continue;
+      if (map.empty()) {
+        map.resize(mesh.nodeCount());
+        std::iota(map.begin(), map.end(), NodeIndex(0));
+      }
+      map[entries[i].node] = map[entries[j].node];
+      merged.push_back(entries[i].node);
+      break;
     }
-    if (map.empty()) {
-      map.resize(mesh.nodeCount());
-      std::iota(map.begin(), map.end(), NodeIndex(0));
-    }
-    map[order[i]] = order[first];
-    merged.push_back(order[i]);
   }
   if (merged.empty()) return;
   std::sort(merged.begin(), merged.end());
@@ -200,25 +240,7 @@ void checkDuplicateCells(Model& model) {
         entries[c] = {h, std::uint32_t(c)};
       }
   });
-  // Sorted on all cores in place: split by the hash's top bits into parts (their order is
-  // the hash order), then each part sorted on its own.
-  std::vector<std::pair<std::size_t, std::size_t>> parts = {{0, entries.size()}};
-  for (int bit = 63; bit > 59; --bit) {
-    std::vector<std::pair<std::size_t, std::size_t>> split;
-    for (auto [begin, end] : parts) {
-      const auto middle = std::partition(entries.begin() + std::ptrdiff_t(begin), entries.begin() + std::ptrdiff_t(end),
-                                         [bit](const Entry& e) { return !((e.hash >> bit) & 1u); });
-      const auto m = std::size_t(middle - entries.begin());
-      split.insert(split.end(), {{begin, m}, {m, end}});
-    }
-    parts = std::move(split);
-  }
-  std::atomic<std::size_t> nextPart{0};
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t k; (k = nextPart++) < parts.size();)
-      std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
-                [](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : a.cell < b.cell; });
-  });
+  sortByHashOnAllCores(entries, [](const Entry& a, const Entry& b) { return a.cell < b.cell; });
   std::vector<std::size_t> dup;
   for (std::size_t i = 1; i < entries.size(); ++i) {
     if (entries[i].hash != entries[i - 1].hash) continue;

@@ -100,3 +100,24 @@ TEST(MeshChecks, FlagsWarpedAndTwistedHexFaces) {
   checkModel(twisted);
   EXPECT_TRUE(find(twisted, "twisted-faces"));
 }
+
+// Three nodes at one position all go to the first of them (whatever order the sort met
+// them in), and -0 and +0 are one position.
+TEST(MeshChecks, CoincidentNodesGoToTheFirstOfTheirPositionAndSignedZerosAreOne) {
+  Model m;
+  m.mesh.nodes = {{1, 1, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}, {-0.0, 0, 0}, {1, 1, 1}};
+  const std::array<NodeIndex, 4> a = {6, 2, 3, 4}, b = {5, 2, 3, 7};
+  m.mesh.addCell(CellType::Tet4, a);
+  m.mesh.addCell(CellType::Tet4, b);
+  checkModel(m);
+  EXPECT_EQ(m.mesh.cellNodes(0)[0], 1u) << "-0 is the same point as +0 (node 1)";
+  EXPECT_EQ(m.mesh.cellNodes(1)[0], 0u);
+  EXPECT_EQ(m.mesh.cellNodes(1)[3], 0u);
+  bool reported = false;
+  for (const auto& d : m.diagnostics)
+    if (d.code == "duplicate-nodes") {
+      reported = true;
+      EXPECT_EQ(d.items, (std::vector<std::size_t>{5, 6, 7}));
+    }
+  EXPECT_TRUE(reported);
+}
