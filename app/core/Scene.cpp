@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "Scene.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include "Deformation.hpp"
 #include "Probe.hpp"
 #include "StreamlineSeeds.hpp"
@@ -19,6 +21,19 @@ namespace {
 QString stepAndLocation(const ScalarView& view) {
   return QString("%1%2").arg(QString::fromStdString(view.stepLabel),
                              view.location == FieldLocation::Node ? "  per node" : "  per cell");
+}
+
+// Before a renderer builds its structure (face adjacency, per-tet data, the GPU copy),
+// the memory it will need next to the model is checked against the budget: a clear
+// message with the figure instead of the system killing the program. About 96 bytes per
+// tet and 48 per node cover the peaks volpost_scale_bench measures for the CPU and GPU ray
+// casters above the model (docs/scale.md).
+void requireVolumeMemory(const Model& model, const Mesh& tets) {
+  const double modelBytes = double(model.mesh.cellBytes()) + 24.0 * double(model.mesh.nodeCount());
+  const double rendererBytes = 96.0 * double(tets.cellCount()) + 48.0 * double(tets.nodeCount());
+  requireMemory(modelBytes + rendererBytes, model.sourcePath,
+                "the model and the volume renderer's structures for " + std::to_string(tets.cellCount()) +
+                    " tetrahedra (about 96 bytes per tet)");
 }
 
 }  // namespace
@@ -605,6 +620,7 @@ void Scene::applyToVolume() {
   if (cullPlanes != culledFor_) changed_.geometry = true;
   const Mesh& tets = session_->tetrahedra().mesh;
   if (changed_.geometry) {
+    requireVolumeMemory(session_->model(), tets);
     const std::vector<double> values = tetValues();
     if (cullPlanes.empty()) {
       culled_.reset();

@@ -7,6 +7,8 @@
 #include "support/TestSupport.hpp"
 
 #include "RayCaster.hpp"
+
+#include <volpost/core/ResourceLimits.hpp>
 #include "core/AnimationFrames.hpp"
 #include "core/Legend.hpp"
 #include "core/Probe.hpp"
@@ -353,4 +355,33 @@ TEST(Legend, NiceTicksAreBoundedEvenFarFromZero) {
     EXPECT_FALSE(ticks.empty());
     EXPECT_LE(ticks.size(), 40u) << lo << " " << hi;
   }
+}
+
+// A renderer whose structures would not fit the memory budget is refused before it builds
+// them, with the figure; the budget restored, the same scene renders.
+TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigure) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+  OffscreenTarget target(16, 16);
+  RenderContext ctx;
+  ctx.width = ctx.height = 16;
+  ctx.framebuffer = target.framebuffer();
+  scene.initialize();
+  const std::size_t budget = memoryBudget();
+  setMemoryBudget(64 * 1024);
+  try {
+    scene.render(ctx);
+    ADD_FAILURE() << "rendered over the budget";
+  } catch (const std::exception& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("memory budget"), std::string::npos) << m;
+    EXPECT_NE(m.find("tetrahedra"), std::string::npos) << m;
+  }
+  setMemoryBudget(budget);
+  scene.render(ctx);
+  EXPECT_FALSE(scene.readVolumeImage().empty());
+  scene.release();
 }
