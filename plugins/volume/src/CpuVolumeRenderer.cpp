@@ -70,7 +70,7 @@ void CpuVolumeRenderer::setValues(std::span<const double> values) {
     return;
   }
   if (!mesh_) throw std::logic_error("CpuVolumeRenderer::setValues before setVolume");
-  walkMesh_ = std::make_shared<const TetWalkMesh>(*mesh_, location_, values);
+  walkMesh_ = TetWalkMesh::withValues(walkMesh_, *mesh_, values);
   ++valueUploads_;
   ++revision_;
   visible_.reset();

@@ -3,18 +3,32 @@
 
 #include <volpost/core/TetAdjacency.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/WorkerThreads.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 namespace volpost::volume {
 namespace {
 constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // face k is opposite vertex k
+
+// body(i) for i in [0, n), in chunks shared out over the cores.
+template <typename Body>
+void parallelChunks(std::size_t n, Body body) {
+  constexpr std::size_t kChunk = 1 << 14;
+  std::atomic<std::size_t> next{0};
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
+    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < n;)
+      for (std::size_t i = begin; i < std::min(n, begin + kChunk); ++i) body(i);
+  });
+}
 }
 
 TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<const double> values)
@@ -28,17 +42,17 @@ TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<con
     if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   valueOffset_ = lo <= hi ? 0.5 * (lo + hi) : 0.0;
 
-  nodes_.reserve(mesh.nodeCount());
-  exactPositions_.reserve(mesh.nodeCount());
-  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
+  // On all cores: the nodes, then which tets are kept, then their neighbours in place.
+  nodes_.resize(mesh.nodeCount());
+  exactPositions_.resize(mesh.nodeCount());
+  parallelChunks(mesh.nodeCount(), [&](std::size_t i) {
     const glm::dvec3 p = mesh.nodes[i] - origin_;
     const double v = location == FieldLocation::Node && std::isfinite(values[i]) ? values[i] - valueOffset_ : 0.0;
-    exactPositions_.push_back(p);
-    nodes_.push_back(glm::vec4(glm::vec3(p), float(v)));
-  }
-  std::vector<glm::uvec4> tets;
-  tets.reserve(mesh.cellCount());
-  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    exactPositions_[i] = p;
+    nodes_[i] = glm::vec4(glm::vec3(p), float(v));
+  });
+  std::vector<std::uint8_t> kept(mesh.cellCount());
+  parallelChunks(mesh.cellCount(), [&](std::size_t c) {
     const auto nodes = mesh.cellNodes(c);
     glm::dvec3 p[4];
     bool finite = true;
@@ -47,23 +61,49 @@ TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<con
       const double s = location == FieldLocation::Node ? values[nodes[k]] : values[c];
       finite = finite && std::isfinite(s) && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z);
     }
-    if (!finite || glm::determinant(glm::dmat3(p[1] - p[0], p[2] - p[0], p[3] - p[0])) == 0.0) {
-      ++skipped_;
-      continue;
-    }
-    tets.push_back(glm::uvec4(nodes[0], nodes[1], nodes[2], nodes[3]));
-    if (location == FieldLocation::Cell) cellValues_.push_back(float(values[c] - valueOffset_));
+    kept[c] = finite && glm::determinant(glm::dmat3(p[1] - p[0], p[2] - p[0], p[3] - p[0])) != 0.0;
+  });
+  const auto count = std::size_t(std::count(kept.begin(), kept.end(), std::uint8_t(1)));
+  skipped_ = mesh.cellCount() - count;
+  auto tets = std::make_shared<std::vector<WalkTet>>(count);
+  std::vector<WalkTet>& list = *tets;
+  if (location == FieldLocation::Cell) cellValues_.resize(count);
+  for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
+    if (!kept[c]) continue;
+    const auto nodes = mesh.cellNodes(c);
+    list[t] = {glm::uvec4(nodes[0], nodes[1], nodes[2], nodes[3]), glm::ivec4(-1)};
+    if (location == FieldLocation::Cell) cellValues_[t] = float(values[c] - valueOffset_);
+    ++t;
   }
-  const std::vector<glm::ivec4> neighbors = faceNeighbors(tets);
-  tets_.resize(tets.size());
-  for (std::size_t t = 0; t < tets.size(); ++t) tets_[t] = {tets[t], neighbors[t]};
+  std::vector<std::uint8_t>().swap(kept);
+  faceNeighborsInto(
+      list.size(), [&list](std::size_t t) { return list[t].nodes; },
+      [&list](std::size_t t, int face, int across) { list[t].neighbors[face] = across; });
+  tets_ = std::move(tets);
+}
+
+std::shared_ptr<const TetWalkMesh> TetWalkMesh::withValues(const std::shared_ptr<const TetWalkMesh>& previous,
+                                                           const Mesh& mesh, std::span<const double> values) {
+  const bool sameTets = previous && previous->skipped_ == 0 && previous->tets_->size() == mesh.cellCount() &&
+                        values.size() == (previous->cellValues() ? mesh.cellCount() : mesh.nodeCount()) &&
+                        std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+  if (!sameTets) return std::make_shared<const TetWalkMesh>(mesh, previous ? previous->location_ : FieldLocation::Node, values);
+  auto next = std::make_shared<TetWalkMesh>(*previous);  // shares the tets and their neighbours
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
+  next->valueOffset_ = lo <= hi ? 0.5 * (lo + hi) : 0.0;
+  if (next->cellValues())
+    parallelChunks(values.size(), [&](std::size_t c) { next->cellValues_[c] = float(values[c] - next->valueOffset_); });
+  else
+    parallelChunks(values.size(), [&](std::size_t i) { next->nodes_[i].w = float(values[i] - next->valueOffset_); });
+  return next;
 }
 
 std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t>& visible) const {
   std::vector<BoundaryFace> faces;
-  for (std::size_t t = 0; t < tets_.size(); ++t) {
+  for (std::size_t t = 0; t < tets_->size(); ++t) {
     if (!visible[t]) continue;
-    const WalkTet& tet = tets_[t];
+    const WalkTet& tet = (*tets_)[t];
     for (int f = 0; f < 4; ++f) {
       const int across = tet.neighbors[f];
       if (across >= 0 && visible[std::size_t(across)]) continue;
@@ -78,7 +118,7 @@ std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t
 }
 
 std::size_t TetWalkMesh::bytes() const {
-  return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + tets_.size() * sizeof(WalkTet) +
+  return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + tets_->size() * sizeof(WalkTet) +
          cellValues_.size() * sizeof(float);
 }
 

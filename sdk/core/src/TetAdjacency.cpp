@@ -40,7 +40,16 @@ void requireFaceIndexable(std::size_t tets) {
 // a share of the buckets each, so the face list (16 bytes per face) never holds more than
 // about 16 bytes per tet at once, besides the result.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
-  requireFaceIndexable(tets.size());
+  std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
+  faceNeighborsInto(
+      tets.size(), [&tets](std::size_t t) { return tets[t]; },
+      [&neighbors](std::size_t t, int face, int across) { neighbors[t][face] = across; });
+  return neighbors;
+}
+
+void faceNeighborsInto(std::size_t tetCount, const std::function<glm::uvec4(std::size_t)>& nodesOf,
+                       const std::function<void(std::size_t tet, int face, int across)>& setNeighbor) {
+  requireFaceIndexable(tetCount);
   struct FaceKey {
     std::uint64_t high;  ///< the face's two smallest vertex ids
     std::uint32_t low;   ///< its largest
@@ -49,17 +58,17 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
     bool sameFace(const FaceKey& o) const { return high == o.high && low == o.low; }
   };
   const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
-  const std::size_t passes = std::clamp<std::size_t>(tets.size() >> 20, 1, 4);
+  const std::size_t passes = std::clamp<std::size_t>(tetCount >> 20, 1, 4);
   const std::size_t buckets = std::size_t(workers) * 8 * passes;
-  std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
   for (std::size_t pass = 0; pass < passes; ++pass) {
     const std::size_t firstBucket = buckets * pass / passes, endBucket = buckets * (pass + 1) / passes;
     std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(endBucket - firstBucket));
-    parallelRanges(tets.size(), workers, [&](unsigned w, std::size_t begin, std::size_t end) {
+    parallelRanges(tetCount, workers, [&](unsigned w, std::size_t begin, std::size_t end) {
       for (auto& bucket : listed[w]) bucket.reserve((end - begin) * 4 / buckets + (end - begin) / buckets / 2 + 16);
-      for (std::size_t t = begin; t < end; ++t)
+      for (std::size_t t = begin; t < end; ++t) {
+        const glm::uvec4 nodes = nodesOf(t);
         for (int f = 0; f < 4; ++f) {
-          std::array<std::uint32_t, 3> v = {tets[t][kFaces[f][0]], tets[t][kFaces[f][1]], tets[t][kFaces[f][2]]};
+          std::array<std::uint32_t, 3> v = {nodes[kFaces[f][0]], nodes[kFaces[f][1]], nodes[kFaces[f][2]]};
           if (v[0] > v[1]) std::swap(v[0], v[1]);
           if (v[1] > v[2]) std::swap(v[1], v[2]);
           if (v[0] > v[1]) std::swap(v[0], v[1]);
@@ -68,6 +77,7 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
             listed[w][bucket - firstBucket].push_back(
                 {std::uint64_t(v[0]) << 32 | v[1], v[2], std::uint32_t(t) * 4 + std::uint32_t(f)});
         }
+      }
     });
     parallelRanges(endBucket - firstBucket, workers, [&](unsigned, std::size_t first, std::size_t last) {
       std::vector<FaceKey> faces;
@@ -86,15 +96,14 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
           while (j < faces.size() && faces[j].sameFace(faces[i])) ++j;
           if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
             const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
-            neighbors[a / 4][int(a % 4)] = int(b2 / 4);
-            neighbors[b2 / 4][int(b2 % 4)] = int(a / 4);
+            setNeighbor(a / 4, int(a % 4), int(b2 / 4));
+            setNeighbor(b2 / 4, int(b2 % 4), int(a / 4));
           }
           i = j;
         }
       }
     });
   }
-  return neighbors;
 }
 
 std::vector<glm::ivec4> faceNeighbors(const Mesh& tets) {

@@ -370,3 +370,28 @@ TEST(CpuRayCastIntegration, PiecesMatchTheExactSegmentIntegral) {
   EXPECT_TRUE(p.transparent(9.0, 2.0));
   EXPECT_FALSE(p.transparent(-1.0, 9.0));
 }
+
+// Another step on the same mesh shares the tets and their neighbours (no rebuild of the
+// adjacency) and draws what a mesh built for those values draws; values that leave tets out
+// (a NaN) build anew.
+TEST_F(CpuRayCast, AnotherStepSharesTheTetsAndDrawsLikeAFreshBuild) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const std::vector<double> first = field(grid);
+  std::vector<double> second(first.size());
+  for (std::size_t i = 0; i < first.size(); ++i) second[i] = 3.0 - 0.5 * first[i] + 0.01 * double(i % 7);
+  const auto previous = std::make_shared<const volume::TetWalkMesh>(grid, FieldLocation::Node, first);
+  const auto next = volume::TetWalkMesh::withValues(previous, grid, second);
+  EXPECT_EQ(&next->tet(0), &previous->tet(0)) << "the tets are shared";
+  const volume::TetWalkMesh fresh(grid, FieldLocation::Node, second);
+  const Camera camera = isoCamera(grid);
+  const volume::CpuImage shared = volume::renderCpu(*next, kTf, camera, 48, 48, {});
+  const volume::CpuImage built = volume::renderCpu(fresh, kTf, camera, 48, 48, {});
+  ASSERT_EQ(shared.rgba.size(), built.rgba.size());
+  for (std::size_t i = 0; i < shared.rgba.size(); ++i) ASSERT_NEAR(shared.rgba[i], built.rgba[i], 1e-6) << i;
+  const volume::CpuImage old = volume::renderCpu(*previous, kTf, camera, 48, 48, {});
+  EXPECT_NE(old.rgba, shared.rgba) << "the values changed the picture";
+  second[5] = std::nan("");
+  const auto rebuilt = volume::TetWalkMesh::withValues(next, grid, second);
+  EXPECT_NE(&rebuilt->tet(0), &previous->tet(0));
+  EXPECT_GT(rebuilt->skippedTets(), 0u);
+}

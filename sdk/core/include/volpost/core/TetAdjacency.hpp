@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -24,6 +25,12 @@ void requireFaceIndexable(std::size_t tets);
 /// with at most about 16 bytes per tet besides the result. Throws std::length_error beyond
 /// kMaxTetsForFaceIndex tets.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets);
+/// The same, reading each tet's vertex ids through nodesOf(t) and writing each interior
+/// face's neighbour through setNeighbor(tet, face, across) (called from several threads,
+/// never twice for one tet face; faces left unset are boundary): for structures that hold
+/// the neighbours next to the vertices, with no list of either on the side.
+void faceNeighborsInto(std::size_t tetCount, const std::function<glm::uvec4(std::size_t)>& nodesOf,
+                       const std::function<void(std::size_t tet, int face, int across)>& setNeighbor);
 /// The same for a mesh of tet4 cells (a TetMesh's mesh).
 std::vector<glm::ivec4> faceNeighbors(const Mesh& tets);
 
