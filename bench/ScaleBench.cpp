@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
     }
   std::printf("renderer %s, picture %dx%d; host peak = the process's largest resident size above its start, per tet; "
               "the boundary (surface view only) measured after the picture\n\n", renderer.c_str(), size, size);
-  std::printf("| n | tets | file MB | write s | read s | checks s | tetrahedra s | values s | GPU build s | first frame s | "
+  std::printf("| n | tets | file MB | write s | read s | checks s | tetrahedra s | values s | renderer build s | first frame s | "
               "to first picture s | frame ms | host peak B/tet | read peak B/tet | GPU B/tet | boundary s (B/tet) |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (int n : sizes) {

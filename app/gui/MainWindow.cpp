@@ -934,6 +934,7 @@ void MainWindow::notifyPanels() {
   colorMapBox_->setToolTip(volume ? "The volume's colors are set in the Transfer Function panel (Colors...)"
                                   : "The color map of the surface and of a new volume's transfer function");
   for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
+  if (session_) showModelInfo();  // the volume renderer's memory follows the renderer
 }
 
 void MainWindow::showModelInfo() {
@@ -959,7 +960,21 @@ void MainWindow::showModelInfo() {
       html += QString("samples stored as %1<br>").arg(QString::fromStdString(grid->sampleStorage).toHtmlEscaped());
     html += "<br>";
   }
-  html += QString("%1 boundary faces<br><br><b>Fields</b><br>").arg(session_->surface().boundaryFaceCount);
+  html += QString("%1 boundary faces<br><br><b>Memory</b><br>").arg(session_->surface().boundaryFaceCount);
+  // Host: the cells, nodes and ids the model holds (fields are read on first use). The
+  // volume renderer's figure is its structure's (GPU buffers, or host memory for the CPU
+  // ray caster), as of its last frame.
+  const double modelBytes = double(m.mesh.cellBytes()) + 24.0 * double(m.mesh.nodeCount()) +
+                            8.0 * double(m.mesh.nodeIds.size() + m.mesh.cellIds.size());
+  html += QString("model: %1 (%2 bytes per cell)<br>")
+              .arg(QString::fromStdString(byteSizeText(modelBytes)))
+              .arg(m.mesh.cellCount() ? modelBytes / double(m.mesh.cellCount()) : 0.0, 0, 'f', 0);
+  const VolumeStats volume = viewport_->volumeStats();
+  if (volume.gpuBytes > 0)
+    html += QString("volume renderer (%1): %2<br>")
+                .arg(QString::fromStdString(viewport_->scene().state().volume.renderer).toHtmlEscaped(),
+                     QString::fromStdString(byteSizeText(double(volume.gpuBytes))));
+  html += QString("budget: %1<br><br><b>Fields</b><br>").arg(QString::fromStdString(byteSizeText(double(memoryBudget()))));
   for (const auto& f : m.fields)
     html += QString("%1 (%2, per %3, %4 step%5)<br>")
                 .arg(QString::fromStdString(f->name()).toHtmlEscaped(), toString(f->kind()), toString(f->location()))

@@ -19,6 +19,7 @@
 #include <QPushButton>
 #include <QDockWidget>
 #include <QLabel>
+#include <QTextBrowser>
 #include <QLineEdit>
 #include <QTableWidget>
 #include <QMouseEvent>
@@ -102,6 +103,12 @@ class MainWindowTest : public QObject {
     const auto [drawn, sum] = summarize(image);
     QVERIFY2(drawn > image.width() / 2 * image.height() / 50, "the model covers part of the view");
     if (const char* shot = std::getenv("VOLPOST_SCREENSHOT")) window_->grab().save(shot);
+    // The Model panel says what the model takes in memory, per cell, and the budget.
+    auto* info = window_->findChild<QTextBrowser*>("modelInfo");
+    QVERIFY(info);
+    const QString text = info->toPlainText();
+    QVERIFY2(text.contains("model: ") && text.contains("bytes per cell") && text.contains("budget: "),
+             qPrintable(text));
   }
 
   void volumeRenderingRunsOnTheCpuWhereOpenGlIsDrawnByIt() {
