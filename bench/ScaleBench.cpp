@@ -5,7 +5,7 @@
 // a process of its own (--measure), so one size's peak memory does not hide the next's.
 //   volpost_scale_bench [--n 64,128,200,256] [--dir DIR] [--keep] [--size N] [--renderer raycast|cpu]
 // The .vtu files are generated into DIR (default: the system's temporary folder) and
-// removed afterwards unless --keep; at n = 256 the file is 2.6 GB.
+// removed afterwards unless --keep; at n = 256 the file is 4.4 GB.
 #include "AllReaders.hpp"
 #include "CpuVolumeRenderer.hpp"
 #include "RayCaster.hpp"

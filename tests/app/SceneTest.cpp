@@ -40,6 +40,15 @@ std::shared_ptr<const ModelSession> bar() {
   return session;
 }
 
+// A context drawing into `target`, at its size.
+RenderContext contextFor(const OffscreenTarget& target) {
+  RenderContext ctx;
+  ctx.width = target.width();
+  ctx.height = target.height();
+  ctx.framebuffer = target.framebuffer();
+  return ctx;
+}
+
 class SceneWithContext : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -63,10 +72,7 @@ TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   scene.setVolumeShown(true);
   scene.setClipPlanes({{{5.0, 0.5, 0.5}, {1, 0, 0}}});
   OffscreenTarget target(48, 32);
-  RenderContext ctx;
-  ctx.width = 48;
-  ctx.height = 32;
-  ctx.framebuffer = target.framebuffer();
+  const RenderContext ctx = contextFor(target);
   scene.initialize();
   scene.render(ctx);
   const VolumeStats first = scene.volumeStats();
@@ -109,10 +115,7 @@ TEST_F(SceneWithContext, AVolumePictureLeavesTheBoundaryUnextracted) {
   scene.setVolumeRenderer("raycast");
   scene.setVolumeShown(true);
   OffscreenTarget target(32, 24);
-  RenderContext ctx;
-  ctx.width = 32;
-  ctx.height = 24;
-  ctx.framebuffer = target.framebuffer();
+  const RenderContext ctx = contextFor(target);
   scene.initialize();
   scene.render(ctx);
   EXPECT_FALSE(session->surfaceExtracted());
@@ -366,9 +369,7 @@ TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigur
   scene.setVolumeRenderer("raycast");
   scene.setVolumeShown(true);
   OffscreenTarget target(16, 16);
-  RenderContext ctx;
-  ctx.width = ctx.height = 16;
-  ctx.framebuffer = target.framebuffer();
+  const RenderContext ctx = contextFor(target);
   scene.initialize();
   const std::size_t budget = memoryBudget();
   setMemoryBudget(64 * 1024);

@@ -10,23 +10,18 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 namespace volpost::volume {
 namespace {
 constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // face k is opposite vertex k
 
-// body(i) for i in [0, n), in chunks shared out over the cores.
+// body(i) for i in [0, n), on all cores.
 template <typename Body>
 void parallelChunks(std::size_t n, Body body) {
-  constexpr std::size_t kChunk = 1 << 14;
-  std::atomic<std::size_t> next{0};
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < n;)
-      for (std::size_t i = begin; i < std::min(n, begin + kChunk); ++i) body(i);
+  forEachChunk(n, std::size_t(1) << 14, [&body](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) body(i);
   });
 }
 }

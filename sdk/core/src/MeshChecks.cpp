@@ -6,14 +6,12 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <limits>
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <sstream>
 #include <numeric>
-#include <thread>
 
 namespace volpost {
 namespace {
@@ -70,11 +68,9 @@ void sortByHashOnAllCores(std::vector<Entry>& entries, Tie tie) {
     }
     parts = std::move(split);
   }
-  std::atomic<std::size_t> nextPart{0};
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t k; (k = nextPart++) < parts.size();)
-      std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
-                [&tie](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : tie(a, b); });
+  forEachChunk(parts.size(), 1, [&](std::size_t k, std::size_t) {
+    std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
+              [&tie](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : tie(a, b); });
   });
 }
 
@@ -194,10 +190,8 @@ void checkCells(Model& model) {
   constexpr std::size_t kChunk = 1 << 15;
   const std::size_t chunks = (mesh.cellCount() + kChunk - 1) / kChunk;
   std::vector<Found> found(chunks);
-  std::atomic<std::size_t> next{0};
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t k; (k = next++) < chunks;)
-      for (std::size_t c = k * kChunk; c < std::min(mesh.cellCount(), (k + 1) * kChunk); ++c) checkCell(mesh, c, found[k]);
+  forEachChunk(mesh.cellCount(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) checkCell(mesh, c, found[begin / kChunk]);
   });
   Found all;
   for (Found& f : found)
@@ -230,15 +224,12 @@ void checkDuplicateCells(Model& model) {
     std::uint32_t cell;
   };
   std::vector<Entry> entries(mesh.cellCount());
-  std::atomic<std::size_t> next{0};
-  constexpr std::size_t kChunk = 1 << 15;
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t begin; (begin = next.fetch_add(kChunk)) < entries.size();)
-      for (std::size_t c = begin; c < std::min(entries.size(), begin + kChunk); ++c) {
-        std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the sorted corners
-        for (NodeIndex n : sortedCorners(c)) h = (h ^ n) * 1099511628211ull;
-        entries[c] = {h, std::uint32_t(c)};
-      }
+  forEachChunk(entries.size(), std::size_t(1) << 15, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) {
+      std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the sorted corners
+      for (NodeIndex n : sortedCorners(c)) h = (h ^ n) * 1099511628211ull;
+      entries[c] = {h, std::uint32_t(c)};
+    }
   });
   sortByHashOnAllCores(entries, [](const Entry& a, const Entry& b) { return a.cell < b.cell; });
   std::vector<std::size_t> dup;

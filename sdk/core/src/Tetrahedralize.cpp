@@ -12,7 +12,6 @@
 #include <array>
 #include <atomic>
 #include <numeric>
-#include <thread>
 #include <stdexcept>
 #include <string>
 
@@ -148,17 +147,12 @@ bool allPositiveTet4(const Mesh& mesh) {
   const auto types = mesh.cellTypes();
   if (std::any_of(types.begin(), types.end(), [](CellType t) { return t != CellType::Tet4; })) return false;
   std::atomic<bool> allGood{true};
-  std::atomic<std::size_t> next{0};
-  constexpr std::size_t kChunk = 1 << 14;
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
-    for (std::size_t begin; allGood && (begin = next.fetch_add(kChunk)) < n;)
-      for (std::size_t c = begin; c < std::min(n, begin + kChunk); ++c) {
-        const auto v = mesh.cellNodes(c);
-        if (cellRepeatsANode(mesh, c) || orientationOf(mesh.nodes, {v[0], v[1], v[2], v[3]}) != CGAL::POSITIVE) {
-          allGood = false;
-          break;
-        }
-      }
+  forEachChunk(n, std::size_t(1) << 14, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end && allGood; ++c) {
+      const auto v = mesh.cellNodes(c);
+      if (cellRepeatsANode(mesh, c) || orientationOf(mesh.nodes, {v[0], v[1], v[2], v[3]}) != CGAL::POSITIVE)
+        allGood = false;
+    }
   });
   return allGood;
 }

@@ -5,7 +5,11 @@
 // is ever destroyed while running (which aborts the process).
 #pragma once
 
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
 #include <functional>
+#include <thread>
 
 namespace volpost {
 
@@ -14,5 +18,16 @@ namespace volpost {
 /// fewer threads than asked may start. The first exception a worker throws is rethrown
 /// once all have finished. Returns the number of threads that ran.
 unsigned runOnThreads(unsigned count, const std::function<void(unsigned worker)>& work);
+
+/// Runs body(begin, end) over [0, n) in chunks of `chunk` items, the chunks shared out over
+/// every core (runOnThreads). Chunks start at multiples of `chunk`, so begin / chunk
+/// numbers a chunk (for per-chunk results kept in order).
+template <typename Body>
+void forEachChunk(std::size_t n, std::size_t chunk, Body body) {
+  std::atomic<std::size_t> next{0};
+  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned) {
+    for (std::size_t begin; (begin = next.fetch_add(chunk)) < n;) body(begin, std::min(n, begin + chunk));
+  });
+}
 
 }  // namespace volpost
