@@ -5,12 +5,32 @@
 // face the signs of the ray's Plucker products with its edges name (shared bit for bit
 // with the neighbour), integrate each segment (four modes), composite front to back, stop
 // early when nearly opaque.
+//
+// A dispatch takes each ray at most `stepsPerPass` tets further and stores where it
+// stopped (rayState) next to its color so far (the image): the host dispatches again
+// while rays are left unfinished. That bounds the work of one dispatch (a GPU's watchdog
+// resets the device after a few seconds of one; the window slices a long frame into short
+// dispatches to stay responsive) and every loop's iteration count (llvmpipe documents an
+// iteration limit for shader loops; its tet walk here was measured right at 300000 tets in
+// one dispatch, but its grid march was not, docs/seismic.md).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f, binding = 0) uniform writeonly image2D outImage;
+layout(rgba32f, binding = 0) uniform image2D outImage;
 layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { ivec4 neighbors[]; };
 layout(std430, binding = BINDING_BVH) readonly buffer Bvh { vec4 bvh[]; };
 layout(std430, binding = BINDING_BOUNDARY_FACES) readonly buffer BoundaryFaces { uint boundaryFaces[]; };
-uniform int maxSteps;
+// Per pixel: x = phase (bits 0-1) | face entered (bits 2-3) | steps taken (bits 4-31);
+// y = tet being crossed; z = the boundary face last entered through (tet * 4 + face);
+// w = the ray parameter reached (float bits). A cleared buffer (all 0) means "not started".
+// Where the device's storage blocks cannot hold a state per pixel, the image goes in bands of rows.
+layout(std430, binding = BINDING_RAY_STATE) buffer RayState { uvec4 rayState[]; };
+layout(std430, binding = BINDING_RAY_COUNTERS) buffer RayCounters {
+  uint unfinishedRays;  // stopped at the end of this pass' share: dispatch again
+  uint cappedRays;      // stopped at maxSteps: lost in a cycle of a broken mesh, or longer than allowed
+};
+uniform int maxSteps;      // for the whole ray
+uniform int stepsPerPass;  // this dispatch's share of them
+uniform ivec2 band;        // the rows this dispatch covers (first, count); rayState holds them only
+const uint PHASE_FRESH = 0u, PHASE_WALKING = 1u, PHASE_SEEKING = 2u, PHASE_DONE = 3u;
 
 #include "common/tet_segment.glsl"
 
@@ -120,23 +140,41 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
 }
 
 void main() {
-  ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-  if (pix.x >= imageSize_.x || pix.y >= imageSize_.y) return;
+  ivec2 pix = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, band.x);
+  if (pix.x >= imageSize_.x || pix.y >= min(imageSize_.y, band.x + band.y)) return;
+  uint index = uint(pix.y - band.x) * uint(imageSize_.x) + uint(pix.x);
+  uvec4 state = rayState[index];
+  uint phase = state.x & 3u;
+  if (phase == PHASE_DONE) return;
   vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
                   1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
-  vec2 range = setupRay(ndc, pix);
+  vec2 range = setupRay(ndc, pix);  // the same ray in every pass
   float t = range.x, tEnd = range.y;
-
   int steps = 0;
   uint lastEntry = 0xffffffffu;
-  while (steps < maxSteps && accT >= terminationTransmittance) {
-    float tIn;
-    int face;
-    int tet = findEntry(t, lastEntry, tIn, face);
-    if (tet >= 0) lastEntry = uint(tet) * 4u + uint(face);
-    if (tet < 0 || tIn > tEnd) break;
+  int tet = -1, face = 0;
+  if (phase != PHASE_FRESH) {  // carry on where the last pass stopped
+    vec4 sofar = imageLoad(outImage, pix);  // an unfinished ray's pixel holds its transmittance
+    accColor = sofar.rgb;
+    accT = sofar.a;
+    face = int((state.x >> 2) & 3u);
+    steps = int(state.x >> 4);
+    tet = phase == PHASE_WALKING ? int(state.y) : -1;
+    lastEntry = state.z;
+    t = uintBitsToFloat(state.w);
+  }
+  int passEnd = min(maxSteps, steps + stepsPerPass);
+  bool finished = false;
+  while (!finished && steps < passEnd && accT >= terminationTransmittance) {
+    if (tet < 0) {  // outside the mesh: where does the ray enter (again)?
+      float tIn;
+      tet = findEntry(t, lastEntry, tIn, face);
+      if (tet < 0 || tIn > tEnd) { finished = true; break; }
+      lastEntry = uint(tet) * 4u + uint(face);
+      t = tIn;
+    }
     // Walk until the ray leaves the mesh, then look for where it comes back.
-    while (tet >= 0 && steps < maxSteps && accT >= terminationTransmittance) {
+    while (steps < passEnd && accT >= terminationTransmittance) {
       ++steps;
       uvec4 tv = tets[tet];
       int exitFace = exitFaceOf(tv, face);
@@ -148,19 +186,33 @@ void main() {
       vec3 n, a;
       facePlane(tv, exitFace, n, a);
       float den = dot(n, rayDir);
-      float tOut = den > 0.0 ? dot(n, a - rayOrigin) / den : tIn;
-      tOut = clamp(tOut, tIn, tIn + 1.001 * diameter);
-      integrate(tv, uint(tet), tIn, min(tOut, tEnd));
+      float tOut = den > 0.0 ? dot(n, a - rayOrigin) / den : t;
+      tOut = clamp(tOut, t, t + 1.001 * diameter);
+      integrate(tv, uint(tet), t, min(tOut, tEnd));
       t = tOut;
-      if (tOut >= tEnd) { tet = -1; steps = maxSteps; break; }
+      if (tOut >= tEnd) { finished = true; break; }
       int next = neighbors[tet][exitFace];
-      if (next < 0) break;  // left the mesh
+      if (next < 0) { tet = -1; break; }  // left the mesh
       // The face of `next` we came through is the one whose neighbour is `tet`.
       ivec4 nb = neighbors[next];
       face = nb.x == tet ? 0 : nb.y == tet ? 1 : nb.z == tet ? 2 : 3;
       tet = next;
-      tIn = tOut;
     }
   }
-  imageStore(outImage, pix, vec4(accColor, 1.0 - accT));
+  if (accT < terminationTransmittance) finished = true;
+  if (!finished && steps >= maxSteps) {
+    atomicAdd(cappedRays, 1u);
+    finished = true;
+  }
+  if (finished) {
+    imageStore(outImage, pix, vec4(accColor, 1.0 - accT));
+    rayState[index].x = PHASE_DONE;
+    return;
+  }
+  // Unfinished: the transmittance itself, so the next pass goes on with the very same
+  // number (1 - (1 - T) is not T in floats) and a sliced frame equals an unsliced one.
+  imageStore(outImage, pix, vec4(accColor, accT));
+  atomicAdd(unfinishedRays, 1u);
+  phase = tet >= 0 ? PHASE_WALKING : PHASE_SEEKING;
+  rayState[index] = uvec4(phase | (uint(face) << 2) | (uint(steps) << 4), uint(max(tet, 0)), lastEntry, floatBitsToUint(t));
 }

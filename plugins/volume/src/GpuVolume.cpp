@@ -75,6 +75,7 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   gridValues_.clear();
   location_ = location;
   ++meshRevision_;
+  ++revision_;
   meshDirty_ = true;
 }
 
@@ -92,6 +93,7 @@ void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values)
   grid_ = grid;
   setGridValues(values);
   ++meshRevision_;
+  ++revision_;
   meshDirty_ = true;
 }
 
@@ -111,6 +113,7 @@ void GpuVolume::setValues(std::span<const double> values) {
                                   std::to_string(grid_->pointCount()) + " points");
     setGridValues(values);
     valuesDirty_ = true;
+    ++revision_;
     return;
   }
   if (!mesh_) return;
@@ -119,12 +122,14 @@ void GpuVolume::setValues(std::span<const double> values) {
     return;
   }
   valuesDirty_ = true;
+  ++revision_;
 }
 
 void GpuVolume::setTransferFunction(const TransferFunction& tf) {
   if (tf == tf_) return;
   tf_ = tf;
   tablesDirty_ = true;
+  ++revision_;
 }
 
 void GpuVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
@@ -133,6 +138,7 @@ void GpuVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
                                 std::to_string(kMaxClipPlanes) + " (a clip box is 6)");
   for (const ClipPlane& p : planes) (void)unitNormal(p);
   clipPlanes_ = planes;
+  ++revision_;
 }
 
 void GpuVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
@@ -143,12 +149,14 @@ void GpuVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) 
     if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
       throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
   isoSurfaces_ = surfaces;
+  ++revision_;
 }
 
 void GpuVolume::setIntegrationMode(IntegrationMode mode) {
   if (mode == mode_) return;
   mode_ = mode;
   tablesDirty_ = true;
+  ++revision_;
 }
 
 // ---- GL ------------------------------------------------------------------------------
@@ -330,6 +338,7 @@ void GpuVolume::uploadPreintegration(const std::vector<float>& values) {
   }
   glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
                       values.data());
+  ++revision_;  // frames drawn with the previous table are outdated
 }
 
 void GpuVolume::ensureImage(int width, int height) {
@@ -427,10 +436,10 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
 }
 
-void GpuVolume::compositeOver(const RenderContext& ctx) const {
+void GpuVolume::compositeOver(const RenderContext& ctx, GLuint image) const {
   glBindTextureUnit(binding::kSceneDepth, 0);  // the depth texture may be attached to the target: no feedback
   glBindTextureUnit(binding::kGrid, 0);
-  composite_.draw(ctx, image_.id());
+  composite_.draw(ctx, image);
 }
 
 VolumeStats GpuVolume::stats() const {

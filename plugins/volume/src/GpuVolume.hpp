@@ -21,6 +21,7 @@
 #include <volpost/render/VolumeRenderer.hpp>
 
 #include <chrono>
+#include <cstdint>
 #include <future>
 #include <map>
 #include <optional>
@@ -41,12 +42,26 @@ class GpuVolume {
   void setClipPlanes(const std::vector<ClipPlane>& planes);
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces);
   void setIntegrationMode(IntegrationMode mode);
-  void setSamplingStep(double step) { samplingStep_ = step; }
-  void setTerminationThreshold(double transmittance) { termination_ = transmittance; }
+  void setSamplingStep(double step) {
+    samplingStep_ = step;
+    ++revision_;
+  }
+  void setTerminationThreshold(double transmittance) {
+    termination_ = transmittance;
+    ++revision_;
+  }
   /// Headlight shading by the gradient (the grid renderers' shaders honour it).
-  void setShading(bool on) { shading_ = on; }
+  void setShading(bool on) {
+    shading_ = on;
+    ++revision_;
+  }
   void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
+  bool asynchronous() const { return asynchronous_; }
   bool hasPendingWork() const { return preFuture_.valid(); }
+  /// Changes with anything that changes the picture besides the camera: every setter, and
+  /// a transfer-function table that arrives from its worker thread. Renderers that build a
+  /// frame over several calls start again when it moves.
+  std::uint64_t revision() const { return revision_; }
 
   const TetMeshGpu& mesh() const { return gpu_; }
   /// Changes whenever the set of tets changes (another mesh, or values that drop tets).
@@ -83,7 +98,9 @@ class GpuVolume {
   /// the top as the compute renderers write it.
   glm::mat4 imageViewProjection(const RenderContext& ctx) const;
   /// Composites the premultiplied float image over what the target already holds.
-  void compositeOver(const RenderContext& ctx) const;
+  void compositeOver(const RenderContext& ctx) const { compositeOver(ctx, image_.id()); }
+  /// The same for another float image of the renderer's (e.g. a reduced quick frame).
+  void compositeOver(const RenderContext& ctx, GLuint image) const;
   GLuint image() const { return image_.id(); }
 
   VolumeStats stats() const;
@@ -119,6 +136,7 @@ class GpuVolume {
   bool shading_ = false;
   bool asynchronous_ = false;
   std::size_t meshRevision_ = 0;
+  std::uint64_t revision_ = 0;
 
   // What the GPU holds relative to that state.
   bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;

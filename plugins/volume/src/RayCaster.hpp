@@ -2,18 +2,103 @@
 // GPU ray casting through tetrahedra (compute shader, one invocation per pixel): rays enter
 // at boundary faces found in a BVH, walk tet to tet through face adjacency, integrate each
 // segment, and the float image is composited over the target.
+//
+// A frame is a series of dispatches, each taking every unfinished ray a bounded number of
+// tets further (raycast.comp keeps where each ray stopped): no single dispatch runs long
+// enough for a GPU's watchdog, the shader's loops stay under drivers' iteration limits,
+// and the window can slice a long frame. Where the device's storage blocks cannot hold a
+// state per pixel, the frame goes in bands of rows. With asynchronous updates (the window), a changed view or scene first gets a
+// quick frame at reduced resolution (sized from the measured cost per ray to take ~40 ms);
+// the full-resolution frame then advances by dispatches of ~30 ms per render() call and is
+// shown once complete (hasPendingWork() says to draw again meanwhile). It is the same
+// image the synchronous path draws.
 #pragma once
 
 #include "TetVolumeRenderer.hpp"
 
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
 namespace volpost::volume {
+
+/// What the last complete frame took.
+struct RayFrameReport {
+  int dispatches = 0;          ///< passes over the image (1 unless rays crossed many tets or the frame was sliced)
+  std::size_t cappedRays = 0;  ///< rays stopped at the step cap (rayStepCap) before leaving the mesh
+  double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
+};
 
 class RayCaster final : public TetVolumeRenderer {
  public:
+  /// Tets a ray advances per dispatch when the frame need not be sliced: below the 65535
+  /// loop iterations llvmpipe documents as its limit.
+  static constexpr int kStepsPerPass = 32768;
+
   std::string name() const override { return "raycast"; }
-  void initialize() override { volume_.initialize(); }
-  void release() override { volume_.release(); }
+  void initialize() override;
+  void release() override;
   void render(const RenderContext& ctx) override;
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || refining_; }
+  VolumeStats stats() const override;
+
+  const RayFrameReport& lastFrame() const { return lastFrame_; }
+  /// The shown image's reduction (1: full resolution; n: one ray per n x n pixels).
+  int shownReduction() const { return refining_ ? reduction_ : 1; }
+  /// Tets per dispatch (tests force small ones to exercise resumption); clamped to
+  /// 1..kStepsPerPass.
+  void setStepsPerPass(int steps);
+  /// Tests: at most this many rows of rays per band, as on a device whose storage blocks
+  /// hold little (0: as the device allows).
+  void setBandRowsLimit(int rows) { bandRowsLimit_ = std::max(rows, 0); }
+  /// What a quick frame and one slice of the full frame may take (asynchronous updates).
+  void setFrameBudget(double quickMs, double sliceMs) {
+    quickFrameMs_ = quickMs;
+    sliceMs_ = sliceMs;
+  }
+
+ private:
+  struct FrameKey {
+    glm::dmat4 viewProjection{0.0};
+    int width = 0, height = 0;
+    std::uint64_t revision = 0;
+    std::size_t meshRevision = 0;
+    GLuint depthTexture = 0;
+    bool operator==(const FrameKey&) const = default;
+  };
+  /// Rows of rays per band: all of them unless the device's storage blocks cannot hold a
+  /// state per pixel (16 bytes each).
+  int bandRows(int width, int height) const;
+  /// Clears the state of the `rows` rays' rows of a band for a new frame.
+  void beginBand(int width, int rows);
+  /// One dispatch advancing every unfinished ray of rows [firstRow, firstRow + rows) by up
+  /// to `steps` tets; returns the rays still unfinished and counts the capped ones.
+  std::size_t dispatch(const RenderContext& ctx, GLuint image, int firstRow, int rows, int steps);
+  /// The whole frame into `image`, band by band, dispatching until every ray is done.
+  void renderWhole(const RenderContext& ctx, GLuint image);
+  /// Starts the full frame of ctx (asynchronous path) and advances it for about sliceMs_;
+  /// true when it is complete.
+  void beginRefining(const RenderContext& ctx);
+  bool refine(const RenderContext& ctx);
+  int reductionFor(int width, int height) const;
+  void ensureQuickImage(int width, int height);
+  void frameDone(int width, int height);
+
+  gl::Buffer rayState_, counters_;
+  std::size_t rayStateBytes_ = 0;
+  gl::Texture quickImage_;
+  int quickWidth_ = 0, quickHeight_ = 0;
+  int stepsPerPass_ = kStepsPerPass;
+  int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
+  RayFrameReport lastFrame_, building_;
+  // Asynchronous updates.
+  FrameKey frameKey_;
+  bool refining_ = false;  ///< the full frame of frameKey_ is being built; the quick one is shown
+  int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined
+  int reduction_ = 1;
+  int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to sliceMs_
+  double quickFrameMs_ = 40.0, sliceMs_ = 30.0;
+  double msPerRay_ = 0.0;  ///< measured on full frames, for sizing quick frames
 };
 
 }  // namespace volpost::volume

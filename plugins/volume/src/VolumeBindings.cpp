@@ -11,7 +11,8 @@ std::string glslDefines() {
       {"BINDING_NEIGHBORS", kNeighbors}, {"BINDING_CELL_VALUES", kCellValues},
       {"BINDING_BVH", kBvh},             {"BINDING_BOUNDARY_FACES", kBoundaryFaces},
       {"BINDING_TF_COLOR_TAU", kTfColorTau}, {"BINDING_TF_VALUES", kTfValues},
-      {"BINDING_ORDER", kOrder},         {"UNIT_PSI", kPsiTable},
+      {"BINDING_ORDER", kOrder},         {"BINDING_RAY_STATE", kRayState},
+      {"BINDING_RAY_COUNTERS", kRayCounters}, {"UNIT_PSI", kPsiTable},
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
       {"UNIT_GRID", kGrid}};

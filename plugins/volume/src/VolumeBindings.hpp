@@ -20,7 +20,9 @@ inline constexpr GLuint kBoundaryFaces = 5;  ///< tet * 4 + face, BVH leaf order
 inline constexpr GLuint kTfColorTau = 6;     ///< transfer function: color + extinction per point
 inline constexpr GLuint kTfValues = 7;       ///< transfer function: value per point
 inline constexpr GLuint kOrder = 8;          ///< cell projection: back-to-front tet list
-inline constexpr GLuint kBufferCount = 9;
+inline constexpr GLuint kRayState = 9;       ///< ray caster: where each pixel's ray stopped (uvec4 per pixel)
+inline constexpr GLuint kRayCounters = 10;   ///< ray caster: rays left unfinished, rays stopped at the step cap
+inline constexpr GLuint kBufferCount = 11;
 
 // Texture units.
 inline constexpr GLuint kPsiTable = 0;

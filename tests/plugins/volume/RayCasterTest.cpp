@@ -272,3 +272,93 @@ TEST_F(RayCast, NoRayIsLostOnTheRealWheel) {
   EXPECT_LE(e.max, 1e-3);
 }
 
+
+// ---- frames in several dispatches --------------------------------------------------------
+
+namespace {
+
+volume::RayCaster& rayCaster(VolumeRenderer& r) { return dynamic_cast<volume::RayCaster&>(r); }
+
+}  // namespace
+
+TEST_F(RayCast, ARayThroughTensOfThousandsOfTetsIsResumedAcrossDispatchesExactly) {
+  // A column of 24000 unit cubes seen end on: each ray crosses 3 tets per cube, 72000 in
+  // all, more than one dispatch takes (32768) and more than the 65535 loop iterations
+  // llvmpipe documents as its limit. Resumed twice, every pixel must still be
+  // 1 - exp(-tau L) = 0.909, L the column's length (a ray stopped at 65535 tets: 0.887),
+  // within the float rounding of 72000 transmittance factors (each exp(-3.3e-5) is
+  // rounded to 6e-8 of 1).
+  const int cubes = 24000;
+  const Mesh column = test::tetGrid(1, 1, cubes);
+  const double tau = 1e-4;
+  const TransferFunction tf({{0.0, {1.0, 1.0, 1.0}, tau}, {1.0, {1.0, 1.0, 1.0}, tau}});
+  caster_->setVolume(column, FieldLocation::Node, std::vector<double>(column.nodeCount(), 0.5));
+  caster_->setTransferFunction(tf);
+  caster_->setTerminationThreshold(0.0);
+  Camera camera;
+  camera.fit(column.bounds());
+  camera.setProjection(Camera::Projection::Orthographic);
+  const double middle = 0.5 * cubes;
+  camera.lookAt({0.5, 0.5, middle + 1.5}, {0.5, 0.5, middle}, {0.0, 1.0, 0.0});  // a view 0.8 wide
+  const std::vector<float> image = gpuImage(camera, 8, 8);
+  const double expected = 1.0 - std::exp(-tau * cubes);
+  for (std::size_t i = 0; i < 64; ++i) ASSERT_NEAR(image[4 * i + 3], expected, 2e-3) << "pixel " << i;
+  EXPECT_GE(rayCaster(*caster_).lastFrame().dispatches, 3) << "72000 tets at 32768 per dispatch";
+  EXPECT_EQ(rayCaster(*caster_).lastFrame().cappedRays, 0u);
+}
+
+TEST_F(RayCast, AFrameInManyShortDispatchesAndBandsIsTheSameImage) {
+  // Resumed rays go on with the very numbers they stopped with: a frame taken 7 tets per
+  // dispatch, 5 rows of rays at a time (as on a device whose storage blocks hold little),
+  // equals the frame taken at once, bit for bit, in every mode, with clip planes and
+  // iso-surfaces.
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const Camera camera = isoCamera(grid);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setClipPlanes({{{2.0, 2.0, 2.0}, {0.3, -1.0, 0.2}}});
+  caster_->setIsoSurfaces({{3.0, {1.0, 0.8, 0.2}, 0.5}});
+  for (IntegrationMode mode : {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated}) {
+    caster_->setIntegrationMode(mode);
+    auto& caster = rayCaster(*caster_);
+    caster.setStepsPerPass(volume::RayCaster::kStepsPerPass);
+    caster.setBandRowsLimit(0);
+    const std::vector<float> whole = gpuImage(camera, 48, 48);
+    EXPECT_EQ(caster.lastFrame().dispatches, 1);
+    caster.setStepsPerPass(7);
+    caster.setBandRowsLimit(5);
+    const std::vector<float> sliced = gpuImage(camera, 48, 48);
+    EXPECT_GT(caster.lastFrame().dispatches, 10);  // 10 bands, several dispatches each
+    EXPECT_EQ(sliced, whole) << toString(mode);
+  }
+}
+
+TEST_F(RayCast, TheWindowGetsAQuickFrameAndTheFullOneInSlicesThatEqualsTheSynchronousFrame) {
+  const Mesh grid = test::tetGrid(5, 4, 3);
+  Camera camera = isoCamera(grid);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setTerminationThreshold(0.0);
+  const std::vector<float> synchronous = gpuImage(camera, 64, 48);
+  auto& caster = rayCaster(*caster_);
+  caster.setAsynchronousUpdates(true);
+  caster.setFrameBudget(1e-3, 1e-3);  // as if every frame were slow: the smallest slices
+  caster.setStepsPerPass(4);
+  (void)gpuImage(camera, 64, 48);
+  EXPECT_GT(caster.shownReduction(), 1) << "a quick frame first";
+  EXPECT_TRUE(caster.hasPendingWork()) << "the full frame is still to come";
+  int calls = 1;
+  for (; calls < 10000 && caster.hasPendingWork(); ++calls) (void)gpuImage(camera, 64, 48);
+  ASSERT_FALSE(caster.hasPendingWork());
+  EXPECT_GT(calls, 2) << "the full frame took several calls";
+  EXPECT_EQ(caster.shownReduction(), 1);
+  EXPECT_EQ(gpuImage(camera, 64, 48), synchronous) << "the refined frame is the synchronous one";
+  // Another view starts over with a quick frame; so does a changed transfer function.
+  camera.orbit(10.0, 0.0);
+  (void)gpuImage(camera, 64, 48);
+  EXPECT_TRUE(caster.hasPendingWork());
+  for (int i = 0; i < 10000 && caster.hasPendingWork(); ++i) (void)gpuImage(camera, 64, 48);
+  caster.setTransferFunction(TransferFunction::ramp(0.0, 6.0, "cool-warm", 0.3, 5));
+  (void)gpuImage(camera, 64, 48);
+  EXPECT_TRUE(caster.hasPendingWork());
+}
