@@ -32,6 +32,7 @@ std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> mod
   session->model_ = std::move(model);
   const Bounds b = session->model_->mesh.bounds();
   session->origin_ = b.valid ? b.center() : glm::dvec3(0.0);
+  session->bounds_ = b;
   if (boundary == Boundary::Now) {
     Progress stage = progress;
     stage.setStage("extracting the boundary");

@@ -51,6 +51,8 @@ class ModelSession {
   /// The point every float position on the GPU is relative to: the centre of the used
   /// nodes' bounds (the boundary surface's origin too), known without extracting it.
   const glm::dvec3& origin() const { return origin_; }
+  /// The used nodes' bounds, found once at load (Mesh::bounds() walks every cell).
+  const Bounds& bounds() const { return bounds_; }
 
   /// All quantities of all fields, in field order.
   std::vector<Quantity> quantities() const;
@@ -86,6 +88,7 @@ class ModelSession {
   mutable std::atomic<bool> surfaceExtracted_{false};
   std::shared_ptr<Model> model_;
   glm::dvec3 origin_{0.0};
+  Bounds bounds_;
 };
 
 }  // namespace volpost::app

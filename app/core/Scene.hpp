@@ -134,6 +134,10 @@ class Scene {
   void setMarkExtremes(bool on) { state_.markExtremes = on; }
   bool marksExtremes() const { return state_.markExtremes; }
   bool showsTriad() const { return state_.triad; }
+  /// The window's handle on the first clip plane (outline and normal handle, PlaneWidget);
+  /// pictures never show it.
+  void setPlaneWidgetShown(bool on) { planeWidgetShown_ = on; }
+  bool showsPlaneWidget() const { return planeWidgetShown_ && session_ && !state_.volume.clipPlanes.empty(); }
   std::size_t step() const { return state_.step; }  ///< 0-based
   /// Where the shown quantity is smallest and largest: a node, or an element's centre for
   /// element results (the first of equal values). nullopt without a result or values.
@@ -213,6 +217,7 @@ class Scene {
   std::size_t deformedStep_ = 0;
   void rebuildDeformation();
   SceneState state_;
+  bool planeWidgetShown_ = false;
   Camera camera_;
   double devicePixelRatio_ = 1.0;
   std::optional<ScalarView> view_;

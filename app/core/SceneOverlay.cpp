@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "SceneOverlay.hpp"
 
+#include "PlaneWidget.hpp"
+
 
 #include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>
+#include <QPolygonF>
 
 #include <glm/mat4x4.hpp>
 
@@ -131,6 +134,34 @@ void paintTriad(QPainter& painter, const QRect& area, const Camera& camera, doub
   }
 }
 
+// The first clip plane's widget: its outline in the model's box, lightly filled, and the
+// normal handle (shaft and knob) that the window's mouse drags.
+void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
+  const PlaneWidget widget = planeWidget(scene.volume().clipPlanes.front(), scene.session()->bounds());
+  const Camera camera = scene.pictureCamera(area.width(), area.height());
+  const auto at = [&](const glm::dvec3& p) -> std::optional<QPointF> {
+    const auto q = projectToPicture(camera, p, area.width(), area.height());
+    if (!q) return std::nullopt;
+    return QPointF(area.left() + q->x, area.top() + q->y);
+  };
+  const QColor color(250, 170, 20);
+  QPolygonF outline;
+  for (const glm::dvec3& p : widget.outline)
+    if (const auto q = at(p)) outline << *q;
+  if (outline.size() >= 3) {
+    painter.setPen(QPen(color, 1.5 * scale));
+    painter.setBrush(QColor(color.red(), color.green(), color.blue(), 40));
+    painter.drawPolygon(outline);
+  }
+  const auto center = at(widget.center), knob = at(widget.knob);
+  if (!center || !knob) return;
+  painter.setPen(QPen(color, 2.5 * scale, Qt::SolidLine, Qt::RoundCap));
+  painter.drawLine(*center, *knob);
+  painter.setPen(QPen(Qt::white, 1.5 * scale));
+  painter.setBrush(color);
+  painter.drawEllipse(*knob, 6.0 * scale, 6.0 * scale);
+}
+
 }  // namespace
 
 std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height) {
@@ -148,10 +179,11 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   QFont font = painter.font();
   font.setPixelSize(std::clamp(area.height() / 54, 9, 84));  // a little smaller than the legend
   painter.setFont(font);
+  const double scale = std::max(1.0, font.pixelSize() / 12.0);
+  if (scene.showsPlaneWidget()) paintPlaneWidget(painter, area, scene, scale);
   std::vector<Marker> markers;
   addExtremes(markers, area, scene);
   addProbes(markers, area, scene);
-  const double scale = std::max(1.0, font.pixelSize() / 12.0);
   PlacedLabels placed;  // the markers first: no label covers one
   for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7) * scale, QSizeF(14, 14) * scale));
   for (const Marker& m : markers) drawMarkerShape(painter, m, scale);

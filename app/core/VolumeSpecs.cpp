@@ -86,6 +86,13 @@ QString clipBoxText(const ClipBox& box) {
   return parts.join(',');
 }
 
+QString clipPlaneText(const ClipPlane& plane) {
+  QStringList parts;
+  for (int k = 0; k < 3; ++k) parts << QString::number(plane.point[k], 'g', 12);
+  for (int k = 0; k < 3; ++k) parts << QString::number(plane.normal[k], 'g', 12);
+  return parts.join(',');
+}
+
 QString isoSurfacesText(const std::vector<optics::IsoSurface>& surfaces) {
   QStringList parts;
   for (const auto& s : surfaces)

@@ -19,6 +19,8 @@ namespace volpost::app {
 std::optional<glm::dvec3> parsePoint(const QString& text);
 /// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
 std::optional<ClipPlane> parseClipPlane(const QString& text);
+/// The written form parseClipPlane reads back (full precision).
+QString clipPlaneText(const ClipPlane& plane);
 /// "xmin,xmax,ymin,ymax,zmin,zmax" with min < max on every axis.
 std::optional<ClipBox> parseClipBox(const QString& text);
 QString clipBoxText(const ClipBox& box);

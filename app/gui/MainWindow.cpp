@@ -84,6 +84,14 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   setWindowTitle("volpost");
   setAcceptDrops(true);
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
+  viewport_->scene().setPlaneWidgetShown(true);
+  connect(viewport_, &Viewport::clipPlaneDragged, this, [this](const ClipPlane& p) {
+    const auto v = [](const glm::dvec3& x) {
+      return QString("(%1, %2, %3)").arg(x.x, 0, 'g', 4).arg(x.y, 0, 'g', 4).arg(x.z, 0, 'g', 4);
+    };
+    statusBar()->showMessage("Clip plane through " + v(p.point) + ", normal " + v(glm::normalize(p.normal)) +
+                             " (View > Clip Plane > Type Plane to type it)");
+  });
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
   glLabel_->setObjectName("glLabel");
@@ -346,9 +354,18 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
     clipGroup->addAction(a);
     connect(a, &QAction::triggered, this, [this, i] {
       setClipAxis(i - 1);
-      if (i > 0) statusBar()->showMessage("Ctrl+drag in the view moves the clip plane");
+      if (i > 0) statusBar()->showMessage("Drag the handle's knob to turn the clip plane, its shaft (or Ctrl+drag) to move it");
     });
   }
+  clip->addAction("&Type Plane...", this, &MainWindow::typeClipPlane)->setObjectName("typeClipPlane");
+  QAction* handle = clip->addAction("Show Plane &Handle");
+  handle->setObjectName("planeHandle");
+  handle->setCheckable(true);
+  handle->setChecked(true);
+  connect(handle, &QAction::toggled, this, [this](bool on) {
+    viewport_->scene().setPlaneWidgetShown(on);
+    viewport_->update();
+  });
   clip->addSeparator();
   clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
   view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
@@ -567,6 +584,27 @@ void MainWindow::setClipAxis(int axis) {
   n[axis] = 1.0;
   const ClipPlane plane{session_->model().mesh.bounds().center(), n};
   changeScene([&](Scene& s) { s.setClipPlanes({plane}); });
+}
+
+void MainWindow::typeClipPlane() {
+  if (!session_) return;
+  const auto& planes = viewport_->scene().volume().clipPlanes;
+  const ClipPlane current = planes.empty() ? ClipPlane{session_->bounds().center(), {1.0, 0.0, 0.0}} : planes.front();
+  QString text = clipPlaneText(current);
+  for (;;) {
+    bool ok = false;
+    text = QInputDialog::getText(this, "Clip plane", "Point on the plane and normal toward the kept side, px,py,pz,nx,ny,nz:",
+                                 QLineEdit::Normal, text, &ok);
+    if (!ok) return;
+    if (const auto plane = parseClipPlane(text)) {
+      std::vector<ClipPlane> next = planes;
+      if (next.empty()) next.push_back(*plane);
+      else next.front() = *plane;
+      changeScene([&](Scene& s) { s.setClipPlanes(next); });
+      return;
+    }
+    QMessageBox::warning(this, "Clip plane", QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(text));
+  }
 }
 
 void MainWindow::chooseClipBox() {

@@ -104,6 +104,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void checkRendererAction(const QString& name);
   void setVolumeShown(bool on);
   void chooseClipBox();
+  void typeClipPlane();
   void chooseIsoSurfaces();
   void chooseStreamlines();
   void buildDeformationActions(QMenu* view);

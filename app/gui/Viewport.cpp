@@ -72,6 +72,21 @@ void Viewport::moveClipPlane(double distance) {
   update();
 }
 
+void Viewport::dragPlaneWidget(const QPointF& at) {
+  std::vector<ClipPlane> planes = scene_.volume().clipPlanes;
+  if (planes.empty() || !scene_.session()) return;
+  const PlaneWidget widget = planeWidget(planes.front(), scene_.session()->bounds());
+  const Camera camera = scene_.pictureCamera(width(), height());
+  const glm::dvec2 to(at.x(), at.y()), from(planeDragLast_.x(), planeDragLast_.y());
+  planes.front() = planeDrag_ == PlaneWidgetPart::Knob
+                       ? turnedPlane(planes.front(), widget, camera, width(), height(), to)
+                       : slidPlane(planes.front(), widget, camera, width(), height(), from, to);
+  planeDragLast_ = at;
+  scene_.setClipPlanes(planes);
+  emit clipPlaneDragged(planes.front());
+  update();
+}
+
 void Viewport::paintGL() {
   if (!scene_.initialized()) return;
   const qreal dpr = devicePixelRatioF();
@@ -98,7 +113,9 @@ void Viewport::paintGL() {
 // texture: no QPainter on the GL context, so the core-profile state stays ours.
 void Viewport::drawLegend(int w, int h) {
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
-  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad()) return;
+  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad() &&
+      !scene_.showsPlaneWidget())
+    return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
   image.fill(Qt::transparent);
@@ -167,12 +184,28 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
   if (rakeMode_ && event->button() == Qt::LeftButton) {
     rakeStart_ = rakeEnd_ = event->position();
     update();
+    return;
+  }
+  planeDrag_ = PlaneWidgetPart::None;
+  // The widget takes the drag where it is hit; Ctrl+drag keeps sliding the plane from anywhere.
+  if (event->button() == Qt::LeftButton && scene_.showsPlaneWidget() && !(event->modifiers() & Qt::ControlModifier)) {
+    const PlaneWidget widget = planeWidget(scene_.volume().clipPlanes.front(), scene_.session()->bounds());
+    const Camera camera = scene_.pictureCamera(width(), height());
+    planeDrag_ = hitPlaneWidget(widget, camera, width(), height(), {event->position().x(), event->position().y()}, 6.0);
+    planeDragLast_ = event->position();
   }
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
   const bool click = event->button() == Qt::LeftButton && pressedAt_ &&
                      (event->position() - *pressedAt_).manhattanLength() < 4.0;
+  if (event->button() == Qt::LeftButton && planeDrag_ != PlaneWidgetPart::None) {
+    planeDrag_ = PlaneWidgetPart::None;
+    if (!click) {
+      pressedAt_.reset();
+      return;  // the end of a widget drag, not a pick
+    }
+  }
   if (event->button() == Qt::LeftButton) pressedAt_.reset();
   if (probeMode_ && click && !rakeMode_ && !(event->modifiers() & Qt::ControlModifier)) {
     if (const auto p = surfacePointAt(event->position())) emit picked(*p);
@@ -212,6 +245,10 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   if (rakeMode_ && rakeStart_) {
     rakeEnd_ = event->position();
     update();
+    return;
+  }
+  if (planeDrag_ != PlaneWidgetPart::None && (event->buttons() & Qt::LeftButton)) {
+    dragPlaneWidget(event->position());
     return;
   }
   const QPoint p = event->position().toPoint();

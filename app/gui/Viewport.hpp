@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // The 3D view: an OpenGL 4.5 core QOpenGLWidget that draws the Scene and its legend and
 // turns mouse input into camera moves (left: orbit, right/middle or shift+left: pan,
-// wheel: zoom; Ctrl+left drags the clip plane). Whoever changes the scene calls update().
+// wheel: zoom; Ctrl+left drags the clip plane). With a clip plane, its widget is shown:
+// dragging the handle's knob turns the plane, dragging the shaft slides it. Whoever
+// changes the scene calls update().
 #pragma once
 
 #include "../core/Scene.hpp"  // brings in epoxy before any Qt GL header
+#include "../core/PlaneWidget.hpp"
 
 #include "host/render/OverlayRenderer.hpp"
 
@@ -65,6 +68,8 @@ class Viewport : public QOpenGLWidget {
   void picked(glm::dvec3 point);
   /// The mouse rests over the model at `point` (hit) or off it (not hit).
   void hovered(QPoint globalPosition, bool hit, glm::dvec3 point);
+  /// The plane widget moved the first clip plane (during the drag, each move).
+  void clipPlaneDragged(const volpost::ClipPlane& plane);
 
  protected:
   void initializeGL() override;
@@ -78,6 +83,7 @@ class Viewport : public QOpenGLWidget {
  private:
   void cleanupGL();
   void drawLegend(int width, int height);
+  void dragPlaneWidget(const QPointF& at);
 
   Scene scene_;
   OverlayRenderer overlay_;
@@ -92,6 +98,8 @@ class Viewport : public QOpenGLWidget {
   std::optional<QPointF> pressedAt_;  ///< where the left button went down (a click or a drag)
   QTimer* hoverTimer_ = nullptr;       ///< hover picks wait for the mouse to rest
   QPoint hoverAt_;
+  PlaneWidgetPart planeDrag_ = PlaneWidgetPart::None;  ///< the widget part held by the left button
+  QPointF planeDragLast_;
 };
 
 }  // namespace volpost::app

@@ -6,6 +6,8 @@
 #include "gui/ProbePanel.hpp"
 #include "gui/StepController.hpp"
 #include "gui/Viewport.hpp"
+#include "core/PlaneWidget.hpp"
+#include "core/SceneOverlay.hpp"
 
 #include <volpost/render/GL.hpp>
 
@@ -235,6 +237,8 @@ class MainWindowTest : public QObject {
     auto* action = window_->findChild<QAction*>("volumeAction");
     action->setChecked(true);
     window_->findChild<QAction*>("clip:1")->trigger();
+    // The plane's handle is a tool of the window, like the cursor: pictures never show it.
+    window_->findChild<QAction*>("planeHandle")->setChecked(false);
     Viewport* view = window_->viewport();
     view->scene().setShowLegend(false);
     view->scene().camera().orbit(30.0, 12.0);
@@ -272,6 +276,7 @@ class MainWindowTest : public QObject {
     QFile::remove(state);
     QFile::remove(png);
     view->scene().setShowLegend(true);
+    window_->findChild<QAction*>("planeHandle")->setChecked(true);
     window_->findChild<QAction*>("clip:-1")->trigger();
     action->setChecked(false);
   }
@@ -533,6 +538,59 @@ class MainWindowTest : public QObject {
     QVERIFY(view->scene().volume().clipPlanes.empty());
     QCOMPARE(settled(view), whole);
     QCOMPARE(view->scene().sectionTriangles(), std::size_t(0));
+  }
+
+  // The clip plane's widget: its knob turns the plane toward the mouse, its shaft slides it;
+  // the cut follows, the status bar says the plane, and View > Clip Plane hides the handle.
+  void thePlaneWidgetTurnsAndSlidesTheClipPlane() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    Viewport* view = window_->viewport();
+    view->setStandardView(StandardView::Isometric);
+    window_->findChild<QAction*>("clip:0")->trigger();  // normal +x through the centre
+    QVERIFY(view->scene().showsPlaneWidget());
+    const QImage before = settled(view);
+    const auto pixelOf = [&](const glm::dvec3& p) {
+      const auto q = projectToPicture(view->scene().pictureCamera(view->width(), view->height()), p, view->width(),
+                                      view->height());
+      return q ? QPoint(int(std::lround(q->x)), int(std::lround(q->y))) : QPoint(-1, -1);
+    };
+    const auto drag = [&](QPoint from, QPoint to) {
+      QTest::mousePress(view, Qt::LeftButton, {}, from);
+      for (int step = 1; step <= 4; ++step) {
+        const QPointF at = QPointF(from) + (QPointF(to - from) * step) / 4.0;
+        QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QApplication::sendEvent(view, &move);
+      }
+      QTest::mouseRelease(view, Qt::LeftButton, {}, to);
+    };
+    const auto widget = [&] {
+      return planeWidget(view->scene().volume().clipPlanes.front(), window_->session()->bounds());
+    };
+    const glm::dvec3 cameraBefore = view->scene().camera().eye();
+    const QPoint knob = pixelOf(widget().knob);
+    drag(knob, knob + QPoint(0, -40));
+    const ClipPlane turned = view->scene().volume().clipPlanes.front();
+    QVERIFY2(glm::length(glm::normalize(turned.normal) - glm::dvec3(1, 0, 0)) > 0.05, "the knob turned the plane");
+    QCOMPARE(view->scene().camera().eye(), cameraBefore);  // the drag went to the widget, not the camera
+    QVERIFY(window_->statusBar()->currentMessage().startsWith("Clip plane "));
+    const QImage turnedImage = settled(view);
+    QVERIFY(turnedImage != before);
+    // The shaft: from the centre's pixel halfway to the knob's slides it along the normal.
+    const PlaneWidget w = widget();
+    const QPoint center = pixelOf(w.center), tip = pixelOf(w.knob);
+    const double offsetBefore = glm::dot(turned.point, glm::normalize(turned.normal));
+    drag((center * 3 + tip) / 4, (center + tip) / 2 + (tip - center) / 4);
+    const ClipPlane slid = view->scene().volume().clipPlanes.front();
+    QVERIFY2(glm::dot(slid.point, glm::normalize(slid.normal)) > offsetBefore, "the shaft slid it toward the knob");
+    QVERIFY(settled(view) != turnedImage);
+    if (const char* shot = std::getenv("VOLPOST_PLANE_SCREENSHOT")) window_->grab().save(shot);
+    // Hidden handle: the same drag turns the camera instead.
+    window_->findChild<QAction*>("planeHandle")->setChecked(false);
+    QVERIFY(!view->scene().showsPlaneWidget());
+    drag(pixelOf(widget().knob), pixelOf(widget().knob) + QPoint(0, -40));
+    QCOMPARE(view->scene().volume().clipPlanes.front(), slid);
+    window_->findChild<QAction*>("planeHandle")->setChecked(true);
+    window_->findChild<QAction*>("clip:-1")->trigger();
   }
 
   void theDeformedShapeIsDrawnAndProbed() {
