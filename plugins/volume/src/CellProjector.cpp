@@ -8,6 +8,10 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
 namespace volpost::volume {
 
 void CellProjector::initialize() {
@@ -16,10 +20,16 @@ void CellProjector::initialize() {
   framebuffer_ = gl::createFramebuffer();
   emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
   attachedImage_ = 0;
+  frameKey_ = {};
+  refining_ = false;
   gl::check("CellProjector::initialize");
 }
 
 void CellProjector::release() {
+  quickImage_.reset();
+  quickWidth_ = quickHeight_ = 0;
+  frameKey_ = {};
+  refining_ = false;
   order_.reset();
   framebuffer_.reset();
   emptyVertexArray_.reset();
@@ -44,15 +54,23 @@ void CellProjector::updateSorter() {
   sortedRevision_ = volume_.meshRevision();
 }
 
-void CellProjector::render(const RenderContext& ctx) {
-  if (!volume_.initialized() || !volume_.hasTets() || ctx.width <= 0 || ctx.height <= 0) return;
-  volume_.prepare(ctx);
-  updateSorter();
+void CellProjector::sortFor(const RenderContext& ctx) {
   lastOrder_ = sorter_->order(ctx.camera, method_, ctx.width, ctx.height);
   glNamedBufferData(order_.id(), GLsizeiptr(std::max<std::size_t>(lastOrder_.backToFront.size() * 4, 16)),
                     lastOrder_.backToFront.data(), GL_STREAM_DRAW);
-  volume_.beginDrawingIntoImage(framebuffer_, attachedImage_, ctx);
+}
 
+void CellProjector::beginDrawing(const RenderContext& ctx, GLuint image, bool clear) {
+  if (attachedImage_ != image) {
+    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, image, 0);
+    attachedImage_ = image;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, ctx.width, ctx.height);
+  if (clear) {
+    const float transparent[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, transparent);
+  }
   const GLuint p = volume_.program({"volume/vicp.vert", "volume/vicp.frag"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
@@ -66,16 +84,124 @@ void CellProjector::render(const RenderContext& ctx) {
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
-  glDrawArrays(GL_TRIANGLES, 0, projectionVertexCount(lastOrder_.backToFront.size()));  // two triangles per tet
+}
+
+void CellProjector::drawRun(std::size_t first, std::size_t count) {
+  // Two triangles per tet; the vertex shader finds its tet from gl_VertexID / 6.
+  (void)projectionVertexCount(first + count);  // the largest vertex id stays an int
+  glDrawArrays(GL_TRIANGLES, GLint(first * 6), projectionVertexCount(count));
+}
+
+void CellProjector::endDrawing() {
   glDisable(GL_BLEND);
   glBindVertexArray(0);
-  volume_.compositeOver(ctx);
+}
+
+double CellProjector::drawWhole(const RenderContext& ctx, GLuint image) {
+  const auto start = std::chrono::steady_clock::now();
+  beginDrawing(ctx, image, true);
+  drawRun(0, lastOrder_.backToFront.size());
+  endDrawing();
+  if (!volume_.asynchronous()) return 0.0;
+  glFinish();  // timed for sizing quick frames: the window's path only
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool CellProjector::refine(const RenderContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::size_t total = lastOrder_.backToFront.size();
+  beginDrawing(ctx, volume_.image(), false);
+  for (;;) {
+    const auto runStart = std::chrono::steady_clock::now();
+    const std::size_t count = std::min(tetsPerRun_, total - drawnTets_);
+    drawRun(drawnTets_, count);
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - runStart).count();
+    refineMs_ += ms;
+    drawnTets_ += count;
+    const double factor = std::clamp(sliceMs_ / std::max(ms, 0.1), 0.25, 4.0);
+    tetsPerRun_ = std::clamp<std::size_t>(std::size_t(double(tetsPerRun_) * factor), 64, std::size_t(1) << 26);
+    if (drawnTets_ >= total) break;
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= sliceMs_) {
+      endDrawing();
+      return false;
+    }
+  }
+  endDrawing();
+  if (ctx.width > 0 && ctx.height > 0) msPerPixel_ = refineMs_ / (double(ctx.width) * double(ctx.height));
+  return true;
+}
+
+int CellProjector::reductionFor(int width, int height) const {
+  if (msPerPixel_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
+  const double fullMs = msPerPixel_ * double(width) * double(height);
+  return std::clamp(int(std::ceil(std::sqrt(fullMs / quickFrameMs_))), 1, 16);
+}
+
+void CellProjector::ensureQuickImage(int width, int height) {
+  if (quickImage_ && width == quickWidth_ && height == quickHeight_) return;
+  quickImage_ = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(quickImage_.id(), 1, GL_RGBA32F, width, height);
+  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  quickWidth_ = width;
+  quickHeight_ = height;
+}
+
+void CellProjector::render(const RenderContext& ctx) {
+  if (!volume_.initialized() || !volume_.hasTets() || ctx.width <= 0 || ctx.height <= 0) return;
+  volume_.prepare(ctx);
+  updateSorter();
+  if (!volume_.asynchronous()) {
+    refining_ = false;
+    frameKey_ = {};
+    sortFor(ctx);
+    drawWhole(ctx, volume_.image());
+    volume_.compositeOver(ctx);
+    gl::check("CellProjector::render");
+    return;
+  }
+  FrameKey key;
+  key.viewProjection = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix();
+  key.width = ctx.width;
+  key.height = ctx.height;
+  key.revision = volume_.revision();
+  key.meshRevision = volume_.meshRevision();
+  key.depthTexture = ctx.depthTexture;
+  key.method = method_;
+  if (!(key == frameKey_)) {  // a new view or scene: sorted once, a quick frame now, the full one in runs
+    frameKey_ = key;
+    refining_ = false;
+    sortFor(ctx);
+    reduction_ = reductionFor(ctx.width, ctx.height);
+    if (reduction_ == 1) {
+      const double ms = drawWhole(ctx, volume_.image());
+      msPerPixel_ = ms / (double(ctx.width) * double(ctx.height));
+    } else {
+      RenderContext quick = ctx;
+      quick.width = std::max(1, ctx.width / reduction_);
+      quick.height = std::max(1, ctx.height / reduction_);
+      quick.depthTexture = 0;  // one depth per full-size pixel: not for the reduced image
+      ensureQuickImage(quick.width, quick.height);
+      const double ms = drawWhole(quick, quickImage_.id());
+      if (msPerPixel_ <= 0.0) msPerPixel_ = ms / (double(quick.width) * double(quick.height));
+      beginDrawing(ctx, volume_.image(), true);  // the full frame starts empty
+      endDrawing();
+      drawnTets_ = 0;
+      refineMs_ = 0.0;
+      refining_ = true;
+    }
+  } else if (refining_ && refine(ctx)) {
+    refining_ = false;
+  }
+  if (refining_) volume_.compositeOver(ctx, quickImage_.id());
+  else volume_.compositeOver(ctx);
   gl::check("CellProjector::render");
 }
 
 VolumeStats CellProjector::stats() const {
   VolumeStats s = volume_.stats();
-  s.gpuBytes += lastOrder_.backToFront.size() * 4;
+  s.gpuBytes += lastOrder_.backToFront.size() * 4 + std::size_t(quickWidth_) * std::size_t(quickHeight_) * 16;
   s.meshBytes += sortMesh_.cellCount() * 4;  // the sorted index list
   s.lastSortMs = lastOrder_.milliseconds;
   return s;

@@ -4,11 +4,18 @@
 // GPU-resident mesh by vertex pulling from the sorted index list; each fragment integrates
 // its tet's segment with the same GLSL as the ray caster (common/tet_segment.glsl) and
 // blends into a float image. Only the 4-byte-per-tet order travels per frame.
+//
+// With asynchronous updates (the window), a changed view or scene is sorted once and drawn
+// first at reduced resolution (sized from the measured cost per pixel to take ~40 ms);
+// the full-resolution frame is then drawn in runs of the sorted order, about 30 ms per
+// render() call, and shown once complete: the same blends in the same order, so the same
+// image as the synchronous path.
 #pragma once
 
 #include "TetVolumeRenderer.hpp"
 #include "VisibilityOrder.hpp"
 
+#include <cstdint>
 #include <memory>
 
 namespace volpost::volume {
@@ -24,9 +31,39 @@ class CellProjector final : public TetVolumeRenderer {
 
   void setOrderMethod(OrderMethod method) { method_ = method; }
   const VisibilityOrder& lastOrder() const { return lastOrder_; }
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || refining_; }
+  /// The shown image's reduction (1: full resolution; n: one pixel per n x n).
+  int shownReduction() const { return refining_ ? reduction_ : 1; }
+  /// What a quick frame and one slice of the full frame may take (asynchronous updates).
+  void setFrameBudget(double quickMs, double sliceMs) {
+    quickFrameMs_ = quickMs;
+    sliceMs_ = sliceMs;
+  }
 
  private:
+  struct FrameKey {
+    glm::dmat4 viewProjection{0.0};
+    int width = 0, height = 0;
+    std::uint64_t revision = 0;
+    std::size_t meshRevision = 0;
+    GLuint depthTexture = 0;
+    OrderMethod method = OrderMethod::Mpvonc;
+    bool operator==(const FrameKey&) const = default;
+  };
   void updateSorter();
+  /// Sorts the tets for ctx's view and uploads the order.
+  void sortFor(const RenderContext& ctx);
+  /// Binds `image` as the target (cleared if asked) with the program and state of a draw.
+  void beginDrawing(const RenderContext& ctx, GLuint image, bool clear);
+  /// Draws the sorted tets [first, first + count) over what the image holds.
+  void drawRun(std::size_t first, std::size_t count);
+  void endDrawing();
+  /// Draws the whole order into `image`; returns the milliseconds it took (GPU included).
+  double drawWhole(const RenderContext& ctx, GLuint image);
+  /// Advances the full frame for about sliceMs_; true when it is complete.
+  bool refine(const RenderContext& ctx);
+  void ensureQuickImage(int width, int height);
+  int reductionFor(int width, int height) const;
 
   OrderMethod method_;
   Mesh sortMesh_;  ///< the GPU's tets (oriented, degenerate ones left out) in model coordinates
@@ -37,6 +74,17 @@ class CellProjector final : public TetVolumeRenderer {
   gl::Framebuffer framebuffer_;
   gl::VertexArray emptyVertexArray_;
   GLuint attachedImage_ = 0;
+  gl::Texture quickImage_;
+  int quickWidth_ = 0, quickHeight_ = 0;
+  // Asynchronous updates.
+  FrameKey frameKey_;
+  bool refining_ = false;
+  int reduction_ = 1;
+  std::size_t drawnTets_ = 0;       ///< of the full frame being refined
+  std::size_t tetsPerRun_ = 4096;   ///< adapted to sliceMs_
+  double refineMs_ = 0.0;           ///< the full frame's drawing so far
+  double quickFrameMs_ = 40.0, sliceMs_ = 30.0;
+  double msPerPixel_ = 0.0;         ///< measured on complete frames, for sizing quick frames
 };
 
 }  // namespace volpost::volume

@@ -104,3 +104,36 @@ TEST_F(CellProjection, IsoSurfacesMatchTheReference) {
   EXPECT_LE(e.rmse, 1e-5);
   EXPECT_LE(e.max, 1e-4);
 }
+
+TEST_F(CellProjection, TheWindowGetsAQuickFrameAndTheFullOneInRunsThatEqualsTheSynchronousFrame) {
+  // The same blends in the same order, a run of the sorted tets per call: the refined
+  // frame is the synchronous one bit for bit; a new view or transfer function starts over.
+  for (volume::OrderMethod order : {volume::OrderMethod::Mpvonc, volume::OrderMethod::ImageSpace}) {
+    auto& projector = dynamic_cast<volume::CellProjector&>(*caster_);
+    projector.setAsynchronousUpdates(false);
+    projector.setOrderMethod(order);
+    const Mesh grid = test::tetGrid(12, 10, 8, glm::dvec3(0.0), 0.5);
+    Camera camera = isoCamera(grid);
+    caster_->setVolume(grid, FieldLocation::Node, field(grid));
+    caster_->setTransferFunction(kTf);
+    caster_->setTerminationThreshold(0.0);
+    const std::vector<float> synchronous = gpuImage(camera, 64, 48);
+    projector.setAsynchronousUpdates(true);
+    projector.setFrameBudget(1e-3, 1e-3);  // as if every frame were slow: the smallest runs
+    (void)gpuImage(camera, 64, 48);
+    EXPECT_GT(projector.shownReduction(), 1) << "a quick frame first";
+    EXPECT_TRUE(projector.hasPendingWork());
+    int calls = 1;
+    for (; calls < 10000 && projector.hasPendingWork(); ++calls) (void)gpuImage(camera, 64, 48);
+    ASSERT_FALSE(projector.hasPendingWork());
+    EXPECT_GT(calls, 3) << "5760 tets: a first run of 4096, then shorter ones";
+    EXPECT_EQ(gpuImage(camera, 64, 48), synchronous) << "the refined frame is the synchronous one";
+    camera.orbit(10.0, 0.0);
+    (void)gpuImage(camera, 64, 48);
+    EXPECT_TRUE(projector.hasPendingWork()) << "another view starts over";
+    for (int i = 0; i < 10000 && projector.hasPendingWork(); ++i) (void)gpuImage(camera, 64, 48);
+    caster_->setTransferFunction(TransferFunction::ramp(0.0, 6.0, "cool-warm", 0.3, 5));
+    (void)gpuImage(camera, 64, 48);
+    EXPECT_TRUE(projector.hasPendingWork()) << "so does another transfer function";
+  }
+}
