@@ -24,6 +24,7 @@
 #include <volpost/render/OffscreenTarget.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -253,7 +254,7 @@ int main(int argc, char** argv) {
                    "  --field NAME        with this scalar field (first step)\n"
                    "  --tf FILE           this transfer function (volpost TF JSON) instead of the bench's\n"
                    "  --eye, --target, --up, --view-angle   an explicit camera instead of the isometric fit\n"
-                   "  --interactive       also the CPU renderer as the window drives it: 1024x768, the view\n"
+                   "  --interactive       also the renderers as the window drives them: 1024x768, the view\n"
                    "                      turning 5 degrees per frame, quick frames while the full one is\n"
                    "                      computed and cancelled (frames per second, rays per pixel)\n",
                    help ? "" : ("unknown argument '" + std::string(argv[i]) + "'\n").c_str());
@@ -348,35 +349,46 @@ int main(int argc, char** argv) {
     }
     if (interactive) {
       // As in the window: every frame a new view, so a quick frame is drawn and the full one
-      // started (and cancelled by the next frame). What the user sees: frames per second.
+      // started (the CPU's on worker threads, cancelled by the next frame; the GPU
+      // renderers' in slices when the view rests). What the user sees: frames per second.
+      const auto turning = [&](VolumeRenderer& renderer, const char* name, const std::function<int()>& reductionShown) {
+        renderer.initialize();
+        renderer.setVolume(c.mesh, c.location, c.values);
+        renderer.setTransferFunction(tf);
+        renderer.setAsynchronousUpdates(true);
+        OffscreenTarget window(1024, 768);
+        RenderContext ctx;
+        ctx.width = 1024;
+        ctx.height = 768;
+        ctx.framebuffer = window.framebuffer();
+        ctx.camera = camera;
+        std::vector<double> times;
+        int reduction = 1;
+        for (int f = 0; f < 40; ++f) {
+          ctx.camera.orbit(5.0, 0.0);
+          const auto t0 = Clock::now();
+          renderer.render(ctx);
+          glFinish();
+          times.push_back(msSince(t0));
+          reduction = reductionShown();
+        }
+        renderer.release();
+        std::sort(times.begin() + 5, times.end());  // the first frames measure the cost per ray
+        const double median = times[5 + (times.size() - 5) / 2];
+        std::printf("| %s | %zu | %s, window 1024x768 turning: quick frames (1 %s per %dx%d pixels) | %.0f / %.0f / %.0f | - | "
+                    "%.1f frames/s | - | - | - | - |\n", c.name.c_str(), c.mesh.cellCount(), name,
+                    std::strcmp(name, "cpu") && std::strcmp(name, "raycast") ? "pixel" : "ray", reduction, reduction,
+                    times[5], median, times.back(), 1000.0 / median);
+        std::fflush(stdout);
+      };
       volume::CpuVolumeRenderer cpu;
-      cpu.initialize();
-      cpu.setVolume(c.mesh, c.location, c.values);
-      cpu.setTransferFunction(tf);
-      cpu.setAsynchronousUpdates(true);
-      OffscreenTarget window(1024, 768);
-      RenderContext ctx;
-      ctx.width = 1024;
-      ctx.height = 768;
-      ctx.framebuffer = window.framebuffer();
-      ctx.camera = camera;
-      std::vector<double> times;
-      int reduction = 1;
-      for (int f = 0; f < 40; ++f) {
-        ctx.camera.orbit(5.0, 0.0);
-        const auto t0 = Clock::now();
-        cpu.render(ctx);
-        glFinish();
-        times.push_back(msSince(t0));
-        reduction = cpu.shownReduction();
+      turning(cpu, "cpu", [&] { return cpu.shownReduction(); });
+      if (!cpuOnly) {
+        volume::RayCaster raycaster;
+        turning(raycaster, "raycast", [&] { return raycaster.shownReduction(); });
+        volume::CellProjector projector(volume::OrderMethod::Mpvonc);
+        turning(projector, "vicp (MPVONC)", [&] { return projector.shownReduction(); });
       }
-      cpu.release();
-      std::sort(times.begin() + 5, times.end());  // the first frames measure the cost per ray
-      const double median = times[5 + (times.size() - 5) / 2];
-      std::printf("| %s | %zu | cpu, window 1024x768 turning: quick frames (1 ray per %dx%d pixels) | %.0f / %.0f / %.0f | - | "
-                  "%.1f frames/s | - | - | - | - |\n", c.name.c_str(), c.mesh.cellCount(), reduction, reduction, times[5], median,
-                  times.back(), 1000.0 / median);
-      std::fflush(stdout);
     }
     if (cpuOnly) continue;
     // The ray caster in every mode; cell projection (MPVONC and image-space orders) in the
