@@ -8,6 +8,7 @@
 #include "FrdReader.hpp"
 #include "GmshReader.hpp"
 #include "NeutralFileReader.hpp"
+#include "NrrdReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 
@@ -26,8 +27,9 @@ struct AllReaders {
   FrdReader frd;
   ExodusReader exodus;
   NeutralFileReader neutral;
+  NrrdReader nrrd;
 
-  std::vector<const MeshReader*> list() const { return {&vtu, &vti, &legacy, &gmsh, &inp, &frd, &exodus, &neutral}; }
+  std::vector<const MeshReader*> list() const { return {&vtu, &vti, &legacy, &gmsh, &inp, &frd, &exodus, &neutral, &nrrd}; }
 };
 
 /// A registry of one process-wide set of the readers, for programs that do not load the
