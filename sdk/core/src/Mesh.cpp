@@ -28,19 +28,27 @@ void Bounds::extend(const glm::dvec3& p) {
   max = glm::max(max, p);
 }
 
-Mesh::Mesh() : cells_(std::make_shared<CellArrays>()) {}
+// Every mesh without cells shares one empty set: the first change copies it (it is always
+// shared), and a move can leave an empty mesh behind without allocating, as noexcept
+// promises. Made by the first Mesh ever constructed, so no move can be the first to ask.
+const std::shared_ptr<Mesh::CellArrays>& Mesh::noCells() {
+  static const std::shared_ptr<CellArrays> empty = std::make_shared<CellArrays>();
+  return empty;
+}
+
+Mesh::Mesh() : cells_(noCells()) {}
 
 // A moved-from mesh stays a valid empty mesh.
 Mesh::Mesh(Mesh&& other) noexcept
     : nodes(std::move(other.nodes)), nodeIds(std::move(other.nodeIds)), cellIds(std::move(other.cellIds)),
-      cells_(std::exchange(other.cells_, std::make_shared<CellArrays>())) {}
+      cells_(std::exchange(other.cells_, noCells())) {}
 
 Mesh& Mesh::operator=(Mesh&& other) noexcept {
   if (this != &other) {
     nodes = std::move(other.nodes);
     nodeIds = std::move(other.nodeIds);
     cellIds = std::move(other.cellIds);
-    cells_ = std::exchange(other.cells_, std::make_shared<CellArrays>());
+    cells_ = std::exchange(other.cells_, noCells());
   }
   return *this;
 }

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <type_traits>
+
 #include <algorithm>
 #include <array>
 #include <map>
@@ -260,4 +262,15 @@ TEST(MeshStorage, CopiesShareCellsUntilChangedAndOneSizeKeepsNoOffsets) {
   EXPECT_EQ(mixed.cellCount(), 0u);  // NOLINT(bugprone-use-after-move): defined to be empty
   mixed.addCell(CellType::Tet4, std::array<NodeIndex, 4>{0, 1, 2, 3});
   EXPECT_EQ(mixed.cellNodes(0)[3], 3u);
+  // Empty meshes (new or moved from) share one empty set of cells, never changed in place:
+  // a cell added to one is in that one only, and none counts as sharing with another.
+  Mesh a, b;
+  Mesh moved = std::move(taken);
+  EXPECT_FALSE(a.sharesCellsWith(b));
+  a.addCell(CellType::Tet4, std::array<NodeIndex, 4>{0, 1, 2, 3});
+  EXPECT_EQ(a.cellCount(), 1u);
+  EXPECT_EQ(b.cellCount(), 0u);
+  EXPECT_EQ(taken.cellCount(), 0u);  // NOLINT(bugprone-use-after-move): defined to be empty
+  EXPECT_EQ(Mesh().cellCount(), 0u);
+  static_assert(std::is_nothrow_move_constructible_v<Mesh> && std::is_nothrow_move_assignable_v<Mesh>);
 }

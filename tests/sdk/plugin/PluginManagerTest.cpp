@@ -24,7 +24,7 @@ TEST(PluginManager, LoadsTheBundledReaderPlugin) {
   for (const MeshReader* r : plugins.readers().readers()) formats.insert(r->formatName());
   EXPECT_EQ(formats, (std::set<std::string>{"VTK XML unstructured grid", "VTK legacy", "Gmsh mesh",
                                             "Abaqus/CalculiX input deck", "CalculiX results", "Exodus II",
-                                            "Tecgraf neutral file", "SEG-Y seismic volume", "VTK XML image data"}));
+                                            "Tecgraf neutral file", "SEG-Y seismic volume", "VTK XML image data", "NRRD raw volume"}));
 }
 
 TEST(PluginManager, RefusesOtherSdkVersionsAndNonPluginsWithReasons) {

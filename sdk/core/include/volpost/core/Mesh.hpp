@@ -66,7 +66,7 @@ class Mesh {
   /// Takes `other`'s cells as they are, shared (see below): nodes and ids stay this mesh's own.
   void shareCellsOf(const Mesh& other) { cells_ = other.cells_; }
   /// Whether this mesh and `other` share one copy of their cells (see below).
-  bool sharesCellsWith(const Mesh& other) const { return cells_ == other.cells_; }
+  bool sharesCellsWith(const Mesh& other) const { return cells_ == other.cells_ && cellCount() > 0; }
 
   std::map<CellType, std::size_t> countsByType() const;
   /// Bounds of the nodes that cells use (unused and non-finite points are ignored).
@@ -91,6 +91,7 @@ class Mesh {
     std::uint32_t uniformSize = 0;     ///< nodes of every cell, or 0 (mixed sizes, or no cell yet)
   };
   CellArrays& cellsToChange();
+  static const std::shared_ptr<CellArrays>& noCells();
   std::shared_ptr<CellArrays> cells_;
 };
 
