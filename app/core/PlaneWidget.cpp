@@ -119,25 +119,28 @@ ClipPlane turnedPlane(const ClipPlane& plane, const PlaneWidget& widget, const C
   return {widget.center, normal / length};
 }
 
+double dragAlong(const glm::dvec3& anchor, const glm::dvec3& direction, double length, const Camera& camera,
+                 double width, double height, glm::dvec2 from, glm::dvec2 to) {
+  const auto a = projectToPicture(camera, anchor, width, height);
+  const auto b = projectToPicture(camera, anchor + length * direction, width, height);
+  const glm::dvec2 move = to - from;
+  if (a && b && glm::length(*b - *a) > 8.0) {  // the direction on the screen
+    const glm::dvec2 s = *b - *a;
+    return glm::dot(move, s) / glm::dot(s, s) * length;
+  }
+  // Along the line of sight: up the screen is toward the viewer.
+  const double towardViewer = glm::dot(direction, -camera.viewDirection()) >= 0.0 ? 1.0 : -1.0;
+  return -move.y / height * camera.viewHeight() * towardViewer;
+}
+
 ClipPlane slidPlane(const ClipPlane& plane, const PlaneWidget& widget, const Camera& camera, double width,
                     double height, glm::dvec2 from, glm::dvec2 to) {
   const double handle = glm::length(widget.knob - widget.center);
   const double n = glm::length(plane.normal);
   if (!(handle > 0.0) || !(n > 0.0)) return plane;
   const glm::dvec3 normal = plane.normal / n;
-  const auto a = projectToPicture(camera, widget.center, width, height);
-  const auto b = projectToPicture(camera, widget.knob, width, height);
-  double distance = 0.0;
-  const glm::dvec2 move = to - from;
-  if (a && b && glm::length(*b - *a) > 8.0) {  // the handle's direction on the screen
-    const glm::dvec2 s = *b - *a;
-    distance = glm::dot(move, s) / glm::dot(s, s) * handle;
-  } else {  // the normal points at (or away from) the viewer: up the screen is toward the viewer
-    const double towardViewer = glm::dot(normal, -camera.viewDirection()) >= 0.0 ? 1.0 : -1.0;
-    distance = -move.y / height * camera.viewHeight() * towardViewer;
-  }
   ClipPlane out = plane;
-  out.point += distance * normal;
+  out.point += dragAlong(widget.center, normal, handle, camera, width, height, from, to) * normal;
   return out;
 }
 

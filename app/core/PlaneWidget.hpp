@@ -51,4 +51,11 @@ ClipPlane turnedPlane(const ClipPlane& plane, const PlaneWidget& widget, const C
 ClipPlane slidPlane(const ClipPlane& plane, const PlaneWidget& widget, const Camera& camera, double width,
                     double height, glm::dvec2 from, glm::dvec2 to);
 
+/// How far (model units) a mouse move from `from` to `to` (pixels) drags a point along the
+/// unit `direction` from `anchor`: the part of the move along the direction's on-screen
+/// image, scaled by `length` model units to the on-screen length of `length` along it. Seen
+/// end on, up the screen is toward the viewer. Shared by the plane's and the box's handles.
+double dragAlong(const glm::dvec3& anchor, const glm::dvec3& direction, double length, const Camera& camera,
+                 double width, double height, glm::dvec2 from, glm::dvec2 to);
+
 }  // namespace volpost::app

@@ -138,6 +138,12 @@ class Scene {
   /// pictures never show it.
   void setPlaneWidgetShown(bool on) { planeWidgetShown_ = on; }
   bool showsPlaneWidget() const { return planeWidgetShown_ && session_ && !state_.volume.clipPlanes.empty(); }
+  /// The window's handles on the clip box (BoxWidget); pictures never show them.
+  void setBoxWidgetShown(bool on) { boxWidgetShown_ = on; }
+  bool showsBoxWidget() const { return boxWidgetShown_ && session_ && shownClipBox().has_value(); }
+  /// The box being dragged, drawn instead of the clip box until the window applies it.
+  void setClipBoxPreview(std::optional<ClipBox> box) { clipBoxPreview_ = box; }
+  std::optional<ClipBox> shownClipBox() const { return clipBoxPreview_ ? clipBoxPreview_ : state_.volume.clipBox; }
   std::size_t step() const { return state_.step; }  ///< 0-based
   /// Where the shown quantity is smallest and largest: a node, or an element's centre for
   /// element results (the first of equal values). nullopt without a result or values.
@@ -218,6 +224,8 @@ class Scene {
   void rebuildDeformation();
   SceneState state_;
   bool planeWidgetShown_ = false;
+  bool boxWidgetShown_ = false;
+  std::optional<ClipBox> clipBoxPreview_;
   Camera camera_;
   double devicePixelRatio_ = 1.0;
   std::optional<ScalarView> view_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "SceneOverlay.hpp"
 
+#include "BoxWidget.hpp"
 #include "PlaneWidget.hpp"
 
 
@@ -162,6 +163,27 @@ void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, 
   painter.drawEllipse(*knob, 6.0 * scale, 6.0 * scale);
 }
 
+// The clip box's edges and a knob on each face, as the window drags them.
+void paintBoxWidget(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
+  const BoxWidget widget = boxWidget(*scene.shownClipBox());
+  const Camera camera = scene.pictureCamera(area.width(), area.height());
+  const auto at = [&](const glm::dvec3& p) -> std::optional<QPointF> {
+    const auto q = projectToPicture(camera, p, area.width(), area.height());
+    if (!q) return std::nullopt;
+    return QPointF(area.left() + q->x, area.top() + q->y);
+  };
+  const QColor color(40, 150, 240);
+  painter.setPen(QPen(color, 1.5 * scale));
+  for (const auto& e : boxEdges()) {
+    const auto a = at(widget.corners[std::size_t(e[0])]), b = at(widget.corners[std::size_t(e[1])]);
+    if (a && b) painter.drawLine(*a, *b);
+  }
+  painter.setPen(QPen(Qt::white, 1.5 * scale));
+  painter.setBrush(color);
+  for (const glm::dvec3& c : widget.faceCenters)
+    if (const auto q = at(c)) painter.drawEllipse(*q, 5.0 * scale, 5.0 * scale);
+}
+
 }  // namespace
 
 std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height) {
@@ -181,6 +203,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   painter.setFont(font);
   const double scale = std::max(1.0, font.pixelSize() / 12.0);
   if (scene.showsPlaneWidget()) paintPlaneWidget(painter, area, scene, scale);
+  if (scene.showsBoxWidget()) paintBoxWidget(painter, area, scene, scale);
   std::vector<Marker> markers;
   addExtremes(markers, area, scene);
   addProbes(markers, area, scene);

@@ -85,6 +85,8 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   setAcceptDrops(true);
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
   viewport_->scene().setPlaneWidgetShown(true);
+  viewport_->scene().setBoxWidgetShown(true);
+  connect(viewport_, &Viewport::clipBoxDragged, this, [this](const ClipBox& box) { applyClipBox(box); });
   connect(viewport_, &Viewport::clipPlaneDragged, this, [this](const ClipPlane& p) {
     const auto v = [](const glm::dvec3& x) {
       return QString("(%1, %2, %3)").arg(x.x, 0, 'g', 4).arg(x.y, 0, 'g', 4).arg(x.z, 0, 'g', 4);
@@ -358,12 +360,13 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
     });
   }
   clip->addAction("&Type Plane...", this, &MainWindow::typeClipPlane)->setObjectName("typeClipPlane");
-  QAction* handle = clip->addAction("Show Plane &Handle");
+  QAction* handle = clip->addAction("Show Plane and Box &Handles");
   handle->setObjectName("planeHandle");
   handle->setCheckable(true);
   handle->setChecked(true);
   connect(handle, &QAction::toggled, this, [this](bool on) {
     viewport_->scene().setPlaneWidgetShown(on);
+    viewport_->scene().setBoxWidgetShown(on);
     viewport_->update();
   });
   clip->addSeparator();
@@ -607,6 +610,17 @@ void MainWindow::typeClipPlane() {
   }
 }
 
+void MainWindow::applyClipBox(const ClipBox& box) {
+  if (!session_ || !changeScene([&](Scene& s) { s.setClipBox(box); })) return;
+  viewport_->repaint();  // uploads now, so the message below is about this box
+  QString message = "Clip box " + clipBoxText(box) + " (drag a face's knob to move it)";
+  if (viewport_->scene().volumeShown())
+    message += QString("; the GPU holds %1 of the %2 tets")
+                   .arg(viewport_->uploadedTetCount())
+                   .arg(session_->tetrahedra().mesh.cellCount());
+  statusBar()->showMessage(message);
+}
+
 void MainWindow::chooseClipBox() {
   if (!session_) return;
   const Bounds b = session_->model().mesh.bounds();
@@ -623,11 +637,7 @@ void MainWindow::chooseClipBox() {
       return;
     }
     if (const auto box = parseClipBox(text)) {
-      if (!changeScene([&](Scene& s) { s.setClipBox(*box); })) return;
-      viewport_->repaint();  // uploads now, so the message below is about this box
-      statusBar()->showMessage(QString("Clip box: the GPU holds %1 of the %2 tets")
-                                   .arg(viewport_->uploadedTetCount())
-                                   .arg(session_->tetrahedra().mesh.cellCount()));
+      applyClipBox(*box);
       return;
     }
     QMessageBox::warning(this, "Clip box", QString("'%1' is not six numbers xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(text));

@@ -105,6 +105,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void setVolumeShown(bool on);
   void chooseClipBox();
   void typeClipPlane();
+  void applyClipBox(const ClipBox& box);
   void chooseIsoSurfaces();
   void chooseStreamlines();
   void buildDeformationActions(QMenu* view);

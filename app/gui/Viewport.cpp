@@ -114,7 +114,7 @@ void Viewport::paintGL() {
 void Viewport::drawLegend(int w, int h) {
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
   if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad() &&
-      !scene_.showsPlaneWidget())
+      !scene_.showsPlaneWidget() && !scene_.showsBoxWidget())
     return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
@@ -194,11 +194,30 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     planeDrag_ = hitPlaneWidget(widget, camera, width(), height(), {event->position().x(), event->position().y()}, 6.0);
     planeDragLast_ = event->position();
   }
+  boxDragFace_.reset();
+  if (event->button() == Qt::LeftButton && planeDrag_ == PlaneWidgetPart::None && scene_.showsBoxWidget() &&
+      !(event->modifiers() & Qt::ControlModifier)) {
+    boxDragged_ = *scene_.shownClipBox();
+    const Camera camera = scene_.pictureCamera(width(), height());
+    boxDragFace_ = hitBoxWidget(boxWidget(boxDragged_), camera, width(), height(),
+                                {event->position().x(), event->position().y()}, 7.0);
+    planeDragLast_ = event->position();
+  }
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
   const bool click = event->button() == Qt::LeftButton && pressedAt_ &&
                      (event->position() - *pressedAt_).manhattanLength() < 4.0;
+  if (event->button() == Qt::LeftButton && boxDragFace_) {
+    boxDragFace_.reset();
+    if (!click) {
+      pressedAt_.reset();
+      scene_.setClipBoxPreview(std::nullopt);
+      emit clipBoxDragged(boxDragged_);
+      update();
+      return;  // the end of a box drag, not a pick
+    }
+  }
   if (event->button() == Qt::LeftButton && planeDrag_ != PlaneWidgetPart::None) {
     planeDrag_ = PlaneWidgetPart::None;
     if (!click) {
@@ -249,6 +268,15 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   }
   if (planeDrag_ != PlaneWidgetPart::None && (event->buttons() & Qt::LeftButton)) {
     dragPlaneWidget(event->position());
+    return;
+  }
+  if (boxDragFace_ && (event->buttons() & Qt::LeftButton)) {
+    const Camera camera = scene_.pictureCamera(width(), height());
+    boxDragged_ = draggedBox(boxDragged_, *boxDragFace_, camera, width(), height(),
+                             {planeDragLast_.x(), planeDragLast_.y()}, {event->position().x(), event->position().y()});
+    planeDragLast_ = event->position();
+    scene_.setClipBoxPreview(boxDragged_);
+    update();
     return;
   }
   const QPoint p = event->position().toPoint();

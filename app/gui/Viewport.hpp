@@ -2,11 +2,13 @@
 // The 3D view: an OpenGL 4.5 core QOpenGLWidget that draws the Scene and its legend and
 // turns mouse input into camera moves (left: orbit, right/middle or shift+left: pan,
 // wheel: zoom; Ctrl+left drags the clip plane). With a clip plane, its widget is shown:
-// dragging the handle's knob turns the plane, dragging the shaft slides it. Whoever
+// dragging the handle's knob turns the plane, dragging the shaft slides it; with a clip
+// box, a knob on each face moves that face (applied on release). Whoever
 // changes the scene calls update().
 #pragma once
 
 #include "../core/Scene.hpp"  // brings in epoxy before any Qt GL header
+#include "../core/BoxWidget.hpp"
 #include "../core/PlaneWidget.hpp"
 
 #include "host/render/OverlayRenderer.hpp"
@@ -70,6 +72,8 @@ class Viewport : public QOpenGLWidget {
   void hovered(QPoint globalPosition, bool hit, glm::dvec3 point);
   /// The plane widget moved the first clip plane (during the drag, each move).
   void clipPlaneDragged(const volpost::ClipPlane& plane);
+  /// A face of the clip box was dragged and let go: the box to apply.
+  void clipBoxDragged(const volpost::app::ClipBox& box);
 
  protected:
   void initializeGL() override;
@@ -100,6 +104,8 @@ class Viewport : public QOpenGLWidget {
   QPoint hoverAt_;
   PlaneWidgetPart planeDrag_ = PlaneWidgetPart::None;  ///< the widget part held by the left button
   QPointF planeDragLast_;
+  std::optional<int> boxDragFace_;  ///< the clip box's face held by the left button
+  ClipBox boxDragged_{};            ///< where the drag has taken the box (applied on release)
 };
 
 }  // namespace volpost::app

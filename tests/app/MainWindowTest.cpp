@@ -6,6 +6,7 @@
 #include "gui/ProbePanel.hpp"
 #include "gui/StepController.hpp"
 #include "gui/Viewport.hpp"
+#include "core/BoxWidget.hpp"
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
 
@@ -190,9 +191,11 @@ class MainWindowTest : public QObject {
     QCOMPARE(view->volumeStats().tableBuilds, beforeDrag.tableBuilds);
     // A clip box (View > Clip Plane > Clip Box) and iso-surfaces (View > Iso-surfaces).
     window_->findChild<QAction*>("clip:-1")->trigger();
+    window_->findChild<QAction*>("planeHandle")->setChecked(false);  // pixels of the volume only
     view->scene().setClipBox(ClipBox{2.0, 8.0, -1.0, 2.0, -1.0, 2.0});
     view->update();
     const auto boxed = summarize(settled(view));
+    window_->findChild<QAction*>("planeHandle")->setChecked(true);
     QVERIFY(boxed.second != volume.second && boxed.first < volume.first);
     QVERIFY2(view->uploadedTetCount() < window_->session()->tetrahedra().mesh.cellCount() * 3 / 4,
              "the GPU holds only the tets the box can show");
@@ -591,6 +594,31 @@ class MainWindowTest : public QObject {
     QCOMPARE(view->scene().volume().clipPlanes.front(), slid);
     window_->findChild<QAction*>("planeHandle")->setChecked(true);
     window_->findChild<QAction*>("clip:-1")->trigger();
+    // The clip box: a face's knob moves that face; the box is drawn as it goes and applied
+    // when the mouse lets go.
+    view->scene().setClipBox(ClipBox{1.0, 9.0, -0.2, 1.2, -0.2, 1.2});
+    view->update();
+    QVERIFY(view->scene().showsBoxWidget());
+    const QImage boxed = settled(view);
+    const QPoint xmax = pixelOf(boxWidget(*view->scene().volume().clipBox).faceCenters[1]);
+    const QPoint xmin = pixelOf(boxWidget(*view->scene().volume().clipBox).faceCenters[0]);
+    const QPoint inward = xmax + (xmin - xmax) / 3;
+    const glm::dvec3 eyeBeforeBox = view->scene().camera().eye();
+    QTest::mousePress(view, Qt::LeftButton, {}, xmax);
+    QMouseEvent move(QEvent::MouseMove, QPointF(inward), view->mapToGlobal(QPointF(inward)), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QApplication::sendEvent(view, &move);
+    QCOMPARE((*view->scene().volume().clipBox)[1], 9.0);  // not applied while dragged
+    QVERIFY((*view->scene().shownClipBox())[1] < 9.0);   // but drawn where it goes
+    QTest::mouseRelease(view, Qt::LeftButton, {}, inward);
+    const ClipBox applied = *view->scene().volume().clipBox;
+    QVERIFY2(applied[1] < 8.0 && applied[1] > 1.0, qPrintable(QString::number(applied[1])));
+    QCOMPARE(applied[0], 1.0);
+    QVERIFY(window_->statusBar()->currentMessage().startsWith("Clip box "));
+    QVERIFY(settled(view) != boxed);
+    QCOMPARE(view->scene().camera().eye(), eyeBeforeBox);  // the drag went to the box, not the camera
+    view->scene().setClipBox(std::nullopt);
+    view->update();
   }
 
   void theDeformedShapeIsDrawnAndProbed() {

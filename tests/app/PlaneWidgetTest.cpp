@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The clip plane's widget without a window: the outline where the plane cuts the box, the
 // hit test of the handle, and what dragging its knob and its shaft does to the plane.
+#include "core/BoxWidget.hpp"
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
 #include "core/VolumeSpecs.hpp"
@@ -139,4 +140,40 @@ TEST(PlaneWidget, ATypedPlaneReadsBackExactly) {
   EXPECT_NEAR(glm::length(glm::normalize(back->normal) - p.normal), 0.0, 1e-12);
   EXPECT_FALSE(parseClipPlane("1,2,3,0,0,0")) << "no normal";
   EXPECT_FALSE(parseClipPlane("1,2,3,0,0")) << "five numbers";
+}
+
+// ---- the clip box's handles ----------------------------------------------------------
+
+TEST(BoxWidget, CornersFacesAndEdgesFollowTheBox) {
+  const ClipBox box{0.0, 2.0, -1.0, 1.0, 5.0, 6.0};
+  const BoxWidget w = boxWidget(box);
+  EXPECT_EQ(w.corners[0], glm::dvec3(0, -1, 5));
+  EXPECT_EQ(w.corners[7], glm::dvec3(2, 1, 6));
+  EXPECT_EQ(w.corners[5], glm::dvec3(2, -1, 6));
+  EXPECT_EQ(w.faceCenters[0], glm::dvec3(0, 0, 5.5));
+  EXPECT_EQ(w.faceCenters[3], glm::dvec3(1, 1, 5.5));
+  EXPECT_EQ(w.faceCenters[5], glm::dvec3(1, 0, 6));
+  for (const auto& e : boxEdges())  // every edge joins corners that differ along one axis
+    EXPECT_EQ(glm::length(glm::sign(w.corners[std::size_t(e[0])] - w.corners[std::size_t(e[1])])), 1.0);
+}
+
+TEST(BoxWidget, DraggingAFaceKnobMovesThatFaceOnlyAndNeverPastTheOpposite) {
+  const ClipBox box{0.0, 1.0, 0.0, 1.0, 0.0, 1.0};
+  Camera camera = lookingAt(unitCube());
+  camera.setProjection(Camera::Projection::Orthographic);  // screen moves linear in model ones: exact figures
+  const BoxWidget w = boxWidget(box);
+  const auto xmax = projectToPicture(camera, w.faceCenters[1], 400, 300);
+  ASSERT_TRUE(xmax);
+  EXPECT_EQ(hitBoxWidget(w, camera, 400, 300, *xmax + glm::dvec2(2, 1), 7.0), 1);
+  EXPECT_FALSE(hitBoxWidget(w, camera, 400, 300, *xmax + glm::dvec2(30, 30), 7.0).has_value());
+  // Toward the screen image of +x by what +0.1 in x spans there: xmax grows by 0.1.
+  const auto further = projectToPicture(camera, w.faceCenters[1] + glm::dvec3(0.1, 0, 0), 400, 300);
+  const ClipBox out = draggedBox(box, 1, camera, 400, 300, *xmax, *further);
+  EXPECT_NEAR(out[1], 1.1, 1e-9);
+  for (std::size_t i : {0u, 2u, 3u, 4u, 5u}) EXPECT_EQ(out[i], box[i]);
+  // Far past the opposite face: it stops just short of it.
+  const auto beyond = projectToPicture(camera, w.faceCenters[1] - glm::dvec3(5.0, 0, 0), 400, 300);
+  const ClipBox flat = draggedBox(box, 1, camera, 400, 300, *xmax, *beyond);
+  EXPECT_GT(flat[1], flat[0]);
+  EXPECT_LT(flat[1] - flat[0], 0.01);
 }
