@@ -62,6 +62,8 @@ struct Options {
   QCommandLineOption deform{"deform", "Draw the model deformed by a nodal vector field (a displacement) times a "
                                       "scale: FIELD (largest displacement 10 % of the model's size) or FIELD:SCALE.",
                              "FIELD[:SCALE]"};
+  QCommandLineOption undeformed{"undeformed", "With --deform (or a deformed state): also the undeformed model's "
+                                              "element edges, in gray (surface pictures)."};
   QCommandLineOption noTriad{"no-triad", "Hide the orientation axes in the lower left corner."};
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
   QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
@@ -214,6 +216,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   } else {
     refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
     refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
+    refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
   }
   if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
   if (renderer == "raycast" || renderer == "vicp" || renderer == "vicp-exact")
@@ -290,6 +293,12 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   }
   applyExplicitCamera(p, o, scene.camera());
   applyVolumeOptions(p, o, scene);
+  if (p.isSet(o.undeformed)) {
+    if (!scene.deformation().shown) throw UsageError("--undeformed draws the undeformed outline of a deformed shape: add --deform FIELD");
+    DeformationLayer d = scene.deformation();
+    d.undeformedOutline = true;
+    scene.setDeformation(d);
+  }
   if (p.isSet(o.noSurface)) scene.setSurfaceShown(false);
   if (p.isSet(o.surfaceOpacity)) {
     bool ok = false;
@@ -347,7 +356,7 @@ int runRender(const QStringList& args) {
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   const Options o;
-  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.flat, o.output,
+  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "Scene.hpp"
 
+#include "FeatureEdges.hpp"
+
 #include <volpost/core/ResourceLimits.hpp>
 
 #include "Deformation.hpp"
@@ -555,6 +557,8 @@ void Scene::applyToStreamlines() {
 
 void Scene::initialize() {
   boundary_.initialize();
+  undeformedEdges_.initialize();
+  undeformedUploaded_ = nullptr;
   streamlineRenderer_.initialize();
   streamlinesUploaded_ = false;
   initialized_ = true;
@@ -572,6 +576,8 @@ void Scene::release() {
   streamlineRenderer_.release();
   streamlinesUploaded_ = false;
   boundary_.release();
+  undeformedEdges_.release();
+  undeformedUploaded_ = nullptr;
   initialized_ = false;
   changed_ = Changes{};
 }
@@ -695,6 +701,30 @@ void Scene::render(const RenderContext& target) {
   boundary_.setOpacity(float(state_.surfaceOpacity));
   boundary_.setSurfaceShown(state_.surfaceShown);  // hidden, the sections and iso-surfaces still show
   boundary_.renderOver(ctx);
+  if (state_.deformation.shown && state_.deformation.undeformedOutline && baseSession_ && session_ != baseSession_)
+    drawUndeformedOutline(ctx);
+}
+
+// The undeformed model's outline (its feature edges) in gray, hidden where the deformed
+// surface is in front, cut by the same planes: how far each part moved, at a glance.
+void Scene::drawUndeformedOutline(const RenderContext& ctx) {
+  if (undeformedUploaded_ != baseSession_.get()) {
+    undeformedEdges_.setLines(featureEdges(baseSession_->surface()), baseSession_->origin());
+    undeformedUploaded_ = baseSession_.get();
+  }
+  undeformedEdges_.setShowFaces(false);
+  undeformedEdges_.setShowEdges(true);
+  undeformedEdges_.edgeColor = {0.55f, 0.57f, 0.62f};
+  const double tolerance = 1e-5 * std::max(baseSession_->bounds().diagonal(), 1e-300);
+  undeformedEdges_.setClipPlanes(state_.volume.allClipPlanes(), tolerance);
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  RenderContext local = ctx;
+  local.origin = baseSession_->origin();
+  undeformedEdges_.render(local);
+  glDisable(GL_DEPTH_TEST);
 }
 
 // The element edges stay visible over the volume and end its rays: they are drawn into

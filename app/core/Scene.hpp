@@ -205,6 +205,7 @@ class Scene {
   bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
 
  private:
+  void drawUndeformedOutline(const RenderContext& ctx);
   void applyToBoundary();
   void applyToVolume();
   void applyToGridVolume(GridVolumeRenderer& renderer);
@@ -245,6 +246,8 @@ class Scene {
   } changed_;
 
   BoundaryRenderer boundary_;
+  SurfaceRenderer undeformedEdges_;            ///< the undeformed model's element edges (deformation's outline)
+  const ModelSession* undeformedUploaded_ = nullptr;
   StreamlineRenderer streamlineRenderer_;
   std::shared_ptr<const StreamlineResult> streamlineResult_;
   bool streamlinesUploaded_ = false;  ///< the renderer holds streamlineResult_ with the current style

@@ -275,7 +275,8 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["streamlines"] = jsonOf(streamlines);
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
-                        {"scale", deformation.scale ? json(*deformation.scale) : json("auto")}};
+                        {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},
+                        {"undeformedOutline", deformation.undeformedOutline}};
   json points = json::array();
   for (const glm::dvec3& p : probes) points.push_back(jsonOf(p));
   out["markers"] = {{"probes", points}, {"extremes", markExtremes}};
@@ -367,6 +368,8 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     r.object(*d, "deformation");
     if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");
     if (const json* x = r.find(*d, "field")) s.deformation.field = r.text(*x, "deformation.field");
+    if (const json* x = r.find(*d, "undeformedOutline"))
+      s.deformation.undeformedOutline = r.boolean(*x, "deformation.undeformedOutline");
     if (const json* x = r.find(*d, "scale")) {
       if (x->is_string() && x->get<std::string>() == "auto") s.deformation.scale.reset();
       else s.deformation.scale = r.number(*x, "deformation.scale");

@@ -85,6 +85,7 @@ struct DeformationLayer {
   bool shown = false;
   std::string field = "U";
   std::optional<double> scale;  ///< nullopt: automatic (the largest displacement is 10 % of the model's size)
+  bool undeformedOutline = false;  ///< the undeformed model's outline (feature edges) drawn too, in gray
   bool operator==(const DeformationLayer&) const = default;
 };
 

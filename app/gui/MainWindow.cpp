@@ -405,6 +405,15 @@ void MainWindow::buildDeformationActions(QMenu* view) {
   deformAction_->setCheckable(true);
   deformAction_->setShortcut(QKeySequence(Qt::Key_D));
   connect(deformAction_, &QAction::toggled, this, [this](bool on) { showDeformation(on, viewport_->scene().deformation().scale); });
+  undeformedAction_ = view->addAction("&Undeformed Outline");
+  undeformedAction_->setObjectName("undeformedAction");
+  undeformedAction_->setCheckable(true);
+  undeformedAction_->setToolTip("With the deformed shape: the undeformed model's element edges in gray");
+  connect(undeformedAction_, &QAction::toggled, this, [this](bool on) {
+    DeformationLayer d = viewport_->scene().deformation();
+    d.undeformedOutline = on;
+    changeScene([&](Scene& s) { s.setDeformation(d); });
+  });
   view->addAction("Deformation &Scale...", this, [this] {
     bool ok = false;
     const auto current = viewport_->scene().deformation().scale;
@@ -1136,6 +1145,7 @@ void MainWindow::syncControlsToScene() {
   check(legendAction_, state.legend);
   check(triadAction_, state.triad);
   check(deformAction_, state.deformation.shown);
+  check(undeformedAction_, state.deformation.undeformedOutline);
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);

@@ -136,6 +136,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* legendAction_ = nullptr;
   QAction* triadAction_ = nullptr;
   QAction* deformAction_ = nullptr;
+  QAction* undeformedAction_ = nullptr;
   QAction* streamlinesAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;

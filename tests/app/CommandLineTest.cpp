@@ -65,6 +65,13 @@ TEST(RenderCommand, ExplainsBadArguments) {
   EXPECT_EQ(badStep.exitCode, 2);  // an option this model cannot honour is a usage error
   EXPECT_NE(badStep.output.find("step 3 does not exist"), std::string::npos) << badStep.output;
   EXPECT_EQ(runVolpost("render " + model).exitCode, 2);
+  const auto outlineAlone = runVolpost("render " + model + " --field S.mises --undeformed -o /tmp/x.png");
+  EXPECT_EQ(outlineAlone.exitCode, 2);
+  EXPECT_NE(outlineAlone.output.find("add --deform"), std::string::npos) << outlineAlone.output;
+  const auto outlineVolume =
+      runVolpost("render " + model + " --field S.mises --deform U --undeformed --renderer raycast -o /tmp/x.png");
+  EXPECT_EQ(outlineVolume.exitCode, 2);
+  EXPECT_NE(outlineVolume.output.find("surface pictures only"), std::string::npos) << outlineVolume.output;
   const auto unwritable = runVolpost("render " + model + " -o /no/such/folder/x.png");
   EXPECT_EQ(unwritable.exitCode, 1);
   EXPECT_NE(unwritable.output.find("/no/such/folder does not exist"), std::string::npos) << unwritable.output;

@@ -2,9 +2,14 @@
 // The clip plane's widget without a window: the outline where the plane cuts the box, the
 // hit test of the handle, and what dragging its knob and its shaft does to the plane.
 #include "core/BoxWidget.hpp"
+#include "core/FeatureEdges.hpp"
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
 #include "core/VolumeSpecs.hpp"
+
+#include "support/TetGrid.hpp"
+
+#include <volpost/core/BoundarySurface.hpp>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -176,4 +181,20 @@ TEST(BoxWidget, DraggingAFaceKnobMovesThatFaceOnlyAndNeverPastTheOpposite) {
   const ClipBox flat = draggedBox(box, 1, camera, 400, 300, *xmax, *beyond);
   EXPECT_GT(flat[1], flat[0]);
   EXPECT_LT(flat[1] - flat[0], 0.01);
+}
+
+// ---- the undeformed outline's edges ----------------------------------------------------
+
+TEST(FeatureEdges, ABoxOutlineIsItsTwelveEdgesNotTheFacesDiagonals) {
+  const Mesh grid = test::tetGrid(3, 2, 2);
+  const auto ends = featureEdges(extractBoundary(grid));
+  EXPECT_EQ(ends.size(), 2u * 4u * (3u + 2u + 2u)) << "each box edge in its grid segments";
+  for (std::size_t i = 0; i + 1 < ends.size(); i += 2) {  // along one axis, on two faces of the box
+    const glm::dvec3 d = glm::abs(ends[i + 1] - ends[i]);
+    EXPECT_EQ(int(d.x > 0) + int(d.y > 0) + int(d.z > 0), 1);
+    const glm::dvec3 p = ends[i];
+    const int onFaces = int(p.x == 0 || p.x == 3) + int(p.y == 0 || p.y == 2) + int(p.z == 0 || p.z == 2);
+    EXPECT_GE(onFaces, 2);
+  }
+  EXPECT_TRUE(featureEdges(extractBoundary(Mesh())).empty());
 }

@@ -347,6 +347,40 @@ TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
   EXPECT_EQ(scene.deformationScale(), 0.0);
 }
 
+// The undeformed outline: the undeformed bar's twelve feature edges in gray over the
+// deformed picture (visible where the stretched bar no longer covers them), kept in the
+// state file; without a deformation nothing changes.
+TEST(Scene, TheUndeformedOutlineIsDrawnUnderTheDeformedShapeAndSaved) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setShowEdges(false);
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  scene.camera().setView(StandardView::MinusY);  // the bar's side: x to the right, stretched along it
+  scene.fitCamera();
+  const QImage undeformed = renderSceneImage(scene, 160, 64).picture;
+  DeformationLayer d{true, "U", std::nullopt};
+  d.undeformedOutline = true;
+  scene.setDeformation(DeformationLayer{d.shown, d.field, d.scale});
+  const QImage deformed = renderSceneImage(scene, 160, 64).picture;
+  scene.setDeformation(d);
+  const QImage outlined = renderSceneImage(scene, 160, 64).picture;
+  int changed = 0, gray = 0;
+  for (int y = 0; y < outlined.height(); ++y)
+    for (int x = 0; x < outlined.width(); ++x) {
+      const QRgb a = deformed.pixel(x, y), b = outlined.pixel(x, y);
+      if (a == b) continue;
+      ++changed;
+      gray += std::abs(qRed(b) - qBlue(b)) < 40 && std::abs(qRed(b) - qGreen(b)) < 40;
+    }
+  EXPECT_GT(changed, 20) << "the outline shows";
+  EXPECT_GT(gray, changed / 2) << "in gray";
+  EXPECT_NE(scene.state().toJson().find("\"undeformedOutline\": true"), std::string::npos);
+  scene.setDeformation(DeformationLayer{false, "U", std::nullopt, true});
+  EXPECT_TRUE(renderSceneImage(scene, 160, 64).picture == undeformed) << "no deformation: no outline";
+}
+
 // Ticks for the legend and charts: nice values inside the range; a range far from zero
 // (where adding the step to a tick does not move it) ends with a few ticks, not a hang.
 TEST(Legend, NiceTicksAreBoundedEvenFarFromZero) {

@@ -139,6 +139,22 @@ void SurfaceRenderer::setTriangles(const std::vector<glm::dvec3>& corners, const
   gl::check("SurfaceRenderer::setTriangles");
 }
 
+void SurfaceRenderer::setLines(const std::vector<glm::dvec3>& endpoints, const glm::dvec3& origin) {
+  origin_ = origin;
+  triangleVertices_ = 0;
+  std::vector<float> edgeData;
+  edgeData.reserve(endpoints.size() * 3);
+  for (const glm::dvec3& p : endpoints) {
+    const glm::vec3 q(p - origin);
+    edgeData.insert(edgeData.end(), {q.x, q.y, q.z});
+  }
+  edgeVertices_ = GLsizei(endpoints.size() / 2 * 2);
+  glNamedBufferData(edgeVbo_.id(), GLsizeiptr(std::max<std::size_t>(edgeData.size(), 3) * sizeof(float)),
+                    edgeData.empty() ? nullptr : edgeData.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 3 * sizeof(float));
+  gl::check("SurfaceRenderer::setLines");
+}
+
 void SurfaceRenderer::setScalars(FieldLocation location, std::span<const double> values, double min, double max) {
   std::vector<float> data(values.size());
   for (std::size_t i = 0; i < values.size(); ++i)
@@ -159,7 +175,7 @@ void SurfaceRenderer::setColorMap(const ColorMap& map) {
 }
 
 void SurfaceRenderer::render(const RenderContext& ctx) {
-  if (triangleVertices_ == 0) return;
+  if (triangleVertices_ == 0 && edgeVertices_ == 0) return;
   const glm::mat4 view(ctx.camera.viewMatrix(ctx.origin));
   const glm::mat4 proj(ctx.camera.projectionMatrix(ctx.aspect()));
   const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;

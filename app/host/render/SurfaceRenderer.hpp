@@ -29,6 +29,9 @@ class SurfaceRenderer : public Renderer {
   /// Uploads triangles given by their corners (model coordinates, three per triangle; a
   /// section cut) without edges. Vertex i takes value i of setScalars(FieldLocation::Node, ...).
   void setTriangles(const std::vector<glm::dvec3>& corners, const glm::dvec3& origin);
+  /// Uploads line segments only (two endpoints each, model coordinates; no faces), drawn
+  /// as edges in edgeColor: an outline.
+  void setLines(const std::vector<glm::dvec3>& endpoints, const glm::dvec3& origin);
   /// Fragments on the cut side of any plane are not drawn; `tolerance` (model units) keeps
   /// geometry lying on a plane (a section) from being cut by its own plane.
   void setClipPlanes(std::vector<ClipPlane> planes, double tolerance = 0.0) {
