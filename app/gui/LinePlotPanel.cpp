@@ -13,6 +13,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QPainter>
 #include <QPushButton>
 #include <QSettings>
@@ -64,6 +65,11 @@ LinePlotPanel::LinePlotPanel(SceneGetter scene, QWidget* parent) : QWidget(paren
   form->addRow("From", from_);
   form->addRow("To", to_);
   form->addRow("Samples", count_);
+  quantities_ = new QListWidget(this);
+  quantities_->setObjectName("lineQuantities");
+  quantities_->setToolTip("Check the quantities to plot together; none checked: the shown one");
+  quantities_->setMaximumHeight(90);
+  form->addRow("Quantities", quantities_);
   layout->addLayout(form);
   auto* buttons = new QHBoxLayout;
   const auto button = [&](const QString& text, const char* name, auto slot) {
@@ -90,6 +96,42 @@ void LinePlotPanel::setEnds(const glm::dvec3& from, const glm::dvec3& to) {
   to_->setText(pointText(to));
 }
 
+void LinePlotPanel::refreshQuantities() {
+  const Scene& scene = scene_();
+  // Which model is listed: its address and path (a new model may reuse an address).
+  const ModelSession* session = scene.baseSession();
+  const std::string listed = session ? std::to_string(reinterpret_cast<std::uintptr_t>(session)) + " " +
+                                           session->model().sourcePath
+                                     : std::string();
+  if (listed == listedModel_) return;
+  const std::vector<std::string> checked = checkedQuantities();
+  quantities_->clear();
+  listedModel_ = listed;
+  if (!session) return;
+  for (const Quantity& q : session->quantities()) {
+    auto* item = new QListWidgetItem(QString::fromStdString(q.displayName() + "  (" + q.key() + ")"), quantities_);
+    item->setData(Qt::UserRole, QString::fromStdString(q.key()));
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(std::find(checked.begin(), checked.end(), q.key()) != checked.end() ? Qt::Checked : Qt::Unchecked);
+  }
+}
+
+std::vector<std::string> LinePlotPanel::checkedQuantities() const {
+  std::vector<std::string> keys;
+  for (int i = 0; i < quantities_->count(); ++i)
+    if (quantities_->item(i)->checkState() == Qt::Checked)
+      keys.push_back(quantities_->item(i)->data(Qt::UserRole).toString().toStdString());
+  return keys;
+}
+
+void LinePlotPanel::setQuantities(const std::vector<std::string>& keys) {
+  refreshQuantities();
+  for (int i = 0; i < quantities_->count(); ++i) {
+    const std::string key = quantities_->item(i)->data(Qt::UserRole).toString().toStdString();
+    quantities_->item(i)->setCheckState(std::find(keys.begin(), keys.end(), key) != keys.end() ? Qt::Checked : Qt::Unchecked);
+  }
+}
+
 bool LinePlotPanel::useLastProbes() {
   const auto& probes = scene_().probes();
   if (probes.size() < 2) {
@@ -108,13 +150,15 @@ bool LinePlotPanel::plot() {
     emit message(QString("Plot Over Line: '%1' and '%2' must both be X, Y, Z").arg(from_->text(), to_->text()));
     return false;
   }
-  if (!scene.session() || !scene.view()) {
-    emit message("Plot Over Line: choose a result to plot first");
+  refreshQuantities();
+  std::vector<std::string> keys = checkedQuantities();
+  if (keys.empty() && scene.view()) keys.push_back(scene.view()->quantity.key());
+  if (!scene.session() || keys.empty()) {
+    emit message("Plot Over Line: choose a result to plot first (or check quantities in the panel)");
     return false;
   }
   try {
-    samples_ = sampleLine(*scene.session(), *a, *b, std::size_t(count_->value()), {scene.view()->quantity.key()},
-                          scene.step());
+    samples_ = sampleLine(*scene.session(), *a, *b, std::size_t(count_->value()), keys, scene.step());
   } catch (const std::exception& e) {
     emit message(QString("Plot Over Line: %1").arg(e.what()));
     return false;

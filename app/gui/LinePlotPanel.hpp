@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// View > Plot Over Line: the shown quantity along a segment typed or taken from the last
-// two probed points, drawn as a chart (the same as `volpost plot`), exportable as CSV and
-// PNG.
+// View > Plot Over Line: quantities along a segment typed or taken from the last two
+// probed points, drawn as a chart (the same as `volpost plot`), exportable as CSV and PNG.
+// The quantities are those checked in the panel's list, or the shown one when none is.
 #pragma once
 
 #include "../core/LineSampling.hpp"
@@ -11,8 +11,11 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 class QLineEdit;
+class QListWidget;
 class QSpinBox;
 
 namespace volpost::app {
@@ -32,11 +35,17 @@ class LinePlotPanel : public QWidget {
   bool useLastProbes();
   const std::optional<LineSamples>& samples() const { return samples_; }
   void setEnds(const glm::dvec3& from, const glm::dvec3& to);
+  /// Checks the quantities (written forms, "S.mises") to plot, unchecks the others; an
+  /// empty list plots the shown quantity. Unknown keys are left out.
+  void setQuantities(const std::vector<std::string>& keys);
 
  signals:
   void message(const QString& text);
 
  private:
+  /// Lists the model's quantities (when the model changed), keeping what was checked.
+  void refreshQuantities();
+  std::vector<std::string> checkedQuantities() const;
   void exportCsv();
   void exportPicture();
   /// Asks where (a save dialog), then writes; a failure is said in the status bar.
@@ -46,6 +55,8 @@ class LinePlotPanel : public QWidget {
   QLineEdit* from_ = nullptr;
   QLineEdit* to_ = nullptr;
   QSpinBox* count_ = nullptr;
+  QListWidget* quantities_ = nullptr;
+  std::string listedModel_;  ///< the model whose quantities are listed (address and path)
   QWidget* chart_ = nullptr;
   std::optional<LineSamples> samples_;
 };

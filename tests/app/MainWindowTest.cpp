@@ -24,6 +24,7 @@
 #include <QLabel>
 #include <QTextBrowser>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QTableWidget>
 #include <QMouseEvent>
 #include <QMenu>
@@ -649,6 +650,18 @@ class MainWindowTest : public QObject {
     const LineSamples& s = *panel->samples();
     QCOMPARE(s.keys, std::vector<std::string>{"S.xx"});
     QVERIFY(std::abs(s.value(s.points.size() / 2, 0) - 100.0) < 0.5);
+    // Several quantities at once: checked in the panel's list, in the model's order.
+    auto* list = window_->findChild<QListWidget*>("lineQuantities");
+    QVERIFY(list && list->count() > 2);
+    for (int i = 0; i < list->count(); ++i) {
+      const QString key = list->item(i)->data(Qt::UserRole).toString();
+      list->item(i)->setCheckState(key == "S.xx" || key == "U.x" ? Qt::Checked : Qt::Unchecked);
+    }
+    QTest::mouseClick(window_->findChild<QPushButton*>("linePlot"), Qt::LeftButton);
+    QCOMPARE(panel->samples()->keys, (std::vector<std::string>{"U.x", "S.xx"}));
+    QVERIFY(std::abs(panel->samples()->value(s.points.size() / 2, 1) - 100.0) < 0.5);
+    if (const char* shot = std::getenv("VOLPOST_PLOT_SCREENSHOT")) window_->grab().save(shot);
+    panel->setQuantities({});  // back to the shown quantity
     window_->findChild<QLineEdit*>("lineTo")->setText("nonsense");
     QVERIFY(!panel->plot());
     QVERIFY(window_->statusBar()->currentMessage().contains("X, Y, Z"));
