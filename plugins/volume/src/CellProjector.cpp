@@ -20,16 +20,12 @@ void CellProjector::initialize() {
   framebuffer_ = gl::createFramebuffer();
   emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
   attachedImage_ = 0;
-  frameKey_ = {};
-  refining_ = false;
+  quick_.release();
   gl::check("CellProjector::initialize");
 }
 
 void CellProjector::release() {
-  quickImage_.reset();
-  quickWidth_ = quickHeight_ = 0;
-  frameKey_ = {};
-  refining_ = false;
+  quick_.release();
   order_.reset();
   framebuffer_.reset();
   emptyVertexArray_.reset();
@@ -104,7 +100,7 @@ double CellProjector::drawWhole(const RenderContext& ctx, GLuint image) {
   endDrawing();
   if (!volume_.asynchronous()) return 0.0;
   glFinish();  // timed for sizing quick frames: the window's path only
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return millisecondsSince(start);
 }
 
 bool CellProjector::refine(const RenderContext& ctx) {
@@ -116,36 +112,20 @@ bool CellProjector::refine(const RenderContext& ctx) {
     const std::size_t count = std::min(tetsPerRun_, total - drawnTets_);
     drawRun(drawnTets_, count);
     glFinish();
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - runStart).count();
+    const double ms = millisecondsSince(runStart);
     refineMs_ += ms;
     drawnTets_ += count;
-    const double factor = std::clamp(sliceMs_ / std::max(ms, 0.1), 0.25, 4.0);
+    const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
     tetsPerRun_ = std::clamp<std::size_t>(std::size_t(double(tetsPerRun_) * factor), 64, std::size_t(1) << 26);
     if (drawnTets_ >= total) break;
-    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >= sliceMs_) {
+    if (millisecondsSince(start) >= quick_.sliceMs()) {
       endDrawing();
       return false;
     }
   }
   endDrawing();
-  if (ctx.width > 0 && ctx.height > 0) msPerPixel_ = refineMs_ / (double(ctx.width) * double(ctx.height));
+  quick_.measured(refineMs_, ctx.width, ctx.height);
   return true;
-}
-
-int CellProjector::reductionFor(int width, int height) const {
-  if (msPerPixel_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
-  const double fullMs = msPerPixel_ * double(width) * double(height);
-  return std::clamp(int(std::ceil(std::sqrt(fullMs / quickFrameMs_))), 1, 16);
-}
-
-void CellProjector::ensureQuickImage(int width, int height) {
-  if (quickImage_ && width == quickWidth_ && height == quickHeight_) return;
-  quickImage_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(quickImage_.id(), 1, GL_RGBA32F, width, height);
-  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  quickWidth_ = width;
-  quickHeight_ = height;
 }
 
 void CellProjector::render(const RenderContext& ctx) {
@@ -153,55 +133,38 @@ void CellProjector::render(const RenderContext& ctx) {
   volume_.prepare(ctx);
   updateSorter();
   if (!volume_.asynchronous()) {
-    refining_ = false;
-    frameKey_ = {};
+    quick_.forget();
     sortFor(ctx);
     drawWhole(ctx, volume_.image());
     volume_.compositeOver(ctx);
     gl::check("CellProjector::render");
     return;
   }
-  FrameKey key;
-  key.viewProjection = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix();
-  key.width = ctx.width;
-  key.height = ctx.height;
-  key.revision = volume_.revision();
-  key.meshRevision = volume_.meshRevision();
-  key.depthTexture = ctx.depthTexture;
-  key.method = method_;
-  if (!(key == frameKey_)) {  // a new view or scene: sorted once, a quick frame now, the full one in runs
-    frameKey_ = key;
-    refining_ = false;
+  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision(), int(method_))) {
+    // A new view or scene: sorted once, a quick frame now, the full one in runs.
     sortFor(ctx);
-    reduction_ = reductionFor(ctx.width, ctx.height);
-    if (reduction_ == 1) {
-      const double ms = drawWhole(ctx, volume_.image());
-      msPerPixel_ = ms / (double(ctx.width) * double(ctx.height));
+    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
+    if (reduction == 1) {
+      quick_.measured(drawWhole(ctx, volume_.image()), ctx.width, ctx.height);
     } else {
-      RenderContext quick = ctx;
-      quick.width = std::max(1, ctx.width / reduction_);
-      quick.height = std::max(1, ctx.height / reduction_);
-      quick.depthTexture = 0;  // one depth per full-size pixel: not for the reduced image
-      ensureQuickImage(quick.width, quick.height);
-      const double ms = drawWhole(quick, quickImage_.id());
-      if (msPerPixel_ <= 0.0) msPerPixel_ = ms / (double(quick.width) * double(quick.height));
+      const RenderContext quick = quick_.quickContext(ctx, reduction);
+      quick_.measured(drawWhole(quick, quick_.quickImage()), quick.width, quick.height);
       beginDrawing(ctx, volume_.image(), true);  // the full frame starts empty
       endDrawing();
       drawnTets_ = 0;
       refineMs_ = 0.0;
-      refining_ = true;
+      quick_.startRefining(reduction);
     }
-  } else if (refining_ && refine(ctx)) {
-    refining_ = false;
+  } else if (quick_.refining() && refine(ctx)) {
+    quick_.doneRefining();
   }
-  if (refining_) volume_.compositeOver(ctx, quickImage_.id());
-  else volume_.compositeOver(ctx);
+  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
   gl::check("CellProjector::render");
 }
 
 VolumeStats CellProjector::stats() const {
   VolumeStats s = volume_.stats();
-  s.gpuBytes += lastOrder_.backToFront.size() * 4 + std::size_t(quickWidth_) * std::size_t(quickHeight_) * 16;
+  s.gpuBytes += lastOrder_.backToFront.size() * 4 + quick_.bytes();
   s.meshBytes += sortMesh_.cellCount() * 4;  // the sorted index list
   s.lastSortMs = lastOrder_.milliseconds;
   return s;

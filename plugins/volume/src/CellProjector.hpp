@@ -12,6 +12,7 @@
 // image as the synchronous path.
 #pragma once
 
+#include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 #include "VisibilityOrder.hpp"
 
@@ -31,25 +32,13 @@ class CellProjector final : public TetVolumeRenderer {
 
   void setOrderMethod(OrderMethod method) { method_ = method; }
   const VisibilityOrder& lastOrder() const { return lastOrder_; }
-  bool hasPendingWork() const override { return volume_.hasPendingWork() || refining_; }
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
   /// The shown image's reduction (1: full resolution; n: one pixel per n x n).
-  int shownReduction() const { return refining_ ? reduction_ : 1; }
+  int shownReduction() const { return quick_.shownReduction(); }
   /// What a quick frame and one slice of the full frame may take (asynchronous updates).
-  void setFrameBudget(double quickMs, double sliceMs) {
-    quickFrameMs_ = quickMs;
-    sliceMs_ = sliceMs;
-  }
+  void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
 
  private:
-  struct FrameKey {
-    glm::dmat4 viewProjection{0.0};
-    int width = 0, height = 0;
-    std::uint64_t revision = 0;
-    std::size_t meshRevision = 0;
-    GLuint depthTexture = 0;
-    OrderMethod method = OrderMethod::Mpvonc;
-    bool operator==(const FrameKey&) const = default;
-  };
   void updateSorter();
   /// Sorts the tets for ctx's view and uploads the order.
   void sortFor(const RenderContext& ctx);
@@ -60,10 +49,8 @@ class CellProjector final : public TetVolumeRenderer {
   void endDrawing();
   /// Draws the whole order into `image`; returns the milliseconds it took (GPU included).
   double drawWhole(const RenderContext& ctx, GLuint image);
-  /// Advances the full frame for about sliceMs_; true when it is complete.
+  /// Advances the full frame for about the slice's time; true when it is complete.
   bool refine(const RenderContext& ctx);
-  void ensureQuickImage(int width, int height);
-  int reductionFor(int width, int height) const;
 
   OrderMethod method_;
   Mesh sortMesh_;  ///< the GPU's tets (oriented, degenerate ones left out) in model coordinates
@@ -74,17 +61,10 @@ class CellProjector final : public TetVolumeRenderer {
   gl::Framebuffer framebuffer_;
   gl::VertexArray emptyVertexArray_;
   GLuint attachedImage_ = 0;
-  gl::Texture quickImage_;
-  int quickWidth_ = 0, quickHeight_ = 0;
-  // Asynchronous updates.
-  FrameKey frameKey_;
-  bool refining_ = false;
-  int reduction_ = 1;
+  QuickFrames quick_;               ///< asynchronous updates: the quick frame and the refinement's state
   std::size_t drawnTets_ = 0;       ///< of the full frame being refined
-  std::size_t tetsPerRun_ = 4096;   ///< adapted to sliceMs_
+  std::size_t tetsPerRun_ = 4096;   ///< adapted to the slice's time
   double refineMs_ = 0.0;           ///< the full frame's drawing so far
-  double quickFrameMs_ = 40.0, sliceMs_ = 30.0;
-  double msPerPixel_ = 0.0;         ///< measured on complete frames, for sizing quick frames
 };
 
 }  // namespace volpost::volume

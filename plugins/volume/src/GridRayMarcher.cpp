@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -28,35 +29,90 @@ void GridRayMarcher::ensureResumeImage(int width, int height) {
 void GridRayMarcher::release() {
   resume_.reset();
   resumeWidth_ = resumeHeight_ = 0;
+  quick_.release();
   volume_.release();
+}
+
+int GridRayMarcher::passesFor() const {
+  const Bounds box = volume_.grid().bounds();
+  const double steps = glm::length(box.size()) / marchStep() + 4.0;
+  return int(std::min(std::ceil(steps / kStepsPerPass), 1e6));
+}
+
+GLuint GridRayMarcher::beginMarch(const RenderContext& ctx, GLuint image) {
+  const GLuint p = volume_.program({"volume/gridmarch.comp"});
+  glUseProgram(p);
+  volume_.setSegmentUniforms(p, ctx);
+  glProgramUniform1f(p, glGetUniformLocation(p, "marchStep"), float(marchStep()));
+  glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), kStepsPerPass);
+  volume_.bindSegmentResources(ctx);
+  ensureResumeImage(ctx.width, ctx.height);
+  glBindImageTexture(0, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(1, resume_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
+  return p;
+}
+
+void GridRayMarcher::marchPass(const RenderContext& ctx, GLuint program, int pass) {
+  glProgramUniform1i(program, glGetUniformLocation(program, "firstPass"), pass == 0);
+  glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+double GridRayMarcher::renderWhole(const RenderContext& ctx, GLuint image) {
+  const auto start = std::chrono::steady_clock::now();
+  const GLuint p = beginMarch(ctx, image);
+  const int passes = passesFor();
+  for (int pass = 0; pass < passes; ++pass) marchPass(ctx, p, pass);
+  lastPasses_ = passes;
+  if (!volume_.asynchronous()) return 0.0;
+  glFinish();  // timed for sizing quick frames: the window's path only
+  return millisecondsSince(start);
+}
+
+bool GridRayMarcher::refine(const RenderContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const GLuint p = beginMarch(ctx, volume_.image());
+  const int passes = passesFor();
+  while (refinePass_ < passes) {
+    marchPass(ctx, p, refinePass_++);
+    glFinish();
+    if (refinePass_ < passes && millisecondsSince(start) >= quick_.sliceMs()) {
+      refineMs_ += millisecondsSince(start);
+      return false;
+    }
+  }
+  refineMs_ += millisecondsSince(start);
+  lastPasses_ = passes;
+  quick_.measured(refineMs_, ctx.width, ctx.height);
+  return true;
 }
 
 void GridRayMarcher::render(const RenderContext& ctx) {
   if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
   volume_.prepare(ctx);
-  const GLuint p = volume_.program({"volume/gridmarch.comp"});
-  glUseProgram(p);
-  volume_.setSegmentUniforms(p, ctx);
-  const auto u = [p](const char* n) { return glGetUniformLocation(p, n); };
-  const double step = marchStep();
-  glProgramUniform1f(p, u("marchStep"), float(step));
-  glProgramUniform1i(p, u("stepsPerPass"), kStepsPerPass);
-  volume_.bindSegmentResources(ctx);
-  ensureResumeImage(ctx.width, ctx.height);
-  glBindImageTexture(0, volume_.image(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(1, resume_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32F);
-  // Enough passes for the longest ray inside the grid (its diagonal) at this step.
-  const Bounds box = volume_.grid().bounds();
-  const double steps = glm::length(box.size()) / step + 4.0;
-  const int passes = int(std::min(std::ceil(steps / kStepsPerPass), 1e6));
-  for (int pass = 0; pass < passes; ++pass) {
-    glProgramUniform1i(p, u("firstPass"), pass == 0);
-    glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT);
+  if (!volume_.asynchronous()) {
+    quick_.forget();
+    renderWhole(ctx, volume_.image());
+    volume_.compositeOver(ctx);
+    gl::check("GridRayMarcher::render");
+    return;
   }
-  lastPasses_ = passes;
-  volume_.compositeOver(ctx);
+  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision())) {
+    // A new view or scene: a quick frame now, the full one in slices of passes.
+    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
+    if (reduction == 1) {
+      quick_.measured(renderWhole(ctx, volume_.image()), ctx.width, ctx.height);
+    } else {
+      const RenderContext quick = quick_.quickContext(ctx, reduction);
+      quick_.measured(renderWhole(quick, quick_.quickImage()), quick.width, quick.height);
+      refinePass_ = 0;
+      refineMs_ = 0.0;
+      quick_.startRefining(reduction);
+    }
+  } else if (quick_.refining() && refine(ctx)) {
+    quick_.doneRefining();
+  }
+  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
   gl::check("GridRayMarcher::render");
 }
 

@@ -5,9 +5,12 @@
 // step is the trilinear interpolation of the 8 surrounding points (in float, in the
 // shader), and each piece between steps is integrated with the scalar linear along it, in
 // the chosen mode (exact linear segments, pre-integrated, sampled), iso-surfaces shaded by
-// the trilinear gradient. The float image is composited over the target.
+// the trilinear gradient. The float image is composited over the target. In the window a
+// changed view first gets a quick reduced frame, then the full one in slices of passes
+// (QuickFrames).
 #pragma once
 
+#include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 
 namespace volpost::volume {
@@ -18,19 +21,42 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
   void setShading(bool on) override { volume_.setShading(on); }
-  void initialize() override { volume_.initialize(); }
+  void initialize() override {
+    volume_.initialize();
+    quick_.release();
+  }
   void release() override;
   void render(const RenderContext& ctx) override;
   /// The step along the ray the next frame uses, model units.
   double marchStep() const { return volume_.gridStep(); }
   /// Compute passes the last frame took (each at most kStepsPerPass steps per ray).
   int lastPasses() const { return lastPasses_; }
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
+  int shownReduction() const { return quick_.shownReduction(); }
+  void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
+  VolumeStats stats() const override {
+    VolumeStats s = volume_.stats();
+    s.gpuBytes += std::size_t(resumeWidth_) * std::size_t(resumeHeight_) * 8 + quick_.bytes();
+    return s;
+  }
   /// Steps per ray in one pass: with the ~14 loop iterations a step costs in the shader,
   /// far below the 65535 loop iterations llvmpipe allows an invocation.
   static constexpr int kStepsPerPass = 1024;
 
  private:
   void ensureResumeImage(int width, int height);
+  /// Passes a frame of ctx needs: enough for the longest ray inside the grid.
+  int passesFor() const;
+  /// Sets up the march's program for ctx into `image`; returns the program.
+  GLuint beginMarch(const RenderContext& ctx, GLuint image);
+  void marchPass(const RenderContext& ctx, GLuint program, int pass);
+  /// The whole frame into `image`; returns the milliseconds it took (asynchronous path only).
+  double renderWhole(const RenderContext& ctx, GLuint image);
+  /// Advances the full frame by passes for about the slice's time; true when complete.
+  bool refine(const RenderContext& ctx);
+  QuickFrames quick_;
+  int refinePass_ = 0;
+  double refineMs_ = 0.0;
   gl::Texture resume_;
   int resumeWidth_ = 0, resumeHeight_ = 0;
   int lastPasses_ = 0;

@@ -14,10 +14,6 @@ namespace {
 
 constexpr std::size_t kRayStateBytes = 16;  // one uvec4 per pixel (raycast.comp)
 
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 void RayCaster::initialize() {
@@ -26,10 +22,7 @@ void RayCaster::initialize() {
   glNamedBufferStorage(counters_.id(), 2 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   rayState_.reset();
   rayStateBytes_ = 0;
-  quickImage_.reset();
-  quickWidth_ = quickHeight_ = 0;
-  frameKey_ = {};
-  refining_ = false;
+  quick_.release();
 }
 
 void RayCaster::release() {
@@ -37,10 +30,7 @@ void RayCaster::release() {
   counters_.reset();
   rayState_.reset();
   rayStateBytes_ = 0;
-  quickImage_.reset();
-  quickWidth_ = quickHeight_ = 0;
-  frameKey_ = {};
-  refining_ = false;
+  quick_.release();
 }
 
 void RayCaster::setStepsPerPass(int steps) {
@@ -50,7 +40,7 @@ void RayCaster::setStepsPerPass(int steps) {
 
 VolumeStats RayCaster::stats() const {
   VolumeStats s = volume_.stats();
-  s.gpuBytes += rayStateBytes_ + 2 * sizeof(GLuint) + std::size_t(quickWidth_) * std::size_t(quickHeight_) * 16;
+  s.gpuBytes += rayStateBytes_ + 2 * sizeof(GLuint) + quick_.bytes();
   return s;
 }
 
@@ -100,8 +90,7 @@ std::size_t RayCaster::dispatch(const RenderContext& ctx, GLuint image, int firs
 
 void RayCaster::frameDone(int width, int height) {
   lastFrame_ = building_;
-  const double rays = double(width) * double(height);
-  if (rays > 0.0 && lastFrame_.milliseconds > 0.0) msPerRay_ = lastFrame_.milliseconds / rays;
+  quick_.measured(lastFrame_.milliseconds, width, height);
 }
 
 void RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
@@ -116,7 +105,7 @@ void RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
     while (dispatch(ctx, image, first, rows, stepsPerPass_) > 0) {
     }
   }
-  building_.milliseconds = msSince(start);
+  building_.milliseconds = millisecondsSince(start);
   frameDone(ctx.width, ctx.height);
 }
 
@@ -125,7 +114,6 @@ void RayCaster::beginRefining(const RenderContext& ctx) {
   refineFirstRow_ = 0;
   refineRows_ = std::min(bandRows(ctx.width, ctx.height), ctx.height);
   beginBand(ctx.width, refineRows_);
-  refining_ = true;
 }
 
 bool RayCaster::refine(const RenderContext& ctx) {
@@ -133,10 +121,10 @@ bool RayCaster::refine(const RenderContext& ctx) {
   for (;;) {
     const auto passStart = std::chrono::steady_clock::now();
     const std::size_t unfinished = dispatch(ctx, volume_.image(), refineFirstRow_, refineRows_, sliceSteps_);
-    const double ms = msSince(passStart);
+    const double ms = millisecondsSince(passStart);
     building_.milliseconds += ms;
     // Tets per dispatch follow the measured time (a dispatch costs about its steps).
-    const double factor = std::clamp(sliceMs_ / std::max(ms, 0.1), 0.25, 4.0);
+    const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
     sliceSteps_ = std::clamp(int(sliceSteps_ * factor), 16, stepsPerPass_);
     if (unfinished == 0) {
       const int bandRowsNow = refineRows_;
@@ -148,64 +136,35 @@ bool RayCaster::refine(const RenderContext& ctx) {
       refineRows_ = std::min(bandRowsNow, ctx.height - refineFirstRow_);
       beginBand(ctx.width, refineRows_);
     }
-    if (msSince(start) >= sliceMs_) return false;
+    if (millisecondsSince(start) >= quick_.sliceMs()) return false;
   }
-}
-
-int RayCaster::reductionFor(int width, int height) const {
-  if (msPerRay_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
-  const double fullMs = msPerRay_ * double(width) * double(height);
-  return std::clamp(int(std::ceil(std::sqrt(fullMs / quickFrameMs_))), 1, 16);
-}
-
-void RayCaster::ensureQuickImage(int width, int height) {
-  if (quickImage_ && width == quickWidth_ && height == quickHeight_) return;
-  quickImage_ = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(quickImage_.id(), 1, GL_RGBA32F, width, height);
-  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(quickImage_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  quickWidth_ = width;
-  quickHeight_ = height;
 }
 
 void RayCaster::render(const RenderContext& ctx) {
   if (!volume_.initialized() || !volume_.hasTets() || ctx.width <= 0 || ctx.height <= 0) return;
   volume_.prepare(ctx);
   if (!volume_.asynchronous()) {
-    refining_ = false;
-    frameKey_ = {};
+    quick_.forget();
     renderWhole(ctx, volume_.image());
     volume_.compositeOver(ctx);
     gl::check("RayCaster::render");
     return;
   }
-  FrameKey key;
-  key.viewProjection = ctx.camera.projectionMatrix(ctx.aspect()) * ctx.camera.viewMatrix();
-  key.width = ctx.width;
-  key.height = ctx.height;
-  key.revision = volume_.revision();
-  key.meshRevision = volume_.meshRevision();
-  key.depthTexture = ctx.depthTexture;
-  if (!(key == frameKey_)) {  // a new view or scene: a quick frame now, the full one in slices
-    frameKey_ = key;
-    refining_ = false;
-    reduction_ = reductionFor(ctx.width, ctx.height);
-    if (reduction_ == 1) {
+  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision())) {
+    // A new view or scene: a quick frame now, the full one in slices.
+    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
+    if (reduction == 1) {
       renderWhole(ctx, volume_.image());
     } else {
-      RenderContext quick = ctx;
-      quick.width = std::max(1, ctx.width / reduction_);
-      quick.height = std::max(1, ctx.height / reduction_);
-      quick.depthTexture = 0;  // one depth per full-size pixel: not for the reduced rays
-      ensureQuickImage(quick.width, quick.height);
-      renderWhole(quick, quickImage_.id());
+      const RenderContext quick = quick_.quickContext(ctx, reduction);  // sizes the quick image: first
+      renderWhole(quick, quick_.quickImage());
       beginRefining(ctx);
+      quick_.startRefining(reduction);
     }
-  } else if (refining_ && refine(ctx)) {
-    refining_ = false;
+  } else if (quick_.refining() && refine(ctx)) {
+    quick_.doneRefining();
   }
-  if (refining_) volume_.compositeOver(ctx, quickImage_.id());
-  else volume_.compositeOver(ctx);
+  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
   gl::check("RayCaster::render");
 }
 

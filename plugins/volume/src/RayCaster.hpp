@@ -14,6 +14,7 @@
 // image the synchronous path draws.
 #pragma once
 
+#include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 
 #include <algorithm>
@@ -39,12 +40,12 @@ class RayCaster final : public TetVolumeRenderer {
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;
-  bool hasPendingWork() const override { return volume_.hasPendingWork() || refining_; }
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
   VolumeStats stats() const override;
 
   const RayFrameReport& lastFrame() const { return lastFrame_; }
   /// The shown image's reduction (1: full resolution; n: one ray per n x n pixels).
-  int shownReduction() const { return refining_ ? reduction_ : 1; }
+  int shownReduction() const { return quick_.shownReduction(); }
   /// Tets per dispatch (tests force small ones to exercise resumption); clamped to
   /// 1..kStepsPerPass.
   void setStepsPerPass(int steps);
@@ -52,20 +53,9 @@ class RayCaster final : public TetVolumeRenderer {
   /// hold little (0: as the device allows).
   void setBandRowsLimit(int rows) { bandRowsLimit_ = std::max(rows, 0); }
   /// What a quick frame and one slice of the full frame may take (asynchronous updates).
-  void setFrameBudget(double quickMs, double sliceMs) {
-    quickFrameMs_ = quickMs;
-    sliceMs_ = sliceMs;
-  }
+  void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
 
  private:
-  struct FrameKey {
-    glm::dmat4 viewProjection{0.0};
-    int width = 0, height = 0;
-    std::uint64_t revision = 0;
-    std::size_t meshRevision = 0;
-    GLuint depthTexture = 0;
-    bool operator==(const FrameKey&) const = default;
-  };
   /// Rows of rays per band: all of them unless the device's storage blocks cannot hold a
   /// state per pixel (16 bytes each).
   int bandRows(int width, int height) const;
@@ -80,25 +70,16 @@ class RayCaster final : public TetVolumeRenderer {
   /// true when it is complete.
   void beginRefining(const RenderContext& ctx);
   bool refine(const RenderContext& ctx);
-  int reductionFor(int width, int height) const;
-  void ensureQuickImage(int width, int height);
   void frameDone(int width, int height);
 
   gl::Buffer rayState_, counters_;
   std::size_t rayStateBytes_ = 0;
-  gl::Texture quickImage_;
-  int quickWidth_ = 0, quickHeight_ = 0;
   int stepsPerPass_ = kStepsPerPass;
   int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
   RayFrameReport lastFrame_, building_;
-  // Asynchronous updates.
-  FrameKey frameKey_;
-  bool refining_ = false;  ///< the full frame of frameKey_ is being built; the quick one is shown
+  QuickFrames quick_;      ///< asynchronous updates: the quick frame and the refinement's state
   int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined
-  int reduction_ = 1;
-  int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to sliceMs_
-  double quickFrameMs_ = 40.0, sliceMs_ = 30.0;
-  double msPerRay_ = 0.0;  ///< measured on full frames, for sizing quick frames
+  int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to the slice's time
 };
 
 }  // namespace volpost::volume

@@ -153,6 +153,32 @@ TEST_F(GridMarch, ManyPassesPerFrameGiveTheSamePictureAsFew) {
   EXPECT_LE(fine.max, 2e-4);
 }
 
+TEST_F(GridMarch, TheWindowGetsAQuickFrameAndTheFullOneInSlicesOfPassesThatEqualsTheSynchronousFrame) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  Camera camera = gridCamera(g);
+  marcher().setGrid(g, values);
+  marcher().setTransferFunction(kGridTf);
+  marcher().setSamplingStep(0.005);  // several passes per frame
+  marcher().setTerminationThreshold(0.0);
+  const std::vector<float> synchronous = gpuImage(camera, 48, 40);
+  const int passes = marcher().lastPasses();
+  ASSERT_GT(passes, 2);
+  marcher().setAsynchronousUpdates(true);
+  marcher().setFrameBudget(1e-3, 1e-3);  // as if every frame were slow: one pass per call
+  (void)gpuImage(camera, 48, 40);
+  EXPECT_GT(marcher().shownReduction(), 1) << "a quick frame first";
+  int calls = 1;
+  for (; calls < 1000 && marcher().hasPendingWork(); ++calls) (void)gpuImage(camera, 48, 40);
+  ASSERT_FALSE(marcher().hasPendingWork());
+  EXPECT_EQ(calls, passes + 1) << "one pass per call after the quick frame";
+  EXPECT_EQ(gpuImage(camera, 48, 40), synchronous) << "the refined frame is the synchronous one";
+  camera.orbit(8.0, 0.0);
+  (void)gpuImage(camera, 48, 40);
+  EXPECT_TRUE(marcher().hasPendingWork()) << "another view starts over";
+  marcher().setAsynchronousUpdates(false);
+}
+
 TEST_F(GridMarch, ClipPlanesAndIsoSurfacesMatchTheReference) {
   const RegularGrid g = skewedGrid();
   const std::vector<double> values = wavyValues(g);
