@@ -135,16 +135,18 @@ void paintTriad(QPainter& painter, const QRect& area, const Camera& camera, doub
   }
 }
 
+// Where a model point lands in `area` (nullopt behind the eye): the widgets' projection.
+struct PointInArea {
+  Camera camera;
+  QRect area;
+  std::optional<QPointF> operator()(const glm::dvec3& p) const;
+};
+
 // The first clip plane's widget: its outline in the model's box, lightly filled, and the
 // normal handle (shaft and knob) that the window's mouse drags.
 void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
   const PlaneWidget widget = planeWidget(scene.volume().clipPlanes.front(), scene.session()->bounds());
-  const Camera camera = scene.pictureCamera(area.width(), area.height());
-  const auto at = [&](const glm::dvec3& p) -> std::optional<QPointF> {
-    const auto q = projectToPicture(camera, p, area.width(), area.height());
-    if (!q) return std::nullopt;
-    return QPointF(area.left() + q->x, area.top() + q->y);
-  };
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
   const QColor color(250, 170, 20);
   QPolygonF outline;
   for (const glm::dvec3& p : widget.outline)
@@ -166,12 +168,7 @@ void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, 
 // The clip box's edges and a knob on each face, as the window drags them.
 void paintBoxWidget(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
   const BoxWidget widget = boxWidget(*scene.shownClipBox());
-  const Camera camera = scene.pictureCamera(area.width(), area.height());
-  const auto at = [&](const glm::dvec3& p) -> std::optional<QPointF> {
-    const auto q = projectToPicture(camera, p, area.width(), area.height());
-    if (!q) return std::nullopt;
-    return QPointF(area.left() + q->x, area.top() + q->y);
-  };
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
   const QColor color(40, 150, 240);
   painter.setPen(QPen(color, 1.5 * scale));
   for (const auto& e : boxEdges()) {
@@ -182,6 +179,12 @@ void paintBoxWidget(QPainter& painter, const QRect& area, const Scene& scene, do
   painter.setBrush(color);
   for (const glm::dvec3& c : widget.faceCenters)
     if (const auto q = at(c)) painter.drawEllipse(*q, 5.0 * scale, 5.0 * scale);
+}
+
+std::optional<QPointF> PointInArea::operator()(const glm::dvec3& p) const {
+  const auto q = projectToPicture(camera, p, area.width(), area.height());
+  if (!q) return std::nullopt;
+  return QPointF(area.left() + q->x, area.top() + q->y);
 }
 
 }  // namespace

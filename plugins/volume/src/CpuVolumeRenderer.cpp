@@ -208,10 +208,7 @@ void CpuVolumeRenderer::render(const RenderContext& ctx) {
 void CpuVolumeRenderer::show(const RenderContext& ctx) {
   if (image_.width <= 0 || image_.height <= 0) return;
   if (!texture_ || textureWidth_ != image_.width || textureHeight_ != image_.height) {
-    texture_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture_.id(), 1, GL_RGBA32F, image_.width, image_.height);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    texture_ = floatImageTexture(image_.width, image_.height);
     textureWidth_ = image_.width;
     textureHeight_ = image_.height;
     uploaded_ = false;

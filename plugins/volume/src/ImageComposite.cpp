@@ -8,6 +8,14 @@
 
 namespace volpost::volume {
 
+gl::Texture floatImageTexture(int width, int height) {
+  gl::Texture texture = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, GL_RGBA32F, width, height);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return texture;
+}
+
 void ImageComposite::initialize() {
   registerVolumeShaders();
   program_ = gl::buildProgram({"volume/composite.vert", "volume/composite.frag"}, binding::glslDefines());

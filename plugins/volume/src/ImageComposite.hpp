@@ -9,6 +9,10 @@
 
 namespace volpost::volume {
 
+/// A premultiplied RGBA float image of width x height as the composite draws it (nearest
+/// filtering: a reduced image shows its blocks as they are).
+gl::Texture floatImageTexture(int width, int height);
+
 class ImageComposite {
  public:
   void initialize();  ///< a context is current

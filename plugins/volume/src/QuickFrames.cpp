@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "QuickFrames.hpp"
 
+#include "ImageComposite.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -42,10 +44,7 @@ RenderContext QuickFrames::quickContext(const RenderContext& ctx, int reduction)
   quick.height = std::max(1, ctx.height / reduction);
   quick.depthTexture = 0;
   if (!quickImage_ || quickWidth_ != quick.width || quickHeight_ != quick.height) {
-    quickImage_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(quickImage_.id(), 1, GL_RGBA32F, quick.width, quick.height);
-    glTextureParameteri(quickImage_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(quickImage_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    quickImage_ = floatImageTexture(quick.width, quick.height);
     quickWidth_ = quick.width;
     quickHeight_ = quick.height;
   }
