@@ -140,25 +140,20 @@ void CellProjector::render(const RenderContext& ctx) {
     gl::check("CellProjector::render");
     return;
   }
-  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision(), int(method_))) {
-    // A new view or scene: sorted once, a quick frame now, the full one in runs.
-    sortFor(ctx);
-    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
-    if (reduction == 1) {
-      quick_.measured(drawWhole(ctx, volume_.image()), ctx.width, ctx.height);
-    } else {
-      const RenderContext quick = quick_.quickContext(ctx, reduction);
-      quick_.measured(drawWhole(quick, quick_.quickImage()), quick.width, quick.height);
-      beginDrawing(ctx, volume_.image(), true);  // the full frame starts empty
-      endDrawing();
-      drawnTets_ = 0;
-      refineMs_ = 0.0;
-      quick_.startRefining(reduction);
-    }
-  } else if (quick_.refining() && refine(ctx)) {
-    quick_.doneRefining();
-  }
-  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
+  const GLuint shown = quick_.frame(
+      ctx, volume_.revision(), volume_.meshRevision(), int(method_), volume_.image(),
+      [this, &ctx](const RenderContext& c, GLuint image) {
+        sortFor(ctx);  // once per view, for the full frame's size
+        return drawWhole(c, image);
+      },
+      [this, &ctx] {
+        beginDrawing(ctx, volume_.image(), true);  // the full frame starts empty
+        endDrawing();
+        drawnTets_ = 0;
+        refineMs_ = 0.0;
+      },
+      [this, &ctx] { return refine(ctx); });
+  volume_.compositeOver(ctx, shown);
   gl::check("CellProjector::render");
 }
 

@@ -97,22 +97,15 @@ void GridRayMarcher::render(const RenderContext& ctx) {
     gl::check("GridRayMarcher::render");
     return;
   }
-  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision())) {
-    // A new view or scene: a quick frame now, the full one in slices of passes.
-    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
-    if (reduction == 1) {
-      quick_.measured(renderWhole(ctx, volume_.image()), ctx.width, ctx.height);
-    } else {
-      const RenderContext quick = quick_.quickContext(ctx, reduction);
-      quick_.measured(renderWhole(quick, quick_.quickImage()), quick.width, quick.height);
-      refinePass_ = 0;
-      refineMs_ = 0.0;
-      quick_.startRefining(reduction);
-    }
-  } else if (quick_.refining() && refine(ctx)) {
-    quick_.doneRefining();
-  }
-  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
+  const GLuint shown = quick_.frame(
+      ctx, volume_.revision(), volume_.meshRevision(), 0, volume_.image(),
+      [this](const RenderContext& c, GLuint image) { return renderWhole(c, image); },
+      [this] {
+        refinePass_ = 0;
+        refineMs_ = 0.0;
+      },
+      [this, &ctx] { return refine(ctx); });
+  volume_.compositeOver(ctx, shown);
   gl::check("GridRayMarcher::render");
 }
 

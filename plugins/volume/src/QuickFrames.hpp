@@ -27,6 +27,30 @@ class QuickFrames {
   /// Forgets the last view (the next call to viewChanged is true): the synchronous path.
   void forget();
 
+  /// One asynchronous render() call of a renderer, returning the image to show. On a changed
+  /// view or scene: `whole(context, image)` draws a complete frame and returns its
+  /// milliseconds, the full frame when it fits the budget, else a quick one, after which
+  /// `beginRefining()` starts the full frame; otherwise, while refining, `refine()` advances
+  /// it for about sliceMs() and returns true when it is complete.
+  template <typename Whole, typename Begin, typename Refine>
+  GLuint frame(const RenderContext& ctx, std::uint64_t revision, std::size_t meshRevision, int extra,
+               GLuint fullImage, Whole&& whole, Begin&& beginRefining, Refine&& refine) {
+    if (viewChanged(ctx, revision, meshRevision, extra)) {
+      const int reduction = reductionFor(ctx.width, ctx.height);
+      if (reduction == 1) {
+        measured(whole(ctx, fullImage), ctx.width, ctx.height);
+      } else {
+        const RenderContext quick = quickContext(ctx, reduction);  // sizes the quick image: first
+        measured(whole(quick, quickImage()), quick.width, quick.height);
+        beginRefining();
+        startRefining(reduction);
+      }
+    } else if (refining_ && refine()) {
+      doneRefining();
+    }
+    return refining_ ? quickImage() : fullImage;
+  }
+
   /// One pixel per reduction x reduction for a quick frame of width x height (1: the full
   /// frame fits the budget; 4 before anything was measured).
   int reductionFor(int width, int height) const;

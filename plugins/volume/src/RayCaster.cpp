@@ -88,12 +88,7 @@ std::size_t RayCaster::dispatch(const RenderContext& ctx, GLuint image, int firs
   return counts[0];
 }
 
-void RayCaster::frameDone(int width, int height) {
-  lastFrame_ = building_;
-  quick_.measured(lastFrame_.milliseconds, width, height);
-}
-
-void RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
+double RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
   const auto start = std::chrono::steady_clock::now();
   building_ = {};
   const int rowsPerBand = bandRows(ctx.width, ctx.height);
@@ -106,7 +101,8 @@ void RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
     }
   }
   building_.milliseconds = millisecondsSince(start);
-  frameDone(ctx.width, ctx.height);
+  lastFrame_ = building_;
+  return lastFrame_.milliseconds;
 }
 
 void RayCaster::beginRefining(const RenderContext& ctx) {
@@ -130,7 +126,8 @@ bool RayCaster::refine(const RenderContext& ctx) {
       const int bandRowsNow = refineRows_;
       refineFirstRow_ += bandRowsNow;
       if (refineFirstRow_ >= ctx.height) {
-        frameDone(ctx.width, ctx.height);
+        lastFrame_ = building_;
+        quick_.measured(lastFrame_.milliseconds, ctx.width, ctx.height);
         return true;
       }
       refineRows_ = std::min(bandRowsNow, ctx.height - refineFirstRow_);
@@ -150,21 +147,11 @@ void RayCaster::render(const RenderContext& ctx) {
     gl::check("RayCaster::render");
     return;
   }
-  if (quick_.viewChanged(ctx, volume_.revision(), volume_.meshRevision())) {
-    // A new view or scene: a quick frame now, the full one in slices.
-    const int reduction = quick_.reductionFor(ctx.width, ctx.height);
-    if (reduction == 1) {
-      renderWhole(ctx, volume_.image());
-    } else {
-      const RenderContext quick = quick_.quickContext(ctx, reduction);  // sizes the quick image: first
-      renderWhole(quick, quick_.quickImage());
-      beginRefining(ctx);
-      quick_.startRefining(reduction);
-    }
-  } else if (quick_.refining() && refine(ctx)) {
-    quick_.doneRefining();
-  }
-  volume_.compositeOver(ctx, quick_.refining() ? quick_.quickImage() : volume_.image());
+  const GLuint shown = quick_.frame(
+      ctx, volume_.revision(), volume_.meshRevision(), 0, volume_.image(),
+      [this](const RenderContext& c, GLuint image) { return renderWhole(c, image); },
+      [this, &ctx] { beginRefining(ctx); }, [this, &ctx] { return refine(ctx); });
+  volume_.compositeOver(ctx, shown);
   gl::check("RayCaster::render");
 }
 

@@ -64,13 +64,13 @@ class RayCaster final : public TetVolumeRenderer {
   /// One dispatch advancing every unfinished ray of rows [firstRow, firstRow + rows) by up
   /// to `steps` tets; returns the rays still unfinished and counts the capped ones.
   std::size_t dispatch(const RenderContext& ctx, GLuint image, int firstRow, int rows, int steps);
-  /// The whole frame into `image`, band by band, dispatching until every ray is done.
-  void renderWhole(const RenderContext& ctx, GLuint image);
-  /// Starts the full frame of ctx (asynchronous path) and advances it for about sliceMs_;
-  /// true when it is complete.
+  /// The whole frame into `image`, band by band, dispatching until every ray is done;
+  /// returns its milliseconds.
+  double renderWhole(const RenderContext& ctx, GLuint image);
+  /// Starts the full frame of ctx (asynchronous path); refine() advances it for about the
+  /// slice's time and says true when it is complete.
   void beginRefining(const RenderContext& ctx);
   bool refine(const RenderContext& ctx);
-  void frameDone(int width, int height);
 
   gl::Buffer rayState_, counters_;
   std::size_t rayStateBytes_ = 0;
