@@ -12,6 +12,7 @@ packages=(
   libpugixml-dev zlib1g-dev nlohmann-json3-dev libnetcdf-dev
   libcgal-dev libtet1.5-dev               # exact predicates; tetrahedralization templates
   libkissfft-dev                          # the Hilbert transform of seismic attributes
+  libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # videos of animations
   libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core            # GUI tests on a virtual display; legend text
 )

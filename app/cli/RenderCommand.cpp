@@ -112,25 +112,34 @@ struct Options {
   QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
   QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
   QCommandLineOption allSteps{"all-steps", "One picture per step of the result: OUT_001.png, OUT_002.png, ... "
-                                           "(colors span every step unless --range is given)."};
+                                           "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
+                                           "step unless --range is given)."};
+  QCommandLineOption fps{"fps", "Frames (steps) per second of an --all-steps video (default 4).", "N"};
   StreamlineOptions lineOptions;
 };
 
-// --all-steps: the scene at each step of its result, one numbered picture each, the colors
-// over every step unless a range was given. Each path is printed as it is written.
-int renderEveryStep(Scene& scene, const QString& out, bool rangeGiven, const std::function<SceneImage()>& draw) {
+// --all-steps: the scene at each step of its result, one numbered picture each or one
+// video, the colors over every step unless a range was given. Each path is printed when it
+// is written (a video's once, at the end).
+int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bool rangeGiven,
+                    const std::function<SceneImage()>& draw) {
   if (!scene.view()) throw UsageError("--all-steps needs --field (the result whose steps to show)");
   const std::string quantity = scene.state().quantity;
   const std::size_t count = scene.session()->fieldOf(scene.view()->quantity).stepCount();
   if (!rangeGiven && !scene.state().fixedRange) scene.setRangeOverSteps(true);
+  AnimationOutput output(out, count, framesPerSecond);
+  const auto printPath = [](const QString& path) {
+    std::printf("%s\n", qPrintable(QFileInfo(path).absoluteFilePath()));
+    std::fflush(stdout);
+  };
   for (std::size_t step = 0; step < count; ++step) {
     std::fprintf(stderr, "volpost: step %zu of %zu\n", step + 1, count);
     scene.setResult(quantity, step);
-    const QString path = framePath(out, step, count);
-    savePicture(draw().picture, path);
-    std::printf("%s\n", qPrintable(QFileInfo(path).absoluteFilePath()));
-    std::fflush(stdout);
+    const QString path = output.add(draw().picture);
+    if (!output.isVideo()) printPath(path);
   }
+  const QString video = output.finish();
+  if (output.isVideo()) printPath(video);
   return 0;
 }
 
@@ -359,7 +368,7 @@ int runRender(const QStringList& args) {
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps});
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -371,10 +380,23 @@ int runRender(const QStringList& args) {
     if (!parseSize(parser.value(o.size), width, height))
       throw UsageError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(o.size)).toStdString());
     const QString out = parser.value(o.output);
-    try {
-      pictureFormatOf(out);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(QString("-o %1").arg(e.what()).toStdString());
+    const bool video = VideoFile::isVideoPath(out);
+    if (video && !parser.isSet(o.allSteps))
+      throw UsageError(QString("-o %1 is a video: it needs --all-steps (one frame per step); a single picture is "
+                               ".png or .jpg").arg(out).toStdString());
+    if (!video) try {
+        pictureFormatOf(out);
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(QString("-o %1 (or a video: .%2 with --all-steps)")
+                             .arg(e.what(), VideoFile::extensions().join(", .")).toStdString());
+      }
+    double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond;
+    if (parser.isSet(o.fps)) {
+      if (!video) throw UsageError("--fps is the rate of a video: -o must be .mp4, .mkv, .webm or .avi with --all-steps");
+      bool ok = false;
+      framesPerSecond = parser.value(o.fps).toDouble(&ok);
+      if (!ok || !std::isfinite(framesPerSecond) || framesPerSecond < 0.1 || framesPerSecond > 120)
+        throw UsageError(QString("--fps %1 is not a rate of 0.1 to 120 frames per second").arg(parser.value(o.fps)).toStdString());
     }
 
     if (parser.isSet(o.allSteps))
@@ -395,7 +417,7 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("--threads %1 is not a thread count (1..1024, 0: all cores)").arg(parser.value(o.threads)).toStdString());
 
     // Outputs are checked before the work: a missing folder is said at once, not after it.
-    checkWritable(pathBytes(parser.isSet(o.allSteps) ? framePath(out, 0, 1) : out));
+    checkWritable(pathBytes(parser.isSet(o.allSteps) && !video ? framePath(out, 0, 1) : out));
     if (parser.isSet(o.floatOut)) checkWritable(pathBytes(parser.value(o.floatOut)));
     if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
     auto plugins = loadPluginsForCli();
@@ -434,7 +456,7 @@ int runRender(const QStringList& args) {
                    ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
                    : renderSceneImage(scene, width, height);
       };
-      if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, parser.isSet(o.range), draw);
+      if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), draw);
       const SceneImage image = draw();
       if (const auto lines = scene.streamlineResult(); lines && lines->outside)
         std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",

@@ -10,6 +10,7 @@
 #include <QComboBox>
 #include <QElapsedTimer>
 #include <QFileDialog>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMainWindow>
@@ -96,12 +97,22 @@ StepController::StepController(QMainWindow& window, Viewport& viewport, QToolBar
   exportAction->setObjectName("exportAnimationAction");
   connect(exportAction, &QAction::triggered, this, [this] {
     QSettings settings("volpost", "volpost");
-    const QString path = QFileDialog::getSaveFileName(&window_, "Export animation: one picture per step",
-                                                      settings.value("files/lastAnimation", "frame.png").toString(),
-                                                      "PNG images (*.png);;JPEG images (*.jpg)");
+    const QString path = QFileDialog::getSaveFileName(
+        &window_, "Export animation: a video, or one picture per step",
+        settings.value("files/lastAnimation", "animation.mp4").toString(),
+        "Videos (*.mp4 *.mkv *.webm *.avi);;PNG images, numbered (*.png);;JPEG images, numbered (*.jpg)");
     if (path.isEmpty()) return;
+    double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond;
+    if (VideoFile::isVideoPath(path)) {
+      bool ok = false;
+      framesPerSecond = QInputDialog::getDouble(&window_, "Export animation", "Steps per second of video:",
+                                                settings.value("files/animationRate", framesPerSecond).toDouble(), 0.1,
+                                                120, 1, &ok);
+      if (!ok) return;
+      settings.setValue("files/animationRate", framesPerSecond);
+    }
     settings.setValue("files/lastAnimation", path);
-    exportAnimation(path);
+    exportAnimation(path, framesPerSecond);
   });
   refresh();
   showRangeFields();
@@ -187,7 +198,7 @@ void StepController::showRangeFields() {
   maxEdit_->setText(QString::number(r.max, 'g', 10));
 }
 
-int StepController::exportAnimation(const QString& path) {
+int StepController::exportAnimation(const QString& path, double framesPerSecond) {
   const int count = stepBox_.count();
   if (count < 1 || !viewport_.scene().view()) {
     window_.statusBar()->showMessage("Export Animation needs a result shown (choose one in the toolbar)");
@@ -196,11 +207,12 @@ int StepController::exportAnimation(const QString& path) {
   const bool wasPlaying = play_->isChecked();
   play_->setChecked(false);
   const int kept = stepBox_.currentIndex();
-  QProgressDialog progress("Writing one picture per step...", "Cancel", 0, count, &window_);
+  AnimationOutput output(path, std::size_t(count), framesPerSecond);
+  QProgressDialog progress(output.isVideo() ? "Writing a video, one frame per step..." : "Writing one picture per step...",
+                           "Cancel", 0, count, &window_);
   progress.setWindowModality(Qt::WindowModal);
   progress.setMinimumDuration(300);
-  int written = 0;
-  QString error;
+  QString error, written;
   for (int i = 0; i < count && !progress.wasCanceled(); ++i) {
     progress.setValue(i);
     stepBox_.setCurrentIndex(i);
@@ -213,27 +225,39 @@ int StepController::exportAnimation(const QString& path) {
       QApplication::processEvents(QEventLoop::AllEvents, 50);
       QThread::msleep(10);
     }
-    QImage picture = viewport_.grabFramebuffer();
     try {
-      savePicture(picture, framePath(path, std::size_t(i), std::size_t(count)));
-      ++written;
+      output.add(viewport_.grabFramebuffer());
     } catch (const std::exception& e) {
       error = e.what();
       break;
     }
   }
+  const bool cancelled = progress.wasCanceled();
+  // A cancelled video is not written at all (half a video is of no use); the pictures
+  // written before a cancel stay.
+  if (error.isEmpty() && !(cancelled && output.isVideo())) try {
+      written = output.finish();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
   progress.setValue(count);
   stepBox_.setCurrentIndex(kept);
   if (wasPlaying) play_->setChecked(true);
   if (!error.isEmpty()) {
     QMessageBox::warning(&window_, "Export animation", error);
-  } else {
-    window_.statusBar()->showMessage(QString("Wrote %1 of %2 pictures: %3 ...")
-                                         .arg(written)
-                                         .arg(count)
-                                         .arg(framePath(path, 0, std::size_t(count))));
+    return output.isVideo() ? 0 : int(output.added());
   }
-  return written;
+  if (output.isVideo()) {
+    window_.statusBar()->showMessage(written.isEmpty() ? QString("Cancelled: no video written")
+                                                       : QString("Wrote a video of %1 steps at %2 per second: %3")
+                                                             .arg(output.added())
+                                                             .arg(framesPerSecond)
+                                                             .arg(written));
+    return written.isEmpty() ? 0 : int(output.added());
+  }
+  window_.statusBar()->showMessage(
+      QString("Wrote %1 of %2 pictures: %3 ...").arg(output.added()).arg(count).arg(framePath(path, 0, std::size_t(count))));
+  return int(output.added());
 }
 
 }  // namespace volpost::app

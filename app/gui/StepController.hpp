@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Steps and load cases in the window: previous / next / play (Page Up, Page Down,
 // Ctrl+Space) beside the step box, the color range (each step's own, over all steps, or
-// typed), and File > Export Animation: one numbered picture per step.
+// typed), and File > Export Animation: a video or one numbered picture per step.
 #pragma once
+
+#include "../core/AnimationFrames.hpp"
 
 #include <QObject>
 
@@ -37,8 +39,10 @@ class StepController : public QObject {
   /// The range controls follow the scene (after a state file is opened).
   void syncToScene();
   /// Writes the view at every step as numbered pictures next to `path` (path_001.png ...),
-  /// with a cancellable progress dialog; returns how many were written.
-  int exportAnimation(const QString& path);
+  /// or as one video when `path` is one (.mp4 ...; `framesPerSecond` steps per second),
+  /// with a cancellable progress dialog; returns how many frames were written (0 for a
+  /// video that was cancelled or failed: then no file is left).
+  int exportAnimation(const QString& path, double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond);
   bool playing() const;
 
  private:

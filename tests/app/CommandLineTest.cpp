@@ -2,6 +2,7 @@
 // `volpost info` and `volpost render` as processes: output, exit codes, messages.
 #include "support/TestSupport.hpp"
 #include "ProcessRunner.hpp"
+#include "support/VideoFrames.hpp"
 
 #include <QImage>
 
@@ -348,6 +349,39 @@ TEST(RenderCommand, AllStepsWritesOneNumberedPicturePerStep) {
   EXPECT_EQ(runVolpost("render " + model + " --field T --all-steps --step 2 -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --all-steps -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --field T --range everything -o " + out).exitCode, 2);
+}
+
+// --all-steps to a video: one file whose frames are the numbered pictures (within the
+// codec's loss), at the rate asked for; a video without --all-steps, or a rate for
+// pictures, is refused before any work.
+TEST(RenderCommand, AllStepsToAVideoHasTheStepsAsFrames) {
+  const auto dir = std::filesystem::path(::testing::TempDir()) / "volpost_all_steps_video";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string model = dataFile("formats/golden.frd"), pictures = (dir / "t.png").string(),
+                    video = (dir / "t.mp4").string();
+  const std::string common = " --field T --all-steps --size 96x64 --no-legend ";
+  ASSERT_EQ(runVolpost("render " + model + common + "-o " + pictures).exitCode, 0);
+  const auto r = runVolpost("render " + model + common + "--fps 2 -o " + video);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find(video), std::string::npos) << "the video's path is printed: " << r.output;
+  const volpost::test::DecodedVideo decoded = volpost::test::decodeVideo(video);
+  EXPECT_EQ(decoded.codec, "h264");
+  EXPECT_NEAR(decoded.framesPerSecond, 2, 1e-9);
+  ASSERT_EQ(decoded.frames.size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    const QImage picture(QString::fromStdString((dir / ("t_00" + std::to_string(k + 1) + ".png")).string()));
+    EXPECT_LT(volpost::test::meanColorDifference(decoded.frames[std::size_t(k)], picture), 3) << "frame " << k;
+  }
+  EXPECT_GT(volpost::test::meanColorDifference(decoded.frames[0], decoded.frames[1]), 1) << "the steps differ";
+
+  const auto single = runVolpost("render " + model + " --field T -o " + (dir / "one.mp4").string());
+  EXPECT_EQ(single.exitCode, 2);
+  EXPECT_NE(single.output.find("needs --all-steps"), std::string::npos) << single.output;
+  EXPECT_EQ(runVolpost("render " + model + common + "--fps 2 -o " + pictures).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + common + "--fps 0 -o " + video).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + common + "-o " + (dir / "t.gif").string()).exitCode, 2);
+  EXPECT_FALSE(std::filesystem::exists(dir / "one.mp4"));
 }
 
 TEST(CommandLine, EveryVerbsHelpNamesTheVerbAndExitsZero) {

@@ -9,6 +9,7 @@
 #include "core/BoxWidget.hpp"
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
+#include "support/VideoFrames.hpp"
 
 #include <volpost/render/GL.hpp>
 
@@ -462,6 +463,15 @@ class MainWindowTest : public QObject {
     QVERIFY(QFile::exists(dir + "/t_001.png") && QFile::exists(dir + "/t_002.png"));
     QVERIFY(QImage(dir + "/t_001.png") != QImage(dir + "/t_002.png"));
     QCOMPARE(view->scene().state().step, std::size_t(0));
+    // Or one video: a frame per step, the pictures' size (made even), the rate asked for.
+    QCOMPARE(steps->exportAnimation(dir + "/t.mp4", 3), 2);
+    const test::DecodedVideo video = test::decodeVideo((dir + "/t.mp4").toStdString());
+    QCOMPARE(video.frames.size(), std::size_t(2));
+    QCOMPARE(video.framesPerSecond, 3.0);
+    const QImage first(dir + "/t_001.png");
+    QCOMPARE(video.frames[0].width(), first.width() + (first.width() & 1));
+    QVERIFY(test::meanColorDifference(video.frames[0], first.scaled(video.frames[0].size())) < 4);
+    QVERIFY(window_->statusBar()->currentMessage().contains("Wrote a video of 2 steps"));
     view->scene().setShowLegend(true);
     range->setCurrentIndex(0);
     window_->resize(900, 600);
