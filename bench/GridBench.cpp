@@ -39,7 +39,9 @@ const char* kUsage =
     "  --size N        image size in pixels (default 512)\n"
     "  --frames N      timed frames per row (default 3; the median is shown)\n"
     "  --steps A,B,..  steps as fractions of the grid spacing (default 1,0.5,0.25)\n"
-    "  --cpu-only      only the CPU marcher (no GL rows)\n";
+    "  --cpu-only      only the CPU marcher (no GL rows)\n"
+    "  --interactive   also the renderers as the window drives them: 1024x768, the view turning\n"
+    "                  5 degrees per frame, quick reduced frames (frames per second)\n";
 
 // Opaque where the amplitude is strong, either sign: reflectors show, the quiet rock is clear.
 TransferFunction seismicTf(double extinction) {
@@ -70,7 +72,7 @@ Errors compare(const std::vector<float>& image, const optics::ReferenceImage& re
 int main(int argc, char** argv) {
   std::size_t n = 128;
   int size = 512, frames = 3;
-  bool cpuOnly = false;
+  bool cpuOnly = false, interactive = false;
   std::vector<double> steps = {1.0, 0.5, 0.25};
   for (int a = 1; a < argc; ++a) {
     const bool more = a + 1 < argc;
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[a], "--size") && more) size = std::atoi(argv[++a]);
     else if (!std::strcmp(argv[a], "--frames") && more) frames = std::atoi(argv[++a]);
     else if (!std::strcmp(argv[a], "--cpu-only")) cpuOnly = true;
+    else if (!std::strcmp(argv[a], "--interactive")) interactive = true;
     else if (!std::strcmp(argv[a], "--steps") && more) {
       steps.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ",")) steps.push_back(std::atof(s));
@@ -156,6 +159,47 @@ int main(int argc, char** argv) {
     slicer.setGrid(grid, cube.values);
     for (double s : steps) row("texture-slices", s, slicer, draw(slicer));
     slicer.release();
+  }
+  if (interactive) {
+    // As in the window: every frame a new view, so a quick frame is drawn and the full one
+    // started (the CPU's on worker threads, the GPU renderers' in slices when the view
+    // rests). What the user sees: frames per second, at the default step.
+    std::printf("\nIn the window (1024x768, the view turning 5 degrees per frame, default step):\n\n"
+                "| renderer | quick frames | ms/frame (median of 35) | frames/s |\n|---|---|---:|---:|\n");
+    const auto turning = [&](GridVolumeRenderer& r, const char* name, const std::function<int()>& reductionShown) {
+      r.initialize();
+      r.setGrid(grid, cube.values);
+      r.setTransferFunction(tf);
+      r.setAsynchronousUpdates(true);
+      OffscreenTarget window(1024, 768);
+      RenderContext w = ctx;
+      w.width = 1024;
+      w.height = 768;
+      w.framebuffer = window.framebuffer();
+      std::vector<double> times;
+      int reduction = 1;
+      for (int f = 0; f < 40; ++f) {
+        w.camera.orbit(5.0, 0.0);
+        const auto start = Clock::now();
+        r.render(w);
+        glFinish();
+        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        reduction = reductionShown();
+      }
+      r.release();
+      std::sort(times.begin() + 5, times.end());  // the first frames measure the cost per pixel
+      const double median = times[5 + (times.size() - 5) / 2];
+      std::printf("| %s | 1 pixel per %dx%d | %.0f | %.1f |\n", name, reduction, reduction, median, 1000.0 / median);
+      std::fflush(stdout);
+    };
+    volume::CpuVolumeRenderer cpuWindow;
+    turning(cpuWindow, "cpu (march)", [&] { return cpuWindow.shownReduction(); });
+    if (!cpuOnly) {
+      volume::GridRayMarcher marcher;
+      turning(marcher, "texture-raymarch", [&] { return marcher.shownReduction(); });
+      volume::GridSlicer slicer;
+      turning(slicer, "texture-slices", [&] { return slicer.shownReduction(); });
+    }
   }
   std::printf("\nOpenGL: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   return 0;

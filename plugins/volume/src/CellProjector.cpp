@@ -57,16 +57,7 @@ void CellProjector::sortFor(const RenderContext& ctx) {
 }
 
 void CellProjector::beginDrawing(const RenderContext& ctx, GLuint image, bool clear) {
-  if (attachedImage_ != image) {
-    glNamedFramebufferTexture(framebuffer_.id(), GL_COLOR_ATTACHMENT0, image, 0);
-    attachedImage_ = image;
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
-  glViewport(0, 0, ctx.width, ctx.height);
-  if (clear) {
-    const float transparent[4] = {0, 0, 0, 0};
-    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, transparent);
-  }
+  GpuVolume::beginDrawingIntoImage(framebuffer_, attachedImage_, image, ctx, clear);
   const GLuint p = volume_.program({"volume/vicp.vert", "volume/vicp.frag"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);

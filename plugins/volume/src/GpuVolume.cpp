@@ -406,15 +406,18 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   }
 }
 
-void GpuVolume::beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, const RenderContext& ctx) const {
-  if (attachedImage != image_.id()) {
-    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, image_.id(), 0);
-    attachedImage = image_.id();
+void GpuVolume::beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, GLuint image,
+                                      const RenderContext& ctx, bool clear) {
+  if (attachedImage != image) {
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, image, 0);
+    attachedImage = image;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
   glViewport(0, 0, ctx.width, ctx.height);
-  const float clear[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, clear);
+  if (clear) {
+    const float transparent[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, transparent);
+  }
 }
 
 glm::mat4 GpuVolume::imageViewProjection(const RenderContext& ctx) const {

@@ -91,9 +91,12 @@ class GpuVolume {
   /// With a grid, also its uniforms (worldToIndex: volume-relative positions to continuous
   /// indices; gridSize) for common/grid_sampling.glsl.
   void bindSegmentResources(const RenderContext& ctx) const;
-  /// For renderers that rasterize into the float image (cell projection, slicing): attaches
-  /// it to `framebuffer` (once), binds it, sets the viewport and clears it to transparent.
-  void beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, const RenderContext& ctx) const;
+  /// For renderers that rasterize into a float image (cell projection, slicing: the full
+  /// image or a quick frame's): attaches `image` to `framebuffer` (when `attachedImage`
+  /// says another is), binds it, sets the viewport to ctx's size and, if asked, clears it
+  /// to transparent.
+  static void beginDrawingIntoImage(gl::Framebuffer& framebuffer, GLuint& attachedImage, GLuint image,
+                                    const RenderContext& ctx, bool clear);
   /// Their view-projection, volume-relative, drawn upside down so the image's first row is
   /// the top as the compute renderers write it.
   glm::mat4 imageViewProjection(const RenderContext& ctx) const;

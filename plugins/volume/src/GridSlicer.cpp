@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <stdexcept>
@@ -92,10 +93,12 @@ void GridSlicer::initialize() {
   glVertexArrayAttribFormat(vertexArray_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(vertexArray_.id(), 0, 0);
   attachedImage_ = 0;
+  quick_.release();
   gl::check("GridSlicer::initialize");
 }
 
 void GridSlicer::release() {
+  quick_.release();
   framebuffer_.reset();
   vertexArray_.reset();
   vertices_.reset();
@@ -103,12 +106,9 @@ void GridSlicer::release() {
   volume_.release();
 }
 
-void GridSlicer::render(const RenderContext& ctx) {
-  if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
-  volume_.prepare(ctx);
+void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
   const RegularGrid& grid = volume_.grid();
   const glm::dvec3 origin = volume_.mesh().origin;
-  const double spacing = sliceSpacing();
   // Depths along the view direction from the eye (orthographic too: any point of the view
   // axis serves); perspective slices lie in front of the eye.
   const glm::dvec3 viewDir = ctx.camera.viewDirection();
@@ -126,19 +126,24 @@ void GridSlicer::render(const RenderContext& ctx) {
   };
   std::vector<glm::vec3> triangles =
       slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &lastSlices_, twoPixels);
-  const std::size_t sliceVertices = triangles.size();
+  sliceVertices_ = triangles.size();
   // The entry pass: one fragment per pixel (clip-space x, y).
   for (const glm::vec3 q : {glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, -1, 0),
                             glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)})
     triangles.push_back(q);
+  entryVertices_ = triangles.size() - sliceVertices_;
   glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(triangles.size() * sizeof(glm::vec3), 16)),
                     triangles.data(), GL_STREAM_DRAW);
   glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
+}
 
-  volume_.beginDrawingIntoImage(framebuffer_, attachedImage_, ctx);
+GLuint GridSlicer::beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing) {
+  GpuVolume::beginDrawingIntoImage(framebuffer_, attachedImage_, image, ctx, clear);
   const GLuint p = volume_.program({"volume/gridslice.vert", "volume/gridslice.frag"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
+  const glm::dvec3 viewDir = ctx.camera.viewDirection();
+  const glm::dvec3 eye = ctx.camera.eye() - volume_.mesh().origin;
   const glm::mat4 vp = volume_.imageViewProjection(ctx);
   const auto uniform = [p](const char* n) { return glGetUniformLocation(p, n); };
   glProgramUniformMatrix4fv(p, uniform("viewProjection"), 1, GL_FALSE, glm::value_ptr(vp));
@@ -151,15 +156,93 @@ void GridSlicer::render(const RenderContext& ctx) {
   glDisable(GL_CULL_FACE);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // back to front, premultiplied "over"
-  glProgramUniform1i(p, uniform("entryPass"), 0);
-  glProgramUniform1i(p, uniform("screenQuad"), 0);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(sliceVertices));  // farthest first
-  glProgramUniform1i(p, uniform("entryPass"), 1);
-  glProgramUniform1i(p, uniform("screenQuad"), 1);
-  glDrawArrays(GL_TRIANGLES, GLint(sliceVertices), GLsizei(triangles.size() - sliceVertices));  // nearest of all
+  return p;
+}
+
+void GridSlicer::drawSlices(GLuint program, std::size_t first, std::size_t count) {
+  glProgramUniform1i(program, glGetUniformLocation(program, "entryPass"), 0);
+  glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), 0);
+  glDrawArrays(GL_TRIANGLES, GLint(first), GLsizei(count));  // farthest first
+}
+
+void GridSlicer::drawEntry(GLuint program) {
+  glProgramUniform1i(program, glGetUniformLocation(program, "entryPass"), 1);
+  glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), 1);
+  glDrawArrays(GL_TRIANGLES, GLint(sliceVertices_), GLsizei(entryVertices_));  // nearest of all
+}
+
+void GridSlicer::endDrawing() {
   glDisable(GL_BLEND);
   glBindVertexArray(0);
-  volume_.compositeOver(ctx);
+}
+
+double GridSlicer::drawWhole(const RenderContext& ctx, GLuint image, double spacing) {
+  const auto start = std::chrono::steady_clock::now();
+  uploadSlices(ctx, spacing);
+  const GLuint p = beginDrawing(ctx, image, true, spacing);
+  drawSlices(p, 0, sliceVertices_);
+  drawEntry(p);
+  endDrawing();
+  if (!volume_.asynchronous()) return 0.0;
+  glFinish();  // timed for sizing quick frames: the window's path only
+  return millisecondsSince(start);
+}
+
+bool GridSlicer::refine(const RenderContext& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const GLuint p = beginDrawing(ctx, volume_.image(), false, sliceSpacing());
+  while (drawnVertices_ < sliceVertices_) {
+    const auto runStart = std::chrono::steady_clock::now();
+    const std::size_t count = std::min(verticesPerRun_, sliceVertices_ - drawnVertices_);
+    drawSlices(p, drawnVertices_, count);
+    glFinish();
+    const double ms = millisecondsSince(runStart);
+    refineMs_ += ms;
+    drawnVertices_ += count;
+    // The next run sized to the slice's time, in whole triangles.
+    const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
+    verticesPerRun_ = 3 * std::clamp<std::size_t>(std::size_t(double(verticesPerRun_ / 3) * factor), 1, 1u << 24);
+    if (drawnVertices_ < sliceVertices_ && millisecondsSince(start) >= quick_.sliceMs()) {
+      endDrawing();
+      return false;
+    }
+  }
+  const auto entryStart = std::chrono::steady_clock::now();
+  drawEntry(p);
+  endDrawing();
+  glFinish();
+  refineMs_ += millisecondsSince(entryStart);
+  quick_.measured(refineMs_, ctx.width, ctx.height);
+  return true;
+}
+
+void GridSlicer::render(const RenderContext& ctx) {
+  if (!volume_.initialized() || !volume_.hasGrid() || ctx.width <= 0 || ctx.height <= 0) return;
+  volume_.prepare(ctx);
+  if (!volume_.asynchronous()) {
+    quick_.forget();
+    drawWhole(ctx, volume_.image(), sliceSpacing());
+    volume_.compositeOver(ctx);
+    gl::check("GridSlicer::render");
+    return;
+  }
+  const GLuint shown = quick_.frame(
+      ctx, volume_.revision(), volume_.meshRevision(), 0, volume_.image(),
+      [this, &ctx](const RenderContext& c, GLuint image) {
+        // A quick frame of one pixel per r x r gets slices r times further apart: its
+        // cost falls with its depth resolution as with its pixels.
+        const int reduction = std::max(1, ctx.width / std::max(1, c.width));
+        return drawWhole(c, image, sliceSpacing() * double(reduction));
+      },
+      [this, &ctx] {
+        uploadSlices(ctx, sliceSpacing());  // the full frame's slices, kept while it is refined
+        beginDrawing(ctx, volume_.image(), true, sliceSpacing());  // the full frame starts empty
+        endDrawing();
+        drawnVertices_ = 0;
+        refineMs_ = 0.0;
+      },
+      [this, &ctx] { return refine(ctx); });
+  volume_.compositeOver(ctx, shown);
   gl::check("GridSlicer::render");
 }
 

@@ -8,9 +8,13 @@
 // the scalar linear along it and perspective-correct lengths: the parts partition every
 // ray exactly, so the same integration modes, clip planes and iso-surfaces as the ray
 // marcher apply and the two pictures converge to the same reference. The slice spacing is the sampling step (0:
-// half the shortest grid spacing); a larger one is the interactive mode.
+// half the shortest grid spacing); a larger one is the interactive mode. In the window a
+// changed view first gets a quick reduced frame, with slices as many times further apart
+// as its pixels are (the interactive mode), then the full one in runs of slices drawn back
+// to front over several paints (QuickFrames), shown when complete (the detailed mode).
 #pragma once
 
+#include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 
 #include <functional>
@@ -28,15 +32,45 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void render(const RenderContext& ctx) override;
   /// The distance between slices the next frame uses, model units.
   double sliceSpacing() const { return volume_.gridStep(); }
-  /// Slices the last frame drew.
+  /// Slices the last frame drew (a quick frame's while the full one is refined).
   std::size_t lastSlices() const { return lastSlices_; }
+  bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
+  int shownReduction() const { return quick_.shownReduction(); }
+  void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
+  VolumeStats stats() const override {
+    VolumeStats s = volume_.stats();
+    s.gpuBytes += quick_.bytes();
+    return s;
+  }
 
  private:
+  /// Cuts ctx's slices, `spacing` apart, and uploads them, then the entry quad; remembers
+  /// how many vertices are slices.
+  void uploadSlices(const RenderContext& ctx, double spacing);
+  /// Binds everything a draw into `image` for ctx needs (clearing it first if asked).
+  GLuint beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing);
+  /// Slice triangles [first, first + count), back to front; splitting a frame anywhere
+  /// between triangles leaves the picture the same (one slice's triangles do not overlap).
+  void drawSlices(GLuint program, std::size_t first, std::size_t count);
+  /// The part of every ray from its entry to the nearest slice: last, over everything.
+  void drawEntry(GLuint program);
+  void endDrawing();
+  /// The whole frame into `image`, slices `spacing` apart; returns its milliseconds
+  /// (asynchronous path only).
+  double drawWhole(const RenderContext& ctx, GLuint image, double spacing);
+  /// Advances the full frame by runs of slice triangles for about the slice's time; true
+  /// when complete.
+  bool refine(const RenderContext& ctx);
+
   gl::Framebuffer framebuffer_;
   gl::VertexArray vertexArray_;
   gl::Buffer vertices_;
   GLuint attachedImage_ = 0;
   std::size_t lastSlices_ = 0;
+  std::size_t sliceVertices_ = 0, entryVertices_ = 0;
+  QuickFrames quick_;
+  std::size_t drawnVertices_ = 0, verticesPerRun_ = 3 * 1024;
+  double refineMs_ = 0.0;
 };
 
 /// The polygons (as triangles, 3 points each) where planes at depths spacing * k along

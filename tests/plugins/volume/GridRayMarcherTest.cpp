@@ -390,6 +390,35 @@ TEST_F(GridSlices, ClipPlanesIsoSurfacesAndOrthographicViews) {
                std::invalid_argument);
 }
 
+// In the window: a quick reduced frame, then the full one in runs of slices over several
+// calls, which is the synchronous frame bit for bit (the same triangles, blended in the
+// same order); a clip plane moved (a new scene) starts over.
+TEST_F(GridSlices, TheWindowGetsAQuickFrameAndTheFullOneInRunsOfSlicesThatEqualsTheSynchronousFrame) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  const Camera camera = gridCamera(g);
+  slicer().setGrid(g, values);
+  slicer().setTransferFunction(kGridTf);
+  slicer().setSamplingStep(0.004);
+  slicer().setTerminationThreshold(0.0);
+  const std::vector<float> synchronous = gpuImage(camera, 48, 40);
+  ASSERT_GT(slicer().lastSlices(), 1000u);
+  slicer().setAsynchronousUpdates(true);
+  slicer().setFrameBudget(1e-3, 1e-3);  // as if every frame were slow: one run per call
+  (void)gpuImage(camera, 48, 40);
+  EXPECT_GT(slicer().shownReduction(), 1) << "a quick frame first";
+  int calls = 1;
+  for (; calls < 100000 && slicer().hasPendingWork(); ++calls) (void)gpuImage(camera, 48, 40);
+  ASSERT_FALSE(slicer().hasPendingWork());
+  EXPECT_GT(calls, 3) << "the full frame took several calls";
+  EXPECT_EQ(slicer().shownReduction(), 1);
+  EXPECT_EQ(gpuImage(camera, 48, 40), synchronous) << "the refined frame is the synchronous one";
+  slicer().setClipPlanes({{g.bounds().center(), {0.3, -1.0, 0.2}}});
+  (void)gpuImage(camera, 48, 40);
+  EXPECT_TRUE(slicer().hasPendingWork()) << "a moved plane starts over";
+  slicer().setAsynchronousUpdates(false);
+}
+
 // ---- shading by the gradient ------------------------------------------------------------
 
 TEST(GridReference, ShadingDarkensWhereTheGradientTurnsAwayFromTheEye) {
