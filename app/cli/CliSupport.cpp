@@ -92,6 +92,26 @@ std::optional<int> parseArguments(QCommandLineParser& parser, const QString& ver
   return std::nullopt;
 }
 
+QCommandLineOption readerOptionOption() {
+  return QCommandLineOption("reader-option",
+                            "A setting of the file's reader, NAME=VALUE (repeatable), e.g. inline-byte=9 for a SEG-Y "
+                            "file whose inline numbers are at byte 9 (volpost info --reader-options lists them).",
+                            "NAME=VALUE");
+}
+
+ReaderOptions readerOptionsFrom(const QCommandLineParser& parser, const QCommandLineOption& option) {
+  ReaderOptions options;
+  for (const QString& text : parser.values(option)) {
+    const qsizetype eq = text.indexOf('=');
+    if (eq <= 0 || eq + 1 >= text.size())
+      throw OptionError(QString("--reader-option %1 is not NAME=VALUE").arg(text).toStdString());
+    const std::string name = text.left(eq).trimmed().toStdString(), value = text.mid(eq + 1).trimmed().toStdString();
+    if (!options.emplace(name, value).second)
+      throw OptionError(QString("--reader-option %1: %2 is given twice").arg(text, QString::fromStdString(name)).toStdString());
+  }
+  return options;
+}
+
 std::vector<std::string> quantityKeys(const ModelSession& session, const QStringList& names) {
   std::vector<std::string> keys;
   for (const QString& name : names) {

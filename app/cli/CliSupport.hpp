@@ -50,6 +50,12 @@ std::vector<std::string> quantityKeys(const ModelSession& session, const QString
 /// no step `step` (0-based), naming the field and its step count.
 void checkStepExists(const ModelSession& session, const std::vector<std::string>& keys, std::size_t step);
 
+/// --reader-option NAME=VALUE (repeatable), which every verb that reads a model takes:
+/// settings of the file's reader, such as SEG-Y header byte positions.
+QCommandLineOption readerOptionOption();
+/// Its values; OptionError for one that is not NAME=VALUE or names an option twice.
+ReaderOptions readerOptionsFrom(const QCommandLineParser& parser, const QCommandLineOption& option);
+
 /// "WIDTHxHEIGHT", each 1..16384.
 bool parseSize(const QString& text, int& w, int& h);
 
@@ -64,6 +70,9 @@ int exitCodeOf(Work&& work) {
   } catch (const Cancelled&) {
     return 1;
   } catch (const OptionError& e) {  // what the README promises for usage errors
+    printError(e.what());
+    return 2;
+  } catch (const ReaderOptionError& e) {
     printError(e.what());
     return 2;
   } catch (const std::exception& e) {

@@ -22,6 +22,8 @@ int runConvert(const QStringList& args) {
   parser.setApplicationDescription("Writes MODEL as a VTK XML unstructured grid (every field, every step).");
   parser.addPositionalArgument("MODEL", "mesh or results file");
   parser.addPositionalArgument("OUT.vtu", "file to write");
+  const QCommandLineOption readerOption = readerOptionOption();
+  parser.addOption(readerOption);
   if (const auto code = parseArguments(parser, "volpost convert", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2 || !files[1].endsWith(".vtu", Qt::CaseInsensitive)) {
@@ -31,7 +33,8 @@ int runConvert(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
-    const auto model = plugins->readers().load(pathBytes(files[0]), terminalProgress("reading"));
+    const auto model =
+        plugins->readers().load(pathBytes(files[0]), readerOptionsFrom(parser, readerOption), terminalProgress("reading"));
     writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"));
     std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->mesh.nodeCount(),
                 model->mesh.cellCount(), model->fields.size());
@@ -48,7 +51,8 @@ int runSurface(const QStringList& args) {
   const QCommandLineOption field("field", "Quantity of the iso-surface: S.mises, U.magnitude, T ...", "Q");
   const QCommandLineOption iso("iso", "Iso-value (with --field): the surface where Q = VALUE.", "VALUE");
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
-  parser.addOptions({field, iso, step});
+  const QCommandLineOption readerOption = readerOptionOption();
+  parser.addOptions({field, iso, step, readerOption});
   if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2) {
@@ -77,7 +81,8 @@ int runSurface(const QStringList& args) {
   };
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
-    const auto session = ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"));
+    const auto session = ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"),
+                                            ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption));
     if (!parser.isSet(field)) {
       saidHow(writeSurface(session->surface().mesh, session->surface().origin, pathBytes(files[1])));
       std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());

@@ -49,13 +49,40 @@ void printGrid(const RegularGrid& grid) {
   if (!grid.sampleStorage.empty()) std::printf("samples:  %s in the file\n", grid.sampleStorage.c_str());
 }
 
+// The options of each reader (all readers, or the one that reads `path`).
+int printReaderOptions(const ReaderRegistry& readers, const std::string& path) {
+  std::vector<const MeshReader*> list = readers.readers();
+  if (!path.empty()) list = {&readers.choose(path)};
+  for (const MeshReader* reader : list) {
+    const std::vector<ReaderOption> options = reader->options();
+    if (options.empty() && path.empty()) continue;
+    std::printf("%s:%s\n", reader->formatName().c_str(), options.empty() ? " no reader options" : "");
+    for (const ReaderOption& o : options)
+      std::printf("  %-26s %s\n", (o.name + "=" + o.valueName).c_str(), o.description.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runInfo(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("Prints the node and cell counts, bounds, fields and defects of a model.");
   parser.addPositionalArgument("MODEL", "mesh or results file");
+  const QCommandLineOption readerOption = readerOptionOption();
+  const QCommandLineOption listOptions("reader-options",
+                                       "List the settings the readers take (with MODEL: its reader's), for "
+                                       "--reader-option.");
+  parser.addOptions({readerOption, listOptions});
   if (const auto code = parseArguments(parser, "volpost info", args)) return *code;
+  if (parser.isSet(listOptions) && parser.positionalArguments().size() <= 1) {
+    auto plugins = loadPluginsForCli();
+    return exitCodeOf([&] {
+      return printReaderOptions(plugins->readers(), parser.positionalArguments().isEmpty()
+                                                        ? std::string()
+                                                        : pathBytes(parser.positionalArguments().first()));
+    });
+  }
   if (parser.positionalArguments().size() != 1) {
     printError("info needs exactly one MODEL file (volpost info MODEL)");
     return 2;
@@ -63,7 +90,8 @@ int runInfo(const QStringList& args) {
   const std::string path = pathBytes(parser.positionalArguments().first());
   auto plugins = loadPluginsForCli();
   try {
-    const auto model = plugins->readers().load(path, terminalProgress("reading"));
+    const ReaderOptions options = readerOptionsFrom(parser, readerOption);
+    const auto model = plugins->readers().load(path, options, terminalProgress("reading"));
     const Mesh& mesh = model->mesh;
     std::printf("file:     %s\nformat:   %s\n", path.c_str(), model->formatName.c_str());
     if (!model->title.empty()) std::printf("title:    %s\n", model->title.c_str());
@@ -83,6 +111,12 @@ int runInfo(const QStringList& args) {
       std::printf("  %-7s %-22s %s\n", d.severity == Severity::Warning ? "warning" : "info", d.code.c_str(),
                   d.message.c_str());
     return 0;
+  } catch (const OptionError& e) {
+    printError(e.what());
+    return 2;
+  } catch (const ReaderOptionError& e) {
+    printError(e.what());
+    return 2;
   } catch (const std::exception& e) {
     printError(e.what());
     return 1;

@@ -32,7 +32,8 @@ int runPlot(const QStringList& args) {
                                       "file, or - for the terminal.", "FILE");
   const QCommandLineOption output(QStringList{"o", "output"}, "The chart as a picture (.png, .jpg).", "FILE");
   const QCommandLineOption size("size", "The chart's size (default 800x500).", "WxH", "800x500");
-  parser.addOptions({from, to, field, samples, step, csv, output, size});
+  const QCommandLineOption readerOption = readerOptionOption();
+  parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption});
   if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(from) || !parser.isSet(to) ||
       (!parser.isSet(csv) && !parser.isSet(output))) {
@@ -73,7 +74,8 @@ int runPlot(const QStringList& args) {
     if (!csvPath.empty()) checkWritable(csvPath);
     if (parser.isSet(output)) checkWritable(pathBytes(picture));
     const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                            terminalProgress("reading"));
+                                            terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                            readerOptionsFrom(parser, readerOption));
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) {
       const auto first = session->defaultQuantity();

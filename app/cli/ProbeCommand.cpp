@@ -76,7 +76,8 @@ int runProbe(const QStringList& args) {
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   const QCommandLineOption csv("csv", "Write a table (x, y, z, element, element_type, node, the quantities) to this "
                                       "CSV file, or - for the terminal.", "FILE");
-  parser.addOptions({field, at, pointsFile, step, csv});
+  const QCommandLineOption readerOption = readerOptionOption();
+  parser.addOptions({field, at, pointsFile, step, csv, readerOption});
   if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
   if (parser.positionalArguments().size() != 1 || (!parser.isSet(at) && !parser.isSet(pointsFile))) {
     printError("probe needs MODEL and --at X,Y,Z or --points FILE (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
@@ -100,7 +101,8 @@ int runProbe(const QStringList& args) {
     if (parser.isSet(pointsFile))
       for (const glm::dvec3& p : readPoints(pathBytes(parser.value(pointsFile)))) points.push_back(p);
     const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                            terminalProgress("reading"));
+                                            terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                            readerOptionsFrom(parser, readerOption));
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);

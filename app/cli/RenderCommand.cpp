@@ -114,6 +114,7 @@ struct Options {
   QCommandLineOption allSteps{"all-steps", "One picture per step of the result: OUT_001.png, OUT_002.png, ... "
                                            "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
                                            "step unless --range is given)."};
+  QCommandLineOption readerOption = readerOptionOption();
   QCommandLineOption fps{"fps", "Frames (steps) per second of an --all-steps video (default 4).", "N"};
   StreamlineOptions lineOptions;
 };
@@ -368,7 +369,7 @@ int runRender(const QStringList& args) {
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps});
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps, o.readerOption});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -407,6 +408,11 @@ int runRender(const QStringList& args) {
     SceneState base;
     if (parser.isSet(o.state)) base = SceneState::load(pathBytes(parser.value(o.state)));
     if (!positional.isEmpty()) base.modelPath = pathBytes(positional.first());
+    try {  // the command line's reader options over the state file's
+      for (const auto& [name, value] : readerOptionsFrom(parser, o.readerOption)) base.readerOptions[name] = value;
+    } catch (const OptionError& e) {
+      throw UsageError(e.what());
+    }
     QString rendererName = parser.isSet(o.renderer) ? parser.value(o.renderer)
                            : base.volume.shown      ? QString::fromStdString(base.volume.renderer)
                                                     : QString("surface");
@@ -431,9 +437,15 @@ int runRender(const QStringList& args) {
     {
       Scene scene(volumeRendererFactory(*plugins));
       // A volume picture never draws the boundary surface: it is left unextracted.
-      const auto session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"),
-                                              rendererName == "surface" ? ModelSession::Boundary::Now
-                                                                        : ModelSession::Boundary::OnFirstUse);
+      std::shared_ptr<ModelSession> session;
+      try {
+        session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"),
+                                     rendererName == "surface" ? ModelSession::Boundary::Now
+                                                               : ModelSession::Boundary::OnFirstUse,
+                                     base.readerOptions);
+      } catch (const ReaderOptionError& e) {
+        throw UsageError(e.what());
+      }
       scene.setSession(session);
       try {  // an option (or a state file) this model cannot honour is a usage error
         applyOptions(parser, o, base, scene);

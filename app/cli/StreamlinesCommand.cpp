@@ -27,7 +27,8 @@ int runStreamlines(const QStringList& args) {
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   const QCommandLineOption output(QStringList{"o", "output"}, "Output: lines.vtp or lines.csv.", "FILE");
   const StreamlineOptions lineOptions;
-  parser.addOptions({field, step, output});
+  const QCommandLineOption readerOption = readerOptionOption();
+  parser.addOptions({field, step, output, readerOption});
   for (const auto& o : lineOptions.all()) parser.addOption(o);
   if (const auto code = parseArguments(parser, "volpost streamlines", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(lineOptions.seeds) ||
@@ -52,7 +53,8 @@ int runStreamlines(const QStringList& args) {
   return exitCodeOf([&] {
     checkWritable(out);
     const auto session =
-        ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()), terminalProgress("reading"));
+        ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()), terminalProgress("reading"),
+                           ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption));
     Scene scene(volumeRendererFactory(*plugins));
     scene.setSession(session);
     StreamlineLayer layer;

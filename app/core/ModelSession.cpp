@@ -9,7 +9,8 @@
 namespace volpost::app {
 
 std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
-                                                 const Progress& progress, Boundary boundary) {
+                                                 const Progress& progress, Boundary boundary,
+                                                 const ReaderOptions& options) {
   // The caller's progress sees one bar with named stages; cancelling it cancels the stage.
   Progress stage = progress;
   stage.setStage("reading");
@@ -18,12 +19,14 @@ std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, 
     stage.report(readShare * f);
     return true;
   });
-  std::shared_ptr<Model> model = readers.load(path, readProgress);
+  std::shared_ptr<Model> model = readers.load(path, options, readProgress);
   Progress rest([&](double f, const std::string&) {
     stage.report(readShare + (1.0 - readShare) * f);
     return true;
   });
-  return fromModel(std::move(model), rest, boundary);
+  auto session = fromModel(std::move(model), rest, boundary);
+  session->readerOptions_ = options;
+  return session;
 }
 
 std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> model, const Progress& progress,

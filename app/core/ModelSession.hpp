@@ -37,13 +37,18 @@ class ModelSession {
   enum class Boundary { Now, OnFirstUse };
 
   /// Reads and checks the model (the long part, runs on a worker thread).
+  /// `options`: the reader's settings (SEG-Y header bytes ...); one it does not take, or a
+  /// bad value, throws ReaderOptionError naming it before anything is read.
   static std::shared_ptr<ModelSession> load(const ReaderRegistry& readers, const std::string& path,
-                                            const Progress& progress = {}, Boundary boundary = Boundary::OnFirstUse);
+                                            const Progress& progress = {}, Boundary boundary = Boundary::OnFirstUse,
+                                            const ReaderOptions& options = {});
   /// A session on a model already in memory (checked or made by the caller).
   static std::shared_ptr<ModelSession> fromModel(std::shared_ptr<Model> model, const Progress& progress = {},
                                                  Boundary boundary = Boundary::OnFirstUse);
 
   const Model& model() const { return *model_; }
+  /// The reader options the model was read with (for state files and reopening).
+  const ReaderOptions& readerOptions() const { return readerOptions_; }
   /// The boundary surface (extracted on first use, kept; any thread).
   const BoundarySurface& surface() const;
   /// Whether surface() has been extracted yet (what a volume picture must not pay for).
@@ -77,6 +82,7 @@ class ModelSession {
   const PointLocator& locator() const;
 
  private:
+  ReaderOptions readerOptions_;
   mutable std::once_flag tetOnce_;
   mutable std::unique_ptr<TetMesh> tets_;
   mutable std::mutex rangesMutex_;

@@ -57,6 +57,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.quantity.clear();
   state_.step = 0;
   state_.modelPath = session_ ? session_->model().sourcePath : std::string();
+  state_.readerOptions = session_ ? session_->readerOptions() : ReaderOptions{};
   state_.volume.shown = false;
   if (!session_ || !session_->model().grid) state_.volume.shading = false;  // lighting by the gradient is for grids
   changed_.mode = true;
@@ -283,11 +284,13 @@ void Scene::applyState(const SceneState& s) {
 
   const bool locationChanged = !view_ || !view || view_->location != view->location;
   const std::string keptModel = state_.modelPath;
+  const ReaderOptions keptOptions = state_.readerOptions;
   if (s.volume.shading && session_ && !session_->model().grid)
     throw std::invalid_argument("the state lights the volume by its gradient (volume.shading), which applies to regular "
                                 "grids; this model is a mesh");
   state_ = s;
   state_.modelPath = keptModel;
+  state_.readerOptions = keptOptions;
   state_.camera.reset();  // the live camera holds it
   streamlinesUploaded_ = false;
   view_ = std::move(view);

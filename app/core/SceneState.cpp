@@ -254,6 +254,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
     if (!relative.empty() && *relative.begin() != "..") model = relative.string();
   }
   out["model"] = model;
+  if (!readerOptions.empty()) out["readerOptions"] = readerOptions;
   out["result"] = {{"quantity", quantity.empty() ? json(nullptr) : json(quantity)}, {"step", step + 1}};
   if (camera) {
     out["camera"] = {{"eye", jsonOf(camera->eye)},
@@ -304,6 +305,11 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   s.modelPath = r.text(*model, "model");
   if (!s.modelPath.empty() && fs::path(s.modelPath).is_relative())
     s.modelPath = (fs::absolute(fileName).parent_path() / s.modelPath).lexically_normal().string();
+  if (const json* options = r.find(in, "readerOptions")) {
+    r.object(*options, "readerOptions");
+    for (const auto& [name, value] : options->items())
+      s.readerOptions[name] = r.text(value, "readerOptions." + name);
+  }
   if (const json* result = r.find(in, "result")) {
     r.object(*result, "result");
     if (const json* q = r.find(*result, "quantity")) s.quantity = r.text(*q, "result.quantity");

@@ -11,6 +11,7 @@
 #include "host/render/StreamlineRenderer.hpp"
 
 #include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/MeshReader.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
@@ -93,6 +94,7 @@ struct SceneState {
   static constexpr int kVersion = 1;
 
   std::string modelPath;
+  ReaderOptions readerOptions;  ///< what the model was read with (SEG-Y header bytes ...); "readerOptions" in the file
   std::string quantity;       ///< written form ("S.mises"); empty: the plain surface
   std::size_t step = 0;       ///< 0-based here, 1-based in the file
   std::optional<CameraState> camera;  ///< nullopt: the isometric view fitted to the model

@@ -23,7 +23,11 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QDockWidget>
+#include <QFormLayout>
+#include <QPushButton>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QMimeData>
@@ -159,6 +163,10 @@ void MainWindow::buildActions() {
   QMenu* recent = file->addMenu("Open &Recent");
   recent->setObjectName("recentMenu");
   new RecentFiles(*recent, [this](const QString& path) { openFile(path); }, this);
+  QAction* readerOptions = file->addAction("Reader &Options...", this, &MainWindow::editReaderOptions);
+  readerOptions->setObjectName("readerOptionsAction");
+  readerOptions->setToolTip("Settings of the file's reader (for example where a SEG-Y file keeps its inline "
+                            "numbers, or which offset of a pre-stack file to load), then the file read again");
   file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
   file->addSeparator();
   file->addAction("Open S&tate...", this, &MainWindow::chooseStateToOpen);
@@ -782,12 +790,14 @@ void MainWindow::chooseFile() {
   openFile(path);
 }
 
-void MainWindow::openFile(const QString& path) {
+void MainWindow::openFile(const QString& path, const ReaderOptions& options) {
   if (loading_) {
     statusBar()->showMessage("Still loading the previous file");
     return;
   }
   loading_ = true;
+  lastPath_ = path;
+  lastReaderOptions_ = options;
   auto progress = std::make_shared<std::atomic<int>>(0);
   auto stage = std::make_shared<QString>();
   auto stageMutex = std::make_shared<std::mutex>();
@@ -844,7 +854,7 @@ void MainWindow::openFile(const QString& path) {
       QMessageBox::critical(this, "Cannot open model", r.error);
     }
   });
-  watcher->setFuture(QtConcurrent::run([&readers, path, progress, cancel, stage, stageMutex]() {
+  watcher->setFuture(QtConcurrent::run([&readers, path, options, progress, cancel, stage, stageMutex]() {
     LoadResult r;
     try {
       Progress p([&](double f, const std::string& name) {
@@ -853,7 +863,7 @@ void MainWindow::openFile(const QString& path) {
         *stage = QString::fromStdString(name);
         return !*cancel;
       });
-      r.session = ModelSession::load(readers, path.toStdString(), p, ModelSession::Boundary::Now);
+      r.session = ModelSession::load(readers, path.toStdString(), p, ModelSession::Boundary::Now, options);
     } catch (const Cancelled&) {
       r.cancelled = true;
     } catch (const std::exception& e) {
@@ -861,6 +871,62 @@ void MainWindow::openFile(const QString& path) {
     }
     return r;
   }));
+}
+
+bool MainWindow::reopenWithReaderOptions(const ReaderOptions& options) {
+  if (lastPath_.isEmpty()) {
+    statusBar()->showMessage("Open a model first: reader options apply to a file");
+    return false;
+  }
+  openFile(lastPath_, options);
+  return true;
+}
+
+void MainWindow::editReaderOptions() {
+  if (lastPath_.isEmpty()) {
+    statusBar()->showMessage("Open a model first: reader options apply to a file");
+    return;
+  }
+  const MeshReader* reader = nullptr;
+  try {
+    reader = &plugins_.readers().choose(lastPath_.toStdString());
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "Reader options", e.what());
+    return;
+  }
+  const std::vector<ReaderOption> options = reader->options();
+  const QString fileName = QFileInfo(lastPath_).fileName();
+  if (options.empty()) {
+    statusBar()->showMessage(QString("The %1 reader of %2 has no options")
+                                 .arg(QString::fromStdString(reader->formatName()), fileName));
+    return;
+  }
+  QDialog dialog(this);
+  dialog.setWindowTitle("Reader options: " + fileName);
+  auto* form = new QFormLayout(&dialog);
+  form->addRow(new QLabel(QString("%1, read by the %2 reader. Empty fields keep the defaults.")
+                              .arg(fileName, QString::fromStdString(reader->formatName()))));
+  std::vector<std::pair<std::string, QLineEdit*>> fields;
+  for (const ReaderOption& o : options) {
+    auto* edit = new QLineEdit(&dialog);
+    edit->setObjectName(QString::fromStdString("readerOption_" + o.name));
+    edit->setToolTip(QString::fromStdString(o.description));
+    edit->setPlaceholderText(QString::fromStdString(o.valueName));
+    if (const auto it = lastReaderOptions_.find(o.name); it != lastReaderOptions_.end())
+      edit->setText(QString::fromStdString(it->second));
+    form->addRow(QString::fromStdString(o.name), edit);
+    fields.emplace_back(o.name, edit);
+  }
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  buttons->button(QDialogButtonBox::Ok)->setText("Read Again");
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  form->addRow(buttons);
+  if (dialog.exec() != QDialog::Accepted) return;
+  ReaderOptions chosen;
+  for (const auto& [name, edit] : fields)
+    if (const QString text = edit->text().trimmed(); !text.isEmpty()) chosen[name] = text.toStdString();
+  reopenWithReaderOptions(chosen);
 }
 
 void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
@@ -998,6 +1064,12 @@ void MainWindow::showModelInfo() {
   const Model& m = session_->model();
   QString html = QString("<b>%1</b><br>%2<br><br>").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName().toHtmlEscaped(),
                                                         QString::fromStdString(m.formatName).toHtmlEscaped());
+  if (!session_->readerOptions().empty()) {
+    QStringList options;
+    for (const auto& [name, value] : session_->readerOptions())
+      options << QString::fromStdString(name + "=" + value).toHtmlEscaped();
+    html += QString("read with %1 (File &gt; Reader Options...)<br><br>").arg(options.join(", "));
+  }
   html += QString("%1 nodes<br>%2 cells:<br>").arg(m.mesh.nodeCount()).arg(m.mesh.cellCount());
   for (const auto& [type, count] : m.mesh.countsByType())
     html += QString("&nbsp;&nbsp;%1 %2<br>").arg(count).arg(QString::fromStdString(std::string(cellTypeName(type))));
@@ -1092,7 +1164,8 @@ void MainWindow::openStateFile(const QString& path) {
   const auto sameFile = [](const std::string& a, const std::string& b) {
     return QFileInfo(QString::fromStdString(a)).canonicalFilePath() == QFileInfo(QString::fromStdString(b)).canonicalFilePath();
   };
-  if (session_ && sameFile(session_->model().sourcePath, state.modelPath)) {
+  if (session_ && sameFile(session_->model().sourcePath, state.modelPath) &&
+      session_->readerOptions() == state.readerOptions) {
     applyState(state);
     return;
   }
@@ -1102,7 +1175,7 @@ void MainWindow::openStateFile(const QString& path) {
     return;
   }
   pendingState_ = state;  // applied once its model is in
-  openFile(QString::fromStdString(state.modelPath));
+  openFile(QString::fromStdString(state.modelPath), state.readerOptions);
 }
 
 void MainWindow::applyState(const SceneState& state) {

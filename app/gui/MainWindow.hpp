@@ -40,8 +40,12 @@ class MainWindow : public QMainWindow, public PanelHost {
   explicit MainWindow(PluginManager& plugins, QWidget* parent = nullptr);
   ~MainWindow() override;
 
-  /// Starts loading; emits loadFinished. The current model stays until the new one is in.
-  void openFile(const QString& path);
+  /// Starts loading, with the reader's options (SEG-Y header bytes ...); emits
+  /// loadFinished. The current model stays until the new one is in.
+  void openFile(const QString& path, const ReaderOptions& options = {});
+  /// File > Reader Options...: the last file opened (or tried) again, with these options.
+  /// False (said in the status bar) when no file was opened yet.
+  bool reopenWithReaderOptions(const ReaderOptions& options);
   /// Selects a quantity by its written form (e.g. "S.mises"); false if there is none.
   bool selectQuantity(const QString& key);
   /// Saves the view (model, result, camera, colors, volume...) as a state file.
@@ -90,6 +94,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void applyState(const SceneState& state);
   void chooseStateToSave();
   void chooseStateToOpen();
+  /// The dialog of File > Reader Options...: a field per option of the last file's reader.
+  void editReaderOptions();
   void setClipAxis(int axis);
   /// Runs a change of the scene, then redraws; an error goes to the status bar.
   template <typename Change>
@@ -147,6 +153,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
+  QString lastPath_;              ///< the last file opened or tried (for File > Reader Options)
+  ReaderOptions lastReaderOptions_;
   QString pendingStatePath_;
 };
 

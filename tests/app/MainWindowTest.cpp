@@ -716,6 +716,50 @@ class MainWindowTest : public QObject {
     QVERIFY(!marcher->isChecked());
   }
 
+  // File > Reader Options...: a SEG-Y file whose inline numbers are not at the standard
+  // byte fails to open; read again with inline-byte set it opens, the Model panel says the
+  // options, and a saved state keeps them (opening that state reads the file the same way).
+  void readerOptionsReadAFileAgainAndAreKeptInTheState() {
+    const QString dir = QDir::temp().filePath("volpost_gui_reader_options");
+    QDir(dir).removeRecursively();
+    QDir().mkpath(dir);
+    QFile original(VOLPOST_TEST_DATA "/seismic/synthetic_12x10x40.sgy");
+    QVERIFY(original.open(QIODevice::ReadOnly));
+    QByteArray bytes = original.readAll();
+    QCOMPARE(bytes.size(), 42000);
+    for (int t = 0; t < 120; ++t) {  // inline numbers from byte 189 to byte 17 of each trace header
+      char* h = bytes.data() + 3600 + t * 320;
+      std::copy(h + 188, h + 192, h + 16);
+      std::fill(h + 188, h + 192, char(0));
+    }
+    const QString moved = dir + "/moved.sgy";
+    QFile out(moved);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(bytes);
+    out.close();
+    QTimer closer;  // dismiss the error box of the failed open
+    connect(&closer, &QTimer::timeout, [] {
+      if (QWidget* modal = QApplication::activeModalWidget()) modal->close();
+    });
+    closer.start(50);
+    QVERIFY(!open(moved));
+    closer.stop();
+    QSignalSpy finished(window_.get(), &MainWindow::loadFinished);
+    QVERIFY(window_->reopenWithReaderOptions({{"inline-byte", "17"}}));
+    QVERIFY(finished.wait(30000));
+    QVERIFY(finished.first().first().toBool());
+    QCOMPARE(window_->session()->model().grid->dims[0], std::size_t(12));
+    QVERIFY(window_->findChild<QTextBrowser*>("modelInfo")->toPlainText().contains("inline-byte=17"));
+    QVERIFY(window_->saveStateFile(dir + "/view.json"));
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QSignalSpy applied(window_.get(), &MainWindow::stateApplied);
+    window_->openStateFile(dir + "/view.json");
+    QVERIFY(applied.wait(30000));
+    QVERIFY(applied.first().first().toBool());
+    QCOMPARE(window_->session()->readerOptions().at("inline-byte"), std::string("17"));
+    QVERIFY(window_->session()->model().grid.has_value());
+  }
+
   void cleanupTestCase() { window_.reset(); }
 };
 

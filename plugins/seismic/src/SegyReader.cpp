@@ -146,7 +146,86 @@ int SegyReader::sniff(std::string_view head) const {
   return first == 0xC3 || first == 'C' ? 90 : 40;  // 'C' of "C 1 CLIENT..." in EBCDIC or ASCII
 }
 
+namespace {
+
+// What the reader options say, by name: the header field each sets and its width in bytes.
+struct PositionOption {
+  const char* name;
+  int TraceFieldPositions::*field;
+  int bytes;
+  const char* what;
+};
+constexpr PositionOption kPositionOptions[] = {
+    {"inline-byte", &TraceFieldPositions::inlineNumber, 4, "inline number"},
+    {"crossline-byte", &TraceFieldPositions::crosslineNumber, 4, "crossline number"},
+    {"cdp-x-byte", &TraceFieldPositions::cdpX, 4, "CDP x coordinate"},
+    {"cdp-y-byte", &TraceFieldPositions::cdpY, 4, "CDP y coordinate"},
+    {"scalar-byte", &TraceFieldPositions::coordinateScalar, 2, "coordinate scalar"},
+    {"offset-byte", &TraceFieldPositions::offset, 4, "source-receiver offset"},
+};
+
+}  // namespace
+
+void checkPositions(const TraceFieldPositions& at) {
+  const auto check = [](const char* what, int position, int bytes) {
+    if (position < 1 || position + bytes - 1 > int(kTraceHeaderBytes))
+      throw std::invalid_argument(std::string("the ") + what + " at byte " + std::to_string(position) + " of " +
+                                  std::to_string(bytes) + " bytes lies outside the 240-byte trace header (1.." +
+                                  std::to_string(int(kTraceHeaderBytes) - bytes + 1) + ")");
+  };
+  for (const PositionOption& o : kPositionOptions) check(o.what, at.*(o.field), o.bytes);
+  check("delay", at.delayMs, 2);
+  check("sample count", at.samples, 2);
+}
+
+std::vector<ReaderOption> SegyReader::options() const {
+  const TraceFieldPositions defaults;
+  std::vector<ReaderOption> list;
+  for (const PositionOption& o : kPositionOptions)
+    list.push_back({o.name, "BYTE",
+                    std::string("first byte (1-based) of the trace header's ") + std::to_string(o.bytes) +
+                        "-byte " + o.what + " (default " + std::to_string(defaults.*(o.field)) + ")"});
+  list.push_back({"offset", "VALUE", "pre-stack files: the offset whose traces make the volume (default: refuse a "
+                                     "file with several offsets, naming them)"});
+  return list;
+}
+
+std::unique_ptr<Model> SegyReader::readWith(const std::string& path, const ReaderOptions& given,
+                                            const Progress& progress) const {
+  refuseUnknownOptions(*this, given);
+  SegyOptions options;
+  const auto integer = [](const std::string& name, const std::string& text) {
+    std::size_t used = 0;
+    long long v = 0;
+    try {
+      v = std::stoll(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size())
+      throw ReaderOptionError("reader option " + name + "=" + text + " is not a whole number");
+    return v;
+  };
+  for (const auto& [name, text] : given) {
+    const long long v = integer(name, text);
+    if (name == "offset") {
+      options.offset = std::int64_t(v);
+      continue;
+    }
+    for (const PositionOption& o : kPositionOptions)
+      if (name == o.name) {
+        if (v < 1 || v > static_cast<long long>(kTraceHeaderBytes) - o.bytes + 1)
+          throw ReaderOptionError("reader option " + name + "=" + text + ": the " + std::to_string(o.bytes) +
+                                      "-byte " + o.what + " must start at byte 1.." +
+                                      std::to_string(int(kTraceHeaderBytes) - o.bytes + 1) + " of the trace header");
+        options.positions.*(o.field) = int(v);
+      }
+  }
+  return readSegy(path, options, progress);
+}
+
 std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& options, const Progress& caller) {
+  checkPositions(options.positions);
   Progress progress = caller;  // with this reader's stages
   SegyFile file(path);
   if (file.size() < kTextHeaderBytes + kBinaryHeaderBytes)
@@ -247,7 +326,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
         file.fail(dataStart + chosen[c] * traceBytes + std::uint64_t(at.offset - 1),
                   "pre-stack data: " + std::to_string(offsets.size()) + " offsets (" + offsetList(offsets) +
                       ") at one trace position (inline " + std::to_string(k.inlineNumber) + ", crossline " +
-                      std::to_string(k.crosslineNumber) + "); volpost renders stacked volumes: choose one offset");
+                      std::to_string(k.crosslineNumber) + "); volpost renders stacked volumes: choose one offset (reader option offset=N: "
+                      "--reader-option offset=N, or File > Reader Options... in the window)");
       file.fail(dataStart + chosen[c] * traceBytes,
                 "trace " + std::to_string(chosen[c] + 1) + " repeats inline " + std::to_string(k.inlineNumber) +
                     ", crossline " + std::to_string(k.crosslineNumber) + " of trace " + std::to_string(slot + 1));

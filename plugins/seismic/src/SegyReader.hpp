@@ -22,8 +22,13 @@ struct SegyOptions {
   std::optional<std::int64_t> offset;
 };
 
+/// Throws std::invalid_argument when a header field's position lies outside the 240-byte
+/// trace header.
+void checkPositions(const TraceFieldPositions& positions);
+
 /// Reads the file into a model: a regular grid, its hexahedra and the point field
-/// "amplitude". Throws ReadError naming the file and byte, or Cancelled.
+/// "amplitude". Throws ReadError naming the file and byte, or Cancelled;
+/// std::invalid_argument for positions outside the trace header.
 std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& options, const Progress& progress = {});
 
 class SegyReader : public MeshReader {
@@ -34,6 +39,11 @@ class SegyReader : public MeshReader {
   std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override {
     return readSegy(path, {}, progress);
   }
+  /// inline-byte, crossline-byte, cdp-x-byte, cdp-y-byte, scalar-byte, offset-byte (header
+  /// positions) and offset (the pre-stack offset to load).
+  std::vector<ReaderOption> options() const override;
+  std::unique_ptr<Model> readWith(const std::string& path, const ReaderOptions& options,
+                                  const Progress& progress) const override;
 };
 
 }  // namespace volpost::seismic

@@ -74,10 +74,15 @@ const MeshReader& ReaderRegistry::choose(const std::string& path) const {
 }
 
 std::unique_ptr<Model> ReaderRegistry::load(const std::string& path, const Progress& progress) const {
+  return load(path, ReaderOptions{}, progress);
+}
+
+std::unique_ptr<Model> ReaderRegistry::load(const std::string& path, const ReaderOptions& options,
+                                            const Progress& progress) const {
   const MeshReader& reader = choose(path);
   std::unique_ptr<Model> model;
   try {
-    model = reader.read(path, progress);
+    model = options.empty() ? reader.read(path, progress) : reader.readWith(path, options, progress);
   } catch (const std::bad_alloc&) {
     throw ReadError(path, "ran out of memory while reading it: the file declares more data than this machine can "
                           "hold (memory budget " + byteSizeText(double(memoryBudget())) + ")");

@@ -160,6 +160,81 @@ TEST(SegyReader, PreStackFilesAreRefusedOrReadAtTheChosenOffset) {
   fs::remove(p);
 }
 
+// Reader options (what `--reader-option` and File > Reader Options... hand the reader):
+// header positions moved away from the standard bytes read as the original file does; the
+// pre-stack offset by name; bad names and values refused before reading, naming them.
+TEST(SegyReader, ReaderOptionsMoveHeaderPositionsAndPickAnOffset) {
+  const RegularGrid grid = surveyGrid();
+  const std::vector<double> values = surveyValues(grid);
+  const fs::path p = tempFile("moved_headers.sgy");
+  writeSegy(p.string(), grid, values, {SampleFormat::IeeeFloat32, ByteOrder::Big});
+  const auto original = readSegy(p.string(), {});
+  std::vector<char> bytes = bytesOf(p);
+  const std::size_t traceBytes = 240 + 6 * 4, traces = 4 * 3;
+  ASSERT_EQ(bytes.size(), 3600 + traces * traceBytes);
+  for (std::size_t t = 0; t < traces; ++t) {  // inline number from byte 189 to byte 17, crossline from 193 to 21
+    char* h = bytes.data() + 3600 + t * traceBytes;
+    std::copy(h + 188, h + 196, h + 16);
+    std::fill(h + 188, h + 196, char(0));
+  }
+  writeBytes(p, bytes);
+  expectRefused(p, "at least 2");  // the standard bytes now hold zeros: one inline
+  const SegyReader reader;
+  const auto model = reader.readWith(p.string(), {{"inline-byte", "17"}, {"crossline-byte", "21"}}, {});
+  EXPECT_EQ(model->grid->dims, grid.dims);
+  EXPECT_EQ(model->grid->firstLabel, grid.firstLabel);
+  EXPECT_EQ(model->grid->labelStep, grid.labelStep);
+  EXPECT_EQ(model->grid->axes, original->grid->axes);
+  EXPECT_EQ(model->grid->origin, original->grid->origin);
+
+  const auto refused = [&](const ReaderOptions& options, const std::string& words) {
+    try {
+      (void)reader.readWith(p.string(), options, {});
+      ADD_FAILURE() << "accepted " << options.begin()->first << "=" << options.begin()->second;
+    } catch (const ReaderOptionError& e) {
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+  };
+  refused({{"inline-byte", "238"}}, "must start at byte 1..237");
+  refused({{"inline-byte", "0"}}, "must start at byte 1..237");
+  refused({{"scalar-byte", "240"}}, "1..239");
+  refused({{"inline-byte", "17x"}}, "not a whole number");
+  refused({{"inline", "17"}}, "takes inline-byte, crossline-byte");
+  EXPECT_THROW((void)readSegy(p.string(), {TraceFieldPositions{240, 193}, std::nullopt}), std::invalid_argument)
+      << "the library call checks positions too";
+  fs::remove(p);
+
+  // The pre-stack file of the test above, its offset chosen by option.
+  const fs::path q = tempFile("prestack_option.sgy");
+  writeSegy(q.string(), grid, values, {SampleFormat::IeeeFloat32, ByteOrder::Big});
+  std::vector<char> pre = bytesOf(q);
+  std::vector<char> extra(pre.begin() + 3600, pre.begin() + std::ptrdiff_t(3600 + traceBytes));
+  extra[36 + 3] = 50;
+  pre.insert(pre.end(), extra.begin(), extra.end());
+  writeBytes(q, pre);
+  expectRefused(q, "--reader-option offset=N");
+  EXPECT_EQ(reader.readWith(q.string(), {{"offset", "0"}}, {})->grid->dims, grid.dims);
+  EXPECT_THROW((void)reader.readWith(q.string(), {{"offset", "7"}}, {}), ReadError);
+  fs::remove(q);
+}
+
+TEST(MeshReader, AReaderWithoutOptionsRefusesAnyButReadsWithNone) {
+  struct Plain : MeshReader {
+    std::string formatName() const override { return "plain"; }
+    std::vector<std::string> extensions() const override { return {"txt"}; }
+    int sniff(std::string_view) const override { return 1; }
+    std::unique_ptr<Model> read(const std::string&, const Progress&) const override { return std::make_unique<Model>(); }
+  } plain;
+  EXPECT_TRUE(plain.options().empty());
+  EXPECT_NE(plain.readWith("x.txt", {}, {}), nullptr);
+  try {
+    (void)plain.readWith("x.txt", {{"inline-byte", "9"}}, {});
+    ADD_FAILURE() << "an option was accepted by a reader that takes none";
+  } catch (const ReaderOptionError& e) {
+    EXPECT_STREQ(e.what(), "reader option inline-byte=9: the plain reader takes no options");
+  }
+}
+
 // ---- the shared test files ----------------------------------------------------------------
 
 std::vector<double> readAmplitudes(const std::string& path, RegularGrid* grid = nullptr) {

@@ -21,6 +21,9 @@ class ReaderRegistry {
   const MeshReader& choose(const std::string& path) const;
   /// choose() + read() + checkModel().
   std::unique_ptr<Model> load(const std::string& path, const Progress& progress = {}) const;
+  /// The same with reader options (readWith): an option the chosen reader does not take, or
+  /// a value it cannot use, throws ReaderOptionError before anything is read.
+  std::unique_ptr<Model> load(const std::string& path, const ReaderOptions& options, const Progress& progress) const;
 
  private:
   std::vector<const MeshReader*> readers_;
