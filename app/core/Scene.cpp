@@ -251,6 +251,8 @@ SceneState Scene::state() const {
   c.up = camera_.up();
   c.fieldOfView = camera_.fieldOfView();
   c.orthographic = camera_.projection() == Camera::Projection::Orthographic;
+  c.rotation = camera_.rotation();
+  c.distance = camera_.distance();
   s.camera = c;
   return s;
 }
@@ -276,7 +278,18 @@ void Scene::applyState(const SceneState& s) {
   if (s.camera) {
     camera.setProjection(s.camera->orthographic ? Camera::Projection::Orthographic : Camera::Projection::Perspective);
     camera.setFieldOfView(s.camera->fieldOfView);
-    camera.lookAt(s.camera->eye, s.camera->target, s.camera->up);
+    const CameraState& c = *s.camera;
+    camera.lookAt(c.eye, c.target, c.up);  // checks them
+    // The camera as it was held, when that agrees with the eye and up (to their coordinates'
+    // rounding); otherwise the eye and up as typed.
+    if (c.rotation && c.distance) {
+      Camera held = camera;
+      held.place(c.target, *c.rotation, *c.distance);
+      const double scale = glm::length(c.eye) + glm::length(c.target) + *c.distance;
+      if (glm::length(held.eye() - c.eye) <= 1e-12 * scale &&
+          glm::length(held.up() - glm::normalize(c.up)) <= 1e-12)
+        camera = held;
+    }
   } else {
     camera.setView(StandardView::Isometric);
     camera.fit(session_->model().mesh.bounds());

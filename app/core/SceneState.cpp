@@ -262,6 +262,11 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                      {"up", jsonOf(camera->up)},
                      {"fieldOfView", camera->fieldOfView},
                      {"projection", camera->orthographic ? "orthographic" : "perspective"}};
+    if (camera->rotation && camera->distance) {
+      const glm::dquat& q = *camera->rotation;
+      out["camera"]["rotation"] = json::array({q.w, q.x, q.y, q.z});
+      out["camera"]["distance"] = *camera->distance;
+    }
   } else {
     out["camera"] = nullptr;
   }
@@ -335,6 +340,18 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
       if (projection != "perspective" && projection != "orthographic")
         r.fail("camera.projection", "must be \"perspective\" or \"orthographic\"");
       c.orthographic = projection == "orthographic";
+    }
+    const json* rotation = r.find(*camera, "rotation");
+    const json* distance = r.find(*camera, "distance");
+    if (bool(rotation) != bool(distance)) r.fail("camera", "needs \"rotation\" and \"distance\" together");
+    if (rotation) {
+      if (!rotation->is_array() || rotation->size() != 4) r.fail("camera.rotation", "must be [w, x, y, z]");
+      double q[4];
+      for (std::size_t i = 0; i < 4; ++i) q[i] = r.number((*rotation)[i], "camera.rotation");
+      c.rotation = glm::dquat(q[0], q[1], q[2], q[3]);
+      c.distance = r.number(*distance, "camera.distance");
+      if (!(glm::length(*c.rotation) > 0.0) || !(*c.distance > 0.0) || !std::isfinite(*c.distance))
+        r.fail("camera", "has a zero rotation or a distance that is not positive");
     }
     if (!(glm::length(c.eye - c.target) > 0.0)) r.fail("camera", "has the eye on the target");
     if (!(glm::length(glm::cross(c.target - c.eye, c.up)) > 0.0)) r.fail("camera.up", "is parallel to the view direction");

@@ -16,6 +16,7 @@
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -38,6 +39,12 @@ struct CameraState {
   glm::dvec3 up{0.0, 1.0, 0.0};
   double fieldOfView = 30.0;  ///< vertical, degrees
   bool orthographic = false;
+  /// The rotation (w, x, y, z) and the eye's distance as the camera holds them: eye - target
+  /// rounded at a georeferenced model's coordinates (1e6 and more) loses the direction's
+  /// last bits, and a restored view would differ in a few edge pixels. Used when they agree
+  /// with eye, target and up (a hand-edited eye or up wins).
+  std::optional<glm::dquat> rotation;
+  std::optional<double> distance;
   bool operator==(const CameraState&) const = default;
 };
 

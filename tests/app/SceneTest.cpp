@@ -164,7 +164,7 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   s.modelPath = "/data/model.vtu";
   s.quantity = "S.mises";
   s.step = 2;
-  s.camera = CameraState{{1, 2, 3}, {0, 0, 0}, {0, 0, 1}, 40.0, true};
+  s.camera = CameraState{{1, 2, 3}, {0, 0, 0}, {0, 0, 1}, 40.0, true, glm::dquat(0.5, 0.1, -0.7, 0.3), std::sqrt(14.0)};
   s.colorMap = "viridis";
   s.fixedRange = DisplayRange{-1.0, 2.5};
   s.edges = false;
@@ -196,6 +196,42 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   // A model next to the state file is written relative to it, and found again.
   const SceneState moved = SceneState::fromJson(s.toJson("/data"), "/elsewhere/view.json");
   EXPECT_EQ(moved.modelPath, "/elsewhere/model.vtu");
+}
+
+// A model 6e6 units from the origin (a georeferenced survey): the view restored from a
+// state is the live one exactly, so the pictures are the same bit for bit; a hand-edited
+// eye that no longer agrees with the stored direction wins.
+TEST(SceneState, AViewFarFromTheOriginIsRestoredExactly) {
+  Camera live;
+  Bounds far;
+  far.extend({620000.0, 6080000.0, -160.0});
+  far.extend({620300.0, 6080330.0, 0.0});
+  live.setView(StandardView::Isometric);
+  live.fit(far);
+  live.orbit(17.0, -9.0);
+  CameraState c{live.eye(), live.target(), live.up(), live.fieldOfView(), false, live.rotation(), live.distance()};
+  SceneState s;
+  s.modelPath = "/data/cube.sgy";
+  s.camera = c;
+  const CameraState back = *SceneState::fromJson(s.toJson(), "/data/view.json").camera;
+  Camera restored;
+  restored.fit(far);
+  restored.place(back.target, *back.rotation, *back.distance);
+  EXPECT_EQ(restored.viewMatrix(far.center()), live.viewMatrix(far.center())) << "bit for bit";
+  Camera fromEye;
+  fromEye.fit(far);
+  fromEye.lookAt(back.eye, back.target, back.up);
+  const double lost = glm::length(fromEye.viewDirection() - live.viewDirection());
+  EXPECT_GT(lost, 1e-14) << "eye - target alone loses the last bits here";
+  EXPECT_LT(lost, 1e-9);
+  std::string onlyRotation = s.toJson();
+  onlyRotation.replace(onlyRotation.find("\"distance\""), 10, "\"unrelated\"");
+  try {
+    (void)SceneState::fromJson(onlyRotation, "/data/view.json");
+    ADD_FAILURE() << "a rotation without its distance was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("\"rotation\" and \"distance\" together"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneState, RefusalsNameTheFileAndTheKey) {

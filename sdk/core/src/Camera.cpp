@@ -50,6 +50,18 @@ void Camera::lookAt(const glm::dvec3& eye, const glm::dvec3& target, const glm::
   rotation_ = lookRotation(view, up);
 }
 
+void Camera::place(const glm::dvec3& target, const glm::dquat& rotation, double distance) {
+  const double length = glm::length(rotation);
+  if (!std::isfinite(distance) || !(distance > 0.0) || !std::isfinite(length) || !(length > 0.0) ||
+      !std::isfinite(glm::length(target)))
+    throw std::invalid_argument("camera: the rotation and distance must be finite and non-zero");
+  target_ = target;
+  distance_ = distance;
+  // A unit quaternion as given stays bit for bit what it was (the view is then exactly the
+  // saved one); another is made unit.
+  rotation_ = std::abs(length - 1.0) < 1e-12 ? rotation : rotation / length;
+}
+
 void Camera::setFieldOfView(double degrees) {
   if (!(degrees > 0.0 && degrees < 180.0))
     throw std::invalid_argument("camera: the angle of view must lie between 0 and 180 degrees");

@@ -39,6 +39,14 @@ class Camera {
   /// direction (it is made so). The scene radius set by fit() is kept (it sets the depth
   /// range). Throws std::invalid_argument if eye == target or up is parallel to the view.
   void lookAt(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up);
+  /// The camera exactly as another one holds it (target, rotation(), distance()): exact
+  /// where the eye's coordinates are not (a model far from the origin, such as a
+  /// georeferenced survey, where eye - target loses the direction's last bits). Throws
+  /// std::invalid_argument for a non-finite or zero rotation or a distance that is not
+  /// positive.
+  void place(const glm::dvec3& target, const glm::dquat& rotation, double distance);
+  /// The eye's orientation: its x right, y up, z backwards (from the target to the eye).
+  const glm::dquat& rotation() const { return rotation_; }
 
   void setProjection(Projection p) { projection_ = p; }
   Projection projection() const { return projection_; }
