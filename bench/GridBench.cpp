@@ -40,6 +40,7 @@ const char* kUsage =
     "  --frames N      timed frames per row (default 3; the median is shown)\n"
     "  --steps A,B,..  steps as fractions of the grid spacing (default 1,0.5,0.25)\n"
     "  --cpu-only      only the CPU marcher (no GL rows)\n"
+    "  --shading       lit by the gradient (headlight), the reference too\n"
     "  --interactive   also the renderers as the window drives them: 1024x768, the view turning\n"
     "                  5 degrees per frame, quick reduced frames (frames per second)\n";
 
@@ -72,7 +73,7 @@ Errors compare(const std::vector<float>& image, const optics::ReferenceImage& re
 int main(int argc, char** argv) {
   std::size_t n = 128;
   int size = 512, frames = 3;
-  bool cpuOnly = false, interactive = false;
+  bool cpuOnly = false, interactive = false, shading = false;
   std::vector<double> steps = {1.0, 0.5, 0.25};
   for (int a = 1; a < argc; ++a) {
     const bool more = a + 1 < argc;
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[a], "--frames") && more) frames = std::atoi(argv[++a]);
     else if (!std::strcmp(argv[a], "--cpu-only")) cpuOnly = true;
     else if (!std::strcmp(argv[a], "--interactive")) interactive = true;
+    else if (!std::strcmp(argv[a], "--shading")) shading = true;
     else if (!std::strcmp(argv[a], "--steps") && more) {
       steps.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ",")) steps.push_back(std::atof(s));
@@ -103,18 +105,22 @@ int main(int argc, char** argv) {
 
   std::fprintf(stderr, "reference (exact trilinear) at %dx%d...\n", size, size);
   const auto refStart = Clock::now();
-  const optics::ReferenceImage reference = optics::renderGridReference(grid, cube.values, tf, camera, size, size);
+  optics::RaySettings referenceSettings;
+  referenceSettings.shading = shading;
+  const optics::ReferenceImage reference =
+      optics::renderGridReference(grid, cube.values, tf, camera, size, size, referenceSettings);
   const double refMs = std::chrono::duration<double, std::milli>(Clock::now() - refStart).count();
 
-  std::printf("Synthetic seismic cube %zu^3 (%.1f M points), %dx%d, early termination off; reference %.0f ms\n\n", n,
-              double(grid.pointCount()) / 1e6, size, size, refMs);
+  std::printf("Synthetic seismic cube %zu^3 (%.1f M points), %dx%d, early termination off, %s; reference %.0f ms\n\n", n,
+              double(grid.pointCount()) / 1e6, size, size, shading ? "lit by the gradient" : "unlit", refMs);
   std::printf("| renderer | step / spacing | ms/frame (median of %d) | RMSE | max error |\n|---|---:|---:|---:|---:|\n",
               frames);
-  const auto row = [&](const char* name, double fraction, VolumeRenderer& r, const std::function<void()>& frame) {
+  const auto row = [&](const char* name, double fraction, GridVolumeRenderer& r, const std::function<void()>& frame) {
     // Frames after the first: the grid and tables are on the GPU, only the frame is timed.
     r.setTransferFunction(tf);
     r.setTerminationThreshold(0.0);
     r.setSamplingStep(fraction * spacing);
+    r.setShading(shading);
     frame();  // not timed: shader compilation, the upload
     std::vector<double> times;
     for (int f = 0; f < frames; ++f) {

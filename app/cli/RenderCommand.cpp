@@ -115,6 +115,9 @@ struct Options {
                                            "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
                                            "step unless --range is given)."};
   QCommandLineOption readerOption = readerOptionOption();
+  QCommandLineOption slice{"slice", "A regular grid's slice: AXIS=VALUE, e.g. inline=1005, crossline=2003, time=80 "
+                                    "(ms), or i/j/k=LABEL for image data (repeatable, one per axis); drawn in the "
+                                    "surface view and, opaque, in the volume.", "AXIS=VALUE"};
   QCommandLineOption fps{"fps", "Frames (steps) per second of an --all-steps video (default 4).", "N"};
   StreamlineOptions lineOptions;
 };
@@ -282,6 +285,24 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
   if (p.isSet(o.noTriad)) scene.setShowTriad(false);
+  if (p.isSet(o.slice)) {
+    const auto& grid = scene.session()->model().grid;
+    if (!grid)
+      throw UsageError("--slice needs a regular grid (SEG-Y, image data, NRRD); this model is a mesh: use --clip");
+    std::array<std::optional<double>, 3> labels = scene.state().gridSlices;
+    for (const QString& text : p.values(o.slice)) {
+      const int a = gridAxisNamed(*grid, text.section('=', 0, 0).trimmed().toStdString());
+      bool ok = false;
+      const double value = text.section('=', 1).toDouble(&ok);
+      if (a < 0 || !text.contains('=') || !ok || !std::isfinite(value))
+        throw UsageError(QString("--slice %1 is not AXIS=VALUE with AXIS one of %2, %3, %4 (or i, j, k)")
+                             .arg(text, QString::fromStdString(grid->axisNames[0]), QString::fromStdString(grid->axisNames[1]),
+                                  QString::fromStdString(grid->axisNames[2]))
+                             .toStdString());
+      labels[std::size_t(a)] = value;
+    }
+    scene.setGridSlices(labels);  // invalid_argument (outside the grid): a usage error
+  }
   if (p.isSet(o.deform)) {
     const QString text = p.value(o.deform);
     DeformationLayer d;
@@ -369,7 +390,7 @@ int runRender(const QStringList& args) {
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps, o.readerOption});
+                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps, o.readerOption, o.slice});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

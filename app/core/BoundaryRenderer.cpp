@@ -18,6 +18,10 @@ void BoundaryRenderer::initialize() {
   surface_.initialize();
   sections_.initialize();
   sections_.setShowEdges(false);
+  slices_.initialize();
+  slices_.setShowEdges(false);
+  slicesFor_.reset();
+  sliceTriangles_ = 0;
   cutFor_.reset();
   surfaceUploaded_ = false;
   initialized_ = true;
@@ -40,6 +44,9 @@ void BoundaryRenderer::ensureSurface() {
 void BoundaryRenderer::release() {
   surface_.release();
   sections_.release();
+  slices_.release();
+  slicesFor_.reset();
+  sliceTriangles_ = 0;
   for (auto& r : isoRenderers_) r->release();
   isoRenderers_.clear();
   isoFor_.reset();
@@ -52,6 +59,8 @@ void BoundaryRenderer::release() {
 void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
   cutFor_.reset();
+  slicesFor_.reset();
+  sliceTriangles_ = 0;
   isoFor_.reset();
   surface_.clearScalars();
   pendingScalars_.reset();
@@ -99,6 +108,42 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
   sections_.setTriangles(corners, session_->origin());
   if (view) sections_.setScalars(FieldLocation::Node, values, range.min, range.max);
   else sections_.clearScalars();
+}
+
+void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
+                                 DisplayRange range) {
+  if (!initialized_ || !session_) return;
+  const CutKey key{planes, viewVersion, range, view != nullptr};
+  if (slicesFor_ == key) return;
+  slicesFor_ = key;
+  std::vector<glm::dvec3> corners;
+  std::vector<double> values;
+  if (!planes.empty()) {
+    const TetMesh& tets = session_->tetrahedra();
+    const std::vector<double> tetValues = view ? session_->tetValues(*view) : std::vector<double>{};
+    const bool perNode = view && view->location == FieldLocation::Node;
+    for (const ClipPlane& plane : planes) {
+      SectionTriangles cut = cutTetrahedra(tets, tetValues, perNode, plane);
+      corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
+      values.insert(values.end(), cut.values.begin(), cut.values.end());
+    }
+  }
+  sliceTriangles_ = corners.size() / 3;
+  slices_.setTriangles(corners, session_->origin());
+  if (view) slices_.setScalars(FieldLocation::Node, values, range.min, range.max);
+  else slices_.clearScalars();
+}
+
+void BoundaryRenderer::renderSlices(const RenderContext& ctx) {
+  if (!session_ || sliceTriangles_ == 0) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  RenderContext local = ctx;
+  local.origin = session_->origin();
+  slices_.render(local);
+  glDisable(GL_DEPTH_TEST);
 }
 
 void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces, const ScalarView* view,
@@ -165,6 +210,7 @@ void BoundaryRenderer::renderOver(const RenderContext& ctx) {
     const bool seeThrough = opacity_ < 1.0f;
     if (surfaceShown_ && !seeThrough) surface_.render(local);
     if (sectionTriangles_ > 0) sections_.render(local);
+    if (sliceTriangles_ > 0) slices_.render(local);
     for (auto& iso : isoRenderers_) iso->render(local);
     if (surfaceShown_ && seeThrough) surface_.render(local);
   }

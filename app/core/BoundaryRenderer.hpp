@@ -33,7 +33,17 @@ class BoundaryRenderer {
   void setColorMap(const ColorMap& map) {
     surface_.setColorMap(map);
     sections_.setColorMap(map);
+    slices_.setColorMap(map);
   }
+  /// Slices through the model on these planes (a regular grid's inline, crossline and time
+  /// slices), colored by the view's values as the surface is, without cutting anything
+  /// away. Recomputed only when the planes, `viewVersion` or the range change.
+  void setSlices(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
+                 DisplayRange range);
+  std::size_t sliceTriangles() const { return sliceTriangles_; }
+  /// Only the slices, depth-tested, over what the target holds (the opaque part of a
+  /// volume picture).
+  void renderSlices(const RenderContext& ctx);
   /// Section cuts: the surface is cut away on the far side of each plane (the side its
   /// normal points away from) and the model's cross-section on each plane is drawn, colored
   /// by the view's values interpolated in the tets, as the surface is. Recomputed only when
@@ -53,6 +63,7 @@ class BoundaryRenderer {
   void setLighting(bool on) {
     surface_.setLighting(on);
     sections_.setLighting(on);
+    slices_.setLighting(on);
   }
 
   /// Off: only the sections and iso-surfaces are drawn, not the boundary surface.
@@ -74,6 +85,7 @@ class BoundaryRenderer {
  private:
   SurfaceRenderer surface_;
   SurfaceRenderer sections_;
+  SurfaceRenderer slices_;
   std::shared_ptr<const ModelSession> session_;
   struct CutKey {
     std::vector<ClipPlane> planes;
@@ -83,6 +95,8 @@ class BoundaryRenderer {
     bool operator==(const CutKey&) const = default;
   };
   std::optional<CutKey> cutFor_;  ///< what the sections now uploaded were cut for
+  std::optional<CutKey> slicesFor_;  ///< and the slices
+  std::size_t sliceTriangles_ = 0;
   std::vector<std::unique_ptr<SurfaceRenderer>> isoRenderers_;  ///< one per iso-surface
   std::optional<std::pair<std::vector<double>, std::uint64_t>> isoFor_;  ///< values and view version extracted
   std::size_t isoTriangles_ = 0;

@@ -11,6 +11,8 @@
 #include "VolumeDefaults.hpp"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -64,6 +66,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.clipPlanes.clear();
   state_.volume.clipBox.reset();
   state_.volume.isoSurfaces.clear();
+  state_.gridSlices = {};
+  state_.surfaceShown = true;  // hidden for another model's slices, it would leave this one's view empty
   state_.volume.transferFunction.reset();
   state_.streamlines = StreamlineLayer{};
   streamlineResult_.reset();
@@ -223,6 +227,74 @@ void Scene::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
   changed_.iso = true;
 }
 
+namespace {
+
+// Throws unless each set label lies on its axis of the grid (within half a step).
+void checkGridSlices(const std::optional<RegularGrid>& grid, const std::array<std::optional<double>, 3>& labels) {
+  if (!labels[0] && !labels[1] && !labels[2]) return;
+  if (!grid)
+    throw std::invalid_argument("grid slices (inline, crossline, time) need a regular grid (SEG-Y, image data); this "
+                                "model is a mesh: use clip planes");
+  for (int a = 0; a < 3; ++a) {
+    const auto& label = labels[std::size_t(a)];
+    if (!label) continue;
+    const double index = (*label - grid->firstLabel[std::size_t(a)]) / grid->labelStep[std::size_t(a)];
+    const double last = double(grid->dims[std::size_t(a)] - 1);
+    if (!std::isfinite(index) || index < -0.5 || index > last + 0.5) {
+      const double from = grid->label(a, 0.0), to = grid->label(a, last);
+      const auto number = [](double v) {
+        std::ostringstream text;
+        text << std::setprecision(10) << v;
+        return text.str();
+      };
+      throw std::invalid_argument("the " + grid->axisNames[std::size_t(a)] + " slice at " + number(*label) +
+                                  " lies outside the grid's " + grid->axisNames[std::size_t(a)] + " " +
+                                  number(std::min(from, to)) + " .. " + number(std::max(from, to)));
+    }
+  }
+}
+
+}  // namespace
+
+int gridAxisNamed(const RegularGrid& grid, const std::string& name) {
+  const auto lower = [](std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  const std::string wanted = lower(name);
+  for (int a = 0; a < 3; ++a) {
+    const std::string axis = lower(grid.axisNames[std::size_t(a)]);
+    const std::string firstWord = axis.substr(0, axis.find_first_of(" ("));
+    if (wanted == axis || wanted == firstWord || wanted == std::string(1, char('i' + a)) || wanted == std::to_string(a + 1))
+      return a;
+  }
+  return -1;
+}
+
+void Scene::setGridSlices(const std::array<std::optional<double>, 3>& labels) {
+  checkGridSlices(session_ ? session_->model().grid : std::nullopt, labels);
+  state_.gridSlices = labels;
+}
+
+std::vector<ClipPlane> Scene::gridSlicePlanes() const {
+  std::vector<ClipPlane> planes;
+  if (!session_ || !session_->model().grid) return planes;
+  const RegularGrid& g = *session_->model().grid;
+  for (int a = 0; a < 3; ++a) {
+    const auto& label = state_.gridSlices[std::size_t(a)];
+    if (!label) continue;
+    // At the label's position along its axis, across the other two axes; the first and last
+    // layers a millionth of a step inside (a plane on the box's face cuts no cell), and a
+    // label up to half a step outside cuts the outermost layer.
+    const double last = double(g.dims[std::size_t(a)] - 1), inside = 1e-6;
+    const double index =
+        std::clamp((*label - g.firstLabel[std::size_t(a)]) / g.labelStep[std::size_t(a)], inside, last - inside);
+    const glm::dvec3 normal = glm::normalize(glm::cross(g.axes[std::size_t((a + 1) % 3)], g.axes[std::size_t((a + 2) % 3)]));
+    planes.push_back({g.origin + g.axes[std::size_t(a)] * index, normal});
+  }
+  return planes;
+}
+
 void Scene::setSamplingStep(double step) {
   if (!(step >= 0.0) || !std::isfinite(step)) throw std::invalid_argument("the sampling step must be >= 0 (0: automatic)");
   state_.volume.samplingStep = step;
@@ -270,6 +342,7 @@ void Scene::applyState(const SceneState& s) {
   checkProbes(s.probes);
   if (s.deformation.shown) checkDeformationField(*baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
+  checkGridSlices(session_->model().grid, s.gridSlices);
   if (s.volume.allClipPlanes().size() > std::size_t(kMaxClipPlanes) ||
       s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
     throw std::invalid_argument("too many clip planes or iso-surfaces");
@@ -613,6 +686,7 @@ void Scene::applyToBoundary() {
                     view_ ? &*view_ : nullptr, viewVersion_, displayRange());
   boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces,
                            view_ ? &*view_ : nullptr, viewVersion_);
+  boundary_.setSlices(gridSlicePlanes(), view_ ? &*view_ : nullptr, viewVersion_, displayRange());
   changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
 }
 
@@ -749,7 +823,8 @@ void Scene::renderVolume(const RenderContext& ctx) {
   applyToVolume();
   RenderContext volumeCtx = ctx;
   const bool lines = streamlinesDrawn();
-  if (state_.volume.edges || lines) {
+  const bool slices = boundary_.sliceTriangles() > 0;
+  if (state_.volume.edges || lines || slices) {
     // The opaque things (edges, streamlines) drawn into the target and, depth only, into a
     // texture the volume renderer reads: its rays end at them.
     if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
@@ -762,6 +837,7 @@ void Scene::renderVolume(const RenderContext& ctx) {
       RenderContext pass = ctx;
       pass.framebuffer = target;
       boundary_.renderBackground(pass);
+      if (slices) boundary_.renderSlices(pass);
       if (lines) streamlineRenderer_.render(pass);
       if (state_.volume.edges) boundary_.renderOver(pass);
     }

@@ -28,6 +28,10 @@
 
 namespace volpost::app {
 
+/// The axis of `grid` a user names: the first word of its name ("inline", "crossline",
+/// "time" for a survey), its letter (i, j, k) or its number (1, 2, 3), any case; -1 for none.
+int gridAxisNamed(const RegularGrid& grid, const std::string& name);
+
 /// A volume renderer by its plugin name, or nullptr if no plugin offers it.
 using VolumeRendererFactory = std::function<std::unique_ptr<VolumeRenderer>(const std::string& name)>;
 
@@ -106,6 +110,12 @@ class Scene {
   void setClipPlanes(std::vector<ClipPlane> planes);
   void setClipBox(std::optional<ClipBox> box);
   void setIsoSurfaces(std::vector<optics::IsoSurface> surfaces);
+  /// A regular grid's slices (inline, crossline, time for a survey) at these labels,
+  /// drawn in the surface view and, opaque, in the volume. Throws std::invalid_argument
+  /// for a model that is not a grid or a label outside its axis (naming both).
+  void setGridSlices(const std::array<std::optional<double>, 3>& labels);
+  /// The planes of the slices now set, in model coordinates.
+  std::vector<ClipPlane> gridSlicePlanes() const;
   void setSamplingStep(double step);
   void setTermination(double transmittance);
   /// Regular grids: the volume's emission lit by the trilinear gradient (light at the eye).

@@ -255,6 +255,11 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   }
   out["model"] = model;
   if (!readerOptions.empty()) out["readerOptions"] = readerOptions;
+  if (gridSlices[0] || gridSlices[1] || gridSlices[2]) {
+    json slices = json::array();
+    for (const auto& s : gridSlices) slices.push_back(s ? json(*s) : json(nullptr));
+    out["gridSlices"] = slices;
+  }
   out["result"] = {{"quantity", quantity.empty() ? json(nullptr) : json(quantity)}, {"step", step + 1}};
   if (camera) {
     out["camera"] = {{"eye", jsonOf(camera->eye)},
@@ -310,6 +315,12 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   s.modelPath = r.text(*model, "model");
   if (!s.modelPath.empty() && fs::path(s.modelPath).is_relative())
     s.modelPath = (fs::absolute(fileName).parent_path() / s.modelPath).lexically_normal().string();
+  if (const json* slices = r.find(in, "gridSlices")) {
+    if (!slices->is_array() || slices->size() != 3)
+      r.fail("gridSlices", "must be [inline, crossline, time]: a number or null for each grid axis");
+    for (std::size_t a = 0; a < 3; ++a)
+      if (!(*slices)[a].is_null()) s.gridSlices[a] = r.number((*slices)[a], "gridSlices");
+  }
   if (const json* options = r.find(in, "readerOptions")) {
     r.object(*options, "readerOptions");
     for (const auto& [name, value] : options->items())

@@ -101,6 +101,10 @@ struct SceneState {
   static constexpr int kVersion = 1;
 
   std::string modelPath;
+  /// A regular grid's slices along each of its axes (inline, crossline, time for a survey)
+  /// at these labels (an inline number, a time in ms ...); nullopt: no slice on that axis.
+  /// "gridSlices" in the file: [inline or null, crossline or null, time or null].
+  std::array<std::optional<double>, 3> gridSlices;
   ReaderOptions readerOptions;  ///< what the model was read with (SEG-Y header bytes ...); "readerOptions" in the file
   std::string quantity;       ///< written form ("S.mises"); empty: the plain surface
   std::size_t step = 0;       ///< 0-based here, 1-based in the file

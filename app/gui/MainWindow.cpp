@@ -11,6 +11,7 @@
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "StepController.hpp"
+#include "GridSlicesDialog.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
@@ -380,6 +381,8 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   clip->addSeparator();
   clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
   view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
+  view->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
+      ->setObjectName("gridSlicesAction");
   QMenu* lines = view->addMenu("&Streamlines");
   lines->addAction("&Streamlines...", this, &MainWindow::chooseStreamlines);
   QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
@@ -661,6 +664,29 @@ void MainWindow::chooseClipBox() {
   }
 }
 
+void MainWindow::showGridSlices() {
+  if (!session_ || !session_->model().grid) {
+    statusBar()->showMessage("Grid slices are for regular grids (SEG-Y, image data, NRRD); for meshes use View > Clip Plane");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  const auto& slices = scene.state().gridSlices;
+  if (!slices[0] && !slices[1] && !slices[2]) {
+    // First use: the three middle slices, the surface out of their way.
+    const RegularGrid& g = *session_->model().grid;
+    std::array<std::optional<double>, 3> middle;
+    for (int a = 0; a < 3; ++a) middle[std::size_t(a)] = g.label(a, std::round(double(g.dims[std::size_t(a)] - 1) / 2.0));
+    changeScene([&](Scene& s) {
+      s.setGridSlices(middle);
+      s.setSurfaceShown(false);
+    });
+  }
+  if (!gridSlices_) gridSlices_ = new GridSlicesDialog(scene, [this] { viewport_->update(); }, this);
+  gridSlices_->followScene();
+  gridSlices_->show();
+  gridSlices_->raise();
+}
+
 void MainWindow::chooseIsoSurfaces() {
   QString text = isoSurfacesText(viewport_->scene().volume().isoSurfaces);
   if (text.isEmpty()) {
@@ -937,6 +963,10 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   setWindowTitle(QString("%1 - volpost").arg(QFileInfo(QString::fromStdString(m.sourcePath)).fileName()));
   viewport_->scene().setSession(session_);
   viewport_->update();
+  if (gridSlices_) {
+    gridSlices_->followScene();
+    if (!session_->model().grid) gridSlices_->hide();
+  }
   for (QAction* action : {volumeAction_, streamlinesAction_}) {
     if (!action) continue;
     const QSignalBlocker block(action);
@@ -1191,6 +1221,7 @@ void MainWindow::applyState(const SceneState& state) {
     userTransferFunctions_[viewport_->scene().view()->quantity.key()] = *state.volume.transferFunction;
   rendererChosen_ = true;  // the state names its renderer
   syncControlsToScene();
+  if (gridSlices_) gridSlices_->followScene();
   viewport_->update();
   notifyPanels();
   statusBar()->showMessage("View restored from the state file");

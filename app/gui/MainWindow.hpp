@@ -94,6 +94,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void applyState(const SceneState& state);
   void chooseStateToSave();
   void chooseStateToOpen();
+  /// View > Grid Slices... (G): the slices dialog; on first use the three middle slices.
+  void showGridSlices();
   /// The dialog of File > Reader Options...: a field per option of the last file's reader.
   void editReaderOptions();
   void setClipAxis(int axis);
@@ -153,6 +155,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
+  class GridSlicesDialog* gridSlices_ = nullptr;
   QString lastPath_;              ///< the last file opened or tried (for File > Reader Options)
   ReaderOptions lastReaderOptions_;
   QString pendingStatePath_;

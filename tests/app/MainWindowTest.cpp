@@ -34,6 +34,8 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QSettings>
+#include <QSlider>
+#include <QCheckBox>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QStandardPaths>
@@ -714,6 +716,36 @@ class MainWindowTest : public QObject {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     QVERIFY(view->scene().state().volume.renderer != "texture-raymarch");
     QVERIFY(!marcher->isChecked());
+  }
+
+  // View > Grid Slices... (G): the three middle slices at once with the surface out of their
+  // way; a slider moves its slice, a box switches it off; the picture follows.
+  void gridSlicesFollowTheDialog() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/seismic/synthetic_12x10x40.sgy"));
+    QVERIFY(window_->selectQuantity("amplitude"));
+    Viewport* view = window_->viewport();
+    window_->findChild<QAction*>("gridSlicesAction")->trigger();
+    const auto& slices = view->scene().state().gridSlices;
+    QVERIFY(slices[0] && slices[1] && slices[2]);
+    QCOMPARE(*slices[0], 1006.0);  // inlines 1000 .. 1011: the middle one, rounded up
+    QCOMPARE(*slices[2], 80.0);    // times 0 .. 156 ms
+    QVERIFY(!view->scene().state().surfaceShown);
+    const QImage three = settled(view);
+    auto* time = window_->findChild<QSlider*>("gridSlice2");
+    QVERIFY(time && time->isEnabled());
+    time->setValue(5);
+    QCOMPARE(*view->scene().state().gridSlices[2], 20.0);
+    window_->findChild<QCheckBox*>("gridSliceShown0")->setChecked(false);
+    QVERIFY(!view->scene().state().gridSlices[0]);
+    QVERIFY(settled(view) != three);
+    window_->findChild<QCheckBox*>("gridSlicesSurface")->setChecked(true);
+    QVERIFY(view->scene().state().surfaceShown);
+    window_->findChild<QCheckBox*>("gridSlicesSurface")->setChecked(false);
+    // A mesh next: no slices, its surface shown, the dialog's controls off.
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QVERIFY(!view->scene().state().gridSlices[1]);
+    QVERIFY(view->scene().state().surfaceShown);
+    QVERIFY(!time->isEnabled());
   }
 
   // File > Reader Options...: a SEG-Y file whose inline numbers are not at the standard

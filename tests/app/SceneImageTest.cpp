@@ -47,3 +47,67 @@ TEST(SceneImage, BarMiddleShowsTheAnalyticAxialStress) {
     }
   EXPECT_GT(checked, 200);
 }
+
+// A regular grid's slices: nothing drawn without them (surface hidden); a slice draws the
+// grid's values across it, and the bottom slice seen from below is the box's bottom face
+// (the same values on the same plane); refused on a mesh and outside the grid, naming the
+// axis and its range; kept in the state.
+TEST(SceneImage, GridSlicesShowTheValuesAcrossTheGrid) {
+  try {
+    HeadlessContext probe;
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
+  }
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/image_ascii.vti")));
+  scene.setResult("temperature", 0);
+  scene.setShowEdges(false);
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  scene.setLighting(false);
+  const auto coloured = [](const QImage& image) {
+    const QRgb background = image.pixel(0, 0);
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) n += image.pixel(x, y) != background;
+    return n;
+  };
+  applyCameraSpec(scene.camera(), "-z,ortho");
+  const QImage face = renderSceneImage(scene, 96, 96).picture;  // the box's bottom face, k = 2
+  scene.setSurfaceShown(false);
+  EXPECT_EQ(coloured(renderSceneImage(scene, 96, 96).picture), 0) << "no surface, no slice: nothing";
+  scene.setGridSlices({std::nullopt, std::nullopt, 2.0});
+  ASSERT_EQ(scene.gridSlicePlanes().size(), 1u);
+  const QImage bottom = renderSceneImage(scene, 96, 96).picture;
+  EXPECT_GT(coloured(bottom), 400);
+  // The face's quads and the slice's cut tets interpolate the same corner values; only the
+  // split of each quad into triangles may differ.
+  double difference = 0;
+  int compared = 0;
+  for (int y = 0; y < 96; ++y)
+    for (int x = 0; x < 96; ++x)
+      if (face.pixel(x, y) != face.pixel(0, 0) && bottom.pixel(x, y) != bottom.pixel(0, 0)) {
+        difference += std::abs(qRed(face.pixel(x, y)) - qRed(bottom.pixel(x, y))) +
+                      std::abs(qBlue(face.pixel(x, y)) - qBlue(bottom.pixel(x, y)));
+        ++compared;
+      }
+  ASSERT_GT(compared, 400);
+  EXPECT_NEAR(compared, coloured(face), 0.05 * coloured(face)) << "the slice covers the face";
+  EXPECT_LT(difference / compared, 6.0) << "mean difference per pixel, of 510";
+  scene.setGridSlices({std::nullopt, std::nullopt, 4.0});
+  EXPECT_NE(renderSceneImage(scene, 96, 96).picture, bottom) << "the top slice has other values";
+  try {
+    scene.setGridSlices({std::nullopt, 7.5, std::nullopt});
+    ADD_FAILURE() << "a slice outside the grid was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "the j slice at 7.5 lies outside the grid's j 0 .. 3");
+  }
+  EXPECT_EQ(scene.state().gridSlices[2], 4.0) << "a refused change leaves the slices";
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/tmp/s.json");
+  EXPECT_EQ(back.gridSlices, scene.state().gridSlices);
+
+  Scene mesh([](const std::string&) { return nullptr; });
+  mesh.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  EXPECT_THROW(mesh.setGridSlices({1.0, std::nullopt, std::nullopt}), std::invalid_argument);
+  EXPECT_NO_THROW(mesh.setGridSlices({}));
+}
