@@ -80,7 +80,7 @@ Found findElement(const ModelSession& session, const glm::dvec3& p) {
       return {ProbeMethod::Isoparametric, at->cell, *xiAt, {}};
   }
   std::vector<std::size_t> cells;
-  for (std::uint32_t t : locator.tetsNear(p, locator.gridSpacing())) cells.push_back(tets.cellOfTet[t]);
+  for (std::uint32_t t : locator.tetsNear(p, locator.gridSpacing())) cells.push_back(tets.sourceCell(t));
   std::sort(cells.begin(), cells.end());
   cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   for (std::size_t cell : cells) {

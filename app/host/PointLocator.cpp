@@ -113,7 +113,7 @@ std::optional<PointLocation> PointLocator::locate(const glm::dvec3& p, double to
   const Mesh& m = tets_.mesh;
   const auto locationIn = [&](std::size_t t, const std::array<double, 4>& w) {
     const auto n = m.cellNodes(t);
-    return PointLocation{t, tets_.cellOfTet[t], {n[0], n[1], n[2], n[3]}, w};
+    return PointLocation{t, tets_.sourceCell(t), {n[0], n[1], n[2], n[3]}, w};
   };
   // Inside a tet of p's grid cell: done. Otherwise the nearest tet within the tolerance,
   // also among the neighbouring grid cells (a point just outside a tet's bounding box can

@@ -18,7 +18,7 @@ namespace volpost {
 
 struct PointLocation {
   std::size_t tet = 0;                 ///< tet of TetMesh::mesh
-  std::size_t cell = 0;                ///< the source cell (TetMesh::cellOfTet)
+  std::size_t cell = 0;                ///< the source cell (TetMesh::sourceCell)
   std::array<NodeIndex, 4> nodes{};    ///< the tet's nodes (TetMesh::mesh numbering)
   std::array<double, 4> weights{};     ///< barycentric weights, sum 1
 };

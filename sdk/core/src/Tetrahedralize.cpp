@@ -165,9 +165,7 @@ TetMesh tetrahedralize(const Mesh& mesh) {
     out.mesh.nodes = mesh.nodes;
     out.mesh.shareCellsOf(mesh);
     out.originalNodes = mesh.nodeCount();
-    out.cellOfTet.resize(mesh.cellCount());
-    std::iota(out.cellOfTet.begin(), out.cellOfTet.end(), 0u);
-    return out;
+    return out;  // cellOfTet empty: each tet is its source cell
   }
   out.mesh.nodes = mesh.nodes;
   out.originalNodes = mesh.nodeCount();
@@ -212,8 +210,8 @@ std::vector<double> TetMesh::nodeValues(const Mesh& source, std::span<const doub
 }
 
 std::vector<double> TetMesh::cellValues(std::span<const double> values) const {
-  std::vector<double> out(cellOfTet.size());
-  for (std::size_t t = 0; t < cellOfTet.size(); ++t) out[t] = values[cellOfTet[t]];
+  std::vector<double> out(mesh.cellCount());
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = values[sourceCell(t)];
   return out;
 }
 

@@ -64,7 +64,7 @@ TEST_P(TetrahedralizeEachCell, KeepsTheVolumeWithPositiveTets) {
   EXPECT_NEAR(c.volume, volume, 1e-14);
   EXPECT_GT(c.smallestVolume, 0.0);
   EXPECT_EQ(c.overShared, 0u);
-  for (std::uint32_t cell : t.cellOfTet) EXPECT_EQ(cell, 0u);
+  for (std::size_t tet = 0; tet < t.mesh.cellCount(); ++tet) EXPECT_EQ(t.sourceCell(tet), 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Cells, TetrahedralizeEachCell, ::testing::ValuesIn(kAllCellTypes),
@@ -219,7 +219,10 @@ TEST(Tetrahedralize, APositiveTetMeshSharesItsCellsInsteadOfCopying) {
   ASSERT_GT(signedCellVolume(m, 1), 0.0);
   const TetMesh t = tetrahedralize(m);
   EXPECT_TRUE(t.mesh.sharesCellsWith(m));
-  EXPECT_EQ(t.cellOfTet, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_TRUE(t.cellOfTet.empty()) << "no identity map kept";
+  EXPECT_EQ(t.sourceCell(0), 0u);
+  EXPECT_EQ(t.sourceCell(1), 1u);
+  EXPECT_EQ(t.cellValues(std::vector<double>{3.0, 4.0}), (std::vector<double>{3.0, 4.0}));
   EXPECT_EQ(t.mesh.nodeCount(), m.nodeCount());
   // An inverted tet is reoriented in a copy of its own; the source keeps its order.
   Mesh inverted;

@@ -20,7 +20,10 @@ namespace volpost {
 
 struct TetMesh {
   Mesh mesh;  ///< tet4 only; nodes are the original ones, then one Steiner point per cell that needs it
-  std::vector<std::uint32_t> cellOfTet;  ///< the source cell of every tet
+  /// The source cell of every tet; empty when every tet is its own source cell (an
+  /// all-tet mesh, its own tetrahedralization: 4 bytes per tet saved). Read it through
+  /// sourceCell().
+  std::vector<std::uint32_t> cellOfTet;
   std::size_t originalNodes = 0;
   /// Steiner point i (node originalNodes + i) is the mean of these source nodes.
   std::vector<std::uint32_t> steinerCell;
@@ -29,6 +32,10 @@ struct TetMesh {
   std::vector<std::uint32_t> foldedCells;
   /// Source cells left out: they use one node twice (no volume).
   std::vector<std::uint32_t> skippedCells;
+
+  std::uint32_t sourceCell(std::size_t tet) const {
+    return cellOfTet.empty() ? std::uint32_t(tet) : cellOfTet[tet];
+  }
 
   /// Node values for `mesh`: the originals, then each Steiner point's mean of its cell's corners.
   std::vector<double> nodeValues(const Mesh& source, std::span<const double> values) const;
