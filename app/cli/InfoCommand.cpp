@@ -53,13 +53,16 @@ void printGrid(const RegularGrid& grid) {
 int printReaderOptions(const ReaderRegistry& readers, const std::string& path) {
   std::vector<const MeshReader*> list = readers.readers();
   if (!path.empty()) list = {&readers.choose(path)};
+  bool any = false;
   for (const MeshReader* reader : list) {
     const std::vector<ReaderOption> options = reader->options();
     if (options.empty() && path.empty()) continue;
+    any = true;
     std::printf("%s:%s\n", reader->formatName().c_str(), options.empty() ? " no reader options" : "");
     for (const ReaderOption& o : options)
       std::printf("  %-26s %s\n", (o.name + "=" + o.valueName).c_str(), o.description.c_str());
   }
+  if (!any) std::printf("no loaded reader takes options\n");
   return 0;
 }
 
