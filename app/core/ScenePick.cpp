@@ -49,4 +49,38 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
   return best;
 }
 
+std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray) {
+  const ModelSession* session = scene.session();
+  if (!session) return std::nullopt;
+  const std::vector<ClipPlane> slices = scene.gridSlicePlanes();
+  std::optional<glm::dvec3> best;
+  double nearest = std::numeric_limits<double>::infinity();
+  if (scene.state().surfaceShown || slices.empty())
+    if (const auto hit = pickSurface(*session, ray)) {
+      best = hit->point;
+      nearest = hit->distance;
+    }
+  if (!slices.empty()) {
+    // A slice point counts where it lies in the grid: its index coordinates within the
+    // grid's extent (a millionth of a step of slack for the outermost layers).
+    const RegularGrid& g = *session->model().grid;
+    const glm::dmat3 toIndex = glm::inverse(glm::dmat3(g.axes[0], g.axes[1], g.axes[2]));
+    for (const ClipPlane& plane : slices) {
+      const double along = glm::dot(ray.direction, plane.normal);
+      if (!(std::abs(along) > 0.0)) continue;
+      const double t = glm::dot(plane.point - ray.origin, plane.normal) / along;
+      if (!(t > 0.0 && t < nearest)) continue;
+      const glm::dvec3 point = ray.origin + t * ray.direction;
+      const glm::dvec3 index = toIndex * (point - g.origin);
+      bool inside = true;
+      for (int a = 0; a < 3; ++a)
+        inside = inside && index[a] >= -1e-6 && index[a] <= double(g.dims[std::size_t(a)] - 1) + 1e-6;
+      if (!inside) continue;
+      nearest = t;
+      best = point;
+    }
+  }
+  return best;
+}
+
 }  // namespace volpost::app

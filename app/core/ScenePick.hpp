@@ -30,4 +30,8 @@ struct SurfacePick {
 /// The first point of the model's boundary surface along the ray (nullopt: a miss).
 std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray);
 
+/// The first point along the ray of what the scene shows to click on: a regular grid's
+/// slices, and the boundary surface unless it is hidden while slices show (nullopt: a miss).
+std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray);
+
 }  // namespace volpost::app

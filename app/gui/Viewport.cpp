@@ -166,9 +166,7 @@ void Viewport::setProbeMode(bool on) {
 
 std::optional<glm::dvec3> Viewport::surfacePointAt(const QPointF& pixel) const {
   if (!scene_.session()) return std::nullopt;
-  const auto hit = pickSurface(*scene_.session(), pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()));
-  if (!hit) return std::nullopt;
-  return hit->point;
+  return pickScenePoint(scene_, pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()));
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

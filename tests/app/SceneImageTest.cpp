@@ -7,6 +7,7 @@
 
 #include "core/CameraSpec.hpp"
 #include "core/PluginRenderers.hpp"
+#include "core/ScenePick.hpp"
 #include "core/SceneImage.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
@@ -96,6 +97,19 @@ TEST(SceneImage, GridSlicesShowTheValuesAcrossTheGrid) {
   EXPECT_LT(difference / compared, 6.0) << "mean difference per pixel, of 510";
   scene.setGridSlices({std::nullopt, std::nullopt, 4.0});
   EXPECT_NE(renderSceneImage(scene, 96, 96).picture, bottom) << "the top slice has other values";
+  // A click picks what shows: the slice (k = 3 lies at z = 6.5) when the surface is hidden,
+  // the bottom face (z = 4.5, seen from below) when it shows.
+  scene.setGridSlices({std::nullopt, std::nullopt, 3.0});
+  const PickRay ray = pixelRay(scene.pictureCamera(96, 96), 48, 48, 96, 96);
+  const auto onSlice = pickScenePoint(scene, ray);
+  ASSERT_TRUE(onSlice.has_value());
+  EXPECT_NEAR(onSlice->z, 6.5, 1e-9);
+  scene.setSurfaceShown(true);
+  const auto onFace = pickScenePoint(scene, ray);
+  ASSERT_TRUE(onFace.has_value());
+  EXPECT_NEAR(onFace->z, 4.5, 1e-9);
+  scene.setSurfaceShown(false);
+  scene.setGridSlices({std::nullopt, std::nullopt, 4.0});
   try {
     scene.setGridSlices({std::nullopt, 7.5, std::nullopt});
     ADD_FAILURE() << "a slice outside the grid was accepted";
