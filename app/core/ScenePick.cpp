@@ -5,6 +5,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,7 +20,8 @@ PickRay pixelRay(const Camera& camera, double x, double y, double width, double 
   return {a, glm::normalize(b - a)};
 }
 
-std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray) {
+std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
+                                       const std::function<bool(const glm::dvec3&)>& kept) {
   const BoundarySurface& surface = session.surface();
   const Mesh& mesh = session.model().mesh;
   std::optional<SurfacePick> best;
@@ -41,7 +43,7 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
     const double w = glm::dot(ray.direction, q) / det;
     if (w < 0.0 || u + w > 1.0) continue;
     const double t = glm::dot(e2, q) / det;
-    if (t > 0.0 && t < nearest) {
+    if (t > 0.0 && t < nearest && (!kept || kept(ray.origin + t * ray.direction))) {
       nearest = t;
       best = SurfacePick{ray.origin + t * ray.direction, surface.mesh.property(surface.cellOfFace, face), t};
     }
@@ -55,11 +57,29 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray)
   const std::vector<ClipPlane> slices = scene.gridSlicePlanes();
   std::optional<glm::dvec3> best;
   double nearest = std::numeric_limits<double>::infinity();
+  // What the clip planes and box cut away cannot be clicked; the faces they cut can.
+  const std::vector<ClipPlane> cuts = scene.state().volume.allClipPlanes();
+  const double tolerance = 1e-9 * std::max(session->bounds().diagonal(), 1e-300);
+  const auto kept = [&](const glm::dvec3& p) {
+    for (const ClipPlane& c : cuts)
+      if (glm::dot(p - c.point, glm::normalize(c.normal)) < -tolerance) return false;
+    return true;
+  };
   if (scene.state().surfaceShown || slices.empty())
-    if (const auto hit = pickSurface(*session, ray)) {
+    if (const auto hit = pickSurface(*session, ray, kept)) {
       best = hit->point;
       nearest = hit->distance;
     }
+  for (const ClipPlane& cut : cuts) {
+    const double along = glm::dot(ray.direction, cut.normal);
+    if (!(std::abs(along) > 0.0)) continue;
+    const double t = glm::dot(cut.point - ray.origin, cut.normal) / along;
+    if (!(t > 0.0 && t < nearest)) continue;
+    const glm::dvec3 point = ray.origin + t * ray.direction;
+    if (!kept(point) || !session->locator().locate(point)) continue;  // on the section: inside the model
+    nearest = t;
+    best = point;
+  }
   if (!slices.empty()) {
     // A slice point counts where it lies in the grid: its index coordinates within the
     // grid's extent (a millionth of a step of slack for the outermost layers).

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <functional>
 #include <optional>
 
 namespace volpost::app {
@@ -27,11 +28,14 @@ struct SurfacePick {
   double distance = 0.0;    ///< along the ray from its origin
 };
 
-/// The first point of the model's boundary surface along the ray (nullopt: a miss).
-std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray);
+/// The first point of the model's boundary surface along the ray that `kept` accepts (all,
+/// without one; nullopt: a miss).
+std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
+                                       const std::function<bool(const glm::dvec3&)>& kept = {});
 
-/// The first point along the ray of what the scene shows to click on: a regular grid's
-/// slices, and the boundary surface unless it is hidden while slices show (nullopt: a miss).
+/// The first point along the ray of what the scene shows to click on: the boundary surface
+/// where the clip planes and box keep it, the section faces they cut, a regular grid's
+/// slices (the surface not while it is hidden and slices show). nullopt: a miss.
 std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray);
 
 }  // namespace volpost::app

@@ -125,3 +125,25 @@ TEST(SceneImage, GridSlicesShowTheValuesAcrossTheGrid) {
   EXPECT_THROW(mesh.setGridSlices({1.0, std::nullopt, std::nullopt}), std::invalid_argument);
   EXPECT_NO_THROW(mesh.setGridSlices({}));
 }
+
+// A click on a section cut probes the cut face, not the surface that was cut away; on the
+// kept side of a plane the surface is picked as before.
+TEST(ScenePick, ClicksPickTheSectionFaceWhereThePlaneCutsTheSurfaceAway) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  applyCameraSpec(scene.camera(), "+x,ortho");
+  const PickRay ray = pixelRay(scene.pictureCamera(64, 64), 32, 32, 64, 64);
+  const auto whole = pickScenePoint(scene, ray);
+  ASSERT_TRUE(whole.has_value());
+  const glm::dvec3 centre = scene.session()->bounds().center();
+  const glm::dvec3 away = scene.camera().viewDirection();
+  scene.setClipPlanes({{centre, away}});  // keeps the far half: the near end is cut away
+  const auto cut = pickScenePoint(scene, ray);
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_NEAR(glm::dot(*cut - centre, away), 0.0, 1e-9) << "on the section's plane";
+  EXPECT_GT(glm::length(*cut - *whole), 1.0);
+  scene.setClipPlanes({{centre, -away}});  // keeps the near half: the surface as before
+  const auto kept = pickScenePoint(scene, ray);
+  ASSERT_TRUE(kept.has_value());
+  EXPECT_NEAR(glm::length(*kept - *whole), 0.0, 1e-9);
+}
