@@ -50,7 +50,7 @@ void BoundaryRenderer::release() {
   for (auto& r : isoRenderers_) r->release();
   isoRenderers_.clear();
   isoFor_.reset();
-  isoTriangles_ = 0;
+  isoTriangles_ = 0;  // the corners stay: a headless picture's iso-surfaces can still be picked
   cutFor_.reset();
   surfaceUploaded_ = false;
   initialized_ = false;
@@ -58,6 +58,7 @@ void BoundaryRenderer::release() {
 
 void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
+  isoCorners_.clear();
   cutFor_.reset();
   slicesFor_.reset();
   sliceTriangles_ = 0;
@@ -157,6 +158,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
   for (auto& r : isoRenderers_) r->release();
   isoRenderers_.clear();
   isoTriangles_ = 0;
+  isoCorners_.clear();
   if (key.empty()) return;
   const TetMesh& tets = session_->tetrahedra();
   const std::vector<double> values = session_->tetValues(*view);
@@ -180,6 +182,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
       renderer->setClipPlanes(cutFor_->planes, tolerance);
     }
     isoTriangles_ += corners.size() / 3;
+    isoCorners_.insert(isoCorners_.end(), corners.begin(), corners.end());
     isoRenderers_.push_back(std::move(renderer));
   }
 }

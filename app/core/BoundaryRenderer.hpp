@@ -54,6 +54,8 @@ class BoundaryRenderer {
   /// same planes. Re-extracted only when the surfaces or `viewVersion` change.
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces, const ScalarView* view, std::uint64_t viewVersion);
   std::size_t isoTriangles() const { return isoTriangles_; }
+  /// The iso-surfaces' triangles now drawn, three corners each, model coordinates (picking).
+  const std::vector<glm::dvec3>& isoCorners() const { return isoCorners_; }
   /// Triangles of the cross-sections now shown (for tests and the status bar).
   std::size_t sectionTriangles() const { return sectionTriangles_; }
   void setShowEdges(bool show) { surface_.setShowEdges(show); }
@@ -100,6 +102,7 @@ class BoundaryRenderer {
   std::vector<std::unique_ptr<SurfaceRenderer>> isoRenderers_;  ///< one per iso-surface
   std::optional<std::pair<std::vector<double>, std::uint64_t>> isoFor_;  ///< values and view version extracted
   std::size_t isoTriangles_ = 0;
+  std::vector<glm::dvec3> isoCorners_;
   float opacity_ = 1.0f;
   bool surfaceShown_ = true;
   std::size_t sectionTriangles_ = 0;

@@ -212,6 +212,8 @@ class Scene {
   std::size_t sectionTriangles() const { return boundary_.sectionTriangles(); }
   /// Triangles of the iso-surfaces the last surface frame drew.
   std::size_t isoTriangles() const { return boundary_.isoTriangles(); }
+  /// The surface view's iso-surface triangles as last drawn (three corners each).
+  const std::vector<glm::dvec3>& isoSurfaceCorners() const { return boundary_.isoCorners(); }
   bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
 
  private:

@@ -20,6 +20,22 @@ PickRay pixelRay(const Camera& camera, double x, double y, double width, double 
   return {a, glm::normalize(b - a)};
 }
 
+// Moller-Trumbore in double: the ray's parameter where it crosses the triangle (> 0).
+std::optional<double> rayHitsTriangle(const PickRay& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const glm::dvec3 e1 = b - a, e2 = c - a;
+  const glm::dvec3 p = glm::cross(ray.direction, e2);
+  const double det = glm::dot(e1, p);
+  if (!(std::abs(det) > 0.0)) return std::nullopt;
+  const glm::dvec3 s = ray.origin - a;
+  const double u = glm::dot(s, p) / det;
+  if (u < 0.0 || u > 1.0) return std::nullopt;
+  const glm::dvec3 q = glm::cross(s, e1);
+  const double w = glm::dot(ray.direction, q) / det;
+  if (w < 0.0 || u + w > 1.0) return std::nullopt;
+  const double t = glm::dot(e2, q) / det;
+  return t > 0.0 ? std::optional(t) : std::nullopt;
+}
+
 std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
                                        const std::function<bool(const glm::dvec3&)>& kept) {
   const BoundarySurface& surface = session.surface();
@@ -32,20 +48,10 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
     glm::dvec3 v[3];
     int k = 0;
     for (const auto vertex : surface.mesh.fv_range(face)) v[k++] = mesh.nodes[surface.mesh.property(surface.nodeOfVertex, vertex)];
-    const glm::dvec3 e1 = v[1] - v[0], e2 = v[2] - v[0];
-    const glm::dvec3 p = glm::cross(ray.direction, e2);
-    const double det = glm::dot(e1, p);
-    if (!(std::abs(det) > 0.0)) continue;
-    const glm::dvec3 s = ray.origin - v[0];
-    const double u = glm::dot(s, p) / det;
-    if (u < 0.0 || u > 1.0) continue;
-    const glm::dvec3 q = glm::cross(s, e1);
-    const double w = glm::dot(ray.direction, q) / det;
-    if (w < 0.0 || u + w > 1.0) continue;
-    const double t = glm::dot(e2, q) / det;
-    if (t > 0.0 && t < nearest && (!kept || kept(ray.origin + t * ray.direction))) {
-      nearest = t;
-      best = SurfacePick{ray.origin + t * ray.direction, surface.mesh.property(surface.cellOfFace, face), t};
+    const auto t = rayHitsTriangle(ray, v[0], v[1], v[2]);
+    if (t && *t < nearest && (!kept || kept(ray.origin + *t * ray.direction))) {
+      nearest = *t;
+      best = SurfacePick{ray.origin + *t * ray.direction, surface.mesh.property(surface.cellOfFace, face), *t};
     }
   }
   return best;
@@ -65,11 +71,22 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray)
       if (glm::dot(p - c.point, glm::normalize(c.normal)) < -tolerance) return false;
     return true;
   };
-  if (scene.state().surfaceShown || slices.empty())
+  if (scene.state().surfaceShown)  // a hidden surface cannot be clicked on
     if (const auto hit = pickSurface(*session, ray, kept)) {
       best = hit->point;
       nearest = hit->distance;
     }
+  // Iso-surfaces as drawn in the surface view (already cut by the same planes).
+  if (!scene.volumeShown()) {
+    const std::vector<glm::dvec3>& iso = scene.isoSurfaceCorners();
+    for (std::size_t i = 0; i + 2 < iso.size(); i += 3)
+      if (const auto t = rayHitsTriangle(ray, iso[i], iso[i + 1], iso[i + 2]); t && *t < nearest) {
+        const glm::dvec3 point = ray.origin + *t * ray.direction;
+        if (!kept(point)) continue;
+        nearest = *t;
+        best = point;
+      }
+  }
   for (const ClipPlane& cut : cuts) {
     const double along = glm::dot(ray.direction, cut.normal);
     if (!(std::abs(along) > 0.0)) continue;

@@ -34,8 +34,9 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
                                        const std::function<bool(const glm::dvec3&)>& kept = {});
 
 /// The first point along the ray of what the scene shows to click on: the boundary surface
-/// where the clip planes and box keep it, the section faces they cut, a regular grid's
-/// slices (the surface not while it is hidden and slices show). nullopt: a miss.
+/// where the clip planes and box keep it, the section faces they cut, the iso-surfaces of
+/// the surface view (as last drawn), a regular grid's slices; not the surface while it is
+/// hidden. nullopt: a miss.
 std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray);
 
 }  // namespace volpost::app

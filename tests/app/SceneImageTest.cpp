@@ -8,6 +8,7 @@
 #include "core/CameraSpec.hpp"
 #include "core/PluginRenderers.hpp"
 #include "core/ScenePick.hpp"
+#include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
@@ -146,4 +147,39 @@ TEST(ScenePick, ClicksPickTheSectionFaceWhereThePlaneCutsTheSurfaceAway) {
   const auto kept = pickScenePoint(scene, ray);
   ASSERT_TRUE(kept.has_value());
   EXPECT_NEAR(glm::length(*kept - *whole), 0.0, 1e-9);
+}
+
+// A click on an iso-surface of the surface view probes the iso-surface: with the surface
+// hidden every hit has the iso-value (tet4 and a displacement component: linear in each
+// tet, as the extraction is); a hidden surface is not clicked on.
+TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
+  try {
+    HeadlessContext probe;
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
+  }
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setResult("U.x", 0);  // the stretch along the bar: its iso-surfaces cross it
+  scene.setShowLegend(false);
+  applyCameraSpec(scene.camera(), "+x,ortho,zoom=6");
+  const PickRay centre = pixelRay(scene.pictureCamera(64, 64), 32, 32, 64, 64);
+  ASSERT_TRUE(pickScenePoint(scene, centre).has_value());
+  scene.setSurfaceShown(false);
+  EXPECT_FALSE(pickScenePoint(scene, centre).has_value()) << "a hidden surface is not clicked on";
+  const double iso = 0.5 * (scene.view()->range.min + scene.view()->range.max);
+  scene.setIsoSurfaces({{iso, {1, 0.8, 0.2}, 1.0}});
+  (void)renderSceneImage(scene, 64, 64);
+  ASSERT_GT(scene.isoSurfaceCorners().size(), 0u);
+  int hits = 0;
+  for (int y = 1; y < 64; y += 2)
+    for (int x = 1; x < 64; x += 2) {
+      const auto p = pickScenePoint(scene, pixelRay(scene.pictureCamera(64, 64), x, y, 64, 64));
+      if (!p) continue;
+      ++hits;
+      const ProbeResult r = probeAt(*scene.session(), *p, 0);
+      ASSERT_TRUE(r.inside());
+      EXPECT_NEAR(r.value("U.x").value(), iso, 1e-5 * std::abs(iso)) << "pixel " << x << ", " << y;
+    }
+  EXPECT_GT(hits, 20) << "clicks land on the iso-surface";
 }
