@@ -92,6 +92,12 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
   // plane of the box (float rounding would otherwise speckle it).
   surface_.setClipPlanes(planes, tolerance);
   sections_.setClipPlanes(planes, tolerance);
+  for (auto& r : isoRenderers_) r->setClipPlanes(planes, tolerance);
+  sectionTriangles_ = uploadCrossSections(sections_, planes, view, range);
+}
+
+std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes,
+                                                  const ScalarView* view, DisplayRange range) const {
   std::vector<glm::dvec3> corners;
   std::vector<double> values;
   if (!planes.empty()) {
@@ -104,11 +110,10 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
       values.insert(values.end(), cut.values.begin(), cut.values.end());
     }
   }
-  for (auto& r : isoRenderers_) r->setClipPlanes(planes, tolerance);
-  sectionTriangles_ = corners.size() / 3;
-  sections_.setTriangles(corners, session_->origin());
-  if (view) sections_.setScalars(FieldLocation::Node, values, range.min, range.max);
-  else sections_.clearScalars();
+  target.setTriangles(corners, session_->origin());
+  if (view) target.setScalars(FieldLocation::Node, values, range.min, range.max);
+  else target.clearScalars();
+  return corners.size() / 3;
 }
 
 void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
@@ -117,22 +122,7 @@ void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const Sca
   const CutKey key{planes, viewVersion, range, view != nullptr};
   if (slicesFor_ == key) return;
   slicesFor_ = key;
-  std::vector<glm::dvec3> corners;
-  std::vector<double> values;
-  if (!planes.empty()) {
-    const TetMesh& tets = session_->tetrahedra();
-    const std::vector<double> tetValues = view ? session_->tetValues(*view) : std::vector<double>{};
-    const bool perNode = view && view->location == FieldLocation::Node;
-    for (const ClipPlane& plane : planes) {
-      SectionTriangles cut = cutTetrahedra(tets, tetValues, perNode, plane);
-      corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
-      values.insert(values.end(), cut.values.begin(), cut.values.end());
-    }
-  }
-  sliceTriangles_ = corners.size() / 3;
-  slices_.setTriangles(corners, session_->origin());
-  if (view) slices_.setScalars(FieldLocation::Node, values, range.min, range.max);
-  else slices_.clearScalars();
+  sliceTriangles_ = uploadCrossSections(slices_, planes, view, range);
 }
 
 void BoundaryRenderer::renderSlices(const RenderContext& ctx) {

@@ -108,6 +108,10 @@ class BoundaryRenderer {
   std::size_t sectionTriangles_ = 0;
   bool initialized_ = false;
   void ensureSurface();
+  /// The model's cross-sections on these planes into `target`, colored by the view's
+  /// values (sections and slices); returns their triangle count.
+  std::size_t uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes, const ScalarView* view,
+                                  DisplayRange range) const;
   bool surfaceUploaded_ = false;
   struct PendingScalars {
     FieldLocation location;

@@ -36,6 +36,15 @@ std::optional<double> rayHitsTriangle(const PickRay& ray, const glm::dvec3& a, c
   return t > 0.0 ? std::optional(t) : std::nullopt;
 }
 
+// The ray's parameter where it crosses the plane (> 0), nullopt when it runs along it or the
+// crossing is behind.
+std::optional<double> rayHitsPlane(const PickRay& ray, const ClipPlane& plane) {
+  const double along = glm::dot(ray.direction, plane.normal);
+  if (!(std::abs(along) > 0.0)) return std::nullopt;
+  const double t = glm::dot(plane.point - ray.origin, plane.normal) / along;
+  return t > 0.0 ? std::optional(t) : std::nullopt;
+}
+
 std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
                                        const std::function<bool(const glm::dvec3&)>& kept) {
   const BoundarySurface& surface = session.surface();
@@ -88,13 +97,11 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray)
       }
   }
   for (const ClipPlane& cut : cuts) {
-    const double along = glm::dot(ray.direction, cut.normal);
-    if (!(std::abs(along) > 0.0)) continue;
-    const double t = glm::dot(cut.point - ray.origin, cut.normal) / along;
-    if (!(t > 0.0 && t < nearest)) continue;
-    const glm::dvec3 point = ray.origin + t * ray.direction;
+    const auto t = rayHitsPlane(ray, cut);
+    if (!t || *t >= nearest) continue;
+    const glm::dvec3 point = ray.origin + *t * ray.direction;
     if (!kept(point) || !session->locator().locate(point)) continue;  // on the section: inside the model
-    nearest = t;
+    nearest = *t;
     best = point;
   }
   if (!slices.empty()) {
@@ -103,17 +110,15 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray)
     const RegularGrid& g = *session->model().grid;
     const glm::dmat3 toIndex = glm::inverse(glm::dmat3(g.axes[0], g.axes[1], g.axes[2]));
     for (const ClipPlane& plane : slices) {
-      const double along = glm::dot(ray.direction, plane.normal);
-      if (!(std::abs(along) > 0.0)) continue;
-      const double t = glm::dot(plane.point - ray.origin, plane.normal) / along;
-      if (!(t > 0.0 && t < nearest)) continue;
-      const glm::dvec3 point = ray.origin + t * ray.direction;
+      const auto t = rayHitsPlane(ray, plane);
+      if (!t || *t >= nearest) continue;
+      const glm::dvec3 point = ray.origin + *t * ray.direction;
       const glm::dvec3 index = toIndex * (point - g.origin);
       bool inside = true;
       for (int a = 0; a < 3; ++a)
         inside = inside && index[a] >= -1e-6 && index[a] <= double(g.dims[std::size_t(a)] - 1) + 1e-6;
       if (!inside) continue;
-      nearest = t;
+      nearest = *t;
       best = point;
     }
   }
