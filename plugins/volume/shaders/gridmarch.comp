@@ -7,11 +7,14 @@
 // A frame is one or more passes of at most stepsPerPass steps per ray: each pass resumes
 // where the last stopped (its parameter and transmittance in resumeAt). Long loops in one
 // invocation are what drivers cut short: llvmpipe ends every loop of an invocation after
-// 65535 iterations in all, silently; a GPU's watchdog resets the device.
+// 65535 iterations in all, silently; a GPU's watchdog resets the device. A grid in bricks
+// is marched brick by brick, front to back: each brick's passes march every ray's part
+// inside that brick, going on from the color and transmittance the nearer bricks left.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D outImage;    // premultiplied color, alpha
 layout(rg32f, binding = 1) uniform image2D resumeAt;      // (t to resume at, or -1 when done; transmittance)
-uniform bool firstPass;
+uniform bool firstPass;   // the brick's first pass: rays start where they enter it
+uniform bool firstBrick;  // the frame's first brick: nothing accumulated yet
 uniform int stepsPerPass;
 
 #include "common/volume_segment.glsl"
@@ -24,9 +27,9 @@ void main() {
   vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
                   1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
   float t = -1.0;
-  if (!firstPass) {
+  if (!firstPass || !firstBrick) {
     vec2 resume = imageLoad(resumeAt, pix).xy;
-    if (resume.x < 0.0) return;  // this ray is done
+    if (!firstPass && resume.x < 0.0) return;  // this ray is done in this brick
     t = resume.x;
     accColor = imageLoad(outImage, pix).rgb;
     accT = resume.y;

@@ -6,6 +6,7 @@
 #include "VolumeBindings.hpp"
 #include "VolumeShaders.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/PreintegrationTable.hpp>
 #include <volpost/core/optics/PsiTable.hpp>
@@ -179,7 +180,8 @@ void GpuVolume::release() {
   preFuture_ = {};
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &gridTexture_}) t->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
+  bricks_.release();
   programs_.clear();
   composite_.release();
   imageWidth_ = imageHeight_ = 0;
@@ -194,6 +196,7 @@ void GpuVolume::prepare(const RenderContext& ctx) {
     uploadValues();
     valuesDirty_ = false;
   }
+  if (grid_) layOutBricks();  // the budget may have changed since
   if (tablesNeedRebuild()) rebuildTables();
   // A table finished since the last frame goes up now; with none uploaded yet, wait.
   collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
@@ -202,7 +205,7 @@ void GpuVolume::prepare(const RenderContext& ctx) {
 
 void GpuVolume::uploadMesh() {
   if (grid_) uploadGrid();
-  else gridTexture_.reset();
+  else bricks_.release();
   // Checked before anything is uploaded: a buffer past the device's limit would read as
   // zeros (or fault) on drivers that enforce it.
   GLint64 limit = 0;
@@ -236,27 +239,53 @@ void GpuVolume::uploadValues() {
   ++valueUploads_;
 }
 
-// The grid's values as a 3D float texture, fetched texel by texel (the shader interpolates
-// in float itself: hardware filtering weighs with as few as 8 bits on some GPUs).
+// The grid's values as 3D float textures, fetched texel by texel (the shader interpolates
+// in float itself: hardware filtering weighs with as few as 8 bits on some GPUs): one
+// texture when the grid fits the GPU memory budget and the device's largest texture,
+// else bricks (GridBricks), uploaded as they are drawn.
 void GpuVolume::uploadGrid() {
-  const auto [nx, ny, nz] = grid_->dims;
+  const bool sameGrid = bricks_.count() > 0 && builtRevision_ == meshRevision_;
+  layOutBricks();
+  bricks_.valuesChanged();
+  if (bricks_.count() == 1) bricks_.resident(0, gridValues_);  // what the next frame draws anyway
+  if (sameGrid) ++valueUploads_;
+  gl::check("GpuVolume::uploadGrid");
+}
+
+void GpuVolume::layOutBricks() {
   GLint largest = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-  if (nx > std::size_t(largest) || ny > std::size_t(largest) || nz > std::size_t(largest))
-    throw std::invalid_argument("a grid of " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
-                                std::to_string(nz) + " points is larger than this GPU's 3D textures (" +
-                                std::to_string(largest) + " per side)");
-  const bool sameSize = gridTexture_ && builtRevision_ == meshRevision_;
-  if (!sameSize) {
-    gridTexture_ = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(gridTexture_.id(), 1, GL_R32F, GLsizei(nx), GLsizei(ny), GLsizei(nz));
-    setFilter(gridTexture_.id(), GL_NEAREST);
+  bricks_.configure(grid_->dims, textureBudget(), std::size_t(std::max(largest, 2)));
+}
+
+// The GPU memory budget for the grid's textures: the setting, else 3/4 of what an NVIDIA
+// device reports as its dedicated memory, else none.
+std::size_t GpuVolume::textureBudget() const {
+  if (const std::size_t set = gpuMemoryBudget()) return set;
+  if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
+    GLint kilobytes = 0;
+    glGetIntegerv(0x9047, &kilobytes);  // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
+    if (kilobytes > 0) return std::size_t(kilobytes) * 1024 / 4 * 3;
   }
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage3D(gridTexture_.id(), 0, 0, 0, 0, GLsizei(nx), GLsizei(ny), GLsizei(nz), GL_RED, GL_FLOAT,
-                      gridValues_.data());
-  if (sameSize) ++valueUploads_;
-  gl::check("GpuVolume::uploadGrid");
+  return 0;
+}
+
+std::vector<std::size_t> GpuVolume::gridBricksInOrder(const RenderContext& ctx, bool backToFront) const {
+  const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
+  const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;
+  std::vector<std::size_t> order = bricksBackToFront(bricks_.bricks(), toIndex * (ctx.camera.eye() - grid_->origin),
+                                                     toIndex * ctx.camera.viewDirection(), ortho);
+  if (!backToFront) std::reverse(order.begin(), order.end());
+  return order;
+}
+
+void GpuVolume::bindGridBrick(GLuint program, std::size_t b) {
+  glBindTextureUnit(binding::kGrid, bricks_.resident(b, gridValues_));
+  const GridBrick& brick = bricks_.bricks()[b];
+  glProgramUniform3i(program, glGetUniformLocation(program, "brickFirst"), GLint(brick.first[0]),
+                     GLint(brick.first[1]), GLint(brick.first[2]));
+  glProgramUniform3i(program, glGetUniformLocation(program, "brickPoints"), GLint(brick.points[0]),
+                     GLint(brick.points[1]), GLint(brick.points[2]));
 }
 
 // The tables depend on the transfer function, the mode and the values' range (the tables
@@ -403,6 +432,9 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
     worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (gpu_.origin - grid_->origin)), 1.0f);
     glProgramUniformMatrix4fv(p, u("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
     glProgramUniform3i(p, u("gridSize"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
+    // The whole grid as one brick until bindGridBrick says which.
+    glProgramUniform3i(p, u("brickFirst"), 0, 0, 0);
+    glProgramUniform3i(p, u("brickPoints"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
   }
 }
 
@@ -430,7 +462,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
-  glBindTextureUnit(binding::kGrid, gridTexture_ ? gridTexture_.id() : 0);
+  glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {
       {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
       {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},
@@ -448,7 +480,7 @@ void GpuVolume::compositeOver(const RenderContext& ctx, GLuint image) const {
 VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tets.size();
-  s.meshBytes = gpu_.bytes() + gridValues_.size() * sizeof(float);
+  s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
   s.gpuBytes = s.meshBytes + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
                (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
                (preTable_ ? std::size_t(preResolution) * preResolution * preResolution * 16 : 0) +

@@ -12,6 +12,7 @@
 // Clip planes, iso-surfaces and the camera are uniforms and cost nothing to change.
 #pragma once
 
+#include "GridBricks.hpp"
 #include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
 
@@ -69,8 +70,14 @@ class GpuVolume {
   bool hasTets() const { return !gpu_.tets.empty(); }
   bool hasGrid() const { return grid_.has_value(); }
   const RegularGrid& grid() const { return *grid_; }
-  /// The grid's values (R32F, in the values' frame), once prepare() has uploaded them.
-  GLuint gridTexture() const { return gridTexture_.id(); }
+  /// The grid's bricks (one when the grid fits the GPU memory budget), once prepare() has
+  /// laid them out.
+  const GridBricks& gridBricks() const { return bricks_; }
+  /// The bricks' order for ctx's camera: back to front, or front to back.
+  std::vector<std::size_t> gridBricksInOrder(const RenderContext& ctx, bool backToFront) const;
+  /// Makes brick b resident (uploading it if the budget did not keep it), binds its texture
+  /// and sets its place in the grid (brickFirst, brickPoints of common/grid_sampling.glsl).
+  void bindGridBrick(GLuint program, std::size_t b);
   double samplingStep() const { return samplingStep_; }
   /// The grid renderers' step along rays (or slice spacing): the sampling step when set,
   /// else half the shortest grid spacing (two samples per spacing).
@@ -116,6 +123,9 @@ class GpuVolume {
   void uploadMesh();
   void uploadValues();
   void uploadGrid();
+  /// Lays out the grid's bricks for the present budget (nothing changes when it is the same).
+  void layOutBricks();
+  std::size_t textureBudget() const;
   void setGridValues(std::span<const double> values);
   void rebuildTables();
   bool tablesNeedRebuild() const;
@@ -155,7 +165,8 @@ class GpuVolume {
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
-  gl::Texture psiTable_, isoTable_, preTable_, image_, gridTexture_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_;
+  GridBricks bricks_;
   int imageWidth_ = 0, imageHeight_ = 0;
 };
 

@@ -33,9 +33,17 @@ void GridRayMarcher::release() {
   volume_.release();
 }
 
-int GridRayMarcher::passesFor() const {
-  const Bounds box = volume_.grid().bounds();
-  const double steps = glm::length(box.size()) / marchStep() + 4.0;
+int GridRayMarcher::passesFor(std::size_t brick) const {
+  const GridBrick& b = volume_.gridBricks().bricks()[brick];
+  const RegularGrid& grid = volume_.grid();
+  const glm::dvec3 diagonal = grid.indexToWorld() * glm::dvec3(double(b.points[0] - 1), double(b.points[1] - 1),
+                                                             double(b.points[2] - 1));
+  // Along the brick's diagonal bound (|a u + b v + c w| <= |a u| + |b v| + |c w|), plus the
+  // steps a lattice adds at both ends.
+  double length = 0.0;
+  for (int a = 0; a < 3; ++a) length += glm::length(grid.axes[std::size_t(a)]) * double(b.points[std::size_t(a)] - 1);
+  length = std::max(length, glm::length(diagonal));
+  const double steps = length / marchStep() + 4.0;
   return int(std::min(std::ceil(steps / kStepsPerPass), 1e6));
 }
 
@@ -52,18 +60,28 @@ GLuint GridRayMarcher::beginMarch(const RenderContext& ctx, GLuint image) {
   return p;
 }
 
-void GridRayMarcher::marchPass(const RenderContext& ctx, GLuint program, int pass) {
-  glProgramUniform1i(program, glGetUniformLocation(program, "firstPass"), pass == 0);
+void GridRayMarcher::marchPass(const RenderContext& ctx, GLuint program, const Step& step) {
+  if (step.pass == 0) volume_.bindGridBrick(program, step.brick);
+  glProgramUniform1i(program, glGetUniformLocation(program, "firstPass"), step.pass == 0);
+  glProgramUniform1i(program, glGetUniformLocation(program, "firstBrick"), step.firstBrick);
   glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
+
+std::vector<GridRayMarcher::Step> GridRayMarcher::planFrame(const RenderContext& ctx) const {
+  std::vector<Step> steps;
+  const std::vector<std::size_t> order = volume_.gridBricksInOrder(ctx, false);
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (int pass = 0, passes = passesFor(order[i]); pass < passes; ++pass) steps.push_back({order[i], pass, i == 0});
+  return steps;
 }
 
 double GridRayMarcher::renderWhole(const RenderContext& ctx, GLuint image) {
   const auto start = std::chrono::steady_clock::now();
   const GLuint p = beginMarch(ctx, image);
-  const int passes = passesFor();
-  for (int pass = 0; pass < passes; ++pass) marchPass(ctx, p, pass);
-  lastPasses_ = passes;
+  const std::vector<Step> steps = planFrame(ctx);
+  for (const Step& step : steps) marchPass(ctx, p, step);
+  lastPasses_ = int(steps.size());
   if (!volume_.asynchronous()) return 0.0;
   glFinish();  // timed for sizing quick frames: the window's path only
   return millisecondsSince(start);
@@ -72,17 +90,19 @@ double GridRayMarcher::renderWhole(const RenderContext& ctx, GLuint image) {
 bool GridRayMarcher::refine(const RenderContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   const GLuint p = beginMarch(ctx, volume_.image());
-  const int passes = passesFor();
-  while (refinePass_ < passes) {
-    marchPass(ctx, p, refinePass_++);
+  // A brick's first pass binds it; a later one goes on in the brick an earlier call bound.
+  if (refineStep_ < refinePlan_.size() && refinePlan_[refineStep_].pass > 0)
+    volume_.bindGridBrick(p, refinePlan_[refineStep_].brick);
+  while (refineStep_ < refinePlan_.size()) {
+    marchPass(ctx, p, refinePlan_[refineStep_++]);
     glFinish();
-    if (refinePass_ < passes && millisecondsSince(start) >= quick_.sliceMs()) {
+    if (refineStep_ < refinePlan_.size() && millisecondsSince(start) >= quick_.sliceMs()) {
       refineMs_ += millisecondsSince(start);
       return false;
     }
   }
   refineMs_ += millisecondsSince(start);
-  lastPasses_ = passes;
+  lastPasses_ = int(refinePlan_.size());
   quick_.measured(refineMs_, ctx.width, ctx.height);
   return true;
 }
@@ -100,8 +120,9 @@ void GridRayMarcher::render(const RenderContext& ctx) {
   const GLuint shown = quick_.frame(
       ctx, volume_.revision(), volume_.meshRevision(), 0, volume_.image(),
       [this](const RenderContext& c, GLuint image) { return renderWhole(c, image); },
-      [this] {
-        refinePass_ = 0;
+      [this, &ctx] {
+        refinePlan_ = planFrame(ctx);
+        refineStep_ = 0;
         refineMs_ = 0.0;
       },
       [this, &ctx] { return refine(ctx); });

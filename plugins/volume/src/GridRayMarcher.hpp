@@ -5,13 +5,16 @@
 // step is the trilinear interpolation of the 8 surrounding points (in float, in the
 // shader), and each piece between steps is integrated with the scalar linear along it, in
 // the chosen mode (exact linear segments, pre-integrated, sampled), iso-surfaces shaded by
-// the trilinear gradient. The float image is composited over the target. In the window a
+// the trilinear gradient. A grid larger than the GPU memory budget is marched brick by brick
+// (GridBricks), front to back. The float image is composited over the target. In the window a
 // changed view first gets a quick reduced frame, then the full one in slices of passes
 // (QuickFrames).
 #pragma once
 
 #include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
+
+#include <vector>
 
 namespace volpost::volume {
 
@@ -29,7 +32,13 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void render(const RenderContext& ctx) override;
   /// The step along the ray the next frame uses, model units.
   double marchStep() const { return volume_.gridStep(); }
-  /// Compute passes the last frame took (each at most kStepsPerPass steps per ray).
+  /// Bricks the grid is drawn in (1: one texture; more when it exceeds the GPU memory
+  /// budget), once a frame has been drawn.
+  std::size_t brickCount() const { return volume_.gridBricks().count(); }
+  /// Bricks uploaded since the grid was laid out (more than brickCount() when streamed).
+  std::size_t brickUploads() const { return volume_.gridBricks().uploads(); }
+  /// Compute passes the last frame took (each at most kStepsPerPass steps per ray through
+  /// one brick).
   int lastPasses() const { return lastPasses_; }
   bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
   int shownReduction() const { return quick_.shownReduction(); }
@@ -44,18 +53,27 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   static constexpr int kStepsPerPass = 1024;
 
  private:
+  /// One compute pass of a frame: a pass through one brick (the whole grid unbricked).
+  struct Step {
+    std::size_t brick = 0;
+    int pass = 0;             ///< 0: rays start where they enter the brick
+    bool firstBrick = false;  ///< the nearest brick: nothing accumulated before it
+  };
   void ensureResumeImage(int width, int height);
-  /// Passes a frame of ctx needs: enough for the longest ray inside the grid.
-  int passesFor() const;
+  /// Passes a brick needs: enough for the longest ray inside it.
+  int passesFor(std::size_t brick) const;
+  /// The frame's passes: the bricks front to back, each brick's passes.
+  std::vector<Step> planFrame(const RenderContext& ctx) const;
   /// Sets up the march's program for ctx into `image`; returns the program.
   GLuint beginMarch(const RenderContext& ctx, GLuint image);
-  void marchPass(const RenderContext& ctx, GLuint program, int pass);
+  void marchPass(const RenderContext& ctx, GLuint program, const Step& step);
   /// The whole frame into `image`; returns the milliseconds it took (asynchronous path only).
   double renderWhole(const RenderContext& ctx, GLuint image);
   /// Advances the full frame by passes for about the slice's time; true when complete.
   bool refine(const RenderContext& ctx);
   QuickFrames quick_;
-  int refinePass_ = 0;
+  std::vector<Step> refinePlan_;  ///< the full frame's passes while it is refined
+  std::size_t refineStep_ = 0;
   double refineMs_ = 0.0;
   gl::Texture resume_;
   int resumeWidth_ = 0, resumeHeight_ = 0;

@@ -115,26 +115,65 @@ void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
   const glm::dvec3 eye = ctx.camera.eye() - origin;
   const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;
   const double nearest = ortho ? -1e300 : 0.0;  // in front of the eye (the near plane clips the rest)
-  const glm::dvec3 corner = grid.origin - origin;
-  const glm::dvec3 u = grid.axes[0] * double(grid.dims[0] - 1), v = grid.axes[1] * double(grid.dims[1] - 1),
-                   w = grid.axes[2] * double(grid.dims[2] - 1);
   // Slices grown by two pixels at their depth (fragments off the box discard themselves).
   const double pixelsAcross = double(std::min(ctx.width, ctx.height));
   const double halfAngle = std::tan(0.5 * glm::radians(ctx.camera.fieldOfView()));
   const auto twoPixels = [&](double depth) {
     return 2.0 * (ortho ? ctx.camera.viewHeight() : 2.0 * depth * halfAngle) / pixelsAcross;
   };
-  std::vector<glm::vec3> triangles =
-      slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &lastSlices_, twoPixels);
-  sliceVertices_ = triangles.size();
-  // The entry pass: one fragment per pixel (clip-space x, y).
-  for (const glm::vec3 q : {glm::vec3(-1, -1, 0), glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(-1, -1, 0),
-                            glm::vec3(1, 1, 0), glm::vec3(-1, 1, 0)})
-    triangles.push_back(q);
-  entryVertices_ = triangles.size() - sliceVertices_;
-  glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(triangles.size() * sizeof(glm::vec3), 16)),
-                    triangles.data(), GL_STREAM_DRAW);
+  const glm::mat4 vp = volume_.imageViewProjection(ctx);
+  std::vector<glm::vec3> vertices;
+  brickDraws_.clear();
+  lastSlices_ = 0;
+  for (const std::size_t b : volume_.gridBricksInOrder(ctx, true)) {
+    const GridBrick& brick = volume_.gridBricks().bricks()[b];
+    const glm::dvec3 corner = grid.origin - origin + grid.indexToWorld() * glm::dvec3(double(brick.first[0]),
+                                                                                     double(brick.first[1]),
+                                                                                     double(brick.first[2]));
+    const glm::dvec3 u = grid.axes[0] * double(brick.points[0] - 1), v = grid.axes[1] * double(brick.points[1] - 1),
+                     w = grid.axes[2] * double(brick.points[2] - 1);
+    std::size_t slices = 0;
+    const std::vector<glm::vec3> triangles =
+        slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &slices, twoPixels);
+    lastSlices_ += slices;
+    BrickDraw draw{b, vertices.size(), triangles.size(), 0};
+    vertices.insert(vertices.end(), triangles.begin(), triangles.end());
+    draw.entryFirst = vertices.size();
+    for (const glm::vec3& q : entryQuad(vp, corner, u, v, w, ctx)) vertices.push_back(q);
+    brickDraws_.push_back(draw);
+  }
+  glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(vertices.size() * sizeof(glm::vec3), 16)),
+                    vertices.data(), GL_STREAM_DRAW);
   glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
+}
+
+// The entry pass needs one fragment per pixel the brick covers: the rectangle round its
+// projected corners, a pixel wider (clip-space x, y), or the whole picture when a corner
+// lies behind the eye.
+std::array<glm::vec3, 6> GridSlicer::entryQuad(const glm::mat4& viewProjection, const glm::dvec3& corner,
+                                               const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w,
+                                               const RenderContext& ctx) {
+  glm::vec2 lo(-1.0f), hi(1.0f);
+  bool behind = false;
+  glm::vec2 boxLo(1e30f), boxHi(-1e30f);
+  for (int c = 0; c < 8; ++c) {
+    const glm::dvec3 p = corner + double(c & 1) * u + double((c >> 1) & 1) * v + double((c >> 2) & 1) * w;
+    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(p), 1.0f);
+    if (!(clip.w > 0.0f)) {
+      behind = true;
+      break;
+    }
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    boxLo = glm::min(boxLo, ndc);
+    boxHi = glm::max(boxHi, ndc);
+  }
+  if (!behind) {
+    const glm::vec2 pixel(2.0f / float(ctx.width), 2.0f / float(ctx.height));
+    lo = glm::clamp(boxLo - pixel, glm::vec2(-1.0f), glm::vec2(1.0f));
+    hi = glm::clamp(boxHi + pixel, glm::vec2(-1.0f), glm::vec2(1.0f));
+  }
+  return {glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0),
+          glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0), glm::vec3(lo.x, hi.y, 0)};
 }
 
 GLuint GridSlicer::beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing) {
@@ -165,10 +204,10 @@ void GridSlicer::drawSlices(GLuint program, std::size_t first, std::size_t count
   glDrawArrays(GL_TRIANGLES, GLint(first), GLsizei(count));  // farthest first
 }
 
-void GridSlicer::drawEntry(GLuint program) {
+void GridSlicer::drawEntry(GLuint program, const BrickDraw& draw) {
   glProgramUniform1i(program, glGetUniformLocation(program, "entryPass"), 1);
   glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), 1);
-  glDrawArrays(GL_TRIANGLES, GLint(sliceVertices_), GLsizei(entryVertices_));  // nearest of all
+  glDrawArrays(GL_TRIANGLES, GLint(draw.entryFirst), 6);  // the nearest part of the brick
 }
 
 void GridSlicer::endDrawing() {
@@ -180,38 +219,53 @@ double GridSlicer::drawWhole(const RenderContext& ctx, GLuint image, double spac
   const auto start = std::chrono::steady_clock::now();
   uploadSlices(ctx, spacing);
   const GLuint p = beginDrawing(ctx, image, true, spacing);
-  drawSlices(p, 0, sliceVertices_);
-  drawEntry(p);
+  for (const BrickDraw& draw : brickDraws_) {
+    volume_.bindGridBrick(p, draw.brick);
+    drawSlices(p, draw.first, draw.count);
+    drawEntry(p, draw);
+  }
   endDrawing();
   if (!volume_.asynchronous()) return 0.0;
   glFinish();  // timed for sizing quick frames: the window's path only
   return millisecondsSince(start);
 }
 
+// Goes on where the last call stopped: brick refineBrick_, its slice vertices up to
+// drawnVertices_ drawn (its entry last, then the next brick).
 bool GridSlicer::refine(const RenderContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
   const GLuint p = beginDrawing(ctx, volume_.image(), false, sliceSpacing());
-  while (drawnVertices_ < sliceVertices_) {
-    const auto runStart = std::chrono::steady_clock::now();
-    const std::size_t count = std::min(verticesPerRun_, sliceVertices_ - drawnVertices_);
-    drawSlices(p, drawnVertices_, count);
+  while (refineBrick_ < brickDraws_.size()) {
+    const BrickDraw& draw = brickDraws_[refineBrick_];
+    volume_.bindGridBrick(p, draw.brick);
+    while (drawnVertices_ < draw.count) {
+      const auto runStart = std::chrono::steady_clock::now();
+      const std::size_t count = std::min(verticesPerRun_, draw.count - drawnVertices_);
+      drawSlices(p, draw.first + drawnVertices_, count);
+      glFinish();
+      const double ms = millisecondsSince(runStart);
+      refineMs_ += ms;
+      drawnVertices_ += count;
+      // The next run sized to the slice's time, in whole triangles.
+      const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
+      verticesPerRun_ = 3 * std::clamp<std::size_t>(std::size_t(double(verticesPerRun_ / 3) * factor), 1, 1u << 24);
+      if (millisecondsSince(start) >= quick_.sliceMs()) {
+        endDrawing();
+        return false;
+      }
+    }
+    const auto entryStart = std::chrono::steady_clock::now();
+    drawEntry(p, draw);
     glFinish();
-    const double ms = millisecondsSince(runStart);
-    refineMs_ += ms;
-    drawnVertices_ += count;
-    // The next run sized to the slice's time, in whole triangles.
-    const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
-    verticesPerRun_ = 3 * std::clamp<std::size_t>(std::size_t(double(verticesPerRun_ / 3) * factor), 1, 1u << 24);
-    if (drawnVertices_ < sliceVertices_ && millisecondsSince(start) >= quick_.sliceMs()) {
+    refineMs_ += millisecondsSince(entryStart);
+    drawnVertices_ = 0;
+    ++refineBrick_;
+    if (refineBrick_ < brickDraws_.size() && millisecondsSince(start) >= quick_.sliceMs()) {
       endDrawing();
       return false;
     }
   }
-  const auto entryStart = std::chrono::steady_clock::now();
-  drawEntry(p);
   endDrawing();
-  glFinish();
-  refineMs_ += millisecondsSince(entryStart);
   quick_.measured(refineMs_, ctx.width, ctx.height);
   return true;
 }
@@ -238,6 +292,7 @@ void GridSlicer::render(const RenderContext& ctx) {
         uploadSlices(ctx, sliceSpacing());  // the full frame's slices, kept while it is refined
         beginDrawing(ctx, volume_.image(), true, sliceSpacing());  // the full frame starts empty
         endDrawing();
+        refineBrick_ = 0;
         drawnVertices_ = 0;
         refineMs_ = 0.0;
       },

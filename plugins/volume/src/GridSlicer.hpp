@@ -11,13 +11,17 @@
 // half the shortest grid spacing); a larger one is the interactive mode. In the window a
 // changed view first gets a quick reduced frame, with slices as many times further apart
 // as its pixels are (the interactive mode), then the full one in runs of slices drawn back
-// to front over several paints (QuickFrames), shown when complete (the detailed mode).
+// to front over several paints (QuickFrames), shown when complete (the detailed mode). A grid
+// larger than the GPU memory budget is drawn brick by brick (GridBricks), back to front, each
+// brick's slices on the same lattice of depths, cut with the brick's box.
 #pragma once
 
 #include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 
+#include <array>
 #include <functional>
+#include <vector>
 
 namespace volpost::volume {
 
@@ -32,6 +36,11 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void render(const RenderContext& ctx) override;
   /// The distance between slices the next frame uses, model units.
   double sliceSpacing() const { return volume_.gridStep(); }
+  /// Bricks the grid is drawn in (1: one texture; more when it exceeds the GPU memory
+  /// budget), once a frame has been drawn.
+  std::size_t brickCount() const { return volume_.gridBricks().count(); }
+  /// Bricks uploaded since the grid was laid out (more than brickCount() when streamed).
+  std::size_t brickUploads() const { return volume_.gridBricks().uploads(); }
   /// Slices the last frame drew (a quick frame's while the full one is refined).
   std::size_t lastSlices() const { return lastSlices_; }
   bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
@@ -44,16 +53,27 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   }
 
  private:
-  /// Cuts ctx's slices, `spacing` apart, and uploads them, then the entry quad; remembers
-  /// how many vertices are slices.
+  /// What one brick draws (the whole grid unbricked): its slices' vertices, back to
+  /// front, then its entry quad's 6.
+  struct BrickDraw {
+    std::size_t brick = 0;
+    std::size_t first = 0, count = 0;  ///< slice vertices
+    std::size_t entryFirst = 0;
+  };
+  /// Cuts ctx's slices, `spacing` apart, with each brick's box, and uploads them with each
+  /// brick's entry quad, the bricks back to front (brickDraws_).
   void uploadSlices(const RenderContext& ctx, double spacing);
+  static std::array<glm::vec3, 6> entryQuad(const glm::mat4& viewProjection, const glm::dvec3& corner,
+                                            const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w,
+                                            const RenderContext& ctx);
   /// Binds everything a draw into `image` for ctx needs (clearing it first if asked).
   GLuint beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing);
   /// Slice triangles [first, first + count), back to front; splitting a frame anywhere
   /// between triangles leaves the picture the same (one slice's triangles do not overlap).
   void drawSlices(GLuint program, std::size_t first, std::size_t count);
-  /// The part of every ray from its entry to the nearest slice: last, over everything.
-  void drawEntry(GLuint program);
+  /// The part of every ray from its entry into the brick to the brick's nearest slice:
+  /// after the brick's slices, over them.
+  void drawEntry(GLuint program, const BrickDraw& draw);
   void endDrawing();
   /// The whole frame into `image`, slices `spacing` apart; returns its milliseconds
   /// (asynchronous path only).
@@ -67,9 +87,9 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   gl::Buffer vertices_;
   GLuint attachedImage_ = 0;
   std::size_t lastSlices_ = 0;
-  std::size_t sliceVertices_ = 0, entryVertices_ = 0;
+  std::vector<BrickDraw> brickDraws_;
   QuickFrames quick_;
-  std::size_t drawnVertices_ = 0, verticesPerRun_ = 3 * 1024;
+  std::size_t refineBrick_ = 0, drawnVertices_ = 0, verticesPerRun_ = 3 * 1024;
   double refineMs_ = 0.0;
 };
 

@@ -19,6 +19,7 @@ namespace volpost {
 namespace {
 
 std::atomic<std::size_t> g_budget{0};  // 0: not set, use the default
+std::atomic<std::size_t> g_gpuBudget{0};  // 0: not set, use the default
 
 std::size_t defaultBudget() {
   if (const char* env = std::getenv("VOLPOST_MEMORY_BUDGET"))
@@ -77,6 +78,14 @@ std::size_t memoryBudget() {
 }
 
 void setMemoryBudget(std::size_t bytes) { g_budget.store(bytes); }
+
+std::size_t gpuMemoryBudget() {
+  if (const std::size_t set = g_gpuBudget.load()) return set;
+  if (const char* env = std::getenv("VOLPOST_GPU_MEMORY_BUDGET")) return parseByteSize(env);
+  return 0;
+}
+
+void setGpuMemoryBudget(std::size_t bytes) { g_gpuBudget.store(bytes); }
 
 void requireMemory(double bytes, const std::string& file, const std::string& what) {
   const std::size_t budget = memoryBudget();

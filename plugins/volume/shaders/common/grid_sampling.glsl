@@ -1,12 +1,16 @@
 // A regular grid's values as a 3D texture, sampled along the ray: trilinear interpolation
 // in float from the 8 points around a continuous index, the trilinear field's gradient for
 // the shading of the volume and of iso-surfaces (isoGradient, which common/volume_segment.glsl
-// asks for), and the
-// part of a ray inside the grid's box. Shared by the ray marcher and the slicer; the
-// includer sets rayIndexOrigin and rayIndexDir from rayOrigin and rayDir.
+// asks for), and the part of a ray inside the grid's box. Shared by the ray marcher and the
+// slicer; the includer sets rayIndexOrigin and rayIndexDir from rayOrigin and rayDir.
+// A grid larger than the GPU memory budget is drawn brick by brick: the texture then
+// holds the points brickFirst .. brickFirst + brickPoints - 1 (bricks share their border
+// points), and a ray's part is the part inside the brick's box.
 layout(binding = UNIT_GRID) uniform sampler3D gridValues;  // R32F, values in their frame
 uniform mat4 worldToIndex;  // volume-relative position -> continuous grid index
 uniform ivec3 gridSize;     // points per axis
+uniform ivec3 brickFirst;   // the grid index of the texture's first point
+uniform ivec3 brickPoints;  // the texture's points per axis
 uniform float marchStep;    // along the ray, model units
 
 vec3 rayIndexOrigin, rayIndexDir;  // the ray in index space
@@ -17,9 +21,12 @@ vec4 trilinearAtIndex(vec3 index) {
   vec3 top = vec3(gridSize - 1);
   vec3 x = clamp(index, vec3(0.0), top);
   vec3 cell = min(floor(x), max(top - 1.0, vec3(0.0)));
+  // The cell within the brick (the same cell inside it; its last cell on its far face).
+  vec3 first = vec3(brickFirst);
+  cell = clamp(cell, first, max(first + vec3(brickPoints) - 2.0, first));
   vec3 w = x - cell;
-  ivec3 c = ivec3(cell);
-  ivec3 step1 = ivec3(greaterThan(gridSize, ivec3(1)));
+  ivec3 c = ivec3(cell) - brickFirst;
+  ivec3 step1 = ivec3(greaterThan(brickPoints, ivec3(1)));
   float v000 = texelFetch(gridValues, c, 0).r;
   float v100 = texelFetch(gridValues, c + ivec3(step1.x, 0, 0), 0).r;
   float v010 = texelFetch(gridValues, c + ivec3(0, step1.y, 0), 0).r;
@@ -48,16 +55,17 @@ vec2 shadeOf(vec4 sampled) { return shading ? headlight(worldGradient(sampled.yz
 // The trilinear field's gradient where the ray crosses an iso-surface, in model units.
 vec3 isoGradient(float t) { return worldGradient(sampleAlongRay(t).yzw); }
 
-// The part of the ray inside the grid's box [0, size - 1]^3 (in index space): false if none.
+// The part of the ray inside the brick's box (the grid's, [0, size - 1]^3, unbricked), in
+// index space: false if none.
 bool insideGrid(inout float t0, inout float t1) {
-  vec3 top = vec3(gridSize - 1);
+  vec3 bottom = vec3(brickFirst), top = vec3(brickFirst + brickPoints - 1);
   for (int a = 0; a < 3; ++a) {
     float o = rayIndexOrigin[a], d = rayIndexDir[a];
-    if (d == 0.0) {
-      if (o < 0.0 || o > top[a]) return false;
+    if (d == 0.0) {  // along a face: it belongs to the brick above it, never to two
+      if (o < bottom[a] || o > top[a] || (o == top[a] && brickFirst[a] + brickPoints[a] < gridSize[a])) return false;
       continue;
     }
-    float ta = (0.0 - o) / d, tb = (top[a] - o) / d;
+    float ta = (bottom[a] - o) / d, tb = (top[a] - o) / d;
     t0 = max(t0, min(ta, tb));
     t1 = min(t1, max(ta, tb));
   }

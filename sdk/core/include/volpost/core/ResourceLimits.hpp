@@ -17,6 +17,12 @@ namespace volpost {
 /// set; setMemoryBudget overrides both (the window's and CLI's setting).
 std::size_t memoryBudget();
 void setMemoryBudget(std::size_t bytes);
+/// The most GPU memory one volume's data may hold at once, in bytes: $VOLPOST_GPU_MEMORY_BUDGET
+/// when set, else 0 (none: what the device reports, or no limit where it reports nothing);
+/// setGpuMemoryBudget overrides it (the window's and CLI's setting; 0 goes back to the
+/// default). Regular grids larger than it are drawn in bricks streamed through it.
+std::size_t gpuMemoryBudget();
+void setGpuMemoryBudget(std::size_t bytes);
 /// Parses "512M", "8G", "1.5T", "1000000" (bytes); 0 when the text is not a size.
 std::size_t parseByteSize(const std::string& text);
 /// "3.2 GB", "512 MB", for messages.
