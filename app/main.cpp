@@ -44,7 +44,10 @@ void printUsage() {
       "  volpost plot MODEL --from X,Y,Z --to X,Y,Z --field Q -o plot.png   quantities along a line (also --csv)\n"
       "  volpost --version | --help\n\n"
       "Any verb or the window also takes --memory-budget SIZE (512M, 8G, ...): files that would need\n"
-      "more are refused with a message (default: 3/4 of the memory, or $VOLPOST_MEMORY_BUDGET).\n",
+      "more are refused with a message (default: 3/4 of the memory, or $VOLPOST_MEMORY_BUDGET).\n"
+      "And --gpu-memory-budget SIZE: the most GPU memory a volume's data may hold at once; regular\n"
+      "grids larger than it are drawn in bricks streamed through it (default: 3/4 of what an NVIDIA\n"
+      "GPU reports, else no limit, or $VOLPOST_GPU_MEMORY_BUDGET).\n",
       VOLPOST_VERSION);
 }
 
@@ -140,26 +143,31 @@ int runWindow(int argc, char** argv) {
 
 }  // namespace
 
-// "--memory-budget SIZE" (or =SIZE) anywhere on the command line sets the memory budget
-// for every verb and the window, and is taken out of the arguments. Returns false (after
-// saying why) when SIZE is not a size.
-bool takeMemoryBudget(int& argc, char** argv) {
+// "--memory-budget SIZE" and "--gpu-memory-budget SIZE" (or =SIZE) anywhere on the command
+// line set the budgets for every verb and the window, and are taken out of the arguments.
+// Returns false (after saying why) when SIZE is not a size.
+bool takeBudgets(int& argc, char** argv) {
+  const std::pair<std::string, void (*)(std::size_t)> options[] = {{"--memory-budget", volpost::setMemoryBudget},
+                                                                    {"--gpu-memory-budget", volpost::setGpuMemoryBudget}};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    std::string value;
-    int used = 0;
-    if (arg == "--memory-budget" && i + 1 < argc) value = argv[i + 1], used = 2;
-    else if (arg.rfind("--memory-budget=", 0) == 0) value = arg.substr(16), used = 1;
-    else continue;
-    const std::size_t bytes = volpost::parseByteSize(value);
-    if (!bytes) {
-      std::fprintf(stderr, "volpost: error: --memory-budget %s is not a size (512M, 8G, 1.5T)\n", value.c_str());
-      return false;
+    for (const auto& [name, set] : options) {
+      std::string value;
+      int used = 0;
+      if (arg == name && i + 1 < argc) value = argv[i + 1], used = 2;
+      else if (arg.rfind(name + "=", 0) == 0) value = arg.substr(name.size() + 1), used = 1;
+      else continue;
+      const std::size_t bytes = volpost::parseByteSize(value);
+      if (!bytes) {
+        std::fprintf(stderr, "volpost: error: %s %s is not a size (512M, 8G, 1.5T)\n", name.c_str(), value.c_str());
+        return false;
+      }
+      set(bytes);
+      for (int k = i; k + used < argc; ++k) argv[k] = argv[k + used];
+      argc -= used;
+      --i;
+      break;
     }
-    volpost::setMemoryBudget(bytes);
-    for (int k = i; k + used < argc; ++k) argv[k] = argv[k + used];
-    argc -= used;
-    --i;
   }
   return true;
 }
@@ -167,7 +175,7 @@ bool takeMemoryBudget(int& argc, char** argv) {
 int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) must end a write with an error we report, not kill us.
   std::signal(SIGXFSZ, SIG_IGN);
-  if (!takeMemoryBudget(argc, argv)) return 2;
+  if (!takeBudgets(argc, argv)) return 2;
   const char* verb = argc >= 2 ? argv[1] : "";
   if (!std::strcmp(verb, "--help") || !std::strcmp(verb, "-h") || !std::strcmp(verb, "help")) {
     printUsage();

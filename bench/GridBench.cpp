@@ -11,6 +11,7 @@
 #include "SyntheticSeismic.hpp"
 #include "host/optics/GridReference.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
 #include <volpost/render/GL.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
@@ -42,7 +43,11 @@ const char* kUsage =
     "  --cpu-only      only the CPU marcher (no GL rows)\n"
     "  --shading       lit by the gradient (headlight), the reference too\n"
     "  --interactive   also the renderers as the window drives them: 1024x768, the view turning\n"
-    "                  5 degrees per frame, quick reduced frames (frames per second)\n";
+    "                  5 degrees per frame, quick reduced frames (frames per second)\n"
+    "  --gpu-budget SIZE  also the GPU renderers in bricks streamed through a GPU memory budget\n"
+    "                  of SIZE (256M, 1G), against the same renderer from one texture\n"
+    "  --bricks-only   only those rows (no reference, no table by step): for grids too large\n"
+    "                  for the reference, such as --grid 645 (1 GB of floats)\n";
 
 // Opaque where the amplitude is strong, either sign: reflectors show, the quiet rock is clear.
 TransferFunction seismicTf(double extinction) {
@@ -73,7 +78,8 @@ Errors compare(const std::vector<float>& image, const optics::ReferenceImage& re
 int main(int argc, char** argv) {
   std::size_t n = 128;
   int size = 512, frames = 3;
-  bool cpuOnly = false, interactive = false, shading = false;
+  bool cpuOnly = false, interactive = false, shading = false, bricksOnly = false;
+  std::size_t gpuBudget = 0;
   std::vector<double> steps = {1.0, 0.5, 0.25};
   for (int a = 1; a < argc; ++a) {
     const bool more = a + 1 < argc;
@@ -83,6 +89,10 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[a], "--cpu-only")) cpuOnly = true;
     else if (!std::strcmp(argv[a], "--interactive")) interactive = true;
     else if (!std::strcmp(argv[a], "--shading")) shading = true;
+    else if (!std::strcmp(argv[a], "--bricks-only")) bricksOnly = true;
+    else if (!std::strcmp(argv[a], "--gpu-budget") && more) {
+      if (!(gpuBudget = parseByteSize(argv[++a]))) return bench::usageFor(argv[a], kUsage);
+    }
     else if (!std::strcmp(argv[a], "--steps") && more) {
       steps.clear();
       for (char* s = std::strtok(argv[++a], ","); s; s = std::strtok(nullptr, ",")) steps.push_back(std::atof(s));
@@ -90,6 +100,7 @@ int main(int argc, char** argv) {
       return bench::usageFor(argv[a], kUsage);
   }
   if (n < 4 || size < 8 || frames < 1 || steps.empty()) return bench::usageFor("(a value out of range)", kUsage);
+  if (bricksOnly && !gpuBudget) return bench::usageFor("--bricks-only without --gpu-budget", kUsage);
 
   seismic::SyntheticSurvey survey;
   survey.inlines = survey.crosslines = survey.samples = n;
@@ -103,18 +114,22 @@ int main(int argc, char** argv) {
   camera.fit(grid.bounds());
   camera.orbit(20.0, -8.0);
 
-  std::fprintf(stderr, "reference (exact trilinear) at %dx%d...\n", size, size);
-  const auto refStart = Clock::now();
-  optics::RaySettings referenceSettings;
-  referenceSettings.shading = shading;
-  const optics::ReferenceImage reference =
-      optics::renderGridReference(grid, cube.values, tf, camera, size, size, referenceSettings);
-  const double refMs = std::chrono::duration<double, std::milli>(Clock::now() - refStart).count();
+  optics::ReferenceImage reference;
+  double refMs = 0.0;
+  if (!bricksOnly) {
+    std::fprintf(stderr, "reference (exact trilinear) at %dx%d...\n", size, size);
+    const auto refStart = Clock::now();
+    optics::RaySettings referenceSettings;
+    referenceSettings.shading = shading;
+    reference = optics::renderGridReference(grid, cube.values, tf, camera, size, size, referenceSettings);
+    refMs = std::chrono::duration<double, std::milli>(Clock::now() - refStart).count();
+  }
 
-  std::printf("Synthetic seismic cube %zu^3 (%.1f M points), %dx%d, early termination off, %s; reference %.0f ms\n\n", n,
-              double(grid.pointCount()) / 1e6, size, size, shading ? "lit by the gradient" : "unlit", refMs);
-  std::printf("| renderer | step / spacing | ms/frame (median of %d) | RMSE | max error |\n|---|---:|---:|---:|---:|\n",
-              frames);
+  std::printf("Synthetic seismic cube %zu^3 (%.1f M points, %.0f MB of floats), %dx%d, early termination off, %s; "
+              "reference %.0f ms\n\n",
+              n, double(grid.pointCount()) / 1e6, double(grid.pointCount()) * 4.0 / 1048576.0, size, size,
+              shading ? "lit by the gradient" : "unlit", refMs);
+
   const auto row = [&](const char* name, double fraction, GridVolumeRenderer& r, const std::function<void()>& frame) {
     // Frames after the first: the grid and tables are on the GPU, only the frame is timed.
     r.setTransferFunction(tf);
@@ -149,6 +164,63 @@ int main(int argc, char** argv) {
       glFinish();
     };
   };
+  if (gpuBudget) {
+    std::printf("GPU renderers from one texture and in bricks streamed through a GPU memory budget of %s (default "
+                "step, median of %d frames):\n\n| renderer | textures | ms/frame | uploads/frame | MB sent/frame | "
+                "GPU MB held | max difference |\n|---|---|---:|---:|---:|---:|---:|\n",
+                byteSizeText(double(gpuBudget)).c_str(), frames);
+    const auto bricked = [&](auto& r) {
+      std::vector<float> whole;
+      for (const std::size_t budget : {std::size_t(0), gpuBudget}) {
+        setGpuMemoryBudget(budget);
+        r.initialize();
+        r.setGrid(grid, cube.values);
+        r.setTransferFunction(tf);
+        r.setTerminationThreshold(0.0);
+        r.setShading(shading);
+        draw(r)();  // not timed: shader compilation, the first upload
+        const std::size_t uploadsBefore = r.brickUploads(), bytesBefore = r.brickUploadedBytes();
+        std::vector<double> times;
+        for (int f = 0; f < frames; ++f) {
+          const auto start = Clock::now();
+          draw(r)();
+          times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+        std::sort(times.begin(), times.end());
+        const std::vector<float> image = r.readImage();
+        double difference = 0.0;
+        char differenceText[32] = "-";
+        if (budget == 0) whole = image;
+        else {
+          for (std::size_t i = 0; i < image.size(); ++i)
+            difference = std::max(difference, double(std::abs(image[i] - whole[i])));
+          std::snprintf(differenceText, sizeof differenceText, "%.2g", difference);
+        }
+        const double uploads = double(r.brickUploads() - uploadsBefore) / double(frames);
+        const double sentMb = double(r.brickUploadedBytes() - bytesBefore) / double(frames) / 1048576.0;
+        std::printf("| %s | %s | %.0f | %.1f | %.3g | %.3g | %s |\n", r.name().c_str(),
+                    r.brickCount() == 1 ? "one" : (std::to_string(r.brickCount()) + " bricks").c_str(),
+                    times[times.size() / 2], uploads, sentMb, double(r.stats().meshBytes) / 1048576.0,
+                    differenceText);
+        std::fflush(stdout);
+        r.release();
+      }
+      setGpuMemoryBudget(0);
+    };
+    if (!cpuOnly) {
+      volume::GridRayMarcher marcher;
+      bricked(marcher);
+      volume::GridSlicer slicer;
+      bricked(slicer);
+    }
+    std::printf("\n");
+    if (bricksOnly) {
+      std::printf("OpenGL: %s\n", reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+      return 0;
+    }
+  }
+  std::printf("| renderer | step / spacing | ms/frame (median of %d) | RMSE | max error |\n|---|---:|---:|---:|---:|\n",
+              frames);
   volume::CpuVolumeRenderer cpu;
   cpu.initialize();
   cpu.setGrid(grid, cube.values);

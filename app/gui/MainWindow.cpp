@@ -119,6 +119,9 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   QSettings settings("volpost", "volpost");
   if (const std::size_t budget = parseByteSize(settings.value("limits/memoryBudget").toString().toStdString()))
     setMemoryBudget(budget);
+  if (const std::size_t budget = parseByteSize(settings.value("limits/gpuMemoryBudget").toString().toStdString());
+      budget && !gpuMemoryBudget())  // the command line's or environment's wins
+    setGpuMemoryBudget(budget);
   resize(1280, 800);
   restoreGeometry(settings.value("window/geometry").toByteArray());
   restoreState(settings.value("window/state").toByteArray());
@@ -230,27 +233,21 @@ void MainWindow::buildActions() {
   QMenu* tools = menuBar()->addMenu("&Tools");
   tools->addAction("&Plugins...", this, [this] { PluginsDialog(plugins_, this).exec(); });
   tools->addAction("&Memory Budget...", this, [this] {
-    bool ok = false;
-    const QString text = QInputDialog::getText(
-        this, "Memory budget",
-        QString("The most memory a model may take (512M, 8G, ...); files that would need more are refused with a "
-                "message.\nNow: %1. Empty: the default (3/4 of this machine's memory).")
-            .arg(QString::fromStdString(byteSizeText(double(memoryBudget())))),
-        QLineEdit::Normal, QSettings("volpost", "volpost").value("limits/memoryBudget").toString(), &ok);
-    if (!ok) return;
-    if (text.trimmed().isEmpty()) {
-      QSettings("volpost", "volpost").remove("limits/memoryBudget");
-      setMemoryBudget(0);  // back to the default
-      return;
-    }
-    const std::size_t bytes = parseByteSize(text.trimmed().toStdString());
-    if (!bytes) {
-      QMessageBox::warning(this, "Memory budget", QString("'%1' is not a size such as 512M or 8G").arg(text));
-      return;
-    }
-    setMemoryBudget(bytes);
-    QSettings("volpost", "volpost").setValue("limits/memoryBudget", text.trimmed());
-    statusBar()->showMessage(QString("Memory budget: %1").arg(QString::fromStdString(byteSizeText(double(bytes)))));
+    askBudget("Memory budget",
+              QString("The most memory a model may take (512M, 8G, ...); files that would need more are refused "
+                      "with a message.\nNow: %1. Empty: the default (3/4 of this machine's memory).")
+                  .arg(QString::fromStdString(byteSizeText(double(memoryBudget())))),
+              "limits/memoryBudget", setMemoryBudget);
+  });
+  tools->addAction("&GPU Memory Budget...", this, [this] {
+    const std::size_t now = gpuMemoryBudget();
+    askBudget("GPU memory budget",
+              QString("The most GPU memory a volume's data may hold at once (256M, 2G, ...); regular grids larger "
+                      "than it are drawn in bricks streamed through it.\nNow: %1. Empty: the default (3/4 of what "
+                      "an NVIDIA GPU reports, else no limit).")
+                  .arg(now ? QString::fromStdString(byteSizeText(double(now))) : QString("the default")),
+              "limits/gpuMemoryBudget", setGpuMemoryBudget);
+    viewport_->update();  // the volume is laid out again for it
   });
   QMenu* help = menuBar()->addMenu("&Help");
   help->addAction("&About volpost", this, [this] {
@@ -1133,7 +1130,10 @@ void MainWindow::showModelInfo() {
     html += QString("volume renderer (%1): %2<br>")
                 .arg(QString::fromStdString(viewport_->scene().state().volume.renderer).toHtmlEscaped(),
                      QString::fromStdString(byteSizeText(double(volume.gpuBytes))));
-  html += QString("budget: %1<br><br><b>Fields</b><br>").arg(QString::fromStdString(byteSizeText(double(memoryBudget()))));
+  html += QString("budget: %1<br>").arg(QString::fromStdString(byteSizeText(double(memoryBudget()))));
+  const std::size_t gpuBudget = gpuMemoryBudget();
+  html += QString("GPU budget: %1<br><br><b>Fields</b><br>")
+              .arg(gpuBudget ? QString::fromStdString(byteSizeText(double(gpuBudget))) : QString("the default"));
   for (const auto& f : m.fields)
     html += QString("%1 (%2, per %3, %4 step%5)<br>")
                 .arg(QString::fromStdString(f->name()).toHtmlEscaped(), toString(f->kind()), toString(f->location()))
@@ -1274,6 +1274,30 @@ void MainWindow::saveImage() {
     return;
   }
   statusBar()->showMessage("Saved " + path);
+}
+
+// Asks for a size (512M, 8G) for the setting `key`, applies it with `apply` and keeps it;
+// empty goes back to the default (0); text that is not a size is refused, the setting kept.
+void MainWindow::askBudget(const QString& title, const QString& prompt, const QString& key,
+                           void (*apply)(std::size_t)) {
+  bool ok = false;
+  const QString text = QInputDialog::getText(this, title, prompt, QLineEdit::Normal,
+                                             QSettings("volpost", "volpost").value(key).toString(), &ok);
+  if (!ok) return;
+  if (text.trimmed().isEmpty()) {
+    QSettings("volpost", "volpost").remove(key);
+    apply(0);  // back to the default
+    statusBar()->showMessage(title + ": the default");
+    return;
+  }
+  const std::size_t bytes = parseByteSize(text.trimmed().toStdString());
+  if (!bytes) {
+    QMessageBox::warning(this, title, QString("'%1' is not a size such as 512M or 8G").arg(text));
+    return;
+  }
+  apply(bytes);
+  QSettings("volpost", "volpost").setValue(key, text.trimmed());
+  statusBar()->showMessage(QString("%1: %2").arg(title, QString::fromStdString(byteSizeText(double(bytes)))));
 }
 
 }  // namespace volpost::app

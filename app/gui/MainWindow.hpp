@@ -82,6 +82,7 @@ class MainWindow : public QMainWindow, public PanelHost {
 
  private:
   void buildActions();
+  void askBudget(const QString& title, const QString& prompt, const QString& key, void (*apply)(std::size_t));
   void buildToolbar();
   void buildPanels();
   void chooseFile();

@@ -13,27 +13,27 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D outImage;    // premultiplied color, alpha
 layout(rg32f, binding = 1) uniform image2D resumeAt;      // (t to resume at, or -1 when done; transmittance)
-uniform bool firstPass;   // the brick's first pass: rays start where they enter it
-uniform bool firstBrick;  // the frame's first brick: nothing accumulated yet
+uniform bool firstPass;     // the brick's first pass: rays start where they enter it
 uniform int stepsPerPass;
+uniform ivec2 pixelOffset;  // the dispatch covers the pixels the brick can cover, from here
+uniform ivec2 pixelEnd;     // to here (exclusive)
 
 #include "common/volume_segment.glsl"
 
 #include "common/grid_sampling.glsl"
 
 void main() {
-  ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-  if (pix.x >= imageSize_.x || pix.y >= imageSize_.y) return;
+  ivec2 pix = ivec2(gl_GlobalInvocationID.xy) + pixelOffset;
+  if (pix.x >= pixelEnd.x || pix.y >= pixelEnd.y) return;
   vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
                   1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
-  float t = -1.0;
-  if (!firstPass || !firstBrick) {
-    vec2 resume = imageLoad(resumeAt, pix).xy;
-    if (!firstPass && resume.x < 0.0) return;  // this ray is done in this brick
-    t = resume.x;
-    accColor = imageLoad(outImage, pix).rgb;
-    accT = resume.y;
-  }
+  // What the nearer bricks and passes left (the frame starts from a cleared image:
+  // nothing, transmittance 1).
+  vec2 resume = imageLoad(resumeAt, pix).xy;
+  if (!firstPass && resume.x < 0.0) return;  // this ray is done in this brick
+  float t = resume.x;
+  accColor = imageLoad(outImage, pix).rgb;
+  accT = resume.y;
   // The ray and its extent, the same numbers in every pass.
   vec2 range = setupRay(ndc, pix);
   rayIndexOrigin = (worldToIndex * vec4(rayOrigin, 1.0)).xyz;

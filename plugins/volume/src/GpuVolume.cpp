@@ -279,6 +279,24 @@ std::vector<std::size_t> GpuVolume::gridBricksInOrder(const RenderContext& ctx, 
   return order;
 }
 
+std::pair<glm::vec2, glm::vec2> GpuVolume::gridBrickOnScreen(const RenderContext& ctx, std::size_t b) const {
+  const GridBrick& brick = bricks_.bricks()[b];
+  const glm::mat4 viewProjection = imageViewProjection(ctx);
+  glm::vec2 lo(1e30f), hi(-1e30f);
+  for (int c = 0; c < 8; ++c) {
+    glm::dvec3 index;
+    for (int a = 0; a < 3; ++a)
+      index[a] = double(brick.first[std::size_t(a)] + ((c >> a) & 1) * (brick.points[std::size_t(a)] - 1));
+    const glm::dvec3 p = grid_->origin + grid_->indexToWorld() * index - gpu_.origin;
+    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(p), 1.0f);
+    if (!(clip.w > 0.0f)) return {glm::vec2(-1.0f), glm::vec2(1.0f)};
+    lo = glm::min(lo, glm::vec2(clip) / clip.w);
+    hi = glm::max(hi, glm::vec2(clip) / clip.w);
+  }
+  const glm::vec2 pixel(2.0f / float(ctx.width), 2.0f / float(ctx.height));
+  return {glm::clamp(lo - pixel, glm::vec2(-1.0f), glm::vec2(1.0f)), glm::clamp(hi + pixel, glm::vec2(-1.0f), glm::vec2(1.0f))};
+}
+
 void GpuVolume::bindGridBrick(GLuint program, std::size_t b) {
   glBindTextureUnit(binding::kGrid, bricks_.resident(b, gridValues_));
   const GridBrick& brick = bricks_.bricks()[b];

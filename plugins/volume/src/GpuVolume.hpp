@@ -75,6 +75,10 @@ class GpuVolume {
   const GridBricks& gridBricks() const { return bricks_; }
   /// The bricks' order for ctx's camera: back to front, or front to back.
   std::vector<std::size_t> gridBricksInOrder(const RenderContext& ctx, bool backToFront) const;
+  /// Where brick b can cover the picture: the rectangle round its projected corners in
+  /// imageViewProjection's normalized coordinates (-1..1, y down the image), a pixel wider,
+  /// or the whole picture when a corner lies behind the eye. Rays outside it miss the brick.
+  std::pair<glm::vec2, glm::vec2> gridBrickOnScreen(const RenderContext& ctx, std::size_t b) const;
   /// Makes brick b resident (uploading it if the budget did not keep it), binds its texture
   /// and sets its place in the grid (brickFirst, brickPoints of common/grid_sampling.glsl).
   void bindGridBrick(GLuint program, std::size_t b);

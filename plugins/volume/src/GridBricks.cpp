@@ -85,7 +85,7 @@ void GridBricks::configure(const std::array<std::size_t, 3>& dims, std::size_t b
   capacity_ = budget > 0 ? std::clamp<std::size_t>(budget / std::max<std::size_t>(largestBrick, 1), 1, bricks_.size())
                          : bricks_.size();
   slots_.clear();
-  uploads_ = 0;
+  uploads_ = uploadedBytes_ = 0;
 }
 
 void GridBricks::valuesChanged() {
@@ -128,12 +128,13 @@ void GridBricks::upload(Slot& slot, std::size_t b, const std::vector<float>& val
   slot.brick = b;
   slot.current = true;
   ++uploads_;
+  uploadedBytes_ += brick.bytes();
   gl::check("GridBricks::upload");
 }
 
 void GridBricks::release() {
   slots_.clear();
-  uploads_ = 0;
+  uploads_ = uploadedBytes_ = 0;
 }
 
 std::size_t GridBricks::residentBytes() const {

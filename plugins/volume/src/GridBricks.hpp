@@ -64,6 +64,8 @@ class GridBricks {
   std::size_t residentBytes() const;
   /// Brick uploads since configure(): equal to count() when the budget holds them all.
   std::size_t uploads() const { return uploads_; }
+  /// Bytes those uploads sent.
+  std::size_t uploadedBytes() const { return uploadedBytes_; }
 
  private:
   struct Slot {
@@ -74,7 +76,7 @@ class GridBricks {
   void upload(Slot& slot, std::size_t b, const std::vector<float>& values);
 
   std::array<std::size_t, 3> dims_{};
-  std::size_t budget_ = 0, largest_ = 0, side_ = 0, capacity_ = 0, uploads_ = 0;
+  std::size_t budget_ = 0, largest_ = 0, side_ = 0, capacity_ = 0, uploads_ = 0, uploadedBytes_ = 0;
   std::vector<GridBrick> bricks_;
   std::list<Slot> slots_;  ///< most recently used first
 };

@@ -7,6 +7,7 @@
 #include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -47,6 +48,14 @@ int GridRayMarcher::passesFor(std::size_t brick) const {
   return int(std::min(std::ceil(steps / kStepsPerPass), 1e6));
 }
 
+// A frame starts from nothing: no color, transmittance 1, every ray done (each brick's first
+// pass starts the rays it meets).
+void GridRayMarcher::clearFrame(GLuint image) {
+  const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f}, done[2] = {-1.0f, 1.0f};
+  glClearTexImage(image, 0, GL_RGBA, GL_FLOAT, nothing);
+  glClearTexImage(resume_.id(), 0, GL_RG, GL_FLOAT, done);
+}
+
 GLuint GridRayMarcher::beginMarch(const RenderContext& ctx, GLuint image) {
   const GLuint p = volume_.program({"volume/gridmarch.comp"});
   glUseProgram(p);
@@ -60,27 +69,37 @@ GLuint GridRayMarcher::beginMarch(const RenderContext& ctx, GLuint image) {
   return p;
 }
 
-void GridRayMarcher::marchPass(const RenderContext& ctx, GLuint program, const Step& step) {
+void GridRayMarcher::marchPass(GLuint program, const Step& step) {
   if (step.pass == 0) volume_.bindGridBrick(program, step.brick);
   glProgramUniform1i(program, glGetUniformLocation(program, "firstPass"), step.pass == 0);
-  glProgramUniform1i(program, glGetUniformLocation(program, "firstBrick"), step.firstBrick);
-  glDispatchCompute(GLuint((ctx.width + 7) / 8), GLuint((ctx.height + 7) / 8), 1);
+  glProgramUniform2i(program, glGetUniformLocation(program, "pixelOffset"), step.pixels[0], step.pixels[1]);
+  glProgramUniform2i(program, glGetUniformLocation(program, "pixelEnd"), step.pixels[2], step.pixels[3]);
+  glDispatchCompute(GLuint((step.pixels[2] - step.pixels[0] + 7) / 8), GLuint((step.pixels[3] - step.pixels[1] + 7) / 8), 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
 
 std::vector<GridRayMarcher::Step> GridRayMarcher::planFrame(const RenderContext& ctx) const {
   std::vector<Step> steps;
-  const std::vector<std::size_t> order = volume_.gridBricksInOrder(ctx, false);
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (int pass = 0, passes = passesFor(order[i]); pass < passes; ++pass) steps.push_back({order[i], pass, i == 0});
+  for (const std::size_t b : volume_.gridBricksInOrder(ctx, false)) {
+    // The pixels whose rays can meet the brick (normalized coordinates, y down the image).
+    const auto [lo, hi] = volume_.gridBrickOnScreen(ctx, b);
+    const std::array<int, 4> pixels{
+        std::clamp(int(std::floor((lo.x + 1.0f) * 0.5f * float(ctx.width))), 0, ctx.width),
+        std::clamp(int(std::floor((lo.y + 1.0f) * 0.5f * float(ctx.height))), 0, ctx.height),
+        std::clamp(int(std::ceil((hi.x + 1.0f) * 0.5f * float(ctx.width))), 0, ctx.width),
+        std::clamp(int(std::ceil((hi.y + 1.0f) * 0.5f * float(ctx.height))), 0, ctx.height)};
+    if (pixels[2] <= pixels[0] || pixels[3] <= pixels[1]) continue;  // off the picture
+    for (int pass = 0, passes = passesFor(b); pass < passes; ++pass) steps.push_back({b, pass, pixels});
+  }
   return steps;
 }
 
 double GridRayMarcher::renderWhole(const RenderContext& ctx, GLuint image) {
   const auto start = std::chrono::steady_clock::now();
   const GLuint p = beginMarch(ctx, image);
+  clearFrame(image);
   const std::vector<Step> steps = planFrame(ctx);
-  for (const Step& step : steps) marchPass(ctx, p, step);
+  for (const Step& step : steps) marchPass(p, step);
   lastPasses_ = int(steps.size());
   if (!volume_.asynchronous()) return 0.0;
   glFinish();  // timed for sizing quick frames: the window's path only
@@ -94,7 +113,7 @@ bool GridRayMarcher::refine(const RenderContext& ctx) {
   if (refineStep_ < refinePlan_.size() && refinePlan_[refineStep_].pass > 0)
     volume_.bindGridBrick(p, refinePlan_[refineStep_].brick);
   while (refineStep_ < refinePlan_.size()) {
-    marchPass(ctx, p, refinePlan_[refineStep_++]);
+    marchPass(p, refinePlan_[refineStep_++]);
     glFinish();
     if (refineStep_ < refinePlan_.size() && millisecondsSince(start) >= quick_.sliceMs()) {
       refineMs_ += millisecondsSince(start);
@@ -123,6 +142,8 @@ void GridRayMarcher::render(const RenderContext& ctx) {
       [this, &ctx] {
         refinePlan_ = planFrame(ctx);
         refineStep_ = 0;
+        ensureResumeImage(ctx.width, ctx.height);
+        clearFrame(volume_.image());
         refineMs_ = 0.0;
       },
       [this, &ctx] { return refine(ctx); });

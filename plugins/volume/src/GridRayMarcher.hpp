@@ -14,6 +14,7 @@
 #include "QuickFrames.hpp"
 #include "TetVolumeRenderer.hpp"
 
+#include <array>
 #include <vector>
 
 namespace volpost::volume {
@@ -37,6 +38,7 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   std::size_t brickCount() const { return volume_.gridBricks().count(); }
   /// Bricks uploaded since the grid was laid out (more than brickCount() when streamed).
   std::size_t brickUploads() const { return volume_.gridBricks().uploads(); }
+  std::size_t brickUploadedBytes() const { return volume_.gridBricks().uploadedBytes(); }
   /// Compute passes the last frame took (each at most kStepsPerPass steps per ray through
   /// one brick).
   int lastPasses() const { return lastPasses_; }
@@ -56,8 +58,8 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   /// One compute pass of a frame: a pass through one brick (the whole grid unbricked).
   struct Step {
     std::size_t brick = 0;
-    int pass = 0;             ///< 0: rays start where they enter the brick
-    bool firstBrick = false;  ///< the nearest brick: nothing accumulated before it
+    int pass = 0;                 ///< 0: rays start where they enter the brick
+    std::array<int, 4> pixels{};  ///< the pixels it covers: x0, y0, x1, y1 (exclusive)
   };
   void ensureResumeImage(int width, int height);
   /// Passes a brick needs: enough for the longest ray inside it.
@@ -66,7 +68,9 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   std::vector<Step> planFrame(const RenderContext& ctx) const;
   /// Sets up the march's program for ctx into `image`; returns the program.
   GLuint beginMarch(const RenderContext& ctx, GLuint image);
-  void marchPass(const RenderContext& ctx, GLuint program, const Step& step);
+  void marchPass(GLuint program, const Step& step);
+  /// Clears `image` and the rays' state for a new frame.
+  void clearFrame(GLuint image);
   /// The whole frame into `image`; returns the milliseconds it took (asynchronous path only).
   double renderWhole(const RenderContext& ctx, GLuint image);
   /// Advances the full frame by passes for about the slice's time; true when complete.

@@ -121,7 +121,6 @@ void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
   const auto twoPixels = [&](double depth) {
     return 2.0 * (ortho ? ctx.camera.viewHeight() : 2.0 * depth * halfAngle) / pixelsAcross;
   };
-  const glm::mat4 vp = volume_.imageViewProjection(ctx);
   std::vector<glm::vec3> vertices;
   brickDraws_.clear();
   lastSlices_ = 0;
@@ -139,41 +138,16 @@ void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
     BrickDraw draw{b, vertices.size(), triangles.size(), 0};
     vertices.insert(vertices.end(), triangles.begin(), triangles.end());
     draw.entryFirst = vertices.size();
-    for (const glm::vec3& q : entryQuad(vp, corner, u, v, w, ctx)) vertices.push_back(q);
+    // The entry pass needs one fragment per pixel the brick covers (clip-space x, y).
+    const auto [lo, hi] = volume_.gridBrickOnScreen(ctx, b);
+    for (const glm::vec3 q : {glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0),
+                              glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0), glm::vec3(lo.x, hi.y, 0)})
+      vertices.push_back(q);
     brickDraws_.push_back(draw);
   }
   glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(vertices.size() * sizeof(glm::vec3), 16)),
                     vertices.data(), GL_STREAM_DRAW);
   glVertexArrayVertexBuffer(vertexArray_.id(), 0, vertices_.id(), 0, sizeof(glm::vec3));
-}
-
-// The entry pass needs one fragment per pixel the brick covers: the rectangle round its
-// projected corners, a pixel wider (clip-space x, y), or the whole picture when a corner
-// lies behind the eye.
-std::array<glm::vec3, 6> GridSlicer::entryQuad(const glm::mat4& viewProjection, const glm::dvec3& corner,
-                                               const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w,
-                                               const RenderContext& ctx) {
-  glm::vec2 lo(-1.0f), hi(1.0f);
-  bool behind = false;
-  glm::vec2 boxLo(1e30f), boxHi(-1e30f);
-  for (int c = 0; c < 8; ++c) {
-    const glm::dvec3 p = corner + double(c & 1) * u + double((c >> 1) & 1) * v + double((c >> 2) & 1) * w;
-    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(p), 1.0f);
-    if (!(clip.w > 0.0f)) {
-      behind = true;
-      break;
-    }
-    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    boxLo = glm::min(boxLo, ndc);
-    boxHi = glm::max(boxHi, ndc);
-  }
-  if (!behind) {
-    const glm::vec2 pixel(2.0f / float(ctx.width), 2.0f / float(ctx.height));
-    lo = glm::clamp(boxLo - pixel, glm::vec2(-1.0f), glm::vec2(1.0f));
-    hi = glm::clamp(boxHi + pixel, glm::vec2(-1.0f), glm::vec2(1.0f));
-  }
-  return {glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0),
-          glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0), glm::vec3(lo.x, hi.y, 0)};
 }
 
 GLuint GridSlicer::beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing) {

@@ -41,6 +41,7 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   std::size_t brickCount() const { return volume_.gridBricks().count(); }
   /// Bricks uploaded since the grid was laid out (more than brickCount() when streamed).
   std::size_t brickUploads() const { return volume_.gridBricks().uploads(); }
+  std::size_t brickUploadedBytes() const { return volume_.gridBricks().uploadedBytes(); }
   /// Slices the last frame drew (a quick frame's while the full one is refined).
   std::size_t lastSlices() const { return lastSlices_; }
   bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
@@ -63,9 +64,6 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   /// Cuts ctx's slices, `spacing` apart, with each brick's box, and uploads them with each
   /// brick's entry quad, the bricks back to front (brickDraws_).
   void uploadSlices(const RenderContext& ctx, double spacing);
-  static std::array<glm::vec3, 6> entryQuad(const glm::mat4& viewProjection, const glm::dvec3& corner,
-                                            const glm::dvec3& u, const glm::dvec3& v, const glm::dvec3& w,
-                                            const RenderContext& ctx);
   /// Binds everything a draw into `image` for ctx needs (clearing it first if asked).
   GLuint beginDrawing(const RenderContext& ctx, GLuint image, bool clear, double spacing);
   /// Slice triangles [first, first + count), back to front; splitting a frame anywhere
