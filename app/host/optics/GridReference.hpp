@@ -13,6 +13,7 @@
 #include "host/optics/ReferenceRenderer.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/TransferFunction2D.hpp>
 
 #include <span>
 
@@ -29,5 +30,18 @@ SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> v
 ReferenceImage renderGridReference(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
                                    const Camera& camera, int width, int height, const RaySettings& settings = {},
                                    const Progress& progress = {}, int threads = 0);
+
+/// With a 2D transfer function (value, gradient magnitude), which has no exact integral along
+/// a ray: the midpoint rule in each cell with the cell's exact trilinear value and gradient,
+/// the step halved from a quarter of the shortest spacing until the ray's light changes by
+/// at most `tolerance` per channel in one halving after at most twice that in the one
+/// before (at most ten halvings); iso-surfaces as above.
+SegmentLight integrateGridRay2D(const RegularGrid& grid, std::span<const double> values, const TransferFunction2D& tf,
+                                glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
+                                const RaySettings& settings = {}, double tolerance = 1e-5);
+ReferenceImage renderGridReference2D(const RegularGrid& grid, std::span<const double> values,
+                                     const TransferFunction2D& tf, const Camera& camera, int width, int height,
+                                     const RaySettings& settings = {}, double tolerance = 1e-5,
+                                     const Progress& progress = {}, int threads = 0);
 
 }  // namespace volpost::optics

@@ -52,6 +52,10 @@ void main() {
       vec2 backShade = shadeOf(back);
       shadeFront = frontShade;
       shadeBack = backShade;
+#if INTEGRATION_MODE == 4  // a 2D transfer function reads the gradient magnitude
+      gradientFront = length(worldGradient(front.yzw));
+      gradientBack = length(worldGradient(back.yzw));
+#endif
       integrateValues(t, next, front.x, back.x);
       t = next;
       front = back;

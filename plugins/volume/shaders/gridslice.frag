@@ -43,6 +43,10 @@ void main() {
   vec4 front = sampleAlongRay(a), back = sampleAlongRay(b);
   shadeFront = shadeOf(front);
   shadeBack = shadeOf(back);
+#if INTEGRATION_MODE == 4  // a 2D transfer function reads the gradient magnitude
+  gradientFront = length(worldGradient(front.yzw));
+  gradientBack = length(worldGradient(back.yzw));
+#endif
   integrateValues(a, b, front.x, back.x);
   fragColor = vec4(accColor, 1.0 - accT);
 }

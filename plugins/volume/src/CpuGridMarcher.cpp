@@ -115,9 +115,16 @@ struct Marcher {
     return settings.shading ? optics::headlight(glm::transpose(grid.toIndex()) * indexGradient, r.dir) : glm::dvec2(1.0, 0.0);
   }
 
-  // A piece over which the scalar is linear, cut at the iso-surfaces it crosses.
+  // The gradient magnitude of a sample (its index gradient) in model units, for a 2D
+  // transfer function.
+  double gradientOf(const glm::dvec3& indexGradient) const {
+    return settings.transferFunction2D ? glm::length(glm::transpose(grid.toIndex()) * indexGradient) : 0.0;
+  }
+
+  // A piece over which the scalar is linear, cut at the iso-surfaces it crosses; with a 2D
+  // transfer function its gradient magnitude goes linearly from gradients.x to .y.
   void piece(const GridRay& r, const glm::dvec3& o, const glm::dvec3& e, double ta, double tb, float sa, float sb,
-             const EmissionShade& shade, optics::SegmentLight& light) const {
+             const EmissionShade& shade, const glm::dvec2& gradients, optics::SegmentLight& light) const {
     const double length = tb - ta;
     double x0 = 0.0;
     for (std::size_t n = 0; n < isoValues.size() && sa != sb; ++n) {
@@ -131,7 +138,7 @@ struct Marcher {
         }
       }
       if (which == isoValues.size()) break;
-      integratePart(sa, sb, x0, best, length, shade, light);
+      integratePart(sa, sb, x0, best, length, shade, gradients, light);
       const optics::IsoSurface& s = settings.isoSurfaces[which];
       glm::dvec3 indexGradient;
       (void)grid.at(o + (ta + best * length) * e, indexGradient);
@@ -141,15 +148,29 @@ struct Marcher {
       optics::compositeBehind(light, {s.color * isoShade * s.opacity, 1.0 - s.opacity});
       x0 = best;
     }
-    integratePart(sa, sb, x0, 1.0, length, shade, light);
+    integratePart(sa, sb, x0, 1.0, length, shade, gradients, light);
   }
 
   // The part [x0, x1] of a piece, its shading interpolated from the piece's ends.
   void integratePart(float sa, float sb, double x0, double x1, double length, const EmissionShade& shade,
-                     optics::SegmentLight& light) const {
+                     const glm::dvec2& gradients, optics::SegmentLight& light) const {
     if (!(x1 > x0)) return;
     const double offset = grid.valueOffset();
     const double a = offset + double(sa) + x0 * double(sb - sa), b = offset + double(sa) + x1 * double(sb - sa);
+    if (const auto& tf2d = settings.transferFunction2D) {
+      // Color and extinction at both ends from the table, linear between (as the GPU).
+      glm::dvec4 front = tf2d->evaluate(a, gradients.x + x0 * (gradients.y - gradients.x));
+      glm::dvec4 back = tf2d->evaluate(b, gradients.x + x1 * (gradients.y - gradients.x));
+      if (!(front.a > 0.0) && !(back.a > 0.0)) return;
+      if (settings.shading) {
+        const glm::dvec2 kf = shade.front + x0 * (shade.back - shade.front), kb = shade.front + x1 * (shade.back - shade.front);
+        front = glm::dvec4(glm::dvec3(front) * kf.x + kf.y, front.a);
+        back = glm::dvec4(glm::dvec3(back) * kb.x + kb.y, back.a);
+      }
+      optics::compositeBehind(light, optics::linearSegment(glm::dvec3(front), front.a, glm::dvec3(back), back.a,
+                                                           (x1 - x0) * length));
+      return;
+    }
     if (integrator.transparent(a, b)) return;
     const EmissionShade part{shade.front + x0 * (shade.back - shade.front), shade.front + x1 * (shade.back - shade.front)};
     optics::compositeBehind(light, integrator.integrate(a, b, (x1 - x0) * length, settings.shading ? &part : nullptr));
@@ -198,6 +219,7 @@ struct Marcher {
     glm::dvec3 g;
     float sf = grid.at(o + t * e, g);
     glm::dvec2 frontShade = shadeOf(g, r);
+    double frontGradient = gradientOf(g);
     const double nudge = 1e-9 * (std::abs(t1) + step);
     while (t < t1) {
       ++steps;
@@ -208,6 +230,7 @@ struct Marcher {
         t = exit > t ? exit : std::min(t + step, t1);
         sf = grid.at(o + t * e, g);
         frontShade = shadeOf(g, r);
+        frontGradient = gradientOf(g);
         continue;
       }
       double next = std::min((std::floor(t / step) + 1.0) * step, t1);
@@ -215,10 +238,12 @@ struct Marcher {
       if (!(next > t)) break;
       const float sb = grid.at(o + next * e, g);
       const glm::dvec2 backShade = shadeOf(g, r);
-      piece(r, o, e, t, next, sf, sb, {frontShade, backShade}, light);
+      const double backGradient = gradientOf(g);
+      piece(r, o, e, t, next, sf, sb, {frontShade, backShade}, {frontGradient, backGradient}, light);
       t = next;
       sf = sb;
       frontShade = backShade;
+      frontGradient = backGradient;
       if (light.transmittance < settings.terminationTransmittance) {
         stopped = t < t1;
         break;
@@ -230,12 +255,15 @@ struct Marcher {
 
 // Bricks the transfer function shows nothing of (and no iso-surface crosses).
 std::vector<std::uint8_t> clearBricks(const GridSamples& grid, const PiecewiseIntegrator& integrator,
-                                      const std::vector<optics::IsoSurface>& isoSurfaces) {
+                                      const std::vector<optics::IsoSurface>& isoSurfaces,
+                                      const std::optional<TransferFunction2D>& tf2d) {
   const std::size_t count = grid.bricks()[0] * grid.bricks()[1] * grid.bricks()[2];
   std::vector<std::uint8_t> clear(count, 0);
   for (std::size_t b = 0; b < count; ++b) {
     const double lo = grid.valueOffset() + grid.brickMin(b), hi = grid.valueOffset() + grid.brickMax(b);
-    bool clearHere = integrator.transparent(lo, hi);
+    // A 2D transfer function is zero outside its table's values, whatever the gradient.
+    bool clearHere = tf2d ? (tf2d->empty() || hi < tf2d->valueLow() || lo > tf2d->valueHigh())
+                          : integrator.transparent(lo, hi);
     for (const optics::IsoSurface& s : isoSurfaces) clearHere = clearHere && !(s.value >= lo && s.value <= hi);
     clear[b] = clearHere;
   }
@@ -254,7 +282,7 @@ CpuImage renderCpuGrid(const GridSamples& grid, const TransferFunction& tf, cons
   const unsigned threads = threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
   const auto start = Clock::now();
   const PiecewiseIntegrator integrator(tf);
-  const std::vector<std::uint8_t> clear = clearBricks(grid, integrator, settings.isoSurfaces);
+  const std::vector<std::uint8_t> clear = clearBricks(grid, integrator, settings.isoSurfaces, settings.transferFunction2D);
   Marcher marcher{grid, integrator, settings, clear, {}, step > 0.0 ? step : 0.5 * grid.shortestSpacing()};
   for (const optics::IsoSurface& s : settings.isoSurfaces) marcher.isoValues.push_back(float(s.value - grid.valueOffset()));
 

@@ -12,6 +12,10 @@
 // the next boundary face along them.
 #pragma once
 
+#include <volpost/core/TransferFunction2D.hpp>
+
+#include <optional>
+
 #include <volpost/core/Camera.hpp>
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/Progress.hpp>
@@ -37,6 +41,9 @@ struct CpuRaySettings {
   /// Regular grids: the emission shaded by the trilinear gradient, light at the eye
   /// (volpost/core/optics/Headlight.hpp). The tetrahedral walk ignores it.
   bool shading = false;
+  /// Regular grids: a 2D transfer function over the value and its gradient magnitude, used
+  /// instead of the 1D one. The tetrahedral walk refuses it.
+  std::optional<TransferFunction2D> transferFunction2D;
 };
 
 struct CpuRenderStats {

@@ -55,6 +55,11 @@ void CpuVolumeRenderer::setShading(bool on) {
   settings_.shading = on;
 }
 
+void CpuVolumeRenderer::setTransferFunction2D(const std::optional<TransferFunction2D>& tf) {
+  if (settings_.transferFunction2D != tf) ++revision_;
+  settings_.transferFunction2D = tf;
+}
+
 void CpuVolumeRenderer::setSamplingStep(double step) {
   if (!(step >= 0.0) || !std::isfinite(step))
     throw std::invalid_argument("the sampling step must be a length >= 0, not " + std::to_string(step));
@@ -128,6 +133,9 @@ std::function<CpuImage(const Camera&, int, int, const CpuRaySettings&, const Pro
                                                                           const CpuRaySettings& s, const Progress& p) {
       return renderCpuGrid(*grid, tf, camera, w, h, s, step, p, threads);
     };
+  if (settings_.transferFunction2D)
+    throw std::invalid_argument("2D transfer functions (over the value and its gradient) are drawn on regular grids "
+                                "only, not on meshes of tetrahedra");
   return [mesh = walkMesh_, part = visiblePart(), tf = tf_, threads = threads_](const Camera& camera, int w, int h,
                                                                                const CpuRaySettings& s, const Progress& p) {
     return renderCpu(*mesh, *part, tf, camera, w, h, s, p, threads);

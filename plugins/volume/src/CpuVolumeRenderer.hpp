@@ -38,6 +38,8 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   bool drawsTetrahedra() const override { return true; }
   /// Grids only (the marcher shades by the trilinear gradient); meshes are drawn unlit.
   void setShading(bool on) override;
+  /// Grids only; a mesh's frame with one set is refused.
+  void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override;
   void setValues(std::span<const double> values) override;
   void setTransferFunction(const TransferFunction& tf) override {
     tf_ = tf;

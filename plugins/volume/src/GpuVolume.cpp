@@ -45,6 +45,8 @@ void setFilter(GLuint tex, GLint filter) {
   glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
 }
 
+constexpr int kTransferFunction2DMode = 4;  // INTEGRATION_MODE of common/volume_segment.glsl
+
 int modeIndex(IntegrationMode mode) {
   switch (mode) {
     case IntegrationMode::LinearSegments: return 0;
@@ -133,6 +135,13 @@ void GpuVolume::setTransferFunction(const TransferFunction& tf) {
   ++revision_;
 }
 
+void GpuVolume::setTransferFunction2D(const std::optional<TransferFunction2D>& tf) {
+  if (tf == tf2d_) return;
+  tf2d_ = tf;
+  tf2dDirty_ = true;
+  ++revision_;
+}
+
 void GpuVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
   if (planes.size() > std::size_t(kMaxClipPlanes))
     throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
@@ -180,7 +189,8 @@ void GpuVolume::release() {
   preFuture_ = {};
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_}) t->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
+  tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
   programs_.clear();
   composite_.release();
@@ -197,6 +207,7 @@ void GpuVolume::prepare(const RenderContext& ctx) {
     valuesDirty_ = false;
   }
   if (grid_) layOutBricks();  // the budget may have changed since
+  if (tf2dDirty_) uploadTransferFunction2D();
   if (tablesNeedRebuild()) rebuildTables();
   // A table finished since the last frame goes up now; with none uploaded yet, wait.
   collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
@@ -388,6 +399,24 @@ void GpuVolume::uploadPreintegration(const std::vector<float>& values) {
   ++revision_;  // frames drawn with the previous table are outdated
 }
 
+// The 2D transfer function's nodes, interpolated bilinearly by the texture unit as
+// TransferFunction2D::evaluate does (emission and extinction, the color their quotient).
+void GpuVolume::uploadTransferFunction2D() {
+  tf2dDirty_ = false;
+  if (!tf2d_) {
+    tf2dTable_.reset();
+    return;
+  }
+  if (!tf2dTable_) {
+    tf2dTable_ = texture2D(GL_RGBA32F, TransferFunction2D::kValueNodes, TransferFunction2D::kGradientNodes);
+    setFilter(tf2dTable_.id(), GL_LINEAR);
+  }
+  glTextureSubImage2D(tf2dTable_.id(), 0, 0, 0, TransferFunction2D::kValueNodes, TransferFunction2D::kGradientNodes,
+                      GL_RGBA, GL_FLOAT, tf2d_->table().data());
+  ++tableBuilds_;
+  gl::check("GpuVolume::uploadTransferFunction2D");
+}
+
 void GpuVolume::ensureImage(int width, int height) {
   if (image_ && width == imageWidth_ && height == imageHeight_) return;
   image_ = texture2D(GL_RGBA32F, width, height);
@@ -397,7 +426,7 @@ void GpuVolume::ensureImage(int width, int height) {
 }
 
 GLuint GpuVolume::program(const std::vector<std::string>& stageFiles) {
-  const int mode = modeIndex(mode_);
+  const int mode = tf2d_ && grid_ ? kTransferFunction2DMode : modeIndex(mode_);
   std::string key = std::to_string(mode);
   for (const std::string& f : stageFiles) key += " " + f;
   gl::Program& p = programs_[key];
@@ -444,6 +473,12 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
   glProgramUniform1i(p, u("shading"), shading_ && grid_);
+  if (tf2d_) {
+    // In the values' frame: gpuValue scales the values, and so their gradient.
+    glProgramUniform1f(p, u("tf2dValueLow"), gpu_.gpuValue(tf2d_->valueLow()));
+    glProgramUniform1f(p, u("tf2dValueHigh"), gpu_.gpuValue(tf2d_->valueHigh()));
+    glProgramUniform1f(p, u("tf2dGradientHigh"), float(tf2d_->gradientHigh() * gpu_.valueScale));
+  }
   if (grid_) {
     const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
     glm::mat4 worldToIndex{glm::mat3(toIndex)};
@@ -481,6 +516,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
   glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's
+  glBindTextureUnit(binding::kTf2d, tf2dTable_ ? tf2dTable_.id() : 0);
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {
       {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
       {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},

@@ -17,6 +17,7 @@
 #include "TetMeshGpu.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/render/GlObjects.hpp>
 
 #include <volpost/render/VolumeRenderer.hpp>
@@ -40,6 +41,11 @@ class GpuVolume {
   void setGrid(const RegularGrid& grid, std::span<const double> values);
   void setValues(std::span<const double> values);
   void setTransferFunction(const TransferFunction& tf);
+  /// Grids only: a 2D transfer function over the value and its gradient magnitude instead
+  /// of the 1D one (nullopt: the 1D one again). Its table is integrated linearly between
+  /// the samples, like the 1D one in sampling mode's lattice (compiled as its own mode).
+  void setTransferFunction2D(const std::optional<TransferFunction2D>& tf);
+  bool hasTransferFunction2D() const { return tf2d_.has_value(); }
   void setClipPlanes(const std::vector<ClipPlane>& planes);
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces);
   void setIntegrationMode(IntegrationMode mode);
@@ -132,6 +138,7 @@ class GpuVolume {
   std::size_t textureBudget() const;
   void setGridValues(std::span<const double> values);
   void rebuildTables();
+  void uploadTransferFunction2D();
   bool tablesNeedRebuild() const;
   void launchPreintegration();
   void uploadPreintegration(const std::vector<float>& values);
@@ -145,6 +152,7 @@ class GpuVolume {
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
   TransferFunction tf_;
+  std::optional<TransferFunction2D> tf2d_;
   std::vector<ClipPlane> clipPlanes_;
   std::vector<optics::IsoSurface> isoSurfaces_;
   IntegrationMode mode_ = IntegrationMode::LinearSegments;
@@ -169,7 +177,8 @@ class GpuVolume {
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
-  gl::Texture psiTable_, isoTable_, preTable_, image_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_, tf2dTable_;
+  bool tf2dDirty_ = false;
   GridBricks bricks_;
   int imageWidth_ = 0, imageHeight_ = 0;
 };

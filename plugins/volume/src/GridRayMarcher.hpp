@@ -25,6 +25,7 @@ class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
   void setShading(bool on) override { volume_.setShading(on); }
+  void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override { volume_.setTransferFunction2D(tf); }
   void initialize() override {
     volume_.initialize();
     quick_.release();

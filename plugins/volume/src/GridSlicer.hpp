@@ -31,6 +31,7 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
   void setShading(bool on) override { volume_.setShading(on); }
+  void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override { volume_.setTransferFunction2D(tf); }
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;

@@ -15,7 +15,7 @@ std::string glslDefines() {
       {"BINDING_RAY_COUNTERS", kRayCounters}, {"UNIT_PSI", kPsiTable},
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
-      {"UNIT_GRID", kGrid}};
+      {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

@@ -14,7 +14,8 @@ uniform vec3 eye;                    // mesh-relative (perspective)
 uniform bool orthographic;
 uniform ivec2 imageSize_;
 // INTEGRATION_MODE (0 linear segments with exact cuts, 1 pre-integrated, 2 sampling, 3
-// linear segments cut where a 2D table says) is compiled in, one program per mode: as a
+// linear segments cut where a 2D table says, 4 a 2D transfer function over the value and
+// its gradient magnitude, grids only) is compiled in, one program per mode: as a
 // run-time branch, some drivers (llvmpipe) run every mode's code for every segment (the
 // ray caster took 37% longer on the fine post).
 uniform float samplingStep;
@@ -126,6 +127,35 @@ void integrateLinear(float sf, float sb, float len) {
   }
 }
 
+// ---- a 2D transfer function (value, gradient magnitude) ---------------------------
+// The includer sets the gradient magnitudes at the ends of the piece it hands to
+// integrateValues (gradientFront, gradientBack); between them the magnitude goes linearly
+// along the ray, like the value. Color and extinction from the table at both ends of each
+// part are integrated as linear along it (exactly, as linearPiece does): second order in
+// the step, as the sampled 1D modes.
+float gradientFront = 0.0, gradientBack = 0.0;
+float pieceStart = 0.0, pieceEnd = 1.0;  // the parameters integrateValues was given
+#if INTEGRATION_MODE == 4
+layout(binding = UNIT_TF2D) uniform sampler2D tf2dTable;  // nodes: (emission rgb, extinction)
+uniform float tf2dValueLow, tf2dValueHigh, tf2dGradientHigh;
+
+// TransferFunction2D::evaluate: the table's bilinear interpolation, zero outside it.
+vec4 tf2dEval(float s, float g) {
+  vec2 x = vec2((s - tf2dValueLow) / (tf2dValueHigh - tf2dValueLow), g / tf2dGradientHigh);
+  if (any(lessThan(x, vec2(0.0))) || any(greaterThan(x, vec2(1.0)))) return vec4(0.0);
+  vec2 n = vec2(textureSize(tf2dTable, 0));
+  vec4 e = textureLod(tf2dTable, (x * (n - 1.0) + 0.5) / n, 0.0);
+  return e.a > 0.0 ? vec4(e.rgb / e.a, e.a) : vec4(0.0);
+}
+
+void integrate2D(float t0, float t1, float sf, float sb) {
+  float span = pieceEnd - pieceStart;
+  float g0 = span > 0.0 ? mix(gradientFront, gradientBack, (t0 - pieceStart) / span) : gradientFront;
+  float g1 = span > 0.0 ? mix(gradientFront, gradientBack, (t1 - pieceStart) / span) : gradientBack;
+  linearPiece(lit(tf2dEval(sf, g0), sf), lit(tf2dEval(sb, g1), sb), t1 - t0);
+}
+#endif
+
 void integratePreintegrated(float sf, float sb, float len) {
   int pieces = max(1, int(ceil(len / preMaxLength)));
   vec3 size = vec3(textureSize(preTable, 0));
@@ -179,6 +209,8 @@ void integratePiece(float t0, float t1, float sf, float sb) {
   integrateLinear(sf, sb, t1 - t0);
 #elif INTEGRATION_MODE == 1
   integratePreintegrated(sf, sb, t1 - t0);
+#elif INTEGRATION_MODE == 4
+  integrate2D(t0, t1, sf, sb);
 #else
   integrateSampling(t0, t1, sf, sb);
 #endif
@@ -193,6 +225,8 @@ vec3 isoGradient(float t);
 void integrateValues(float t0, float t1, float sf, float sb) {
   shadeFromS = sf;
   shadeToS = sb;
+  pieceStart = t0;
+  pieceEnd = t1;
   if (isoCount == 0 || sf == sb) { integratePiece(t0, t1, sf, sb); return; }
   // Iso-surfaces crossed in (sf, sb], in ray order (picked one by one: no local arrays,
   // which cost registers on every invocation), between volume pieces.

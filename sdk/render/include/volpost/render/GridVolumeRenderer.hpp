@@ -7,7 +7,10 @@
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
+
+#include <optional>
 
 namespace volpost {
 
@@ -20,6 +23,10 @@ class GridVolumeRenderer : public VolumeRenderer {
   /// Shading of the emission by the trilinear gradient with the light at the eye
   /// (volpost/core/optics/Headlight.hpp); off by default.
   virtual void setShading(bool on) = 0;
+  /// A 2D transfer function over the value and its gradient magnitude (the trilinear
+  /// field's, in model units), used instead of the 1D one while set; nullopt goes back to
+  /// the 1D one. Throws std::invalid_argument where the renderer cannot draw it.
+  virtual void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) = 0;
   /// Whether setVolume() takes meshes of tetrahedra too.
   virtual bool drawsTetrahedra() const { return false; }
 };
