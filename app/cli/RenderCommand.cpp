@@ -77,6 +77,8 @@ struct Options {
                                           "point).").arg(QString::fromStdString(integrationModeChoices())), "MODE"};
   QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
                               "color map over the result's range.", "FILE"};
+  QCommandLineOption tf2d{"tf2d", "Regular grids: a 2D transfer function over the value and its gradient magnitude "
+                                  "(volpost-tf2d JSON: rectangles and triangles), instead of --tf.", "FILE"};
   QCommandLineOption clip{"clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
                                   "(repeatable; the surface shows the cut face colored by the result).", "PLANE"};
   QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (the "
@@ -179,6 +181,16 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
       throw std::runtime_error(path + ": " + e.what());
     }
   }
+  if (p.isSet(o.tf2d)) {
+    const std::string path = pathBytes(p.value(o.tf2d));
+    try {
+      scene.setTransferFunction2D(TransferFunction2D::fromJson(readTextFile(path, 16u << 20)));
+    } catch (const ReadError&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw std::runtime_error(path + ": " + e.what());
+    }
+  }
   if (p.isSet(o.clip)) {
     std::vector<ClipPlane> planes;
     for (const QString& c : p.values(o.clip)) {
@@ -223,7 +235,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   };
   if (surface) {
     const QString why = "works with volume renderers (--renderer raycast, vicp, cpu, reference)";
-    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.volumeEdges,
+    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges,
                                              &o.samplingStep, &o.termination, &o.shading, &o.floatOut, &o.threads})
       refuse(*option, why);
   } else {
@@ -244,6 +256,14 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     refuse(o.samplingStep, "is not used by the reference renderer (it integrates exactly)");
     refuse(o.termination, "is not used by the reference renderer (it never stops early)");
   }
+  if (renderer == "raycast" || renderer == "vicp" || renderer == "vicp-exact")
+    refuse(o.tf2d, "is drawn by the regular-grid renderers (texture-raymarch, texture-slices, cpu, reference), not by " +
+                       renderer);
+  if (p.isSet(o.tf2d) && p.isSet(o.tf))
+    throw UsageError("--tf and --tf2d: a volume is drawn with one transfer function; give one");
+  if (p.isSet(o.tf2d) && (p.isSet(o.colormap) || p.isSet(o.range)))
+    throw UsageError("--colormap and --range color the default transfer function; with --tf2d the file's widgets "
+                     "give the colors: leave them out");
   if (p.isSet(o.tf) && (p.isSet(o.colormap) || p.isSet(o.range)))
     throw UsageError("--colormap and --range color the default transfer function; with --tf the file's colors "
                      "and values are used: leave them out");
@@ -388,7 +408,7 @@ int runRender(const QStringList& args) {
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
   const Options o;
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
-                     o.renderer, o.mode, o.tf, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
+                     o.renderer, o.mode, o.tf, o.tf2d, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
                      o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps, o.readerOption, o.slice});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);

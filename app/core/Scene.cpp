@@ -194,6 +194,11 @@ void Scene::setTransferFunction(std::optional<TransferFunction> tf) {
   changed_.tables = true;
 }
 
+void Scene::setTransferFunction2D(std::optional<TransferFunction2D> tf) {
+  state_.volume.transferFunction2D = std::move(tf);
+  changed_.tables = true;
+}
+
 void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
   for (const ClipPlane& p : planes) {
     const double scale = std::max({std::abs(p.normal.x), std::abs(p.normal.y), std::abs(p.normal.z)});
@@ -481,6 +486,9 @@ std::optional<LegendPicture> Scene::legend() const {
   if (!view_) return std::nullopt;
   LegendContent content{QString::fromStdString(view_->quantity.displayName()), stepAndLocation(*view_), 0.0, 1.0,
                         view_->range.nanCount};
+  // A 2D transfer function's colors depend on the gradient too: no bar over the values
+  // could say what a color means.
+  if (state_.volume.shown && state_.volume.transferFunction2D) return std::nullopt;
   if (state_.volume.shown) {
     const TransferFunction tf = transferFunction();
     content.subtitle = "volume  " + content.subtitle.trimmed();
@@ -712,6 +720,12 @@ void Scene::applyToVolume() {
     applyToGridVolume(*grid);
     return;
   }
+  if (v.transferFunction2D)
+    throw std::invalid_argument(session_->model().grid
+                                    ? "the volume renderer '" + v.renderer +
+                                          "' has no 2D transfer functions: choose texture-raymarch, texture-slices or cpu"
+                                    : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
+                                      "(SEG-Y, image data); this model is a mesh");
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
   if (cullPlanes != culledFor_) changed_.geometry = true;
   const Mesh& tets = session_->tetrahedra().mesh;
@@ -768,6 +782,7 @@ void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
     renderer.setValues(view_->values);
   }
   if (changed_.mode) renderer.setShading(state_.volume.shading);
+  if (changed_.tables) renderer.setTransferFunction2D(state_.volume.transferFunction2D);
   applyVolumeSettings();
 }
 

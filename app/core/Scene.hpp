@@ -106,6 +106,9 @@ class Scene {
   void setIntegrationMode(IntegrationMode mode);
   /// nullopt: the default for the result.
   void setTransferFunction(std::optional<TransferFunction> tf);
+  /// A 2D transfer function (value x gradient magnitude) instead of the 1D one, for regular
+  /// grids drawn by a grid renderer; nullopt: the 1D one again. A mesh refuses it when drawn.
+  void setTransferFunction2D(std::optional<TransferFunction2D> tf);
   /// Free planes and the box together must stay within kMaxClipPlanes (throws otherwise).
   void setClipPlanes(std::vector<ClipPlane> planes);
   void setClipBox(std::optional<ClipBox> box);

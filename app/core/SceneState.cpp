@@ -79,6 +79,7 @@ json jsonOf(const VolumeLayer& v) {
   out["samplingStep"] = v.samplingStep;
   out["termination"] = v.termination;
   out["shading"] = v.shading;
+  if (v.transferFunction2D) out["transferFunction2D"] = json::parse(v.transferFunction2D->toJson());
   out["edges"] = v.edges;
   return out;
 }
@@ -97,6 +98,14 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
       v.transferFunction = TransferFunction::fromJson(r.object(*x, "volume.transferFunction").dump());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(fileName + ": \"volume.transferFunction\": " + e.what());
+    }
+  }
+  if (const json* x = r.find(in, "transferFunction2D")) {
+    try {
+      if (!x->is_null())
+        v.transferFunction2D = TransferFunction2D::fromJson(r.object(*x, "volume.transferFunction2D").dump());
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(fileName + ": \"volume.transferFunction2D\": " + e.what());
     }
   }
   if (const json* x = r.find(in, "clipPlanes")) {

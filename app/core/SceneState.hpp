@@ -13,6 +13,7 @@
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/MeshReader.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
@@ -58,6 +59,8 @@ struct VolumeLayer {
   std::string renderer = "raycast";  ///< a renderer plugin's name (volpost plugins lists them)
   IntegrationMode mode = IntegrationMode::LinearSegments;
   std::optional<TransferFunction> transferFunction;  ///< nullopt: the default for the result
+  /// Regular grids: over the value and its gradient magnitude, used instead of the 1D one.
+  std::optional<TransferFunction2D> transferFunction2D;
   std::vector<ClipPlane> clipPlanes;                  ///< free planes (the window's dragged one)
   std::optional<ClipBox> clipBox;                     ///< also culls: the GPU holds only its inside
   std::vector<optics::IsoSurface> isoSurfaces;

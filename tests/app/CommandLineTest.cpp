@@ -109,6 +109,68 @@ TEST(RenderCommand, GridSlicesOfASurvey) {
   EXPECT_EQ(runVolpost("render " + dataFile("formats/golden.frd") + " --field T --slice i=1 -o " + plain).exitCode, 2);
 }
 
+TEST(RenderCommand, TwoDimensionalTransferFunctionOfASurvey) {
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string cube = dataFile("seismic/synthetic_12x10x40.sgy"), common = " --field amplitude --size 64x48 ";
+  const std::string tf = (dir / "boundaries.tf2d.json").string(), broken = (dir / "broken.tf2d.json").string();
+  std::ofstream(tf) << R"({"format":"volpost-tf2d","version":1,"widgets":[
+    {"shape":"triangle","value":0.0,"width":0.5,"gradient":[0.0,0.25],"color":[0.95,0.45,0.1],"extinction":0.02},
+    {"shape":"rectangle","value":0.85,"width":0.6,"gradient":[0.0,0.04],"color":[0.2,0.5,1.0],"extinction":0.05}]})";
+  std::ofstream(broken) << R"({"format":"volpost-tf2d","version":1,"widgets":[{"shape":"circle"}]})";
+  const std::string plain = (dir / "tf1d.png").string(), twoD = (dir / "tf2d.png").string(),
+                    again = (dir / "tf2d_again.png").string(), state = (dir / "tf2d.json").string();
+  for (const char* renderer : {"texture-raymarch", "cpu"}) {
+    ASSERT_EQ(runVolpost("render " + cube + common + "--renderer " + renderer + " -o " + plain).exitCode, 0);
+    const auto r = runVolpost("render " + cube + common + "--renderer " + renderer + " --tf2d " + tf + " -o " + twoD +
+                              " --save-state " + state);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(QImage(QString::fromStdString(plain)), QImage(QString::fromStdString(twoD))) << renderer;
+    ASSERT_EQ(runVolpost("render --state " + state + " --size 64x48 -o " + again).exitCode, 0);
+    EXPECT_EQ(QImage(QString::fromStdString(again)), QImage(QString::fromStdString(twoD))) << renderer;
+  }
+  const auto usage = [&](const std::string& extra, const std::string& says) {
+    const auto r = runVolpost("render " + cube + common + extra + " -o " + plain);
+    EXPECT_EQ(r.exitCode, 2) << extra;
+    EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+  };
+  usage("--renderer raycast --tf2d " + tf, "not by raycast");
+  usage("--tf2d " + tf, "works with volume renderers");
+  usage("--renderer cpu --tf2d " + tf + " --tf " + tf, "one transfer function");
+  const auto bad = runVolpost("render " + cube + common + "--renderer cpu --tf2d " + broken + " -o " + plain);
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("broken.tf2d.json: 2D transfer function JSON: widgets[0]"), std::string::npos) << bad.output;
+  const auto mesh = runVolpost("render " + dataFile("formats/golden.frd") + " --field T --renderer cpu --tf2d " + tf +
+                               " -o " + plain);
+  EXPECT_NE(mesh.exitCode, 0);
+  EXPECT_NE(mesh.output.find("this model is a mesh"), std::string::npos) << mesh.output;
+}
+
+TEST(RenderCommand, AGridLargerThanTheGpuMemoryBudgetIsDrawnInBricks) {
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string cube = dataFile("seismic/synthetic_12x10x40.sgy"), common = " --field amplitude --size 64x48 ";
+  const std::string whole = (dir / "one_texture.png").string(), bricked = (dir / "bricked.png").string();
+  for (const char* renderer : {"texture-raymarch", "texture-slices"}) {
+    ASSERT_EQ(runVolpost("render " + cube + common + "--renderer " + renderer + " -o " + whole).exitCode, 0);
+    // 12 x 10 x 40 floats are 19 KB: a 4 KB budget takes bricks of 6^3 points, 4 at a time.
+    const auto r = runVolpost("render " + cube + common + "--renderer " + renderer + " --gpu-memory-budget 4K -o " + bricked);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const QImage a(QString::fromStdString(whole)), b(QString::fromStdString(bricked));
+    ASSERT_EQ(a.size(), b.size());
+    int worst = 0;
+    for (int y = 0; y < a.height(); ++y)
+      for (int x = 0; x < a.width(); ++x)
+        for (const auto& [p, q] : {std::pair{qRed(a.pixel(x, y)), qRed(b.pixel(x, y))},
+                                   std::pair{qGreen(a.pixel(x, y)), qGreen(b.pixel(x, y))},
+                                   std::pair{qBlue(a.pixel(x, y)), qBlue(b.pixel(x, y))}})
+          worst = std::max(worst, std::abs(p - q));
+    EXPECT_LE(worst, 3) << renderer << ": bricks give the one texture's picture within rounding";
+  }
+  const auto tiny = runVolpost("render " + cube + common + "--renderer texture-slices --gpu-memory-budget 100 -o " + bricked);
+  EXPECT_EQ(tiny.exitCode, 1);
+  EXPECT_NE(tiny.output.find("GPU memory budget of 100 bytes"), std::string::npos) << tiny.output;
+  EXPECT_EQ(runVolpost("render " + cube + common + "--gpu-memory-budget lots -o " + bricked).exitCode, 2);
+}
+
 TEST(InfoCommand, ListsDefectsOfAFlaggedFile) {
   const auto r = runVolpost("info " + dataFile("bad/inverted_tets.vtu"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
