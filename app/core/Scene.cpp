@@ -69,6 +69,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.gridSlices = {};
   state_.surfaceShown = true;  // hidden for another model's slices, it would leave this one's view empty
   state_.volume.transferFunction.reset();
+  state_.volume.transferFunction2D.reset();  // its values and gradients were the last model's
   state_.streamlines = StreamlineLayer{};
   streamlineResult_.reset();
   streamlinesUploaded_ = false;

@@ -33,6 +33,8 @@
 #include <QDropEvent>
 #include <QMimeData>
 #include <QUrl>
+#include "host/TextFile.hpp"
+
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
@@ -339,6 +341,22 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
       const QSignalBlocker block(shading);
       shading->setChecked(false);  // a mesh: the message says why
     }
+  });
+
+  QAction* load2d = view->addAction("Load a 2D Transfer Function (grids)...");
+  load2d->setObjectName("load2dAction");
+  load2d->setToolTip("Color and opacity over the value and its gradient magnitude (volpost-tf2d JSON): boundaries "
+                     "apart from the insides of the same value");
+  connect(load2d, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Load a 2D transfer function", QString(),
+                                                      "2D transfer functions (*.json);;All files (*)");
+    if (!path.isEmpty()) loadTransferFunction2D(path);
+  });
+  QAction* clear2d = view->addAction("Use the 1D Transfer Function");
+  clear2d->setObjectName("clear2dAction");
+  connect(clear2d, &QAction::triggered, this, [this] {
+    if (changeScene([](Scene& s) { s.setTransferFunction2D(std::nullopt); }))
+      statusBar()->showMessage("Volume colors from the 1D transfer function");
   });
 
   QMenu* modes = view->addMenu("Volume &Integration");
@@ -1057,6 +1075,25 @@ void MainWindow::refreshScalars() {
 void MainWindow::requestRender() { viewport_->update(); }
 
 TransferFunction MainWindow::transferFunction() const { return viewport_->scene().transferFunction(); }
+
+bool MainWindow::loadTransferFunction2D(const QString& path) {
+  const std::string file = path.toStdString();
+  if (!session_ || !session_->model().grid) {
+    statusBar()->showMessage("2D transfer functions (over the value and its gradient) are drawn on regular grids "
+                             "(SEG-Y, image data); open one first");
+    return false;
+  }
+  try {
+    TransferFunction2D tf = TransferFunction2D::fromJson(readTextFile(file, 16u << 20));
+    if (!changeScene([&](Scene& s) { s.setTransferFunction2D(std::move(tf)); })) return false;
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, "2D transfer function", QString::fromStdString(file + ": " + e.what()));
+    return false;
+  }
+  statusBar()->showMessage("Volume colors from the 2D transfer function " + QFileInfo(path).fileName() +
+                           " (value x gradient magnitude)");
+  return true;
+}
 
 void MainWindow::setTransferFunction(const TransferFunction& tf) {
   const auto& view = viewport_->scene().view();

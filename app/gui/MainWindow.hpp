@@ -37,6 +37,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   Q_OBJECT
 
  public:
+  /// Draws a grid's volume with the 2D transfer function in `path` (volpost-tf2d JSON);
+  /// false, saying why, for a mesh model or a file that is not one (the scene keeps its own).
+  bool loadTransferFunction2D(const QString& path);
   explicit MainWindow(PluginManager& plugins, QWidget* parent = nullptr);
   ~MainWindow() override;
 

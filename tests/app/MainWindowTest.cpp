@@ -748,6 +748,47 @@ class MainWindowTest : public QObject {
     QVERIFY(!time->isEnabled());
   }
 
+  // View > Load a 2D Transfer Function (grids)...: the cube's volume takes its colors from the
+  // value and the gradient; a broken file is refused and the scene keeps what it had; Use
+  // the 1D Transfer Function goes back; a mesh refuses one, and a new model drops it.
+  void aTwoDimensionalTransferFunctionDrivesAGridsVolume() {
+    const QString dir = QDir::temp().filePath("volpost_gui_tf2d");
+    QDir(dir).removeRecursively();
+    QDir().mkpath(dir);
+    const QString good = dir + "/boundaries.json", broken = dir + "/broken.json";
+    QFile g(good), b(broken);
+    QVERIFY(g.open(QIODevice::WriteOnly) && b.open(QIODevice::WriteOnly));
+    g.write(R"({"format":"volpost-tf2d","version":1,"widgets":[
+      {"shape":"triangle","value":0.0,"width":0.5,"gradient":[0.0,0.25],"color":[0.95,0.45,0.1],"extinction":0.02}]})");
+    b.write(R"({"format":"volpost-tf2d","version":1,"widgets":[]})");
+    g.close();
+    b.close();
+    QVERIFY(open(VOLPOST_TEST_DATA "/seismic/synthetic_12x10x40.sgy"));
+    QVERIFY(window_->selectQuantity("amplitude"));
+    Viewport* view = window_->viewport();
+    window_->findChild<QAction*>("renderer:cpu")->trigger();  // a grid renderer (an earlier test may have left another)
+    window_->findChild<QAction*>("volumeAction")->setChecked(true);
+    const QImage oneD = settled(view);
+    QVERIFY(window_->loadTransferFunction2D(good));
+    QVERIFY(view->scene().state().volume.transferFunction2D.has_value());
+    const QImage twoD = settled(view);
+    QVERIFY2(twoD != oneD, "the picture follows the 2D transfer function");
+    QTimer::singleShot(0, [] {
+      if (QWidget* box = QApplication::activeModalWidget()) box->close();
+    });
+    QVERIFY(!window_->loadTransferFunction2D(broken));
+    QVERIFY2(view->scene().state().volume.transferFunction2D.has_value(), "a refused file keeps the scene's");
+    window_->findChild<QAction*>("clear2dAction")->trigger();
+    QVERIFY(!view->scene().state().volume.transferFunction2D);
+    QCOMPARE(settled(view), oneD);
+    QVERIFY(window_->loadTransferFunction2D(good));
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QVERIFY2(!view->scene().state().volume.transferFunction2D, "another model drops it");
+    QVERIFY(!window_->loadTransferFunction2D(good));
+    QVERIFY(!view->scene().state().volume.transferFunction2D);
+    window_->findChild<QAction*>("volumeAction")->setChecked(false);
+  }
+
   // File > Reader Options...: a SEG-Y file whose inline numbers are not at the standard
   // byte fails to open; read again with inline-byte set it opens, the Model panel says the
   // options, and a saved state keeps them (opening that state reads the file the same way).
