@@ -1076,20 +1076,30 @@ void MainWindow::requestRender() { viewport_->update(); }
 
 TransferFunction MainWindow::transferFunction() const { return viewport_->scene().transferFunction(); }
 
-bool MainWindow::loadTransferFunction2D(const QString& path) {
-  const std::string file = path.toStdString();
-  if (!session_ || !session_->model().grid) {
+std::optional<TransferFunction2D> MainWindow::transferFunction2D() const {
+  return viewport_->scene().state().volume.transferFunction2D;
+}
+
+bool MainWindow::setTransferFunction2D(const std::optional<TransferFunction2D>& tf) {
+  if (tf && (!session_ || !session_->model().grid)) {
     statusBar()->showMessage("2D transfer functions (over the value and its gradient) are drawn on regular grids "
                              "(SEG-Y, image data); open one first");
     return false;
   }
+  return changeScene([&](Scene& s) { s.setTransferFunction2D(tf); });
+}
+
+bool MainWindow::loadTransferFunction2D(const QString& path) {
+  const std::string file = path.toStdString();
+  std::optional<TransferFunction2D> tf;
   try {
-    TransferFunction2D tf = TransferFunction2D::fromJson(readTextFile(file, 16u << 20));
-    if (!changeScene([&](Scene& s) { s.setTransferFunction2D(std::move(tf)); })) return false;
+    tf = TransferFunction2D::fromJson(readTextFile(file, 16u << 20));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, "2D transfer function", QString::fromStdString(file + ": " + e.what()));
     return false;
   }
+  if (!setTransferFunction2D(tf)) return false;
+  for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();  // the editor shows it
   statusBar()->showMessage("Volume colors from the 2D transfer function " + QFileInfo(path).fileName() +
                            " (value x gradient magnitude)");
   return true;

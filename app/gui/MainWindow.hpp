@@ -70,6 +70,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   std::vector<double> activeValues() const override;
   double modelSize() const override;
   double lastTransferFunctionMs() const override;
+  std::optional<TransferFunction2D> transferFunction2D() const override;
+  bool setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override;
 
  signals:
   void loadFinished(bool ok, const QString& message);

@@ -773,6 +773,17 @@ class MainWindowTest : public QObject {
     QVERIFY(view->scene().state().volume.transferFunction2D.has_value());
     const QImage twoD = settled(view);
     QVERIFY2(twoD != oneD, "the picture follows the 2D transfer function");
+    // The editor's second tab shows it, and its edits reach the picture.
+    auto* use = window_->findChild<QCheckBox*>("tf2dUse");
+    QVERIFY2(use, "the transfer-function panel has a 2D tab");
+    QVERIFY(use->isChecked());
+    window_->findChild<QPushButton*>("tf2dAddRectangle")->click();
+    QTRY_COMPARE(view->scene().state().volume.transferFunction2D->widgets().size(), std::size_t(2));
+    QVERIFY(settled(view) != twoD);
+    use->setChecked(false);
+    QVERIFY(!view->scene().state().volume.transferFunction2D);
+    use->setChecked(true);
+    QCOMPARE(view->scene().state().volume.transferFunction2D->widgets().size(), std::size_t(2));
     QTimer::singleShot(0, [] {
       if (QWidget* box = QApplication::activeModalWidget()) box->close();
     });

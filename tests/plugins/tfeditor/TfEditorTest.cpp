@@ -43,10 +43,17 @@ class FakeHost : public PanelHost {
   std::vector<double> activeValues() const override { return values; }
   double modelSize() const override { return 10.0; }
   double lastTransferFunctionMs() const override { return 0.0; }
+  std::optional<TransferFunction2D> transferFunction2D() const override { return tf2d; }
+  bool setTransferFunction2D(const std::optional<TransferFunction2D>& f) override {
+    tf2d = f;
+    ++received2d;
+    return true;
+  }
 
   std::vector<double> values;
   TransferFunction tf;
-  int received = 0;
+  std::optional<TransferFunction2D> tf2d;
+  int received = 0, received2d = 0;
 };
 
 }  // namespace
@@ -251,11 +258,14 @@ class TfEditorTest : public QObject {
   }
 };
 
+int runTf2dEditorTests(int argc, char** argv);  // Tf2dEditorTest.cpp
+
 int main(int argc, char** argv) {
   QStandardPaths::setTestModeEnabled(true);  // settings go to a test location
   QApplication app(argc, argv);
   TfEditorTest test;
-  return QTest::qExec(&test, argc, argv);
+  const int oneD = QTest::qExec(&test, argc, argv);
+  return oneD | runTf2dEditorTests(argc, argv);
 }
 
 #include "TfEditorTest.moc"

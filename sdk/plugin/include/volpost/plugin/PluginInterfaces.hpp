@@ -8,6 +8,7 @@
 #include <volpost/core/Model.hpp>
 #include <volpost/core/Quantity.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/TransferFunction2D.hpp>
 
 #include <QtPlugin>
 #include <QList>
@@ -65,6 +66,12 @@ class PanelHost {
   /// What the renderer's last transfer-function change cost (tables and upload), ms; 0 if
   /// none yet.
   virtual double lastTransferFunctionMs() const = 0;
+  /// The volume view's 2D transfer function (value x gradient magnitude), for regular grids;
+  /// nullopt while the 1D one is used.
+  virtual std::optional<TransferFunction2D> transferFunction2D() const = 0;
+  /// Draws a grid's volume with `tf` instead of the 1D function (nullopt: the 1D one
+  /// again). Returns false, having told the user why, where the model cannot take it.
+  virtual bool setTransferFunction2D(const std::optional<TransferFunction2D>& tf) = 0;
 };
 
 /// Provides a dock panel (e.g. the transfer-function editor). Only real editors ship widgets.
