@@ -8,6 +8,9 @@
 // the rasterizer's coverage at the box's edges decides nothing. Each
 // part is integrated with the scalar linear along it (common/volume_segment.glsl) and
 // blended back to front ("over", premultiplied): slices farthest first, entries last.
+// With the eye close to or inside the grid the slices are spherical shells round the eye
+// instead (a quad over the brick's part of the picture per shell): every ray is then cut at
+// the same distances from the eye, however oblique.
 in vec3 slicePoint;
 out vec4 fragColor;
 
@@ -18,6 +21,7 @@ uniform vec3 viewDir;        // unit, toward the scene
 uniform vec3 sliceEye;       // volume-relative: slice depths count from here along viewDir
 uniform float sliceSpacing;  // along viewDir, model units: slices at depths k * sliceSpacing
 uniform bool entryPass;      // drawing the entry geometry rather than slices
+uniform bool shellPass;      // spherical shells round the eye: slicePoint.z is the shell's number k
 
 void main() {
   vec2 ndc = vec2(2.0 * gl_FragCoord.x / float(imageSize_.x) - 1.0, 1.0 - 2.0 * gl_FragCoord.y / float(imageSize_.y));
@@ -28,7 +32,13 @@ void main() {
   if (!insideGrid(tIn, tOut) || !clipSegment(tIn, tOut)) discard;
   float cosine = max(dot(rayDir, viewDir), 1e-6);  // depth gained per unit of ray
   float a, b;
-  if (entryPass) {
+  if (shellPass) {
+    // The shell between distances k and k + 1 spacings from the eye (rays start at the eye
+    // and are of unit length): the shells partition every ray, no entry part is left.
+    float k = slicePoint.z;
+    a = max(k * sliceSpacing, tIn);
+    b = min((k + 1.0) * sliceSpacing, tOut);
+  } else if (entryPass) {
     float depthIn = dot(rayOrigin + tIn * rayDir - sliceEye, viewDir);
     float firstSlice = (floor(depthIn / sliceSpacing) + 1.0) * sliceSpacing;
     a = tIn;

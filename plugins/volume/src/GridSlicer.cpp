@@ -79,9 +79,43 @@ std::vector<glm::vec3> slicePolygons(const glm::dvec3& corner, const glm::dvec3&
   return triangles;
 }
 
+namespace {
+
+// The nearest and farthest distances from `eye` to the parallelepiped corner + a u + b v + c w
+// (a, b, c in 0..1): the farthest is a corner's; the nearest 0 inside, else at most the
+// distance to the eye's coordinates clamped into the box (exact for a rectangular box), and
+// taken a twentieth of the farthest earlier for a sheared one (fragments outside the
+// brick's part of a ray discard themselves).
+std::pair<double, double> distanceRange(const glm::dvec3& eye, const glm::dvec3& corner, const glm::dvec3& u,
+                                        const glm::dvec3& v, const glm::dvec3& w) {
+  double farthest = 0.0;
+  for (int c = 0; c < 8; ++c)
+    farthest = std::max(farthest, glm::length(corner + double(c & 1) * u + double((c >> 1) & 1) * v +
+                                              double((c >> 2) & 1) * w - eye));
+  const glm::dmat3 box(u, v, w);
+  const glm::dvec3 local = glm::clamp(glm::inverse(box) * (eye - corner), glm::dvec3(0.0), glm::dvec3(1.0));
+  const double nearest = std::min(glm::length(corner + box * local - eye), farthest);
+  return {std::max(0.0, nearest - 0.05 * farthest), farthest};
+}
+
+}  // namespace
+
 void GridSlicer::setVolume(const Mesh&, FieldLocation, std::span<const double>) {
   throw std::invalid_argument("the texture slicer draws regular grids (SEG-Y, image data), not meshes of "
                               "tetrahedra: choose another volume renderer for this model");
+}
+
+// Shells when the eye looks in perspective from inside the grid or closer to it than half
+// its diagonal: there planes would be crossed ever more obliquely toward the picture's edges.
+bool GridSlicer::useShells(const RenderContext& ctx) const {
+  if (ctx.camera.projection() == Camera::Projection::Orthographic) return false;
+  const RegularGrid& grid = volume_.grid();
+  const glm::dvec3 u = grid.axes[0] * double(grid.dims[0] - 1), v = grid.axes[1] * double(grid.dims[1] - 1),
+                   w = grid.axes[2] * double(grid.dims[2] - 1);
+  const glm::dvec3 local =
+      glm::clamp(glm::inverse(glm::dmat3(u, v, w)) * (ctx.camera.eye() - grid.origin), glm::dvec3(0.0), glm::dvec3(1.0));
+  const double distance = glm::length(grid.origin + glm::dmat3(u, v, w) * local - ctx.camera.eye());
+  return distance < 0.5 * glm::length(u + v + w);
 }
 
 void GridSlicer::initialize() {
@@ -124,6 +158,7 @@ void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
   std::vector<glm::vec3> vertices;
   brickDraws_.clear();
   lastSlices_ = 0;
+  shells_ = useShells(ctx);
   for (const std::size_t b : volume_.gridBricksInOrder(ctx, true)) {
     const GridBrick& brick = volume_.gridBricks().bricks()[b];
     const glm::dvec3 corner = grid.origin - origin + grid.indexToWorld() * glm::dvec3(double(brick.first[0]),
@@ -131,18 +166,27 @@ void GridSlicer::uploadSlices(const RenderContext& ctx, double spacing) {
                                                                                      double(brick.first[2]));
     const glm::dvec3 u = grid.axes[0] * double(brick.points[0] - 1), v = grid.axes[1] * double(brick.points[1] - 1),
                      w = grid.axes[2] * double(brick.points[2] - 1);
-    std::size_t slices = 0;
-    const std::vector<glm::vec3> triangles =
-        slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &slices, twoPixels);
-    lastSlices_ += slices;
-    BrickDraw draw{b, vertices.size(), triangles.size(), 0};
-    vertices.insert(vertices.end(), triangles.begin(), triangles.end());
-    draw.entryFirst = vertices.size();
-    // The entry pass needs one fragment per pixel the brick covers (clip-space x, y).
+    // The brick's part of the picture (clip-space x, y): the entry pass's and the shells'.
     const auto [lo, hi] = volume_.gridBrickOnScreen(ctx, b);
-    for (const glm::vec3 q : {glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0),
-                              glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0), glm::vec3(lo.x, hi.y, 0)})
-      vertices.push_back(q);
+    const std::array<glm::vec3, 6> quad{glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0),
+                                        glm::vec3(lo.x, lo.y, 0), glm::vec3(hi.x, hi.y, 0), glm::vec3(lo.x, hi.y, 0)};
+    BrickDraw draw{b, vertices.size(), 0, 0};
+    if (shells_) {
+      // Shells k (distances k .. k + 1 spacings from the eye) that meet the brick, farthest first.
+      const auto [near, far] = distanceRange(eye, corner, u, v, w);
+      const double first = std::floor(near / spacing), last = std::floor(far / spacing);
+      for (double k = last; k >= first && last - first <= 1e6; k -= 1.0, ++lastSlices_)
+        for (const glm::vec3& q : quad) vertices.push_back(glm::vec3(q.x, q.y, float(k)));
+    } else {
+      std::size_t slices = 0;
+      const std::vector<glm::vec3> triangles =
+          slicePolygons(corner, u, v, w, eye, viewDir, spacing, nearest, &slices, twoPixels);
+      lastSlices_ += slices;
+      vertices.insert(vertices.end(), triangles.begin(), triangles.end());
+    }
+    draw.count = vertices.size() - draw.first;
+    draw.entryFirst = vertices.size();
+    vertices.insert(vertices.end(), quad.begin(), quad.end());
     brickDraws_.push_back(draw);
   }
   glNamedBufferData(vertices_.id(), GLsizeiptr(std::max<std::size_t>(vertices.size() * sizeof(glm::vec3), 16)),
@@ -174,12 +218,15 @@ GLuint GridSlicer::beginDrawing(const RenderContext& ctx, GLuint image, bool cle
 
 void GridSlicer::drawSlices(GLuint program, std::size_t first, std::size_t count) {
   glProgramUniform1i(program, glGetUniformLocation(program, "entryPass"), 0);
-  glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), 0);
+  glProgramUniform1i(program, glGetUniformLocation(program, "shellPass"), shells_);
+  glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), shells_);
   glDrawArrays(GL_TRIANGLES, GLint(first), GLsizei(count));  // farthest first
 }
 
 void GridSlicer::drawEntry(GLuint program, const BrickDraw& draw) {
+  if (shells_) return;  // shells leave no entry part
   glProgramUniform1i(program, glGetUniformLocation(program, "entryPass"), 1);
+  glProgramUniform1i(program, glGetUniformLocation(program, "shellPass"), 0);
   glProgramUniform1i(program, glGetUniformLocation(program, "screenQuad"), 1);
   glDrawArrays(GL_TRIANGLES, GLint(draw.entryFirst), 6);  // the nearest part of the brick
 }

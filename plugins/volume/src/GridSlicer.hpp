@@ -43,6 +43,9 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   /// Bricks uploaded since the grid was laid out (more than brickCount() when streamed).
   std::size_t brickUploads() const { return volume_.gridBricks().uploads(); }
   std::size_t brickUploadedBytes() const { return volume_.gridBricks().uploadedBytes(); }
+  /// Whether the last frame's slices were spherical shells round the eye (perspective, the
+  /// eye inside the grid or nearer it than half its diagonal) rather than planes.
+  bool lastUsedShells() const { return shells_; }
   /// Slices the last frame drew (a quick frame's while the full one is refined).
   std::size_t lastSlices() const { return lastSlices_; }
   bool hasPendingWork() const override { return volume_.hasPendingWork() || quick_.refining(); }
@@ -86,7 +89,9 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
   gl::Buffer vertices_;
   GLuint attachedImage_ = 0;
   std::size_t lastSlices_ = 0;
+  bool useShells(const RenderContext& ctx) const;
   std::vector<BrickDraw> brickDraws_;
+  bool shells_ = false;
   QuickFrames quick_;
   std::size_t refineBrick_ = 0, drawnVertices_ = 0, verticesPerRun_ = 3 * 1024;
   double refineMs_ = 0.0;

@@ -390,6 +390,39 @@ TEST_F(GridSlices, ClipPlanesIsoSurfacesAndOrthographicViews) {
                std::invalid_argument);
 }
 
+// From inside the grid (or close to it) the slices are spherical shells round the eye: every
+// ray is cut at the same distances from the eye as the ray marcher's lattice, so the two
+// pictures agree to float rounding (the slicer blends back to front, the marcher
+// accumulates front to back), and both converge to the reference; from afar, planes.
+TEST_F(GridSlices, FromInsideTheGridTheSlicesAreShellsThatGiveTheRayMarchersPicture) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> values = wavyValues(g);
+  Camera inside = gridCamera(g);
+  inside.place(g.position(4.0, 3.0, 2.5), inside.rotation(), 0.6);
+  const ImageError e = marchAgainstReference(g, values, 0.1, inside, 48);
+  ASSERT_TRUE(slicer().lastUsedShells());
+  const std::vector<float> shells = gpuImage(inside, 48, 48);
+  volume::GridRayMarcher marcher;
+  marcher.initialize();
+  marcher.setGrid(g, values);
+  marcher.setTransferFunction(kGridTf);
+  marcher.setSamplingStep(0.1);
+  marcher.setTerminationThreshold(0.0);
+  const std::vector<float> marched = imageOf(marcher, inside, 48, 48);
+  marcher.release();
+  double worst = 0.0, alpha = 0.0;
+  for (std::size_t i = 0; i < shells.size(); ++i) worst = std::max(worst, std::abs(double(shells[i]) - marched[i]));
+  for (std::size_t i = 3; i < shells.size(); i += 4) alpha += shells[i] / double(shells.size() / 4);
+  std::printf("texture slices from inside the grid (shells): RMSE %.3g max %.3g vs the reference; max %.3g vs the ray "
+              "marcher (mean alpha %.2f)\n",
+              e.rmse, e.max, worst, alpha);
+  EXPECT_GT(alpha, 0.2);
+  EXPECT_LE(worst, 1e-4);
+  EXPECT_LE(e.rmse, 1e-3);
+  (void)marchAgainstReference(g, values, 0.1, gridCamera(g), 32);
+  EXPECT_FALSE(slicer().lastUsedShells()) << "from afar, planes";
+}
+
 // In the window: a quick reduced frame, then the full one in runs of slices over several
 // calls, which is the synchronous frame bit for bit (the same triangles, blended in the
 // same order); a clip plane moved (a new scene) starts over.
