@@ -116,9 +116,12 @@ std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const
   return corners.size() / 3;
 }
 
-void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
-                                 DisplayRange range) {
+void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const std::vector<ClipPlane>& clipPlanes,
+                                 const ScalarView* view, std::uint64_t viewVersion, DisplayRange range) {
   if (!initialized_ || !session_) return;
+  // Cut by the clip planes and box as the surface and the volume are (what lies on a plane
+  // of the box is kept: a slice on its face).
+  slices_.setClipPlanes(clipPlanes, 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300));
   const CutKey key{planes, viewVersion, range, view != nullptr};
   if (slicesFor_ == key) return;
   slicesFor_ = key;

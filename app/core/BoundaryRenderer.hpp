@@ -37,9 +37,10 @@ class BoundaryRenderer {
   }
   /// Slices through the model on these planes (a regular grid's inline, crossline and time
   /// slices), colored by the view's values as the surface is, without cutting anything
-  /// away. Recomputed only when the planes, `viewVersion` or the range change.
-  void setSlices(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
-                 DisplayRange range);
+  /// away, themselves cut by `clipPlanes` (the clip planes and box). Recomputed only when
+  /// the planes, `viewVersion` or the range change.
+  void setSlices(const std::vector<ClipPlane>& planes, const std::vector<ClipPlane>& clipPlanes, const ScalarView* view,
+                 std::uint64_t viewVersion, DisplayRange range);
   std::size_t sliceTriangles() const { return sliceTriangles_; }
   /// Only the slices, depth-tested, over what the target holds (the opaque part of a
   /// volume picture).

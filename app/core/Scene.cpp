@@ -695,7 +695,8 @@ void Scene::applyToBoundary() {
                     view_ ? &*view_ : nullptr, viewVersion_, displayRange());
   boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces,
                            view_ ? &*view_ : nullptr, viewVersion_);
-  boundary_.setSlices(gridSlicePlanes(), view_ ? &*view_ : nullptr, viewVersion_, displayRange());
+  boundary_.setSlices(gridSlicePlanes(), state_.volume.allClipPlanes(), view_ ? &*view_ : nullptr, viewVersion_,
+                      displayRange());
   changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
 }
 

@@ -101,6 +101,29 @@ TEST(RenderCommand, GridSlicesOfASurvey) {
     ASSERT_EQ(runVolpost("render " + cube + common + "--renderer " + renderer + " --slice time=80 -o " + volumeSliced).exitCode, 0);
     EXPECT_NE(QImage(QString::fromStdString(volume)), QImage(QString::fromStdString(volumeSliced))) << renderer;
   }
+  // A clip plane cuts the slices as it cuts the surface and the volume: half of the time
+  // slice seen from above goes.
+  const std::string whole = (dir / "slice_whole.png").string(), cut = (dir / "slice_cut.png").string();
+  const std::string top = common + "--no-surface --slice time=80 --camera +z --no-legend --no-triad ";
+  ASSERT_EQ(runVolpost("render " + cube + top + "-o " + whole).exitCode, 0);
+  ASSERT_EQ(runVolpost("render " + cube + top + "--clip-box -1e9,1e9,-1e9,1e9,-1e9,1e9 -o " + cut).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(whole)), QImage(QString::fromStdString(cut))) << "a box round it all cuts nothing";
+  const auto covered = [](const QImage& image) {
+    int n = 0;
+    const QRgb background = image.pixel(0, 0);
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) n += image.pixel(x, y) != background;
+    return n;
+  };
+  {
+    // The survey spans x 619887 .. 620238: keep x above the middle.
+    QImage full(QString::fromStdString(whole));
+    ASSERT_EQ(runVolpost("render " + cube + top + "--clip 620062,0,0,1,0,0 -o " + cut).exitCode, 0);
+    const int before = covered(full), after = covered(QImage(QString::fromStdString(cut)));
+    EXPECT_GT(before, 200);
+    EXPECT_LT(after, 0.7 * before) << "the clip plane cut the slice";
+    EXPECT_GT(after, 0.3 * before);
+  }
   const auto outside = runVolpost("render " + cube + common + "--slice inline=999 -o " + plain);
   EXPECT_EQ(outside.exitCode, 2);
   EXPECT_NE(outside.output.find("the inline slice at 999 lies outside the grid's inline 1000 .. 1011"), std::string::npos)
