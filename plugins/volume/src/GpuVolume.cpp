@@ -189,7 +189,7 @@ void GpuVolume::release() {
   preFuture_ = {};
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &preWarp_, &image_, &tf2dTable_}) t->reset();
   tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
   programs_.clear();
@@ -369,7 +369,11 @@ void GpuVolume::launchPreintegration() {
   preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
   preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, length = preMaxLength_,
                                                n = preResolution] {
-    return optics::PreintegrationTable(tf, lo, hi, n, length, n).values();
+    const optics::PreintegrationTable table(tf, lo, hi, n, length, n);
+    PreintegrationBuild build{table.values(), std::vector<float>(kWarpSamples)};
+    for (int i = 0; i < kWarpSamples; ++i)
+      build.warp[std::size_t(i)] = float(table.warp().toTable(lo + (hi - lo) * double(i) / (kWarpSamples - 1)));
+    return build;
   });
 }
 
@@ -386,7 +390,7 @@ void GpuVolume::collectPreintegration(bool wait) {
   lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tfChanged_).count();
 }
 
-void GpuVolume::uploadPreintegration(const std::vector<float>& values) {
+void GpuVolume::uploadPreintegration(const PreintegrationBuild& build) {
   if (!preTable_) {
     preTable_ = gl::createTexture(GL_TEXTURE_3D);
     glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
@@ -395,7 +399,15 @@ void GpuVolume::uploadPreintegration(const std::vector<float>& values) {
       glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
   }
   glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
-                      values.data());
+                      build.values.data());
+  // Where the table's value texels lie (optics::TableWarp), sampled finely, interpolated.
+  if (!preWarp_) {
+    preWarp_ = gl::createTexture(GL_TEXTURE_1D);
+    glTextureStorage1D(preWarp_.id(), 1, GL_R32F, kWarpSamples);
+    setFilter(preWarp_.id(), GL_LINEAR);
+    glTextureParameteri(preWarp_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  }
+  glTextureSubImage1D(preWarp_.id(), 0, 0, kWarpSamples, GL_RED, GL_FLOAT, build.warp.data());
   ++revision_;  // frames drawn with the previous table are outdated
 }
 
@@ -515,6 +527,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
+  glBindTextureUnit(binding::kPreWarp, preWarp_ ? preWarp_.id() : 0);
   glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's
   glBindTextureUnit(binding::kTf2d, tf2dTable_ ? tf2dTable_.id() : 0);
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {

@@ -141,7 +141,13 @@ class GpuVolume {
   void uploadTransferFunction2D();
   bool tablesNeedRebuild() const;
   void launchPreintegration();
-  void uploadPreintegration(const std::vector<float>& values);
+  /// A pre-integration table and where its value texels lie (the table coordinate at
+  /// kWarpSamples values evenly over the tables' range).
+  struct PreintegrationBuild {
+    std::vector<float> values, warp;
+  };
+  static constexpr int kWarpSamples = 4096;
+  void uploadPreintegration(const PreintegrationBuild& build);
   void collectPreintegration(bool wait);
   void ensureImage(int width, int height);
 
@@ -167,7 +173,7 @@ class GpuVolume {
   bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;
   std::size_t builtRevision_ = std::size_t(-1);
   double tableLo_ = 0.0, tableHi_ = 1.0, preMaxLength_ = 1.0;
-  std::future<std::vector<float>> preFuture_;  ///< the pre-integration table being built
+  std::future<PreintegrationBuild> preFuture_;  ///< the pre-integration table being built
   bool preOutdated_ = false;                   ///< the TF changed again while it was built
   std::chrono::steady_clock::time_point tfChanged_;
   double lastTfMs_ = 0.0;
@@ -177,7 +183,7 @@ class GpuVolume {
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
-  gl::Texture psiTable_, isoTable_, preTable_, image_, tf2dTable_;
+  gl::Texture psiTable_, isoTable_, preTable_, preWarp_, image_, tf2dTable_;
   bool tf2dDirty_ = false;
   GridBricks bricks_;
   int imageWidth_ = 0, imageHeight_ = 0;

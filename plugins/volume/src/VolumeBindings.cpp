@@ -15,7 +15,8 @@ std::string glslDefines() {
       {"BINDING_RAY_COUNTERS", kRayCounters}, {"UNIT_PSI", kPsiTable},
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
-      {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d}};
+      {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d},
+      {"UNIT_PRE_WARP", kPreWarp}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

@@ -25,6 +25,7 @@ uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-re
 layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
 layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
 layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, length) -> premultiplied rgba
+layout(binding = UNIT_PRE_WARP) uniform sampler1D preWarp;  // range position -> table coordinate (optics::TableWarp)
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
 uniform float preMaxLength;
 layout(binding = UNIT_SCENE_DEPTH) uniform sampler2D sceneDepth;  // opaque geometry's depth (window 0..1), bottom row first
@@ -156,12 +157,19 @@ void integrate2D(float t0, float t1, float sf, float sb) {
 }
 #endif
 
+// The table's value texels lie where optics::TableWarp put them: more on the function's
+// narrow pieces than an even spread would give them.
+float preCoordinate(float s) {
+  float n = float(textureSize(preWarp, 0));
+  return textureLod(preWarp, (clamp(rangePos(s), 0.0, 1.0) * (n - 1.0) + 0.5) / n, 0.0).r;
+}
+
 void integratePreintegrated(float sf, float sb, float len) {
   int pieces = max(1, int(ceil(len / preMaxLength)));
   vec3 size = vec3(textureSize(preTable, 0));
   for (int i = 0; i < pieces; ++i) {
     float a = mix(sf, sb, float(i) / float(pieces)), b = mix(sf, sb, float(i + 1) / float(pieces));
-    vec3 x = clamp(vec3(rangePos(a), rangePos(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
+    vec3 x = clamp(vec3(preCoordinate(a), preCoordinate(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
     vec4 v = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0);
     if (shading) {  // the table holds unlit light: the piece's mean shading on it
       vec2 k = mix(shadeFront, shadeBack, 0.5);

@@ -41,6 +41,7 @@ TransferFunction forTable(const TransferFunction& tf, double sMin, double sMax, 
 PreintegrationTable::PreintegrationTable(const TransferFunction& original, double sMin, double sMax,
                                          int scalarResolution, double maxLength, int lengthResolution, int threads)
     : ns_(scalarResolution), nl_(lengthResolution), sMin_(sMin), sMax_(sMax), maxLength_(maxLength),
+      warp_(original, sMin, sMax > sMin ? sMax : sMin + 1.0),
       values_(std::size_t(scalarResolution) * std::size_t(scalarResolution) * std::size_t(lengthResolution) * 4) {
   if (ns_ < 2 || nl_ < 2 || !(sMax > sMin) || !(maxLength > 0.0))
     throw std::invalid_argument("pre-integration table: resolutions must be >= 2 and ranges non-empty");
@@ -57,7 +58,7 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& original, doubl
     std::vector<Piece> pieces;
     for (int pair; (pair = next++) < ns_ * ns_;) {
       const int f = pair % ns_, b = pair / ns_;
-      const double sf = sMin_ + (sMax_ - sMin_) * f / (ns_ - 1), sb = sMin_ + (sMax_ - sMin_) * b / (ns_ - 1);
+      const double sf = warp_.fromTable(double(f) / (ns_ - 1)), sb = warp_.fromTable(double(b) / (ns_ - 1));
       pieces.clear();
       double s0 = sf, x0 = 0.0;
       const auto addPiece = [&](double s1, double x1) {
@@ -95,8 +96,8 @@ glm::dvec4 PreintegrationTable::lookup(double sFront, double sBack, double lengt
   };
   int f0, b0, l0;
   double wf, wb, wl;
-  coord((sFront - sMin_) / (sMax_ - sMin_), ns_, f0, wf);
-  coord((sBack - sMin_) / (sMax_ - sMin_), ns_, b0, wb);
+  coord(warp_.toTable(sFront), ns_, f0, wf);
+  coord(warp_.toTable(sBack), ns_, b0, wb);
   coord(length / maxLength_, nl_, l0, wl);
   glm::dvec4 sum(0.0);
   for (int dl = 0; dl < 2; ++dl)

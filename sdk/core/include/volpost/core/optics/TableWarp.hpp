@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// Where a table over the scalar puts its texels. Spread evenly over the value range, a
+// narrow peak of the transfer function falls between two texels and a pre-integrated
+// table interpolated across it misses it (the "netting" of tet faces over a sharp peak).
+// The warp gives half the texels to the values, in proportion to their span, and the other
+// half equally to the function's pieces between control points, however narrow: a peak of
+// three points gets as many texels as a wide ramp. It is piecewise linear (knots at the
+// control points), so the renderers map a value to its table coordinate exactly.
+#pragma once
+
+#include <volpost/core/TransferFunction.hpp>
+
+#include <vector>
+
+namespace volpost::optics {
+
+class TableWarp {
+ public:
+  /// The identity over [sMin, sMax] when the function has no piece inside it.
+  TableWarp(const TransferFunction& tf, double sMin, double sMax);
+
+  /// The table coordinate (0..1) of a value, clamped to the range; and back.
+  double toTable(double s) const;
+  double fromTable(double u) const;
+  /// The knots: values and their table coordinates, increasing from (sMin, 0) to (sMax, 1).
+  const std::vector<double>& values() const { return s_; }
+  const std::vector<double>& coordinates() const { return u_; }
+
+ private:
+  std::vector<double> s_, u_;
+};
+
+}  // namespace volpost::optics
