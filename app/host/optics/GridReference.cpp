@@ -196,6 +196,14 @@ SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double l
   return out;
 }
 
+// A grid without defects and a value per point, or std::invalid_argument saying which.
+void requireGridValues(const RegularGrid& grid, std::span<const double> values) {
+  if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
+  if (values.size() != grid.pointCount())
+    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
+                                std::to_string(grid.pointCount()) + " points");
+}
+
 // The ray's part inside the grid's box and the clip planes, cut where it crosses grid
 // planes: the parameters of the cells' boundaries along it, in order (empty: it misses).
 // o and e: the ray's origin and unit direction in index space.
@@ -274,10 +282,7 @@ SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> v
 ReferenceImage renderGridReference(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
                                    const Camera& camera, int width, int height, const RaySettings& settings,
                                    const Progress& progress, int threads) {
-  if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
-  if (values.size() != grid.pointCount())
-    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
-                                std::to_string(grid.pointCount()) + " points");
+  requireGridValues(grid, values);
   return renderPixelRays(
       camera, width, height,
       [&](glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {
@@ -366,10 +371,7 @@ ReferenceImage renderGridReference2D(const RegularGrid& grid, std::span<const do
                                      const TransferFunction2D& tf, const Camera& camera, int width, int height,
                                      const RaySettings& settings, double tolerance, const Progress& progress,
                                      int threads) {
-  if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
-  if (values.size() != grid.pointCount())
-    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
-                                std::to_string(grid.pointCount()) + " points");
+  requireGridValues(grid, values);
   return renderPixelRays(
       camera, width, height,
       [&](glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {

@@ -6,6 +6,7 @@
 // their faces (one more piece per face crossed), so the pictures differ by that extra break
 // in the piecewise linear scalar: far below the renderers' own error against the exact
 // reference, and shrinking with the step at second order (a seam would not).
+#include "RippleGrid.hpp"
 #include "VolumeImageFixture.hpp"
 
 #include "GridRayMarcher.hpp"
@@ -19,24 +20,8 @@ using namespace volpost::test;
 
 namespace {
 
-// 20 x 17 x 13 points (17.7 KB of floats), rotated and anisotropic.
-RegularGrid brickedGrid() {
-  RegularGrid g;
-  g.dims = {20, 17, 13};
-  const double c = std::cos(0.3), s = std::sin(0.3);
-  g.origin = {-4.0, 2.0, 1.0};
-  g.axes = {glm::dvec3(0.5 * c, 0.5 * s, 0.0), glm::dvec3(-0.6 * s, 0.6 * c, 0.05), glm::dvec3(0.0, 0.0, 0.7)};
-  return g;
-}
-
-std::vector<double> rippleValues(const RegularGrid& g) {
-  std::vector<double> v(g.pointCount());
-  for (std::size_t k = 0; k < g.dims[2]; ++k)
-    for (std::size_t j = 0; j < g.dims[1]; ++j)
-      for (std::size_t i = 0; i < g.dims[0]; ++i)
-        v[g.pointIndex(i, j, k)] = 3.0 + 2.0 * std::sin(0.5 * double(i)) * std::cos(0.4 * double(j)) + 0.2 * double(k);
-  return v;
-}
+// 20 x 17 x 13 points of the ripple grid.
+RegularGrid brickedGrid() { return rippleGrid({20, 17, 13}); }
 
 const TransferFunction kBrickTf({{0.5, {0.1, 0.2, 0.9}, 0.1}, {2.5, {0.2, 0.9, 0.3}, 0.5},
                                  {3.5, {1.0, 1.0, 1.0}, 1.0}, {5.5, {0.9, 0.1, 0.1}, 0.3}});
@@ -93,6 +78,21 @@ class BrickedGrid : public RayCast {
                 "reference %.3g bricked, %.3g one texture\n",
                 renderer().name().c_str(), step, c.difference, c.brickedRmse, c.wholeRmse);
     return c;
+  }
+  /// In the window (a quick frame, then the full one refined a pass or a run of slices per
+  /// call under a tiny budget): at least one call per brick, and the frame it ends with is
+  /// the synchronous one bit for bit.
+  void expectRefinedFrameIsTheSynchronousOne(const Camera& camera) {
+    const std::vector<float> synchronous = imageWithBudget(kSmallBudget, camera, 48);
+    renderer().setAsynchronousUpdates(true);
+    renderer().setFrameBudget(1e-3, 1e-3);
+    (void)gpuImage(camera, 48, 48);
+    int calls = 1;
+    for (; calls < 100000 && renderer().hasPendingWork(); ++calls) (void)gpuImage(camera, 48, 48);
+    ASSERT_FALSE(renderer().hasPendingWork());
+    EXPECT_GE(calls, 18) << "a call per brick at least";
+    EXPECT_EQ(gpuImage(camera, 48, 48), synchronous);
+    renderer().setAsynchronousUpdates(false);
   }
   /// 8 KB: bricks of 8^3 points (2 KB), 18 of them, 4 resident: every frame streams.
   static constexpr std::size_t kSmallBudget = 8 * 1024;
@@ -156,17 +156,7 @@ TEST_F(BrickedMarch, ClipPlanesIsoSurfacesAndShadingAcrossBricks) {
 TEST_F(BrickedMarch, TheWindowRefinesABrickedFrameToTheSynchronousOne) {
   const RegularGrid g = brickedGrid();
   setScene(g, rippleValues(g), 0.02);
-  const Camera camera = outsideCamera(g);
-  const std::vector<float> synchronous = imageWithBudget(kSmallBudget, camera, 48);
-  renderer().setAsynchronousUpdates(true);
-  renderer().setFrameBudget(1e-3, 1e-3);  // one pass per call
-  (void)gpuImage(camera, 48, 48);
-  int calls = 1;
-  for (; calls < 1000 && renderer().hasPendingWork(); ++calls) (void)gpuImage(camera, 48, 48);
-  ASSERT_FALSE(renderer().hasPendingWork());
-  EXPECT_GE(calls, 18) << "a pass per brick at least";
-  EXPECT_EQ(gpuImage(camera, 48, 48), synchronous);
-  renderer().setAsynchronousUpdates(false);
+  expectRefinedFrameIsTheSynchronousOne(outsideCamera(g));
 }
 
 TEST_F(BrickedSlices, BrickedEqualsUnbrickedFromOutsideAndInsidePerspectiveAndOrthographic) {
@@ -188,17 +178,7 @@ TEST_F(BrickedSlices, BrickedEqualsUnbrickedFromOutsideAndInsidePerspectiveAndOr
 TEST_F(BrickedSlices, TheWindowRefinesABrickedFrameToTheSynchronousOne) {
   const RegularGrid g = brickedGrid();
   setScene(g, rippleValues(g), 0.05);
-  const Camera camera = outsideCamera(g);
-  const std::vector<float> synchronous = imageWithBudget(kSmallBudget, camera, 48);
-  renderer().setAsynchronousUpdates(true);
-  renderer().setFrameBudget(1e-3, 1e-3);
-  (void)gpuImage(camera, 48, 48);
-  int calls = 1;
-  for (; calls < 100000 && renderer().hasPendingWork(); ++calls) (void)gpuImage(camera, 48, 48);
-  ASSERT_FALSE(renderer().hasPendingWork());
-  EXPECT_GE(calls, 18);
-  EXPECT_EQ(gpuImage(camera, 48, 48), synchronous);
-  renderer().setAsynchronousUpdates(false);
+  expectRefinedFrameIsTheSynchronousOne(outsideCamera(g));
 }
 
 TEST_F(BrickedSlices, ABudgetTooSmallForAnyBrickIsRefusedNamingIt) {

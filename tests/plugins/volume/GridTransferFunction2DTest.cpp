@@ -6,6 +6,7 @@
 // are interpolated linearly, as for shading); the gradient axis counts (the same widgets over another
 // gradient range give another picture); clip planes, iso-surfaces and shading too; meshes
 // of tetrahedra refuse it.
+#include "RippleGrid.hpp"
 #include "VolumeImageFixture.hpp"
 
 #include "CpuVolumeRenderer.hpp"
@@ -18,23 +19,8 @@ using namespace volpost::test;
 
 namespace {
 
-RegularGrid rippleGrid() {
-  RegularGrid g;
-  g.dims = {14, 12, 10};
-  const double c = std::cos(0.3), s = std::sin(0.3);
-  g.origin = {-4.0, 2.0, 1.0};
-  g.axes = {glm::dvec3(0.5 * c, 0.5 * s, 0.0), glm::dvec3(-0.6 * s, 0.6 * c, 0.05), glm::dvec3(0.0, 0.0, 0.7)};
-  return g;
-}
-
-std::vector<double> rippleValues(const RegularGrid& g) {
-  std::vector<double> v(g.pointCount());
-  for (std::size_t k = 0; k < g.dims[2]; ++k)
-    for (std::size_t j = 0; j < g.dims[1]; ++j)
-      for (std::size_t i = 0; i < g.dims[0]; ++i)
-        v[g.pointIndex(i, j, k)] = 3.0 + 2.0 * std::sin(0.5 * double(i)) * std::cos(0.4 * double(j)) + 0.2 * double(k);
-  return v;
-}
+// 14 x 12 x 10 points of the ripple grid.
+RegularGrid testGrid() { return rippleGrid({14, 12, 10}); }
 
 // Quiet regions of middling value in green; where the value changes fast around 4, red.
 TransferFunction2D boundaryTf(double gradientShift = 0.0) {
@@ -60,7 +46,7 @@ class GridTf2d : public RayCast {
 
   ImageError againstReference(const TransferFunction2D& tf, double step, const optics::RaySettings& settings = {},
                               std::vector<float>* image = nullptr) {
-    const RegularGrid g = rippleGrid();
+    const RegularGrid g = testGrid();
     const std::vector<double> values = rippleValues(g);
     renderer().setGrid(g, values);
     renderer().setTransferFunction(TransferFunction({{0.0, {1, 1, 1}, 0.0}, {6.0, {1, 1, 1}, 0.0}}));  // unused
@@ -87,7 +73,7 @@ using Tf2dCpu = GridTf2d<volume::CpuVolumeRenderer>;
 }  // namespace
 
 TEST(GridReference2D, ConvergesAndSeesTheGradient) {
-  const RegularGrid g = rippleGrid();
+  const RegularGrid g = testGrid();
   const std::vector<double> values = rippleValues(g);
   const Camera camera = rippleCamera(g);
   const auto fine = optics::renderGridReference2D(g, values, boundaryTf(), camera, 24, 24, {}, 1e-6);
@@ -120,7 +106,7 @@ TEST_F(Tf2dMarch, ConvergesToTheReferenceAndHonoursTheGradient) {
 
 TEST_F(Tf2dMarch, ClipPlanesIsoSurfacesAndShading) {
   optics::RaySettings settings;
-  const RegularGrid g = rippleGrid();
+  const RegularGrid g = testGrid();
   settings.clipPlanes = {{g.bounds().center(), {0.3, -1.0, 0.2}}};
   settings.isoSurfaces = {{4.6, {1.0, 0.7, 0.1}, 0.5}};
   settings.shading = true;
@@ -132,7 +118,7 @@ TEST_F(Tf2dMarch, BackToTheOneDimensionalFunction) {
   std::vector<float> with2d;
   (void)againstReference(boundaryTf(), 0.25, {}, &with2d);
   renderer().setTransferFunction2D(std::nullopt);
-  const std::vector<float> without = gpuImage(rippleCamera(rippleGrid()), 48, 48);
+  const std::vector<float> without = gpuImage(rippleCamera(testGrid()), 48, 48);
   double alpha = 0.0;
   for (std::size_t i = 3; i < without.size(); i += 4) alpha = std::max(alpha, double(without[i]));
   EXPECT_EQ(alpha, 0.0) << "the 1D function set here is transparent";
@@ -154,5 +140,5 @@ TEST_F(Tf2dCpu, ConvergesToTheReferenceAndRefusesMeshes) {
   EXPECT_LE(againstReference(boundaryTf(), 0.0625, lit).rmse, 7e-3);
   const Mesh tets = test::tetGrid(2, 2, 2);
   renderer().setVolume(tets, FieldLocation::Node, field(tets));
-  EXPECT_THROW((void)gpuImage(rippleCamera(rippleGrid()), 16, 16), std::invalid_argument);
+  EXPECT_THROW((void)gpuImage(rippleCamera(testGrid()), 16, 16), std::invalid_argument);
 }
