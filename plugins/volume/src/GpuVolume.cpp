@@ -16,6 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <cmath>
 #include <stdexcept>
@@ -75,7 +76,7 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
   mesh_ = &mesh;
   grid_.reset();
-  gridValues_.clear();
+  gridValues_ = GridTexels{};
   location_ = location;
   ++meshRevision_;
   ++revision_;
@@ -100,13 +101,42 @@ void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values)
   meshDirty_ = true;
 }
 
-// Values go to the texture in their own frame (see TetMeshGpu::valueOffset); a value that
-// is not a finite number is drawn as the field's minimum.
+// Values go to the texture in their own frame (see TetMeshGpu::valueOffset), or, when they
+// are all integers of 8 or 16 bits (seismic samples as stored), as those integers in signed
+// normalized texels the shader maps back into the frame. A value that is not a finite
+// number is drawn as the field's minimum.
 void GpuVolume::setGridValues(std::span<const double> values) {
   setValueFrame(gpu_, values);
-  gridValues_.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i)
-    gridValues_[i] = std::isfinite(values[i]) ? gpu_.gpuValue(values[i]) : 0.0f;
+  double largest = 0.0, minimum = 0.0;
+  bool integers = true, any = false;
+  for (const double v : values) {
+    if (!std::isfinite(v)) continue;
+    integers = integers && v == std::nearbyint(v);
+    largest = std::max(largest, std::abs(v));
+    minimum = any ? std::min(minimum, v) : v;
+    any = true;
+  }
+  using Format = GridTexels::Format;
+  GridTexels t;
+  t.format = !integers || !any || largest > 32767.0 ? Format::Float32 : largest <= 127.0 ? Format::Snorm8 : Format::Snorm16;
+  if (t.format == Format::Float32) {
+    t.floats.resize(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) t.floats[i] = std::isfinite(values[i]) ? gpu_.gpuValue(values[i]) : 0.0f;
+  } else {
+    // A texel t is the integer / 127 (or 32767); the frame's value is (integer - valueOffset) * valueScale.
+    const double unit = t.format == Format::Snorm8 ? 127.0 : 32767.0;
+    t.scale = float(unit * gpu_.valueScale);
+    t.offset = float(-gpu_.valueOffset * gpu_.valueScale);
+    const auto integerOf = [&](double v) { return std::isfinite(v) ? v : minimum; };
+    if (t.format == Format::Snorm8) {
+      t.bytes.resize(values.size());
+      for (std::size_t i = 0; i < values.size(); ++i) t.bytes[i] = std::int8_t(integerOf(values[i]));
+    } else {
+      t.shorts.resize(values.size());
+      for (std::size_t i = 0; i < values.size(); ++i) t.shorts[i] = std::int16_t(integerOf(values[i]));
+    }
+  }
+  gridValues_ = std::move(t);
 }
 
 void GpuVolume::setValues(std::span<const double> values) {
@@ -266,7 +296,8 @@ void GpuVolume::uploadGrid() {
 void GpuVolume::layOutBricks() {
   GLint largest = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-  bricks_.configure(grid_->dims, textureBudget(), std::size_t(std::max(largest, 2)));
+  bricks_.configure(grid_->dims, gridValues_.format, gridValues_.bytesPerTexel(), textureBudget(),
+                    std::size_t(std::max(largest, 2)));
 }
 
 // The GPU memory budget for the grid's textures: the setting, else 3/4 of what an NVIDIA
@@ -500,6 +531,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
     // The whole grid as one brick until bindGridBrick says which.
     glProgramUniform3i(p, u("brickFirst"), 0, 0, 0);
     glProgramUniform3i(p, u("brickPoints"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
+    glProgramUniform2f(p, u("texelToValue"), gridValues_.scale, gridValues_.offset);
   }
 }
 

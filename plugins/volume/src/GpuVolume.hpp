@@ -154,7 +154,7 @@ class GpuVolume {
   // State.
   const Mesh* mesh_ = nullptr;
   std::optional<RegularGrid> grid_;
-  std::vector<float> gridValues_;  ///< gpuValue per point, for the texture
+  GridTexels gridValues_;  ///< the points' values as the texture holds them
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
   TransferFunction tf_;

@@ -38,18 +38,20 @@ std::vector<GridBrick> splitIntoBricks(const std::array<std::size_t, 3>& dims, s
   return bricks;
 }
 
-std::size_t brickSideFor(const std::array<std::size_t, 3>& dims, std::size_t budget, std::size_t largestTexture) {
+std::size_t brickSideFor(const std::array<std::size_t, 3>& dims, std::size_t budget, std::size_t largestTexture,
+                         std::size_t texelBytes) {
   const std::size_t longest = std::max({dims[0], dims[1], dims[2]});
-  const double bytes = double(dims[0]) * double(dims[1]) * double(dims[2]) * sizeof(float);
+  const double perTexel = double(texelBytes);
+  const double bytes = double(dims[0]) * double(dims[1]) * double(dims[2]) * perTexel;
   if ((budget == 0 || bytes <= double(budget)) && longest <= largestTexture) return longest;
   std::size_t side = largestTexture;
-  if (budget > 0) side = std::min(side, std::size_t(std::cbrt(double(budget) / 4.0 / sizeof(float))));
-  while (side > 2 && double(side) * double(side) * double(side) * sizeof(float) * 4.0 > double(budget) && budget > 0)
+  if (budget > 0) side = std::min(side, std::size_t(std::cbrt(double(budget) / 4.0 / perTexel)));
+  while (side > 2 && double(side) * double(side) * double(side) * perTexel * 4.0 > double(budget) && budget > 0)
     --side;  // cbrt's rounding
   if (side < 2)
     throw std::invalid_argument("a GPU memory budget of " + byteSizeText(double(budget)) +
-                                " cannot hold the bricks of a grid of " + dimsText(dims) +
-                                " points (each brick needs at least 128 bytes, four of them resident)");
+                                " cannot hold the bricks of a grid of " + dimsText(dims) + " points (each brick needs " +
+                                "at least " + std::to_string(8 * texelBytes) + " bytes, four of them resident)");
   return std::min(side, longest);
 }
 
@@ -72,16 +74,19 @@ std::vector<std::size_t> bricksBackToFront(const std::vector<GridBrick>& bricks,
   return order;
 }
 
-void GridBricks::configure(const std::array<std::size_t, 3>& dims, std::size_t budget, std::size_t largestTexture) {
-  if (dims == dims_ && budget == budget_ && largestTexture == largest_ && !bricks_.empty()) return;
-  const std::size_t side = brickSideFor(dims, budget, largestTexture);
+void GridBricks::configure(const std::array<std::size_t, 3>& dims, GridTexels::Format format, std::size_t texelBytes,
+                           std::size_t budget, std::size_t largestTexture) {
+  if (dims == dims_ && format == format_ && budget == budget_ && largestTexture == largest_ && !bricks_.empty()) return;
+  const std::size_t side = brickSideFor(dims, budget, largestTexture, texelBytes);
   dims_ = dims;
+  format_ = format;
+  texelBytes_ = texelBytes;
   budget_ = budget;
   largest_ = largestTexture;
   side_ = side;
   bricks_ = splitIntoBricks(dims, side);
   std::size_t largestBrick = 0;
-  for (const GridBrick& b : bricks_) largestBrick = std::max(largestBrick, b.bytes());
+  for (const GridBrick& b : bricks_) largestBrick = std::max(largestBrick, brickBytes(b));
   capacity_ = budget > 0 ? std::clamp<std::size_t>(budget / std::max<std::size_t>(largestBrick, 1), 1, bricks_.size())
                          : bricks_.size();
   slots_.clear();
@@ -92,7 +97,7 @@ void GridBricks::valuesChanged() {
   for (Slot& s : slots_) s.current = false;
 }
 
-GLuint GridBricks::resident(std::size_t b, const std::vector<float>& values) {
+GLuint GridBricks::resident(std::size_t b, const GridTexels& values) {
   auto hit = std::find_if(slots_.begin(), slots_.end(), [b](const Slot& s) { return s.brick == b && s.texture; });
   if (hit == slots_.end()) {
     if (slots_.size() < capacity_) slots_.emplace_back();
@@ -105,12 +110,14 @@ GLuint GridBricks::resident(std::size_t b, const std::vector<float>& values) {
   return slot.texture.id();
 }
 
-void GridBricks::upload(Slot& slot, std::size_t b, const std::vector<float>& values) {
+void GridBricks::upload(Slot& slot, std::size_t b, const GridTexels& texels) {
   const GridBrick& brick = bricks_[b];
   const bool sameSize = slot.texture && bricks_[slot.brick].points == brick.points;
+  using Format = GridTexels::Format;
   if (!sameSize) {
     slot.texture = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(slot.texture.id(), 1, GL_R32F, GLsizei(brick.points[0]), GLsizei(brick.points[1]),
+    const GLenum internal = format_ == Format::Float32 ? GL_R32F : format_ == Format::Snorm16 ? GL_R16_SNORM : GL_R8_SNORM;
+    glTextureStorage3D(slot.texture.id(), 1, internal, GLsizei(brick.points[0]), GLsizei(brick.points[1]),
                        GLsizei(brick.points[2]));
     glTextureParameteri(slot.texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(slot.texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -118,17 +125,23 @@ void GridBricks::upload(Slot& slot, std::size_t b, const std::vector<float>& val
   // The brick's points straight from the grid's array: rows of the grid's length, slices of
   // its rows (the start computed here in 64 bits, not by the driver from skip counts).
   const std::size_t start = (brick.first[2] * dims_[1] + brick.first[1]) * dims_[0] + brick.first[0];
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of 1- and 2-byte texels need not be 4-aligned
   glPixelStorei(GL_UNPACK_ROW_LENGTH, GLint(dims_[0]));
   glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, GLint(dims_[1]));
-  glTextureSubImage3D(slot.texture.id(), 0, 0, 0, 0, GLsizei(brick.points[0]), GLsizei(brick.points[1]),
-                      GLsizei(brick.points[2]), GL_RED, GL_FLOAT, values.data() + start);
+  const GLsizei w = GLsizei(brick.points[0]), h = GLsizei(brick.points[1]), d = GLsizei(brick.points[2]);
+  if (format_ == Format::Float32)
+    glTextureSubImage3D(slot.texture.id(), 0, 0, 0, 0, w, h, d, GL_RED, GL_FLOAT, texels.floats.data() + start);
+  else if (format_ == Format::Snorm16)
+    glTextureSubImage3D(slot.texture.id(), 0, 0, 0, 0, w, h, d, GL_RED, GL_SHORT, texels.shorts.data() + start);
+  else
+    glTextureSubImage3D(slot.texture.id(), 0, 0, 0, 0, w, h, d, GL_RED, GL_BYTE, texels.bytes.data() + start);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
   slot.brick = b;
   slot.current = true;
   ++uploads_;
-  uploadedBytes_ += brick.bytes();
+  uploadedBytes_ += brickBytes(brick);
   gl::check("GridBricks::upload");
 }
 
@@ -140,7 +153,7 @@ void GridBricks::release() {
 std::size_t GridBricks::residentBytes() const {
   std::size_t bytes = 0;
   for (const Slot& s : slots_)
-    if (s.texture) bytes += bricks_[s.brick].bytes();
+    if (s.texture) bytes += brickBytes(bricks_[s.brick]);
   return bytes;
 }
 

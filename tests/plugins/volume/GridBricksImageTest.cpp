@@ -194,3 +194,34 @@ TEST_F(BrickedSlices, ABudgetTooSmallForAnyBrickIsRefusedNamingIt) {
   setGpuMemoryBudget(0);
   EXPECT_GT(meanAlpha(gpuImage(outsideCamera(g), 32, 32)), 0.1) << "a larger budget draws again";
 }
+
+// Integer samples (8- and 16-bit seismic formats) are kept as integers on the GPU: half or a
+// quarter of the memory per point, the same picture (the reference's, within the float
+// path's bound), and bricks of twice or four times the points under the same budget.
+TEST_F(BrickedMarch, IntegerSamplesTakeTwoOrOneBytesAndGiveTheSamePicture) {
+  const RegularGrid g = brickedGrid();
+  const std::vector<double> ripple = rippleValues(g);
+  for (const double unit : {1000.0, 15.0}) {  // 16-bit (up to 7400), 8-bit (up to 111)
+    std::vector<double> integers(ripple.size());
+    double largest = 0.0;
+    for (std::size_t i = 0; i < ripple.size(); ++i) largest = std::max(largest, integers[i] = std::round(unit * ripple[i]));
+    TransferFunction tf = kBrickTf;
+    std::vector<ControlPoint> points = tf.points();
+    for (ControlPoint& p : points) p.value *= unit;
+    renderer().setGrid(g, integers);
+    renderer().setTransferFunction(TransferFunction(points));
+    renderer().setSamplingStep(0.1);
+    renderer().setTerminationThreshold(0.0);
+    const std::vector<float> image = imageWithBudget(0, outsideCamera(g), 48);
+    const std::size_t bytesPerPoint = renderer().stats().meshBytes / g.pointCount();
+    const ImageError e = compare(image, optics::renderGridReference(g, integers, TransferFunction(points),
+                                                                    outsideCamera(g), 48, 48));
+    std::printf("integer samples up to %.0f: %zu bytes per point on the GPU, RMSE %.3g vs the reference\n", largest,
+                bytesPerPoint, e.rmse);
+    EXPECT_EQ(bytesPerPoint, largest > 127.0 ? 2u : 1u);
+    EXPECT_GT(meanAlpha(image), 0.1);
+    EXPECT_LE(e.rmse, 1e-4);  // the float path's error at this step (BrickedEqualsUnbricked: 6.8e-5)
+    (void)imageWithBudget(kSmallBudget, outsideCamera(g), 48);
+    EXPECT_LT(renderer().brickCount(), 18u) << "more points per brick under the same budget";
+  }
+}

@@ -11,6 +11,7 @@ uniform mat4 worldToIndex;  // volume-relative position -> continuous grid index
 uniform ivec3 gridSize;     // points per axis
 uniform ivec3 brickFirst;   // the grid index of the texture's first point
 uniform ivec3 brickPoints;  // the texture's points per axis
+uniform vec2 texelToValue;  // value = x * texel + y: 8- and 16-bit integers stored as they are read
 uniform float marchStep;    // along the ray, model units
 
 vec3 rayIndexOrigin, rayIndexDir;  // the ray in index space
@@ -39,7 +40,8 @@ vec4 trilinearAtIndex(vec3 index) {
   float a = mix(y0, y1, w.y), b = mix(y2, y3, w.y);
   float gx = mix(mix(v100 - v000, v110 - v010, w.y), mix(v101 - v001, v111 - v011, w.y), w.z);
   float gy = mix(y1 - y0, y3 - y2, w.z);
-  return vec4(mix(a, b, w.z), gx, gy, b - a);
+  // Interpolation is linear: the texels' map to values applies to the result.
+  return vec4(texelToValue.x * mix(a, b, w.z) + texelToValue.y, texelToValue.x * vec3(gx, gy, b - a));
 }
 
 float valueAtIndex(vec3 index) { return trilinearAtIndex(index).x; }
