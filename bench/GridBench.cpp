@@ -8,6 +8,7 @@
 #include "CpuVolumeRenderer.hpp"
 #include "GridRayMarcher.hpp"
 #include "GridSlicer.hpp"
+#include "SegyReader.hpp"
 #include "SyntheticSeismic.hpp"
 #include "host/optics/GridReference.hpp"
 
@@ -37,6 +38,8 @@ const char* kUsage =
     "error: texture ray marching, texture slicing and the CPU marcher at several steps per grid\n"
     "spacing, against the exact trilinear reference. Prints a Markdown table.\n"
     "  --grid N        points per axis of the cube (default 128; 64 quick, 256 big)\n"
+    "  --segy FILE     a real post-stack SEG-Y cube instead (its amplitude, the same transfer\n"
+    "                  function over its own range), e.g. ../shared/data/seismic/segyio/f3.sgy\n"
     "  --size N        image size in pixels (default 512)\n"
     "  --frames N      timed frames per row (default 3; the median is shown)\n"
     "  --steps A,B,..  steps as fractions of the grid spacing (default 1,0.5,0.25)\n"
@@ -80,6 +83,7 @@ int main(int argc, char** argv) {
   int size = 512, frames = 3;
   bool cpuOnly = false, interactive = false, shading = false, bricksOnly = false;
   std::size_t gpuBudget = 0;
+  std::string segy;
   std::vector<double> steps = {1.0, 0.5, 0.25};
   for (int a = 1; a < argc; ++a) {
     const bool more = a + 1 < argc;
@@ -90,6 +94,7 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[a], "--interactive")) interactive = true;
     else if (!std::strcmp(argv[a], "--shading")) shading = true;
     else if (!std::strcmp(argv[a], "--bricks-only")) bricksOnly = true;
+    else if (!std::strcmp(argv[a], "--segy") && more) segy = argv[++a];
     else if (!std::strcmp(argv[a], "--gpu-budget") && more) {
       if (!(gpuBudget = parseByteSize(argv[++a]))) return bench::usageFor(argv[a], kUsage);
     }
@@ -102,13 +107,41 @@ int main(int argc, char** argv) {
   if (n < 4 || size < 8 || frames < 1 || steps.empty()) return bench::usageFor("(a value out of range)", kUsage);
   if (bricksOnly && !gpuBudget) return bench::usageFor("--bricks-only without --gpu-budget", kUsage);
 
-  seismic::SyntheticSurvey survey;
-  survey.inlines = survey.crosslines = survey.samples = n;
-  survey.binSize = 4.0;  // the cube is about as wide as it is deep in model units
-  const seismic::SyntheticVolume cube = seismic::makeSyntheticSeismic(survey);
+  seismic::SyntheticVolume cube;
+  std::string title;
+  double amplitudePeak = 0.0;
+  if (segy.empty()) {
+    seismic::SyntheticSurvey survey;
+    survey.inlines = survey.crosslines = survey.samples = n;
+    survey.binSize = 4.0;  // the cube is about as wide as it is deep in model units
+    cube = seismic::makeSyntheticSeismic(survey);
+    title = "Synthetic seismic cube " + std::to_string(n) + "^3";
+  } else {
+    try {
+      const std::unique_ptr<Model> model = seismic::readSegy(segy, {});
+      const Field* amplitude = model->findField("amplitude");
+      if (!model->grid || !amplitude) throw std::runtime_error("no grid with an amplitude");
+      cube.grid = *model->grid;
+      cube.values = amplitude->values(0);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "volpost_grid_bench: %s: %s\n", segy.c_str(), e.what());
+      return 1;
+    }
+    // The transfer function is made for amplitudes in -1 .. 1: stretched to the cube's peak
+    // (the values stay as read: integer samples stay integers on the GPU).
+    for (const double v : cube.values) amplitudePeak = std::max(amplitudePeak, std::abs(v));
+    n = std::max({cube.grid.dims[0], cube.grid.dims[1], cube.grid.dims[2]});
+    title = segy + " (" + std::to_string(cube.grid.dims[0]) + " x " + std::to_string(cube.grid.dims[1]) + " x " +
+            std::to_string(cube.grid.dims[2]) + ")";
+  }
   const RegularGrid& grid = cube.grid;
   const double spacing = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
-  const TransferFunction tf = seismicTf(4.0 / (double(n) * spacing));
+  TransferFunction tf = seismicTf(4.0 / (double(n) * spacing));
+  if (amplitudePeak > 0.0) {
+    std::vector<ControlPoint> points = tf.points();
+    for (ControlPoint& p : points) p.value *= amplitudePeak;
+    tf = TransferFunction(points);
+  }
   Camera camera;
   camera.setView(StandardView::Isometric);
   camera.fit(grid.bounds());
@@ -125,9 +158,9 @@ int main(int argc, char** argv) {
     refMs = std::chrono::duration<double, std::milli>(Clock::now() - refStart).count();
   }
 
-  std::printf("Synthetic seismic cube %zu^3 (%.1f M points, %.0f MB of floats), %dx%d, early termination off, %s; "
+  std::printf("%s (%.1f M points, %.0f MB of floats), %dx%d, early termination off, %s; "
               "reference %.0f ms\n\n",
-              n, double(grid.pointCount()) / 1e6, double(grid.pointCount()) * 4.0 / 1048576.0, size, size,
+              title.c_str(), double(grid.pointCount()) / 1e6, double(grid.pointCount()) * 4.0 / 1048576.0, size, size,
               shading ? "lit by the gradient" : "unlit", refMs);
 
   const auto row = [&](const char* name, double fraction, GridVolumeRenderer& r, const std::function<void()>& frame) {
