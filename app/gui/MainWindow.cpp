@@ -1086,7 +1086,12 @@ bool MainWindow::setTransferFunction2D(const std::optional<TransferFunction2D>& 
                              "(SEG-Y, image data); open one first");
     return false;
   }
-  return changeScene([&](Scene& s) { s.setTransferFunction2D(tf); });
+  const bool wasSet = transferFunction2D().has_value();
+  if (!changeScene([&](Scene& s) { s.setTransferFunction2D(tf); })) return false;
+  // Switched on or off: the 1D editor says whether its function is the one drawn.
+  if (wasSet != tf.has_value())
+    for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
+  return true;
 }
 
 bool MainWindow::loadTransferFunction2D(const QString& path) {

@@ -124,14 +124,13 @@ double Tf2dEditorPanel::extinctionOf(double opacity) const {
 
 void Tf2dEditorPanel::hostChanged() {
   const Model* model = host_.model();
-  const bool grid = model && model->grid && !host_.activeValues().empty();
+  const auto quantity = host_.activeQuantity();
+  const bool grid = model && model->grid && quantity;
   setEnabled(grid);
   status_->setText(grid ? QString() : "For regular grids (SEG-Y, image data) with a result shown.");
   if (!grid) return;
-  const auto quantity = host_.activeQuantity();
-  const std::string key = model->sourcePath + "|" + (quantity ? quantity->key() : std::string()) + "|" +
-                          std::to_string(host_.activeStep());
-  if (key != histogramKey_) {
+  const std::string key = model->sourcePath + "|" + quantity->key() + "|" + std::to_string(host_.activeStep());
+  if (key != histogramKey_) {  // the values are copied only for a new result or step
     histogramKey_ = key;
     const std::vector<double> values = host_.activeValues();
     canvas_->setHistogram(JointHistogram::ofGrid(*model->grid, values));

@@ -360,6 +360,11 @@ void TfEditorPanel::showSelection() {
     opacityEdit_->clear();
     colorButton_->setStyleSheet({});
   }
+  if (host_.transferFunction2D()) {  // edits here change nothing in the picture until it is switched off
+    status_->setText("<span style='color:#a60'>The volume is drawn with the 2D function (the Value x gradient "
+                     "tab); this one applies again when it is switched off there.</span>");
+    return;
+  }
   status_->setText(QString("%1 points · %2 selected · iso-surface lookup %3 ms · volume update %4 ms")
                        .arg(model_.points().size())
                        .arg(sel.size())
