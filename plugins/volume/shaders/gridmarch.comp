@@ -17,6 +17,10 @@ uniform bool firstPass;     // the brick's first pass: rays start where they ent
 uniform int stepsPerPass;
 uniform ivec2 pixelOffset;  // the dispatch covers the pixels the brick can cover, from here
 uniform ivec2 pixelEnd;     // to here (exclusive)
+// Shading and 2D transfer functions read the gradient, which jumps across cell faces: the
+// pieces are then also cut where the ray crosses a cell face and both ends of a piece take
+// its own cell's polynomial, so the shading between them is second order in the step.
+uniform bool cellCuts;
 
 #include "common/volume_segment.glsl"
 
@@ -48,7 +52,15 @@ void main() {
       float next = min((floor(t / marchStep) + 1.0) * marchStep, t1);
       if (next <= t) next = min(t + marchStep, t1);  // t beyond float's resolution of the lattice
       if (next <= t) { t = t1; break; }
-      vec4 back = sampleAlongRay(next);
+      if (cellCuts) {
+        next = min(next, nextCellFace(t));
+        vec3 cell = cellOfIndex(rayIndexOrigin + (0.5 * (t + next)) * rayIndexDir);
+        front = trilinearInCell(rayIndexOrigin + t * rayIndexDir, cell);
+        frontShade = shadeOf(front);
+      }
+      vec4 back = cellCuts ? trilinearInCell(rayIndexOrigin + next * rayIndexDir,
+                                             cellOfIndex(rayIndexOrigin + (0.5 * (t + next)) * rayIndexDir))
+                           : sampleAlongRay(next);
       vec2 backShade = shadeOf(back);
       shadeFront = frontShade;
       shadeBack = backShade;

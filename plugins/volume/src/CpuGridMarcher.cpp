@@ -63,13 +63,15 @@ float GridSamples::at(const glm::dvec3& index) const {
   return at(index, unused);
 }
 
-float GridSamples::at(const glm::dvec3& index, glm::dvec3& gradient) const {
+float GridSamples::at(const glm::dvec3& index, glm::dvec3& gradient) const { return at(index, index, gradient); }
+
+float GridSamples::at(const glm::dvec3& index, const glm::dvec3& inCellOf, glm::dvec3& gradient) const {
   std::size_t base[3];
   float w[3];
   for (int a = 0; a < 3; ++a) {
     const double top = double(grid_.dims[a] - 1);
     const double x = std::clamp(index[a], 0.0, top);
-    const double cell = std::min(std::floor(x), top - 1.0);
+    const double cell = std::min(std::floor(std::clamp(inCellOf[a], 0.0, top)), top - 1.0);
     base[a] = std::size_t(cell);
     w[a] = float(x - cell);
   }
@@ -109,10 +111,27 @@ struct Marcher {
   const std::vector<std::uint8_t>& clearBricks;  // 1: the ray crosses it without integrating
   std::vector<float> isoValues;                  // relative to the grid's value offset
   double step;
+  // Shading and 2D transfer functions read the gradient, which jumps across cell faces:
+  // pieces are then cut there too (second order, as the GPU ray marcher).
+  bool readsGradient = false;
 
   // The shading of a sample (its index gradient), or unlit.
   glm::dvec2 shadeOf(const glm::dvec3& indexGradient, const GridRay& r) const {
     return settings.shading ? optics::headlight(glm::transpose(grid.toIndex()) * indexGradient, r.dir) : glm::dvec2(1.0, 0.0);
+  }
+
+  // Where the ray (index space: o + t e) next crosses a grid plane after t.
+  static double nextCellFace(const glm::dvec3& o, const glm::dvec3& e, double t) {
+    double best = 1e300;
+    for (int a = 0; a < 3; ++a) {
+      if (e[a] == 0.0) continue;
+      const double p = o[a] + t * e[a];
+      double plane = e[a] > 0.0 ? std::floor(p) + 1.0 : std::ceil(p) - 1.0;
+      double at = (plane - o[a]) / e[a];
+      if (!(at > t)) at = (plane + (e[a] > 0.0 ? 1.0 : -1.0) - o[a]) / e[a];
+      best = std::min(best, at);
+    }
+    return best;
   }
 
   // The gradient magnitude of a sample (its index gradient) in model units, for a 2D
@@ -236,7 +255,14 @@ struct Marcher {
       double next = std::min((std::floor(t / step) + 1.0) * step, t1);
       if (!(next > t)) next = std::min(t + step, t1);
       if (!(next > t)) break;
-      const float sb = grid.at(o + next * e, g);
+      if (readsGradient) {  // cut at cell faces too; both ends in the piece's own cell
+        next = std::min(next, nextCellFace(o, e, t));
+        const glm::dvec3 middle = o + (0.5 * (t + next)) * e;
+        sf = grid.at(o + t * e, middle, g);
+        frontShade = shadeOf(g, r);
+        frontGradient = gradientOf(g);
+      }
+      const float sb = readsGradient ? grid.at(o + next * e, o + (0.5 * (t + next)) * e, g) : grid.at(o + next * e, g);
       const glm::dvec2 backShade = shadeOf(g, r);
       const double backGradient = gradientOf(g);
       piece(r, o, e, t, next, sf, sb, {frontShade, backShade}, {frontGradient, backGradient}, light);
@@ -285,6 +311,7 @@ CpuImage renderCpuGrid(const GridSamples& grid, const TransferFunction& tf, cons
   const std::vector<std::uint8_t> clear = clearBricks(grid, integrator, settings.isoSurfaces, settings.transferFunction2D);
   Marcher marcher{grid, integrator, settings, clear, {}, step > 0.0 ? step : 0.5 * grid.shortestSpacing()};
   for (const optics::IsoSurface& s : settings.isoSurfaces) marcher.isoValues.push_back(float(s.value - grid.valueOffset()));
+  marcher.readsGradient = settings.shading || settings.transferFunction2D.has_value();
 
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;

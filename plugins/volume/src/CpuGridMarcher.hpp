@@ -35,6 +35,9 @@ class GridSamples {
   /// The value there and d value / d index: the cell's own trilinear gradient (as the GPU
   /// marchers and the reference).
   float at(const glm::dvec3& index, glm::dvec3& indexGradient) const;
+  /// The same with the polynomial of the cell holding `inCellOf` (at a cell face: the
+  /// side a piece lies on).
+  float at(const glm::dvec3& index, const glm::dvec3& inCellOf, glm::dvec3& indexGradient) const;
 
   static constexpr std::size_t kBrickCells = 8;
   const std::array<std::size_t, 3>& bricks() const { return bricks_; }

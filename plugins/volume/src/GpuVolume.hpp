@@ -46,6 +46,9 @@ class GpuVolume {
   /// the samples, like the 1D one in sampling mode's lattice (compiled as its own mode).
   void setTransferFunction2D(const std::optional<TransferFunction2D>& tf);
   bool hasTransferFunction2D() const { return tf2d_.has_value(); }
+  /// Whether what is drawn reads the grid's gradient (shading, a 2D transfer function), which
+  /// jumps across cell faces: the grid ray marcher then also cuts its pieces there.
+  bool readsGradient() const { return grid_ && (shading_ || tf2d_); }
   void setClipPlanes(const std::vector<ClipPlane>& planes);
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces);
   void setIntegrationMode(IntegrationMode mode);

@@ -62,6 +62,7 @@ GLuint GridRayMarcher::beginMarch(const RenderContext& ctx, GLuint image) {
   volume_.setSegmentUniforms(p, ctx);
   glProgramUniform1f(p, glGetUniformLocation(p, "marchStep"), float(marchStep()));
   glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), kStepsPerPass);
+  glProgramUniform1i(p, glGetUniformLocation(p, "cellCuts"), volume_.readsGradient());
   volume_.bindSegmentResources(ctx);
   ensureResumeImage(ctx.width, ctx.height);
   glBindImageTexture(0, image, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);

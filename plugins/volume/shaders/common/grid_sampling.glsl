@@ -16,12 +16,21 @@ uniform float marchStep;    // along the ray, model units
 
 vec3 rayIndexOrigin, rayIndexDir;  // the ray in index space
 
+// The cell (its lowest corner's index) holding `index`, clamped to the grid.
+vec3 cellOfIndex(vec3 index) {
+  vec3 top = vec3(gridSize - 1);
+  return min(floor(clamp(index, vec3(0.0), top)), max(top - 1.0, vec3(0.0)));
+}
+
 // Trilinear interpolation in float from the 8 points around `index` (clamped to the
 // grid): the value (x) and its gradient in index space (yzw), exactly the cell's own.
-vec4 trilinearAtIndex(vec3 index) {
+vec4 trilinearInCell(vec3 index, vec3 cell);
+vec4 trilinearAtIndex(vec3 index) { return trilinearInCell(index, cellOfIndex(index)); }
+
+// The same with the polynomial of a given cell (on its faces, the side a piece lies on).
+vec4 trilinearInCell(vec3 index, vec3 cell) {
   vec3 top = vec3(gridSize - 1);
   vec3 x = clamp(index, vec3(0.0), top);
-  vec3 cell = min(floor(x), max(top - 1.0, vec3(0.0)));
   // The cell within the brick (the same cell inside it; its last cell on its far face).
   vec3 first = vec3(brickFirst);
   cell = clamp(cell, first, max(first + vec3(brickPoints) - 2.0, first));
@@ -46,6 +55,21 @@ vec4 trilinearAtIndex(vec3 index) {
 
 float valueAtIndex(vec3 index) { return trilinearAtIndex(index).x; }
 vec4 sampleAlongRay(float t) { return trilinearAtIndex(rayIndexOrigin + t * rayIndexDir); }
+
+// Where the ray next crosses a cell face after t (grid planes in index space), or 1e30.
+float nextCellFace(float t) {
+  vec3 p = rayIndexOrigin + t * rayIndexDir;
+  float best = 1e30;
+  for (int a = 0; a < 3; ++a) {
+    float d = rayIndexDir[a];
+    if (d == 0.0) continue;
+    float plane = d > 0.0 ? floor(p[a]) + 1.0 : ceil(p[a]) - 1.0;
+    float at = (plane - rayIndexOrigin[a]) / d;
+    if (!(at > t)) at = (plane + sign(d) - rayIndexOrigin[a]) / d;  // p rounded onto the plane itself
+    best = min(best, at);
+  }
+  return best;
+}
 float valueAlongRay(float t) { return sampleAlongRay(t).x; }
 
 // An index-space gradient in model units: ds/dworld = J^T ds/dindex.
