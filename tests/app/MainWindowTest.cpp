@@ -780,8 +780,11 @@ class MainWindowTest : public QObject {
     window_->findChild<QPushButton*>("tf2dAddRectangle")->click();
     QTRY_COMPARE(view->scene().state().volume.transferFunction2D->widgets().size(), std::size_t(2));
     QVERIFY(settled(view) != twoD);
+    auto* status1d = window_->findChild<QLabel*>("tfStatus");
+    QVERIFY(status1d && status1d->text().contains("2D function"));  // the 1D tab says which is drawn
     use->setChecked(false);
     QVERIFY(!view->scene().state().volume.transferFunction2D);
+    QVERIFY(!status1d->text().contains("2D function"));
     use->setChecked(true);
     QCOMPARE(view->scene().state().volume.transferFunction2D->widgets().size(), std::size_t(2));
     QTimer::singleShot(0, [] {
