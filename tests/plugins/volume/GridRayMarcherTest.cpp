@@ -53,16 +53,19 @@ class GridMarch : public RayCast {
  protected:
   std::unique_ptr<VolumeRenderer> makeRenderer() const override { return std::make_unique<volume::GridRayMarcher>(); }
   volume::GridRayMarcher& marcher() { return static_cast<volume::GridRayMarcher&>(*caster_); }
+  /// The renderer as any grid renderer (the slicer's fixture derives from this one).
+  GridVolumeRenderer& gridRenderer() { return static_cast<GridVolumeRenderer&>(*caster_); }
 
   ImageError marchAgainstReference(const RegularGrid& g, const std::vector<double>& values, double step,
                                    const Camera& camera, int size, const optics::RaySettings& settings = {}) {
-    marcher().setGrid(g, values);
-    marcher().setTransferFunction(kGridTf);
-    marcher().setSamplingStep(step);
-    marcher().setClipPlanes(settings.clipPlanes);
-    marcher().setIsoSurfaces(settings.isoSurfaces);
-    marcher().setShading(settings.shading);
-    marcher().setTerminationThreshold(0.0);
+    GridVolumeRenderer& r = gridRenderer();
+    r.setGrid(g, values);
+    r.setTransferFunction(kGridTf);
+    r.setSamplingStep(step);
+    r.setClipPlanes(settings.clipPlanes);
+    r.setIsoSurfaces(settings.isoSurfaces);
+    r.setShading(settings.shading);
+    r.setTerminationThreshold(0.0);
     const auto image = gpuImage(camera, size, size);
     return compare(image, optics::renderGridReference(g, values, kGridTf, camera, size, size, settings));
   }
