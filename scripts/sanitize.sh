@@ -4,7 +4,7 @@
 # unit, plugin and command-line tests under them, then every command-line verb on every
 # hostile and broken file (tests/data/hostile, tests/data/bad, the seismic and image-data test
 # files, and ../shared/data/hostile, ../shared/data/bad and ../shared/data/seismic when present). Any sanitizer report or crash fails the script. Run it
-# before handing work in:   scripts/sanitize.sh            (about 20 minutes on 2 cores)
+# before handing work in:   scripts/sanitize.sh            (about 25 minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -20,6 +20,9 @@ export ASAN_OPTIONS=detect_leaks=0:abort_on_error=0:exitcode=86
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:exitcode=87
 export VOLPOST_TESTS_UNDER_ASAN=1  # ASan's shadow memory cannot live under ulimit -v
 ctest --test-dir build-asan -L "unit|cli|plugin" -j2 --output-on-failure
+# The volume renderers' image tests too (about 3 minutes under the sanitizers): they drive
+# the CPU marchers and the GPU renderers' host code on real frames.
+build-asan/bin/raycast_tests --gtest_brief=1
 
 volpost=build-asan/bin/volpost
 out=$(mktemp -d)
