@@ -11,6 +11,8 @@
 #include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
 
+#include "support/HeadlessGl.hpp"
+
 #include <volpost/render/HeadlessContext.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -19,11 +21,7 @@ using namespace volpost;
 using namespace volpost::app;
 
 TEST(SceneImage, BarMiddleShowsTheAnalyticAxialStress) {
-  try {
-    HeadlessContext probe;
-  } catch (const std::exception& e) {
-    GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
-  }
+  VOLPOST_SKIP_WITHOUT_GL();
   Scene scene([](const std::string&) { return nullptr; });
   scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
   scene.setResult("S.xx", 0);
@@ -55,11 +53,7 @@ TEST(SceneImage, BarMiddleShowsTheAnalyticAxialStress) {
 // (the same values on the same plane); refused on a mesh and outside the grid, naming the
 // axis and its range; kept in the state.
 TEST(SceneImage, GridSlicesShowTheValuesAcrossTheGrid) {
-  try {
-    HeadlessContext probe;
-  } catch (const std::exception& e) {
-    GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
-  }
+  VOLPOST_SKIP_WITHOUT_GL();
   Scene scene([](const std::string&) { return nullptr; });
   scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/image_ascii.vti")));
   scene.setResult("temperature", 0);
@@ -153,11 +147,7 @@ TEST(ScenePick, ClicksPickTheSectionFaceWhereThePlaneCutsTheSurfaceAway) {
 // hidden every hit has the iso-value (tet4 and a displacement component: linear in each
 // tet, as the extraction is); a hidden surface is not clicked on.
 TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
-  try {
-    HeadlessContext probe;
-  } catch (const std::exception& e) {
-    GTEST_SKIP() << "not run: no headless OpenGL 4.5 context: " << e.what();
-  }
+  VOLPOST_SKIP_WITHOUT_GL();
   Scene scene([](const std::string&) { return nullptr; });
   scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
   scene.setResult("U.x", 0);  // the stretch along the bar: its iso-surfaces cross it
