@@ -92,10 +92,10 @@ void measure(const std::string& path) {
   const auto t0 = Clock::now();
   const auto model = readers().load(path);
   const auto t1 = Clock::now();
-  const TetMesh tets = tetrahedralize(model->mesh);
+  const TetMesh tets = tetrahedralize(model->mesh());
   const auto t2 = Clock::now();
   std::printf("| %s | %s | %zu | %zu | %.0f | %.0f | %zu | %zu |", std::filesystem::path(path).filename().c_str(),
-              model->formatName.c_str(), model->mesh.cellCount(), std::size_t(std::filesystem::file_size(path) >> 20),
+              model->formatName.c_str(), model->mesh().cellCount(), std::size_t(std::filesystem::file_size(path) >> 20),
               ms(t0, t1), ms(t1, t2), tets.mesh.cellCount(), tets.steinerCell.size());
   std::fflush(stdout);
 }

@@ -146,7 +146,7 @@ int measure(const std::string& path, const std::string& rendererName, int size) 
   t = Clock::now();
   const auto session = app::ModelSession::fromModel(model);
   out["session_s"] = secondsSince(t);
-  const double tets = double(model->mesh.cellCount());
+  const double tets = double(model->mesh().cellCount());
   out["tets"] = tets;
   t = Clock::now();
   const TetMesh& tetMesh = session->tetrahedra();
@@ -170,7 +170,7 @@ int measure(const std::string& path, const std::string& rendererName, int size) 
   ctx.width = ctx.height = size;
   ctx.framebuffer = target.framebuffer();
   ctx.camera.setView(StandardView::Isometric);
-  ctx.camera.fit(model->mesh.bounds());
+  ctx.camera.fit(model->mesh().bounds());
   t = Clock::now();
   renderer->render(ctx);
   glFinish();

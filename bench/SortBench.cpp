@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
                            "post/coarse/post_coarse.vtu", "post/fine/post_fine.vtu"}) {
     if (!std::filesystem::exists(shared / file)) continue;
     const auto model = reader.read((shared / file).string(), {});
-    const TetMesh tets = tetrahedralize(model->mesh);
+    const TetMesh tets = tetrahedralize(model->mesh());
     const volume::VisibilitySorter sorter(tets.mesh);
     for (const auto& [method, name] : {std::pair{volume::OrderMethod::Mpvo, "MPVO"}, std::pair{volume::OrderMethod::Mpvonc, "MPVONC"},
                                        std::pair{volume::OrderMethod::ImageSpace, "image-space"}}) {

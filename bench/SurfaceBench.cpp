@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     checkModel(*model);
     const auto t2 = Clock::now();
     std::shared_ptr<Model> sharedModel(std::move(model));
-    const BoundarySurface surface = extractBoundary(sharedModel->mesh);
+    const BoundarySurface surface = extractBoundary(sharedModel->mesh());
     const auto t3 = Clock::now();
 
     const auto session = app::ModelSession::load(readers, path);
@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     scene.setScalars(&view, app::autoRange(view));
     Camera camera;
     camera.setView(StandardView::Isometric);
-    camera.fit(session->model().mesh.bounds());
+    camera.fit(session->model().mesh().bounds());
     std::vector<double> times;
     for (int f = 0; f < frames; ++f) {
       RenderContext ctx;
@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     std::sort(times.begin(), times.end());
     const double median = times[times.size() / 2];
     std::printf("| %s | %zu | %zu | %.1f | %.1f | %.1f | %.2f / %.2f / %.2f | %.1f |\n", c.name,
-                sharedModel->mesh.cellCount(), std::size_t(surface.mesh.n_faces()), ms(t0, t1), ms(t1, t2), ms(t2, t3),
+                sharedModel->mesh().cellCount(), std::size_t(surface.mesh.n_faces()), ms(t0, t1), ms(t1, t2), ms(t2, t3),
                 times.front(), median, times.back(), double(surface.mesh.n_faces()) / median / 1e3);
   }
   rusage usage{};

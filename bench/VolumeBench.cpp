@@ -98,9 +98,9 @@ Case modelCase(const std::string& path, const std::string& field) {
   if (!f) throw std::runtime_error(path + " has no field '" + field + "'");
   if (f->components() != 1) throw std::runtime_error("'" + field + "' has " + std::to_string(f->components()) +
                                                      " components: choose a scalar field");
-  const TetMesh tets = tetrahedralize(model->mesh);
+  const TetMesh tets = tetrahedralize(model->mesh());
   return {std::filesystem::path(path).stem().string(), tets.mesh, f->location(),
-          f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh, f->values(0)) : tets.cellValues(f->values(0))};
+          f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh(), f->values(0)) : tets.cellValues(f->values(0))};
 }
 
 bool parseVec3(const char* text, glm::dvec3& v) {
@@ -142,9 +142,9 @@ std::vector<Case> cases(bool quick) {
     checkModel(*model);
     const Field* f = model->findField(field);
     // Hexahedra, wedges and pyramids go through the conforming tetrahedralization.
-    const TetMesh tets = tetrahedralize(model->mesh);
+    const TetMesh tets = tetrahedralize(model->mesh());
     Case c{std::filesystem::path(file).stem().string(), tets.mesh, f->location(),
-           f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh, f->values(0)) : tets.cellValues(f->values(0))};
+           f->location() == FieldLocation::Node ? tets.nodeValues(model->mesh(), f->values(0)) : tets.cellValues(f->values(0))};
     out.push_back(std::move(c));
   }
   return out;
@@ -159,7 +159,7 @@ void exportCase(const std::filesystem::path& dir, const Case& c, const TransferF
   std::replace_if(slug.begin(), slug.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   std::filesystem::create_directories(dir);
   Model model;
-  model.mesh = c.mesh;
+  model.mesh() = c.mesh;
   model.fields.push_back(Field::fromValues("s", c.location, 1, {c.values}));
   writeVtu(model, (dir / (slug + ".vtu")).string());
   std::ofstream(dir / (slug + ".tf.json")) << tf.toJson();

@@ -36,8 +36,8 @@ int runConvert(const QStringList& args) {
     const auto model =
         plugins->readers().load(pathBytes(files[0]), readerOptionsFrom(parser, readerOption), terminalProgress("reading"));
     writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"));
-    std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->mesh.nodeCount(),
-                model->mesh.cellCount(), model->fields.size());
+    std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->nodeCount(),
+                model->cellCount(), model->fields.size());
     return 0;
   });
 }

@@ -95,13 +95,12 @@ int runInfo(const QStringList& args) {
   try {
     const ReaderOptions options = readerOptionsFrom(parser, readerOption);
     const auto model = plugins->readers().load(path, options, terminalProgress("reading"));
-    const Mesh& mesh = model->mesh;
     std::printf("file:     %s\nformat:   %s\n", path.c_str(), model->formatName.c_str());
     if (!model->title.empty()) std::printf("title:    %s\n", model->title.c_str());
-    std::printf("nodes:    %zu\ncells:    %zu\n", mesh.nodeCount(), mesh.cellCount());
-    for (const auto& [type, count] : mesh.countsByType())
+    std::printf("nodes:    %zu\ncells:    %zu\n", model->nodeCount(), model->cellCount());
+    for (const auto& [type, count] : model->countsByType())
       std::printf("  %-9s %zu\n", std::string(cellTypeName(type)).c_str(), count);
-    const Bounds b = mesh.bounds();
+    const Bounds b = model->bounds();
     if (b.valid)
       std::printf("bounds:   x [%.6g, %.6g]  y [%.6g, %.6g]  z [%.6g, %.6g]\n", b.min.x, b.max.x, b.min.y, b.max.y,
                   b.min.z, b.max.z);

@@ -87,7 +87,7 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
   const CutKey key{planes, viewVersion, range, view != nullptr};
   if (cutFor_ == key) return;
   cutFor_ = key;
-  const double tolerance = 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300);
+  const double tolerance = 1e-5 * std::max(session_->model().bounds().diagonal(), 1e-300);
   // What lies on a plane is kept: a section on its own plane, a face of the model on a
   // plane of the box (float rounding would otherwise speckle it).
   surface_.setClipPlanes(planes, tolerance);
@@ -121,7 +121,7 @@ void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const std
   if (!initialized_ || !session_) return;
   // Cut by the clip planes and box as the surface and the volume are (what lies on a plane
   // of the box is kept: a slice on its face).
-  slices_.setClipPlanes(clipPlanes, 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300));
+  slices_.setClipPlanes(clipPlanes, 1e-5 * std::max(session_->model().bounds().diagonal(), 1e-300));
   const CutKey key{planes, viewVersion, range, view != nullptr};
   if (slicesFor_ == key) return;
   slicesFor_ = key;
@@ -171,7 +171,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
     renderer->setOpacity(float(iso.opacity));
     renderer->setTriangles(corners, session_->origin());
     if (cutFor_) {
-      const double tolerance = 1e-5 * std::max(session_->model().mesh.bounds().diagonal(), 1e-300);
+      const double tolerance = 1e-5 * std::max(session_->model().bounds().diagonal(), 1e-300);
       renderer->setClipPlanes(cutFor_->planes, tolerance);
     }
     isoTriangles_ += corners.size() / 3;

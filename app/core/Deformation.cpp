@@ -38,7 +38,7 @@ double automaticDeformationScale(const ModelSession& base, const std::string& na
     const double length = std::sqrt(u[i] * u[i] + u[i + 1] * u[i + 1] + u[i + 2] * u[i + 2]);
     if (std::isfinite(length)) largest = std::max(largest, length);
   }
-  const double size = base.model().mesh.bounds().diagonal();
+  const double size = base.model().bounds().diagonal();
   return largest > 0.0 && size > 0.0 ? 0.1 * size / largest : 0.0;
 }
 
@@ -48,7 +48,8 @@ std::shared_ptr<ModelSession> deformedSession(const ModelSession& base, const st
   if (!std::isfinite(scale)) throw std::invalid_argument("the deformation scale must be a finite number");
   const std::vector<double>& u = f.values(clampedStep(f, step));
   auto model = std::make_shared<Model>(base.model());  // the mesh is copied; fields are shared
-  std::vector<glm::dvec3>& nodes = model->mesh.nodes;
+  std::vector<glm::dvec3>& nodes = model->mesh().nodes;  // a grid's hexahedra are built here
+  model->grid.reset();  // moved points are no regular grid: grid renderers must not draw it as one
   for (std::size_t n = 0; n < nodes.size() && 3 * n + 2 < u.size(); ++n) {
     const glm::dvec3 d(u[3 * n], u[3 * n + 1], u[3 * n + 2]);
     if (std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z)) nodes[n] += scale * d;  // NaN: left in place

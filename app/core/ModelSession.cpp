@@ -7,6 +7,14 @@
 #include <stdexcept>
 
 namespace volpost::app {
+namespace {
+
+// A grid's boundary comes from its index ranges while its hexahedra are not built.
+BoundarySurface boundaryOf(const Model& model, const Progress& progress = {}) {
+  return model.meshBuilt() ? extractBoundary(model.mesh(), progress) : extractBoundary(*model.grid, progress);
+}
+
+}  // namespace
 
 std::shared_ptr<ModelSession> ModelSession::load(const ReaderRegistry& readers, const std::string& path,
                                                  const Progress& progress, Boundary boundary,
@@ -33,14 +41,14 @@ std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> mod
                                                       Boundary boundary) {
   auto session = std::make_shared<ModelSession>();
   session->model_ = std::move(model);
-  const Bounds b = session->model_->mesh.bounds();
+  const Bounds b = session->model_->bounds();
   session->origin_ = b.valid ? b.center() : glm::dvec3(0.0);
   session->bounds_ = b;
   if (boundary == Boundary::Now) {
     Progress stage = progress;
     stage.setStage("extracting the boundary");
     std::call_once(session->surfaceOnce_, [&] {
-      session->surface_ = std::make_unique<BoundarySurface>(extractBoundary(session->model_->mesh, stage));
+      session->surface_ = std::make_unique<BoundarySurface>(boundaryOf(*session->model_, stage));
       session->surfaceExtracted_ = true;
     });
   }
@@ -49,7 +57,7 @@ std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> mod
 
 const BoundarySurface& ModelSession::surface() const {
   std::call_once(surfaceOnce_, [this] {
-    surface_ = std::make_unique<BoundarySurface>(extractBoundary(model_->mesh));
+    surface_ = std::make_unique<BoundarySurface>(boundaryOf(*model_));
     surfaceExtracted_ = true;
   });
   return *surface_;
@@ -124,7 +132,7 @@ ValueRange ModelSession::rangeOverSteps(const Quantity& q) const {
 }
 
 const TetMesh& ModelSession::tetrahedra() const {
-  std::call_once(tetOnce_, [this] { tets_ = std::make_unique<TetMesh>(tetrahedralize(model_->mesh)); });
+  std::call_once(tetOnce_, [this] { tets_ = std::make_unique<TetMesh>(tetrahedralize(model_->mesh())); });
   return *tets_;
 }
 
@@ -135,7 +143,7 @@ const PointLocator& ModelSession::locator() const {
 
 std::vector<double> ModelSession::tetValues(const ScalarView& view) const {
   const TetMesh& t = tetrahedra();
-  return view.location == FieldLocation::Node ? t.nodeValues(model_->mesh, view.values) : t.cellValues(view.values);
+  return view.location == FieldLocation::Node ? t.nodeValues(model_->mesh(), view.values) : t.cellValues(view.values);
 }
 
 }  // namespace volpost::app

@@ -68,7 +68,7 @@ bool holds(const Mesh& mesh, std::size_t cell, const glm::dvec3& xi, const glm::
 // bulge past their faceted split); else the found element, extrapolated a little or
 // linear in its split.
 Found findElement(const ModelSession& session, const glm::dvec3& p) {
-  const Mesh& mesh = session.model().mesh;
+  const Mesh& mesh = session.model().mesh();
   const TetMesh& tets = session.tetrahedra();
   const PointLocator& locator = session.locator();
   const double tolerance = kOnMeshTolerance * locator.modelSize();
@@ -176,7 +176,7 @@ ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::s
   if (!std::isfinite(point.x + point.y + point.z)) return r;
   const Found found = findElement(session, point);
   if (found.method == ProbeMethod::Outside) return r;
-  const Mesh& mesh = session.model().mesh;
+  const Mesh& mesh = session.model().mesh();
   r.method = found.method;
   r.cell = found.cell;
   r.cellId = mesh.cellId(found.cell);

@@ -33,7 +33,7 @@ QString stepAndLocation(const ScalarView& view) {
 // tet and 48 per node cover the peaks volpost_scale_bench measures for the CPU and GPU ray
 // casters above the model (docs/scale.md).
 void requireVolumeMemory(const Model& model, const Mesh& tets) {
-  const double modelBytes = double(model.mesh.cellBytes()) + 24.0 * double(model.mesh.nodeCount());
+  const double modelBytes = double(model.mesh().cellBytes()) + 24.0 * double(model.nodeCount());
   const double rendererBytes = 96.0 * double(tets.cellCount()) + 48.0 * double(tets.nodeCount());
   requireMemory(modelBytes + rendererBytes, model.sourcePath,
                 "the model and the volume renderer's structures for " + std::to_string(tets.cellCount()) +
@@ -110,7 +110,7 @@ void Scene::rebuildDeformation() {
 }
 
 void Scene::fitCamera() {
-  if (session_) camera_.fit(session_->model().mesh.bounds());
+  if (session_) camera_.fit(session_->model().bounds());
 }
 
 // ---- what is shown ----
@@ -353,7 +353,7 @@ void Scene::applyState(const SceneState& s) {
       s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
     throw std::invalid_argument("too many clip planes or iso-surfaces");
   Camera camera = camera_;
-  camera.fit(session_->model().mesh.bounds());
+  camera.fit(session_->model().bounds());
   if (s.camera) {
     camera.setProjection(s.camera->orthographic ? Camera::Projection::Orthographic : Camera::Projection::Perspective);
     camera.setFieldOfView(s.camera->fieldOfView);
@@ -371,7 +371,7 @@ void Scene::applyState(const SceneState& s) {
     }
   } else {
     camera.setView(StandardView::Isometric);
-    camera.fit(session_->model().mesh.bounds());
+    camera.fit(session_->model().bounds());
   }
 
   const bool locationChanged = !view_ || !view || view_->location != view->location;
@@ -428,7 +428,7 @@ std::optional<Scene::Extremes> Scene::extremes() const {
   extremesVersion_ = viewVersion_;
   extremes_.reset();
   if (!view_ || !session_ || !view_->range.valid()) return extremes_;
-  const Mesh& mesh = session_->model().mesh;
+  const Mesh& mesh = session_->model().mesh();
   const std::vector<double>& v = view_->values;
   std::size_t lo = v.size(), hi = v.size();
   std::vector<bool> used;
@@ -472,7 +472,7 @@ TransferFunction Scene::transferFunction() const {
   if (!view_ || !session_) return {};
   // The default follows the color range the user chose (fixed, over all steps or per step).
   const auto chosen = state_.fixedRange || state_.rangeOverSteps ? std::optional(displayRange()) : std::nullopt;
-  return defaultTransferFunction(*view_, session_->model().mesh.bounds().diagonal(), state_.colorMap, chosen);
+  return defaultTransferFunction(*view_, session_->model().bounds().diagonal(), state_.colorMap, chosen);
 }
 
 std::optional<LegendPicture> Scene::legend() const {
@@ -570,9 +570,9 @@ std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession&
   if (!f || f->components() != 3) throw std::invalid_argument("no vector field named '" + l.field + "'");
   const std::size_t step = std::min(wantedStep, f->stepCount() - 1);
   std::vector<double> nodal = f->values(step);
-  if (f->location() == FieldLocation::Cell) nodal = averageCellVectorsToNodes(model.mesh, nodal);
+  if (f->location() == FieldLocation::Cell) nodal = averageCellVectorsToNodes(model.mesh(), nodal);
   const TetMesh& tets = session_->tetrahedra();
-  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh, nodal));
+  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh(), nodal));
   const std::vector<glm::dvec3> seeds = seedPoints(l.seeds, *session_);
   auto result = std::make_shared<StreamlineResult>();
   result->layer = l;
@@ -581,7 +581,7 @@ std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession&
   result->seeds = seeds.size();
   result->lines = tracer.traceAll(seeds, l.settings, &result->outside, progress);
   if (!seeds.empty() && result->outside == seeds.size()) {
-    const Bounds b = model.mesh.bounds();
+    const Bounds b = model.bounds();
     char text[256];
     std::snprintf(text, sizeof text, "x [%g, %g]  y [%g, %g]  z [%g, %g]", b.min.x, b.max.x, b.min.y, b.max.y, b.min.z,
                   b.max.z);
@@ -642,7 +642,7 @@ void Scene::applyToStreamlines() {
   std::vector<std::vector<glm::dvec3>> lines;
   for (const Streamline& l : r.lines) lines.push_back(l.points);
   StreamlineStyle style = state_.streamlines.style;
-  const double size = session_->model().mesh.bounds().diagonal();
+  const double size = session_->model().bounds().diagonal();
   if (style.tubeRadius <= 0.0) style.tubeRadius = 0.003 * size;
   if (style.arrowSpacing <= 0.0) style.arrowSpacing = 0.08 * size;
   streamlineRenderer_.setLines(lines, r.values, session_->origin(), style);

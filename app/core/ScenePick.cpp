@@ -48,7 +48,7 @@ std::optional<double> rayHitsPlane(const PickRay& ray, const ClipPlane& plane) {
 std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
                                        const std::function<bool(const glm::dvec3&)>& kept) {
   const BoundarySurface& surface = session.surface();
-  const Mesh& mesh = session.model().mesh;
+  const Mesh& mesh = session.model().mesh();
   std::optional<SurfacePick> best;
   double nearest = std::numeric_limits<double>::infinity();
   // Moller-Trumbore on every boundary triangle, in double on the model's own node

@@ -620,7 +620,7 @@ void MainWindow::setClipAxis(int axis) {
   }
   glm::dvec3 n(0.0);
   n[axis] = 1.0;
-  const ClipPlane plane{session_->model().mesh.bounds().center(), n};
+  const ClipPlane plane{session_->model().bounds().center(), n};
   changeScene([&](Scene& s) { s.setClipPlanes({plane}); });
 }
 
@@ -658,7 +658,7 @@ void MainWindow::applyClipBox(const ClipBox& box) {
 
 void MainWindow::chooseClipBox() {
   if (!session_) return;
-  const Bounds b = session_->model().mesh.bounds();
+  const Bounds b = session_->model().bounds();
   const auto current = viewport_->scene().volume().clipBox;
   QString text = current ? clipBoxText(*current)
                          : clipBoxText({b.min.x, b.max.x, b.min.y, b.max.y, b.min.z, b.max.z});
@@ -998,8 +998,8 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   for (const auto& d : m.diagnostics) warnings += d.severity == Severity::Warning;
   statusBar()->showMessage(QString("%1: %2 nodes, %3 cells%4")
                                .arg(QString::fromStdString(m.sourcePath))
-                               .arg(m.mesh.nodeCount())
-                               .arg(m.mesh.cellCount())
+                               .arg(m.mesh().nodeCount())
+                               .arg(m.mesh().cellCount())
                                .arg(warnings ? QString(", %1 defect warning(s): see the Model panel").arg(warnings) : ""));
   notifyPanels();
 }
@@ -1123,7 +1123,7 @@ std::vector<double> MainWindow::activeValues() const {
   return view ? view->values : std::vector<double>{};
 }
 
-double MainWindow::modelSize() const { return session_ ? session_->model().mesh.bounds().diagonal() : 0.0; }
+double MainWindow::modelSize() const { return session_ ? session_->model().bounds().diagonal() : 0.0; }
 
 double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStats().lastTransferFunctionMs; }
 
@@ -1149,10 +1149,10 @@ void MainWindow::showModelInfo() {
       options << QString::fromStdString(name + "=" + value).toHtmlEscaped();
     html += QString("read with %1 (File &gt; Reader Options...)<br><br>").arg(options.join(", "));
   }
-  html += QString("%1 nodes<br>%2 cells:<br>").arg(m.mesh.nodeCount()).arg(m.mesh.cellCount());
-  for (const auto& [type, count] : m.mesh.countsByType())
+  html += QString("%1 nodes<br>%2 cells:<br>").arg(m.nodeCount()).arg(m.cellCount());
+  for (const auto& [type, count] : m.countsByType())
     html += QString("&nbsp;&nbsp;%1 %2<br>").arg(count).arg(QString::fromStdString(std::string(cellTypeName(type))));
-  const Bounds b = m.mesh.bounds();
+  const Bounds b = m.bounds();
   if (b.valid)
     html += QString("size %1 x %2 x %3<br>").arg(b.size().x, 0, 'g', 4).arg(b.size().y, 0, 'g', 4).arg(b.size().z, 0, 'g', 4);
   if (const auto& grid = m.grid) {  // a seismic cube or other regular grid: its axes in its own words
@@ -1172,11 +1172,15 @@ void MainWindow::showModelInfo() {
   // Host: the cells, nodes and ids the model holds (fields are read on first use). The
   // volume renderer's figure is its structure's (GPU buffers, or host memory for the CPU
   // ray caster), as of its last frame.
-  const double modelBytes = double(m.mesh.cellBytes()) + 24.0 * double(m.mesh.nodeCount()) +
-                            8.0 * double(m.mesh.nodeIds.size() + m.mesh.cellIds.size());
-  html += QString("model: %1 (%2 bytes per cell)<br>")
-              .arg(QString::fromStdString(byteSizeText(modelBytes)))
-              .arg(m.mesh.cellCount() ? modelBytes / double(m.mesh.cellCount()) : 0.0, 0, 'f', 0);
+  if (m.meshBuilt()) {
+    const double modelBytes = double(m.mesh().cellBytes()) + 24.0 * double(m.mesh().nodeCount()) +
+                              8.0 * double(m.mesh().nodeIds.size() + m.mesh().cellIds.size());
+    html += QString("model: %1 (%2 bytes per cell)<br>")
+                .arg(QString::fromStdString(byteSizeText(modelBytes)))
+                .arg(m.mesh().cellCount() ? modelBytes / double(m.mesh().cellCount()) : 0.0, 0, 'f', 0);
+  } else {
+    html += QString("model: a regular grid (its cells are not stored)<br>");
+  }
   const VolumeStats volume = viewport_->volumeStats();
   if (volume.gpuBytes > 0)
     html += QString("volume renderer (%1): %2<br>")

@@ -32,7 +32,7 @@ StreamlineDialog::StreamlineDialog(const ModelSession& session, const Streamline
   QStringList specs;
   for (const auto& s : layer.seeds) specs << QString::fromStdString(s);
   if (specs.isEmpty()) {  // a first rake across the model's middle
-    const Bounds b = session.model().mesh.bounds();
+    const Bounds b = session.model().bounds();
     const glm::dvec3 c = b.center(), half = 0.4 * b.size();
     specs << QString("line:%1,%2,%3:%4,%5,%6:20")
                  .arg(c.x - half.x, 0, 'g', 6).arg(c.y - half.y, 0, 'g', 6).arg(c.z, 0, 'g', 6)

@@ -96,7 +96,7 @@ class Appended {
 }  // namespace
 
 void writeVtu(const Model& model, const std::string& path, const Progress& progress) {
-  const Mesh& mesh = model.mesh;
+  const Mesh& mesh = model.mesh();
   Appended appended;
   std::ostringstream xml;
   // No file name in a comment: "--" in a name would end it early and break the XML.

@@ -50,7 +50,7 @@ std::unique_ptr<Model> TetraReader::read(const std::string& path, const Progress
   for (std::size_t i = 0; i < count; ++i) {
     glm::dvec3 p;
     if (auto s = lines.require("a node"); !(s >> p.x >> p.y >> p.z)) lines.fail("expected three coordinates");
-    model->mesh.nodes.push_back(p);
+    model->mesh().nodes.push_back(p);
   }
   progress.report(0.5);
   if (auto h = lines.require("'tets M'"); !(h >> word >> count) || word != "tets") lines.fail("expected 'tets M'");
@@ -59,8 +59,8 @@ std::unique_ptr<Model> TetraReader::read(const std::string& path, const Progress
     auto s = lines.require("a tet");
     if (!(s >> n[0] >> n[1] >> n[2] >> n[3])) lines.fail("expected four node indices");
     for (NodeIndex k : n)
-      if (k >= model->mesh.nodeCount()) lines.fail("node " + std::to_string(k) + " does not exist");
-    model->mesh.addCell(CellType::Tet4, n);
+      if (k >= model->mesh().nodeCount()) lines.fail("node " + std::to_string(k) + " does not exist");
+    model->mesh().addCell(CellType::Tet4, n);
   }
   std::istringstream s;
   while (lines.next(s)) {
@@ -68,7 +68,7 @@ std::unique_ptr<Model> TetraReader::read(const std::string& path, const Progress
     if (!(s >> word >> name >> where) || word != "field" || (where != "node" && where != "cell"))
       lines.fail("expected 'field NAME node|cell'");
     const auto location = where == "node" ? FieldLocation::Node : FieldLocation::Cell;
-    const std::size_t n = location == FieldLocation::Node ? model->mesh.nodeCount() : model->mesh.cellCount();
+    const std::size_t n = location == FieldLocation::Node ? model->mesh().nodeCount() : model->mesh().cellCount();
     std::vector<double> values(n);
     for (double& v : values)
       if (auto line = lines.require("a field value"); !(line >> v)) lines.fail("expected a number");

@@ -105,7 +105,7 @@ class MainWindowTest : public QObject {
     auto* box = window_->findChild<QComboBox*>("quantityBox");
     QVERIFY(box);
     QCOMPARE(box->currentData().toString(), QString("S.mises"));
-    QCOMPARE(window_->session()->model().mesh.cellCount(), std::size_t(12431));
+    QCOMPARE(window_->session()->model().mesh().cellCount(), std::size_t(12431));
     const QImage image = settled(window_->viewport());
     const auto [drawn, sum] = summarize(image);
     QVERIFY2(drawn > image.width() / 2 * image.height() / 50, "the model covers part of the view");
@@ -514,7 +514,7 @@ class MainWindowTest : public QObject {
     QApplication::sendEvent(window_.get(), &drop);
     QVERIFY(finished.wait(30000));
     QVERIFY(finished.first().first().toBool());
-    QCOMPARE(window_->session()->model().mesh.cellCount(), std::size_t(12431));
+    QCOMPARE(window_->session()->model().mesh().cellCount(), std::size_t(12431));
     delete mime;
     auto* recent = window_->findChild<QMenu*>("recentMenu");
     QVERIFY(recent);

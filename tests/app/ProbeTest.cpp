@@ -25,7 +25,7 @@ namespace {
 // field of the element's number; element ids start at 101, node ids at 1001.
 std::shared_ptr<ModelSession> quarterRing(int around, int through) {
   auto model = std::make_shared<Model>();
-  Mesh& mesh = model->mesh;
+  Mesh& mesh = model->mesh();
   // Nodes on a (2 around + 1) x (2 through + 1) x 3 lattice of (theta, r, z); the hex20
   // uses the lattice points it needs, the rest stay unused.
   const int nt = 2 * around + 1, nr = 2 * through + 1, nz = 3;
@@ -68,8 +68,8 @@ double roundTo(double v, int digits) {
 
 TEST(Probe, EveryNodeOfACurvedHex20MeshIsFoundWithItsOwnValue) {
   const auto ring = quarterRing(6, 2);
-  ASSERT_GT(signedCellVolume(ring->model().mesh, 0), 0.0) << "the test's hex20 must be positively oriented";
-  const Mesh& mesh = ring->model().mesh;
+  ASSERT_GT(signedCellVolume(ring->model().mesh(), 0), 0.0) << "the test's hex20 must be positively oriented";
+  const Mesh& mesh = ring->model().mesh();
   const std::vector<double>& f = ring->model().fields[0]->values(0);
   std::vector<bool> used(mesh.nodeCount(), false);
   for (NodeIndex n : mesh.connectivity()) used[n] = true;
@@ -143,7 +143,7 @@ TEST(Probe, EveryNodeOfTheRealQuadraticModelsIsFound) {
   for (const char* file : {"bracket/tet10/bracket_tet10.frd", "bracket/tet10/bracket_tet10.inp", "wheel/mixed/wheel_mixed.frd"}) {
     VOLPOST_SHARED_OR_SKIP(path, file);
     const auto session = ModelSession::load(volpost::test::meshioReaders(), path);
-    const Mesh& mesh = session->model().mesh;
+    const Mesh& mesh = session->model().mesh();
     std::vector<bool> used(mesh.nodeCount(), false);
     for (NodeIndex n : mesh.connectivity()) used[n] = true;
     const Field* u = session->model().findField("U");
@@ -169,7 +169,7 @@ TEST(ScenePick, TheCentreOfAnAxisViewHitsTheNearFaceAndAMissIsNothing) {
   const auto bar = ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
   Camera camera;
   camera.setView(StandardView::PlusX);  // from +x: the loaded end face x = 10 is in front
-  camera.fit(bar->model().mesh.bounds());
+  camera.fit(bar->model().mesh().bounds());
   const auto hit = pickSurface(*bar, pixelRay(camera, 50.0, 40.0, 100.0, 80.0));
   ASSERT_TRUE(hit);
   EXPECT_NEAR(hit->point.x, 10.0, 1e-9);
@@ -183,7 +183,7 @@ TEST(ScenePick, TheCentreOfAnAxisViewHitsTheNearFaceAndAMissIsNothing) {
   // Orthographic too, from below.
   camera.setView(StandardView::MinusZ);
   camera.setProjection(Camera::Projection::Orthographic);
-  camera.fit(bar->model().mesh.bounds());
+  camera.fit(bar->model().mesh().bounds());
   const auto below = pickSurface(*bar, pixelRay(camera, 50.0, 40.0, 100.0, 80.0));
   ASSERT_TRUE(below);
   EXPECT_NEAR(below->point.z, 0.0, 1e-9);

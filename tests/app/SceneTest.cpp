@@ -10,6 +10,7 @@
 
 #include <volpost/core/ResourceLimits.hpp>
 #include "core/AnimationFrames.hpp"
+#include "core/Deformation.hpp"
 #include "core/Legend.hpp"
 #include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
@@ -355,14 +356,14 @@ TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
   Scene scene(rayCasterOnly());
   scene.setSession(bar());
   scene.setResult("U.x", 0);
-  const Bounds read = bar()->model().mesh.bounds();
+  const Bounds read = bar()->model().mesh().bounds();
   const double uMax = bar()->rangeOverSteps(bar()->findQuantity("U.magnitude")).max;
   DeformationLayer d;
   d.shown = true;
   d.scale = 100.0;
   scene.setDeformation(d);
   ASSERT_NE(scene.session(), scene.baseSession());
-  const Bounds moved = scene.session()->model().mesh.bounds();
+  const Bounds moved = scene.session()->model().mesh().bounds();
   const double uxMax = scene.view()->range.max;
   EXPECT_NEAR(moved.max.x, read.max.x + 100.0 * uxMax, 1e-6 * read.diagonal());
   EXPECT_EQ(scene.deformationScale(), 100.0);
@@ -381,6 +382,25 @@ TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
   scene.setDeformation(DeformationLayer{});
   EXPECT_EQ(scene.session(), scene.baseSession());
   EXPECT_EQ(scene.deformationScale(), 0.0);
+}
+
+// A deformed regular grid is no longer one: its copy holds moved hexahedra and no grid, so
+// the grid renderers cannot draw the undeformed samples as if they had moved.
+TEST(Scene, ADeformedGridIsDrawnAsItsMovedCells) {
+  auto model = std::make_shared<Model>();
+  RegularGrid g;
+  g.dims = {3, 3, 3};
+  model->grid = g;
+  std::vector<double> u(27 * 3, 0.0);
+  for (std::size_t p = 0; p < 27; ++p) u[3 * p] = double(p % 3);  // x stretched by 2
+  model->fields.push_back(Field::fromValues("U", FieldLocation::Node, 3, {u}));
+  const auto base = ModelSession::fromModel(model);
+  EXPECT_FALSE(base->model().meshBuilt()) << "a session over a grid leaves its cells unbuilt";
+  const auto deformed = deformedSession(*base, "U", 0, 1.0);
+  EXPECT_FALSE(deformed->model().grid);
+  EXPECT_EQ(deformed->model().mesh().cellCount(), 8u);
+  EXPECT_EQ(deformed->model().bounds().max.x, 4.0);
+  EXPECT_TRUE(base->model().grid) << "the model as read keeps its grid";
 }
 
 // The undeformed outline: the undeformed bar's twelve feature edges in gray over the

@@ -51,7 +51,7 @@ class DeckParser {
     model_ = std::make_unique<Model>();
     readFile(path, 0, {});
     if (nodeIndex_.size() == 0) throw ReadError(path, "no *NODE data: this deck defines no mesh");
-    if (model_->mesh.cellCount() == 0 && skipped_ == 0)
+    if (model_->mesh().cellCount() == 0 && skipped_ == 0)
       throw ReadError(path, "no *ELEMENT data: this deck defines nodes but no elements");
     finish();
     return std::move(model_);
@@ -170,11 +170,11 @@ class DeckParser {
     glm::dvec3 p(0.0);
     for (std::size_t k = 1; k < f.size() && k < 4; ++k)
       p[int(k - 1)] = f[k].empty() ? 0.0 : parseFortranReal(s, f[k], "a node coordinate");
-    if (!nodeIndex_.add(id, NodeIndex(model_->mesh.nodes.size()))) {
+    if (!nodeIndex_.add(id, NodeIndex(model_->mesh().nodes.size()))) {
       s.fail("node " + std::to_string(id) + " is defined twice");
     }
-    model_->mesh.nodes.push_back(p);
-    model_->mesh.nodeIds.push_back(id);
+    model_->mesh().nodes.push_back(p);
+    model_->mesh().nodeIds.push_back(id);
   }
 
   void readElement(TextScanner& s, const std::vector<std::string_view>& f, const std::optional<SolidElement>& element,
@@ -195,7 +195,7 @@ class DeckParser {
       const std::int64_t nodeId = parseInteger(s, nodes[std::size_t(element->vtkOrder[k])], "a node id");
       const auto index = nodeIndex_.find(nodeId);
       if (!index)
-        s.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh.cellCount()) +
+        s.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh().cellCount()) +
                ") uses node " + std::to_string(nodeId) + ", which no *NODE defines");
       cell[k] = *index;
     }
@@ -205,8 +205,8 @@ class DeckParser {
       type = collapseDegenerateHex(std::span<std::uint32_t>(cell.data(), 8), count);
       if (type != CellType::Hex8) ++collapsed_[type];
     }
-    model_->mesh.addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
-    model_->mesh.cellIds.push_back(id);
+    model_->mesh().addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
+    model_->mesh().cellIds.push_back(id);
     auto [it, added] = elsetIndex_.emplace(elset, elsetIndex_.size() + 1);
     if (added) elsetNames_.push_back(elset.empty() ? "(no ELSET)" : elset);
     elsets_.push_back(double(it->second));

@@ -267,15 +267,15 @@ class ExodusParser {
       const auto all = nc_.doubles("coord");
       for (std::size_t d = 0; d < dims && d < 3; ++d) xyz[d].assign(all.begin() + std::ptrdiff_t(d * n), all.begin() + std::ptrdiff_t((d + 1) * n));
     }
-    model_->mesh.nodes.resize(n, glm::dvec3(0.0));
+    model_->mesh().nodes.resize(n, glm::dvec3(0.0));
     for (std::size_t d = 0; d < 3; ++d) {
       if (xyz[d].empty()) continue;
       if (xyz[d].size() != n) nc_.fail("coordinate array " + std::to_string(d) + " has " + std::to_string(xyz[d].size()) + " values for " + std::to_string(n) + " nodes");
-      for (std::size_t i = 0; i < n; ++i) model_->mesh.nodes[i][int(d)] = xyz[d][i];
+      for (std::size_t i = 0; i < n; ++i) model_->mesh().nodes[i][int(d)] = xyz[d][i];
     }
     if (nc_.variable("node_num_map")) {
       const auto map = nc_.integers("node_num_map");
-      if (map.size() == n) model_->mesh.nodeIds.assign(map.begin(), map.end());
+      if (map.size() == n) model_->mesh().nodeIds.assign(map.begin(), map.end());
     }
   }
 
@@ -306,15 +306,15 @@ class ExodusParser {
       for (std::size_t e = 0; e < count; ++e, ++fileElement) {
         for (std::size_t k = 0; k < type->vtkOrder.size(); ++k) {
           const long long node = connect[e * perElement + std::size_t(type->vtkOrder[k])];
-          if (node < 1 || std::size_t(node) > model_->mesh.nodeCount())
+          if (node < 1 || std::size_t(node) > model_->mesh().nodeCount())
             nc_.fail("element block " + std::to_string(blockId) + ", element " + std::to_string(e + 1) + " (cell " +
-                     std::to_string(model_->mesh.cellCount()) + ") uses node " + std::to_string(node) + " of " +
-                     std::to_string(model_->mesh.nodeCount()) + (node == 0 ? " (the file is probably truncated: netCDF reads missing data as 0)" : ""));
+                     std::to_string(model_->mesh().cellCount()) + ") uses node " + std::to_string(node) + " of " +
+                     std::to_string(model_->mesh().nodeCount()) + (node == 0 ? " (the file is probably truncated: netCDF reads missing data as 0)" : ""));
           cell[k] = NodeIndex(node - 1);
         }
-        blockCells_[b].push_back(model_->mesh.cellCount());
-        model_->mesh.addCell(type->cell, std::span<const NodeIndex>(cell.data(), type->vtkOrder.size()));
-        model_->mesh.cellIds.push_back(fileElement < elementIds.size() ? elementIds[fileElement] : (long long)(fileElement + 1));
+        blockCells_[b].push_back(model_->mesh().cellCount());
+        model_->mesh().addCell(type->cell, std::span<const NodeIndex>(cell.data(), type->vtkOrder.size()));
+        model_->mesh().cellIds.push_back(fileElement < elementIds.size() ? elementIds[fileElement] : (long long)(fileElement + 1));
         blockOfCell_.push_back(double(blockId));
       }
     }
@@ -339,7 +339,7 @@ class ExodusParser {
 
   void readNodalVariables() {
     const auto names = nc_.names("name_nod_var");
-    const std::size_t n = model_->mesh.nodeCount();
+    const std::size_t n = model_->mesh().nodeCount();
     const auto oldStyle = nc_.variable("vals_nod_var");
     for (const auto& group : groupComponents(names)) {
       const std::size_t nc = group.members.size();
@@ -364,7 +364,7 @@ class ExodusParser {
 
   void readElementVariables(std::size_t blocks) {
     const auto names = nc_.names("name_elem_var");
-    const std::size_t cells = model_->mesh.cellCount();
+    const std::size_t cells = model_->mesh().cellCount();
     for (const auto& group : groupComponents(names)) {
       const std::size_t nc = group.members.size();
       for (std::size_t t = 0; t < times_.size(); ++t) {

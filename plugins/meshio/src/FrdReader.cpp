@@ -56,7 +56,7 @@ class FrdParser {
     if (!sawNodes_) s_.fail("no node block (2C): this .frd holds no mesh");
     if (!sawElements_) s_.fail("no element block (3C): this .frd holds no mesh");
     if (!ended) s_.fail("file ends without the closing 9999 record (truncated)");
-    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
+    if (const std::string wrong = results_.mismatch(model_->mesh()); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     if (skipped_ > 0)
       model_->diagnostics.push_back({Severity::Info, "skipped-non-solid-elements",
@@ -104,16 +104,16 @@ class FrdParser {
     sawNodes_ = true;
     const auto [n, format] = blockHeader("node block");
     const std::size_t w = idWidth(format);
-    model_->mesh.nodes.reserve(std::size_t(std::min<std::int64_t>(n, 1 << 26)));
+    model_->mesh().nodes.reserve(std::size_t(std::min<std::int64_t>(n, 1 << 26)));
     std::int64_t seen = 0;
     for (auto key = recordLine("node block"); key != "-3"; key = recordLine("node block")) {
       if (key != "-1") s_.fail("expected a node record ' -1', found '" + std::string(line_.substr(0, 20)) + "'");
       const std::int64_t id = intColumn(3, w, "a node number");
       glm::dvec3 p;
       for (int k = 0; k < 3; ++k) p[k] = parseFortranReal(s_, column(3 + w + 12 * std::size_t(k), 12), "a coordinate");
-      if (!nodeIndex_.add(id, NodeIndex(model_->mesh.nodes.size()))) s_.fail("node " + std::to_string(id) + " is defined twice");
-      model_->mesh.nodes.push_back(p);
-      model_->mesh.nodeIds.push_back(id);
+      if (!nodeIndex_.add(id, NodeIndex(model_->mesh().nodes.size()))) s_.fail("node " + std::to_string(id) + " is defined twice");
+      model_->mesh().nodes.push_back(p);
+      model_->mesh().nodeIds.push_back(id);
       ++seen;
     }
     if (seen != n) s_.fail("the node block header (2C) says " + std::to_string(n) + " nodes, " + std::to_string(seen) + " follow");
@@ -152,7 +152,7 @@ class FrdParser {
         const std::int64_t nodeId = nodes[std::size_t(solid->vtkOrder[k])];
         const auto index = nodeIndex_.find(nodeId);
         if (!index)
-          s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh.cellCount()) + ") uses node " +
+          s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh().cellCount()) + ") uses node " +
                   std::to_string(nodeId) + ", which the node block (2C) does not define");
         cell[k] = *index;
       }
@@ -162,8 +162,8 @@ class FrdParser {
         type = collapseDegenerateHex(std::span<std::uint32_t>(cell.data(), 8), count);
         if (type != CellType::Hex8) ++collapsed_;
       }
-      model_->mesh.addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
-      model_->mesh.cellIds.push_back(id);
+      model_->mesh().addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
+      model_->mesh().cellIds.push_back(id);
     }
     if (seen != n) s_.fail("the element block header (3C) says " + std::to_string(n) + " elements, " + std::to_string(seen) + " follow");
   }
@@ -190,8 +190,8 @@ class FrdParser {
     }
     if (components == 0) s_.fail("dataset " + dataset + " has no stored components");
     const std::size_t nc = std::size_t(components);
-    s_.requireMemory(results_.bytesWith(model_->mesh.nodeCount() * nc), "dataset " + dataset + " (" + std::to_string(nc) + " components)");
-    std::vector<double> values(model_->mesh.nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
+    s_.requireMemory(results_.bytesWith(model_->mesh().nodeCount() * nc), "dataset " + dataset + " (" + std::to_string(nc) + " components)");
+    std::vector<double> values(model_->mesh().nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
     std::int64_t seen = 0;
     // The line read last is the first record (the loop above stopped on it).
     for (std::string_view key = trim(column(0, 3)); key != "-3"; key = recordLine("result block")) {

@@ -233,10 +233,10 @@ class GmshParser {
   }
 
   void addNode(std::int64_t id, const glm::dvec3& p) {
-    if (!nodeIndex_.add(id, NodeIndex(model_->mesh.nodes.size())))
+    if (!nodeIndex_.add(id, NodeIndex(model_->mesh().nodes.size())))
       s_.fail("node " + std::to_string(id) + " is defined twice");
-    model_->mesh.nodes.push_back(p);
-    model_->mesh.nodeIds.push_back(id);
+    model_->mesh().nodes.push_back(p);
+    model_->mesh().nodeIds.push_back(id);
   }
 
   void readNodes() {
@@ -245,7 +245,7 @@ class GmshParser {
     if (!v4()) {
       const std::int64_t n = parseInteger(s_, s_.nextLine(), "the number of nodes");
       s_.requirePlausibleCount(n, binary_ ? 28 : 8, "the number of nodes");  // "1 0 0 0\n" at least
-      model_->mesh.nodes.reserve(std::size_t(n));
+      model_->mesh().nodes.reserve(std::size_t(n));
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("a node tag", false);
         glm::dvec3 p;
@@ -262,7 +262,7 @@ class GmshParser {
     s_.requirePlausibleCount(blocks, binary_ ? 24 : 8, "the number of node blocks");
     count("the smallest node tag", true);
     count("the largest node tag", true);
-    model_->mesh.nodes.reserve(std::size_t(std::min<std::int64_t>(total, 1 << 26)));
+    model_->mesh().nodes.reserve(std::size_t(std::min<std::int64_t>(total, 1 << 26)));
     std::int64_t seen = 0;
     for (std::int64_t b = 0; b < blocks; ++b) {
       for (int k = 0; k < 2; ++k) tag("a node block header", false);
@@ -307,14 +307,14 @@ class GmshParser {
       const std::int64_t nodeId = fileNodes[std::size_t(type.vtkOrder[k])];
       const auto index = nodeIndex_.find(nodeId);
       if (!index)
-        s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh.cellCount()) +
+        s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh().cellCount()) +
                 ") uses node " + std::to_string(nodeId) + ", which $Nodes does not define");
       nodes[k] = *index;
     }
-    model_->mesh.addCell(*type.cell, std::span<const NodeIndex>(nodes.data(), type.vtkOrder.size()));
-    model_->mesh.cellIds.push_back(id);
+    model_->mesh().addCell(*type.cell, std::span<const NodeIndex>(nodes.data(), type.vtkOrder.size()));
+    model_->mesh().cellIds.push_back(id);
     regions_.push_back(double(region));
-    elementIndex_.add(id, NodeIndex(model_->mesh.cellCount() - 1));
+    elementIndex_.add(id, NodeIndex(model_->mesh().cellCount() - 1));
   }
 
   void readElements() {
@@ -442,7 +442,7 @@ class GmshParser {
     std::snprintf(label, sizeof label, nReals > 0 ? "step %lld, t = %g" : "step %lld", static_cast<long long>(ints[0] + 1), time);
     const Step step{label, time};
     if (section == "NodeData") {
-      std::vector<double> values(model_->mesh.nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
+      std::vector<double> values(model_->mesh().nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("a node tag", false);
         const auto index = nodeIndex_.find(id);
@@ -452,8 +452,8 @@ class GmshParser {
       results_.add(name, FieldLocation::Node, int(components), step, std::move(values));
     } else {
       const bool perCorner = section == "ElementNodeData";
-      std::vector<double> values(model_->mesh.cellCount() * nc, std::numeric_limits<double>::quiet_NaN());
-      std::vector<std::vector<double>> corners(perCorner ? model_->mesh.cellCount() : 0);
+      std::vector<double> values(model_->mesh().cellCount() * nc, std::numeric_limits<double>::quiet_NaN());
+      std::vector<std::vector<double>> corners(perCorner ? model_->mesh().cellCount() : 0);
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("an element tag", false);
         const std::int64_t perElement = perCorner ? count("the nodes per element", false) : 1;
@@ -471,7 +471,7 @@ class GmshParser {
         else std::copy(v.begin(), v.end(), values.begin() + std::ptrdiff_t(*index * nc));
       }
       if (perCorner) {
-        results_.add(name, FieldLocation::Node, int(components), step, averageToNodes(model_->mesh, corners, int(components)));
+        results_.add(name, FieldLocation::Node, int(components), step, averageToNodes(model_->mesh(), corners, int(components)));
         averagedNames_.insert(name);
       } else {
         results_.add(name, FieldLocation::Cell, int(components), step, std::move(values));
@@ -490,7 +490,7 @@ class GmshParser {
     return out;
   }
   int fileTypeOfCell(std::size_t cell) const {
-    switch (model_->mesh.cellType(cell)) {
+    switch (model_->mesh().cellType(cell)) {
       case CellType::Tet4: return 4;
       case CellType::Tet10: return 11;
       case CellType::Hex8: return 5;
@@ -506,7 +506,7 @@ class GmshParser {
     bool anyRegion = false;
     for (double r : regions_) anyRegion = anyRegion || r != 0.0;
     if (anyRegion) model_->fields.push_back(Field::fromValues("region", FieldLocation::Cell, 1, {regions_}));
-    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
+    if (const std::string wrong = results_.mismatch(model_->mesh()); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     if (skippedLower_ > 0)
       model_->diagnostics.push_back({Severity::Info, "skipped-lower-dimensional-cells",

@@ -144,14 +144,14 @@ class NfParser {
 
   std::string_view readNodes() {
     const std::int64_t n = count("the node count");
-    model_->mesh.nodes.reserve(std::size_t(std::min<std::int64_t>(n, 1 << 26)));
+    model_->mesh().nodes.reserve(std::size_t(std::min<std::int64_t>(n, 1 << 26)));
     for (std::int64_t i = 0; i < n; ++i) {
       const std::int64_t id = integer("a node id");
       glm::dvec3 p;
       for (int k = 0; k < 3; ++k) p[k] = real("a node coordinate");
-      if (!nodeIndex_.add(id, NodeIndex(model_->mesh.nodes.size()))) s_.fail("node " + std::to_string(id) + " is defined twice");
-      model_->mesh.nodes.push_back(p);
-      model_->mesh.nodeIds.push_back(id);
+      if (!nodeIndex_.add(id, NodeIndex(model_->mesh().nodes.size()))) s_.fail("node " + std::to_string(id) + " is defined twice");
+      model_->mesh().nodes.push_back(p);
+      model_->mesh().nodeIds.push_back(id);
     }
     return skipBlockStrict("%NODE.COORD", n);
   }
@@ -192,14 +192,14 @@ class NfParser {
         const std::int64_t nodeId = parseInteger(s_, nodes[std::size_t(e.vtkOrder[k])], "a node id");
         const auto index = nodeIndex_.find(nodeId);
         if (!index)
-          s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh.cellCount()) + ") uses node " +
+          s_.fail("element " + std::to_string(id) + " (cell " + std::to_string(model_->mesh().cellCount()) + ") uses node " +
                   std::to_string(nodeId) + ", which %NODE.COORD does not define");
         cell[k] = *index;
       }
-      elementIndex_.add(id, NodeIndex(model_->mesh.cellCount()));
+      elementIndex_.add(id, NodeIndex(model_->mesh().cellCount()));
       nfTypeOfCell_.push_back(&e);
-      model_->mesh.addCell(*e.cell, std::span<const NodeIndex>(cell.data(), e.vtkOrder.size()));
-      model_->mesh.cellIds.push_back(id);
+      model_->mesh().addCell(*e.cell, std::span<const NodeIndex>(cell.data(), e.vtkOrder.size()));
+      model_->mesh().cellIds.push_back(id);
     }
     return skipBlockStrict("%ELEMENT." + type, n);
   }
@@ -220,8 +220,8 @@ class NfParser {
   std::string_view readDisplacement() {
     const std::int64_t n = count("the displacement count");
     token();  // its label
-    s_.requireMemory(results_.bytesWith(model_->mesh.nodeCount() * 3), "the displacement");
-    std::vector<double> u(model_->mesh.nodeCount() * 3, std::numeric_limits<double>::quiet_NaN());
+    s_.requireMemory(results_.bytesWith(model_->mesh().nodeCount() * 3), "the displacement");
+    std::vector<double> u(model_->mesh().nodeCount() * 3, std::numeric_limits<double>::quiet_NaN());
     for (std::int64_t i = 0; i < n; ++i) {
       const auto index = node(integer("a node id"), "NODAL.DISPLACEMENT");
       for (int k = 0; k < 6; ++k) {
@@ -254,8 +254,8 @@ class NfParser {
   std::string_view readNodal(int width) {
     const std::int64_t n = count("the node count of a result");
     const std::size_t m = std::max<std::size_t>(labels_.size(), 1), w = std::size_t(width);
-    s_.requireMemory(results_.bytesWith(m * model_->mesh.nodeCount() * w), "a nodal result of " + std::to_string(m) + " labels x " + std::to_string(w) + " components");
-    std::vector<std::vector<double>> values(m, std::vector<double>(model_->mesh.nodeCount() * w, std::numeric_limits<double>::quiet_NaN()));
+    s_.requireMemory(results_.bytesWith(m * model_->mesh().nodeCount() * w), "a nodal result of " + std::to_string(m) + " labels x " + std::to_string(w) + " components");
+    std::vector<std::vector<double>> values(m, std::vector<double>(model_->mesh().nodeCount() * w, std::numeric_limits<double>::quiet_NaN()));
     for (std::int64_t i = 0; i < n; ++i) {
       const auto index = node(integer("a node id"), "a nodal result");
       for (std::size_t f = 0; f < m; ++f)
@@ -270,7 +270,7 @@ class NfParser {
   // at the nodes.
   std::string_view readPerElement(bool elementNodal) {
     const std::int64_t n = count("the element count of a result");
-    const std::size_t m = std::max<std::size_t>(labels_.size(), 1), cells = model_->mesh.cellCount();
+    const std::size_t m = std::max<std::size_t>(labels_.size(), 1), cells = model_->mesh().cellCount();
     s_.requireMemory(results_.bytesWith(m * cells * (elementNodal ? 28 : 1)), "an element result of " + std::to_string(m) + " labels");
     std::vector<std::vector<double>> perCell(m, std::vector<double>(cells, std::numeric_limits<double>::quiet_NaN()));
     std::vector<std::vector<std::vector<double>>> corners(m, std::vector<std::vector<double>>(elementNodal ? cells : 0));
@@ -302,7 +302,7 @@ class NfParser {
     }
     for (std::size_t f = 0; f < m; ++f) {
       if (elementNodal) {
-        results_.add(label(f), FieldLocation::Node, 1, step(), averageToNodes(model_->mesh, corners[f], 1));
+        results_.add(label(f), FieldLocation::Node, 1, step(), averageToNodes(model_->mesh(), corners[f], 1));
         averaged_.insert(label(f));
       } else {
         results_.add(label(f), FieldLocation::Cell, 1, step(), std::move(perCell[f]));
@@ -313,7 +313,7 @@ class NfParser {
   }
 
   void finish() {
-    if (const std::string wrong = results_.mismatch(model_->mesh); !wrong.empty()) s_.fail(wrong);
+    if (const std::string wrong = results_.mismatch(model_->mesh()); !wrong.empty()) s_.fail(wrong);
     results_.moveInto(*model_);
     for (const auto& [type, n] : unknownTypes_)
       model_->diagnostics.push_back({Severity::Warning, "unknown-element-type",

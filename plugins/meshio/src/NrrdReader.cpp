@@ -476,7 +476,6 @@ std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress&
   model->title = trim(h.content);
   model->formatName = formatName();
   model->grid = grid;
-  model->mesh = hexahedraOfGrid(grid);
   const int comps = layout.components;
   const std::string name = fieldName(h);
   if (h.encoding == Encoding::Raw) {

@@ -279,9 +279,9 @@ class LegacyReading {
         pointCount = p_.count("the number of points");
         const NumericType t = p_.type();
         const auto xyz = p_.values(p_.product(pointCount, 3, "POINTS"), t, "POINTS");
-        model->mesh.nodes.resize(pointCount);
+        model->mesh().nodes.resize(pointCount);
         for (std::size_t i = 0; i < pointCount; ++i)
-          model->mesh.nodes[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+          model->mesh().nodes[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
         progress_.report(0.4);
       } else if (key == "CELLS") {
         cells_ = readCells(pointCount);
@@ -291,7 +291,7 @@ class LegacyReading {
           p_.fail("CELL_TYPES lists " + std::to_string(n) + " cells, CELLS has " +
                   std::to_string(cells_.offsets.empty() ? 0 : cells_.offsets.size() - 1));
         cells_.types = p_.integers(n, NumericType::Int32, "CELL_TYPES");
-        mapping = addVtkCells(cells_, pointCount, model->mesh, [this](const std::string& m) { p_.fail(m); });
+        mapping = addVtkCells(cells_, pointCount, model->mesh(), [this](const std::string& m) { p_.fail(m); });
         haveCells = true;
         if (mapping.skipped)
           model->diagnostics.push_back({Severity::Info, "skipped-cells",
@@ -353,17 +353,16 @@ class LegacyReading {
     return v;
   }
 
-  // The regular grid of a STRUCTURED_POINTS file, its hexahedra, and cells numbered as the
-  // file's cell data numbers them (x fastest, as VTK and hexahedraOfGrid both do).
+  // The regular grid of a STRUCTURED_POINTS file, with cells numbered as the file's cell
+  // data numbers them (x fastest, as VTK and hexahedraOfGrid both do).
   void buildGrid(Model& model, RegularGrid& grid, VtkCellMapping& mapping) {
     if (const std::string defect = grid.defect(); !defect.empty())
       p_.fail(defect + " (DIMENSIONS, SPACING): volpost reads volumes, not 2D images");
     const std::size_t points = p_.product(p_.product(grid.dims[0], grid.dims[1], "DIMENSIONS"), grid.dims[2], "DIMENSIONS");
     requireMemory(double(points) * 80.0, path_, "a grid of " + std::to_string(points) + " points");
-    model.mesh = hexahedraOfGrid(grid);
-    model.grid = grid;
+    model.grid = grid;  // its hexahedra are built when something asks for the mesh
     mapping.modelCell.clear();
-    mapping.fileCells = model.mesh.cellCount();
+    mapping.fileCells = grid.cellCount();
     mapping.skipped = 0;
   }
 
@@ -478,7 +477,7 @@ class LegacyReading {
   }
 
   void addField(Model& model, PendingArray& a, const VtkCellMapping& mapping) {
-    const std::size_t expected = a.location == FieldLocation::Node ? model.mesh.nodeCount() : mapping.fileCells;
+    const std::size_t expected = a.location == FieldLocation::Node ? model.nodeCount() : mapping.fileCells;
     if (a.tuples != expected) {
       model.diagnostics.push_back({Severity::Warning, "field-dropped",
                                    "field " + a.name + " dropped: " + std::to_string(a.tuples) + " values for " +
@@ -491,7 +490,7 @@ class LegacyReading {
     if (a.location == FieldLocation::Cell && mapping.skipped) {
       const int comps = a.components;
       loader = [inner = a.loader, comps, mapping](std::size_t s) { return selectModelCells(inner(s), comps, mapping); };
-      entities = model.mesh.cellCount();
+      entities = model.cellCount();
     }
     model.fields.push_back(std::make_shared<Field>(a.name, a.location, a.components, entities,
                                                    std::vector<Step>{{"", 0.0}}, std::move(loader)));

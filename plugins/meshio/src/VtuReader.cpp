@@ -178,7 +178,7 @@ class VtuReading {
     const long long points = piece.attribute("NumberOfPoints").as_llong(-1);
     const long long cellCount = piece.attribute("NumberOfCells").as_llong(-1);
     if (points < 0 || cellCount < 0) failAt(piece, "<Piece> needs NumberOfPoints and NumberOfCells");
-    const std::size_t nodeBase = model.mesh.nodeCount();
+    const std::size_t nodeBase = model.nodeCount();
 
     if (points > 0) {
       const pugi::xml_node pts = piece.child("Points").child("DataArray");
@@ -192,7 +192,7 @@ class VtuReading {
       if (xyz.size() != expected)
         failAt(pts, "Points holds " + std::to_string(xyz.size() / 3) + " points, NumberOfPoints says " + std::to_string(points));
       for (std::size_t i = 0; i < std::size_t(points); ++i)
-        model.mesh.nodes.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+        model.mesh().nodes.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
     }
     progress_.report(0.4);
 
@@ -240,7 +240,7 @@ class VtuReading {
     }
     const std::size_t pointTotal = nodeBase + std::size_t(points);
     const pugi::xml_node cellsNode = piece.child("Cells");
-    VtkCellMapping mapping = addVtkCells(cells, pointTotal, model.mesh, [&](const std::string& m) {
+    VtkCellMapping mapping = addVtkCells(cells, pointTotal, model.mesh(), [&](const std::string& m) {
       failAt(cellsNode ? cellsNode : piece, m);
     });
     if (mapping.skipped)
@@ -345,7 +345,6 @@ class VtuReading {
           arrays[key].push_back({cellsOrPoints, std::move(s)});
         }
     }
-    model->mesh = hexahedraOfGrid(grid);
     model->grid = grid;
     const std::array<long long, 3> low = {whole.e[0], whole.e[2], whole.e[4]};
     for (const std::string& key : order) {
@@ -484,7 +483,7 @@ class VtuReading {
     for (const std::string& key : order_) {
       FieldParts& f = fields_[key];
       if (f.dropped || f.parts.size() != pieceCount_) continue;
-      const std::size_t entities = f.location == FieldLocation::Node ? model.mesh.nodeCount() : model.mesh.cellCount();
+      const std::size_t entities = f.location == FieldLocation::Node ? model.nodeCount() : model.cellCount();
       if (!f.stepOf.empty()) {
         const std::string group = key.substr(0, 2) + f.stepOf;
         if (!emitted.insert(group).second) continue;
@@ -522,7 +521,7 @@ class VtuReading {
     } catch (const std::exception&) {
       return false;
     }
-    (nodes ? model.mesh.nodeIds : model.mesh.cellIds) = std::move(ids);
+    (nodes ? model.mesh().nodeIds : model.mesh().cellIds) = std::move(ids);
     return true;
   }
 

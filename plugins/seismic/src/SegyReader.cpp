@@ -416,8 +416,6 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                                       offsetList(offsets),
                                   {}});
 
-  progress.setStage("Building the grid's cells");
-  model->mesh = hexahedraOfGrid(grid);
   model->grid = grid;
   model->fields.push_back(Field::fromValues("amplitude", FieldLocation::Node, 1, {std::move(values)}));
   addSeismicAttributes(*model);

@@ -7,6 +7,8 @@
 #endif
 
 #include <algorithm>
+#include <span>
+#include <unordered_map>
 #include <limits>
 
 namespace volpost {
@@ -46,17 +48,43 @@ int midsideNode(const CellTopology& topo, int a, int b) {
   return -1;
 }
 
+// The cells of a mesh, as the builder reads them.
+struct MeshCells {
+  const Mesh& mesh;
+  std::span<const NodeIndex> nodes(std::size_t cell) const { return mesh.cellNodes(cell); }
+  CellType type(std::size_t cell) const { return mesh.cellType(cell); }
+  glm::dvec3 position(NodeIndex node) const { return mesh.nodes[node]; }
+  std::size_t nodeCount() const { return mesh.nodeCount(); }
+};
+
+// The hexahedra of a regular grid, made when asked (the grid holds no cells).
+struct GridCells {
+  const RegularGrid& grid;
+  mutable std::array<NodeIndex, 8> corners{};
+  std::span<const NodeIndex> nodes(std::size_t cell) const {
+    const std::size_t cx = grid.dims[0] - 1, cy = grid.dims[1] - 1;
+    corners = gridHexahedron(grid, cell % cx, (cell / cx) % cy, cell / (cx * cy));
+    return corners;
+  }
+  CellType type(std::size_t) const { return CellType::Hex8; }
+  glm::dvec3 position(NodeIndex node) const {
+    const std::size_t nx = grid.dims[0], ny = grid.dims[1];
+    return grid.position(double(node % nx), double((node / nx) % ny), double(node / (nx * ny)));
+  }
+  std::size_t nodeCount() const { return grid.pointCount(); }
+};
+
+template <typename Cells>
 class SurfaceBuilder {
  public:
-  SurfaceBuilder(const Mesh& mesh, BoundarySurface& out) : mesh_(mesh), out_(out) {
+  SurfaceBuilder(const Cells& cells, BoundarySurface& out) : cells_(cells), out_(out) {
     out_.mesh.add_property(out_.nodeOfVertex, "volpost:node");
     out_.mesh.add_property(out_.cellOfFace, "volpost:cell");
-    vertexOfNode_.assign(mesh.nodeCount(), SurfaceMesh::VertexHandle());
   }
 
   void addCellFace(std::uint32_t cell, const CellFace& face) {
-    const auto nodes = mesh_.cellNodes(cell);
-    const auto& topo = topology(mesh_.cellType(cell));
+    const auto nodes = cells_.nodes(cell);
+    const auto& topo = topology(cells_.type(cell));
     NodeIndex corner[4], mid[4];
     bool quadratic = topo.quadratic;
     for (int k = 0; k < face.size; ++k) {
@@ -100,15 +128,17 @@ class SurfaceBuilder {
 
  private:
   SurfaceMesh::VertexHandle newVertex(NodeIndex node) {
-    const glm::dvec3 p = mesh_.nodes[node] - out_.origin;
+    const glm::dvec3 p = cells_.position(node) - out_.origin;
     auto v = out_.mesh.add_vertex(SurfaceMesh::Point(float(p.x), float(p.y), float(p.z)));
     out_.mesh.property(out_.nodeOfVertex, v) = node;
     return v;
   }
 
+  // A map, not a vector over every node: a grid's boundary touches few of its points.
   SurfaceMesh::VertexHandle vertexOf(NodeIndex node) {
-    if (!vertexOfNode_[node].is_valid()) vertexOfNode_[node] = newVertex(node);
-    return vertexOfNode_[node];
+    auto [at, inserted] = vertexOfNode_.try_emplace(node);
+    if (inserted) at->second = newVertex(node);
+    return at->second;
   }
 
   void addTriangle(std::uint32_t cell, NodeIndex a, NodeIndex b, NodeIndex c) {
@@ -125,9 +155,9 @@ class SurfaceBuilder {
 
   void addEdge(NodeIndex a, NodeIndex b) { out_.edges.push_back({std::min(a, b), std::max(a, b)}); }
 
-  const Mesh& mesh_;
+  const Cells& cells_;
   BoundarySurface& out_;
-  std::vector<SurfaceMesh::VertexHandle> vertexOfNode_;
+  std::unordered_map<NodeIndex, SurfaceMesh::VertexHandle> vertexOfNode_;
 };
 
 }  // namespace
@@ -140,7 +170,8 @@ BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress) {
   progress.report(0.2);
   std::sort(faces.begin(), faces.end());
   progress.report(0.5);
-  SurfaceBuilder builder(mesh, out);
+  const MeshCells cells{mesh};
+  SurfaceBuilder builder(cells, out);
   for (std::size_t i = 0; i < faces.size();) {
     std::size_t j = i + 1;
     while (j < faces.size() && faces[j].key == faces[i].key) ++j;
@@ -156,6 +187,56 @@ BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress) {
   out.mesh.request_face_normals();
   out.mesh.update_face_normals();
   progress.report(1.0);
+  return out;
+}
+
+// The faces on the grid's six sides, straight from the index ranges: no face sorting and no
+// hexahedra, so a cube of 16M points gives its boundary in a fraction of a second.
+BoundarySurface extractBoundary(const RegularGrid& grid, const Progress& progress) {
+  BoundarySurface out;
+  const Bounds b = grid.bounds();
+  out.origin = b.valid ? b.center() : glm::dvec3(0.0);
+  if (!grid.defect().empty()) return out;
+  const GridCells cells{grid};
+  SurfaceBuilder builder(cells, out);
+  const std::array<std::size_t, 3> n = {grid.dims[0] - 1, grid.dims[1] - 1, grid.dims[2] - 1};
+  const CellTopology& hex = topology(CellType::Hex8);
+  const auto pointIndexOf = [&](NodeIndex p) {
+    return std::array<std::size_t, 3>{p % grid.dims[0], (p / grid.dims[0]) % grid.dims[1],
+                                      p / (grid.dims[0] * grid.dims[1])};
+  };
+  for (std::size_t k = 0; k < n[2]; ++k) {
+    for (std::size_t j = 0; j < n[1]; ++j)
+      for (std::size_t i = 0; i < n[0]; ++i) {
+        const std::array<std::size_t, 3> at = {i, j, k};
+        if (i != 0 && j != 0 && k != 0 && i + 1 != n[0] && j + 1 != n[1] && k + 1 != n[2]) {
+          i = n[0] - 2;  // skip the interior of this row (the loop's ++i lands on its last cell)
+          continue;
+        }
+        const std::uint32_t cell = std::uint32_t(i + n[0] * (j + n[1] * k));
+        const auto corners = cells.nodes(cell);
+        const std::array<NodeIndex, 8> hexCorners{corners[0], corners[1], corners[2], corners[3],
+                                                  corners[4], corners[5], corners[6], corners[7]};
+        for (const CellFace& face : hex.faces) {
+          // On a side when every corner has its index at 0 or at the end along one axis.
+          bool onSide = false;
+          for (int a = 0; a < 3 && !onSide; ++a)
+            for (const std::size_t end : {std::size_t(0), grid.dims[std::size_t(a)] - 1}) {
+              bool all = at[std::size_t(a)] == (end == 0 ? 0 : n[std::size_t(a)] - 1);
+              for (int c = 0; c < face.size && all; ++c)
+                all = pointIndexOf(hexCorners[std::size_t(face.corners[c])])[std::size_t(a)] == end;
+              onSide = onSide || all;
+            }
+          if (!onSide) continue;
+          builder.addCellFace(cell, face);
+          ++out.boundaryFaceCount;
+        }
+      }
+    progress.report(double(k + 1) / double(n[2]));
+  }
+  builder.finish();
+  out.mesh.request_face_normals();
+  out.mesh.update_face_normals();
   return out;
 }
 

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/RegularGrid.hpp>
 
+#include <limits>
+#include <stdexcept>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -33,13 +36,38 @@ std::string RegularGrid::defect() const {
     if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(a.z)) return "a grid axis is not finite";
   if (!std::isfinite(origin.x) || !std::isfinite(origin.y) || !std::isfinite(origin.z))
     return "the grid's origin is not finite";
+  for (int c = 0; c < 8; ++c) {  // the far corners too: a huge origin plus steps can overflow
+    const glm::dvec3 p = position((c & 1) ? double(dims[0] - 1) : 0.0, (c & 2) ? double(dims[1] - 1) : 0.0,
+                                  (c & 4) ? double(dims[2] - 1) : 0.0);
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      return "the grid's far corners are not finite numbers (origin or spacing too large)";
+  }
   const double scale = glm::length(axes[0]) * glm::length(axes[1]) * glm::length(axes[2]);
   if (!(std::abs(glm::determinant(indexToWorld())) > 1e-12 * scale))
     return "the grid's axes are zero or lie in one plane (spacing 0?)";
   return {};
 }
 
+std::array<NodeIndex, 8> gridHexahedron(const RegularGrid& grid, std::size_t i, std::size_t j, std::size_t k) {
+  const auto p = [&](std::size_t di, std::size_t dj, std::size_t dk) {
+    return NodeIndex(grid.pointIndex(i + di, j + dj, k + dk));
+  };
+  std::array<NodeIndex, 8> hex{p(0, 0, 0), p(1, 0, 0), p(1, 1, 0), p(0, 1, 0),
+                               p(0, 0, 1), p(1, 0, 1), p(1, 1, 1), p(0, 1, 1)};
+  // A left-handed set of axes mirrors the hexahedra: list the bottom and top faces the
+  // other way round so every cell keeps a positive volume.
+  if (glm::determinant(grid.indexToWorld()) < 0.0) {
+    std::swap(hex[1], hex[3]);
+    std::swap(hex[5], hex[7]);
+  }
+  return hex;
+}
+
 Mesh hexahedraOfGrid(const RegularGrid& grid) {
+  if (grid.pointCount() > std::size_t(std::numeric_limits<NodeIndex>::max()))
+    throw std::length_error("a grid of " + std::to_string(grid.pointCount()) +
+                            " points is too large for explicit cells (node indices are 32-bit): only the grid "
+                            "renderers can draw it");
   Mesh mesh;
   const auto [nx, ny, nz] = grid.dims;
   mesh.nodes.reserve(grid.pointCount());
@@ -48,23 +76,9 @@ Mesh hexahedraOfGrid(const RegularGrid& grid) {
       for (std::size_t i = 0; i < nx; ++i) mesh.nodes.push_back(grid.position(double(i), double(j), double(k)));
   const std::size_t cells = grid.cellCount();
   mesh.reserveCells(cells, cells * 8);
-  // A left-handed set of axes mirrors the hexahedra: list the bottom and top faces the
-  // other way round so every cell keeps a positive volume.
-  const bool mirrored = glm::determinant(grid.indexToWorld()) < 0.0;
   for (std::size_t k = 0; k + 1 < nz; ++k)
     for (std::size_t j = 0; j + 1 < ny; ++j)
-      for (std::size_t i = 0; i + 1 < nx; ++i) {
-        const auto p = [&](std::size_t di, std::size_t dj, std::size_t dk) {
-          return NodeIndex(grid.pointIndex(i + di, j + dj, k + dk));
-        };
-        std::array<NodeIndex, 8> hex{p(0, 0, 0), p(1, 0, 0), p(1, 1, 0), p(0, 1, 0),
-                                     p(0, 0, 1), p(1, 0, 1), p(1, 1, 1), p(0, 1, 1)};
-        if (mirrored) {
-          std::swap(hex[1], hex[3]);
-          std::swap(hex[5], hex[7]);
-        }
-        mesh.addCell(CellType::Hex8, hex);
-      }
+      for (std::size_t i = 0; i + 1 < nx; ++i) mesh.addCell(CellType::Hex8, gridHexahedron(grid, i, j, k));
   return mesh;
 }
 

@@ -172,8 +172,8 @@ TEST(Streamlines, ThePostFlowFollowsItsAnalyticField) {
   const auto model = test::meshioReaders().load(path);
   const Field* velocity = model->findField("velocity");
   ASSERT_TRUE(velocity);
-  const TetMesh tets = tetrahedralize(model->mesh);
-  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model->mesh, velocity->values(0)));
+  const TetMesh tets = tetrahedralize(model->mesh());
+  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model->mesh(), velocity->values(0)));
   // ../shared/data/README.md: potential flow past a cylinder with circulation, faded at the
   // walls, plus a small vertical part.
   const double U = 1.0, a = 1.0, G = 2.0 * M_PI * 0.8, H = 4.0, d = 0.25;

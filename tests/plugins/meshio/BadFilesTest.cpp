@@ -74,13 +74,13 @@ const std::map<std::string, std::function<void(const Model&)>> kFlagChecks = {
        ASSERT_TRUE(diagnostic(m, "duplicate-nodes"));
        EXPECT_EQ(diagnostic(m, "duplicate-nodes")->items.size(), 1064u - 108u);
        const auto ref = meshioReaders().load(dataFile("bad/ref_small_tets.vtu"));
-       EXPECT_EQ(extractBoundary(m.mesh).boundaryFaceCount, extractBoundary(ref->mesh).boundaryFaceCount);
+       EXPECT_EQ(extractBoundary(m.mesh()).boundaryFaceCount, extractBoundary(ref->mesh()).boundaryFaceCount);
      }},
     {"orphan_points", [](const Model& m) {
        ASSERT_TRUE(diagnostic(m, "unused-nodes"));
        EXPECT_EQ(diagnostic(m, "unused-nodes")->items.size(), 3u);
        const auto ref = meshioReaders().load(dataFile("bad/ref_small_tets.vtu"));
-       EXPECT_EQ(m.mesh.bounds().max, ref->mesh.bounds().max);
+       EXPECT_EQ(m.mesh().bounds().max, ref->mesh().bounds().max);
      }},
     {"nan_in_point_data", [](const Model& m) {
        const Field* u = m.findField("U");
@@ -98,10 +98,10 @@ const std::map<std::string, std::function<void(const Model&)>> kFlagChecks = {
      }},
     {"nan_coordinates", [](const Model& m) {
        ASSERT_TRUE(diagnostic(m, "nonfinite-coordinates"));
-       EXPECT_TRUE(std::isfinite(m.mesh.bounds().diagonal()));
+       EXPECT_TRUE(std::isfinite(m.mesh().bounds().diagonal()));
      }},
     {"field_length_mismatch", [](const Model& m) { EXPECT_TRUE(diagnostic(m, "field-dropped")); }},
-    {"zero_cells", [](const Model& m) { EXPECT_EQ(m.mesh.cellCount(), 0u); }},
+    {"zero_cells", [](const Model& m) { EXPECT_EQ(m.mesh().cellCount(), 0u); }},
 };
 
 }  // namespace
@@ -132,10 +132,10 @@ TEST_P(ManifestCase, DoesWhatTheManifestSays) {
   }
   ASSERT_TRUE(model) << "rejected a file that must load: " << error;
   if (c.entry.contains("nodes")) {
-    EXPECT_EQ(model->mesh.nodeCount(), c.entry["nodes"].get<std::size_t>());
+    EXPECT_EQ(model->mesh().nodeCount(), c.entry["nodes"].get<std::size_t>());
   }
   if (c.entry.contains("cells")) {
-    EXPECT_EQ(model->mesh.cellCount(), c.entry["cells"].get<std::size_t>());
+    EXPECT_EQ(model->mesh().cellCount(), c.entry["cells"].get<std::size_t>());
   }
   const auto check = kFlagChecks.find(stem);
   if (c.expected.find("flag") != std::string::npos || c.expected.find("drop") != std::string::npos) {
@@ -145,8 +145,8 @@ TEST_P(ManifestCase, DoesWhatTheManifestSays) {
     check->second(*model);
   }
   // Whatever loads must also give a boundary without crashing.
-  const BoundarySurface s = extractBoundary(model->mesh);
-  EXPECT_EQ(s.mesh.n_faces() > 0, model->mesh.cellCount() > 0);
+  const BoundarySurface s = extractBoundary(model->mesh());
+  EXPECT_EQ(s.mesh.n_faces() > 0, model->mesh().cellCount() > 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Manifest, ManifestCase, ::testing::ValuesIn(manifestCases()), [](const auto& p) {

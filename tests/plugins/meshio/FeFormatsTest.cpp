@@ -25,22 +25,22 @@ namespace {
 
 // Node position by file id (0-based VTK files number nodes 1.. in ascending id order).
 glm::dvec3 nodeById(const Model& m, std::int64_t id) {
-  if (m.mesh.nodeIds.empty()) return m.mesh.nodes.at(std::size_t(id - 1));
-  const auto it = std::find(m.mesh.nodeIds.begin(), m.mesh.nodeIds.end(), id);
-  EXPECT_NE(it, m.mesh.nodeIds.end()) << "no node " << id;
-  return it == m.mesh.nodeIds.end() ? glm::dvec3(NAN) : m.mesh.nodes[std::size_t(it - m.mesh.nodeIds.begin())];
+  if (m.mesh().nodeIds.empty()) return m.mesh().nodes.at(std::size_t(id - 1));
+  const auto it = std::find(m.mesh().nodeIds.begin(), m.mesh().nodeIds.end(), id);
+  EXPECT_NE(it, m.mesh().nodeIds.end()) << "no node " << id;
+  return it == m.mesh().nodeIds.end() ? glm::dvec3(NAN) : m.mesh().nodes[std::size_t(it - m.mesh().nodeIds.begin())];
 }
 
 std::int64_t idOf(const Model& m, std::size_t node) {
-  return m.mesh.nodeIds.empty() ? std::int64_t(node + 1) : m.mesh.nodeIds[node];
+  return m.mesh().nodeIds.empty() ? std::int64_t(node + 1) : m.mesh().nodeIds[node];
 }
 
 // Every cell as (type, its node ids in VTK order); order-independent comparison.
 std::multiset<std::vector<std::int64_t>> cellsById(const Model& m) {
   std::multiset<std::vector<std::int64_t>> out;
-  for (std::size_t c = 0; c < m.mesh.cellCount(); ++c) {
-    std::vector<std::int64_t> ids{std::int64_t(m.mesh.cellType(c))};
-    for (NodeIndex n : m.mesh.cellNodes(c)) ids.push_back(idOf(m, n));
+  for (std::size_t c = 0; c < m.mesh().cellCount(); ++c) {
+    std::vector<std::int64_t> ids{std::int64_t(m.mesh().cellType(c))};
+    for (NodeIndex n : m.mesh().cellNodes(c)) ids.push_back(idOf(m, n));
     out.insert(ids);
   }
   return out;
@@ -49,13 +49,13 @@ std::multiset<std::vector<std::int64_t>> cellsById(const Model& m) {
 // Largest distance of a midside node from the middle of its edge, over all cells.
 double worstMidsideOffset(const Model& m) {
   double worst = 0.0;
-  for (std::size_t c = 0; c < m.mesh.cellCount(); ++c) {
-    const auto& t = topology(m.mesh.cellType(c));
+  for (std::size_t c = 0; c < m.mesh().cellCount(); ++c) {
+    const auto& t = topology(m.mesh().cellType(c));
     if (!t.quadratic) continue;
-    const auto nodes = m.mesh.cellNodes(c);
+    const auto nodes = m.mesh().cellNodes(c);
     for (const CellEdge& e : t.edges) {
-      const glm::dvec3 mid = 0.5 * (m.mesh.nodes[nodes[e.a]] + m.mesh.nodes[nodes[e.b]]);
-      worst = std::max(worst, glm::length(m.mesh.nodes[nodes[std::size_t(e.mid)]] - mid));
+      const glm::dvec3 mid = 0.5 * (m.mesh().nodes[nodes[e.a]] + m.mesh().nodes[nodes[e.b]]);
+      worst = std::max(worst, glm::length(m.mesh().nodes[nodes[std::size_t(e.mid)]] - mid));
     }
   }
   return worst;
@@ -74,14 +74,14 @@ class SmallModelInEveryFormat : public ::testing::TestWithParam<const char*> {};
 TEST_P(SmallModelInEveryFormat, GivesTheMeshAndValuesOfTheVtuFile) {
   static const auto reference = meshioReaders().load(dataFile("bad/ref_small_tets.vtu"));
   const auto model = meshioReaders().load(dataFile(std::string("bad/") + GetParam()));
-  ASSERT_EQ(model->mesh.nodeCount(), 108u);
-  ASSERT_EQ(model->mesh.cellCount(), 266u);
+  ASSERT_EQ(model->mesh().nodeCount(), 108u);
+  ASSERT_EQ(model->mesh().cellCount(), 266u);
   EXPECT_FALSE(hasDiagnostic(*model, "inverted-cells"));
   // .frd keeps 6 significant digits of the coordinates, the .inp about 10, the others all.
   const std::string file = GetParam();
   const double tolerance = file.ends_with(".frd") ? 5e-5 : file.ends_with(".inp") ? 1e-9 : 1e-12;
-  for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
-    ASSERT_NEAR(glm::length(model->mesh.nodes[n] - nodeById(*reference, idOf(*model, n))), 0.0, tolerance) << n;
+  for (std::size_t n = 0; n < model->mesh().nodeCount(); ++n)
+    ASSERT_NEAR(glm::length(model->mesh().nodes[n] - nodeById(*reference, idOf(*model, n))), 0.0, tolerance) << n;
   EXPECT_EQ(cellsById(*model), cellsById(*reference));
   for (const char* name : {"U", "S"}) {
     const Field* f = model->findField(name);
@@ -93,7 +93,7 @@ TEST_P(SmallModelInEveryFormat, GivesTheMeshAndValuesOfTheVtuFile) {
     const Field& r = *reference->findField(name);
     ASSERT_EQ(f->components(), r.components());
     const std::size_t nc = std::size_t(r.components());
-    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
+    for (std::size_t n = 0; n < model->mesh().nodeCount(); ++n)
       for (std::size_t k = 0; k < nc; ++k)
         ASSERT_EQ(f->values(0)[n * nc + k], r.values(0)[std::size_t(idOf(*model, n) - 1) * nc + k]) << name << " node " << n;
   }
@@ -114,17 +114,17 @@ class GoldenModel : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GoldenModel, PutsEveryMidsideNodeOnItsEdge) {
   const auto model = meshioReaders().load(dataFile(std::string("formats/") + GetParam()));
-  ASSERT_EQ(model->mesh.cellCount(), 3u) << "the surface triangle is skipped";
-  ASSERT_EQ(model->mesh.nodeCount(), 37u);
-  const auto counts = model->mesh.countsByType();
+  ASSERT_EQ(model->mesh().cellCount(), 3u) << "the surface triangle is skipped";
+  ASSERT_EQ(model->mesh().nodeCount(), 37u);
+  const auto counts = model->mesh().countsByType();
   EXPECT_EQ(counts.at(CellType::Hex20), 1u);
   EXPECT_EQ(counts.at(CellType::Wedge15), 1u);
   EXPECT_EQ(counts.at(CellType::Tet10), 1u);
   EXPECT_EQ(worstMidsideOffset(*model), 0.0);
-  for (std::size_t c = 0; c < 3; ++c) EXPECT_GT(signedCellVolume(model->mesh, c), 0.0) << c;
-  EXPECT_NEAR(signedCellVolume(model->mesh, 0) + signedCellVolume(model->mesh, 1) + signedCellVolume(model->mesh, 2),
+  for (std::size_t c = 0; c < 3; ++c) EXPECT_GT(signedCellVolume(model->mesh(), c), 0.0) << c;
+  EXPECT_NEAR(signedCellVolume(model->mesh(), 0) + signedCellVolume(model->mesh(), 1) + signedCellVolume(model->mesh(), 2),
               1.0 + 0.5 + 1.0 / 6.0, 1e-12);
-  EXPECT_EQ(model->mesh.cellIds, (std::vector<std::int64_t>{101, 102, 103}));
+  EXPECT_EQ(model->mesh().cellIds, (std::vector<std::int64_t>{101, 102, 103}));
 }
 
 class GoldenResults : public ::testing::TestWithParam<const char*> {};
@@ -136,8 +136,8 @@ TEST_P(GoldenResults, ReadsEveryStepOfTheNodalResult) {
   ASSERT_EQ(t->stepCount(), 2u);
   EXPECT_EQ(t->steps()[1].time, 2.0);
   for (std::size_t step = 0; step < 2; ++step)
-    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n) {
-      const glm::dvec3 p = model->mesh.nodes[n];
+    for (std::size_t n = 0; n < model->mesh().nodeCount(); ++n) {
+      const glm::dvec3 p = model->mesh().nodes[n];
       EXPECT_NEAR(t->values(step)[n], double(step + 1) * (p.x + 10 * p.y + 100 * p.z), 1e-9);
     }
 }
@@ -182,7 +182,7 @@ TEST(GmshData, ElementAndElementNodeViewsAreKept) {
     const Field* en = model->findField("EN");
     ASSERT_TRUE(en);
     EXPECT_EQ(en->location(), FieldLocation::Node);
-    const auto tet = model->mesh.cellNodes(2);
+    const auto tet = model->mesh().cellNodes(2);
     const int gmshOfVtk[10] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};  // gmsh swaps tet10 nodes 8 and 9
     for (std::size_t k = 0; k < 10; ++k) EXPECT_EQ(en->values(0)[tet[k]], 7.0 + gmshOfVtk[k]) << k;
     EXPECT_TRUE(hasDiagnostic(*model, "element-nodal-averaged"));
@@ -198,11 +198,11 @@ TEST(AbaqusDeck, CollapsedHexahedraBecomePyramidsAndWedges) {
     out << "*ELEMENT, TYPE=C3D8\n1, 1,2,3,4,5,5,5,5\n2, 1,2,4,4,6,7,8,8\n";
   }
   const auto model = meshioReaders().load(path);
-  ASSERT_EQ(model->mesh.cellCount(), 2u);
-  EXPECT_EQ(model->mesh.cellType(0), CellType::Pyramid5);
-  EXPECT_EQ(model->mesh.cellType(1), CellType::Wedge6);
-  EXPECT_NEAR(signedCellVolume(model->mesh, 0), 1.0 / 3.0, 1e-12);
-  EXPECT_NEAR(signedCellVolume(model->mesh, 1), 0.5, 1e-12);
+  ASSERT_EQ(model->mesh().cellCount(), 2u);
+  EXPECT_EQ(model->mesh().cellType(0), CellType::Pyramid5);
+  EXPECT_EQ(model->mesh().cellType(1), CellType::Wedge6);
+  EXPECT_NEAR(signedCellVolume(model->mesh(), 0), 1.0 / 3.0, 1e-12);
+  EXPECT_NEAR(signedCellVolume(model->mesh(), 1), 0.5, 1e-12);
   EXPECT_FALSE(hasDiagnostic(*model, "repeated-node-cells"));
 }
 
@@ -243,16 +243,16 @@ TEST_P(RealCaseInEveryFormat, CountsTypesAndResultsAgree) {
   const RealCase& c = GetParam();
   VOLPOST_SHARED_OR_SKIP(vtu, std::string(c.stem) + ".vtu");
   const auto reference = meshioReaders().load(vtu);
-  EXPECT_EQ(reference->mesh.nodeCount(), c.nodes);
-  EXPECT_EQ(reference->mesh.cellCount(), c.cells);
+  EXPECT_EQ(reference->mesh().nodeCount(), c.nodes);
+  EXPECT_EQ(reference->mesh().cellCount(), c.cells);
   const auto referenceCells = cellsById(*reference);
   for (const char* ext : {".msh", "_v22.msh", ".inp", ".frd", ".exo", ".vtk"}) {
     const std::string path = test::sharedFile(std::string(c.stem) + ext);
     if (path.empty()) continue;  // post has no .inp/.frd (no solver run)
     SCOPED_TRACE(path);
     const auto model = meshioReaders().load(path);
-    EXPECT_EQ(model->mesh.nodeCount(), c.nodes);
-    EXPECT_EQ(model->mesh.countsByType(), reference->mesh.countsByType());
+    EXPECT_EQ(model->mesh().nodeCount(), c.nodes);
+    EXPECT_EQ(model->mesh().countsByType(), reference->mesh().countsByType());
     EXPECT_FALSE(hasDiagnostic(*model, "inverted-cells"));
     EXPECT_EQ(cellsById(*model), referenceCells);
     const bool straight = std::string(c.stem).starts_with("bar/");
@@ -261,7 +261,7 @@ TEST_P(RealCaseInEveryFormat, CountsTypesAndResultsAgree) {
     if (!u) continue;
     const Field& r = *reference->findField("U");
     double worst = 0.0;
-    for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n)
+    for (std::size_t n = 0; n < model->mesh().nodeCount(); ++n)
       for (std::size_t k = 0; k < 3; ++k)
         worst = std::max(worst, std::abs(u->values(0)[n * 3 + k] - r.values(0)[std::size_t(idOf(*model, n) - 1) * 3 + k]));
     EXPECT_EQ(worst, 0.0) << "U differs from the .vtu (the same .frd values)";
@@ -288,18 +288,18 @@ INSTANTIATE_TEST_SUITE_P(Shared, RealCaseInEveryFormat,
 TEST(NeutralFile, ReadsTheQuadraticCellsInTheirAlternatingOrder) {
   const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
   EXPECT_EQ(model->title, "golden neutral file");
-  ASSERT_EQ(model->mesh.cellCount(), 2u) << "the T3 surface element is skipped";
-  EXPECT_EQ(model->mesh.cellType(0), CellType::Hex20);
-  EXPECT_EQ(model->mesh.cellType(1), CellType::Tet10);
+  ASSERT_EQ(model->mesh().cellCount(), 2u) << "the T3 surface element is skipped";
+  EXPECT_EQ(model->mesh().cellType(0), CellType::Hex20);
+  EXPECT_EQ(model->mesh().cellType(1), CellType::Tet10);
   EXPECT_EQ(worstMidsideOffset(*model), 0.0);
-  EXPECT_NEAR(signedCellVolume(model->mesh, 0), 1.0, 1e-12);
-  EXPECT_NEAR(signedCellVolume(model->mesh, 1), 1.0 / 6.0, 1e-12);
+  EXPECT_NEAR(signedCellVolume(model->mesh(), 0), 1.0, 1e-12);
+  EXPECT_NEAR(signedCellVolume(model->mesh(), 1), 1.0 / 6.0, 1e-12);
   EXPECT_TRUE(hasDiagnostic(*model, "skipped-lower-dimensional-cells"));
 }
 
 TEST(NeutralFile, ReadsEveryResultBlockOfEveryStep) {
   const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
-  const auto& nodes = model->mesh.nodes;
+  const auto& nodes = model->mesh().nodes;
   for (std::size_t step = 0; step < 2; ++step) {
     const double f = double(step + 1);
     const Field& u = *model->findField("U");
@@ -354,9 +354,9 @@ TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
   const std::string path = ::testing::TempDir() + "/roundtrip.vtu";
   writeVtu(*model, path);
   const auto back = meshioReaders().load(path);
-  EXPECT_EQ(back->mesh.nodes, model->mesh.nodes);
-  EXPECT_EQ(back->mesh.nodeIds, model->mesh.nodeIds);
-  EXPECT_EQ(back->mesh.cellIds, model->mesh.cellIds);
+  EXPECT_EQ(back->mesh().nodes, model->mesh().nodes);
+  EXPECT_EQ(back->mesh().nodeIds, model->mesh().nodeIds);
+  EXPECT_EQ(back->mesh().cellIds, model->mesh().cellIds);
   EXPECT_EQ(cellsById(*back), cellsById(*model));
   // Each field comes back as itself, with every step, its time and its label.
   EXPECT_EQ(back->title, model->title);
@@ -383,9 +383,9 @@ TEST(Probe, BarAxialStressIsForceOverAreaInEveryElementType) {
   for (const char* variant : {"tet4", "tet10", "hex8", "wedge6"}) {
     VOLPOST_SHARED_OR_SKIP(path, std::string("bar/") + variant + "/bar_" + variant + ".frd");
     const auto model = meshioReaders().load(path);
-    const TetMesh tets = tetrahedralize(model->mesh);
+    const TetMesh tets = tetrahedralize(model->mesh());
     const Field& s = *model->findField("S");
-    const auto sxx = tets.nodeValues(model->mesh, evaluate(s, *parseQuantity("S.xx", s), 0));
+    const auto sxx = tets.nodeValues(model->mesh(), evaluate(s, *parseQuantity("S.xx", s), 0));
     const PointLocator locator(tets);
     for (const glm::dvec3 p : {glm::dvec3(3.5, 0.5, 0.5), glm::dvec3(5.0, 0.1, 0.9), glm::dvec3(6.9, 0.77, 0.23)}) {
       const auto at = locator.locate(p);
@@ -435,7 +435,7 @@ TEST(SolverChecks, ResultsOfEveryFormatMatchWhatTheSolverRunReported) {
       const std::string path = test::sharedFile(std::string(c.stem) + ext);
       SCOPED_TRACE(path);
       const auto model = meshioReaders().load(path);
-      EXPECT_EQ(model->mesh.nodeCount(), expected["nodes"].get<std::size_t>());
+      EXPECT_EQ(model->mesh().nodeCount(), expected["nodes"].get<std::size_t>());
       EXPECT_NEAR(maxOf(*model, "U.magnitude"), expected["U_max"].get<double>(), 1e-5 * expected["U_max"].get<double>());
       // von Mises from the stored components (6 significant digits) against ccx's own.
       EXPECT_NEAR(maxOf(*model, "S.mises"), expected["S_Mises_max"].get<double>(), 1e-4 * expected["S_Mises_max"].get<double>());
@@ -454,8 +454,8 @@ TEST(SolverChecks, PostFlowFieldIsTheAnalyticOneAtProbedPoints) {
   // G = 2 pi 0.8): linear tets interpolate it to O(h^2).
   VOLPOST_SHARED_OR_SKIP(path, "post/fine/post_fine.exo");
   const auto model = meshioReaders().load(path);
-  const TetMesh tets = tetrahedralize(model->mesh);
-  const auto pressure = tets.nodeValues(model->mesh, model->findField("pressure")->values(0));
+  const TetMesh tets = tetrahedralize(model->mesh());
+  const auto pressure = tets.nodeValues(model->mesh(), model->findField("pressure")->values(0));
   const PointLocator locator(tets);
   const double G = 2.0 * M_PI * 0.8;
   for (const auto& [r, theta, z] : {std::tuple{2.0, 0.3, 1.0}, std::tuple{5.0, 2.0, 2.0}, std::tuple{8.0, -1.2, 3.5}}) {
@@ -487,10 +487,10 @@ TEST(VtuWriter, EveryRealModelRoundTrips) {
       const std::string out = ::testing::TempDir() + "/every_real_model.vtu";
       writeVtu(*model, out);
       const auto back = meshioReaders().load(out);
-      EXPECT_EQ(back->mesh.nodes, model->mesh.nodes);
-      EXPECT_EQ(back->mesh.countsByType(), model->mesh.countsByType());
-      EXPECT_EQ(back->mesh.nodeIds, model->mesh.nodeIds);
-      EXPECT_EQ(back->mesh.cellIds, model->mesh.cellIds);
+      EXPECT_EQ(back->mesh().nodes, model->mesh().nodes);
+      EXPECT_EQ(back->mesh().countsByType(), model->mesh().countsByType());
+      EXPECT_EQ(back->mesh().nodeIds, model->mesh().nodeIds);
+      EXPECT_EQ(back->mesh().cellIds, model->mesh().cellIds);
       EXPECT_EQ(back->title, model->title);
       ASSERT_EQ(back->fields.size(), model->fields.size());
       for (const auto& f : model->fields) {

@@ -38,8 +38,8 @@ TEST_P(ImageData, ReadsTheGridAndItsArraysAsVtkWroteThem) {
   // VTK's TransformIndexToPhysicalPoint(3, 2, 3):
   const glm::dvec3 vtkPoint(11.28524463035774, -1.0790514454451876, 6.5);
   EXPECT_LT(glm::distance(g.position(3 - 1, 2 - 0, 3 - 2), vtkPoint), 1e-12);
-  EXPECT_EQ(model->mesh.nodeCount(), 60u);
-  EXPECT_EQ(model->mesh.cellCount(), 24u);
+  EXPECT_EQ(model->mesh().nodeCount(), 60u);
+  EXPECT_EQ(model->mesh().cellCount(), 24u);
   const Field* temperature = model->findField("temperature");
   const Field* velocity = model->findField("velocity");
   const Field* material = model->findField("material");
@@ -55,7 +55,7 @@ TEST_P(ImageData, ReadsTheGridAndItsArraysAsVtkWroteThem) {
       }
   for (std::size_t c = 0; c < 24; ++c) EXPECT_EQ(material->values(0)[c], double(c % 3));
   // Every hexahedron is right-handed (the model checks would flag inverted ones).
-  for (std::size_t c = 0; c < model->mesh.cellCount(); ++c) EXPECT_GT(signedCellVolume(model->mesh, c), 0.0);
+  for (std::size_t c = 0; c < model->mesh().cellCount(); ++c) EXPECT_GT(signedCellVolume(model->mesh(), c), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, ImageData,

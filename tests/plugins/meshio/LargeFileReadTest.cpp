@@ -39,9 +39,9 @@ std::uint64_t hashDoubles(const std::vector<double>& values) {
 
 TEST(LargeFileRead, AStreamedReadGivesTheModelWrittenEntryForEntry) {
   Model written;
-  written.mesh = volpost::test::tetGrid(64, 64, 64);
+  written.mesh() = volpost::test::tetGrid(64, 64, 64);
   std::vector<double> wave;
-  for (const auto& p : written.mesh.nodes) wave.push_back(std::sin(0.1 * p.x) * std::cos(0.07 * p.y) + 0.01 * p.z);
+  for (const auto& p : written.mesh().nodes) wave.push_back(std::sin(0.1 * p.x) * std::cos(0.07 * p.y) + 0.01 * p.z);
   written.fields.push_back(Field::fromValues("wave", FieldLocation::Node, 1, {wave}));
   const std::filesystem::path file = std::filesystem::temp_directory_path() / "volpost_large_read_test.vtu";
   writeVtu(written, file.string());
@@ -49,15 +49,15 @@ TEST(LargeFileRead, AStreamedReadGivesTheModelWrittenEntryForEntry) {
 
   const auto read = meshio::VtuReader().read(file.string(), {});
   std::filesystem::remove(file);  // the field must not need the file any more
-  ASSERT_EQ(read->mesh.cellCount(), written.mesh.cellCount());
-  ASSERT_EQ(read->mesh.nodeCount(), written.mesh.nodeCount());
-  EXPECT_EQ(hashCells(read->mesh), hashCells(written.mesh));
+  ASSERT_EQ(read->mesh().cellCount(), written.mesh().cellCount());
+  ASSERT_EQ(read->mesh().nodeCount(), written.mesh().nodeCount());
+  EXPECT_EQ(hashCells(read->mesh()), hashCells(written.mesh()));
   std::vector<double> coordinates;
-  for (const auto& p : read->mesh.nodes) coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
+  for (const auto& p : read->mesh().nodes) coordinates.insert(coordinates.end(), {p.x, p.y, p.z});
   std::vector<double> expected;
-  for (const auto& p : written.mesh.nodes) expected.insert(expected.end(), {p.x, p.y, p.z});
+  for (const auto& p : written.mesh().nodes) expected.insert(expected.end(), {p.x, p.y, p.z});
   EXPECT_EQ(hashDoubles(coordinates), hashDoubles(expected));
-  EXPECT_EQ(read->mesh.cellBytes(), read->mesh.cellCount() * 17) << "one byte of type and 16 of nodes per tet, no offsets";
+  EXPECT_EQ(read->mesh().cellBytes(), read->mesh().cellCount() * 17) << "one byte of type and 16 of nodes per tet, no offsets";
   const Field* f = read->findField("wave");
   ASSERT_NE(f, nullptr);
   EXPECT_EQ(hashDoubles(f->values(0)), hashDoubles(wave));

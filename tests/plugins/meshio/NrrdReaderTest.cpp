@@ -95,7 +95,7 @@ TEST_F(Nrrd, ARotatedGridWithAttachedRawDataIsPlacedAndValuedAsTheHeaderSays) {
   ASSERT_EQ(model->fields.size(), 1u);
   EXPECT_EQ(model->fields[0]->name(), "density");
   EXPECT_EQ(model->fields[0]->values(0), ramp());
-  EXPECT_EQ(model->mesh.cellCount(), 3u * 2u * 1u);
+  EXPECT_EQ(model->mesh().cellCount(), 3u * 2u * 1u);
   EXPECT_EQ(model->formatName, "NRRD raw volume");
 }
 

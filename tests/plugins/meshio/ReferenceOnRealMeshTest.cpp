@@ -54,9 +54,9 @@ double lengthFromBoundary(const BoundarySurface& s, const Mesh& mesh, glm::dvec3
 }
 
 void compareLengths(const Model& model, int rays, double tolerance) {
-  const BoundarySurface surface = extractBoundary(model.mesh);
-  const TetVolume volume(model.mesh, FieldLocation::Node, std::vector<double>(model.mesh.nodeCount(), 0.0));
-  const Bounds b = model.mesh.bounds();
+  const BoundarySurface surface = extractBoundary(model.mesh());
+  const TetVolume volume(model.mesh(), FieldLocation::Node, std::vector<double>(model.mesh().nodeCount(), 0.0));
+  const Bounds b = model.mesh().bounds();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int compared = 0, reentering = 0;
@@ -64,7 +64,7 @@ void compareLengths(const Model& model, int rays, double tolerance) {
     const glm::dvec3 target = b.min + glm::dvec3(u(rng), u(rng), u(rng)) * b.size();
     const glm::dvec3 dir = glm::normalize(glm::dvec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
     const glm::dvec3 start = target - dir * b.diagonal();
-    const double expected = lengthFromBoundary(surface, model.mesh, start, dir);
+    const double expected = lengthFromBoundary(surface, model.mesh(), start, dir);
     if (expected < 0) continue;
     const double got = lengthInside(volume, start, dir, 0.0, 2.0 * b.diagonal());
     EXPECT_NEAR(got, expected, tolerance * b.diagonal()) << "ray " << i << " start " << start.x << "," << start.y << "," << start.z << " dir " << dir.x << "," << dir.y << "," << dir.z;
@@ -79,13 +79,13 @@ void compareLengths(const Model& model, int rays, double tolerance) {
 TEST(ReferenceOnRealMesh, BarImageMatchesThePerPixelClosedForm) {
   // s = x; seen along y the bar is 1 thick at constant x: alpha = 1 - exp(-tau(x)).
   const auto model = volpost::test::meshioReaders().load(volpost::test::dataFile("bar/bar_tet4.vtu"));
-  const TetVolume volume(model->mesh, FieldLocation::Node, xCoordinate(model->mesh));
+  const TetVolume volume(model->mesh(), FieldLocation::Node, xCoordinate(model->mesh()));
   EXPECT_EQ(volume.skippedTets(), 0u);
   const TransferFunction tf({{0.0, {0, 0, 1}, 0.1}, {5.0, {0, 1, 0}, 2.5}, {10.0, {1, 0, 0}, 0.7}});
   Camera camera;
   camera.setProjection(Camera::Projection::Orthographic);
   camera.setView(StandardView::MinusY);
-  camera.fit(model->mesh.bounds());
+  camera.fit(model->mesh().bounds());
   camera.zoom(2.0);
   const int w = 128, h = 64;
   const ReferenceImage image = renderReference(volume, tf, camera, w, h);
@@ -121,7 +121,7 @@ TEST(ReferenceOnRealMesh, NonConvexWheelRaysLeaveAndReenter) {
 TEST(TetrahedralizeRealMesh, TheBundledMixedWheelConforms) {
   // gmsh hexahedra, wedges, pyramids and tetrahedra (resources/examples).
   const auto model = volpost::test::meshioReaders().load(std::string(VOLPOST_SOURCE_DIR) + "/resources/examples/wheel_mixed.vtu");
-  const TetMesh t = tetrahedralize(model->mesh);
+  const TetMesh t = tetrahedralize(model->mesh());
   std::map<std::array<NodeIndex, 3>, int> faces;
   double volume = 0.0, smallest = 1e300;
   for (std::size_t i = 0; i < t.mesh.cellCount(); ++i) {
@@ -136,13 +136,13 @@ TEST(TetrahedralizeRealMesh, TheBundledMixedWheelConforms) {
     }
   }
   double original = 0.0;
-  for (std::size_t c = 0; c < model->mesh.cellCount(); ++c) original += signedCellVolume(model->mesh, c);
+  for (std::size_t c = 0; c < model->mesh().cellCount(); ++c) original += signedCellVolume(model->mesh(), c);
   std::size_t boundary = 0, overShared = 0;
   for (const auto& [k, count] : faces) boundary += count == 1, overShared += count > 2;
-  std::printf("wheel_mixed: %zu cells -> %zu tets, %zu Steiner points\n", model->mesh.cellCount(), t.mesh.cellCount(),
+  std::printf("wheel_mixed: %zu cells -> %zu tets, %zu Steiner points\n", model->mesh().cellCount(), t.mesh.cellCount(),
               t.steinerCell.size());
   EXPECT_NEAR(volume, original, 1e-9 * original);
   EXPECT_GT(smallest, 0.0);
   EXPECT_EQ(overShared, 0u);
-  EXPECT_EQ(boundary, extractBoundary(model->mesh).mesh.n_faces());
+  EXPECT_EQ(boundary, extractBoundary(model->mesh()).mesh.n_faces());
 }

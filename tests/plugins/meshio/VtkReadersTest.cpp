@@ -23,10 +23,10 @@ class BarInEveryEncoding : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BarInEveryEncoding, HasTheMeshAndFieldsOfTheSolverRun) {
   const auto model = meshioReaders().load(dataFile(GetParam()));
-  EXPECT_EQ(model->mesh.nodeCount(), 3091u);
-  EXPECT_EQ(model->mesh.cellCount(), 12431u);
-  EXPECT_EQ(model->mesh.countsByType().at(CellType::Tet4), 12431u);
-  const Bounds b = model->mesh.bounds();
+  EXPECT_EQ(model->mesh().nodeCount(), 3091u);
+  EXPECT_EQ(model->mesh().cellCount(), 12431u);
+  EXPECT_EQ(model->mesh().countsByType().at(CellType::Tet4), 12431u);
+  const Bounds b = model->mesh().bounds();
   EXPECT_EQ(b.min, glm::dvec3(0.0));
   EXPECT_EQ(b.max, glm::dvec3(10.0, 1.0, 1.0));
   for (const char* name : {"U", "S", "S_Mises", "S11", "region"}) EXPECT_TRUE(model->findField(name)) << name;
@@ -39,8 +39,8 @@ TEST_P(BarInEveryEncoding, AgreesWithTheAppendedBinaryFile) {
   static const auto reference = meshioReaders().load(dataFile("bar/bar_tet4.vtu"));
   const auto model = meshioReaders().load(dataFile(GetParam()));
   // ASCII legacy files carry about 11 significant digits.
-  for (std::size_t i = 0; i < model->mesh.nodeCount(); i += 7)
-    EXPECT_NEAR(glm::length(model->mesh.nodes[i] - reference->mesh.nodes[i]), 0.0, 1e-9);
+  for (std::size_t i = 0; i < model->mesh().nodeCount(); i += 7)
+    EXPECT_NEAR(glm::length(model->mesh().nodes[i] - reference->mesh().nodes[i]), 0.0, 1e-9);
   for (const char* name : {"U", "S"}) {
     const auto& a = model->findField(name)->values(0);
     const auto& r = reference->findField(name)->values(0);
@@ -57,9 +57,9 @@ TEST_P(BarInEveryEncoding, AxialStressIsForceOverAreaAwayFromTheClamp) {
   const auto mises = evaluate(s, *parseQuantity("S.mises", s), 0);
   const auto& written = model->findField("S_Mises")->values(0);
   std::size_t checked = 0;
-  for (std::size_t n = 0; n < model->mesh.nodeCount(); ++n) {
+  for (std::size_t n = 0; n < model->mesh().nodeCount(); ++n) {
     EXPECT_NEAR(mises[n], written[n], 1e-3 * written[n]);  // ccx prints 6 digits
-    const double x = model->mesh.nodes[n].x;
+    const double x = model->mesh().nodes[n].x;
     if (x > 3.0 && x < 7.0) {
       EXPECT_NEAR(sxx[n], 100.0, 0.01) << "node " << n;
       ++checked;
@@ -103,7 +103,7 @@ TEST(ReaderRegistry, ChoosesByContentWhenTheExtensionLies) {
   std::filesystem::copy_file(dataFile("bar/bar_tet4.vtu"), tmp, std::filesystem::copy_options::overwrite_existing);
   const auto model = meshioReaders().load(tmp.string());
   EXPECT_EQ(model->formatName, "VTK XML unstructured grid");
-  EXPECT_EQ(model->mesh.cellCount(), 12431u);
+  EXPECT_EQ(model->mesh().cellCount(), 12431u);
   std::filesystem::remove(tmp);
 }
 
@@ -128,12 +128,12 @@ TEST(ReaderRegistry, ExplainsWhatAnUnreadableFileLooksLike) {
 TEST(LargerCases, WheelAndBracketLoadWithAllCellTypes) {
   VOLPOST_SHARED_OR_SKIP(wheel, "wheel/mixed/wheel_mixed.vtu");
   const auto model = meshioReaders().load(wheel);
-  const auto counts = model->mesh.countsByType();
+  const auto counts = model->mesh().countsByType();
   for (CellType t : {CellType::Hex8, CellType::Wedge6, CellType::Tet4, CellType::Pyramid5})
     EXPECT_GT(counts.count(t) ? counts.at(t) : 0u, 0u) << cellTypeName(t);
   for (const auto& d : model->diagnostics) EXPECT_NE(d.code, "inverted-cells") << d.message;
   VOLPOST_SHARED_OR_SKIP(bracket, "bracket/tet10/bracket_tet10.vtk");
   const auto b = meshioReaders().load(bracket);
-  EXPECT_GT(b->mesh.countsByType().at(CellType::Tet10), 0u);
+  EXPECT_GT(b->mesh().countsByType().at(CellType::Tet10), 0u);
   for (const auto& d : b->diagnostics) EXPECT_NE(d.code, "inverted-cells") << d.message;
 }

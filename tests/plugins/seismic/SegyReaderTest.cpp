@@ -76,8 +76,8 @@ TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
       EXPECT_EQ(r.labelStep, grid.labelStep);
       for (int a = 0; a < 3; ++a) EXPECT_LT(glm::distance(r.axes[a], grid.axes[a]), 0.02) << "axis " << a;
       EXPECT_LT(glm::distance(r.origin, grid.origin), 0.02);
-      EXPECT_EQ(model->mesh.nodeCount(), grid.pointCount());
-      EXPECT_EQ(model->mesh.cellCount(), grid.cellCount());
+      EXPECT_EQ(model->mesh().nodeCount(), grid.pointCount());
+      EXPECT_EQ(model->mesh().cellCount(), grid.cellCount());
       EXPECT_EQ(model->fields.at(0)->values(0), values);
       EXPECT_TRUE(model->diagnostics.empty());
       fs::remove(p);

@@ -76,13 +76,13 @@ TEST_F(CellProjection, NonConvexRealWheelWithTheImageSpaceOrder) {
   const Field& s = *model->findField("S");
   const auto mises = evaluate(s, *parseQuantity("S.mises", s), 0);
   const double lo = *std::min_element(mises.begin(), mises.end()), hi = *std::max_element(mises.begin(), mises.end());
-  const double tau = 8.0 / model->mesh.bounds().diagonal();
+  const double tau = 8.0 / model->mesh().bounds().diagonal();
   const TransferFunction tf({{lo, {0, 0, 1}, 0.2 * tau}, {0.5 * (lo + hi), {1, 1, 1}, tau}, {hi, {1, 0, 0}, 3 * tau}});
   Camera camera;
-  camera.fit(model->mesh.bounds());
+  camera.fit(model->mesh().bounds());
   camera.setView(StandardView::Isometric);
   camera.orbit(20.0, -10.0);
-  const ImageError e = againstReference(model->mesh, FieldLocation::Node, mises, tf, camera, 64);
+  const ImageError e = againstReference(model->mesh(), FieldLocation::Node, mises, tf, camera, 64);
   std::printf("vicp (image-space order) real wheel 64 px vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 1e-5);
   EXPECT_LE(e.max, 1e-4);

@@ -333,7 +333,7 @@ TEST(CpuRayCastWatertight, NoRayIsLostOnTheCorpusMeshes) {
     else std::printf("not run on %s: ../shared/data is absent\n", shared);
   for (const std::string& file : files) {
     const auto model = test::meshioReaders().load(file);
-    const Mesh tets = tetrahedralize(model->mesh).mesh;
+    const Mesh tets = tetrahedralize(model->mesh()).mesh;
     EXPECT_LE(worstAlphaError(tets, std::filesystem::path(file).filename().c_str()), 1e-4) << file;
   }
 }

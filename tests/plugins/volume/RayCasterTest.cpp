@@ -265,9 +265,9 @@ TEST_F(RayCast, NoRayIsLostOnTheRealWheel) {
   const TransferFunction tf = TransferFunction::ramp(0.0, 40.0, "cool-warm", 0.08, 11);
   Camera camera;
   camera.setView(StandardView::Isometric);
-  camera.fit(model->mesh.bounds());
+  camera.fit(model->mesh().bounds());
   caster_->setIntegrationMode(IntegrationMode::LinearSegments);
-  const ImageError e = againstReference(model->mesh, FieldLocation::Node, values, tf, camera, 256);
+  const ImageError e = againstReference(model->mesh(), FieldLocation::Node, values, tf, camera, 256);
   std::printf("raycast real wheel 256 px vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.max, 1e-3);
 }

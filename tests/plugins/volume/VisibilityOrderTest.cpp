@@ -119,7 +119,7 @@ TEST(VisibilityOrder, ImageSpaceOrderIsValidOnTheRealNonConvexWheel) {
   // of the image the order was built for.
   VOLPOST_SHARED_OR_SKIP(path, "wheel/tet4/wheel_tet4.vtu");
   const auto model = meshio::VtuReader().read(path, {});
-  const TetMesh tets = tetrahedralize(model->mesh);
+  const TetMesh tets = tetrahedralize(model->mesh());
   const VisibilitySorter sorter(tets.mesh);
   Camera camera;
   camera.fit(tets.mesh.bounds());

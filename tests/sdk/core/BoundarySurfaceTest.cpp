@@ -6,6 +6,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <set>
+
 using namespace volpost;
 
 namespace {
@@ -85,4 +88,41 @@ TEST(BoundarySurface, PositionsAreRelativeToTheCenterForFloatPrecision) {
   EXPECT_NEAR(s.origin.x, 1e6 + 0.5e-3, 1e-9);
   for (const auto v : s.mesh.vertices()) EXPECT_LE(std::abs(s.mesh.point(v)[0]), 0.51e-3f);
   EXPECT_NEAR(enclosedVolume(s), 1e-9, 1e-12);
+}
+
+// A grid's boundary from its index ranges is the boundary of its hexahedra: the same
+// triangles (nodes and cell), edges and face count, for a left-handed rotated grid too.
+TEST(BoundarySurface, AGridsBoundaryIsItsHexahedrasBoundary) {
+  for (const bool mirrored : {false, true}) {
+    RegularGrid g;
+    g.dims = {4, 5, 3};
+    g.origin = {10.0, 20.0, -5.0};
+    g.axes = {glm::dvec3(0.6, 0.8, 0.0), glm::dvec3(-1.6, 1.2, 0.0), glm::dvec3(0.0, 0.0, mirrored ? -0.5 : 0.5)};
+    const BoundarySurface fromCells = extractBoundary(hexahedraOfGrid(g));
+    const BoundarySurface fromGrid = extractBoundary(g);
+    const auto triangles = [](const BoundarySurface& s) {
+      std::multiset<std::array<std::uint32_t, 4>> out;
+      for (auto f : s.mesh.faces()) {
+        std::array<std::uint32_t, 3> n{};
+        int k = 0;
+        for (auto v : s.mesh.fv_range(f)) n[std::size_t(k++)] = s.mesh.property(s.nodeOfVertex, v);
+        std::rotate(n.begin(), std::min_element(n.begin(), n.end()), n.end());  // same winding, one start
+        out.insert({n[0], n[1], n[2], s.mesh.property(s.cellOfFace, f)});
+      }
+      return out;
+    };
+    EXPECT_EQ(fromGrid.boundaryFaceCount, fromCells.boundaryFaceCount);
+    EXPECT_EQ(fromGrid.boundaryFaceCount, std::size_t(2 * (3 * 4 + 4 * 2 + 3 * 2)));
+    EXPECT_EQ(triangles(fromGrid), triangles(fromCells));
+    EXPECT_EQ(fromGrid.edges, fromCells.edges);
+    EXPECT_EQ(fromGrid.nonManifoldFaceCount, 0u);
+    for (auto v : fromGrid.mesh.vertices()) {
+      const NodeIndex node = fromGrid.mesh.property(fromGrid.nodeOfVertex, v);
+      const auto p = fromGrid.mesh.point(v);
+      const glm::dvec3 expected = hexahedraOfGrid(g).nodes[node] - fromGrid.origin;
+      EXPECT_NEAR(p[0], expected.x, 1e-5);
+      EXPECT_NEAR(p[1], expected.y, 1e-5);
+      EXPECT_NEAR(p[2], expected.z, 1e-5);
+    }
+  }
 }

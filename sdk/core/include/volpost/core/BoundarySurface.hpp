@@ -4,6 +4,7 @@
 
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/Progress.hpp>
+#include <volpost/core/RegularGrid.hpp>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -32,5 +33,8 @@ struct BoundarySurface {
 };
 
 BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress = {});
+/// The boundary of a regular grid's hexahedra without building them: the same faces, nodes,
+/// cells and edges as extractBoundary(hexahedraOfGrid(grid)), in another order.
+BoundarySurface extractBoundary(const RegularGrid& grid, const Progress& progress = {});
 
 }  // namespace volpost

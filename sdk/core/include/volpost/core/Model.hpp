@@ -7,25 +7,62 @@
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/RegularGrid.hpp>
 
+#include <atomic>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace volpost {
 
-struct Model {
+class Model {
+ public:
   std::string sourcePath;
   std::string formatName;   ///< e.g. "VTK XML unstructured grid"
   std::string title;        ///< header/title line of the file, if any
-  Mesh mesh;
-  /// Set when the mesh is this regular grid's hexahedra (hexahedraOfGrid): grid renderers
-  /// then sample its point fields as a 3D texture.
+  /// Set when the model is a regular grid: grid renderers then sample its point fields as a
+  /// 3D texture, and the mesh is this grid's hexahedra (hexahedraOfGrid).
   std::optional<RegularGrid> grid;
   std::vector<std::shared_ptr<Field>> fields;
   std::vector<Diagnostic> diagnostics;
 
+  /// The cells and nodes. A grid model read without them (readers of grids leave the mesh
+  /// alone) gets its hexahedra here on the first call, once, thread-safe: a grid drawn only
+  /// by the grid renderers never holds the 57 bytes per point of explicit hexahedra.
+  const Mesh& mesh() const;
+  Mesh& mesh();
+  /// Replaces the mesh (a grid model's too: the given mesh is then what mesh() returns).
+  void setMesh(Mesh mesh);
+  /// False while a grid model's hexahedra have not been built: what only needs the grid
+  /// (its bounds, counts, the grid renderers) asks the grid instead.
+  bool meshBuilt() const;
+  /// Point and cell counts without building a grid's hexahedra.
+  std::size_t nodeCount() const;
+  std::size_t cellCount() const;
+  /// Cells per type, as Mesh::countsByType (a grid's are all hex8).
+  std::map<CellType, std::size_t> countsByType() const;
+  /// Bounds of the used nodes (mesh().bounds()), or of a grid without building its cells.
+  Bounds bounds() const;
+
   const Field* findField(const std::string& name) const;
+
+  Model() = default;
+  Model(const Model& other);
+  Model& operator=(const Model& other);
+  Model(Model&&) noexcept = default;
+  Model& operator=(Model&&) noexcept = default;
+
+ private:
+  struct MeshSlot {
+    std::mutex mutex;
+    /// Set once a grid's hexahedra are built (or a mesh was given): `mesh` is final.
+    std::atomic<bool> ready{false};
+    Mesh mesh;
+  };
+  MeshSlot& slot() const;
+  mutable std::unique_ptr<MeshSlot> slot_ = std::make_unique<MeshSlot>();
 };
 
 }  // namespace volpost

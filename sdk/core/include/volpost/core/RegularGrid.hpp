@@ -49,8 +49,13 @@ struct RegularGrid {
   std::string defect() const;
 };
 
+/// The corners of cell (i, j, k) in VTK order (point indices), positive volume whatever the
+/// handedness of the axes: the hexahedron hexahedraOfGrid lists for that cell.
+std::array<NodeIndex, 8> gridHexahedron(const RegularGrid& grid, std::size_t i, std::size_t j, std::size_t k);
+
 /// The grid's points and hexahedra (VTK order, positive volume whatever the handedness of
-/// the axes), cell (i, j, k) at i + (dims[0]-1) * (j + (dims[1]-1) * k).
+/// the axes), cell (i, j, k) at i + (dims[0]-1) * (j + (dims[1]-1) * k). Throws
+/// std::length_error for a grid of more points than 32-bit node indices number.
 Mesh hexahedraOfGrid(const RegularGrid& grid);
 
 /// Trilinear interpolation of point values at a continuous index (clamped to the grid).

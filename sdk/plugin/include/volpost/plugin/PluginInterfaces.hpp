@@ -86,9 +86,9 @@ class PanelPlugin {
 
 }  // namespace volpost
 
-#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/6"
-#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/6"
-#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/6"
+#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/7"
+#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/7"
+#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/7"
 
 Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
 Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)
