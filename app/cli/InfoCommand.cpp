@@ -17,6 +17,14 @@ void printFields(const Model& model) {
     std::printf("  %-16s %-4s  %s (%d component%s), %zu step%s\n", f->name().c_str(), toString(f->location()),
                 toString(f->kind()), f->components(), f->components() == 1 ? "" : "s", f->stepCount(),
                 f->stepCount() == 1 ? "" : "s");
+    if (f->storesSamples() && f->stepCount() > 0) {
+      try {  // what the field holds in memory: the file's own type, not doubles
+        const SampleType type = f->samples(0).type();
+        std::printf("      kept as %s values (%zu byte%s each)\n", toString(type), bytesPerSample(type),
+                    bytesPerSample(type) == 1 ? "" : "s");
+      } catch (const std::exception&) {
+      }  // a step that cannot be read says so below
+    }
     for (std::size_t s = 0; s < f->stepCount(); ++s) {
       if (f->stepCount() > 12 && s == 5) {
         std::printf("      ... %zu more steps ...\n", f->stepCount() - 10);

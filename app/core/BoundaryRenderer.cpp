@@ -33,7 +33,7 @@ void BoundaryRenderer::ensureSurface() {
   if (surfaceUploaded_ || !initialized_ || !session_) return;
   surface_.setSurface(session_->surface());
   if (pendingScalars_)
-    surface_.setScalars(pendingScalars_->location, pendingScalars_->values, pendingScalars_->range.min,
+    surface_.setScalars(pendingScalars_->view->location, pendingScalars_->view->values, pendingScalars_->range.min,
                         pendingScalars_->range.max);
   else
     surface_.clearScalars();
@@ -71,7 +71,7 @@ void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
 void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range) {
   if (!surfaceUploaded_) {  // kept until the surface is first drawn
     pendingScalars_.reset();
-    if (view) pendingScalars_ = PendingScalars{view->location, view->values, range};
+    if (view) pendingScalars_ = PendingScalars{view, range};
     return;
   }
   if (!view) {

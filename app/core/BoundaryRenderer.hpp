@@ -114,9 +114,11 @@ class BoundaryRenderer {
   std::size_t uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes, const ScalarView* view,
                                   DisplayRange range) const;
   bool surfaceUploaded_ = false;
+  // The view is the caller's (the Scene's), not a copy: a volume picture of a large grid
+  // must not hold its values twice for a surface nobody draws. Every change of the view
+  // reaches setScalars before the next draw, so the pointer is current when it is used.
   struct PendingScalars {
-    FieldLocation location;
-    std::vector<double> values;
+    const ScalarView* view;
     DisplayRange range;
   };
   std::optional<PendingScalars> pendingScalars_;  ///< colors for the surface not yet uploaded

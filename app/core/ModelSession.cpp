@@ -108,6 +108,8 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
   }
   view.range = rangeOf(view.values);
   view.stepLabel = f.steps()[step].label;
+  const std::lock_guard lock(rangesMutex_);
+  stepRanges_[{q.key(), step}] = view.range;
   return view;
 }
 
@@ -118,7 +120,12 @@ ValueRange ModelSession::rangeOverSteps(const Quantity& q) const {
   }
   ValueRange all;
   for (std::size_t step = 0; step < fieldOf(q).stepCount(); ++step) {
-    const ValueRange r = evaluate(q, step).range;
+    std::optional<ValueRange> seen;
+    {
+      const std::lock_guard lock(rangesMutex_);
+      if (const auto known = stepRanges_.find({q.key(), step}); known != stepRanges_.end()) seen = known->second;
+    }
+    const ValueRange r = seen ? *seen : evaluate(q, step).range;
     if (r.valid()) {
       all.min = all.valid() ? std::min(all.min, r.min) : r.min;
       all.max = all.valid() ? std::max(all.max, r.max) : r.max;

@@ -87,6 +87,9 @@ class ModelSession {
   mutable std::unique_ptr<TetMesh> tets_;
   mutable std::mutex rangesMutex_;
   mutable std::map<std::string, ValueRange> rangesOverSteps_;  ///< by quantity key
+  /// The range of every (quantity key, step) evaluated so far: the range over the steps
+  /// then evaluates only the steps not seen (a large field is not evaluated twice at once).
+  mutable std::map<std::pair<std::string, std::size_t>, ValueRange> stepRanges_;
   mutable std::once_flag locatorOnce_;
   mutable std::unique_ptr<PointLocator> locator_;
   mutable std::once_flag surfaceOnce_;

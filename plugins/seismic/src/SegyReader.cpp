@@ -125,6 +125,22 @@ std::optional<PlanFit> fitPlan(const std::vector<TraceKey>& keys, const std::vec
   return fit;
 }
 
+// The type a sample format's values are kept in: its own, IBM floats as 32-bit floats (a
+// 24-bit fraction fits exactly while the exponent stays in range).
+SampleType storedType(SampleFormat format) {
+  switch (format) {
+    case SampleFormat::Int8: return SampleType::Int8;
+    case SampleFormat::UInt8: return SampleType::UInt8;
+    case SampleFormat::Int16: return SampleType::Int16;
+    case SampleFormat::UInt16: return SampleType::UInt16;
+    case SampleFormat::Int32: return SampleType::Int32;
+    case SampleFormat::UInt32: return SampleType::UInt32;
+    case SampleFormat::IbmFloat32: case SampleFormat::IeeeFloat32: return SampleType::Float32;
+    case SampleFormat::IeeeFloat64: return SampleType::Float64;
+  }
+  return SampleType::Float64;
+}
+
 std::string offsetList(const std::set<std::int64_t>& offsets) {
   std::string s;
   std::size_t n = 0;
@@ -378,7 +394,9 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
 
   // Pass 2: the samples, trace by trace, into the grid (time slowest).
   progress.setStage("Reading samples");
-  std::vector<double> values(points, 0.0);
+  // Samples stay in the file's type (2 bytes each for format 3); an IBM float outside a
+  // 32-bit float's range widens the whole array to 64-bit floats.
+  SampleArray values(storedType(b.format), points);
   std::vector<unsigned char> samples(b.samplesPerTrace * sampleBytes(b.format));
   const std::size_t bytesPer = sampleBytes(b.format);
   std::size_t missing = 0, nonFinite = 0;
@@ -396,7 +414,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
         ++nonFinite;
         v = 0.0;
       }
-      values[c + cells * s] = v;
+      if (!values.fitsExactly(v)) values = values.widenedTo(SampleType::Float64);
+      values.set(c + cells * s, v);
     }
     if (c % 1024 == 0) progress.report(0.3 + 0.6 * double(c) / double(cells));
   }
@@ -417,7 +436,7 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                                   {}});
 
   model->grid = grid;
-  model->fields.push_back(Field::fromValues("amplitude", FieldLocation::Node, 1, {std::move(values)}));
+  model->fields.push_back(Field::fromSamples("amplitude", FieldLocation::Node, 1, std::move(values)));
   addSeismicAttributes(*model);
   progress.report(1.0);
   return model;

@@ -88,10 +88,12 @@ void addSeismicAttributes(Model& model) {
   const double dt = grid.labelStep[2] / 1000.0;
   enum class Kind { Envelope, Phase, Frequency, Rms };
   const auto field = [&](const std::string& name, Kind kind) {
-    return std::make_shared<Field>(
+    // Kept as 32-bit floats (4 bytes a point, 7 significant digits): an attribute is a
+    // derived picture of the amplitude, not a measurement to keep to 16 digits.
+    return Field::fromSamples(
         name, FieldLocation::Node, 1, grid.pointCount(), amplitude->steps(), [grid, amplitude, dt, kind](std::size_t step) {
-          const std::vector<double>& x = amplitude->values(step);
-          std::vector<double> out(x.size(), 0.0);
+          const std::vector<double> x = amplitude->valuesCopy(step);  // the amplitude keeps no double copy
+          SampleArray out(SampleType::Float32, x.size());
           const std::size_t traces = grid.dims[0] * grid.dims[1], samples = grid.dims[2];
           std::vector<double> trace(samples);
           for (std::size_t t = 0; t < traces; ++t) {
@@ -105,7 +107,7 @@ void addSeismicAttributes(Model& model) {
                        : kind == Kind::Phase  ? std::move(a.phaseDegrees)
                                               : std::move(a.frequencyHz);
             }
-            for (std::size_t k = 0; k < samples; ++k) out[t + traces * k] = result[k];
+            for (std::size_t k = 0; k < samples; ++k) out.set(t + traces * k, result[k]);
           }
           return out;
         });

@@ -48,14 +48,73 @@ std::shared_ptr<Field> Field::fromValues(std::string name, FieldLocation locatio
       steps.push_back({stepValues.size() == 1 ? "" : "step " + std::to_string(i + 1), double(i)});
   const std::size_t count =
       stepValues.empty() ? 0 : stepValues.front().size() / std::size_t(components);
-  auto shared = std::make_shared<std::vector<std::vector<double>>>(std::move(stepValues));
-  return std::make_shared<Field>(std::move(name), location, components, count, std::move(steps),
-                                 [shared](std::size_t step) { return (*shared)[step]; });
+  const std::size_t stepCount = stepValues.size();
+  std::string fieldName = name;
+  auto field = std::make_shared<Field>(std::move(name), location, components, count, std::move(steps),
+                                       [fieldName](std::size_t step) -> std::vector<double> {
+                                         throw std::out_of_range("field " + fieldName + " has no step " +
+                                                                 std::to_string(step + 1));
+                                       });
+  // The values become the cache itself: no second copy of them.
+  for (std::size_t i = 0; i < stepCount && i < field->cache_.size(); ++i) {
+    if (stepValues[i].size() != count * std::size_t(components))
+      throw std::invalid_argument("field " + field->name() + ": step " + std::to_string(i + 1) + " has " +
+                                  std::to_string(stepValues[i].size()) + " values, expected " +
+                                  std::to_string(count * std::size_t(components)));
+    field->cache_[i] = std::make_unique<std::vector<double>>(std::move(stepValues[i]));
+  }
+  return field;
+}
+
+std::shared_ptr<Field> Field::fromSamples(std::string name, FieldLocation location, int components,
+                                          std::size_t entityCount, std::vector<Step> steps, SampleLoader loader) {
+  auto field = std::make_shared<Field>(std::move(name), location, components, entityCount, std::move(steps),
+                                       StepLoader{});
+  field->sampleCache_.resize(field->steps_.size());
+  field->sampleLoader_ = std::move(loader);
+  return field;
+}
+
+std::shared_ptr<Field> Field::fromSamples(std::string name, FieldLocation location, int components,
+                                          SampleArray samples) {
+  const std::size_t count = samples.size() / std::size_t(components);
+  auto shared = std::make_shared<SampleArray>(std::move(samples));
+  auto field = fromSamples(std::move(name), location, components, count, {{"", 0.0}},
+                           [shared](std::size_t) { return SampleArray(); });
+  field->sampleCache_[0] = std::make_unique<SampleArray>(std::move(*shared));  // kept as given, no copy
+  return field;
+}
+
+const SampleArray& Field::samples(std::size_t step) const {
+  if (!storesSamples()) throw std::logic_error("field " + name_ + " does not keep stored samples");
+  if (step >= steps_.size())
+    throw std::out_of_range("field " + name_ + " has no step " + std::to_string(step + 1));
+  std::lock_guard lock(mutex_);
+  if (!sampleCache_[step]) {
+    auto loaded = std::make_unique<SampleArray>(sampleLoader_(step));
+    if (loaded->size() != entityCount_ * std::size_t(components_))
+      throw std::runtime_error("field " + name_ + ": step " + std::to_string(step + 1) + " has " +
+                               std::to_string(loaded->size()) + " values, expected " +
+                               std::to_string(entityCount_ * std::size_t(components_)));
+    sampleCache_[step] = std::move(loaded);
+  }
+  return *sampleCache_[step];
+}
+
+std::vector<double> Field::valuesCopy(std::size_t step) const {
+  if (storesSamples() && !isLoaded(step)) return samples(step).toDoubles();
+  return values(step);
 }
 
 const std::vector<double>& Field::values(std::size_t step) const {
   if (step >= steps_.size())
     throw std::out_of_range("field " + name_ + " has no step " + std::to_string(step + 1));
+  if (storesSamples()) {
+    const SampleArray& stored = samples(step);  // outside the lock below: it takes it too
+    std::lock_guard lock(mutex_);
+    if (!cache_[step]) cache_[step] = std::make_unique<std::vector<double>>(stored.toDoubles());
+    return *cache_[step];
+  }
   std::lock_guard lock(mutex_);
   if (!cache_[step]) {
     auto loaded = std::make_unique<std::vector<double>>(loader_(step));

@@ -154,9 +154,16 @@ double scalarOf(const Quantity& q, const double* t, int nc) {
 }  // namespace
 
 std::vector<double> evaluate(const Field& field, const Quantity& q, std::size_t step) {
-  const std::vector<double>& v = field.values(step);
   const int nc = field.components();
   checkQuantityFits(q, field.name(), nc);
+  if (field.storesSamples() && nc == 1 && !field.isLoaded(step)) {
+    // A scalar kept in the file's type (a 16-bit seismic cube): converted straight into the
+    // result, so the field never holds a double copy of its samples.
+    std::vector<double> out = field.samples(step).toDoubles();
+    for (double& x : out) x = scalarOf(q, &x, 1);
+    return out;
+  }
+  const std::vector<double>& v = field.values(step);
   std::vector<double> out(field.entityCount());
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = scalarOf(q, v.data() + i * std::size_t(nc), nc);
   return out;

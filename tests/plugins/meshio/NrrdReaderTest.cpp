@@ -100,25 +100,29 @@ TEST_F(Nrrd, ARotatedGridWithAttachedRawDataIsPlacedAndValuedAsTheHeaderSays) {
 }
 
 TEST_F(Nrrd, EverySampleTypeInBothByteOrders) {
-  const auto check = [&](const std::string& type, const std::string& data, bool big, const std::vector<double>& expected) {
+  // The samples stay in the file's type (64-bit integers as 64-bit floats).
+  const auto check = [&](const std::string& type, const std::string& data, bool big, const std::vector<double>& expected,
+                         SampleType stored) {
     const std::string header = "NRRD0005\ntype: " + type + "\ndimension: 3\nsizes: 4 3 2\nencoding: raw\nendian: " +
                                (big ? "big" : "little") + "\nspacings: 1 1 1\n\n";
     const auto model = read(write("t.nrrd", header + data));
+    ASSERT_TRUE(model->fields[0]->storesSamples());
+    EXPECT_EQ(model->fields[0]->samples(0).type(), stored) << type;
     EXPECT_EQ(model->fields[0]->values(0), expected) << type << (big ? " big" : " little");
   };
   std::vector<double> signedRamp = ramp();
   for (double& v : signedRamp) v = v - 100.0;  // negative values too
   for (bool big : {false, true}) {
-    check("int8", samples(as<std::int8_t>(signedRamp), big), big, signedRamp);
-    check("uchar", samples(as<std::uint8_t>(ramp()), big), big, ramp());
-    check("int16", samples(as<std::int16_t>(signedRamp), big), big, signedRamp);
-    check("unsigned short", samples(as<std::uint16_t>(ramp()), big), big, ramp());
-    check("int", samples(as<std::int32_t>(signedRamp), big), big, signedRamp);
-    check("uint32", samples(as<std::uint32_t>(ramp()), big), big, ramp());
-    check("long long", samples(as<std::int64_t>(signedRamp), big), big, signedRamp);
-    check("uint64", samples(as<std::uint64_t>(ramp()), big), big, ramp());
-    check("float", samples(as<float>(signedRamp), big), big, signedRamp);
-    check("double", samples(signedRamp, big), big, signedRamp);
+    check("int8", samples(as<std::int8_t>(signedRamp), big), big, signedRamp, SampleType::Int8);
+    check("uchar", samples(as<std::uint8_t>(ramp()), big), big, ramp(), SampleType::UInt8);
+    check("int16", samples(as<std::int16_t>(signedRamp), big), big, signedRamp, SampleType::Int16);
+    check("unsigned short", samples(as<std::uint16_t>(ramp()), big), big, ramp(), SampleType::UInt16);
+    check("int", samples(as<std::int32_t>(signedRamp), big), big, signedRamp, SampleType::Int32);
+    check("uint32", samples(as<std::uint32_t>(ramp()), big), big, ramp(), SampleType::UInt32);
+    check("long long", samples(as<std::int64_t>(signedRamp), big), big, signedRamp, SampleType::Float64);
+    check("uint64", samples(as<std::uint64_t>(ramp()), big), big, ramp(), SampleType::Float64);
+    check("float", samples(as<float>(signedRamp), big), big, signedRamp, SampleType::Float32);
+    check("double", samples(signedRamp, big), big, signedRamp, SampleType::Float64);
   }
 }
 

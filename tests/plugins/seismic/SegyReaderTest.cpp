@@ -76,12 +76,39 @@ TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
       EXPECT_EQ(r.labelStep, grid.labelStep);
       for (int a = 0; a < 3; ++a) EXPECT_LT(glm::distance(r.axes[a], grid.axes[a]), 0.02) << "axis " << a;
       EXPECT_LT(glm::distance(r.origin, grid.origin), 0.02);
+      EXPECT_FALSE(model->meshBuilt()) << "a grid's cells are built only when asked for";
+      // The samples stay in the file's type: 1, 2 or 4 bytes each (IBM floats as 32-bit floats).
+      const SampleType stored = f == SampleFormat::Int8 ? SampleType::Int8 : f == SampleFormat::Int16 ? SampleType::Int16
+                                : f == SampleFormat::Int32 ? SampleType::Int32 : f == SampleFormat::IeeeFloat64 ? SampleType::Float64
+                                                                                                              : SampleType::Float32;
+      ASSERT_TRUE(model->fields.at(0)->storesSamples());
+      EXPECT_EQ(model->fields.at(0)->samples(0).type(), stored);
+      EXPECT_EQ(model->fields.at(0)->samples(0).toDoubles(), values);
       EXPECT_EQ(model->mesh().nodeCount(), grid.pointCount());
       EXPECT_EQ(model->mesh().cellCount(), grid.cellCount());
       EXPECT_EQ(model->fields.at(0)->values(0), values);
       EXPECT_TRUE(model->diagnostics.empty());
       fs::remove(p);
     }
+}
+
+// An IBM float beyond a 32-bit float's range (IBM reaches 7e75) widens the kept samples to
+// 64-bit floats instead of turning into infinity.
+TEST(SegyReader, IbmFloatsBeyondAFloatsRangeAreKeptAsDoubles) {
+  const RegularGrid grid = surveyGrid();
+  std::vector<double> values = surveyValues(grid);
+  values[17] = 1e40;
+  values[40] = -3e-45;  // below a float's normal range: not exact as a float either
+  const fs::path p = tempFile("ibm_wide.sgy");
+  writeSegy(p.string(), grid, values, {SampleFormat::IbmFloat32, ByteOrder::Big});
+  const auto model = readSegy(p.string(), {});
+  const SampleArray& kept = model->fields.at(0)->samples(0);
+  EXPECT_EQ(kept.type(), SampleType::Float64);
+  EXPECT_NEAR(kept[17], 1e40, 1e34);
+  EXPECT_NEAR(kept[40], -3e-45, 1e-51);
+  EXPECT_EQ(kept[16], values[16]);
+  EXPECT_TRUE(model->diagnostics.empty()) << "finite values: nothing to report";
+  fs::remove(p);
 }
 
 TEST(SegyReader, MissingTracesAreFilledWithZeroAndFlagged) {

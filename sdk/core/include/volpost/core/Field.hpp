@@ -2,6 +2,8 @@
 // Result fields: values per node or per cell, for one or more steps, read lazily.
 #pragma once
 
+#include <volpost/core/SampleArray.hpp>
+
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -29,16 +31,26 @@ struct Step {
 /// Produces the values of one step: entityCount x components doubles, row-major.
 /// Throws on failure (a lazy read of a damaged file).
 using StepLoader = std::function<std::vector<double>(std::size_t step)>;
+/// Produces the values of one step in the type the file stores them in.
+using SampleLoader = std::function<SampleArray(std::size_t step)>;
 
 class Field {
  public:
   Field(std::string name, FieldLocation location, int components, std::size_t entityCount,
         std::vector<Step> steps, StepLoader loader);
-  /// A field whose values are already in memory (one vector per step).
+  /// A field whose values are already in memory (one vector per step), kept without a copy.
   static std::shared_ptr<Field> fromValues(std::string name, FieldLocation location,
                                            int components,
                                            std::vector<std::vector<double>> stepValues,
                                            std::vector<Step> steps = {});
+  /// A field that keeps its values as the file stored them (samples()), read lazily by
+  /// `loader`; values() converts a step to doubles and keeps that copy too, evaluate()
+  /// (volpost/core/Quantity.hpp) and valuesCopy() convert without keeping one.
+  static std::shared_ptr<Field> fromSamples(std::string name, FieldLocation location, int components,
+                                            std::size_t entityCount, std::vector<Step> steps, SampleLoader loader);
+  /// One step of samples already in memory.
+  static std::shared_ptr<Field> fromSamples(std::string name, FieldLocation location, int components,
+                                            SampleArray samples);
 
   const std::string& name() const { return name_; }
   FieldLocation location() const { return location_; }
@@ -51,6 +63,14 @@ class Field {
   /// Values of a step, loaded on first use and kept. Thread-safe.
   const std::vector<double>& values(std::size_t step) const;
   bool isLoaded(std::size_t step) const;
+  /// Whether the field keeps its values in the file's own type (fromSamples).
+  bool storesSamples() const { return static_cast<bool>(sampleLoader_); }
+  /// A step's values in their stored type, loaded on first use and kept. Thread-safe.
+  /// Throws std::logic_error for a field that does not store samples.
+  const SampleArray& samples(std::size_t step) const;
+  /// A step's values as doubles in a vector of the caller's: for a field of stored samples,
+  /// converted without keeping a double copy in the field.
+  std::vector<double> valuesCopy(std::size_t step) const;
 
  private:
   std::string name_;
@@ -59,8 +79,10 @@ class Field {
   std::size_t entityCount_;
   std::vector<Step> steps_;
   StepLoader loader_;
+  SampleLoader sampleLoader_;
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<std::vector<double>>> cache_;
+  mutable std::vector<std::unique_ptr<SampleArray>> sampleCache_;
 };
 
 }  // namespace volpost
