@@ -100,7 +100,16 @@ std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const
                                                   const ScalarView* view, DisplayRange range) const {
   std::vector<glm::dvec3> corners;
   std::vector<double> values;
-  if (!planes.empty()) {
+  const Model& model = session_->model();
+  if (!planes.empty() && !model.meshBuilt()) {  // a grid: cut its cells as they are, no tetrahedra
+    const bool perNode = view && view->location == FieldLocation::Node;
+    const std::span<const double> gridValues = view ? std::span<const double>(view->values) : std::span<const double>();
+    for (const ClipPlane& plane : planes) {
+      SectionTriangles cut = cutGrid(*model.grid, gridValues, perNode, plane);
+      corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
+      values.insert(values.end(), cut.values.begin(), cut.values.end());
+    }
+  } else if (!planes.empty()) {
     const TetMesh& tets = session_->tetrahedra();
     const std::vector<double> tetValues = view ? session_->tetValues(*view) : std::vector<double>{};
     const bool perNode = view && view->location == FieldLocation::Node;

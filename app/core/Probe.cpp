@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -123,22 +124,79 @@ ProbedField probeField(const Field& field, std::size_t step, std::size_t cell,
   out.name = field.name();
   out.location = field.location();
   const int nc = field.components();
-  const std::vector<double>& v = field.values(std::min(step, field.stepCount() - 1));
+  const std::size_t at = std::min(step, field.stepCount() - 1);
+  // A field kept in its file's type is read as it is: a probe must not make it hold doubles.
+  const bool stored = field.storesSamples() && !field.isLoaded(at);
+  const SampleArray* samples = stored ? &field.samples(at) : nullptr;
+  const std::vector<double>* doubles = stored ? nullptr : &field.values(at);
+  const auto v = [&](std::size_t i) { return samples ? (*samples)[i] : (*doubles)[i]; };
   out.components.assign(std::size_t(nc), 0.0);
   for (int c = 0; c < nc; ++c) {
     if (field.location() == FieldLocation::Cell) {
-      out.components[std::size_t(c)] = v[cell * std::size_t(nc) + std::size_t(c)];
+      out.components[std::size_t(c)] = v(cell * std::size_t(nc) + std::size_t(c));
     } else if (atNode) {  // exactly the node's own value, not a sum that rounds to it
-      out.components[std::size_t(c)] = v[std::size_t(*atNode) * std::size_t(nc) + std::size_t(c)];
+      out.components[std::size_t(c)] = v(std::size_t(*atNode) * std::size_t(nc) + std::size_t(c));
     } else {
       double sum = 0.0;
       for (const auto& [node, weight] : weights)
-        if (weight != 0.0) sum += weight * v[std::size_t(node) * std::size_t(nc) + std::size_t(c)];
+        if (weight != 0.0) sum += weight * v(std::size_t(node) * std::size_t(nc) + std::size_t(c));
       out.components[std::size_t(c)] = sum;
     }
   }
   for (const Quantity& q : quantitiesOf(field)) out.quantities.push_back({q, evaluateComponents(q, out.components)});
   return out;
+}
+
+// A point in a regular grid: its cell and trilinear weights from its continuous index, with
+// no cells or tetrahedra built (a probe of a 256^3 cube would otherwise split 16M
+// hexahedra). Values equal the hexahedron's shape functions there (trilinear).
+ProbeResult probeGrid(const ModelSession& session, const RegularGrid& grid, const glm::dvec3& point, std::size_t step) {
+  ProbeResult r;
+  r.point = point;
+  r.step = step;
+  const glm::dvec3 index = grid.indexOf(point);
+  const double slack = kOnMeshTolerance;  // of a cell, along each axis: rounding on a face
+  std::array<std::size_t, 3> base{};
+  glm::dvec3 f(0.0);
+  for (int a = 0; a < 3; ++a) {
+    const double last = double(grid.dims[std::size_t(a)] - 1);
+    if (!(index[a] >= -slack && index[a] <= last + slack)) return r;
+    const double clamped = std::clamp(index[a], 0.0, last);
+    base[std::size_t(a)] = std::min(std::size_t(clamped), grid.dims[std::size_t(a)] - 2);
+    f[a] = clamped - double(base[std::size_t(a)]);
+  }
+  const std::size_t cx = grid.dims[0] - 1, cy = grid.dims[1] - 1;
+  r.method = ProbeMethod::Isoparametric;
+  r.cell = base[0] + cx * (base[1] + cy * base[2]);
+  r.cellId = std::int64_t(r.cell) + 1;
+  r.cellType = CellType::Hex8;
+  const std::array<NodeIndex, 8> corners = gridHexahedron(grid, base[0], base[1], base[2]);
+  std::vector<glm::dvec3> positions;
+  std::vector<std::pair<NodeIndex, double>> weights;
+  const double nodeTolerance = kOnMeshTolerance * grid.bounds().diagonal();
+  const Model& model = session.model();
+  std::optional<NodeIndex> atNode;
+  double nearest = INFINITY;
+  const std::size_t base0 = grid.pointIndex(base[0], base[1], base[2]);
+  for (const NodeIndex n : corners) {
+    const std::size_t offset = n - base0;  // di + nx * (dj + ny * dk), each 0 or 1
+    const std::size_t di = offset % grid.dims[0], dj = (offset / grid.dims[0]) % grid.dims[1],
+                      dk = offset / (grid.dims[0] * grid.dims[1]);
+    weights.emplace_back(n, (di ? f.x : 1.0 - f.x) * (dj ? f.y : 1.0 - f.y) * (dk ? f.z : 1.0 - f.z));
+    const glm::dvec3 p = model.nodePosition(n);
+    positions.push_back(p);
+    r.nodeIds.push_back(std::int64_t(n) + 1);
+    const double d = glm::length(p - point);
+    if (!atNode && d <= nodeTolerance) atNode = n;
+    if (d < nearest) nearest = d, r.nearestNode = n;
+  }
+  r.nearestNodeId = std::int64_t(r.nearestNode) + 1;
+  if (atNode) r.nodeId = std::int64_t(*atNode) + 1;
+  r.natural = naturalCoordinates(CellType::Hex8, positions, point, referenceCentre(CellType::Hex8)).value_or(glm::dvec3(0.0));
+  for (int a = 0; a < 3; ++a) r.gridPosition.push_back({grid.axisNames[std::size_t(a)], grid.label(a, index[a])});
+  for (const auto& field : model.fields)
+    if (field->stepCount() > 0) r.fields.push_back(probeField(*field, step, r.cell, weights, atNode));
+  return r;
 }
 
 }  // namespace
@@ -174,6 +232,7 @@ ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::s
   r.point = point;
   r.step = step;
   if (!std::isfinite(point.x + point.y + point.z)) return r;
+  if (const auto& grid = session.model().grid; grid && grid->defect().empty()) return probeGrid(session, *grid, point, step);
   const Found found = findElement(session, point);
   if (found.method == ProbeMethod::Outside) return r;
   const Mesh& mesh = session.model().mesh();

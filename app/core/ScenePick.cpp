@@ -48,7 +48,7 @@ std::optional<double> rayHitsPlane(const PickRay& ray, const ClipPlane& plane) {
 std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRay& ray,
                                        const std::function<bool(const glm::dvec3&)>& kept) {
   const BoundarySurface& surface = session.surface();
-  const Mesh& mesh = session.model().mesh();
+  const Model& model = session.model();
   std::optional<SurfacePick> best;
   double nearest = std::numeric_limits<double>::infinity();
   // Moller-Trumbore on every boundary triangle, in double on the model's own node
@@ -56,7 +56,7 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
   for (const auto face : surface.mesh.faces()) {
     glm::dvec3 v[3];
     int k = 0;
-    for (const auto vertex : surface.mesh.fv_range(face)) v[k++] = mesh.nodes[surface.mesh.property(surface.nodeOfVertex, vertex)];
+    for (const auto vertex : surface.mesh.fv_range(face)) v[k++] = model.nodePosition(surface.mesh.property(surface.nodeOfVertex, vertex));
     const auto t = rayHitsTriangle(ray, v[0], v[1], v[2]);
     if (t && *t < nearest && (!kept || kept(ray.origin + *t * ray.direction))) {
       nearest = *t;

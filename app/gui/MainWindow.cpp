@@ -998,8 +998,8 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   for (const auto& d : m.diagnostics) warnings += d.severity == Severity::Warning;
   statusBar()->showMessage(QString("%1: %2 nodes, %3 cells%4")
                                .arg(QString::fromStdString(m.sourcePath))
-                               .arg(m.mesh().nodeCount())
-                               .arg(m.mesh().cellCount())
+                               .arg(m.nodeCount())
+                               .arg(m.cellCount())
                                .arg(warnings ? QString(", %1 defect warning(s): see the Model panel").arg(warnings) : ""));
   notifyPanels();
 }

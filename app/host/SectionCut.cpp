@@ -3,6 +3,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,8 @@ struct Crossing {
 };
 
 Crossing crossEdge(const glm::dvec3& a, const glm::dvec3& b, double da, double db, double va, double vb) {
+  if (db == 0.0) return {b, vb};  // a node on the plane is itself, not a + 1 * (b - a)
+  if (da == 0.0) return {a, va};
   const double t = da / (da - db);  // da and db have opposite signs: 0 <= t <= 1
   return {a + t * (b - a), va + t * (vb - va)};
 }
@@ -29,6 +32,41 @@ void addTriangle(SectionTriangles& out, const Crossing& p, const Crossing& q, co
     out.positions.push_back(c->at);
     out.values.push_back(c->value);
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The piece of one tet on the plane: corners p with signed distances d (a node on the plane
+// counts as kept: every tet decides it the same way, so the pieces of neighbouring tets
+// meet without gaps or overlaps) and values v.
+void cutTetrahedron(SectionTriangles& out, const std::array<glm::dvec3, 4>& p, const std::array<double, 4>& d,
+                    const std::array<double, 4>& v, const glm::dvec3& normal) {
+  std::array<int, 4> in{}, outside{};
+  int ni = 0, no = 0;
+  for (int k = 0; k < 4; ++k) (d[k] >= 0.0 ? in[ni++] : outside[no++]) = k;
+  if (ni == 0 || no == 0) return;
+  ++out.cutTets;
+  const auto cross = [&](int a, int b) { return crossEdge(p[a], p[b], d[a], d[b], v[a], v[b]); };
+  if (ni == 1 || no == 1) {  // one corner apart: a triangle
+    const int lone = ni == 1 ? in[0] : outside[0];
+    std::array<Crossing, 3> t;
+    int n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (k != lone) t[n++] = cross(lone, k);
+    addTriangle(out, t[0], t[1], t[2], normal);
+  } else {  // two and two: a quadrilateral a0-b0, a0-b1, a1-b1, a1-b0 (in that order around)
+    const Crossing q0 = cross(in[0], outside[0]), q1 = cross(in[0], outside[1]);
+    const Crossing q2 = cross(in[1], outside[1]), q3 = cross(in[1], outside[0]);
+    addTriangle(out, q0, q1, q2, normal);
+    addTriangle(out, q0, q2, q3, normal);
+  }
+}
+
+double signedDistance(const glm::dvec3& p, const ClipPlane& plane, const glm::dvec3& normal) {
+  const double d = glm::dot(p - plane.point, normal);
+  return d == 0.0 ? 0.0 : d;  // -0 too
 }
 
 }  // namespace
@@ -48,36 +86,60 @@ SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> valu
     if (nodes.size() < 4) continue;
     std::array<glm::dvec3, 4> p;
     std::array<double, 4> d, v;
-    int kept = 0;
     for (int k = 0; k < 4; ++k) {
       p[k] = mesh.nodes[nodes[k]];
-      // A node on the plane counts as kept: every tet decides it the same way, so the
-      // pieces of neighbouring tets meet without gaps or overlaps.
-      d[k] = glm::dot(p[k] - plane.point, normal);
-      if (d[k] == 0.0) d[k] = 0.0;  // -0 too
-      kept += d[k] >= 0.0;
+      d[k] = signedDistance(p[k], plane, normal);
       v[k] = perNode ? values[nodes[k]] : perTet ? values[c] : none;
     }
-    if (kept == 0 || kept == 4) continue;
-    ++out.cutTets;
-    std::array<int, 4> in{}, outside{};
-    int ni = 0, no = 0;
-    for (int k = 0; k < 4; ++k) (d[k] >= 0.0 ? in[ni++] : outside[no++]) = k;
-    const auto cross = [&](int a, int b) { return crossEdge(p[a], p[b], d[a], d[b], v[a], v[b]); };
-    if (ni == 1 || no == 1) {  // one corner apart: a triangle
-      const int lone = ni == 1 ? in[0] : outside[0];
-      std::array<Crossing, 3> t;
-      int n = 0;
-      for (int k = 0; k < 4; ++k)
-        if (k != lone) t[n++] = cross(lone, k);
-      addTriangle(out, t[0], t[1], t[2], normal);
-    } else {  // two and two: a quadrilateral a0-b0, a0-b1, a1-b1, a1-b0 (in that order around)
-      const Crossing q0 = cross(in[0], outside[0]), q1 = cross(in[0], outside[1]);
-      const Crossing q2 = cross(in[1], outside[1]), q3 = cross(in[1], outside[0]);
-      addTriangle(out, q0, q1, q2, normal);
-      addTriangle(out, q0, q2, q3, normal);
-    }
+    cutTetrahedron(out, p, d, v, normal);
   }
+  return out;
+}
+
+// Each cell the plane crosses is split into the six tets around its diagonal from corner
+// (0,0,0) to (1,1,1) (Freudenthal's split: the same in every cell, so neighbours' pieces
+// meet), positions and distances from the cell's indices, no hexahedra needed.
+SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values, bool perNodeValues,
+                         const ClipPlane& plane) {
+  SectionTriangles out;
+  const double length = glm::length(plane.normal);
+  if (!(length > 0.0) || !std::isfinite(length) || !grid.defect().empty()) return out;
+  const glm::dvec3 normal = plane.normal / length;
+  const bool perNode = perNodeValues && values.size() == grid.pointCount();
+  const bool perCell = !perNodeValues && values.size() == grid.cellCount();
+  const double none = std::numeric_limits<double>::quiet_NaN();
+  // Corner c of a cell is (c & 1, c >> 1 & 1, c >> 2 & 1) in index steps; the six tets
+  // around the diagonal 0-7 (a path 0 -> one axis -> two axes -> 7 each).
+  static constexpr std::array<std::array<int, 4>, 6> kTets = {{
+      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}}};
+  const std::size_t cx = grid.dims[0] - 1, cy = grid.dims[1] - 1, cz = grid.dims[2] - 1;
+  // A grid point within rounding of the plane is on it: a plane through a layer of points
+  // (an inline, crossline or time slice) then shows those points and their samples exactly,
+  // without slivers between points that rounding put on both sides. Every cell computes a
+  // point's distance the same way, so neighbours still agree.
+  const double onPlane = 1e-9 * std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
+  for (std::size_t k = 0; k < cz; ++k)
+    for (std::size_t j = 0; j < cy; ++j)
+      for (std::size_t i = 0; i < cx; ++i) {
+        std::array<glm::dvec3, 8> p;
+        std::array<double, 8> d;
+        int kept = 0;
+        for (int c = 0; c < 8; ++c) {
+          p[std::size_t(c)] = grid.position(double(i + (c & 1)), double(j + (c >> 1 & 1)), double(k + (c >> 2 & 1)));
+          const double distance = signedDistance(p[std::size_t(c)], plane, normal);
+          d[std::size_t(c)] = std::abs(distance) <= onPlane ? 0.0 : distance;
+          kept += d[std::size_t(c)] >= 0.0;
+        }
+        if (kept == 0 || kept == 8) continue;
+        std::array<double, 8> v;
+        for (int c = 0; c < 8; ++c)
+          v[std::size_t(c)] = perNode ? values[grid.pointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))]
+                              : perCell ? values[i + cx * (j + cy * k)]
+                                        : none;
+        for (const auto& t : kTets)
+          cutTetrahedron(out, {p[t[0]], p[t[1]], p[t[2]], p[t[3]]}, {d[t[0]], d[t[1]], d[t[2]], d[t[3]]},
+                         {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, normal);
+      }
   return out;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/RegularGrid.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
 #include <glm/vec3.hpp>
@@ -23,5 +24,11 @@ struct SectionTriangles {
 /// `values`: one per node of tets.mesh (`perNode`) or one per tet (element results), or
 /// empty (geometry only). Triangles face along the plane's normal, the side it keeps.
 SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> values, bool perNode, const ClipPlane& plane);
+
+/// The same for a regular grid's cells without building them: `values` one per grid point
+/// (`perNode`) or per cell, or empty. Each crossed cell is cut as six tets, so the section
+/// is linear in each of them; on a plane through grid points it shows the samples exactly.
+/// `cutTets` counts those tets.
+SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values, bool perNode, const ClipPlane& plane);
 
 }  // namespace volpost

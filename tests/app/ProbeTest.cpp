@@ -189,3 +189,52 @@ TEST(ScenePick, TheCentreOfAnAxisViewHitsTheNearFaceAndAMissIsNothing) {
   EXPECT_NEAR(below->point.z, 0.0, 1e-9);
   EXPECT_NEAR(below->point.x, 5.0, 1e-6);
 }
+
+// A regular grid is probed from its indices, without building its cells or tetrahedra: on a
+// left-handed rotated grid the value is the trilinear interpolation of the stored samples
+// (16-bit integers), the cell is the one holding the point, a grid point gives its own
+// sample, cell data its cell's value, and a point past the grid is outside.
+TEST(Probe, AGridIsProbedTrilinearlyWithoutBuildingItsCells) {
+  auto model = std::make_shared<Model>();
+  RegularGrid g;
+  g.dims = {6, 5, 4};
+  g.origin = {500.0, -20.0, 0.0};
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  g.axes = {glm::dvec3(2 * c, 2 * s, 0), glm::dvec3(-1.5 * s, 1.5 * c, 0), glm::dvec3(0, 0, -0.5)};
+  g.axisNames = {"inline", "crossline", "time (ms)"};
+  g.firstLabel = {100, 7, 0};
+  g.labelStep = {1, 1, 4};
+  model->grid = g;
+  SampleArray amplitude(SampleType::Int16, g.pointCount());
+  std::vector<double> asDoubles(g.pointCount());
+  for (std::size_t n = 0; n < g.pointCount(); ++n) {
+    asDoubles[n] = double(int(n * 37 % 201) - 100);
+    amplitude.set(n, asDoubles[n]);
+  }
+  model->fields.push_back(Field::fromSamples("amplitude", FieldLocation::Node, 1, std::move(amplitude)));
+  std::vector<double> perCell(g.cellCount());
+  for (std::size_t k = 0; k < perCell.size(); ++k) perCell[k] = double(k) * 0.5;
+  model->fields.push_back(Field::fromValues("cell number", FieldLocation::Cell, 1, {perCell}));
+  const auto session = ModelSession::fromModel(model);
+  for (const glm::dvec3 index : {glm::dvec3(2.3, 1.7, 0.4), glm::dvec3(0.0, 0.0, 0.0), glm::dvec3(5.0, 4.0, 3.0),
+                                 glm::dvec3(4.99, 0.01, 2.5)}) {
+    const ProbeResult r = probeAt(*session, g.position(index.x, index.y, index.z), 0);
+    ASSERT_TRUE(r.inside());
+    EXPECT_NEAR(*r.value("amplitude"), trilinear(g, asDoubles.data(), index), 1e-9);
+    const std::size_t ci = std::min<std::size_t>(std::size_t(index.x), 4), cj = std::min<std::size_t>(std::size_t(index.y), 3),
+                      ck = std::min<std::size_t>(std::size_t(index.z), 2);
+    EXPECT_EQ(r.cell, ci + 5 * (cj + 4 * ck));
+    EXPECT_EQ(*r.value("cell number"), perCell[r.cell]);
+    EXPECT_EQ(r.cellType, CellType::Hex8);
+    ASSERT_EQ(r.gridPosition.size(), 3u);
+    EXPECT_NEAR(r.gridPosition[0].second, 100 + index.x, 1e-9);
+    EXPECT_NEAR(r.gridPosition[2].second, 4 * index.z, 1e-9);
+  }
+  const ProbeResult corner = probeAt(*session, g.position(3, 2, 1), 0);
+  ASSERT_TRUE(corner.nodeId);
+  EXPECT_EQ(*corner.value("amplitude"), asDoubles[g.pointIndex(3, 2, 1)]);
+  EXPECT_FALSE(probeAt(*session, g.position(-0.1, 2, 1), 0).inside());
+  EXPECT_FALSE(probeAt(*session, g.position(2, 2, 3.2), 0).inside());
+  EXPECT_FALSE(model->meshBuilt()) << "the probe needed no cells";
+  EXPECT_FALSE(model->fields[0]->isLoaded(0)) << "nor a double copy of the samples";
+}

@@ -20,6 +20,10 @@ class TfCurveWidget : public QWidget {
   Q_OBJECT
 
  public:
+  /// The histogram is built from at most this many of the values (evenly spaced in the
+  /// model's order, plus the smallest and largest).
+  static constexpr std::size_t kMaxHistogramValues = std::size_t(1) << 22;
+
   explicit TfCurveWidget(TfEditModel& model, QWidget* parent = nullptr);
 
   /// Values of the active result: the histogram and the Shift-drag snap targets.

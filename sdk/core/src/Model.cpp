@@ -55,6 +55,12 @@ std::map<CellType, std::size_t> Model::countsByType() const {
   return {{CellType::Hex8, grid->cellCount()}};
 }
 
+glm::dvec3 Model::nodePosition(std::size_t node) const {
+  if (meshBuilt()) return mesh().nodes[node];
+  const std::size_t nx = grid->dims[0], ny = grid->dims[1];
+  return grid->position(double(node % nx), double((node / nx) % ny), double(node / (nx * ny)));
+}
+
 Bounds Model::bounds() const { return meshBuilt() ? mesh().bounds() : grid->bounds(); }
 
 const Field* Model::findField(const std::string& name) const {

@@ -67,3 +67,59 @@ TEST(SectionCut, TheBoxCrossSectionExactlyWithALinearFieldAndNodesOnThePlane) {
   EXPECT_TRUE(std::isnan(bare.values.front()));
   EXPECT_TRUE(cutTetrahedra(tets, f, true, ClipPlane{{0.3, 0, 0}, {0, 0, 0}}).positions.empty());
 }
+
+// A grid cut without its cells: on a left-handed rotated grid, an oblique plane's section has
+// the area of the cells' section (the tetrahedralized hexahedra cut the same way), faces
+// the kept side, and reproduces a linear field; a plane through grid points shows the
+// samples exactly, whatever the field; cell values stay constant per cell.
+TEST(SectionCut, AGridIsCutWithoutItsCellsAsItsCellsAreCut) {
+  RegularGrid g;
+  g.dims = {5, 4, 3};
+  g.origin = {10.0, -3.0, 2.0};
+  const double c = std::cos(0.4), s = std::sin(0.4);
+  g.axes = {glm::dvec3(0.5 * c, 0.5 * s, 0.0), glm::dvec3(-0.4 * s, 0.4 * c, 0.0), glm::dvec3(0.0, 0.0, -0.3)};
+  const Mesh hexes = hexahedraOfGrid(g);
+  std::vector<double> linear(g.pointCount()), wiggly(g.pointCount());
+  for (std::size_t n = 0; n < linear.size(); ++n) {
+    const glm::dvec3& p = hexes.nodes[n];
+    linear[n] = 3.0 * p.x - p.y + 2.0 * p.z;
+    wiggly[n] = std::sin(double(n) * 1.7);
+  }
+  const ClipPlane oblique{g.position(2.2, 1.4, 0.9), glm::dvec3(0.3, -0.5, 0.8)};
+  const SectionTriangles fromGrid = cutGrid(g, linear, true, oblique);
+  const TetMesh tets = tetrahedralize(hexes);
+  const SectionTriangles fromCells = cutTetrahedra(tets, tets.nodeValues(hexes, linear), true, oblique);
+  double wrongWay = 0.0, ignored = 0.0;
+  const double area = areaFacing(fromGrid, oblique.normal, wrongWay);
+  EXPECT_GT(area, 0.1);
+  EXPECT_NEAR(area, areaFacing(fromCells, oblique.normal, ignored), 1e-12 * area + 1e-13);
+  EXPECT_EQ(wrongWay, 0.0);
+  ASSERT_EQ(fromGrid.values.size(), fromGrid.positions.size());
+  for (std::size_t k = 0; k < fromGrid.positions.size(); ++k) {
+    const glm::dvec3& p = fromGrid.positions[k];
+    EXPECT_NEAR(fromGrid.values[k], 3.0 * p.x - p.y + 2.0 * p.z, 1e-9);
+    EXPECT_NEAR(glm::dot(p - oblique.point, glm::normalize(oblique.normal)), 0.0, 1e-9);
+  }
+  // The plane of inline index 2 (through grid points): every corner of the section is a
+  // grid point, holding its own sample.
+  const ClipPlane inline2{g.position(2.0, 0.0, 0.0), glm::cross(g.axes[1], g.axes[2])};
+  const SectionTriangles layer = cutGrid(g, wiggly, true, inline2);
+  EXPECT_NEAR(areaFacing(layer, inline2.normal, wrongWay), 3.0 * 0.4 * 2.0 * 0.3, 1e-9);
+  ASSERT_FALSE(layer.positions.empty());
+  for (std::size_t k = 0; k < layer.positions.size(); ++k) {
+    const glm::dvec3 index = g.indexOf(layer.positions[k]);
+    const glm::dvec3 nearest = glm::round(index);
+    ASSERT_LT(glm::length(index - nearest), 1e-9) << "corner " << k << " is not a grid point";
+    EXPECT_EQ(layer.values[k], wiggly[g.pointIndex(std::size_t(nearest.x), std::size_t(nearest.y), std::size_t(nearest.z))]);
+  }
+  std::vector<double> perCell(g.cellCount());
+  for (std::size_t n = 0; n < perCell.size(); ++n) perCell[n] = double(n);
+  const SectionTriangles cells = cutGrid(g, perCell, false, oblique);
+  for (std::size_t t = 0; t + 2 < cells.values.size(); t += 3) {
+    EXPECT_EQ(cells.values[t], cells.values[t + 1]);
+    EXPECT_EQ(cells.values[t], cells.values[t + 2]);
+    const glm::dvec3 centre = g.indexOf((cells.positions[t] + cells.positions[t + 1] + cells.positions[t + 2]) / 3.0);
+    EXPECT_EQ(cells.values[t], double(std::size_t(centre.x) + 4 * (std::size_t(centre.y) + 3 * std::size_t(centre.z))));
+  }
+  EXPECT_TRUE(cutGrid(g, linear, true, ClipPlane{{1e3, 0, 0}, {1, 0, 0}}).positions.empty());
+}

@@ -80,6 +80,21 @@ class TfEditorTest : public QObject {
   }
   void cleanup() { panel_.reset(); }
 
+  // A large model's histogram comes from a subsample that still holds its extremes: the
+  // view spans the exact smallest and largest value even where the stride skips them.
+  void aLargeModelsHistogramKeepsItsExtremes() {
+    std::vector<double> values(3 * TfCurveWidget::kMaxHistogramValues + 7);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = double(i % 1000);
+    values[5] = -1234.5;   // not on the stride
+    values[values.size() - 2] = 98765.25;
+    values[11] = std::nan("");
+    panel_->curve().setData(values);
+    const auto [lo, hi] = panel_->curve().view();
+    const double pad = 0.02 * (98765.25 + 1234.5);
+    QVERIFY(std::abs(lo - (-1234.5 - pad)) < 1e-6);
+    QVERIFY(std::abs(hi - (98765.25 + pad)) < 1e-6);
+  }
+
   void startsFromTheHostsFunctionWithOpacityOverATenthOfTheModel() {
     QCOMPARE(panel_->model().referenceLength(), 1.0);
     QCOMPARE(int(panel_->model().points().size()), 2);

@@ -43,6 +43,8 @@ class Model {
   std::size_t cellCount() const;
   /// Cells per type, as Mesh::countsByType (a grid's are all hex8).
   std::map<CellType, std::size_t> countsByType() const;
+  /// Position of node n (mesh().nodes[n], or a grid point without building the cells).
+  glm::dvec3 nodePosition(std::size_t node) const;
   /// Bounds of the used nodes (mesh().bounds()), or of a grid without building its cells.
   Bounds bounds() const;
 
