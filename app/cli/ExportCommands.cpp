@@ -94,7 +94,11 @@ int runSurface(const QStringList& args) {
       printError(QString("%1 is an element result (constant per cell): iso-surfaces need a nodal result").arg(parser.value(field)));
       return 1;
     }
-    const auto surface = extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue, terminalProgress("extracting"));
+    const Model& model = session->model();
+    const auto surface = !model.meshBuilt()  // a grid: its cells split on the fly, no tetrahedra built
+                             ? extractIsoSurface(*model.grid, view.values, isoValue, terminalProgress("extracting"))
+                             : extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue,
+                                                 terminalProgress("extracting"));
     if (surface.mesh.n_faces() == 0)
       std::fprintf(stderr, "volpost: warning: %s = %g is outside the values [%g, %g]: the iso-surface is empty\n",
                    qPrintable(parser.value(field)), isoValue, view.range.min, view.range.max);

@@ -162,10 +162,12 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
   isoTriangles_ = 0;
   isoCorners_.clear();
   if (key.empty()) return;
-  const TetMesh& tets = session_->tetrahedra();
-  const std::vector<double> values = session_->tetValues(*view);
+  const Model& model = session_->model();
+  const bool grid = !model.meshBuilt();  // a grid's cells are split on the fly, no tetrahedra built
+  const std::vector<double> values = grid ? std::vector<double>() : session_->tetValues(*view);
   for (const auto& iso : surfaces) {
-    const ExtractedSurface extracted = extractIsoSurface(tets, values, iso.value);
+    const ExtractedSurface extracted = grid ? extractIsoSurface(*model.grid, view->values, iso.value)
+                                            : extractIsoSurface(session_->tetrahedra(), values, iso.value);
     std::vector<glm::dvec3> corners;
     corners.reserve(extracted.mesh.n_faces() * 3);
     for (const auto f : extracted.mesh.faces())

@@ -25,4 +25,11 @@ struct ExtractedSurface {
 ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> nodeValues, double iso,
                                    const Progress& progress = {});
 
+/// The same for a regular grid's point values without building its cells or tetrahedra:
+/// each cell the value crosses is split into six tets on the fly (one split in every cell,
+/// so the surface is watertight). Throws std::invalid_argument on a value count that is
+/// not one per point.
+ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const double> pointValues, double iso,
+                                   const Progress& progress = {});
+
 }  // namespace volpost

@@ -72,6 +72,45 @@ TEST(IsoSurfaceExtraction, IsoValueOnNodesAndNaNsDoNotBreakIt) {
   EXPECT_THROW(extractIsoSurface(tets, std::vector<double>(3, 0.0), 1.0), std::invalid_argument);
 }
 
+// A grid's iso-surface without its cells: on a rotated, left-handed grid a linear field's
+// surface is its plane with the plane's area, facing the gradient; a sphere inside is
+// closed (neighbouring cells share their vertices); a NaN or a wrong count does no harm.
+TEST(IsoSurfaceExtraction, AGridsSurfaceComesFromItsCellsSplitOnTheFly) {
+  RegularGrid g;
+  g.dims = {13, 13, 13};
+  g.origin = {100.0, 50.0, 0.0};
+  const double c = std::cos(0.5), s = std::sin(0.5);
+  g.axes = {glm::dvec3(c, s, 0.0), glm::dvec3(-s, c, 0.0), glm::dvec3(0.0, 0.0, -1.0)};  // left-handed
+  const Mesh points = hexahedraOfGrid(g);
+  const glm::dvec3 gradientDirection = glm::normalize(glm::dvec3(c, s, 0.0));
+  std::vector<double> linear, sphere;
+  const glm::dvec3 centre = g.position(6, 6, 6);
+  for (const glm::dvec3& p : points.nodes) {
+    linear.push_back(glm::dot(p - g.origin, gradientDirection));  // index i along the first axis
+    sphere.push_back(glm::length(p - centre));
+  }
+  const ExtractedSurface plane = extractIsoSurface(g, linear, 4.3);
+  EXPECT_NEAR(area(plane), 12.0 * 12.0, 1e-3);
+  SurfaceMesh m = plane.mesh;
+  m.request_face_normals();
+  m.update_face_normals();
+  for (auto f : m.faces()) {
+    const auto n = m.normal(f);
+    EXPECT_GT(double(n[0]) * gradientDirection.x + double(n[1]) * gradientDirection.y, 0.99);
+  }
+  const ExtractedSurface ball = extractIsoSurface(g, sphere, 4.0);
+  std::size_t boundaryEdges = 0;
+  for (auto e : ball.mesh.edges()) boundaryEdges += ball.mesh.is_boundary(e) ? 1 : 0;
+  EXPECT_EQ(boundaryEdges, 0u);
+  EXPECT_NEAR(area(ball), 4.0 * M_PI * 16.0, 0.05 * 4.0 * M_PI * 16.0);
+  // The same as the grid's tetrahedralized hexahedra would give, to rounding of the split.
+  const TetMesh tets = tetrahedralize(points);
+  EXPECT_NEAR(area(ball), area(extractIsoSurface(tets, tets.nodeValues(points, sphere), 4.0)), 0.01 * area(ball));
+  sphere[g.pointIndex(6, 6, 2)] = std::nan("");
+  EXPECT_GT(extractIsoSurface(g, sphere, 4.0).mesh.n_faces(), 0u);
+  EXPECT_THROW(extractIsoSurface(g, std::vector<double>(3, 0.0), 1.0), std::invalid_argument);
+}
+
 TEST(PointLocator, InterpolatesLinearFieldsExactlyAndRejectsOutsidePoints) {
   const TetMesh tets = tetrahedralize(tetGrid(5, 3, 4, glm::dvec3(1e6, -2.0, 0.5), 0.25));
   const auto f = [](const glm::dvec3& p) { return 3.0 * (p.x - 1e6) - 2.0 * p.y + 0.5 * p.z; };
