@@ -1,9 +1,10 @@
 #version 450 core
 #include "common/clip_planes.glsl"
 in vec3 vModelPosition;
+in float vFade;
 uniform vec3 color;
 out vec4 fragColor;
 void main() {
-  if (clippedAway(vModelPosition)) discard;
-  fragColor = vec4(color, 1.0);
+  if (clippedAway(vModelPosition) || vFade <= 0.0) discard;
+  fragColor = vec4(color, vFade);
 }

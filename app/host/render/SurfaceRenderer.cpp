@@ -59,9 +59,13 @@ void SurfaceRenderer::initialize() {
   glEnableVertexArrayAttrib(vao, 3);
   glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, offsetof(SurfaceVertex, cell));
   for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vao, a, 0);
-  glEnableVertexArrayAttrib(edgeVao_.id(), 0);
-  glVertexArrayAttribFormat(edgeVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(edgeVao_.id(), 0, 0);
+  // An edge vertex: its position, the segment's other end and how far apart the edges
+  // around it are over its length (for how crowded it is on screen).
+  for (GLuint a = 0; a < 3; ++a) {
+    glEnableVertexArrayAttrib(edgeVao_.id(), a);
+    glVertexArrayAttribFormat(edgeVao_.id(), a, a < 2 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
+    glVertexArrayAttribBinding(edgeVao_.id(), a, 0);
+  }
   // An empty buffer still needs storage to be bound as an SSBO.
   const float none = kNoValue;
   glNamedBufferData(scalars_.id(), sizeof none, &none, GL_DYNAMIC_DRAW);
@@ -108,15 +112,34 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
     const auto p = m.point(v);
     nodePos[m.property(surface.nodeOfVertex, v)] = glm::vec3(p[0], p[1], p[2]);
   }
-  for (const auto& e : surface.edges)
+  // How far apart the edges are near each node: its shortest edge. A long edge between
+  // nodes whose other edges are short (the 25 m lines on a 4 ms time side) crowds its
+  // neighbours as closely as those are short, and fades with them.
+  std::unordered_map<NodeIndex, float> shortestAt;
+  const auto lengthOf = [&](const std::array<NodeIndex, 2>& e) {
+    return glm::length(nodePos.at(e[1]) - nodePos.at(e[0]));
+  };
+  std::vector<float> spacing;
+  for (const auto& e : surface.edges) {
+    if (!nodePos.count(e[0]) || !nodePos.count(e[1])) continue;
+    const float length = lengthOf(e);
     for (NodeIndex n : e) {
-      const auto it = nodePos.find(n);
-      if (it == nodePos.end()) continue;
-      edgeData.insert(edgeData.end(), {it->second.x, it->second.y, it->second.z});
+      const auto [it, added] = shortestAt.try_emplace(n, length);
+      if (!added) it->second = std::min(it->second, length);
     }
+  }
+  for (const auto& e : surface.edges) {
+    const auto a = nodePos.find(e[0]), b = nodePos.find(e[1]);
+    if (a == nodePos.end() || b == nodePos.end()) continue;
+    edgeData.insert(edgeData.end(), {a->second.x, a->second.y, a->second.z, b->second.x, b->second.y, b->second.z});
+    const float length = lengthOf(e);
+    spacing.push_back(length > 0.0f ? std::min(shortestAt[e[0]], shortestAt[e[1]]) / length : 1.0f);
+  }
   edgeVertices_ = GLsizei(edgeData.size() / 3);
+  edgeData = withOtherEnds(edgeData, spacing);
+  fadeDenseEdges_ = true;
   glNamedBufferData(edgeVbo_.id(), GLsizeiptr(edgeData.size() * sizeof(float)), edgeData.data(), GL_STATIC_DRAW);
-  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 3 * sizeof(float));
+  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 7 * sizeof(float));
   gl::check("SurfaceRenderer::setSurface");
 }
 
@@ -148,10 +171,13 @@ void SurfaceRenderer::setLines(const std::vector<glm::dvec3>& endpoints, const g
     const glm::vec3 q(p - origin);
     edgeData.insert(edgeData.end(), {q.x, q.y, q.z});
   }
+  edgeData.resize(endpoints.size() / 2 * 6);
   edgeVertices_ = GLsizei(endpoints.size() / 2 * 2);
-  glNamedBufferData(edgeVbo_.id(), GLsizeiptr(std::max<std::size_t>(edgeData.size(), 3) * sizeof(float)),
+  edgeData = withOtherEnds(edgeData, {});
+  fadeDenseEdges_ = false;  // an outline: always drawn
+  glNamedBufferData(edgeVbo_.id(), GLsizeiptr(std::max<std::size_t>(edgeData.size(), 7) * sizeof(float)),
                     edgeData.empty() ? nullptr : edgeData.data(), GL_STATIC_DRAW);
-  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 3 * sizeof(float));
+  glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 7 * sizeof(float));
   gl::check("SurfaceRenderer::setLines");
 }
 
@@ -172,6 +198,20 @@ void SurfaceRenderer::clearScalars() { location_ = -1; }
 void SurfaceRenderer::setColorMap(const ColorMap& map) {
   const auto texels = map.rgba8(kColorMapTexels);
   glTextureSubImage1D(colorMap_.id(), 0, 0, kColorMapTexels, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+}
+
+// Each segment's two vertices as (position, other end, spacing over length): 3 floats per
+// point in, 7 out. No spacing given: 1 (the segment's own length).
+std::vector<float> SurfaceRenderer::withOtherEnds(const std::vector<float>& segments, const std::vector<float>& spacing) {
+  std::vector<float> out;
+  out.reserve(segments.size() / 6 * 14);
+  for (std::size_t i = 0; i + 5 < segments.size(); i += 6) {
+    const float* a = &segments[i];
+    const float* b = &segments[i + 3];
+    const float ratio = i / 6 < spacing.size() ? spacing[i / 6] : 1.0f;
+    out.insert(out.end(), {a[0], a[1], a[2], b[0], b[1], b[2], ratio, b[0], b[1], b[2], a[0], a[1], a[2], ratio});
+  }
+  return out;
 }
 
 void SurfaceRenderer::render(const RenderContext& ctx) {
@@ -216,12 +256,17 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   if (showEdges_ && edgeVertices_ > 0) {
     const GLuint e = edgeProgram_.id();
     glUseProgram(e);
+    glProgramUniform2f(e, glGetUniformLocation(e, "viewportSize"), float(ctx.width), float(ctx.height));
+    glProgramUniform1f(e, glGetUniformLocation(e, "densePixels"), fadeDenseEdges_ ? kDenseEdgePixels : 0.0f);
+    glEnable(GL_BLEND);  // a fading edge blends over the face under it
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "modelView"), 1, GL_FALSE, glm::value_ptr(view));
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "projection"), 1, GL_FALSE, glm::value_ptr(proj));
     glProgramUniform3fv(e, glGetUniformLocation(e, "color"), 1, glm::value_ptr(edgeColor));
     setClipUniforms(e, clipPlanes_, origin_, clipTolerance_);
     glBindVertexArray(edgeVao_.id());
     glDrawArrays(GL_LINES, 0, edgeVertices_);
+    glDisable(GL_BLEND);
   }
   glBindVertexArray(0);
   glUseProgram(0);

@@ -44,7 +44,13 @@ class SurfaceRenderer : public Renderer {
   /// No result: the surface is drawn in a neutral gray.
   void clearScalars();
   void setColorMap(const ColorMap& map);
+  /// Each element edge fades out as the distance on screen between it and its neighbours
+  /// (the shortest edge at either end, scaled as the edge itself is projected) falls from
+  /// kDenseEdgePixels to a third of it: a 256 x 256 face of a seismic cube, or a fine mesh seen whole, would
+  /// otherwise be painted over in edge color. Zooming in brings the edges back. Outlines
+  /// (setLines) are always drawn in full.
   void setShowEdges(bool show) { showEdges_ = show; }
+  static constexpr float kDenseEdgePixels = 6.0f;
   /// Faces off: only the element edges are drawn (over a volume).
   void setShowFaces(bool show) { showFaces_ = show; }
   bool showEdges() const { return showEdges_; }
@@ -68,6 +74,8 @@ class SurfaceRenderer : public Renderer {
   float min_ = 0.f, max_ = 1.f;
   bool showEdges_ = true, showFaces_ = true, lighting_ = true;
   float opacity_ = 1.0f;
+  static std::vector<float> withOtherEnds(const std::vector<float>& segments, const std::vector<float>& spacing);
+  bool fadeDenseEdges_ = true;  ///< element edges fade where they crowd; outlines do not
   glm::dvec3 origin_{0.0};  ///< what the uploaded positions are relative to
   std::vector<ClipPlane> clipPlanes_;
   double clipTolerance_ = 0.0;

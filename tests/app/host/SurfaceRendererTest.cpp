@@ -194,3 +194,33 @@ TEST_F(HeadlessRender, FarFromOriginModelRendersLikeTheOriginalOne) {
   for (std::size_t i = 0; i < reference.size(); i += 4) differ += std::abs(int(reference[i]) - int(moved[i])) > 2;
   EXPECT_LE(differ, kSize);  // a few edge pixels may round differently
 }
+
+// Element edges closer than a few pixels fade out instead of painting the faces over, and
+// are drawn in full when the view is close enough to tell them apart.
+TEST_F(HeadlessRender, DenseElementEdgesFadeWhenTheViewMovesAway) {
+  renderer_.setShowEdges(true);
+  renderer_.edgeColor = glm::vec3(0.0f);  // black edges on the default gray faces
+  int shaded = 0;  // pixels between the faces' gray and black: a faded edge
+  const auto darkPixels = [&] {
+    const std::vector<std::uint8_t> image = draw();
+    int dark = 0;
+    shaded = 0;
+    for (std::size_t i = 0; i < image.size(); i += 4) {
+      if (isBackground(&image[i])) continue;
+      dark += image[i] < 40;
+      shaded += image[i] >= 40 && image[i] < 180;
+    }
+    return dark;
+  };
+  const int apart = darkPixels();  // unit edges about 19 pixels long
+  EXPECT_GT(apart, 3 * kSize) << "the 5 x 5 grid lines are drawn";
+  camera_.zoom(1.0 / 5.0);  // about 4 pixels an edge: fading
+  EXPECT_EQ(darkPixels(), 0) << "faded edges are gray over the faces, not black";
+  EXPECT_GT(shaded, 10) << "but still drawn";
+  camera_.zoom(1.0 / 3.0);  // about 1.3 pixels an edge
+  EXPECT_EQ(darkPixels(), 0) << "the faces show, not a black blot";
+  std::vector<std::uint8_t> image = draw();
+  int face = 0;
+  for (std::size_t i = 0; i < image.size(); i += 4) face += !isBackground(&image[i]);
+  EXPECT_GT(face, 10) << "the plate is still drawn";
+}
