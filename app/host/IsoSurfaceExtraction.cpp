@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "host/IsoSurfaceExtraction.hpp"
+#include "host/GridCellTets.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -133,8 +134,6 @@ ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const doub
   IsoBuilder builder(out, values, iso, [&grid, nx, ny](NodeIndex n) {
     return grid.position(double(n % nx), double((n / nx) % ny), double(n / (nx * ny)));
   });
-  static constexpr std::array<std::array<int, 4>, 6> kTets = {{
-      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}}};
   for (std::size_t k = 0; k + 1 < grid.dims[2]; ++k) {
     for (std::size_t j = 0; j + 1 < ny; ++j)
       for (std::size_t i = 0; i + 1 < nx; ++i) {
@@ -146,7 +145,7 @@ ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const doub
           lo = std::min(lo, v), hi = std::max(hi, v);  // a NaN leaves both alone (its tets are skipped)
         }
         if (!(hi >= iso && lo < iso)) continue;  // all below, or all at or above: no crossing
-        for (const auto& t : kTets) builder.addTet({corner[std::size_t(t[0])], corner[std::size_t(t[1])],
+        for (const auto& t : kGridCellTets) builder.addTet({corner[std::size_t(t[0])], corner[std::size_t(t[1])],
                                                     corner[std::size_t(t[2])], corner[std::size_t(t[3])]});
       }
     progress.report(double(k + 1) / double(grid.dims[2] - 1));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "SectionCut.hpp"
+#include "host/GridCellTets.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -108,10 +109,6 @@ SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values
   const bool perNode = perNodeValues && values.size() == grid.pointCount();
   const bool perCell = !perNodeValues && values.size() == grid.cellCount();
   const double none = std::numeric_limits<double>::quiet_NaN();
-  // Corner c of a cell is (c & 1, c >> 1 & 1, c >> 2 & 1) in index steps; the six tets
-  // around the diagonal 0-7 (a path 0 -> one axis -> two axes -> 7 each).
-  static constexpr std::array<std::array<int, 4>, 6> kTets = {{
-      {0, 1, 3, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 6, 4, 7}, {0, 4, 5, 7}, {0, 5, 1, 7}}};
   const std::size_t cx = grid.dims[0] - 1, cy = grid.dims[1] - 1, cz = grid.dims[2] - 1;
   // A grid point within rounding of the plane is on it: a plane through a layer of points
   // (an inline, crossline or time slice) then shows those points and their samples exactly,
@@ -136,7 +133,7 @@ SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values
           v[std::size_t(c)] = perNode ? values[grid.pointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))]
                               : perCell ? values[i + cx * (j + cy * k)]
                                         : none;
-        for (const auto& t : kTets)
+        for (const auto& t : kGridCellTets)
           cutTetrahedron(out, {p[t[0]], p[t[1]], p[t[2]], p[t[3]]}, {d[t[0]], d[t[1]], d[t[2]], d[t[3]]},
                          {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, normal);
       }
