@@ -347,6 +347,30 @@ class VtuReading {
     }
     model->grid = grid;
     const std::array<long long, 3> low = {whole.e[0], whole.e[2], whole.e[4]};
+    // The type an image array is kept in: the pieces' own when they all share it and
+    // together cover the image (VTK's pieces do not overlap); else floats wide enough for
+    // it, so that a gap can be NaN (32-bit for small integers, 64-bit for the rest).
+    const auto imageSampleType = [](const std::vector<ImageArray>& parts, const std::array<std::size_t, 3>& size) {
+      std::size_t covered = 0;
+      bool same = !parts.empty();
+      for (const ImageArray& part : parts) {
+        const auto n = part.extent.points();
+        covered += n[0] * n[1] * n[2];
+        same = same && part.source.type == parts.front().source.type;
+      }
+      const NumericType type = same ? parts.front().source.type : NumericType::Float64;
+      const bool covers = same && covered == size[0] * size[1] * size[2];
+      switch (type) {
+        case NumericType::Int8: return covers ? SampleType::Int8 : SampleType::Float32;
+        case NumericType::UInt8: return covers ? SampleType::UInt8 : SampleType::Float32;
+        case NumericType::Int16: return covers ? SampleType::Int16 : SampleType::Float32;
+        case NumericType::UInt16: return covers ? SampleType::UInt16 : SampleType::Float32;
+        case NumericType::Int32: return covers ? SampleType::Int32 : SampleType::Float64;
+        case NumericType::UInt32: return covers ? SampleType::UInt32 : SampleType::Float64;
+        case NumericType::Float32: return SampleType::Float32;
+        default: return SampleType::Float64;  // 64-bit integers as doubles, as they are read
+      }
+    };
     for (const std::string& key : order) {
       const FieldLocation location = key[0] == 'n' ? FieldLocation::Node : FieldLocation::Cell;
       const int comps = components[key];
@@ -355,9 +379,14 @@ class VtuReading {
         for (std::size_t& n : size) n -= 1;
       const std::size_t entities = size[0] * size[1] * size[2];
       auto parts = std::make_shared<std::vector<ImageArray>>(std::move(arrays[key]));
-      // Every piece's values placed at its extent in the whole image (NaN where no piece is).
-      StepLoader loader = [parts, size, low, comps, entities, enc = enc_, path = path_](std::size_t) {
-        std::vector<double> all(entities * std::size_t(comps), NAN);
+      // Kept in the file's type when every piece has it and the pieces cover the image;
+      // else as floats wide enough for it, NaN where no piece is.
+      const SampleType stored = imageSampleType(*parts, size);
+      // Every piece's values placed at its extent in the whole image.
+      SampleLoader loader = [parts, size, low, comps, entities, stored, enc = enc_, path = path_](std::size_t) {
+        SampleArray all(stored, entities * std::size_t(comps));
+        if (stored == SampleType::Float32 || stored == SampleType::Float64)
+          for (std::size_t i = 0; i < all.size(); ++i) all.set(i, NAN);
         for (const ImageArray& part : *parts) {
           std::vector<double> v;
           try {
@@ -374,13 +403,18 @@ class VtuReading {
                                   gk = std::size_t(part.extent.e[4] - low[2]) + k;
                 if (at * std::size_t(comps) + std::size_t(comps) > v.size()) continue;
                 const std::size_t to = gi + size[0] * (gj + size[1] * gk);
-                for (int c = 0; c < comps; ++c) all[to * std::size_t(comps) + std::size_t(c)] = v[at * std::size_t(comps) + std::size_t(c)];
+                for (int c = 0; c < comps; ++c) {
+                  const double x = v[at * std::size_t(comps) + std::size_t(c)];
+                  // Text that does not fit its declared type ("300" in an Int8 array) is kept as written.
+                  if (!all.fitsExactly(x)) all = all.widenedTo(SampleType::Float64);
+                  all.set(to * std::size_t(comps) + std::size_t(c), x);
+                }
               }
         }
         return all;
       };
-      model->fields.push_back(std::make_shared<Field>(key.substr(2), location, comps, entities,
-                                                      std::vector<Step>{{"", 0.0}}, std::move(loader)));
+      model->fields.push_back(Field::fromSamples(key.substr(2), location, comps, entities, std::vector<Step>{{"", 0.0}},
+                                                 std::move(loader)));
     }
     return model;
   }

@@ -54,6 +54,10 @@ TEST_P(ImageData, ReadsTheGridAndItsArraysAsVtkWroteThem) {
         EXPECT_EQ(velocity->values(0)[3 * p + 2], double(k + 2));
       }
   for (std::size_t c = 0; c < 24; ++c) EXPECT_EQ(material->values(0)[c], double(c % 3));
+  // Kept in the types VTK wrote: 64-bit floats, 32-bit floats, 32-bit integers.
+  EXPECT_EQ(temperature->samples(0).type(), SampleType::Float64);
+  EXPECT_EQ(velocity->samples(0).type(), SampleType::Float32);
+  EXPECT_EQ(material->samples(0).type(), SampleType::Int32);
   // Every hexahedron is right-handed (the model checks would flag inverted ones).
   for (std::size_t c = 0; c < model->mesh().cellCount(); ++c) EXPECT_GT(signedCellVolume(model->mesh(), c), 0.0);
 }
@@ -78,6 +82,21 @@ TEST(ImageDataDefects, AreRefusedNamingTheLine) {
       EXPECT_GE(e.line(), 1) << e.what();
     }
   };
+  // Text that does not fit the declared type is kept as written, not clamped.
+  {
+    std::string odd = good;
+    const std::string from = "type=\"Int32\" Name=\"material\" format=\"ascii\" RangeMin=\"0\" RangeMax=\"2\">\n        0 1 2";
+    ASSERT_NE(odd.find(from), std::string::npos);
+    odd.replace(odd.find(from), from.size(), "type=\"Int8\" Name=\"material\" format=\"ascii\">\n        0 300 2.5");
+    std::ofstream(path, std::ios::binary) << odd;
+    const auto model = VtiReader().read(path, {});
+    const Field* material = model->findField("material");
+    ASSERT_TRUE(material);
+    EXPECT_EQ(material->samples(0).type(), SampleType::Float64);
+    EXPECT_EQ(material->values(0)[1], 300.0);
+    EXPECT_EQ(material->values(0)[2], 2.5);
+    EXPECT_EQ(material->values(0)[3], 0.0);
+  }
   refused("WholeExtent=\"1 5 0 3 2 4\"", "WholeExtent=\"1 5 0 3 2\"", "needs 6");
   refused("WholeExtent=\"1 5 0 3 2 4\"", "WholeExtent=\"1 5 0 3 4 4\"", "not 2D images");
   refused("Piece Extent=\"1 5 0 3 2 4\"", "Piece Extent=\"1 5 0 3 2 9\"", "outside the WholeExtent");
