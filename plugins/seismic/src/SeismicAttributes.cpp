@@ -2,6 +2,7 @@
 #include "SeismicAttributes.hpp"
 
 #include <kiss_fft.h>
+#include <volpost/core/WorkerThreads.hpp>
 
 #include <cmath>
 #include <complex>
@@ -95,20 +96,23 @@ void addSeismicAttributes(Model& model) {
           const std::vector<double> x = amplitude->valuesCopy(step);  // the amplitude keeps no double copy
           SampleArray out(SampleType::Float32, x.size());
           const std::size_t traces = grid.dims[0] * grid.dims[1], samples = grid.dims[2];
-          std::vector<double> trace(samples);
-          for (std::size_t t = 0; t < traces; ++t) {
-            for (std::size_t k = 0; k < samples; ++k) trace[k] = x[t + traces * k];
-            std::vector<double> result;
-            if (kind == Kind::Rms) {
-              result = rmsAmplitude(trace, kRmsWindow);
-            } else {
-              TraceAttributes a = traceAttributes(trace, dt);
-              result = kind == Kind::Envelope ? std::move(a.envelope)
-                       : kind == Kind::Phase  ? std::move(a.phaseDegrees)
-                                              : std::move(a.frequencyHz);
+          const auto computeTraces = [&](std::size_t first, std::size_t end) {
+            std::vector<double> trace(samples);
+            for (std::size_t t = first; t < end; ++t) {
+              for (std::size_t k = 0; k < samples; ++k) trace[k] = x[t + traces * k];
+              std::vector<double> result;
+              if (kind == Kind::Rms) {
+                result = rmsAmplitude(trace, kRmsWindow);
+              } else {
+                TraceAttributes a = traceAttributes(trace, dt);
+                result = kind == Kind::Envelope ? std::move(a.envelope)
+                         : kind == Kind::Phase  ? std::move(a.phaseDegrees)
+                                                : std::move(a.frequencyHz);
+              }
+              for (std::size_t k = 0; k < samples; ++k) out.set(t + traces * k, result[k]);
             }
-            for (std::size_t k = 0; k < samples; ++k) out.set(t + traces * k, result[k]);
-          }
+          };
+          forEachChunk(traces, 256, computeTraces);  // on all cores: each chunk writes its own traces
           return out;
         });
   };
