@@ -115,28 +115,56 @@ SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values
   // without slivers between points that rounding put on both sides. Every cell computes a
   // point's distance the same way, so neighbours still agree.
   const double onPlane = 1e-9 * std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
-  for (std::size_t k = 0; k < cz; ++k)
-    for (std::size_t j = 0; j < cy; ++j)
-      for (std::size_t i = 0; i < cx; ++i) {
-        std::array<glm::dvec3, 8> p;
-        std::array<double, 8> d;
-        int kept = 0;
-        for (int c = 0; c < 8; ++c) {
-          p[std::size_t(c)] = grid.position(double(i + (c & 1)), double(j + (c >> 1 & 1)), double(k + (c >> 2 & 1)));
-          const double distance = signedDistance(p[std::size_t(c)], plane, normal);
-          d[std::size_t(c)] = std::abs(distance) <= onPlane ? 0.0 : distance;
-          kept += d[std::size_t(c)] >= 0.0;
-        }
-        if (kept == 0 || kept == 8) continue;
-        std::array<double, 8> v;
-        for (int c = 0; c < 8; ++c)
-          v[std::size_t(c)] = perNode ? values[grid.pointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))]
-                              : perCell ? values[i + cx * (j + cy * k)]
-                                        : none;
-        for (const auto& t : kGridCellTets)
-          cutTetrahedron(out, {p[t[0]], p[t[1]], p[t[2]], p[t[3]]}, {d[t[0]], d[t[1]], d[t[2]], d[t[3]]},
-                         {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, normal);
+  const auto cutCell = [&](std::size_t i, std::size_t j, std::size_t k) {
+    std::array<glm::dvec3, 8> p;
+    std::array<double, 8> d;
+    int kept = 0;
+    for (int c = 0; c < 8; ++c) {
+      p[std::size_t(c)] = grid.position(double(i + (c & 1)), double(j + (c >> 1 & 1)), double(k + (c >> 2 & 1)));
+      const double distance = signedDistance(p[std::size_t(c)], plane, normal);
+      d[std::size_t(c)] = std::abs(distance) <= onPlane ? 0.0 : distance;
+      kept += d[std::size_t(c)] >= 0.0;
+    }
+    if (kept == 0 || kept == 8) return;
+    std::array<double, 8> v;
+    for (int c = 0; c < 8; ++c)
+      v[std::size_t(c)] = perNode ? values[grid.pointIndex(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))]
+                          : perCell ? values[i + cx * (j + cy * k)]
+                                    : none;
+    for (const auto& t : kGridCellTets)
+      cutTetrahedron(out, {p[t[0]], p[t[1]], p[t[2]], p[t[3]]}, {d[t[0]], d[t[1]], d[t[2]], d[t[3]]},
+                     {v[t[0]], v[t[1]], v[t[2]], v[t[3]]}, normal);
+  };
+  // Only the cells near the plane: the distance is linear in the indices, so along the axis
+  // it changes most on (m), each column of cells (u, v) meets the plane where the distance
+  // at its four edges along m is zero. A slice of a 256^3 cube visits 65K cells, not 16M.
+  const std::array<std::size_t, 3> cells = {cx, cy, cz};
+  const double d0 = glm::dot(grid.origin - plane.point, normal);
+  const std::array<double, 3> step = {glm::dot(grid.axes[0], normal), glm::dot(grid.axes[1], normal),
+                                      glm::dot(grid.axes[2], normal)};
+  int m = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(step[std::size_t(a)]) > std::abs(step[std::size_t(m)])) m = a;
+  const int u = (m + 1) % 3, w = (m + 2) % 3;
+  for (std::size_t b = 0; b < cells[std::size_t(w)]; ++b)
+    for (std::size_t a = 0; a < cells[std::size_t(u)]; ++a) {
+      double lo = INFINITY, hi = -INFINITY;  // where along m the column's four edges cross the plane
+      for (int c = 0; c < 4; ++c) {
+        const double at = d0 + double(a + (c & 1)) * step[std::size_t(u)] + double(b + (c >> 1)) * step[std::size_t(w)];
+        const double root = -at / step[std::size_t(m)];
+        lo = std::min(lo, root), hi = std::max(hi, root);
       }
+      const double last = double(cells[std::size_t(m)] - 1);
+      if (!(hi >= -1.0 && lo <= last + 1.0)) continue;  // the plane passes beside the column
+      // One cell more on each side: rounding, and points snapped onto the plane.
+      const std::size_t first = std::size_t(std::clamp(std::floor(lo) - 1.0, 0.0, last));
+      const std::size_t end = std::size_t(std::clamp(std::floor(hi) + 1.0, 0.0, last));
+      for (std::size_t q = first; q <= end; ++q) {
+        std::array<std::size_t, 3> index{};
+        index[std::size_t(m)] = q, index[std::size_t(u)] = a, index[std::size_t(w)] = b;
+        cutCell(index[0], index[1], index[2]);
+      }
+    }
   return out;
 }
 
