@@ -177,12 +177,10 @@ ProbeResult probeGrid(const ModelSession& session, const RegularGrid& grid, cons
   const Model& model = session.model();
   std::optional<NodeIndex> atNode;
   double nearest = INFINITY;
-  const std::size_t base0 = grid.pointIndex(base[0], base[1], base[2]);
   for (const NodeIndex n : corners) {
-    const std::size_t offset = n - base0;  // di + nx * (dj + ny * dk), each 0 or 1
-    const std::size_t di = offset % grid.dims[0], dj = (offset / grid.dims[0]) % grid.dims[1],
-                      dk = offset / (grid.dims[0] * grid.dims[1]);
-    weights.emplace_back(n, (di ? f.x : 1.0 - f.x) * (dj ? f.y : 1.0 - f.y) * (dk ? f.z : 1.0 - f.z));
+    const auto [i, j, k] = grid.pointIndices(n);  // each base or base + 1
+    weights.emplace_back(n, (i > base[0] ? f.x : 1.0 - f.x) * (j > base[1] ? f.y : 1.0 - f.y) *
+                                (k > base[2] ? f.z : 1.0 - f.z));
     const glm::dvec3 p = model.nodePosition(n);
     positions.push_back(p);
     r.nodeIds.push_back(std::int64_t(n) + 1);

@@ -131,9 +131,7 @@ ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const doub
   ExtractedSurface out;
   out.origin = grid.bounds().center();
   const std::size_t nx = grid.dims[0], ny = grid.dims[1];
-  IsoBuilder builder(out, values, iso, [&grid, nx, ny](NodeIndex n) {
-    return grid.position(double(n % nx), double((n / nx) % ny), double(n / (nx * ny)));
-  });
+  IsoBuilder builder(out, values, iso, [&grid](NodeIndex n) { return grid.pointPosition(n); });
   for (std::size_t k = 0; k + 1 < grid.dims[2]; ++k) {
     for (std::size_t j = 0; j + 1 < ny; ++j)
       for (std::size_t i = 0; i + 1 < nx; ++i) {

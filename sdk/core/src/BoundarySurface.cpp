@@ -67,10 +67,7 @@ struct GridCells {
     return corners;
   }
   CellType type(std::size_t) const { return CellType::Hex8; }
-  glm::dvec3 position(NodeIndex node) const {
-    const std::size_t nx = grid.dims[0], ny = grid.dims[1];
-    return grid.position(double(node % nx), double((node / nx) % ny), double(node / (nx * ny)));
-  }
+  glm::dvec3 position(NodeIndex node) const { return grid.pointPosition(node); }
   std::size_t nodeCount() const { return grid.pointCount(); }
 };
 
@@ -201,10 +198,6 @@ BoundarySurface extractBoundary(const RegularGrid& grid, const Progress& progres
   SurfaceBuilder builder(cells, out);
   const std::array<std::size_t, 3> n = {grid.dims[0] - 1, grid.dims[1] - 1, grid.dims[2] - 1};
   const CellTopology& hex = topology(CellType::Hex8);
-  const auto pointIndexOf = [&](NodeIndex p) {
-    return std::array<std::size_t, 3>{p % grid.dims[0], (p / grid.dims[0]) % grid.dims[1],
-                                      p / (grid.dims[0] * grid.dims[1])};
-  };
   for (std::size_t k = 0; k < n[2]; ++k) {
     for (std::size_t j = 0; j < n[1]; ++j)
       for (std::size_t i = 0; i < n[0]; ++i) {
@@ -224,7 +217,7 @@ BoundarySurface extractBoundary(const RegularGrid& grid, const Progress& progres
             for (const std::size_t end : {std::size_t(0), grid.dims[std::size_t(a)] - 1}) {
               bool all = at[std::size_t(a)] == (end == 0 ? 0 : n[std::size_t(a)] - 1);
               for (int c = 0; c < face.size && all; ++c)
-                all = pointIndexOf(hexCorners[std::size_t(face.corners[c])])[std::size_t(a)] == end;
+                all = grid.pointIndices(hexCorners[std::size_t(face.corners[c])])[std::size_t(a)] == end;
               onSide = onSide || all;
             }
           if (!onSide) continue;

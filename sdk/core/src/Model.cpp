@@ -56,9 +56,7 @@ std::map<CellType, std::size_t> Model::countsByType() const {
 }
 
 glm::dvec3 Model::nodePosition(std::size_t node) const {
-  if (meshBuilt()) return mesh().nodes[node];
-  const std::size_t nx = grid->dims[0], ny = grid->dims[1];
-  return grid->position(double(node % nx), double((node / nx) % ny), double(node / (nx * ny)));
+  return meshBuilt() ? mesh().nodes[node] : grid->pointPosition(node);
 }
 
 Bounds Model::bounds() const { return meshBuilt() ? mesh().bounds() : grid->bounds(); }

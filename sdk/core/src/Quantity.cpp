@@ -156,10 +156,10 @@ double scalarOf(const Quantity& q, const double* t, int nc) {
 std::vector<double> evaluate(const Field& field, const Quantity& q, std::size_t step) {
   const int nc = field.components();
   checkQuantityFits(q, field.name(), nc);
-  if (field.storesSamples() && nc == 1 && !field.isLoaded(step)) {
+  if (field.storesSamples() && nc == 1) {
     // A scalar kept in the file's type (a 16-bit seismic cube): converted straight into the
     // result, so the field never holds a double copy of its samples.
-    std::vector<double> out = field.samples(step).toDoubles();
+    std::vector<double> out = field.valuesCopy(step);
     for (double& x : out) x = scalarOf(q, &x, 1);
     return out;
   }

@@ -37,6 +37,15 @@ struct RegularGrid {
   std::size_t pointCount() const { return dims[0] * dims[1] * dims[2]; }
   std::size_t cellCount() const;
   std::size_t pointIndex(std::size_t i, std::size_t j, std::size_t k) const { return i + dims[0] * (j + dims[1] * k); }
+  /// (i, j, k) of point `point` (the inverse of pointIndex).
+  std::array<std::size_t, 3> pointIndices(std::size_t point) const {
+    return {point % dims[0], (point / dims[0]) % dims[1], point / (dims[0] * dims[1])};
+  }
+  /// World position of point `point` (a node of the grid's hexahedra, without them).
+  glm::dvec3 pointPosition(std::size_t point) const {
+    const auto [i, j, k] = pointIndices(point);
+    return position(double(i), double(j), double(k));
+  }
   glm::dvec3 position(double i, double j, double k) const { return origin + i * axes[0] + j * axes[1] + k * axes[2]; }
   /// Columns are the three axes: world = origin + indexToWorld() * (i, j, k).
   glm::dmat3 indexToWorld() const { return glm::dmat3(axes[0], axes[1], axes[2]); }
