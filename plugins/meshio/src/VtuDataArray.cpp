@@ -24,39 +24,64 @@ std::uint64_t headerValue(const std::uint8_t* p, const VtuEncoding& enc) {
   return std::uint64_t(toIntegers(p, 1, enc.headerType, enc.bigEndian)[0]);
 }
 
-// The bytes the array's binary data starts with: its header, then (compressed) blocks.
-struct BinaryView {
-  std::vector<std::uint8_t> decoded;  // owned bytes when base64 was decoded
-  const std::uint8_t* data = nullptr;
-  std::size_t size = 0;
-};
-
-BinaryView binaryBytes(const VtuArraySource& src) {
-  BinaryView view;
-  const std::string& f = *src.file;
-  if (src.format == VtuArraySource::Format::Appended) {
-    if (src.appendedOffset >= src.end - src.begin)
-      fail(src, "offset " + std::to_string(src.appendedOffset) + " is beyond the appended data (" +
-                    std::to_string(src.end - src.begin) + " bytes; the file is truncated?)");
-    const std::size_t at = src.begin + src.appendedOffset;
-    if (!src.appendedBase64) {
-      view.data = reinterpret_cast<const std::uint8_t*>(f.data() + at);
-      view.size = src.end - at;
-      return view;
+// The binary bytes of one array (its header, then its values or compressed blocks) where
+// they lie: in memory (decoded first when they are base64) or in the file, read a piece at
+// a time, so that decoding never holds more than a chunk of them besides the result.
+class BinaryRun {
+ public:
+  explicit BinaryRun(const VtuArraySource& src) {
+    if (src.format == VtuArraySource::Format::Appended) {
+      if (src.appendedOffset >= src.end - src.begin)
+        fail(src, "offset " + std::to_string(src.appendedOffset) + " is beyond the appended data (" +
+                      std::to_string(src.end - src.begin) + " bytes; the file is truncated?)");
+      const std::size_t at = src.begin + src.appendedOffset;
+      size_ = src.end - at;
+      if (!src.appendedBase64) {
+        if (src.disk) {
+          disk_ = src.disk.get();
+          fileAt_ = at;
+        } else {
+          memory_ = reinterpret_cast<const std::uint8_t*>(src.file->data() + at);
+        }
+        return;
+      }
+      const std::string text = src.disk ? src.disk->readString(at, size_) : std::string(src.file->data() + at, size_);
+      auto d = decodeBase64(text);
+      if (!d) fail(src, "invalid base64 in the appended data");
+      owned_ = std::move(*d);
+    } else {
+      std::size_t err = 0;
+      auto d = decodeBase64(std::string_view(src.file->data() + src.begin, src.end - src.begin), &err);
+      if (!d) fail(src, "invalid base64 data (character " + std::to_string(err) + ")");
+      owned_ = std::move(*d);
     }
-    auto d = decodeBase64(std::string_view(f.data() + at, src.end - at));
-    if (!d) fail(src, "invalid base64 in the appended data");
-    view.decoded = std::move(*d);
-  } else {
-    std::size_t err = 0;
-    auto d = decodeBase64(std::string_view(f.data() + src.begin, src.end - src.begin), &err);
-    if (!d) fail(src, "invalid base64 data (character " + std::to_string(err) + ")");
-    view.decoded = std::move(*d);
+    memory_ = owned_.data();
+    size_ = owned_.size();
   }
-  view.data = view.decoded.data();
-  view.size = view.decoded.size();
-  return view;
-}
+  BinaryRun(const BinaryRun&) = delete;
+  BinaryRun& operator=(const BinaryRun&) = delete;
+
+  std::size_t size() const { return size_; }
+  /// `n` bytes from `at` (at + n <= size()): where they are in memory, or read into `scratch`.
+  const std::uint8_t* bytes(std::size_t at, std::size_t n, std::vector<std::uint8_t>& scratch) const {
+    if (memory_) return memory_ + at;
+    scratch.resize(n);
+    disk_->read(fileAt_ + at, n, scratch.data());
+    return scratch.data();
+  }
+  /// The `index`-th value of the array's header.
+  std::uint64_t header(std::size_t index, const VtuEncoding& enc) const {
+    std::vector<std::uint8_t> scratch;
+    return headerValue(bytes(index * sizeOf(enc.headerType), sizeOf(enc.headerType), scratch), enc);
+  }
+
+ private:
+  std::vector<std::uint8_t> owned_;  // base64, decoded
+  const std::uint8_t* memory_ = nullptr;
+  const DiskFile* disk_ = nullptr;
+  std::uint64_t fileAt_ = 0;
+  std::size_t size_ = 0;
+};
 
 struct BlockLayout {
   std::uint64_t blocks = 0, blockSize = 0, lastSize = 0;
@@ -64,22 +89,22 @@ struct BlockLayout {
   std::uint64_t rawBytes = 0;
 };
 
-BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const BinaryView& v) {
+BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const BinaryRun& run) {
   const std::size_t h = sizeOf(enc.headerType);
   BlockLayout b;
   if (!enc.compressed) {
-    if (v.size < h) fail(src, "data ends inside its header (truncated)");
+    if (run.size() < h) fail(src, "data ends inside its header (truncated)");
     b.headerBytes = h;
-    b.rawBytes = headerValue(v.data, enc);
+    b.rawBytes = run.header(0, enc);
     return b;
   }
-  if (v.size < 3 * h) fail(src, "data ends inside its compression header (truncated)");
-  b.blocks = headerValue(v.data, enc);
-  b.blockSize = headerValue(v.data + h, enc);
-  b.lastSize = headerValue(v.data + 2 * h, enc);
-  if (b.blocks > (v.size / h)) fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks (corrupt or truncated)");
+  if (run.size() < 3 * h) fail(src, "data ends inside its compression header (truncated)");
+  b.blocks = run.header(0, enc);
+  b.blockSize = run.header(1, enc);
+  b.lastSize = run.header(2, enc);
+  if (b.blocks > (run.size() / h)) fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks (corrupt or truncated)");
   b.headerBytes = (3 + b.blocks) * h;
-  if (v.size < b.headerBytes) fail(src, "data ends inside its compression header (truncated)");
+  if (run.size() < b.headerBytes) fail(src, "data ends inside its compression header (truncated)");
   // (blocks - 1) * blockSize + last, in arithmetic that cannot wrap: a hostile header
   // could otherwise claim 2^63-byte blocks whose total wraps to a few bytes.
   std::uint64_t full = 0, total = 0;
@@ -91,24 +116,21 @@ BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const
   return b;
 }
 
-std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding& enc) {
-  const BinaryView v = binaryBytes(src);
-  const BlockLayout b = blockLayout(src, enc, v);
-  if (!enc.compressed) {
-    if (v.size - b.headerBytes < b.rawBytes)
-      fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
-                    std::to_string(v.size - b.headerBytes) + " are there (truncated)");
-    return {v.data + b.headerBytes, v.data + b.headerBytes + b.rawBytes};
-  }
-  // Check the header against the data before allocating what it claims: every block must
-  // lie in the data, and zlib cannot expand more than about 1032:1.
+// The compressed size of every block, checked against the data before anything is
+// allocated for what the header claims: every block must lie in the data, and zlib cannot
+// expand more than about 1032:1.
+std::vector<std::uint64_t> compressedSizes(const VtuArraySource& src, const VtuEncoding& enc, const BinaryRun& run,
+                                           const BlockLayout& b) {
   const std::size_t h = sizeOf(enc.headerType);
+  std::vector<std::uint8_t> scratch;
+  const std::uint8_t* table = run.bytes(3 * h, std::size_t(b.blocks) * h, scratch);
+  std::vector<std::uint64_t> sizes(std::size_t(b.blocks));
   std::uint64_t compressedTotal = 0;
-  for (std::uint64_t k = 0; k < b.blocks; ++k) {
-    const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);
-    if (csize > v.size - b.headerBytes - compressedTotal)
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    sizes[k] = headerValue(table + k * h, enc);
+    if (sizes[k] > run.size() - b.headerBytes - compressedTotal)
       fail(src, "compressed block " + std::to_string(k) + " runs past the end of the data (truncated)");
-    compressedTotal += csize;
+    compressedTotal += sizes[k];
   }
   if (b.lastSize > b.blockSize || b.rawBytes > 1032 * compressedTotal + 64)
     fail(src, "compression header claims " + std::to_string(b.rawBytes) + " bytes from " + std::to_string(compressedTotal) +
@@ -116,20 +138,64 @@ std::vector<std::uint8_t> rawBytes(const VtuArraySource& src, const VtuEncoding&
   if (double(b.rawBytes) > double(memoryBudget()))
     fail(src, "decompresses to " + byteSizeText(double(b.rawBytes)) + ", more than the memory budget of " +
                   byteSizeText(double(memoryBudget())) + " (--memory-budget or VOLPOST_MEMORY_BUDGET)");
-  std::vector<std::uint8_t> out(b.rawBytes);
-  std::size_t in = b.headerBytes, done = 0;
-  for (std::uint64_t k = 0; k < b.blocks; ++k) {
-    const std::uint64_t csize = headerValue(v.data + (3 + k) * h, enc);
-    const std::uint64_t usize = (k + 1 == b.blocks && b.lastSize) ? b.lastSize : b.blockSize;
-    if (csize > v.size - in) fail(src, "compressed block " + std::to_string(k) + " runs past the end of the data (truncated)");
-    if (usize > out.size() - done) fail(src, "zlib block " + std::to_string(k) + " is larger than the header's total (corrupt)");
+  return sizes;
+}
+
+// Hands the array's values to consume(bytes, count, first) a run of whole values at a
+// time, in order: chunks of the raw data, or each zlib block as it is decompressed (a
+// value split between two blocks is carried over).
+template <typename Consume>
+void forEachValueRun(const VtuArraySource& src, const VtuEncoding& enc, const BinaryRun& run, const BlockLayout& b,
+                     Consume consume) {
+  const std::size_t valueSize = sizeOf(src.type);
+  std::vector<std::uint8_t> scratch;
+  if (!enc.compressed) {
+    if (run.size() - b.headerBytes < b.rawBytes)
+      fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
+                    std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
+    const std::size_t count = std::size_t(b.rawBytes / valueSize);
+    const std::size_t perChunk = std::size_t(1) << 19;  // values: a few MB of raw bytes and of their conversion
+    for (std::size_t first = 0; first < count; first += perChunk) {
+      const std::size_t n = std::min(perChunk, count - first);
+      consume(run.bytes(b.headerBytes + first * valueSize, n * valueSize, scratch), n, first);
+    }
+    return;
+  }
+  const std::vector<std::uint64_t> sizes = compressedSizes(src, enc, run, b);
+  std::vector<std::uint8_t> pending;  // decompressed bytes not yet handed over (less than a value)
+  std::size_t in = b.headerBytes, first = 0;
+  std::uint64_t done = 0;
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    const std::uint64_t usize = (k + 1 == sizes.size() && b.lastSize) ? b.lastSize : b.blockSize;
+    if (usize > b.rawBytes - done) fail(src, "zlib block " + std::to_string(k) + " is larger than the header's total (corrupt)");
+    const std::uint8_t* compressed = run.bytes(in, std::size_t(sizes[k]), scratch);
+    const std::size_t carried = pending.size();
+    pending.resize(carried + std::size_t(usize));
     uLongf destLen = uLongf(usize);
-    const int rc = uncompress(out.data() + done, &destLen, v.data + in, uLong(csize));
+    const int rc = uncompress(pending.data() + carried, &destLen, compressed, uLong(sizes[k]));
     if (rc != Z_OK || destLen != usize)
       fail(src, "zlib block " + std::to_string(k) + " does not decompress (" + (rc == Z_OK ? "wrong size" : zError(rc)) + ")");
-    in += csize;
+    in += std::size_t(sizes[k]);
     done += usize;
+    const std::size_t whole = pending.size() / valueSize;
+    if (whole > 0) consume(pending.data(), whole, first);
+    first += whole;
+    pending.erase(pending.begin(), pending.begin() + std::ptrdiff_t(whole * valueSize));
   }
+}
+
+// The array's values converted by convert(bytes, count, out) into a vector of its count.
+template <typename Out, typename Convert>
+std::vector<Out> decodeBinary(const VtuArraySource& src, const VtuEncoding& enc, Convert convert) {
+  const BinaryRun run(src);
+  const BlockLayout b = blockLayout(src, enc, run);
+  if (!enc.compressed && run.size() - b.headerBytes < b.rawBytes)
+    fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
+                  std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
+  std::vector<Out> out(std::size_t(b.rawBytes / sizeOf(src.type)));
+  forEachValueRun(src, enc, run, b, [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) {
+    convert(bytes, std::min(count, out.size() - std::min(first, out.size())), first, out.data() + first);
+  });
   return out;
 }
 
@@ -157,31 +223,11 @@ std::vector<double> asciiValues(const VtuArraySource& src) {
 
 std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc) {
   if (src.format == VtuArraySource::Format::Ascii) return asciiValues(src).size();
-  const BinaryView v = binaryBytes(src);
-  const BlockLayout b = blockLayout(src, enc, v);
+  const BinaryRun run(src);
+  const BlockLayout b = blockLayout(src, enc, run);
   if (b.rawBytes % sizeOf(src.type)) fail(src, "byte count " + std::to_string(b.rawBytes) + " is not a whole number of values");
   return std::size_t(b.rawBytes / sizeOf(src.type));
 }
-
-namespace {
-
-// Raw appended data that is not compressed is decoded where it lies in the file: no copy
-// of its bytes (at 100M tets, 3.2 GB of Int64 connectivity).
-template <typename Decode>
-auto decodeBinary(const VtuArraySource& src, const VtuEncoding& enc, Decode decode) {
-  if (!enc.compressed && src.format == VtuArraySource::Format::Appended && !src.appendedBase64) {
-    const BinaryView v = binaryBytes(src);
-    const BlockLayout b = blockLayout(src, enc, v);
-    if (v.size - b.headerBytes < b.rawBytes)
-      fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
-                    std::to_string(v.size - b.headerBytes) + " are there (truncated)");
-    return decode(v.data + b.headerBytes, std::size_t(b.rawBytes / sizeOf(src.type)));
-  }
-  const auto raw = rawBytes(src, enc);
-  return decode(raw.data(), raw.size() / sizeOf(src.type));
-}
-
-}  // namespace
 
 std::vector<std::uint32_t> vtuIndices(const VtuArraySource& src, const VtuEncoding& enc, std::uint64_t limit,
                                       std::uint32_t base) {
@@ -198,47 +244,17 @@ std::vector<std::uint32_t> vtuIndices(const VtuArraySource& src, const VtuEncodi
     return out;
   }
   if (isFloating(src.type)) fail(src, "must hold integers, its type is floating point");
-  return decodeBinary(src, enc, [&](const std::uint8_t* data, std::size_t count) {
-    std::vector<std::uint32_t> out(count);
-    constexpr std::size_t kChunk = 1 << 16;  // 64-bit values a chunk at a time
-    for (std::size_t at = 0; at < count; at += kChunk) {
-      const std::size_t n = std::min(kChunk, count - at);
-      const std::vector<std::int64_t> chunk = toIntegers(data + at * sizeOf(src.type), n, src.type, enc.bigEndian);
-      convert(chunk.data(), n, at, out.data() + at);
-    }
-    return out;
+  return decodeBinary<std::uint32_t>(src, enc, [&](const std::uint8_t* bytes, std::size_t count, std::size_t first,
+                                                   std::uint32_t* out) {
+    convert(toIntegers(bytes, count, src.type, enc.bigEndian).data(), count, first, out);
   });
-}
-
-VtuArraySource vtuDetached(const VtuArraySource& src, const VtuEncoding& enc) {
-  VtuArraySource out = src;
-  std::size_t begin = src.begin, length = src.end - src.begin;
-  if (src.format == VtuArraySource::Format::Appended && !src.appendedBase64) {
-    const BinaryView v = binaryBytes(src);
-    const BlockLayout b = blockLayout(src, enc, v);
-    std::uint64_t payload = b.rawBytes;
-    if (enc.compressed) {
-      payload = 0;
-      for (std::uint64_t k = 0; k < b.blocks; ++k) payload += headerValue(v.data + (3 + k) * sizeOf(enc.headerType), enc);
-    }
-    begin = src.begin + src.appendedOffset;
-    length = std::size_t(std::min<std::uint64_t>(b.headerBytes + payload, v.size));
-    out.appendedOffset = 0;
-  } else if (src.format == VtuArraySource::Format::Appended) {  // base64: its own run already
-    begin = src.begin + src.appendedOffset;
-    length = src.end - begin;
-    out.appendedOffset = 0;
-  }
-  out.file = std::make_shared<const std::string>(*src.file, begin, length);
-  out.begin = 0;
-  out.end = length;
-  return out;
 }
 
 std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc) {
   if (src.format == VtuArraySource::Format::Ascii) return asciiValues(src);
-  return decodeBinary(src, enc, [&](const std::uint8_t* data, std::size_t count) {
-    return toDoubles(data, count, src.type, enc.bigEndian);
+  return decodeBinary<double>(src, enc, [&](const std::uint8_t* bytes, std::size_t count, std::size_t, double* out) {
+    const std::vector<double> values = toDoubles(bytes, count, src.type, enc.bigEndian);
+    std::copy(values.begin(), values.end(), out);
   });
 }
 
@@ -254,8 +270,10 @@ std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncodi
     }
     return out;
   }
-  return decodeBinary(src, enc, [&](const std::uint8_t* data, std::size_t count) {
-    return toIntegers(data, count, src.type, enc.bigEndian);
+  return decodeBinary<std::int64_t>(src, enc, [&](const std::uint8_t* bytes, std::size_t count, std::size_t,
+                                                  std::int64_t* out) {
+    const std::vector<std::int64_t> values = toIntegers(bytes, count, src.type, enc.bigEndian);
+    std::copy(values.begin(), values.end(), out);
   });
 }
 

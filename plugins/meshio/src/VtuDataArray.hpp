@@ -2,6 +2,7 @@
 // Decoding one <DataArray> of a VTK XML file, in any of its encodings.
 #pragma once
 
+#include "DiskFile.hpp"
 #include "NumericType.hpp"
 
 #include <cstdint>
@@ -23,9 +24,12 @@ struct VtuArraySource {
   NumericType type = NumericType::Float64;
   int components = 1;
   enum class Format { Ascii, Binary, Appended } format = Format::Ascii;
-  std::shared_ptr<const std::string> file;  ///< the whole file
-  /// Byte range in `file`: the element's text (ascii, binary), the appended block (raw),
-  /// or this array's own run of the appended block (base64).
+  std::shared_ptr<const std::string> file;  ///< the bytes in memory (a small file, or the element's text)
+  /// Or, for appended data, the file read where it lies (a large file): `file` is null and
+  /// begin / end are offsets in it.
+  std::shared_ptr<const DiskFile> disk;
+  /// Byte range in `file` (or `disk`): the element's text (ascii, binary), or this array's
+  /// own run of the appended block (from the block's start; the array starts at appendedOffset).
   std::size_t begin = 0, end = 0;
   std::size_t appendedOffset = 0;           ///< offset attribute (appended)
   bool appendedBase64 = false;
@@ -38,7 +42,8 @@ struct VtuArrayError {
 };
 
 /// Number of values (tuples x components) the array holds, read from its header without
-/// decompressing (ascii arrays are parsed to count).
+/// decompressing (ascii arrays are parsed to count). The values themselves are decoded a
+/// chunk (or a zlib block) at a time into the result: no copy of the array's raw bytes.
 std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc);
 std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc);
 std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc);
@@ -51,8 +56,5 @@ struct VtuIndexError {
 /// decoded without a 64-bit copy (at 100M tets that copy alone is 3.2 GB).
 std::vector<std::uint32_t> vtuIndices(const VtuArraySource& src, const VtuEncoding& enc, std::uint64_t limit,
                                       std::uint32_t base);
-/// The same array holding only its own bytes (a copy), so that a lazy loader does not keep
-/// the whole file in memory. Throws VtuArrayError for a header that does not fit the data.
-VtuArraySource vtuDetached(const VtuArraySource& src, const VtuEncoding& enc);
 
 }  // namespace volpost::meshio

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "VtuReader.hpp"
 
+#include "DiskFile.hpp"
 #include "FileBytes.hpp"
 #include "VtkCells.hpp"
 #include "VtuDataArray.hpp"
@@ -29,11 +30,11 @@ struct AppendedBlock {
 
 class VtuReading {
  public:
-  VtuReading(std::shared_ptr<const std::string> bytes, std::string path, const Progress& progress)
-      : bytes_(std::move(bytes)), path_(std::move(path)), progress_(progress) {}
+  VtuReading(std::string path, const Progress& progress, std::uint64_t readInPlaceFrom)
+      : path_(std::move(path)), progress_(progress), readInPlaceFrom_(readInPlaceFrom) {}
 
   std::unique_ptr<Model> run() {
-    splitAppended();
+    openFile();
     pugi::xml_document doc;
     const auto parsed = doc.load_buffer(xml_.data(), xml_.size());
     if (!parsed)
@@ -62,6 +63,65 @@ class VtuReading {
  private:
   [[noreturn]] void failAt(const pugi::xml_node& node, const std::string& message) const {
     throw ReadError::atLine(path_, lineAt(xml_, std::size_t(node.offset_debug())), message);
+  }
+
+  // A file under readInPlaceFrom_ bytes is read whole into memory (its lazy fields keep
+  // it). A larger one is read up to its appended data, whose arrays are then decoded from
+  // the file where they lie, a chunk at a time (a 12.6M-tet mesh's file is 550 MB, and
+  // holding it while decoding was half of the read's peak memory); its lazy fields read
+  // from the file when they are first shown.
+  void openFile() {
+    auto disk = std::make_shared<const DiskFile>(path_);
+    if (disk->size() == 0) throw ReadError(path_, "file is empty (0 bytes)");
+    if (disk->size() < readInPlaceFrom_) {
+      bytes_ = readFileBytes(path_, progress_);
+      splitAppended();
+      return;
+    }
+    std::string head;
+    std::size_t tag = std::string::npos, tagEnd = std::string::npos, underscore = std::string::npos;
+    constexpr std::size_t kChunk = std::size_t(16) << 20;
+    while (head.size() < disk->size() && underscore == std::string::npos) {
+      const std::size_t searchFrom = head.size() > 16 ? head.size() - 16 : 0;  // a tag cut by the chunk's end
+      head += disk->readString(head.size(), std::size_t(std::min<std::uint64_t>(kChunk, disk->size() - head.size())));
+      progress_.report(0.2 * double(head.size()) / double(disk->size()));
+      if (tag == std::string::npos) tag = head.find("<AppendedData", searchFrom);
+      if (tag != std::string::npos && tagEnd == std::string::npos) tagEnd = head.find('>', tag);
+      if (tagEnd != std::string::npos) underscore = head.find('_', tagEnd);
+    }
+    if (underscore == std::string::npos) {  // all of it read: no appended data to leave in the file
+      bytes_ = std::make_shared<const std::string>(withoutByteOrderMark(std::move(head)));
+      splitAppended();
+      return;
+    }
+    const std::uint64_t close = closingTagOffset(*disk, underscore + 1);
+    appended_.present = true;
+    appended_.base64 = head.substr(tag, tagEnd - tag).find("\"base64\"") != std::string::npos;
+    appended_.begin = underscore + 1;
+    appended_.end = std::size_t(close);
+    head.resize(tagEnd + 1);
+    xml_ = withoutByteOrderMark(std::move(head)) + disk->readString(close, std::size_t(disk->size() - close));
+    disk_ = std::move(disk);
+  }
+
+  // Where the last </AppendedData> starts, searched backwards from the file's end in chunks.
+  std::uint64_t closingTagOffset(const DiskFile& disk, std::uint64_t dataBegin) const {
+    static constexpr std::string_view kClose = "</AppendedData>";
+    constexpr std::uint64_t kChunk = std::uint64_t(1) << 20;
+    for (std::uint64_t end = disk.size(); end > dataBegin;) {
+      const std::uint64_t from = end - std::min(kChunk, end - dataBegin);
+      const std::uint64_t to = std::min<std::uint64_t>(disk.size(), end + kClose.size() - 1);  // a tag cut at `end`
+      const std::string part = disk.readString(from, std::size_t(to - from));
+      if (const std::size_t at = part.rfind(kClose); at != std::string::npos) return from + at;
+      end = from;
+    }
+    throw ReadError::atOffset(path_, disk.size(), "file ends inside the appended data: no </AppendedData> (truncated)");
+  }
+
+  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the XML.
+  static std::string withoutByteOrderMark(std::string text) {
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.replace(0, 3, "   ");
+    return text;
   }
 
   // Raw appended data is not XML: cut it out before parsing and remember where it is.
@@ -138,6 +198,7 @@ class VtuReading {
       if (!appended_.present) failAt(array, "DataArray \"" + s.name + "\" is appended but the file has no <AppendedData>");
       s.format = VtuArraySource::Format::Appended;
       s.file = bytes_;
+      s.disk = disk_;
       s.begin = appended_.begin;
       s.end = appended_.end;
       s.appendedOffset = std::size_t(array.attribute("offset").as_ullong(0));
@@ -191,6 +252,7 @@ class VtuReading {
       const auto xyz = guarded(pts, [&] { return vtuDoubles(s, enc_); });
       if (xyz.size() != expected)
         failAt(pts, "Points holds " + std::to_string(xyz.size() / 3) + " points, NumberOfPoints says " + std::to_string(points));
+      model.mesh().nodes.reserve(nodeBase + std::size_t(points));
       for (std::size_t i = 0; i < std::size_t(points); ++i)
         model.mesh().nodes.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
     }
@@ -465,9 +527,6 @@ class VtuReading {
       }
       std::shared_ptr<VtkCellMapping> m;
       if (mapping && mapping->skipped) m = std::make_shared<VtkCellMapping>(*mapping);
-      // A large file is not kept alive for its fields: each lazy array holds a copy of its
-      // own bytes (a 12.6M-tet mesh's file is 550 MB, its nodal field 8 MB).
-      if (s.file == bytes_ && bytes_->size() > kKeepWholeFileBelow) s = guarded(array, [&] { return vtuDetached(s, enc_); });
       f.parts.push_back({std::move(s), std::move(m)});
       if (inserted) order_.push_back(key);
     }
@@ -559,10 +618,11 @@ class VtuReading {
     return true;
   }
 
-  std::shared_ptr<const std::string> bytes_;
-  static constexpr std::size_t kKeepWholeFileBelow = std::size_t(64) << 20;
   std::string path_;
   const Progress& progress_;
+  std::uint64_t readInPlaceFrom_;
+  std::shared_ptr<const std::string> bytes_;  ///< the file in memory (small files), or
+  std::shared_ptr<const DiskFile> disk_;      ///< the file its appended arrays are read from
   std::string xml_;
   AppendedBlock appended_;
   VtuEncoding enc_;
@@ -581,8 +641,7 @@ int VtiReader::sniff(std::string_view head) const {
 }
 
 std::unique_ptr<Model> VtiReader::read(const std::string& path, const Progress& progress) const {
-  auto bytes = readFileBytes(path, progress);
-  auto model = VtuReading(bytes, path, progress).run();
+  auto model = VtuReading(path, progress, readInPlaceFrom_).run();
   if (!model->grid) throw ReadError(path, "this VTK XML file holds no <ImageData>; for unstructured grids use .vtu");
   model->formatName = formatName();
   progress.report(1.0);
@@ -596,8 +655,7 @@ int VtuReader::sniff(std::string_view head) const {
 }
 
 std::unique_ptr<Model> VtuReader::read(const std::string& path, const Progress& progress) const {
-  auto bytes = readFileBytes(path, progress);
-  auto model = VtuReading(bytes, path, progress).run();
+  auto model = VtuReading(path, progress, readInPlaceFrom_).run();
   model->formatName = model->grid ? "VTK XML image data" : formatName();
   progress.report(1.0);
   return model;

@@ -5,14 +5,25 @@
 
 #include <volpost/core/MeshReader.hpp>
 
+#include <cstdint>
+
 namespace volpost::meshio {
+
+/// Files from this size on are not read whole into memory: their appended arrays are
+/// decoded from the file where they lie, and their lazy fields read from it when first
+/// shown (a field read after the file was changed is refused, naming it).
+inline constexpr std::uint64_t kReadVtkXmlInPlaceFrom = std::uint64_t(64) << 20;
 
 class VtuReader : public MeshReader {
  public:
+  explicit VtuReader(std::uint64_t readInPlaceFrom = kReadVtkXmlInPlaceFrom) : readInPlaceFrom_(readInPlaceFrom) {}
   std::string formatName() const override { return "VTK XML unstructured grid"; }
   std::vector<std::string> extensions() const override { return {"vtu"}; }
   int sniff(std::string_view head) const override;
   std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
+
+ private:
+  std::uint64_t readInPlaceFrom_;
 };
 
 /// VTK XML image data (.vti): a regular grid (WholeExtent, Origin, Spacing and VTK 9's
@@ -20,10 +31,14 @@ class VtuReader : public MeshReader {
 /// XML machinery as .vtu (every encoding). The model carries the grid and its hexahedra.
 class VtiReader : public MeshReader {
  public:
+  explicit VtiReader(std::uint64_t readInPlaceFrom = kReadVtkXmlInPlaceFrom) : readInPlaceFrom_(readInPlaceFrom) {}
   std::string formatName() const override { return "VTK XML image data"; }
   std::vector<std::string> extensions() const override { return {"vti"}; }
   int sniff(std::string_view head) const override;
   std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
+
+ private:
+  std::uint64_t readInPlaceFrom_;
 };
 
 }  // namespace volpost::meshio
