@@ -15,15 +15,6 @@ namespace {
 
 constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
-// Runs body(range, begin, end) over [0, n) in `ranges` ranges on the threads the system gives.
-template <typename Body>
-void parallelRanges(std::size_t n, unsigned ranges, Body body) {
-  std::atomic<unsigned> next{0};
-  runOnThreads(ranges, [&](unsigned) {
-    for (unsigned w; (w = next++) < ranges;) body(w, n * w / ranges, n * (w + 1) / ranges);
-  });
-}
-
 }  // namespace
 
 void requireFaceIndexable(std::size_t tets) {
@@ -33,12 +24,12 @@ void requireFaceIndexable(std::size_t tets) {
                             "or split it into parts");
 }
 
-// Face adjacency by sorting the 4 faces of every tet. In parallel: faces are bucketed by
-// their smallest vertex id (both copies of a shared face land in the same bucket), each
-// worker lists the faces of a range of tets, then each bucket is sorted and matched on
-// its own. Every tet face is written by exactly one bucket. Large meshes go in passes over
-// a share of the buckets each, so the face list (16 bytes per face) never holds more than
-// about 16 bytes per tet at once, besides the result.
+// Face adjacency by grouping the 4 faces of every tet under their smallest vertex id (both
+// copies of a shared face land in one group), then sorting each group, which is small, by
+// the face's two other vertex ids. A face is listed as tet x 4 + face only (4 bytes; its
+// other vertices are read again from the tet when its group is sorted), and large meshes
+// go in passes over a share of the vertex ids each: the lists hold about 4 bytes per tet
+// at once, plus 12 per vertex of the pass, besides the result. Every step is on all cores.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
   std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
   faceNeighborsInto(
@@ -47,57 +38,85 @@ std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
   return neighbors;
 }
 
+namespace {
+
+// The face of `nodes` opposite vertex f, its vertex ids ascending.
+std::array<std::uint32_t, 3> sortedFace(const glm::uvec4& nodes, int f) {
+  std::array<std::uint32_t, 3> v = {nodes[kFaces[f][0]], nodes[kFaces[f][1]], nodes[kFaces[f][2]]};
+  if (v[0] > v[1]) std::swap(v[0], v[1]);
+  if (v[1] > v[2]) std::swap(v[1], v[2]);
+  if (v[0] > v[1]) std::swap(v[0], v[1]);
+  return v;
+}
+
+constexpr std::size_t kTetsPerChunk = std::size_t(1) << 14;
+
+}  // namespace
+
 void faceNeighborsInto(std::size_t tetCount, const std::function<glm::uvec4(std::size_t)>& nodesOf,
                        const std::function<void(std::size_t tet, int face, int across)>& setNeighbor) {
   requireFaceIndexable(tetCount);
-  struct FaceKey {
-    std::uint64_t high;  ///< the face's two smallest vertex ids
-    std::uint32_t low;   ///< its largest
-    std::uint32_t tetFace;
-    bool operator<(const FaceKey& o) const { return high != o.high ? high < o.high : low < o.low; }
-    bool sameFace(const FaceKey& o) const { return high == o.high && low == o.low; }
-  };
-  const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+  if (tetCount == 0) return;
+  std::vector<std::uint32_t> chunkMax((tetCount + kTetsPerChunk - 1) / kTetsPerChunk, 0);
+  forEachChunk(tetCount, kTetsPerChunk, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t top = 0;
+    for (std::size_t t = begin; t < end; ++t) {
+      const glm::uvec4 n = nodesOf(t);
+      top = std::max({top, n[0], n[1], n[2], n[3]});
+    }
+    chunkMax[begin / kTetsPerChunk] = top;
+  });
+  const std::size_t vertices = std::size_t(*std::max_element(chunkMax.begin(), chunkMax.end())) + 1;
+  std::vector<std::uint32_t>().swap(chunkMax);
   const std::size_t passes = std::clamp<std::size_t>(tetCount >> 20, 1, 4);
-  const std::size_t buckets = std::size_t(workers) * 8 * passes;
   for (std::size_t pass = 0; pass < passes; ++pass) {
-    const std::size_t firstBucket = buckets * pass / passes, endBucket = buckets * (pass + 1) / passes;
-    std::vector<std::vector<std::vector<FaceKey>>> listed(workers, std::vector<std::vector<FaceKey>>(endBucket - firstBucket));
-    parallelRanges(tetCount, workers, [&](unsigned w, std::size_t begin, std::size_t end) {
-      for (auto& bucket : listed[w]) bucket.reserve((end - begin) * 4 / buckets + (end - begin) / buckets / 2 + 16);
-      for (std::size_t t = begin; t < end; ++t) {
-        const glm::uvec4 nodes = nodesOf(t);
-        for (int f = 0; f < 4; ++f) {
-          std::array<std::uint32_t, 3> v = {nodes[kFaces[f][0]], nodes[kFaces[f][1]], nodes[kFaces[f][2]]};
-          if (v[0] > v[1]) std::swap(v[0], v[1]);
-          if (v[1] > v[2]) std::swap(v[1], v[2]);
-          if (v[0] > v[1]) std::swap(v[0], v[1]);
-          const std::size_t bucket = v[0] % buckets;
-          if (bucket >= firstBucket && bucket < endBucket)
-            listed[w][bucket - firstBucket].push_back(
-                {std::uint64_t(v[0]) << 32 | v[1], v[2], std::uint32_t(t) * 4 + std::uint32_t(f)});
+    const std::size_t lo = vertices * pass / passes, hi = vertices * (pass + 1) / passes;
+    // How many faces each vertex of the pass is the smallest of, then where its group starts.
+    std::vector<std::atomic<std::uint32_t>> count(hi - lo);
+    const auto eachFaceOfThePass = [&](auto visit) {
+      forEachChunk(tetCount, kTetsPerChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t) {
+          const glm::uvec4 n = nodesOf(t);
+          for (int f = 0; f < 4; ++f) {
+            const std::uint32_t smallest = std::min({n[kFaces[f][0]], n[kFaces[f][1]], n[kFaces[f][2]]});
+            if (smallest >= lo && smallest < hi) visit(smallest - lo, std::uint32_t(t) * 4 + std::uint32_t(f));
+          }
         }
-      }
+      });
+    };
+    eachFaceOfThePass([&](std::size_t v, std::uint32_t) { count[v].fetch_add(1, std::memory_order_relaxed); });
+    std::vector<std::size_t> start(hi - lo + 1, 0);
+    for (std::size_t v = 0; v < hi - lo; ++v) {
+      start[v + 1] = start[v] + count[v].load(std::memory_order_relaxed);
+      count[v].store(0, std::memory_order_relaxed);
+    }
+    std::vector<std::uint32_t> faces(start.back());
+    eachFaceOfThePass([&](std::size_t v, std::uint32_t tetFace) {
+      faces[start[v] + count[v].fetch_add(1, std::memory_order_relaxed)] = tetFace;
     });
-    parallelRanges(endBucket - firstBucket, workers, [&](unsigned, std::size_t first, std::size_t last) {
-      std::vector<FaceKey> faces;
-      for (std::size_t b = first; b < last; ++b) {
-        faces.clear();
-        std::size_t total = 0;
-        for (unsigned w = 0; w < workers; ++w) total += listed[w][b].size();
-        faces.reserve(total);
-        for (unsigned w = 0; w < workers; ++w) {
-          faces.insert(faces.end(), listed[w][b].begin(), listed[w][b].end());
-          std::vector<FaceKey>().swap(listed[w][b]);  // freed as it is taken
+    std::vector<std::atomic<std::uint32_t>>().swap(count);
+    // Each group on its own: sorted by the two larger vertex ids, pairs are neighbours.
+    forEachChunk(hi - lo, std::size_t(1) << 12, [&](std::size_t begin, std::size_t end) {
+      struct Keyed {
+        std::uint64_t key;
+        std::uint32_t tetFace;
+        bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : tetFace < o.tetFace; }
+      };
+      std::vector<Keyed> group;
+      for (std::size_t v = begin; v < end; ++v) {
+        group.clear();
+        for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
+          const auto face = sortedFace(nodesOf(faces[i] / 4), int(faces[i] % 4));
+          group.push_back({std::uint64_t(face[1]) << 32 | face[2], faces[i]});
         }
-        std::sort(faces.begin(), faces.end());
-        for (std::size_t i = 0; i < faces.size();) {
+        std::sort(group.begin(), group.end());
+        for (std::size_t i = 0; i < group.size();) {
           std::size_t j = i + 1;
-          while (j < faces.size() && faces[j].sameFace(faces[i])) ++j;
+          while (j < group.size() && group[j].key == group[i].key) ++j;
           if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
-            const std::uint32_t a = faces[i].tetFace, b2 = faces[i + 1].tetFace;
-            setNeighbor(a / 4, int(a % 4), int(b2 / 4));
-            setNeighbor(b2 / 4, int(b2 % 4), int(a / 4));
+            const std::uint32_t a = group[i].tetFace, b = group[i + 1].tetFace;
+            setNeighbor(a / 4, int(a % 4), int(b / 4));
+            setNeighbor(b / 4, int(b % 4), int(a / 4));
           }
           i = j;
         }

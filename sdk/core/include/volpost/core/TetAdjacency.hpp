@@ -21,8 +21,9 @@ inline constexpr std::size_t kMaxTetsForFaceIndex = (std::size_t(1) << 30) - 1;
 void requireFaceIndexable(std::size_t tets);
 
 /// For every tet (4 vertex ids), the tet across the face opposite vertex k, or -1 (the
-/// boundary, or a face shared by more than two tets). Built on all cores by sorting faces,
-/// with at most about 16 bytes per tet besides the result. Throws std::length_error beyond
+/// boundary, or a face shared by more than two tets). Built on all cores by grouping faces
+/// under their smallest vertex, with about 4 bytes per tet (and 12 per vertex) besides the
+/// result. Throws std::length_error beyond
 /// kMaxTetsForFaceIndex tets.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets);
 /// The same, reading each tet's vertex ids through nodesOf(t) and writing each interior
