@@ -181,7 +181,7 @@ std::vector<std::uint8_t> visibleTets(const TetWalkMesh& mesh, const PiecewiseIn
         if (mesh.cellValues()) {
           lo = hi = mesh.tetValue(t);
         } else {
-          const glm::uvec4 v = mesh.tet(t).nodes;
+          const glm::uvec4 v = mesh.tetNodes(t);
           const auto& n = mesh.nodes();
           lo = std::min({n[v[0]].w, n[v[1]].w, n[v[2]].w, n[v[3]].w});
           hi = std::max({n[v[0]].w, n[v[1]].w, n[v[2]].w, n[v[3]].w});
@@ -290,8 +290,7 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
       return inf;
     }
     ++totals.steps;
-    const WalkTet& record = mesh.tet(tet);
-    const glm::uvec4 v = record.nodes;
+    const glm::uvec4 v = mesh.tetNodes(tet);
     // The fourth vertex and where A, B, C sit in this tet.
     int local[3] = {-1, -1, -1}, kLocal = -1;
     for (int i = 0; i < 4; ++i) {
@@ -327,7 +326,7 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
     out.ab = kx;
     out.bc = xy;
     out.ca = {-ky.value, !ky.positive, ky.nearZero};
-    int next = record.neighbors[local[exit]];
+    int next = mesh.tetNeighbors(tet)[local[exit]];
     if (next >= 0 && !sh.visible[std::size_t(next)]) next = -1;  // leaving what shows
     float tOut = tIn, sOut = sIn;
     if (!crossing(mesh, ray, out, tOut, sOut, next < 0)) tOut = tIn, sOut = sIn;

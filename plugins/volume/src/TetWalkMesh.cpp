@@ -17,6 +17,16 @@ namespace volpost::volume {
 namespace {
 constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};  // face k is opposite vertex k
 
+// The connectivity entries per cell when every cell is a tet of one kind (tet4: 4, tet10:
+// 10, corners first) stored without offsets; 0 otherwise.
+std::size_t uniformTetStride(const Mesh& mesh) {
+  const auto types = mesh.cellTypes();
+  if (types.empty() || (types.front() != CellType::Tet4 && types.front() != CellType::Tet10)) return 0;
+  if (std::any_of(types.begin(), types.end(), [&](CellType t) { return t != types.front(); })) return 0;
+  const std::size_t stride = types.front() == CellType::Tet4 ? 4 : 10;
+  return mesh.connectivity().size() == types.size() * stride ? stride : 0;
+}
+
 // body(i) for i in [0, n), on all cores.
 template <typename Body>
 void parallelChunks(std::size_t n, Body body) {
@@ -60,30 +70,46 @@ TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<con
   });
   const auto count = std::size_t(std::count(kept.begin(), kept.end(), std::uint8_t(1)));
   skipped_ = mesh.cellCount() - count;
-  auto tets = std::make_shared<std::vector<WalkTet>>(count);
-  std::vector<WalkTet>& list = *tets;
   if (location == FieldLocation::Cell) cellValues_.resize(count);
-  for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
-    if (!kept[c]) continue;
-    const auto nodes = mesh.cellNodes(c);
-    list[t] = {glm::uvec4(nodes[0], nodes[1], nodes[2], nodes[3]), glm::ivec4(-1)};
-    if (location == FieldLocation::Cell) cellValues_[t] = float(values[c] - valueOffset_);
-    ++t;
+  const std::size_t stride = uniformTetStride(mesh);
+  if (skipped_ == 0 && stride != 0) {  // every cell kept, all of one type: its cells are the list
+    auto sharing = std::make_shared<Mesh>();
+    sharing->shareCellsOf(mesh);
+    tetNodes_ = sharing->connectivity().data();
+    stride_ = stride;
+    sharedCells_ = true;
+    tetNodeOwner_ = std::move(sharing);
+    if (location == FieldLocation::Cell)
+      parallelChunks(count, [&](std::size_t c) { cellValues_[c] = float(values[c] - valueOffset_); });
+  } else {
+    auto own = std::make_shared<std::vector<std::uint32_t>>(count * 4);
+    for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
+      if (!kept[c]) continue;
+      const auto nodes = mesh.cellNodes(c);
+      std::copy(nodes.begin(), nodes.begin() + 4, own->begin() + std::ptrdiff_t(4 * t));
+      if (location == FieldLocation::Cell) cellValues_[t] = float(values[c] - valueOffset_);
+      ++t;
+    }
+    tetNodes_ = own->data();
+    stride_ = 4;
+    tetNodeOwner_ = std::move(own);
   }
   std::vector<std::uint8_t>().swap(kept);
+  auto neighbors = std::make_shared<std::vector<glm::ivec4>>(count, glm::ivec4(-1));
+  std::vector<glm::ivec4>& across = *neighbors;
   faceNeighborsInto(
-      list.size(), [&list](std::size_t t) { return list[t].nodes; },
-      [&list](std::size_t t, int face, int across) { list[t].neighbors[face] = across; });
-  tets_ = std::move(tets);
+      count, [this](std::size_t t) { return tetNodes(t); },
+      [&across](std::size_t t, int face, int other) { across[t][face] = other; });
+  neighbors_ = std::move(neighbors);
 }
 
 std::shared_ptr<const TetWalkMesh> TetWalkMesh::withValues(const std::shared_ptr<const TetWalkMesh>& previous,
                                                            const Mesh& mesh, std::span<const double> values) {
-  const bool sameTets = previous && previous->skipped_ == 0 && previous->tets_->size() == mesh.cellCount() &&
+  const bool sameTets = previous && previous->skipped_ == 0 && previous->tetCount() == mesh.cellCount() &&
                         values.size() == (previous->cellValues() ? mesh.cellCount() : mesh.nodeCount()) &&
                         std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
   if (!sameTets) return std::make_shared<const TetWalkMesh>(mesh, previous ? previous->location_ : FieldLocation::Node, values);
-  auto next = std::make_shared<TetWalkMesh>(*previous);  // shares the tets and their neighbours
+  auto next = std::make_shared<TetWalkMesh>(*previous);  // shares the tets' nodes and neighbours
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
   next->valueOffset_ = lo <= hi ? 0.5 * (lo + hi) : 0.0;
@@ -96,15 +122,15 @@ std::shared_ptr<const TetWalkMesh> TetWalkMesh::withValues(const std::shared_ptr
 
 std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t>& visible) const {
   std::vector<BoundaryFace> faces;
-  for (std::size_t t = 0; t < tets_->size(); ++t) {
+  for (std::size_t t = 0; t < tetCount(); ++t) {
     if (!visible[t]) continue;
-    const WalkTet& tet = (*tets_)[t];
+    const glm::uvec4 nodes = tetNodes(t);
     for (int f = 0; f < 4; ++f) {
-      const int across = tet.neighbors[f];
+      const int across = tetNeighbors(t)[f];
       if (across >= 0 && visible[std::size_t(across)]) continue;
-      std::uint32_t v[3] = {tet.nodes[kFaces[f][0]], tet.nodes[kFaces[f][1]], tet.nodes[kFaces[f][2]]};
+      std::uint32_t v[3] = {nodes[kFaces[f][0]], nodes[kFaces[f][1]], nodes[kFaces[f][2]]};
       const glm::dvec3 a = exactPositions_[v[0]], b = exactPositions_[v[1]], c = exactPositions_[v[2]];
-      const glm::dvec3 inside = exactPositions_[tet.nodes[f]];
+      const glm::dvec3 inside = exactPositions_[nodes[f]];
       if (glm::dot(glm::cross(b - a, c - a), inside - a) > 0.0) std::swap(v[1], v[2]);  // normal outward
       faces.push_back({std::uint32_t(t), {v[0], v[1], v[2]}});
     }
@@ -113,7 +139,8 @@ std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t
 }
 
 std::size_t TetWalkMesh::bytes() const {
-  return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + tets_->size() * sizeof(WalkTet) +
+  const std::size_t ownNodes = sharedCells_ ? 0 : tetCount() * 4 * sizeof(std::uint32_t);
+  return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + ownNodes + tetCount() * sizeof(glm::ivec4) +
          cellValues_.size() * sizeof(float);
 }
 

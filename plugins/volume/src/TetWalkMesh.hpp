@@ -2,7 +2,8 @@
 // A tetrahedral mesh prepared for walking rays from tet to tet on the CPU: float vertex
 // positions relative to the mesh centre, each tet's four vertex ids, the tet across each
 // face, one value per node (linear in each tet) or per tet (constant), and the boundary of
-// any part of it (where rays enter and leave that part).
+// any part of it (where rays enter and leave that part). The vertex ids are the mesh's own
+// cells, shared, when every cell is kept (16 bytes per tet not held twice).
 #pragma once
 
 #include <volpost/core/Field.hpp>
@@ -17,13 +18,6 @@
 #include <vector>
 
 namespace volpost::volume {
-
-/// A tet's four vertex ids and the tet across the face opposite each (-1: none), side by
-/// side so that a step of a walk reads one cache line.
-struct alignas(32) WalkTet {
-  glm::uvec4 nodes;
-  glm::ivec4 neighbors;
-};
 
 struct BoundaryFace {
   std::uint32_t tet;
@@ -45,7 +39,7 @@ class TetWalkMesh {
 
   const glm::dvec3& origin() const { return origin_; }
   double diagonal() const { return diagonal_; }
-  std::size_t tetCount() const { return tets_->size(); }
+  std::size_t tetCount() const { return neighbors_->size(); }
   std::size_t skippedTets() const { return skipped_; }
   bool cellValues() const { return location_ == FieldLocation::Cell; }
 
@@ -54,7 +48,15 @@ class TetWalkMesh {
   const std::vector<glm::vec4>& nodes() const { return nodes_; }
   /// The positions in double: where float cannot decide on which side of an edge a ray passes.
   const std::vector<glm::dvec3>& exactPositions() const { return exactPositions_; }
-  const WalkTet& tet(std::size_t i) const { return (*tets_)[i]; }
+  /// Tet i's four vertex ids.
+  glm::uvec4 tetNodes(std::size_t i) const {
+    const std::uint32_t* n = tetNodes_ + i * stride_;
+    return {n[0], n[1], n[2], n[3]};
+  }
+  /// The tet across the face opposite each vertex of tet i (-1: none).
+  const glm::ivec4& tetNeighbors(std::size_t i) const { return (*neighbors_)[i]; }
+  /// Whether the vertex ids are `mesh`'s cells themselves (not a copy).
+  bool sharesCellsOf(const Mesh& mesh) const { return mesh.cellCount() > 0 && tetNodes_ == mesh.connectivity().data(); }
   /// Cell data: the tet's value minus valueOffset().
   float tetValue(std::size_t tet) const { return cellValues_[tet]; }
   double valueOffset() const { return valueOffset_; }
@@ -71,7 +73,13 @@ class TetWalkMesh {
   FieldLocation location_ = FieldLocation::Node;
   std::vector<glm::vec4> nodes_;
   std::vector<glm::dvec3> exactPositions_;
-  std::shared_ptr<const std::vector<WalkTet>> tets_ = std::make_shared<const std::vector<WalkTet>>();
+  // The vertex ids: every stride_-th run of 4 from tetNodes_, in the mesh's cells (kept
+  // alive by a mesh that shares them) or in a list of the kept tets' own.
+  std::shared_ptr<const void> tetNodeOwner_;
+  const std::uint32_t* tetNodes_ = nullptr;
+  std::size_t stride_ = 4;
+  bool sharedCells_ = false;
+  std::shared_ptr<const std::vector<glm::ivec4>> neighbors_ = std::make_shared<const std::vector<glm::ivec4>>();
   std::vector<float> cellValues_;
   double valueOffset_ = 0.0;
   std::size_t skipped_ = 0;

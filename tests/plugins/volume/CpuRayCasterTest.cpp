@@ -381,7 +381,8 @@ TEST_F(CpuRayCast, AnotherStepSharesTheTetsAndDrawsLikeAFreshBuild) {
   for (std::size_t i = 0; i < first.size(); ++i) second[i] = 3.0 - 0.5 * first[i] + 0.01 * double(i % 7);
   const auto previous = std::make_shared<const volume::TetWalkMesh>(grid, FieldLocation::Node, first);
   const auto next = volume::TetWalkMesh::withValues(previous, grid, second);
-  EXPECT_EQ(&next->tet(0), &previous->tet(0)) << "the tets are shared";
+  EXPECT_EQ(&next->tetNeighbors(0), &previous->tetNeighbors(0)) << "the tets' neighbours are shared";
+  EXPECT_TRUE(next->sharesCellsOf(grid)) << "the tets' nodes are the mesh's own cells";
   const volume::TetWalkMesh fresh(grid, FieldLocation::Node, second);
   const Camera camera = isoCamera(grid);
   const volume::CpuImage shared = volume::renderCpu(*next, kTf, camera, 48, 48, {});
@@ -392,6 +393,38 @@ TEST_F(CpuRayCast, AnotherStepSharesTheTetsAndDrawsLikeAFreshBuild) {
   EXPECT_NE(old.rgba, shared.rgba) << "the values changed the picture";
   second[5] = std::nan("");
   const auto rebuilt = volume::TetWalkMesh::withValues(next, grid, second);
-  EXPECT_NE(&rebuilt->tet(0), &previous->tet(0));
+  EXPECT_NE(&rebuilt->tetNeighbors(0), &previous->tetNeighbors(0));
   EXPECT_GT(rebuilt->skippedTets(), 0u);
+  EXPECT_FALSE(rebuilt->sharesCellsOf(grid)) << "with a tet left out, the kept tets are a list of their own";
+}
+
+// Tet10 cells are walked through their corners, read from the mesh's own cells (every
+// tenth entry): the picture is the one of the tet4 mesh of those corners.
+TEST_F(CpuRayCast, Tet10CellsAreWalkedThroughTheirCornersInPlace) {
+  const Mesh corners = test::tetGrid(3, 3, 3);
+  Mesh quadratic;
+  quadratic.nodes = corners.nodes;
+  std::vector<double> values = field(corners);
+  values.reserve(values.size() + 6 * corners.cellCount());
+  constexpr int kEdges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};  // VTK's mid-edge order
+  for (std::size_t c = 0; c < corners.cellCount(); ++c) {
+    const auto n = corners.cellNodes(c);
+    NodeIndex cell[10] = {n[0], n[1], n[2], n[3]};
+    for (int e = 0; e < 6; ++e) {
+      cell[4 + e] = NodeIndex(quadratic.nodes.size());
+      quadratic.nodes.push_back(0.5 * (corners.nodes[n[kEdges[e][0]]] + corners.nodes[n[kEdges[e][1]]]));
+      values.push_back(0.5 * (values[n[kEdges[e][0]]] + values[n[kEdges[e][1]]]));
+    }
+    quadratic.addCell(CellType::Tet10, cell);
+  }
+  const volume::TetWalkMesh walk10(quadratic, FieldLocation::Node, values);
+  EXPECT_TRUE(walk10.sharesCellsOf(quadratic));
+  EXPECT_EQ(walk10.tetNodes(5), glm::uvec4(corners.cellNodes(5)[0], corners.cellNodes(5)[1], corners.cellNodes(5)[2],
+                                           corners.cellNodes(5)[3]));
+  const volume::TetWalkMesh walk4(corners, FieldLocation::Node, field(corners));
+  const Camera camera = isoCamera(corners);
+  const volume::CpuImage a = volume::renderCpu(walk10, kTf, camera, 40, 40, {});
+  const volume::CpuImage b = volume::renderCpu(walk4, kTf, camera, 40, 40, {});
+  ASSERT_EQ(a.rgba.size(), b.rgba.size());
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) ASSERT_NEAR(a.rgba[i], b.rgba[i], 1e-6) << i;
 }
