@@ -181,6 +181,7 @@ int measure(const std::string& path, const std::string& rendererName, int size) 
   glFinish();
   out["frame_s"] = secondsSince(t);
   out["volume_peak"] = double(peakBytes() - base);
+  out["volume_kept"] = double(residentBytes() - base);
   out["gpu_bytes"] = double(renderer->stats().gpuBytes);
   renderer->release();
   // The boundary surface: what the surface view needs, not a volume picture.

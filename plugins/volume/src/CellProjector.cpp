@@ -15,6 +15,7 @@
 namespace volpost::volume {
 
 void CellProjector::initialize() {
+  volume_.setKeepsTetrahedraOnHost(true);  // sorted on the CPU every frame
   volume_.initialize();
   order_ = gl::createBuffer();
   framebuffer_ = gl::createFramebuffer();

@@ -74,6 +74,7 @@ glm::dvec3 unitNormal(const ClipPlane& c) {
 
 void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) {
   gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
+  tetrahedraOnlyOnGpu_ = false;
   mesh_ = &mesh;
   grid_.reset();
   gridValues_ = GridTexels{};
@@ -89,6 +90,7 @@ void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values)
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid.pointCount()) + " points");
   gpu_ = TetMeshGpu{};
+  tetrahedraOnlyOnGpu_ = false;
   gpu_.origin = grid.bounds().center();
   // The shortest step between grid points: the tables' segment length and the march's unit.
   gpu_.maxEdge = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
@@ -245,6 +247,8 @@ void GpuVolume::prepare(const RenderContext& ctx) {
 }
 
 void GpuVolume::uploadMesh() {
+  if (tetrahedraOnlyOnGpu_)
+    throw std::logic_error("the volume renderer was released after its tetrahedra went to the GPU: set the volume again");
   if (grid_) uploadGrid();
   else bricks_.release();
   // Checked before anything is uploaded: a buffer past the device's limit would read as
@@ -261,9 +265,15 @@ void GpuVolume::uploadMesh() {
   requireStorageBlockFits("cell values", gpu_.cellValues.size() * sizeof(float), limit);
   requireStorageBlockFits("boundary faces", gpu_.boundaryFaces.size() * sizeof(std::uint32_t), limit);
   requireStorageBlockFits("boundary hierarchy", gpu_.bvh.size() * sizeof(glm::vec4), limit);
+  // Each array let go as soon as it is up (unless kept), so that a driver whose "GPU" copy
+  // is host memory too (llvmpipe) never holds both whole structures at once.
+  const bool letGo = !keepsTetrahedraOnHost_ && !gpu_.tets.empty();
   upload(nodes_, gpu_.nodes);
   upload(tets_, gpu_.tets);
+  if (letGo) std::vector<glm::uvec4>().swap(gpu_.tets);
   upload(neighbors_, gpu_.neighbors);
+  if (letGo) std::vector<glm::ivec4>().swap(gpu_.neighbors);
+  tetrahedraOnlyOnGpu_ = letGo;
   upload(cellValues_, gpu_.cellValues);
   upload(bvh_, gpu_.bvh);
   upload(boundary_, gpu_.boundaryFaces);
@@ -578,7 +588,7 @@ void GpuVolume::compositeOver(const RenderContext& ctx, GLuint image) const {
 
 VolumeStats GpuVolume::stats() const {
   VolumeStats s;
-  s.tetrahedra = gpu_.tets.size();
+  s.tetrahedra = gpu_.tetCount;
   s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
   s.gpuBytes = s.meshBytes + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
                (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +

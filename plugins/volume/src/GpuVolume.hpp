@@ -66,6 +66,11 @@ class GpuVolume {
     ++revision_;
   }
   void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
+  /// Whether the tets and their neighbours stay in host memory after they went to the GPU
+  /// (cell projection sorts them on the CPU every frame). Otherwise they are let go once
+  /// uploaded (32 bytes per tet: at 100M tets, 3.2 GB of host memory the ray caster never
+  /// reads again), and a renderer released and initialized again needs setVolume again.
+  void setKeepsTetrahedraOnHost(bool keep) { keepsTetrahedraOnHost_ = keep; }
   bool asynchronous() const { return asynchronous_; }
   bool hasPendingWork() const { return preFuture_.valid(); }
   /// Changes with anything that changes the picture besides the camera: every setter, and
@@ -76,7 +81,7 @@ class GpuVolume {
   const TetMeshGpu& mesh() const { return gpu_; }
   /// Changes whenever the set of tets changes (another mesh, or values that drop tets).
   std::size_t meshRevision() const { return meshRevision_; }
-  bool hasTets() const { return !gpu_.tets.empty(); }
+  bool hasTets() const { return gpu_.tetCount > 0; }
   bool hasGrid() const { return grid_.has_value(); }
   const RegularGrid& grid() const { return *grid_; }
   /// The grid's bricks (one when the grid fits the GPU memory budget), once prepare() has
@@ -160,6 +165,8 @@ class GpuVolume {
   GridTexels gridValues_;  ///< the points' values as the texture holds them
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
+  bool keepsTetrahedraOnHost_ = false;
+  bool tetrahedraOnlyOnGpu_ = false;  ///< gpu_.tets and neighbors were let go after the upload
   TransferFunction tf_;
   std::optional<TransferFunction2D> tf2d_;
   std::vector<ClipPlane> clipPlanes_;

@@ -67,7 +67,7 @@ std::size_t RayCaster::dispatch(const RenderContext& ctx, GLuint image, int firs
   const GLuint p = volume_.program({"volume/raycast.comp"});
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
-  glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), rayStepCap(volume_.mesh().tets.size()));
+  glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), rayStepCap(volume_.mesh().tetCount));
   glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), steps);
   glProgramUniform2i(p, glGetUniformLocation(p, "band"), firstRow, rows);
   volume_.bindSegmentResources(ctx);

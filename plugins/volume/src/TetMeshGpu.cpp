@@ -21,6 +21,8 @@ namespace {
 
 constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
 
+constexpr std::size_t kChunk = std::size_t(1) << 14;
+
 double orientation(const glm::dvec3* p) { return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])); }
 
 
@@ -108,7 +110,7 @@ void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
 }
 
 std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stays on the CPU)
-  return nodes.size() * sizeof(glm::vec4) + tets.size() * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +
+  return nodes.size() * sizeof(glm::vec4) + tetCount * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +
          cellValues.size() * sizeof(float) + boundaryFaces.size() * sizeof(std::uint32_t) + bvh.size() * sizeof(glm::vec4);
 }
 
@@ -119,35 +121,49 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
   g.origin = b.valid ? b.center() : glm::dvec3(0.0);
   setValueFrame(g, values);
   g.nodes.resize(mesh.nodeCount());
-  for (std::size_t i = 0; i < mesh.nodeCount(); ++i) {
-    const glm::dvec3 p = mesh.nodes[i] - g.origin;
-    const double v = location == FieldLocation::Node ? values[i] : g.valueOffset;
-    g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? g.gpuValue(v) : 0.0f);
-  }
-  g.tets.reserve(mesh.cellCount());
-  g.cellOfTet.reserve(mesh.cellCount());
-  if (location == FieldLocation::Cell) g.cellValues.reserve(mesh.cellCount());
-  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+  forEachChunk(mesh.nodeCount(), kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::dvec3 p = mesh.nodes[i] - g.origin;
+      const double v = location == FieldLocation::Node ? values[i] : g.valueOffset;
+      g.nodes[i] = glm::vec4(float(p.x), float(p.y), float(p.z), std::isfinite(v) ? g.gpuValue(v) : 0.0f);
+    }
+  });
+  // Each cell's orientation (0: left out for zero volume or a value that is not finite) and
+  // longest edge, on all cores; then the kept ones in order.
+  std::vector<std::int8_t> sign(mesh.cellCount());
+  std::vector<double> chunkMaxEdge((mesh.cellCount() + kChunk - 1) / kChunk, 0.0);
+  forEachChunk(mesh.cellCount(), kChunk, [&](std::size_t begin, std::size_t end) {
+    double longest = 0.0;
+    for (std::size_t c = begin; c < end; ++c) {
+      const auto n = mesh.cellNodes(c);
+      glm::dvec3 p[4];
+      bool finite = location == FieldLocation::Cell ? std::isfinite(values[c]) : true;
+      for (int k = 0; k < 4; ++k) {
+        p[k] = mesh.nodes[n[k]];
+        finite = finite && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z) &&
+                 (location == FieldLocation::Cell || std::isfinite(values[n[k]]));
+      }
+      const double o = finite ? orientation(p) : 0.0;
+      sign[c] = std::int8_t(o > 0.0 ? 1 : o < 0.0 ? -1 : 0);
+      if (sign[c] != 0)
+        for (int i = 0; i < 4; ++i)
+          for (int j = i + 1; j < 4; ++j) longest = std::max(longest, glm::length(p[i] - p[j]));
+    }
+    chunkMaxEdge[begin / kChunk] = longest;
+  });
+  for (double e : chunkMaxEdge) g.maxEdge = std::max(g.maxEdge, e);
+  g.skippedTets = std::size_t(std::count(sign.begin(), sign.end(), std::int8_t(0)));
+  g.tetCount = mesh.cellCount() - g.skippedTets;
+  g.tets.resize(g.tetCount);
+  if (g.skippedTets > 0) g.cellOfTet.resize(g.tetCount);
+  if (location == FieldLocation::Cell) g.cellValues.resize(g.tetCount);
+  for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
+    if (sign[c] == 0) continue;
     const auto n = mesh.cellNodes(c);
-    glm::dvec3 p[4];
-    bool finite = location == FieldLocation::Cell ? std::isfinite(values[c]) : true;
-    for (int k = 0; k < 4; ++k) {
-      p[k] = mesh.nodes[n[k]];
-      finite = finite && std::isfinite(p[k].x) && std::isfinite(p[k].y) && std::isfinite(p[k].z) &&
-               (location == FieldLocation::Cell || std::isfinite(values[n[k]]));
-    }
-    const double o = orientation(p);
-    if (!finite || o == 0.0) {
-      ++g.skippedTets;
-      continue;
-    }
-    glm::uvec4 t(n[0], n[1], n[2], n[3]);
-    if (o < 0.0) std::swap(t[1], t[2]);  // inverted input cells are drawn, oriented
-    g.tets.push_back(t);
-    g.cellOfTet.push_back(std::uint32_t(c));
-    if (location == FieldLocation::Cell) g.cellValues.push_back(g.gpuValue(values[c]));
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) g.maxEdge = std::max(g.maxEdge, glm::length(p[i] - p[j]));
+    g.tets[t] = sign[c] > 0 ? glm::uvec4(n[0], n[1], n[2], n[3]) : glm::uvec4(n[0], n[2], n[1], n[3]);  // inverted cells drawn, oriented
+    if (g.skippedTets > 0) g.cellOfTet[t] = std::uint32_t(c);
+    if (location == FieldLocation::Cell) g.cellValues[t] = g.gpuValue(values[c]);
+    ++t;
   }
   findNeighbors(g);
   buildBvh(g);
@@ -157,11 +173,11 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
 bool replaceValues(TetMeshGpu& g, const Mesh& mesh, FieldLocation location, std::span<const double> values) {
   const std::size_t expected = location == FieldLocation::Node ? mesh.nodeCount() : mesh.cellCount();
   if (values.size() != expected || (location == FieldLocation::Cell) != !g.cellValues.empty() ||
-      (location == FieldLocation::Cell && g.cellValues.size() != g.tets.size()))
+      (location == FieldLocation::Cell && g.cellValues.size() != g.tetCount))
     return false;
   // Every kept tet must stay finite, and no left-out tet may have become renderable.
   std::vector<char> kept(mesh.cellCount(), 0);
-  for (std::uint32_t c : g.cellOfTet) kept[c] = 1;
+  for (std::size_t t = 0; t < g.tetCount; ++t) kept[g.sourceCell(t)] = 1;
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
     bool finite = true;
     if (location == FieldLocation::Cell) finite = std::isfinite(values[c]);
@@ -179,7 +195,7 @@ bool replaceValues(TetMeshGpu& g, const Mesh& mesh, FieldLocation location, std:
   if (location == FieldLocation::Node)
     for (std::size_t i = 0; i < mesh.nodeCount(); ++i) g.nodes[i].w = std::isfinite(values[i]) ? g.gpuValue(values[i]) : 0.0f;
   else
-    for (std::size_t t = 0; t < g.tets.size(); ++t) g.cellValues[t] = g.gpuValue(values[g.cellOfTet[t]]);
+    for (std::size_t t = 0; t < g.tetCount; ++t) g.cellValues[t] = g.gpuValue(values[g.sourceCell(t)]);
   return true;
 }
 

@@ -23,10 +23,12 @@ namespace volpost::volume {
 struct TetMeshGpu {
   glm::dvec3 origin{0.0};                 ///< model coordinates of the mesh center
   std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value (gpuValue)
-  std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids
-  std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary
+  std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids (empty once only on the GPU)
+  std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary (likewise)
+  std::size_t tetCount = 0;               ///< tets, also when `tets` is let go after the upload
   std::vector<float> cellValues;          ///< one per tet (element results, gpuValue), else empty
-  std::vector<std::uint32_t> cellOfTet;   ///< mesh cell each tet comes from
+  /// The mesh cell each tet comes from; empty when every cell is kept (tet t is cell t).
+  std::vector<std::uint32_t> cellOfTet;
   std::vector<std::uint32_t> boundaryFaces;  ///< tet * 4 + face, in BVH leaf order
   std::vector<glm::vec4> bvh;             ///< 2 per node: (lo, first), (hi, count); count 0 = inner
   std::size_t skippedTets = 0;            ///< zero volume or non-finite values
@@ -42,6 +44,7 @@ struct TetMeshGpu {
   double valueMin = 0.0, valueMax = 0.0;  ///< range of the finite values (0, 0 when none)
 
   float gpuValue(double v) const { return float((v - valueOffset) * valueScale); }
+  std::uint32_t sourceCell(std::size_t tet) const { return cellOfTet.empty() ? std::uint32_t(tet) : cellOfTet[tet]; }
 
   std::size_t bytes() const;
 };
@@ -52,6 +55,7 @@ using volpost::faceNeighbors;  // volpost/core/TetAdjacency.hpp: shared by the G
 void setValueFrame(TetMeshGpu& gpu, std::span<const double> values);
 
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
+/// Built on all cores.
 TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<const double> values);
 
 /// Puts new values (another result or step, same location) into the prepared structure

@@ -228,6 +228,39 @@ TEST_F(RayCast, ANewResultUploadsOnlyValues) {
   EXPECT_FALSE(volume::replaceValues(gpu, grid, FieldLocation::Node, other));
 }
 
+// Once on the GPU, the tets and their neighbours are not kept in host memory a second time
+// (32 bytes per tet); the frames after that draw the same, and a renderer released and
+// initialized again says the volume must be set again instead of drawing nothing silently.
+TEST_F(RayCast, TheTetsLiveOnlyOnTheGpuOnceUploaded) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  volume::RayCaster caster;
+  caster.initialize();
+  caster.setTransferFunction(kTf);
+  caster.setVolume(grid, FieldLocation::Node, field(grid));
+  const VolumeStats before = caster.stats();
+  const auto first = imageOf(caster, isoCamera(grid), 32, 32);
+  const auto second = imageOf(caster, isoCamera(grid), 32, 32);
+  EXPECT_EQ(first, second);
+  EXPECT_EQ(caster.stats().tetrahedra, grid.cellCount());
+  EXPECT_EQ(caster.stats().meshBytes, before.meshBytes) << "the GPU's bytes are still counted";
+  std::vector<double> other = field(grid);
+  for (double& v : other) v = 5.0 - v;
+  caster.setValues(other);  // only the values travel: the tets are not needed on the host
+  EXPECT_NE(imageOf(caster, isoCamera(grid), 32, 32), first);
+  caster.release();
+  caster.initialize();
+  caster.setTransferFunction(kTf);
+  try {
+    (void)imageOf(caster, isoCamera(grid), 32, 32);
+    ADD_FAILURE() << "drew without its tetrahedra";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("set the volume again"), std::string::npos) << e.what();
+  }
+  caster.setVolume(grid, FieldLocation::Node, field(grid));
+  EXPECT_EQ(imageOf(caster, isoCamera(grid), 32, 32), first);
+  caster.release();
+}
+
 TEST_F(RayCast, IsoSurfacesMatchTheReference) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   const std::vector<optics::IsoSurface> isos = {{1.7, {0.9, 0.8, 0.1}, 0.6}, {3.9, {0.1, 0.7, 0.9}, 1.0}};
