@@ -15,7 +15,10 @@
 // one dispatch, but its grid march was not, docs/seismic.md).
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D outImage;
-layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { ivec4 neighbors[]; };
+// The tet across each face: three words per tet holding four 24-bit fields, then the far
+// pairs (TetMeshGpu::neighbors): 0 = boundary, 1 = far, else the index step to the tet
+// across (bits 2..23, signed) and the face it is entered through (bits 0..1).
+layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { uint neighborWords[]; };
 layout(std430, binding = BINDING_BVH) readonly buffer Bvh { vec4 bvh[]; };
 layout(std430, binding = BINDING_BOUNDARY_FACES) readonly buffer BoundaryFaces { uint boundaryFaces[]; };
 // Per pixel: x = phase (bits 0-1) | face entered (bits 2-3) | steps taken (bits 4-31);
@@ -30,9 +33,37 @@ layout(std430, binding = BINDING_RAY_COUNTERS) buffer RayCounters {
 uniform int maxSteps;      // for the whole ray
 uniform int stepsPerPass;  // this dispatch's share of them
 uniform ivec2 band;        // the rows this dispatch covers (first, count); rayState holds them only
+uniform uint farNeighborBase;   // where the far pairs start in neighborWords (3 x tets)
+uniform uint farNeighborCount;
 const uint PHASE_FRESH = 0u, PHASE_WALKING = 1u, PHASE_SEEKING = 2u, PHASE_DONE = 3u;
 
 #include "common/tet_segment.glsl"
+
+// The packed field of tet `tet`'s face k.
+uint neighborField(int tet, int k) {
+  uint b = uint(tet) * 3u;
+  if (k == 0) return neighborWords[b] & 0xffffffu;
+  if (k == 1) return (neighborWords[b] >> 24) | ((neighborWords[b + 1u] & 0xffffu) << 8);
+  if (k == 2) return (neighborWords[b + 1u] >> 16) | ((neighborWords[b + 2u] & 0xffu) << 16);
+  return neighborWords[b + 2u] >> 8;
+}
+
+// The tet across face k of `tet` (-1: the boundary) and the face the ray enters it through.
+int neighborAcross(int tet, int k, out int entryFace) {
+  uint field = neighborField(tet, k);
+  entryFace = int(field & 3u);
+  if (field == 0u) return -1;
+  if (field != 1u) return tet + (int(field << 8) >> 10);
+  uint key = uint(tet) * 4u + uint(k), lo = 0u, hi = farNeighborCount;  // a far one: search its pair
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (neighborWords[farNeighborBase + 2u * mid] < key) lo = mid + 1u;
+    else hi = mid;
+  }
+  uint target = neighborWords[farNeighborBase + 2u * lo + 1u];
+  entryFace = int(target & 3u);
+  return int(target >> 2);
+}
 
 // ---- the exit decision ---------------------------------------------------------------
 // The ray's Plucker product with the edge p -> q (vertex ids), computed from the lower id to
@@ -191,11 +222,10 @@ void main() {
       integrate(tv, uint(tet), t, min(tOut, tEnd));
       t = tOut;
       if (tOut >= tEnd) { finished = true; break; }
-      int next = neighbors[tet][exitFace];
+      int entry;
+      int next = neighborAcross(tet, exitFace, entry);
       if (next < 0) { tet = -1; break; }  // left the mesh
-      // The face of `next` we came through is the one whose neighbour is `tet`.
-      ivec4 nb = neighbors[next];
-      face = nb.x == tet ? 0 : nb.y == tet ? 1 : nb.z == tet ? 2 : 3;
+      face = entry;
       tet = next;
     }
   }

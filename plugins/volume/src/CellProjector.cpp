@@ -47,7 +47,9 @@ void CellProjector::updateSorter() {
     const std::array<NodeIndex, 4> v = {t.x, t.y, t.z, t.w};
     sortMesh_.addCell(CellType::Tet4, v);
   }
-  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_, g.neighbors);
+  std::vector<glm::ivec4> neighbors(g.tetCount);
+  for (std::size_t t = 0; t < g.tetCount; ++t) neighbors[t] = g.neighborsOf(t);
+  sorter_ = std::make_unique<VisibilitySorter>(sortMesh_, std::move(neighbors));
   sortedRevision_ = volume_.meshRevision();
 }
 

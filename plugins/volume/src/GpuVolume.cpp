@@ -261,7 +261,7 @@ void GpuVolume::uploadMesh() {
   if (renderer && std::strstr(renderer, "llvmpipe")) limit = 0;
   requireStorageBlockFits("nodes", gpu_.nodes.size() * sizeof(glm::vec4), limit);
   requireStorageBlockFits("tetrahedra", gpu_.tets.size() * sizeof(glm::uvec4), limit);
-  requireStorageBlockFits("face neighbours", gpu_.neighbors.size() * sizeof(glm::ivec4), limit);
+  requireStorageBlockFits("face neighbours", gpu_.neighbors.size() * sizeof(std::uint32_t), limit);
   requireStorageBlockFits("cell values", gpu_.cellValues.size() * sizeof(float), limit);
   requireStorageBlockFits("boundary faces", gpu_.boundaryFaces.size() * sizeof(std::uint32_t), limit);
   requireStorageBlockFits("boundary hierarchy", gpu_.bvh.size() * sizeof(glm::vec4), limit);
@@ -272,7 +272,7 @@ void GpuVolume::uploadMesh() {
   upload(tets_, gpu_.tets);
   if (letGo) std::vector<glm::uvec4>().swap(gpu_.tets);
   upload(neighbors_, gpu_.neighbors);
-  if (letGo) std::vector<glm::ivec4>().swap(gpu_.neighbors);
+  if (letGo) std::vector<std::uint32_t>().swap(gpu_.neighbors);
   tetrahedraOnlyOnGpu_ = letGo;
   upload(cellValues_, gpu_.cellValues);
   upload(bvh_, gpu_.bvh);

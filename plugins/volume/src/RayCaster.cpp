@@ -68,6 +68,8 @@ std::size_t RayCaster::dispatch(const RenderContext& ctx, GLuint image, int firs
   glUseProgram(p);
   volume_.setSegmentUniforms(p, ctx);
   glProgramUniform1i(p, glGetUniformLocation(p, "maxSteps"), rayStepCap(volume_.mesh().tetCount));
+  glProgramUniform1ui(p, glGetUniformLocation(p, "farNeighborBase"), GLuint(volume_.mesh().tetCount * 3));
+  glProgramUniform1ui(p, glGetUniformLocation(p, "farNeighborCount"), GLuint(volume_.mesh().farNeighbors));
   glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), steps);
   glProgramUniform2i(p, glGetUniformLocation(p, "band"), firstRow, rows);
   volume_.bindSegmentResources(ctx);

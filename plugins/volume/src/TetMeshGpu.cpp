@@ -26,11 +26,16 @@ constexpr std::size_t kChunk = std::size_t(1) << 14;
 double orientation(const glm::dvec3* p) { return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0])); }
 
 
+constexpr std::uint32_t kNone = 0xffffffffu, kFar = 1u, kTetBits = 0x3fffffffu;
+
+// The tet across each face (4 words per tet, then packed in place), with its boundary faces.
 void findNeighbors(TetMeshGpu& g) {
-  g.neighbors = faceNeighbors(g.tets);
-  for (std::uint32_t t = 0; t < g.tets.size(); ++t)
-    for (int f = 0; f < 4; ++f)
-      if (g.neighbors[t][f] < 0) g.boundaryFaces.push_back(t * 4 + std::uint32_t(f));
+  std::vector<std::uint32_t> words(g.tetCount * 4, kNone);
+  faceNeighborsInto(
+      g.tetCount, [&g](std::size_t t) { return g.tets[t]; },
+      [&words](std::size_t t, int face, int across) { words[t * 4 + std::size_t(face)] = std::uint32_t(across); });
+  packNeighbors(words, g.tetCount, g.farNeighbors, g.boundaryFaces);
+  g.neighbors = std::move(words);
 }
 
 void buildBvh(TetMeshGpu& g) {
@@ -94,6 +99,78 @@ void buildBvh(TetMeshGpu& g) {
 
 }  // namespace
 
+void packNeighbors(std::vector<std::uint32_t>& words, std::size_t tetCount, std::size_t& farCount,
+                   std::vector<std::uint32_t>& boundaryFaces) {
+  // First, on all cores: the face of the tet across that points back, in the two bits tet
+  // numbers leave free (tets < 2^30). Others read a word while its owner sets those bits:
+  // atomic, and read through the mask.
+  forEachChunk(tetCount, kChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+      for (std::size_t k = 0; k < 4; ++k) {
+        std::atomic_ref<std::uint32_t> mine(words[t * 4 + k]);
+        const std::uint32_t across = mine.load(std::memory_order_relaxed);
+        if (across == kNone) continue;
+        std::uint32_t back = 0;
+        for (std::uint32_t j = 0; j < 4; ++j)
+          if ((std::atomic_ref<std::uint32_t>(words[std::size_t(across) * 4 + j]).load(std::memory_order_relaxed) &
+               kTetBits) == t)
+            back = j;
+        mine.fetch_or(back << 30, std::memory_order_relaxed);
+      }
+  });
+  // Then in place, in tet order: the three words of tet t lie at or before its four.
+  std::vector<std::uint32_t> far;
+  for (std::size_t t = 0; t < tetCount; ++t) {
+    std::uint32_t field[4];
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::uint32_t w = words[t * 4 + k];
+      if (w == kNone) {
+        field[k] = 0;
+        boundaryFaces.push_back(std::uint32_t(t * 4 + k));
+        continue;
+      }
+      const std::int64_t step = std::int64_t(w & kTetBits) - std::int64_t(t);
+      if (step >= -kNearNeighborStep && step <= kNearNeighborStep) {
+        field[k] = (std::uint32_t(step) & 0x3fffffu) << 2 | w >> 30;
+      } else {
+        field[k] = kFar;
+        far.insert(far.end(), {std::uint32_t(t * 4 + k), (w & kTetBits) * 4 + (w >> 30)});
+      }
+    }
+    words[t * 3] = field[0] | field[1] << 24;
+    words[t * 3 + 1] = field[1] >> 8 | field[2] << 16;
+    words[t * 3 + 2] = field[2] >> 16 | field[3] << 8;
+  }
+  farCount = far.size() / 2;  // in tet order: ascending keys already
+  words.resize(tetCount * 3);
+  words.insert(words.end(), far.begin(), far.end());
+}
+
+glm::ivec4 TetMeshGpu::neighborsOf(std::size_t tet) const {
+  const std::uint32_t* w = neighbors.data() + tet * 3;
+  const std::uint32_t field[4] = {w[0] & 0xffffffu, (w[0] >> 24 | w[1] << 8) & 0xffffffu,
+                                  (w[1] >> 16 | w[2] << 16) & 0xffffffu, w[2] >> 8};
+  glm::ivec4 across(-1);
+  for (int k = 0; k < 4; ++k) {
+    if (field[k] == 0) continue;
+    if (field[k] == kFar) {
+      const std::uint32_t key = std::uint32_t(tet * 4 + std::size_t(k));
+      const std::uint32_t* pairs = neighbors.data() + tetCount * 3;
+      std::size_t lo = 0, hi = farNeighbors;
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (pairs[2 * mid] < key) lo = mid + 1;
+        else hi = mid;
+      }
+      across[k] = int(pairs[2 * lo + 1] / 4);
+      continue;
+    }
+    const std::int32_t step = std::int32_t(field[k] << 8) >> 10;  // bits 2..23, sign-extended
+    across[k] = int(std::int64_t(tet) + step);
+  }
+  return across;
+}
+
 // The range of the finite values (see TetMeshGpu::valueOffset).
 void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
   double lo = INFINITY, hi = -INFINITY;
@@ -110,7 +187,8 @@ void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
 }
 
 std::size_t TetMeshGpu::bytes() const {  // what goes to the GPU (cellOfTet stays on the CPU)
-  return nodes.size() * sizeof(glm::vec4) + tetCount * (sizeof(glm::uvec4) + sizeof(glm::ivec4)) +
+  const std::size_t neighborBytes = (tetCount * 3 + farNeighbors * 2) * sizeof(std::uint32_t);
+  return nodes.size() * sizeof(glm::vec4) + tetCount * sizeof(glm::uvec4) + neighborBytes +
          cellValues.size() * sizeof(float) + boundaryFaces.size() * sizeof(std::uint32_t) + bvh.size() * sizeof(glm::vec4);
 }
 

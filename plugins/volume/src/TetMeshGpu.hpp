@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // What the GPU ray caster holds per mesh, prepared on the CPU (no GL here, so it is
-// tested directly). Per tetrahedron: 4 vertex ids and 4 face neighbours (32 B); per node
-// its position relative to the mesh center and its value (16 B); plus the boundary faces
-// and a BVH over them to find where rays enter (and re-enter) the mesh. Face planes,
+// tested directly). Per tetrahedron: 4 vertex ids (16 B) and its 4 face neighbours packed
+// in 12 B (below); per node its position relative to the mesh center and its value (16 B);
+// plus the boundary faces and a BVH over them to find where rays enter (and re-enter) the mesh. Face planes,
 // barycentric weights and gradients are computed in the shader from the vertices, which
 // trades arithmetic for memory (Espinha 2005 stored 96 B per tet, Table 5).
 #pragma once
@@ -24,7 +24,16 @@ struct TetMeshGpu {
   glm::dvec3 origin{0.0};                 ///< model coordinates of the mesh center
   std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value (gpuValue)
   std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids (empty once only on the GPU)
-  std::vector<glm::ivec4> neighbors;      ///< across the face opposite vertex k; -1 = boundary (likewise)
+  /// The tet across the face opposite each vertex, as the shader reads it (empty once only
+  /// on the GPU, as `tets`): three words per tet holding four 24-bit fields (face k in bits
+  /// 24k..24k+23 of the 96), each 0 for the boundary, 1 for "far" (below), else the signed
+  /// step from this tet's index to the one across in bits 2..23 (within +-(2^21 - 1)) and the
+  /// face of that tet the ray enters it through in bits 0..1. After 3 x tetCount words, the
+  /// far ones as pairs (tet x 4 + face, across x 4 + entry face), ascending. 28 bytes per tet
+  /// with the vertex ids (32 with four plain indices), and the step needs no search for the
+  /// entry face. Read on the CPU with neighborsOf().
+  std::vector<std::uint32_t> neighbors;
+  std::size_t farNeighbors = 0;           ///< pairs after the packed words
   std::size_t tetCount = 0;               ///< tets, also when `tets` is let go after the upload
   std::vector<float> cellValues;          ///< one per tet (element results, gpuValue), else empty
   /// The mesh cell each tet comes from; empty when every cell is kept (tet t is cell t).
@@ -45,11 +54,22 @@ struct TetMeshGpu {
 
   float gpuValue(double v) const { return float((v - valueOffset) * valueScale); }
   std::uint32_t sourceCell(std::size_t tet) const { return cellOfTet.empty() ? std::uint32_t(tet) : cellOfTet[tet]; }
+  /// The tets across tet t's faces (-1: boundary), decoded from `neighbors`.
+  glm::ivec4 neighborsOf(std::size_t tet) const;
 
   std::size_t bytes() const;
 };
 
 using volpost::faceNeighbors;  // volpost/core/TetAdjacency.hpp: shared by the GPU structure and the sorter
+
+/// The largest index step a packed neighbour field holds; farther ones go to the pairs.
+inline constexpr std::int64_t kNearNeighborStep = (std::int64_t(1) << 21) - 1;
+
+/// Packs a tet-per-4-words adjacency (tet across each face, 0xffffffff for none, as
+/// faceNeighborsInto writes it) into the GPU's form, in place, and lists the boundary
+/// faces (tet x 4 + face). Words past the packed ones hold the far pairs; the rest is cut.
+void packNeighbors(std::vector<std::uint32_t>& words, std::size_t tetCount, std::size_t& farCount,
+                   std::vector<std::uint32_t>& boundaryFaces);
 
 /// Sets valueMin/Max and the frame (valueOffset, valueScale) from the finite values.
 void setValueFrame(TetMeshGpu& gpu, std::span<const double> values);

@@ -13,7 +13,7 @@ namespace volpost::volume::binding {
 // Shader storage buffers.
 inline constexpr GLuint kNodes = 0;          ///< vec4 per node: mesh-relative xyz, value
 inline constexpr GLuint kTets = 1;           ///< uvec4 per tet
-inline constexpr GLuint kNeighbors = 2;      ///< ivec4 per tet
+inline constexpr GLuint kNeighbors = 2;      ///< 3 words per tet, then far pairs (TetMeshGpu::neighbors)
 inline constexpr GLuint kCellValues = 3;     ///< float per tet (element results)
 inline constexpr GLuint kBvh = 4;            ///< boundary-face BVH nodes
 inline constexpr GLuint kBoundaryFaces = 5;  ///< tet * 4 + face, BVH leaf order

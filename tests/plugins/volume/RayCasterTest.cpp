@@ -4,6 +4,11 @@
 // views of a tetrahedralized grid, clip planes, element results, a far-away tiny mesh.
 #include "VolumeImageFixture.hpp"
 
+#include "TetMeshGpu.hpp"
+
+#include <algorithm>
+#include <random>
+
 using namespace volpost;
 using namespace volpost::test;
 
@@ -97,9 +102,9 @@ TEST_F(RayCast, TransferFunctionEditsDoNotTouchTheMesh) {
   EXPECT_EQ(after.meshUploads, before.meshUploads);
   EXPECT_EQ(after.valueUploads, before.valueUploads);
   EXPECT_EQ(after.tableBuilds, before.tableBuilds + 1);
-  // 32 B per tet (vertex ids, neighbours) + 16 B per node + the boundary BVH; this small
-  // grid has many boundary faces per tet (the bench reports ~35 B/tet on real meshes).
-  EXPECT_LT(double(before.meshBytes) / double(grid.cellCount()), 56.0);
+  // 28 B per tet (vertex ids 16, packed neighbours 12) + 16 B per node + the boundary BVH;
+  // this small grid has many boundary faces per tet (the scale bench: 31.4 B/tet at 12.6M).
+  EXPECT_LT(double(before.meshBytes) / double(grid.cellCount()), 52.0);
   EXPECT_GT(after.lastTransferFunctionMs, 0.0);
   EXPECT_EQ(after.tetrahedra, grid.cellCount());
 }
@@ -394,4 +399,44 @@ TEST_F(RayCast, TheWindowGetsAQuickFrameAndTheFullOneInSlicesThatEqualsTheSynchr
   caster.setTransferFunction(TransferFunction::ramp(0.0, 6.0, "cool-warm", 0.3, 5));
   (void)gpuImage(camera, 64, 48);
   EXPECT_TRUE(caster.hasPendingWork());
+}
+
+// Neighbours more than 2^21 tets apart in the numbering do not fit a packed field: they go
+// to the sorted pairs after the packed words, which the shader searches. A tet grid of 2.2M
+// tets in a shuffled order has tens of thousands of them: the packed adjacency decodes to
+// faceNeighbors' own, and the GPU walk through them draws what the CPU walk draws.
+TEST_F(RayCast, NeighboursFarApartInTheNumberingAreFoundInTheirPairs) {
+  const Mesh grid = test::tetGrid(72, 72, 72);
+  std::vector<std::size_t> order(grid.cellCount());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  Mesh shuffled;
+  shuffled.nodes = grid.nodes;
+  shuffled.reserveCells(grid.cellCount(), grid.cellCount() * 4);
+  for (std::size_t c : order) shuffled.addCell(CellType::Tet4, grid.cellNodes(c));
+  std::vector<double> values(grid.nodeCount());
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = 0.05 * grid.nodes[i].x + 0.03 * grid.nodes[i].y;
+
+  const volume::TetMeshGpu gpu = volume::buildTetMeshGpu(shuffled, FieldLocation::Node, values);
+  ASSERT_GT(gpu.farNeighbors, 1000u);
+  std::vector<glm::uvec4> tets(gpu.tetCount);
+  for (std::size_t t = 0; t < tets.size(); ++t) tets[t] = gpu.tets[t];
+  const std::vector<glm::ivec4> expected = faceNeighbors(tets);
+  for (std::size_t t = 0; t < tets.size(); ++t) ASSERT_EQ(gpu.neighborsOf(t), expected[t]) << "tet " << t;
+
+  const TransferFunction tf({{0.0, {0.2, 0.4, 1.0}, 0.02}, {3.6, {1.0, 0.5, 0.1}, 0.08}, {5.8, {1.0, 1.0, 0.9}, 0.03}});
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  caster_->setTerminationThreshold(0.0);
+  caster_->setTransferFunction(tf);
+  caster_->setVolume(shuffled, FieldLocation::Node, values);
+  const Camera camera = isoCamera(shuffled);
+  const auto walked = gpuImage(camera, 24, 24);
+  const volume::TetWalkMesh walk(shuffled, FieldLocation::Node, values);
+  volume::CpuRaySettings exact;
+  exact.terminationTransmittance = 0.0;
+  const volume::CpuImage cpu = volume::renderCpu(walk, tf, camera, 24, 24, exact);
+  ASSERT_EQ(walked.size(), cpu.rgba.size());
+  double apart = 0.0;
+  for (std::size_t i = 0; i < walked.size(); ++i) apart = std::max(apart, double(std::abs(walked[i] - cpu.rgba[i])));
+  EXPECT_LT(apart, 1e-3) << "the GPU walk through far neighbours against the CPU walk";
 }
