@@ -6,7 +6,11 @@
 #pragma GCC diagnostic ignored "-Warray-bounds"
 #endif
 
+#include <volpost/core/WorkerThreads.hpp>
+
 #include <algorithm>
+#include <atomic>
+#include <mutex>
 #include <span>
 #include <unordered_map>
 #include <limits>
@@ -14,32 +18,84 @@
 namespace volpost {
 namespace {
 
-struct FaceRecord {
-  std::array<NodeIndex, 4> key;  // sorted corner nodes, padded with the largest index
-  std::uint32_t cell;
-  std::uint8_t face;
-  bool operator<(const FaceRecord& o) const { return key < o.key; }
-};
+using FaceKey = std::array<NodeIndex, 4>;  // sorted corner nodes, padded with the largest index
 
-std::vector<FaceRecord> collectFaces(const Mesh& mesh) {
-  std::vector<FaceRecord> faces;
-  std::size_t total = 0;
-  for (CellType t : mesh.cellTypes()) total += topology(t).faces.size();
-  faces.reserve(total);
-  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
-    if (cellRepeatsANode(mesh, c)) continue;  // flagged by the checks; no proper faces
-    const auto nodes = mesh.cellNodes(c);
-    const auto& topo = topology(mesh.cellType(c));
-    for (std::size_t f = 0; f < topo.faces.size(); ++f) {
-      FaceRecord r{{}, std::uint32_t(c), std::uint8_t(f)};
-      r.key.fill(std::numeric_limits<NodeIndex>::max());
-      const CellFace& face = topo.faces[f];
-      for (int k = 0; k < face.size; ++k) r.key[k] = nodes[face.corners[k]];
-      std::sort(r.key.begin(), r.key.begin() + face.size);
-      faces.push_back(r);
+FaceKey faceKey(std::span<const NodeIndex> nodes, const CellFace& face) {
+  FaceKey key;
+  key.fill(std::numeric_limits<NodeIndex>::max());
+  for (int k = 0; k < face.size; ++k) key[std::size_t(k)] = nodes[face.corners[k]];
+  std::sort(key.begin(), key.begin() + face.size);
+  return key;
+}
+
+// The cell faces no other cell shares, as cell x 8 + face, ascending. Each face is listed
+// under its smallest corner (both copies of a shared face land in one group) as 8 bytes,
+// and each group, a few dozen faces, sorted by the face's corners read again from its cell;
+// large meshes go in passes over a share of the node numbers, so the lists hold about 8
+// bytes per tet at once (a list of every face with its corners was 96). On all cores.
+std::vector<std::uint64_t> unsharedFaces(const Mesh& mesh, const Progress& progress) {
+  constexpr std::size_t kChunk = std::size_t(1) << 14;
+  const std::size_t cells = mesh.cellCount(), nodes = mesh.nodeCount();
+  const auto eachFace = [&](auto visit) {  // visit(cell, face index, its face) for cells with proper faces
+    forEachChunk(cells, kChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t c = begin; c < end; ++c) {
+        if (cellRepeatsANode(mesh, c)) continue;  // flagged by the checks; no proper faces
+        const auto& topo = topology(mesh.cellType(c));
+        for (std::size_t f = 0; f < topo.faces.size(); ++f) visit(c, f, topo.faces[f]);
+      }
+    });
+  };
+  const std::size_t passes = std::clamp<std::size_t>(cells >> 20, 1, 4);
+  std::vector<std::uint64_t> unshared;
+  std::mutex unsharedMutex;
+  for (std::size_t pass = 0; pass < passes; ++pass) {
+    const std::size_t lo = nodes * pass / passes, hi = nodes * (pass + 1) / passes;
+    const auto smallestCorner = [&](std::size_t c, const CellFace& face) {
+      const auto n = mesh.cellNodes(c);
+      NodeIndex smallest = n[face.corners[0]];
+      for (int k = 1; k < face.size; ++k) smallest = std::min(smallest, n[face.corners[k]]);
+      return std::size_t(smallest);
+    };
+    std::vector<std::atomic<std::uint32_t>> count(hi - lo);
+    eachFace([&](std::size_t c, std::size_t, const CellFace& face) {
+      const std::size_t v = smallestCorner(c, face);
+      if (v >= lo && v < hi) count[v - lo].fetch_add(1, std::memory_order_relaxed);
+    });
+    std::vector<std::size_t> start(hi - lo + 1, 0);
+    for (std::size_t v = 0; v < hi - lo; ++v) {
+      start[v + 1] = start[v] + count[v].load(std::memory_order_relaxed);
+      count[v].store(0, std::memory_order_relaxed);
     }
+    std::vector<std::uint64_t> listed(start.back());
+    eachFace([&](std::size_t c, std::size_t f, const CellFace& face) {
+      const std::size_t v = smallestCorner(c, face);
+      if (v >= lo && v < hi) listed[start[v - lo] + count[v - lo].fetch_add(1, std::memory_order_relaxed)] = c * 8 + f;
+    });
+    std::vector<std::atomic<std::uint32_t>>().swap(count);
+    forEachChunk(hi - lo, std::size_t(1) << 12, [&](std::size_t begin, std::size_t end) {
+      std::vector<std::pair<FaceKey, std::uint64_t>> group;
+      std::vector<std::uint64_t> found;
+      for (std::size_t v = begin; v < end; ++v) {
+        group.clear();
+        for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
+          const std::size_t c = std::size_t(listed[i] / 8);
+          group.push_back({faceKey(mesh.cellNodes(c), topology(mesh.cellType(c)).faces[listed[i] % 8]), listed[i]});
+        }
+        std::sort(group.begin(), group.end());
+        for (std::size_t i = 0; i < group.size();) {
+          std::size_t j = i + 1;
+          while (j < group.size() && group[j].first == group[i].first) ++j;
+          if (j - i == 1) found.push_back(group[i].second);
+          i = j;
+        }
+      }
+      const std::lock_guard lock(unsharedMutex);
+      unshared.insert(unshared.end(), found.begin(), found.end());
+    });
+    progress.report(0.5 * double(pass + 1) / double(passes));
   }
-  return faces;
+  std::sort(unshared.begin(), unshared.end());  // cell order, whatever the threads did
+  return unshared;
 }
 
 int midsideNode(const CellTopology& topo, int a, int b) {
@@ -163,22 +219,14 @@ BoundarySurface extractBoundary(const Mesh& mesh, const Progress& progress) {
   BoundarySurface out;
   const Bounds b = mesh.bounds();
   out.origin = b.valid ? b.center() : glm::dvec3(0.0);
-  std::vector<FaceRecord> faces = collectFaces(mesh);
-  progress.report(0.2);
-  std::sort(faces.begin(), faces.end());
-  progress.report(0.5);
+  const std::vector<std::uint64_t> unshared = unsharedFaces(mesh, progress);
   const MeshCells cells{mesh};
   SurfaceBuilder builder(cells, out);
-  for (std::size_t i = 0; i < faces.size();) {
-    std::size_t j = i + 1;
-    while (j < faces.size() && faces[j].key == faces[i].key) ++j;
-    if (j - i == 1) {
-      const auto& topo = topology(mesh.cellType(faces[i].cell));
-      builder.addCellFace(faces[i].cell, topo.faces[faces[i].face]);
-      ++out.boundaryFaceCount;
-    }
-    if ((i & 0xffff) == 0) progress.report(0.5 + 0.45 * double(i) / double(faces.size()));
-    i = j;
+  for (std::size_t i = 0; i < unshared.size(); ++i) {
+    const std::size_t cell = std::size_t(unshared[i] / 8);
+    builder.addCellFace(std::uint32_t(cell), topology(mesh.cellType(cell)).faces[unshared[i] % 8]);
+    ++out.boundaryFaceCount;
+    if ((i & 0xffff) == 0) progress.report(0.5 + 0.45 * double(i) / double(unshared.size()));
   }
   builder.finish();
   out.mesh.request_face_normals();

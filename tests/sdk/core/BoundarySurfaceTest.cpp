@@ -126,3 +126,27 @@ TEST(BoundarySurface, AGridsBoundaryIsItsHexahedrasBoundary) {
     }
   }
 }
+
+// A mesh of over 2M cells finds its unshared faces in passes over a share of the node
+// numbers each: the same boundary as the grid's own sides give, face for face.
+TEST(BoundarySurface, ALargeMeshFoundInPassesHasTheGridsBoundary) {
+  RegularGrid g;
+  g.dims = {131, 131, 131};  // 130^3 = 2.2M hexahedra: two passes
+  g.origin = {1.0, 2.0, 3.0};
+  g.axes = {glm::dvec3(0.5, 0.0, 0.0), glm::dvec3(0.0, 0.5, 0.0), glm::dvec3(0.0, 0.0, 0.25)};
+  const Mesh hexes = hexahedraOfGrid(g);
+  ASSERT_GE(hexes.cellCount() >> 20, 2u);
+  const BoundarySurface fromCells = extractBoundary(hexes);
+  const BoundarySurface fromGrid = extractBoundary(g);
+  EXPECT_EQ(fromCells.boundaryFaceCount, std::size_t(6 * 130 * 130));
+  EXPECT_EQ(fromCells.boundaryFaceCount, fromGrid.boundaryFaceCount);
+  const auto cellsOfFaces = [](const BoundarySurface& s) {
+    std::vector<std::uint32_t> cells;
+    for (auto f : s.mesh.faces()) cells.push_back(s.mesh.property(s.cellOfFace, f));
+    std::sort(cells.begin(), cells.end());
+    return cells;
+  };
+  EXPECT_EQ(cellsOfFaces(fromCells), cellsOfFaces(fromGrid));
+  EXPECT_NEAR(enclosedVolume(fromCells), 65.0 * 65.0 * 32.5, 1e-6 * 65.0 * 65.0 * 32.5);
+  EXPECT_EQ(fromCells.nonManifoldFaceCount, 0u);
+}
