@@ -42,8 +42,9 @@ void CellProjector::updateSorter() {
   sortMesh_ = Mesh();
   sortMesh_.nodes.reserve(g.nodes.size());
   for (const glm::vec4& n : g.nodes) sortMesh_.nodes.push_back(glm::dvec3(n) + g.origin);
-  sortMesh_.reserveCells(g.tets.size(), g.tets.size() * 4);
-  for (const glm::uvec4& t : g.tets) {
+  sortMesh_.reserveCells(g.tetCount, g.tetCount * 4);
+  for (std::size_t i = 0; i < g.tetCount; ++i) {
+    const glm::uvec4 t = g.tetNodes(i);
     const std::array<NodeIndex, 4> v = {t.x, t.y, t.z, t.w};
     sortMesh_.addCell(CellType::Tet4, v);
   }

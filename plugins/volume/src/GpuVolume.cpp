@@ -24,13 +24,16 @@
 namespace volpost::volume {
 namespace {
 
-template <typename T>
-void upload(gl::Buffer& buffer, const std::vector<T>& data) {
+void uploadBytes(gl::Buffer& buffer, const void* data, std::size_t bytes) {
   if (!buffer) buffer = gl::createBuffer();
   // Zero-size SSBOs cannot be bound: keep one element.
-  const std::size_t bytes = std::max<std::size_t>(data.size() * sizeof(T), 16);
-  glNamedBufferData(buffer.id(), GLsizeiptr(bytes), nullptr, GL_STATIC_DRAW);
-  if (!data.empty()) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(data.size() * sizeof(T)), data.data());
+  glNamedBufferData(buffer.id(), GLsizeiptr(std::max<std::size_t>(bytes, 16)), nullptr, GL_STATIC_DRAW);
+  if (bytes > 0) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(bytes), data);
+}
+
+template <typename T>
+void upload(gl::Buffer& buffer, const std::vector<T>& data) {
+  uploadBytes(buffer, data.data(), data.size() * sizeof(T));
 }
 
 gl::Texture texture2D(GLenum format, int w, int h) {
@@ -260,17 +263,17 @@ void GpuVolume::uploadMesh() {
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (renderer && std::strstr(renderer, "llvmpipe")) limit = 0;
   requireStorageBlockFits("nodes", gpu_.nodes.size() * sizeof(glm::vec4), limit);
-  requireStorageBlockFits("tetrahedra", gpu_.tets.size() * sizeof(glm::uvec4), limit);
+  requireStorageBlockFits("tetrahedra", gpu_.tetCount * sizeof(glm::uvec4), limit);
   requireStorageBlockFits("face neighbours", gpu_.neighbors.size() * sizeof(std::uint32_t), limit);
   requireStorageBlockFits("cell values", gpu_.cellValues.size() * sizeof(float), limit);
   requireStorageBlockFits("boundary faces", gpu_.boundaryFaces.size() * sizeof(std::uint32_t), limit);
   requireStorageBlockFits("boundary hierarchy", gpu_.bvh.size() * sizeof(glm::vec4), limit);
   // Each array let go as soon as it is up (unless kept), so that a driver whose "GPU" copy
   // is host memory too (llvmpipe) never holds both whole structures at once.
-  const bool letGo = !keepsTetrahedraOnHost_ && !gpu_.tets.empty();
+  const bool letGo = !keepsTetrahedraOnHost_ && gpu_.holdsTets();
   upload(nodes_, gpu_.nodes);
-  upload(tets_, gpu_.tets);
-  if (letGo) std::vector<glm::uvec4>().swap(gpu_.tets);
+  uploadBytes(tets_, gpu_.tetData(), gpu_.tetCount * sizeof(glm::uvec4));
+  if (letGo) gpu_.letGoOfTets();
   upload(neighbors_, gpu_.neighbors);
   if (letGo) std::vector<std::uint32_t>().swap(gpu_.neighbors);
   tetrahedraOnlyOnGpu_ = letGo;

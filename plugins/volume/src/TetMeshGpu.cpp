@@ -32,7 +32,7 @@ constexpr std::uint32_t kNone = 0xffffffffu, kFar = 1u, kTetBits = 0x3fffffffu;
 void findNeighbors(TetMeshGpu& g) {
   std::vector<std::uint32_t> words(g.tetCount * 4, kNone);
   faceNeighborsInto(
-      g.tetCount, [&g](std::size_t t) { return g.tets[t]; },
+      g.tetCount, [&g](std::size_t t) { return g.tetNodes(t); },
       [&words](std::size_t t, int face, int across) { words[t * 4 + std::size_t(face)] = std::uint32_t(across); });
   packNeighbors(words, g.tetCount, g.farNeighbors, g.boundaryFaces);
   g.neighbors = std::move(words);
@@ -46,7 +46,7 @@ void buildBvh(TetMeshGpu& g) {
     const std::uint32_t t = g.boundaryFaces[i] / 4, f = g.boundaryFaces[i] % 4;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (int k = 0; k < 3; ++k) {
-      const glm::vec3 p(g.nodes[g.tets[t][kFaces[f][k]]]);
+      const glm::vec3 p(g.nodes[g.tetNodes(t)[kFaces[f][k]]]);
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -232,17 +232,28 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
   for (double e : chunkMaxEdge) g.maxEdge = std::max(g.maxEdge, e);
   g.skippedTets = std::size_t(std::count(sign.begin(), sign.end(), std::int8_t(0)));
   g.tetCount = mesh.cellCount() - g.skippedTets;
-  g.tets.resize(g.tetCount);
+  const bool asGiven = g.skippedTets == 0 && mesh.connectivity().size() == mesh.cellCount() * 4 &&
+                       std::all_of(sign.begin(), sign.end(), [](std::int8_t x) { return x > 0; }) &&
+                       std::all_of(mesh.cellTypes().begin(), mesh.cellTypes().end(), [](CellType t) { return t == CellType::Tet4; });
+  if (asGiven) {  // the mesh's cells are the list: shared, not copied
+    auto sharing = std::make_shared<Mesh>();
+    sharing->shareCellsOf(mesh);
+    g.sharedCells = std::move(sharing);
+  } else {
+    g.tets.resize(g.tetCount);
+  }
   if (g.skippedTets > 0) g.cellOfTet.resize(g.tetCount);
   if (location == FieldLocation::Cell) g.cellValues.resize(g.tetCount);
   for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
     if (sign[c] == 0) continue;
     const auto n = mesh.cellNodes(c);
-    g.tets[t] = sign[c] > 0 ? glm::uvec4(n[0], n[1], n[2], n[3]) : glm::uvec4(n[0], n[2], n[1], n[3]);  // inverted cells drawn, oriented
+    if (!asGiven)  // inverted cells drawn, oriented
+      g.tets[t] = sign[c] > 0 ? glm::uvec4(n[0], n[1], n[2], n[3]) : glm::uvec4(n[0], n[2], n[1], n[3]);
     if (g.skippedTets > 0) g.cellOfTet[t] = std::uint32_t(c);
     if (location == FieldLocation::Cell) g.cellValues[t] = g.gpuValue(values[c]);
     ++t;
   }
+  std::vector<std::int8_t>().swap(sign);
   findNeighbors(g);
   buildBvh(g);
   return g;

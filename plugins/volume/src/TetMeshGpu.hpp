@@ -15,6 +15,7 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -23,7 +24,11 @@ namespace volpost::volume {
 struct TetMeshGpu {
   glm::dvec3 origin{0.0};                 ///< model coordinates of the mesh center
   std::vector<glm::vec4> nodes;           ///< xyz relative to origin, w = nodal value (gpuValue)
-  std::vector<glm::uvec4> tets;           ///< positively oriented vertex ids (empty once only on the GPU)
+  /// Positively oriented vertex ids: a list of their own, or (every cell kept, tet4 and
+  /// positive as given) the mesh's own cells, shared (16 bytes per tet not held twice).
+  /// Neither once the tets are only on the GPU. Read through tetNodes().
+  std::vector<glm::uvec4> tets;
+  std::shared_ptr<const Mesh> sharedCells;
   /// The tet across the face opposite each vertex, as the shader reads it (empty once only
   /// on the GPU, as `tets`): three words per tet holding four 24-bit fields (face k in bits
   /// 24k..24k+23 of the 96), each 0 for the boundary, 1 for "far" (below), else the signed
@@ -54,6 +59,18 @@ struct TetMeshGpu {
 
   float gpuValue(double v) const { return float((v - valueOffset) * valueScale); }
   std::uint32_t sourceCell(std::size_t tet) const { return cellOfTet.empty() ? std::uint32_t(tet) : cellOfTet[tet]; }
+  glm::uvec4 tetNodes(std::size_t t) const {
+    if (!sharedCells) return tets[t];
+    const NodeIndex* n = sharedCells->connectivity().data() + 4 * t;
+    return {n[0], n[1], n[2], n[3]};
+  }
+  /// The vertex ids of all tets, 16 bytes each, where they are (for the upload).
+  const void* tetData() const { return sharedCells ? static_cast<const void*>(sharedCells->connectivity().data()) : tets.data(); }
+  bool holdsTets() const { return sharedCells || !tets.empty(); }
+  void letGoOfTets() {
+    std::vector<glm::uvec4>().swap(tets);
+    sharedCells.reset();
+  }
   /// The tets across tet t's faces (-1: boundary), decoded from `neighbors`.
   glm::ivec4 neighborsOf(std::size_t tet) const;
 

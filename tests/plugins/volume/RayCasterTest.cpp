@@ -420,7 +420,7 @@ TEST_F(RayCast, NeighboursFarApartInTheNumberingAreFoundInTheirPairs) {
   const volume::TetMeshGpu gpu = volume::buildTetMeshGpu(shuffled, FieldLocation::Node, values);
   ASSERT_GT(gpu.farNeighbors, 1000u);
   std::vector<glm::uvec4> tets(gpu.tetCount);
-  for (std::size_t t = 0; t < tets.size(); ++t) tets[t] = gpu.tets[t];
+  for (std::size_t t = 0; t < tets.size(); ++t) tets[t] = gpu.tetNodes(t);
   const std::vector<glm::ivec4> expected = faceNeighbors(tets);
   for (std::size_t t = 0; t < tets.size(); ++t) ASSERT_EQ(gpu.neighborsOf(t), expected[t]) << "tet " << t;
 
@@ -439,4 +439,28 @@ TEST_F(RayCast, NeighboursFarApartInTheNumberingAreFoundInTheirPairs) {
   double apart = 0.0;
   for (std::size_t i = 0; i < walked.size(); ++i) apart = std::max(apart, double(std::abs(walked[i] - cpu.rgba[i])));
   EXPECT_LT(apart, 1e-3) << "the GPU walk through far neighbours against the CPU walk";
+}
+
+// A mesh of positive tet4 cells, all kept, is its own list of tets on the way to the GPU:
+// shared, not copied. One inverted cell makes a list of their own, that cell turned over.
+TEST_F(RayCast, APositiveTetMeshIsItsOwnTetListOnTheWayToTheGpu) {
+  const Mesh grid = test::tetGrid(3, 3, 3);
+  const volume::TetMeshGpu shared = volume::buildTetMeshGpu(grid, FieldLocation::Node, field(grid));
+  ASSERT_TRUE(shared.sharedCells);
+  EXPECT_TRUE(shared.sharedCells->sharesCellsWith(grid));
+  EXPECT_TRUE(shared.tets.empty());
+  EXPECT_EQ(shared.tetNodes(7), glm::uvec4(grid.cellNodes(7)[0], grid.cellNodes(7)[1], grid.cellNodes(7)[2],
+                                            grid.cellNodes(7)[3]));
+  Mesh turned;
+  turned.nodes = grid.nodes;
+  for (std::size_t c = 0; c < grid.cellCount(); ++c) {
+    const auto n = grid.cellNodes(c);
+    const NodeIndex cell[4] = {n[0], c == 0 ? n[2] : n[1], c == 0 ? n[1] : n[2], n[3]};
+    turned.addCell(CellType::Tet4, cell);
+  }
+  const volume::TetMeshGpu own = volume::buildTetMeshGpu(turned, FieldLocation::Node, field(turned));
+  EXPECT_FALSE(own.sharedCells);
+  ASSERT_EQ(own.tets.size(), grid.cellCount());
+  EXPECT_EQ(own.tetNodes(0), shared.tetNodes(0)) << "the inverted cell is drawn turned over";
+  EXPECT_EQ(own.neighbors, shared.neighbors);
 }
