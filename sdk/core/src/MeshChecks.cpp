@@ -52,24 +52,25 @@ void checkNodes(Model& model) {
       Severity::Info);
 }
 
-// Sorts entries (each with a well-mixed 64-bit `hash`) by hash, then by `tie`, on all
-// cores in place: split by the hash's top bits into parts (their order is the hash order),
-// then each part sorted on its own.
+// Sorts entries (each with a well-mixed 64-bit `hash`) by hash, then by `tie`: first in
+// place into 256 runs by the hash's top byte (one pass of swaps: an American flag sort),
+// then each run, small enough for the caches, sorted on its own, on all cores.
 template <typename Entry, typename Tie>
 void sortByHashOnAllCores(std::vector<Entry>& entries, Tie tie) {
-  std::vector<std::pair<std::size_t, std::size_t>> parts = {{0, entries.size()}};
-  for (int bit = 63; bit > 59; --bit) {
-    std::vector<std::pair<std::size_t, std::size_t>> split;
-    for (auto [begin, end] : parts) {
-      const auto middle = std::partition(entries.begin() + std::ptrdiff_t(begin), entries.begin() + std::ptrdiff_t(end),
-                                         [bit](const Entry& e) { return !((e.hash >> bit) & 1u); });
-      const auto m = std::size_t(middle - entries.begin());
-      split.insert(split.end(), {{begin, m}, {m, end}});
+  const auto digit = [](const Entry& e) { return std::size_t(e.hash >> 56); };
+  std::array<std::size_t, 257> start{};
+  for (const Entry& e : entries) ++start[digit(e) + 1];
+  for (std::size_t d = 0; d < 256; ++d) start[d + 1] += start[d];
+  std::array<std::size_t, 256> next;
+  std::copy(start.begin(), start.end() - 1, next.begin());
+  for (std::size_t d = 0; d < 256; ++d)
+    while (next[d] < start[d + 1]) {
+      Entry e = entries[next[d]];
+      for (std::size_t home = digit(e); home != d; home = digit(e)) std::swap(e, entries[next[home]++]);
+      entries[next[d]++] = e;
     }
-    parts = std::move(split);
-  }
-  forEachChunk(parts.size(), 1, [&](std::size_t k, std::size_t) {
-    std::sort(entries.begin() + std::ptrdiff_t(parts[k].first), entries.begin() + std::ptrdiff_t(parts[k].second),
+  forEachChunk(256, 1, [&](std::size_t d, std::size_t) {
+    std::sort(entries.begin() + std::ptrdiff_t(start[d]), entries.begin() + std::ptrdiff_t(start[d + 1]),
               [&tie](const Entry& a, const Entry& b) { return a.hash != b.hash ? a.hash < b.hash : tie(a, b); });
   });
 }
