@@ -8,6 +8,8 @@
 
 #include <volpost/core/WorkerThreads.hpp>
 
+#include "FaceGroups.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <mutex>
@@ -29,71 +31,49 @@ FaceKey faceKey(std::span<const NodeIndex> nodes, const CellFace& face) {
 }
 
 // The cell faces no other cell shares, as cell x 8 + face, ascending. Each face is listed
-// under its smallest corner (both copies of a shared face land in one group) as 8 bytes,
-// and each group, a few dozen faces, sorted by the face's corners read again from its cell;
-// large meshes go in passes over a share of the node numbers, so the lists hold about 8
-// bytes per tet at once (a list of every face with its corners was 96). On all cores.
+// under its smallest corner as 8 bytes (FaceGroups.hpp), and each group sorted by the
+// face's corners read again from its cell: about 8 bytes per tet at once (a list of every
+// face with its corners was 96). On all cores.
 std::vector<std::uint64_t> unsharedFaces(const Mesh& mesh, const Progress& progress) {
   constexpr std::size_t kChunk = std::size_t(1) << 14;
-  const std::size_t cells = mesh.cellCount(), nodes = mesh.nodeCount();
-  const auto eachFace = [&](auto visit) {  // visit(cell, face index, its face) for cells with proper faces
-    forEachChunk(cells, kChunk, [&](std::size_t begin, std::size_t end) {
+  const auto listFaces = [&](auto visit) {
+    forEachChunk(mesh.cellCount(), kChunk, [&](std::size_t begin, std::size_t end) {
       for (std::size_t c = begin; c < end; ++c) {
         if (cellRepeatsANode(mesh, c)) continue;  // flagged by the checks; no proper faces
+        const auto n = mesh.cellNodes(c);
         const auto& topo = topology(mesh.cellType(c));
-        for (std::size_t f = 0; f < topo.faces.size(); ++f) visit(c, f, topo.faces[f]);
+        for (std::size_t f = 0; f < topo.faces.size(); ++f) {
+          const CellFace& face = topo.faces[f];
+          NodeIndex smallest = n[face.corners[0]];
+          for (int k = 1; k < face.size; ++k) smallest = std::min(smallest, n[face.corners[k]]);
+          visit(std::size_t(smallest), std::uint64_t(c) * 8 + f);
+        }
       }
     });
   };
-  const std::size_t passes = std::clamp<std::size_t>(cells >> 20, 1, 4);
   std::vector<std::uint64_t> unshared;
   std::mutex unsharedMutex;
-  for (std::size_t pass = 0; pass < passes; ++pass) {
-    const std::size_t lo = nodes * pass / passes, hi = nodes * (pass + 1) / passes;
-    const auto smallestCorner = [&](std::size_t c, const CellFace& face) {
-      const auto n = mesh.cellNodes(c);
-      NodeIndex smallest = n[face.corners[0]];
-      for (int k = 1; k < face.size; ++k) smallest = std::min(smallest, n[face.corners[k]]);
-      return std::size_t(smallest);
-    };
-    std::vector<std::atomic<std::uint32_t>> count(hi - lo);
-    eachFace([&](std::size_t c, std::size_t, const CellFace& face) {
-      const std::size_t v = smallestCorner(c, face);
-      if (v >= lo && v < hi) count[v - lo].fetch_add(1, std::memory_order_relaxed);
-    });
-    std::vector<std::size_t> start(hi - lo + 1, 0);
-    for (std::size_t v = 0; v < hi - lo; ++v) {
-      start[v + 1] = start[v] + count[v].load(std::memory_order_relaxed);
-      count[v].store(0, std::memory_order_relaxed);
+  const auto matchGroup = [&](std::span<const std::uint64_t> faces) {
+    thread_local std::vector<std::pair<FaceKey, std::uint64_t>> group;
+    group.clear();
+    for (const std::uint64_t id : faces) {
+      const std::size_t c = std::size_t(id / 8);
+      group.push_back({faceKey(mesh.cellNodes(c), topology(mesh.cellType(c)).faces[id % 8]), id});
     }
-    std::vector<std::uint64_t> listed(start.back());
-    eachFace([&](std::size_t c, std::size_t f, const CellFace& face) {
-      const std::size_t v = smallestCorner(c, face);
-      if (v >= lo && v < hi) listed[start[v - lo] + count[v - lo].fetch_add(1, std::memory_order_relaxed)] = c * 8 + f;
-    });
-    std::vector<std::atomic<std::uint32_t>>().swap(count);
-    forEachChunk(hi - lo, std::size_t(1) << 12, [&](std::size_t begin, std::size_t end) {
-      std::vector<std::pair<FaceKey, std::uint64_t>> group;
-      std::vector<std::uint64_t> found;
-      for (std::size_t v = begin; v < end; ++v) {
-        group.clear();
-        for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
-          const std::size_t c = std::size_t(listed[i] / 8);
-          group.push_back({faceKey(mesh.cellNodes(c), topology(mesh.cellType(c)).faces[listed[i] % 8]), listed[i]});
-        }
-        std::sort(group.begin(), group.end());
-        for (std::size_t i = 0; i < group.size();) {
-          std::size_t j = i + 1;
-          while (j < group.size() && group[j].first == group[i].first) ++j;
-          if (j - i == 1) found.push_back(group[i].second);
-          i = j;
-        }
+    std::sort(group.begin(), group.end());
+    for (std::size_t i = 0; i < group.size();) {
+      std::size_t j = i + 1;
+      while (j < group.size() && group[j].first == group[i].first) ++j;
+      if (j - i == 1) {
+        const std::lock_guard lock(unsharedMutex);
+        unshared.push_back(group[i].second);
       }
-      const std::lock_guard lock(unsharedMutex);
-      unshared.insert(unshared.end(), found.begin(), found.end());
-    });
-    progress.report(0.5 * double(pass + 1) / double(passes));
-  }
+      i = j;
+    }
+  };
+  detail::forEachFaceGroup<std::uint64_t>(mesh.nodeCount(), std::clamp<std::size_t>(mesh.cellCount() >> 20, 1, 4),
+                                          listFaces, matchGroup);
+  progress.report(0.5);
   std::sort(unshared.begin(), unshared.end());  // cell order, whatever the threads did
   return unshared;
 }

@@ -3,6 +3,8 @@
 
 #include <volpost/core/WorkerThreads.hpp>
 
+#include "FaceGroups.hpp"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -28,8 +30,8 @@ void requireFaceIndexable(std::size_t tets) {
 // copies of a shared face land in one group), then sorting each group, which is small, by
 // the face's two other vertex ids. A face is listed as tet x 4 + face only (4 bytes; its
 // other vertices are read again from the tet when its group is sorted), and large meshes
-// go in passes over a share of the vertex ids each: the lists hold about 4 bytes per tet
-// at once, plus 12 per vertex of the pass, besides the result. Every step is on all cores.
+// go in passes over shares of the vertex ids (FaceGroups.hpp): the lists hold about 4
+// bytes per tet at once, plus 12 per vertex, besides the result. Every step is on all cores.
 std::vector<glm::ivec4> faceNeighbors(std::span<const glm::uvec4> tets) {
   std::vector<glm::ivec4> neighbors(tets.size(), glm::ivec4(-1));
   faceNeighborsInto(
@@ -68,61 +70,41 @@ void faceNeighborsInto(std::size_t tetCount, const std::function<glm::uvec4(std:
   });
   const std::size_t vertices = std::size_t(*std::max_element(chunkMax.begin(), chunkMax.end())) + 1;
   std::vector<std::uint32_t>().swap(chunkMax);
-  const std::size_t passes = std::clamp<std::size_t>(tetCount >> 20, 1, 4);
-  for (std::size_t pass = 0; pass < passes; ++pass) {
-    const std::size_t lo = vertices * pass / passes, hi = vertices * (pass + 1) / passes;
-    // How many faces each vertex of the pass is the smallest of, then where its group starts.
-    std::vector<std::atomic<std::uint32_t>> count(hi - lo);
-    const auto eachFaceOfThePass = [&](auto visit) {
-      forEachChunk(tetCount, kTetsPerChunk, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t t = begin; t < end; ++t) {
-          const glm::uvec4 n = nodesOf(t);
-          for (int f = 0; f < 4; ++f) {
-            const std::uint32_t smallest = std::min({n[kFaces[f][0]], n[kFaces[f][1]], n[kFaces[f][2]]});
-            if (smallest >= lo && smallest < hi) visit(smallest - lo, std::uint32_t(t) * 4 + std::uint32_t(f));
-          }
-        }
-      });
-    };
-    eachFaceOfThePass([&](std::size_t v, std::uint32_t) { count[v].fetch_add(1, std::memory_order_relaxed); });
-    std::vector<std::size_t> start(hi - lo + 1, 0);
-    for (std::size_t v = 0; v < hi - lo; ++v) {
-      start[v + 1] = start[v] + count[v].load(std::memory_order_relaxed);
-      count[v].store(0, std::memory_order_relaxed);
-    }
-    std::vector<std::uint32_t> faces(start.back());
-    eachFaceOfThePass([&](std::size_t v, std::uint32_t tetFace) {
-      faces[start[v] + count[v].fetch_add(1, std::memory_order_relaxed)] = tetFace;
-    });
-    std::vector<std::atomic<std::uint32_t>>().swap(count);
-    // Each group on its own: sorted by the two larger vertex ids, pairs are neighbours.
-    forEachChunk(hi - lo, std::size_t(1) << 12, [&](std::size_t begin, std::size_t end) {
-      struct Keyed {
-        std::uint64_t key;
-        std::uint32_t tetFace;
-        bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : tetFace < o.tetFace; }
-      };
-      std::vector<Keyed> group;
-      for (std::size_t v = begin; v < end; ++v) {
-        group.clear();
-        for (std::size_t i = start[v]; i < start[v + 1]; ++i) {
-          const auto face = sortedFace(nodesOf(faces[i] / 4), int(faces[i] % 4));
-          group.push_back({std::uint64_t(face[1]) << 32 | face[2], faces[i]});
-        }
-        std::sort(group.begin(), group.end());
-        for (std::size_t i = 0; i < group.size();) {
-          std::size_t j = i + 1;
-          while (j < group.size() && group[j].key == group[i].key) ++j;
-          if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
-            const std::uint32_t a = group[i].tetFace, b = group[i + 1].tetFace;
-            setNeighbor(a / 4, int(a % 4), int(b / 4));
-            setNeighbor(b / 4, int(b % 4), int(a / 4));
-          }
-          i = j;
-        }
+  const auto listFaces = [&](auto visit) {  // each face as tet x 4 + face, under its smallest vertex
+    forEachChunk(tetCount, kTetsPerChunk, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t) {
+        const glm::uvec4 n = nodesOf(t);
+        for (int f = 0; f < 4; ++f)
+          visit(std::size_t(std::min({n[kFaces[f][0]], n[kFaces[f][1]], n[kFaces[f][2]]})), std::uint32_t(t) * 4 + std::uint32_t(f));
       }
     });
-  }
+  };
+  // Each group sorted by the faces' two larger vertex ids: pairs are neighbours.
+  const auto matchGroup = [&](std::span<const std::uint32_t> faces) {
+    struct Keyed {
+      std::uint64_t key;
+      std::uint32_t tetFace;
+      bool operator<(const Keyed& o) const { return key != o.key ? key < o.key : tetFace < o.tetFace; }
+    };
+    thread_local std::vector<Keyed> group;
+    group.clear();
+    for (const std::uint32_t tetFace : faces) {
+      const auto face = sortedFace(nodesOf(tetFace / 4), int(tetFace % 4));
+      group.push_back({std::uint64_t(face[1]) << 32 | face[2], tetFace});
+    }
+    std::sort(group.begin(), group.end());
+    for (std::size_t i = 0; i < group.size();) {
+      std::size_t j = i + 1;
+      while (j < group.size() && group[j].key == group[i].key) ++j;
+      if (j - i == 2) {  // an interior face; 3+ (non-manifold) are left as boundary
+        const std::uint32_t a = group[i].tetFace, b = group[i + 1].tetFace;
+        setNeighbor(a / 4, int(a % 4), int(b / 4));
+        setNeighbor(b / 4, int(b % 4), int(a / 4));
+      }
+      i = j;
+    }
+  };
+  detail::forEachFaceGroup<std::uint32_t>(vertices, std::clamp<std::size_t>(tetCount >> 20, 1, 4), listFaces, matchGroup);
 }
 
 std::vector<glm::ivec4> faceNeighbors(const Mesh& tets) {
