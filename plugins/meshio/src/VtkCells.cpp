@@ -91,21 +91,6 @@ std::string pointOutsideMessage(std::size_t cell, std::int64_t point, std::size_
          std::to_string(pointCount) + " points (0.." + std::to_string(std::int64_t(pointCount) - 1) + ")";
 }
 
-std::vector<NodeIndex> nodeIndicesOf(const std::vector<std::int64_t>& connectivity,
-                                     const std::vector<std::int64_t>& offsets, std::size_t pointCount,
-                                     const std::function<void(const std::string&)>& fail) {
-  std::vector<NodeIndex> out(connectivity.size());
-  for (std::size_t i = 0; i < connectivity.size(); ++i) {
-    const std::int64_t p = connectivity[i];
-    if (p < 0 || std::uint64_t(p) >= pointCount) {
-      const auto cell = std::upper_bound(offsets.begin(), offsets.end(), std::int64_t(i)) - offsets.begin() - 1;
-      fail(pointOutsideMessage(std::size_t(std::max<std::ptrdiff_t>(cell, 0)), p, pointCount));
-    }
-    out[i] = NodeIndex(p);
-  }
-  return out;
-}
-
 std::vector<double> selectModelCells(const std::vector<double>& values, int components,
                                      const VtkCellMapping& mapping) {
   if (mapping.skipped == 0) return values;

@@ -33,12 +33,6 @@ struct VtkCellMapping {
 VtkCellMapping addVtkCells(VtkCellArrays& cells, std::size_t pointCount, Mesh& mesh,
                            const std::function<void(const std::string&)>& fail);
 
-/// A file's 0-based point indices as model node indices, each checked to lie in
-/// [0, pointCount) (calls `fail`, which must throw, naming the cell and the point).
-std::vector<NodeIndex> nodeIndicesOf(const std::vector<std::int64_t>& connectivity,
-                                     const std::vector<std::int64_t>& offsets, std::size_t pointCount,
-                                     const std::function<void(const std::string&)>& fail);
-
 /// The message for a cell that uses a point the file does not have.
 std::string pointOutsideMessage(std::size_t cell, std::int64_t point, std::size_t pointCount);
 
