@@ -146,6 +146,14 @@ class NcFile {
     if (n) check(nc_get_var_longlong(id_, *var, out.data()), "reading " + name);
     return out;
   }
+  /// Rows [first, first + rows) of a 2-D integer variable of `columns` columns.
+  std::vector<long long> integerRows(int var, const std::string& name, std::size_t first, std::size_t rows,
+                                     std::size_t columns) const {
+    std::vector<long long> out(rows * columns);
+    const std::size_t start[2] = {first, 0}, count[2] = {rows, columns};
+    if (!out.empty()) check(nc_get_vara_longlong(id_, var, start, count, out.data()), "reading " + name);
+    return out;
+  }
   std::string textAttribute(int var, const char* attribute) const {
     std::size_t len = 0;
     if (nc_inq_attlen(id_, var, attribute, &len) != NC_NOERR) return {};
@@ -300,12 +308,17 @@ class ExodusParser {
         fileElement += count;
         continue;
       }
-      const auto connect = nc_.integers("connect" + suffix);
-      if (connect.size() != count * perElement) nc_.fail("connect" + suffix + " has the wrong size");
+      const std::vector<std::size_t> shape = nc_.shape(*var, "connect" + suffix);
+      if (shape.size() != 2 || shape[0] != count || shape[1] != perElement) nc_.fail("connect" + suffix + " has the wrong size");
+      // A chunk of elements at a time: no 64-bit copy of a whole block's connectivity (at
+      // 100M tets that was 3.2 GB).
+      constexpr std::size_t kChunk = std::size_t(1) << 16;
+      std::vector<long long> connect;
       std::array<NodeIndex, 20> cell{};
       for (std::size_t e = 0; e < count; ++e, ++fileElement) {
+        if (e % kChunk == 0) connect = nc_.integerRows(*var, "connect" + suffix, e, std::min(kChunk, count - e), perElement);
         for (std::size_t k = 0; k < type->vtkOrder.size(); ++k) {
-          const long long node = connect[e * perElement + std::size_t(type->vtkOrder[k])];
+          const long long node = connect[(e % kChunk) * perElement + std::size_t(type->vtkOrder[k])];
           if (node < 1 || std::size_t(node) > model_->mesh().nodeCount())
             nc_.fail("element block " + std::to_string(blockId) + ", element " + std::to_string(e + 1) + " (cell " +
                      std::to_string(model_->mesh().cellCount()) + ") uses node " + std::to_string(node) + " of " +
