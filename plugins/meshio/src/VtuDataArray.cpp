@@ -45,6 +45,9 @@ class BinaryRun {
         }
         return;
       }
+      if (src.disk && 1.75 * double(size_) > double(memoryBudget()))  // the text and its decoded bytes
+        fail(src, "its " + byteSizeText(double(size_)) + " of base64 text need more than the memory budget of " +
+                      byteSizeText(double(memoryBudget())) + " to decode (--memory-budget or VOLPOST_MEMORY_BUDGET)");
       const std::string text = src.disk ? src.disk->readString(at, size_) : std::string(src.file->data() + at, size_);
       auto d = decodeBase64(text);
       if (!d) fail(src, "invalid base64 in the appended data");
@@ -122,6 +125,9 @@ BlockLayout blockLayout(const VtuArraySource& src, const VtuEncoding& enc, const
 std::vector<std::uint64_t> compressedSizes(const VtuArraySource& src, const VtuEncoding& enc, const BinaryRun& run,
                                            const BlockLayout& b) {
   const std::size_t h = sizeOf(enc.headerType);
+  if (double(b.blocks) * double(h + 8) > double(memoryBudget()))  // its table, read from the file, and the sizes
+    fail(src, "compression header claims " + std::to_string(b.blocks) + " blocks, more than the memory budget of " +
+                  byteSizeText(double(memoryBudget())) + " can list (corrupt)");
   std::vector<std::uint8_t> scratch;
   const std::uint8_t* table = run.bytes(3 * h, std::size_t(b.blocks) * h, scratch);
   std::vector<std::uint64_t> sizes(std::size_t(b.blocks));
