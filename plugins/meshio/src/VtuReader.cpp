@@ -83,9 +83,11 @@ class VtuReading {
     constexpr std::size_t kChunk = std::size_t(16) << 20;
     while (head.size() < disk->size() && underscore == std::string::npos) {
       const std::size_t searchFrom = head.size() > 16 ? head.size() - 16 : 0;  // a tag cut by the chunk's end
-      // A file without appended data is all XML and read whole, as a small one is.
-      requireMemory(2.0 * double(head.size() + kChunk), path_, "the file's XML text");
-      head += disk->readString(head.size(), std::size_t(std::min<std::uint64_t>(kChunk, disk->size() - head.size())));
+      // A file without appended data is all XML and read whole, as a small one is (growing
+      // the text copies it once more).
+      const std::size_t n = std::size_t(std::min<std::uint64_t>(kChunk, disk->size() - head.size()));
+      requireMemory(double(head.size() + n) * (head.empty() ? 1.0 : 2.0), path_, "the file's XML text");
+      head += disk->readString(head.size(), n);
       progress_.report(0.2 * double(head.size()) / double(disk->size()));
       if (tag == std::string::npos) tag = head.find("<AppendedData", searchFrom);
       if (tag != std::string::npos && tagEnd == std::string::npos) tagEnd = head.find('>', tag);

@@ -8,6 +8,8 @@
 
 #include "support/TestSupport.hpp"
 
+#include <volpost/core/ResourceLimits.hpp>
+
 #include <gtest/gtest.h>
 #include <zlib.h>
 
@@ -175,4 +177,45 @@ TEST(VtuInPlaceRead, AFileRemovedAfterOpeningStillGivesItsFields) {
   const auto model = meshio::VtuReader(0).read(path.string(), {});
   std::filesystem::remove(path);  // the reader holds the file open: its bytes stay readable
   EXPECT_EQ(model->findField("wave")->valuesCopy(0).size(), 4u);
+}
+
+// Read in place, a compression table or base64 text is checked against the memory budget
+// before it is read: a hostile header cannot make the reader hold more than the budget.
+TEST(VtuInPlaceRead, TablesAndTextBeyondTheMemoryBudgetAreRefused) {
+  const std::size_t budget = memoryBudget();
+  // A compressed array claiming 20,000 blocks of 1 byte (its table and sizes 320 KB) in a
+  // run that holds them: a file of 181 KB within a 256 KB budget, its table beyond it.
+  std::string run = littleEndian64(20000) + littleEndian64(1) + littleEndian64(1);
+  for (int k = 0; k < 20000; ++k) run += littleEndian64(1);
+  run += std::string(20000, 'x');
+  const std::string xml =
+      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\" "
+      "compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n"
+      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/></Points>\n"
+      "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
+  const auto path = writeTemp("volpost_many_blocks.vtu", xml + run + "\n</AppendedData>\n</VTKFile>\n");
+  setMemoryBudget(256 * 1024);
+  try {
+    (void)meshio::VtuReader(0).read(path.string(), {});
+    ADD_FAILURE() << "read past the budget";
+  } catch (const ReadError& e) {
+    EXPECT_NE(std::string(e.what()).find("20000 blocks, more than the memory budget"), std::string::npos) << e.what();
+  }
+  const std::string base64 =
+      "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "<UnstructuredGrid>\n<Piece NumberOfPoints=\"1\" NumberOfCells=\"0\">\n"
+      "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"appended\" offset=\"0\"/></Points>\n"
+      "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"base64\">\n_" + std::string(100000, 'A') +
+      "\n</AppendedData>\n</VTKFile>\n";
+  const auto textPath = writeTemp("volpost_long_base64.vtu", base64);
+  setMemoryBudget(128 * 1024);  // the file's 100 KB fit, its text and decoded bytes (175 KB) do not
+  try {
+    (void)meshio::VtuReader(0).read(textPath.string(), {});
+    ADD_FAILURE() << "read past the budget";
+  } catch (const ReadError& e) {
+    EXPECT_NE(std::string(e.what()).find("of base64 text need more than the memory budget"), std::string::npos) << e.what();
+  }
+  setMemoryBudget(budget);
+  std::filesystem::remove(path);
+  std::filesystem::remove(textPath);
 }
