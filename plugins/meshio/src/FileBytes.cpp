@@ -27,9 +27,12 @@ std::shared_ptr<const std::string> readFileBytes(const std::string& path, const 
     done += n;
     progress.report(0.2 * double(done) / double(bytes->size()));
   }
-  // A UTF-8 byte-order mark (some Windows editors write one) is not part of any format.
-  if (bytes->rfind("\xEF\xBB\xBF", 0) == 0) bytes->replace(0, 3, "   ");
+  blankByteOrderMark(*bytes);
   return bytes;
+}
+
+void blankByteOrderMark(std::string& text) {
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.replace(0, 3, "   ");
 }
 
 std::int64_t lineAt(const std::string& bytes, std::size_t offset) {

@@ -5,12 +5,9 @@
 
 #include <volpost/core/ResourceLimits.hpp>
 
-#include <volpost/core/WorkerThreads.hpp>
-
 #include <zlib.h>
 
 #include <algorithm>
-#include <exception>
 #include <charconv>
 #include <cctype>
 #include <cmath>
@@ -151,35 +148,20 @@ std::vector<std::uint64_t> compressedSizes(const VtuArraySource& src, const VtuE
 }
 
 // Hands the array's values to consume(bytes, count, first) a run of whole values at a
-// time: chunks of the raw data (on all cores, so consume must be safe to call from several
-// threads), or each zlib block in order as it is decompressed (a value split between two
-// blocks is carried over).
+// time, in order: chunks of the raw data, or each zlib block as it is decompressed (a
+// value split between two blocks is carried over).
 template <typename Consume>
 void forEachValueRun(const VtuArraySource& src, const VtuEncoding& enc, const BinaryRun& run, const BlockLayout& b,
                      Consume consume) {
   const std::size_t valueSize = sizeOf(src.type);
   std::vector<std::uint8_t> scratch;
-  if (!enc.compressed) {
-    if (run.size() - b.headerBytes < b.rawBytes)
-      fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
-                    std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
+  if (!enc.compressed) {  // decodeBinary checked that the header's bytes are there
     const std::size_t count = std::size_t(b.rawBytes / valueSize);
     const std::size_t perChunk = std::size_t(1) << 19;  // values: a few MB of raw bytes and of their conversion
-    // Chunks read and converted on all cores (each into its own place); the failure of the
-    // earliest failing chunk is the one reported, whatever the threads did first.
-    const std::size_t chunks = (count + perChunk - 1) / perChunk;
-    std::vector<std::exception_ptr> failures(chunks);
-    forEachChunk(chunks, 1, [&](std::size_t k, std::size_t) {
-      try {
-        std::vector<std::uint8_t> own;
-        const std::size_t first = k * perChunk, n = std::min(perChunk, count - first);
-        consume(run.bytes(b.headerBytes + first * valueSize, n * valueSize, own), n, first);
-      } catch (...) {
-        failures[k] = std::current_exception();
-      }
-    });
-    for (const std::exception_ptr& failure : failures)
-      if (failure) std::rethrow_exception(failure);
+    for (std::size_t first = 0; first < count; first += perChunk) {
+      const std::size_t n = std::min(perChunk, count - first);
+      consume(run.bytes(b.headerBytes + first * valueSize, n * valueSize, scratch), n, first);
+    }
     return;
   }
   const std::vector<std::uint64_t> sizes = compressedSizes(src, enc, run, b);

@@ -94,7 +94,8 @@ class VtuReading {
       if (tagEnd != std::string::npos) underscore = head.find('_', tagEnd);
     }
     if (underscore == std::string::npos) {  // all of it read: no appended data to leave in the file
-      bytes_ = std::make_shared<const std::string>(withoutByteOrderMark(std::move(head)));
+      blankByteOrderMark(head);
+      bytes_ = std::make_shared<const std::string>(std::move(head));
       splitAppended();
       return;
     }
@@ -104,7 +105,8 @@ class VtuReading {
     appended_.begin = underscore + 1;
     appended_.end = std::size_t(close);
     head.resize(tagEnd + 1);
-    xml_ = withoutByteOrderMark(std::move(head)) + disk->readString(close, std::size_t(disk->size() - close));
+    blankByteOrderMark(head);
+    xml_ = std::move(head) + disk->readString(close, std::size_t(disk->size() - close));
     disk_ = std::move(disk);
   }
 
@@ -120,12 +122,6 @@ class VtuReading {
       end = from;
     }
     throw ReadError::atOffset(path_, disk.size(), "file ends inside the appended data: no </AppendedData> (truncated)");
-  }
-
-  // A UTF-8 byte-order mark (some Windows editors write one) is not part of the XML.
-  static std::string withoutByteOrderMark(std::string text) {
-    if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.replace(0, 3, "   ");
-    return text;
   }
 
   // Raw appended data is not XML: cut it out before parsing and remember where it is.

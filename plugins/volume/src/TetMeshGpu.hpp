@@ -2,9 +2,9 @@
 // What the GPU ray caster holds per mesh, prepared on the CPU (no GL here, so it is
 // tested directly). Per tetrahedron: 4 vertex ids (16 B) and its 4 face neighbours packed
 // in 12 B (below); per node its position relative to the mesh center and its value (16 B);
-// plus the boundary faces and a BVH over them to find where rays enter (and re-enter) the mesh. Face planes,
-// barycentric weights and gradients are computed in the shader from the vertices, which
-// trades arithmetic for memory (Espinha 2005 stored 96 B per tet, Table 5).
+// plus the boundary faces and a BVH over them to find where rays enter (and re-enter) the
+// mesh. Face planes, barycentric weights and gradients are computed in the shader from the
+// vertices, which trades arithmetic for memory (Espinha 2005 stored 96 B per tet, Table 5).
 #pragma once
 
 #include <volpost/core/Field.hpp>

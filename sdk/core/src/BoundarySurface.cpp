@@ -11,7 +11,6 @@
 #include "FaceGroups.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <mutex>
 #include <span>
 #include <unordered_map>

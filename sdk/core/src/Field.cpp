@@ -4,6 +4,16 @@
 #include <stdexcept>
 
 namespace volpost {
+namespace {
+
+// What a loader gave must be one value per entity and component.
+void requireLoadedSize(const std::string& field, std::size_t step, std::size_t size, std::size_t expected) {
+  if (size != expected)
+    throw std::runtime_error("field " + field + ": step " + std::to_string(step + 1) + " has " + std::to_string(size) +
+                             " values, expected " + std::to_string(expected));
+}
+
+}  // namespace
 
 const char* toString(FieldLocation location) {
   return location == FieldLocation::Node ? "node" : "cell";
@@ -92,10 +102,7 @@ const SampleArray& Field::samples(std::size_t step) const {
   std::lock_guard lock(mutex_);
   if (!sampleCache_[step]) {
     auto loaded = std::make_unique<SampleArray>(sampleLoader_(step));
-    if (loaded->size() != entityCount_ * std::size_t(components_))
-      throw std::runtime_error("field " + name_ + ": step " + std::to_string(step + 1) + " has " +
-                               std::to_string(loaded->size()) + " values, expected " +
-                               std::to_string(entityCount_ * std::size_t(components_)));
+    requireLoadedSize(name_, step, loaded->size(), entityCount_ * std::size_t(components_));
     sampleCache_[step] = std::move(loaded);
   }
   return *sampleCache_[step];
@@ -118,10 +125,7 @@ const std::vector<double>& Field::values(std::size_t step) const {
   std::lock_guard lock(mutex_);
   if (!cache_[step]) {
     auto loaded = std::make_unique<std::vector<double>>(loader_(step));
-    if (loaded->size() != entityCount_ * std::size_t(components_))
-      throw std::runtime_error("field " + name_ + ": step " + std::to_string(step + 1) + " has " +
-                               std::to_string(loaded->size()) + " values, expected " +
-                               std::to_string(entityCount_ * std::size_t(components_)));
+    requireLoadedSize(name_, step, loaded->size(), entityCount_ * std::size_t(components_));
     cache_[step] = std::move(loaded);
   }
   return *cache_[step];
