@@ -5,6 +5,7 @@
 
 #include <volpost/core/optics/IsoTables.hpp>
 #include "host/optics/IsoSurfaceTable.hpp"
+#include <volpost/core/optics/OpticalDepth.hpp>
 #include <volpost/core/optics/PreintegrationTable.hpp>
 #include <volpost/core/optics/PsiTable.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
@@ -66,23 +67,41 @@ int main(int argc, char** argv) {
   }
   if (out) std::fclose(out);
 
-  std::printf("\n## pre-integrated table (s_f, s_b, l), exact integration per texel, alpha error vs exact\n\n");
-  std::printf("| table | TF segments | build ms | max alpha error | RMS alpha error |\n|---|---:|---:|---:|---:|\n");
-  for (int segs : {10, 32, 255})
-    for (int n : {64, 128}) {
-      const TransferFunction tf = segments(segs);
+  std::printf("\n## pre-integrated table: exact opacity, mean color from a (s_f, s_b, depth) table where the "
+              "segment is thin (optical depth <= %.2g), exact integration where it is thick\n\n",
+              PreintegrationTable::kMaxDepth);
+  std::printf("| table | transfer function | build ms | segments from the table | max alpha error | max color error | "
+              "RMS color error |\n|---|---|---:|---:|---:|---:|---:|\n");
+  const TransferFunction peak({{0.0, {0.2, 0.2, 1.0}, 0.0}, {0.495, {1, 1, 1}, 0.0}, {0.5, {1, 0, 0}, 60.0},
+                               {0.505, {1, 1, 1}, 0.0}, {1.0, {0.2, 0.2, 1.0}, 0.0}});
+  for (int segs : {10, 32, 255, 0})
+    for (int n : {64, 128, 256}) {
+      const TransferFunction tf = segs ? segments(segs) : peak;
+      const OpticalDepth depth(tf);
       const auto t0 = Clock::now();
-      const PreintegrationTable table(tf, 0.0, 1.0, n, 2.0, n);
+      const PreintegrationTable table(tf, 0.0, 1.0, n, 9);
       const double build = msSince(t0);
-      double worst = 0.0, sum = 0.0;
+      double worstAlpha = 0.0, worst = 0.0, sum = 0.0;
+      int thin = 0;
       const int samples = 20000;
       for (int i = 0; i < samples; ++i) {
-        const double sf = u(rng), sb = u(rng), len = 2.0 * u(rng);
-        const double err = std::abs(table.lookup(sf, sb, len).a - (1.0 - integrateSegment(tf, sf, sb, len).transmittance));
-        worst = std::max(worst, err);
-        sum += err * err;
+        // Lengths 0.001 to 10 (optical depths up to ~40 for the segments, ~60 through the peak).
+        double sf = u(rng), sb = u(rng);
+        if (!segs) sf = 0.5 + 0.1 * (sf - 0.5), sb = 0.5 + 0.1 * (sb - 0.5);
+        const double len = std::pow(10.0, 4.0 * u(rng) - 3.0);
+        thin += depth.depth(sf, sb, len) <= PreintegrationTable::kMaxDepth;
+        const SegmentLight exact = integrateSegment(tf, sf, sb, len);
+        const glm::dvec4 t = table.lookup(sf, sb, len);
+        worstAlpha = std::max(worstAlpha, std::abs(t.a - (1.0 - exact.transmittance)));
+        for (int c = 0; c < 3; ++c) {
+          const double err = std::abs(t[c] - exact.color[c]);
+          worst = std::max(worst, err);
+          sum += err * err;
+        }
       }
-      std::printf("| %d^3 | %d | %.0f | %.3g | %.3g |\n", n, segs, build, worst, std::sqrt(sum / samples));
+      const std::string name = segs ? std::to_string(segs) + " segments" : "peak 1/100 of the range wide";
+      std::printf("| %d^2 x 9 | %s | %.0f | %.0f %% | %.2g | %.3g | %.3g |\n", n, name.c_str(), build,
+                  100.0 * thin / samples, worstAlpha, worst, std::sqrt(sum / (3.0 * samples)));
     }
 
   std::printf("\n## 2D tables (rebuilt on every transfer-function edit)\n\n| table | TF points | build ms |\n|---|---:|---:|\n");

@@ -8,6 +8,7 @@
 
 #include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/core/optics/OpticalDepth.hpp>
 #include <volpost/core/optics/PreintegrationTable.hpp>
 #include <volpost/core/optics/PsiTable.hpp>
 #include <volpost/render/ShaderLibrary.hpp>
@@ -223,8 +224,9 @@ void GpuVolume::release() {
   if (preFuture_.valid()) preFuture_.wait();
   preFuture_ = {};
   preOutdated_ = false;
-  for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_}) b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &preWarp_, &image_, &tf2dTable_}) t->reset();
+  for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_, &tfKnots_})
+    b->reset();
+  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
   tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
   programs_.clear();
@@ -394,6 +396,7 @@ void GpuVolume::rebuildTables() {
     glTextureSubImage2D(isoTable_.id(), 0, 0, 0, isoResolution, isoResolution, GL_RG, GL_FLOAT, iso.values.data());
   }
   if (mode_ == IntegrationMode::PreIntegrated && !tf_.empty()) {
+    uploadPreintegrationKnots(values);
     if (preFuture_.valid()) preOutdated_ = true;  // the running build finishes, then the latest TF goes
     else launchPreintegration();
     if (!asynchronous_) collectPreintegration(true);
@@ -407,18 +410,35 @@ void GpuVolume::rebuildTables() {
   gl::check("GpuVolume::rebuildTables");
 }
 
-// The pre-integrated table (seconds at 128^3) is computed off the GL thread from a copy of
-// the TF and the table's range.
+// The pre-integrated table (tens of ms at 128^2 x 9, seconds for functions of hundreds of
+// points) is computed off the GL thread from a copy of the TF and the table's range.
 void GpuVolume::launchPreintegration() {
-  preMaxLength_ = std::max(gpu_.maxEdge, 1e-30);
-  preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, length = preMaxLength_,
-                                               n = preResolution] {
-    const optics::PreintegrationTable table(tf, lo, hi, n, length, n);
-    PreintegrationBuild build{table.values(), std::vector<float>(kWarpSamples)};
-    for (int i = 0; i < kWarpSamples; ++i)
-      build.warp[std::size_t(i)] = float(table.warp().toTable(lo + (hi - lo) * double(i) / (kWarpSamples - 1)));
-    return build;
+  preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, n = preResolution,
+                                               depths = preDepthResolution] {
+    return PreintegrationBuild{optics::PreintegrationTable(tf, lo, hi, n, depths).values()};
   });
+}
+
+// Where each control point lies in the table (optics::TableWarp, the table's own) and the
+// extinction's running integral over the values as the GPU holds them (gpuValue), in double
+// split into two floats: the shader's difference of two of them keeps double accuracy.
+void GpuVolume::uploadPreintegrationKnots(const std::vector<float>& gpuValues) {
+  const optics::TableWarp warp(tf_, tableLo_, tableHi_, preResolution);
+  std::vector<double> values, taus;
+  for (std::size_t i = 0; i < gpuValues.size(); ++i) {
+    values.push_back(gpuValues[i]);
+    taus.push_back(tf_.points()[i].extinction);
+  }
+  // gpuValue rounds to float: equal values stay equal, the order stays.
+  const optics::OpticalDepth depth(std::move(values), std::move(taus));
+  std::vector<glm::vec4> knots;
+  for (std::size_t i = 0; i < gpuValues.size(); ++i) {
+    const double integral = depth.runningIntegrals()[i];
+    const float high = float(integral);
+    knots.push_back(glm::vec4(float(warp.toTable(std::clamp(tf_.points()[i].value, tableLo_, tableHi_))), high,
+                              float(integral - double(high)), 0.0f));
+  }
+  upload(tfKnots_, knots);
 }
 
 void GpuVolume::collectPreintegration(bool wait) {
@@ -437,21 +457,13 @@ void GpuVolume::collectPreintegration(bool wait) {
 void GpuVolume::uploadPreintegration(const PreintegrationBuild& build) {
   if (!preTable_) {
     preTable_ = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(preTable_.id(), 1, GL_RGBA32F, preResolution, preResolution, preResolution);
+    glTextureStorage3D(preTable_.id(), 1, GL_RGB32F, preResolution, preResolution, preDepthResolution);
     setFilter(preTable_.id(), GL_LINEAR);
     for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
       glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
   }
-  glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preResolution, GL_RGBA, GL_FLOAT,
+  glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preDepthResolution, GL_RGB, GL_FLOAT,
                       build.values.data());
-  // Where the table's value texels lie (optics::TableWarp), sampled finely, interpolated.
-  if (!preWarp_) {
-    preWarp_ = gl::createTexture(GL_TEXTURE_1D);
-    glTextureStorage1D(preWarp_.id(), 1, GL_R32F, kWarpSamples);
-    setFilter(preWarp_.id(), GL_LINEAR);
-    glTextureParameteri(preWarp_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  }
-  glTextureSubImage1D(preWarp_.id(), 0, 0, kWarpSamples, GL_RED, GL_FLOAT, build.warp.data());
   ++revision_;  // frames drawn with the previous table are outdated
 }
 
@@ -508,7 +520,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("tfCount"), int(tf_.points().size()));
   glProgramUniform1f(p, u("sLo"), gpu_.gpuValue(tableLo_));
   glProgramUniform1f(p, u("sHi"), gpu_.gpuValue(tableHi_));
-  glProgramUniform1f(p, u("preMaxLength"), float(preMaxLength_));
+  glProgramUniform1f(p, u("preMaxDepth"), float(optics::PreintegrationTable::kMaxDepth));
   std::vector<glm::vec4> planes;
   for (const ClipPlane& c : clipPlanes_) {
     const glm::dvec3 n = unitNormal(c);
@@ -572,14 +584,14 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
-  glBindTextureUnit(binding::kPreWarp, preWarp_ ? preWarp_.id() : 0);
   glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's
   glBindTextureUnit(binding::kTf2d, tf2dTable_ ? tf2dTable_.id() : 0);
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {
       {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
       {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},
       {binding::kBvh, &bvh_},             {binding::kBoundaryFaces, &boundary_},
-      {binding::kTfColorTau, &tfColorTau_}, {binding::kTfValues, &tfValues_}};
+      {binding::kTfColorTau, &tfColorTau_}, {binding::kTfValues, &tfValues_},
+      {binding::kTfKnots, &tfKnots_}};
   for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
 }
 
@@ -595,7 +607,9 @@ VolumeStats GpuVolume::stats() const {
   s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
   s.gpuBytes = s.meshBytes + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
                (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
-               (preTable_ ? std::size_t(preResolution) * preResolution * preResolution * 16 : 0) +
+               (preTable_ ? std::size_t(preResolution) * preResolution * preDepthResolution * 12 +
+                                tf_.points().size() * 16
+                          : 0) +
                std::size_t(imageWidth_) * imageHeight_ * 16;
   s.lastTransferFunctionMs = lastTfMs_;
   s.meshUploads = meshUploads_;

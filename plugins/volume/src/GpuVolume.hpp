@@ -134,8 +134,9 @@ class GpuVolume {
   VolumeStats stats() const;
   std::vector<float> readImage() const;
 
-  /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration N^3.
-  int psiResolution = 512, isoResolution = 256, preResolution = 64;
+  /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration
+  /// N^2 values x preDepthResolution depths.
+  int psiResolution = 512, isoResolution = 256, preResolution = 128, preDepthResolution = 9;
 
  private:
   void uploadMesh();
@@ -149,13 +150,14 @@ class GpuVolume {
   void uploadTransferFunction2D();
   bool tablesNeedRebuild() const;
   void launchPreintegration();
-  /// A pre-integration table and where its value texels lie (the table coordinate at
-  /// kWarpSamples values evenly over the tables' range).
+  /// The pre-integration table's mean colors (optics::PreintegrationTable::values).
   struct PreintegrationBuild {
-    std::vector<float> values, warp;
+    std::vector<float> values;
   };
-  static constexpr int kWarpSamples = 4096;
   void uploadPreintegration(const PreintegrationBuild& build);
+  /// Per control point: its table coordinate and the running integral of the extinction
+  /// (two floats), for the pre-integrated mode's exact opacity.
+  void uploadPreintegrationKnots(const std::vector<float>& gpuValues);
   void collectPreintegration(bool wait);
   void ensureImage(int width, int height);
 
@@ -182,7 +184,7 @@ class GpuVolume {
   // What the GPU holds relative to that state.
   bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;
   std::size_t builtRevision_ = std::size_t(-1);
-  double tableLo_ = 0.0, tableHi_ = 1.0, preMaxLength_ = 1.0;
+  double tableLo_ = 0.0, tableHi_ = 1.0;
   std::future<PreintegrationBuild> preFuture_;  ///< the pre-integration table being built
   bool preOutdated_ = false;                   ///< the TF changed again while it was built
   std::chrono::steady_clock::time_point tfChanged_;
@@ -192,8 +194,8 @@ class GpuVolume {
 
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
-  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_;
-  gl::Texture psiTable_, isoTable_, preTable_, preWarp_, image_, tf2dTable_;
+  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_, tfKnots_;
+  gl::Texture psiTable_, isoTable_, preTable_, image_, tf2dTable_;
   bool tf2dDirty_ = false;
   GridBricks bricks_;
   int imageWidth_ = 0, imageHeight_ = 0;

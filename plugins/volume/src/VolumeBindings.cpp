@@ -16,7 +16,7 @@ std::string glslDefines() {
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
       {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d},
-      {"UNIT_PRE_WARP", kPreWarp}};
+      {"BINDING_TF_KNOTS", kTfKnots}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

@@ -22,7 +22,8 @@ inline constexpr GLuint kTfValues = 7;       ///< transfer function: value per p
 inline constexpr GLuint kOrder = 8;          ///< cell projection: back-to-front tet list
 inline constexpr GLuint kRayState = 9;       ///< ray caster: where each pixel's ray stopped (uvec4 per pixel)
 inline constexpr GLuint kRayCounters = 10;   ///< ray caster: rays left unfinished, rays stopped at the step cap
-inline constexpr GLuint kBufferCount = 11;
+inline constexpr GLuint kTfKnots = 11;       ///< transfer function: pre-integration coordinate, running extinction integral
+inline constexpr GLuint kBufferCount = 12;
 
 // Texture units.
 inline constexpr GLuint kPsiTable = 0;
@@ -32,7 +33,6 @@ inline constexpr GLuint kSceneDepth = 3;
 inline constexpr GLuint kImage = 4;          ///< the float image (composite pass, image unit 0)
 inline constexpr GLuint kGrid = 5;           ///< a regular grid's values (3D texture)
 inline constexpr GLuint kTf2d = 6;           ///< a 2D transfer function's table
-inline constexpr GLuint kPreWarp = 7;        ///< where the pre-integration table's value texels lie
 
 /// "#define BINDING_NODES 0\n..." for every constant above.
 std::string glslDefines();

@@ -24,10 +24,12 @@ uniform int clipCount;
 uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-relative)
 layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
 layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
-layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, length) -> premultiplied rgba
-layout(binding = UNIT_PRE_WARP) uniform sampler1D preWarp;  // range position -> table coordinate (optics::TableWarp)
+layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, optical depth) -> mean color
+// Per control point: its table coordinate (optics::TableWarp), the running integral of the
+// extinction over the value from the first point (two floats: high, low part).
+layout(std430, binding = BINDING_TF_KNOTS) readonly buffer TfKnots { vec4 tfKnot[]; };
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
-uniform float preMaxLength;
+uniform float preMaxDepth;           // segments thicker than this are integrated exactly
 layout(binding = UNIT_SCENE_DEPTH) uniform sampler2D sceneDepth;  // opaque geometry's depth (window 0..1), bottom row first
 uniform bool hasSceneDepth;
 uniform int isoCount;
@@ -157,26 +159,70 @@ void integrate2D(float t0, float t1, float sf, float sb) {
 }
 #endif
 
-// The table's value texels lie where optics::TableWarp put them: more on the function's
-// narrow pieces than an even spread would give them.
-float preCoordinate(float s) {
-  float n = float(textureSize(preWarp, 0));
-  return textureLod(preWarp, (clamp(rangePos(s), 0.0, 1.0) * (n - 1.0) + 0.5) / n, 0.0).r;
+// ---- pre-integrated (optics::PreintegrationTable, optics::OpticalDepth) --------------
+// The first control point with a value above s (tfCount if none).
+int tfFirstAbove(float s) {
+  int lo = 0, hi = tfCount;
+  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] > s) hi = mid; else lo = mid + 1; }
+  return lo;
 }
 
+// The first control point with a value at or above s (tfCount if none).
+int tfFirstNotBelow(float s) {
+  int lo = 0, hi = tfCount;
+  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= s) hi = mid; else lo = mid + 1; }
+  return lo;
+}
+
+// The extinction at s, given the first control point above it.
+float tfExtinctionAt(float s, int above) {
+  if (above == 0) return tfColorTau[0].a;
+  if (above == tfCount) return tfColorTau[tfCount - 1].a;
+  float w = (s - tfValue[above - 1]) / (tfValue[above] - tfValue[above - 1]);
+  return mix(tfColorTau[above - 1].a, tfColorTau[above].a, w);
+}
+
+// The table coordinate of s: the warp is linear between control points (the range's ends
+// at 0 and 1), so the coordinates at the two points around s give it exactly.
+float preCoordinate(float s, int above) {
+  s = clamp(s, sLo, sHi);
+  float s0 = above == 0 ? sLo : clamp(tfValue[above - 1], sLo, sHi), u0 = above == 0 ? 0.0 : tfKnot[above - 1].x;
+  float s1 = above == tfCount ? sHi : clamp(tfValue[above], sLo, sHi), u1 = above == tfCount ? 1.0 : tfKnot[above].x;
+  return s1 > s0 ? mix(u0, u1, (s - s0) / (s1 - s0)) : u0;
+}
+
+// Opacity exactly from the optical depth (the mean extinction over [sf, sb], from the two
+// partial pieces at the ends and the running integrals between); the mean color from the
+// table where the piece is thin, the exact cut integration where it is thick.
 void integratePreintegrated(float sf, float sb, float len) {
-  int pieces = max(1, int(ceil(len / preMaxLength)));
-  vec3 size = vec3(textureSize(preTable, 0));
-  for (int i = 0; i < pieces; ++i) {
-    float a = mix(sf, sb, float(i) / float(pieces)), b = mix(sf, sb, float(i + 1) / float(pieces));
-    vec3 x = clamp(vec3(preCoordinate(a), preCoordinate(b), len / float(pieces) / preMaxLength), 0.0, 1.0);
-    vec4 v = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0);
-    if (shading) {  // the table holds unlit light: the piece's mean shading on it
-      vec2 k = mix(shadeFront, shadeBack, 0.5);
-      v.rgb = v.rgb * k.x + k.y * v.a;
-    }
-    composite(v.rgb, 1.0 - v.a);
+  if (tfCount == 0) return;
+  float a = min(sf, sb), b = max(sf, sb);
+  int above = tfFirstAbove(a), notBelow = tfFirstNotBelow(b);
+  float tauA = tfExtinctionAt(a, above);
+  float tauB = notBelow == tfCount ? tfColorTau[tfCount - 1].a : tfExtinctionAt(b, notBelow);
+  float meanTau;
+  if (above >= notBelow || !(b > a)) {
+    meanTau = 0.5 * (tauA + tauB);  // one linear piece
+  } else {
+    int first = above, last = notBelow - 1;
+    float span = b - a;
+    float whole = ((tfKnot[last].y - tfKnot[first].y) + (tfKnot[last].z - tfKnot[first].z)) / span;
+    meanTau = (tfValue[first] - a) / span * 0.5 * (tauA + tfColorTau[first].a) + whole +
+              (b - tfValue[last]) / span * 0.5 * (tfColorTau[last].a + tauB);
   }
+  float depth = meanTau * len;
+  if (depth > preMaxDepth) { integrateLinear(sf, sb, len); return; }
+  bool forward = sb >= sf;
+  vec3 x = vec3(preCoordinate(sf, forward ? above : notBelow), preCoordinate(sb, forward ? notBelow : above),
+                depth / preMaxDepth);
+  vec3 size = vec3(textureSize(preTable, 0));
+  vec3 mean = textureLod(preTable, (x * (size - 1.0) + 0.5) / size, 0.0).rgb;
+  float alpha = 1.0 - exp(-depth);
+  if (shading) {  // the table holds unlit light: the piece's mean shading on it
+    vec2 k = mix(shadeFront, shadeBack, 0.5);
+    mean = mean * k.x + k.y;
+  }
+  composite(mean * alpha, 1.0 - alpha);
 }
 
 // Midpoint rule on one lattice along the ray: the piece [t0, t1) is cut at every multiple

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <optional>
 
 #include <atomic>
 #include <cmath>
@@ -21,7 +22,8 @@ namespace {
 // The table resolves the function at its value texels only: control points finer than
 // kSamplesPerTexel per texel cannot show in it, but they cost a cut in every texel's
 // integral (a 10,000-point function took minutes). Such a function is resampled at that
-// many points per texel over its range, exactly at the texels, before the table is built.
+// many points per texel over its range, exactly at the texels, before the table's colors
+// are built (its opacity comes from every point).
 constexpr int kSamplesPerTexel = 8;
 
 TransferFunction forTable(const TransferFunction& tf, double sMin, double sMax, int texels) {
@@ -36,23 +38,68 @@ TransferFunction forTable(const TransferFunction& tf, double sMin, double sMax, 
   return TransferFunction(std::move(points));
 }
 
+struct Piece {
+  glm::dvec3 c0, c1;
+  double tau0, tau1, fraction;  // fraction of the segment's length
+};
+
+// A segment with no extinction shows nothing, but its texel is a corner of cells whose
+// other corners do: their mean color tends to the color where the extinction starts next
+// to it, so the texel holds that one (the nearer edge, by value), not an arbitrary color.
+glm::dvec3 colorAtNearestExtinction(const TransferFunction& tf, double a, double b) {
+  const auto& p = tf.points();
+  if (p.empty()) return glm::dvec3(0.0);
+  const auto positiveAbove = [&](double c) {  // extinction > 0 just above c
+    const auto k = std::upper_bound(p.begin(), p.end(), c, [](double v, const ControlPoint& q) { return v < q.value; });
+    return k == p.end() ? p.back().extinction > 0.0 : tf.extinction(c) > 0.0 || k->extinction > 0.0;
+  };
+  const auto positiveBelow = [&](double c) {  // extinction > 0 just below c
+    const auto k = std::lower_bound(p.begin(), p.end(), c, [](const ControlPoint& q, double v) { return q.value < v; });
+    return k == p.begin() ? p.front().extinction > 0.0 : tf.extinction(c) > 0.0 || std::prev(k)->extinction > 0.0;
+  };
+  std::optional<double> above, below;
+  if (positiveAbove(b)) above = b;
+  for (std::size_t k = 0; !above && k < p.size(); ++k)
+    if (p[k].value > b && positiveAbove(p[k].value)) above = p[k].value;
+  if (positiveBelow(a)) below = a;
+  for (std::size_t k = p.size(); !below && k-- > 0;)
+    if (p[k].value < a && positiveBelow(p[k].value)) below = p[k].value;
+  if (above && (!below || *above - b <= a - *below)) return tf.color(*above);
+  if (below) return tf.color(*below);
+  return tf.color(0.5 * (a + b));
+}
+
+// The mean color C / alpha of a segment (pieces front to back) at optical depth `depth`,
+// the pieces' mean extinction per unit of the segment's length `meanTau` > 0.
+glm::dvec3 meanColor(const std::vector<Piece>& pieces, double meanTau, double depth, bool constant) {
+  if (depth == 0.0) {  // the extinction-weighted mean: int C tau / int tau, exact for linear pieces
+    glm::dvec3 sum(0.0);
+    for (const Piece& q : pieces)
+      sum += q.fraction * (q.c0 * (2.0 * q.tau0 + q.tau1) + q.c1 * (q.tau0 + 2.0 * q.tau1)) / 6.0;
+    return sum / meanTau;
+  }
+  const double length = depth / meanTau;
+  SegmentLight light;
+  for (const Piece& q : pieces) {
+    compositeBehind(light, constant ? constantSegment(q.c0, q.tau0, length)
+                                    : linearSegment(q.c0, q.tau0, q.c1, q.tau1, q.fraction * length));
+    if (light.transmittance < 1e-300) break;
+  }
+  return light.color / (1.0 - light.transmittance);
+}
+
 }  // namespace
 
 PreintegrationTable::PreintegrationTable(const TransferFunction& original, double sMin, double sMax,
-                                         int scalarResolution, double maxLength, int lengthResolution, int threads)
-    : ns_(scalarResolution), nl_(lengthResolution), sMin_(sMin), sMax_(sMax), maxLength_(maxLength),
-      warp_(original, sMin, sMax > sMin ? sMax : sMin + 1.0),
-      values_(std::size_t(scalarResolution) * std::size_t(scalarResolution) * std::size_t(lengthResolution) * 4) {
-  if (ns_ < 2 || nl_ < 2 || !(sMax > sMin) || !(maxLength > 0.0))
-    throw std::invalid_argument("pre-integration table: resolutions must be >= 2 and ranges non-empty");
+                                         int scalarResolution, int depthResolution, int threads)
+    : ns_(scalarResolution), nd_(depthResolution), tf_(original),
+      warp_(original, sMin, sMax > sMin ? sMax : sMin + 1.0, scalarResolution), depth_(original),
+      values_(std::size_t(scalarResolution) * std::size_t(scalarResolution) * std::size_t(depthResolution) * 3) {
+  if (ns_ < 2 || nd_ < 2 || !(sMax > sMin))
+    throw std::invalid_argument("pre-integration table: resolutions must be >= 2 and the range non-empty");
   if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
   const TransferFunction tf = forTable(original, sMin, sMax, scalarResolution);
-  // One (sFront, sBack) pair per task: its cut points are found once and reused for
-  // every length.
-  struct Piece {
-    glm::dvec3 c0, c1;
-    double tau0, tau1, fraction;
-  };
+  // One (sFront, sBack) pair per task: its pieces are found once and reused for every depth.
   std::atomic<int> next{0};
   const auto work = [&] {
     std::vector<Piece> pieces;
@@ -69,19 +116,14 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& original, doubl
       if (sf != sb)
         for (double cut : tf.crossings(sf, sb)) addPiece(cut, (cut - sf) / (sb - sf));
       addPiece(sb, 1.0);
-      for (int l = 0; l < nl_; ++l) {
-        const double length = maxLength_ * l / (nl_ - 1);
-        SegmentLight light;
-        for (const Piece& p : pieces) {
-          compositeBehind(light, sf == sb ? constantSegment(p.c0, p.tau0, length)
-                                          : linearSegment(p.c0, p.tau0, p.c1, p.tau1, p.fraction * length));
-          if (light.transmittance < 1e-8) break;  // the rest is below float precision
-        }
-        float* out = &values_[((std::size_t(l) * std::size_t(ns_) + std::size_t(b)) * std::size_t(ns_) + std::size_t(f)) * 4];
-        out[0] = float(light.color.r);
-        out[1] = float(light.color.g);
-        out[2] = float(light.color.b);
-        out[3] = float(1.0 - light.transmittance);
+      double meanTau = 0.0;
+      for (const Piece& q : pieces) meanTau += q.fraction * 0.5 * (q.tau0 + q.tau1);
+      const glm::dvec3 clear = meanTau > 0.0 ? glm::dvec3(0.0) : colorAtNearestExtinction(tf, std::min(sf, sb), std::max(sf, sb));
+      for (int d = 0; d < nd_; ++d) {
+        const double depth = kMaxDepth * double(d) / (nd_ - 1);
+        const glm::dvec3 c = meanTau > 0.0 ? meanColor(pieces, meanTau, depth, sf == sb) : clear;
+        float* out = &values_[((std::size_t(d) * std::size_t(ns_) + std::size_t(b)) * std::size_t(ns_) + std::size_t(f)) * 3];
+        for (int k = 0; k < 3; ++k) out[k] = float(c[k]);
       }
     }
   };
@@ -94,21 +136,27 @@ glm::dvec4 PreintegrationTable::lookup(double sFront, double sBack, double lengt
     i0 = std::min(int(x), n - 2);
     w = x - i0;
   };
-  int f0, b0, l0;
-  double wf, wb, wl;
+  const double depth = depth_.depth(sFront, sBack, length);
+  if (depth > kMaxDepth) {
+    const SegmentLight exact = integrateSegment(tf_, sFront, sBack, length);
+    return glm::dvec4(exact.color, 1.0 - exact.transmittance);
+  }
+  int f0, b0, d0;
+  double wf, wb, wd;
   coord(warp_.toTable(sFront), ns_, f0, wf);
   coord(warp_.toTable(sBack), ns_, b0, wb);
-  coord(length / maxLength_, nl_, l0, wl);
-  glm::dvec4 sum(0.0);
-  for (int dl = 0; dl < 2; ++dl)
+  coord(depth / kMaxDepth, nd_, d0, wd);
+  glm::dvec3 color(0.0);
+  for (int dd = 0; dd < 2; ++dd)
     for (int db = 0; db < 2; ++db)
       for (int df = 0; df < 2; ++df) {
-        const double w = (df ? wf : 1 - wf) * (db ? wb : 1 - wb) * (dl ? wl : 1 - wl);
-        const float* v = &values_[((std::size_t(l0 + dl) * std::size_t(ns_) + std::size_t(b0 + db)) * std::size_t(ns_) +
-                                   std::size_t(f0 + df)) * 4];
-        sum += w * glm::dvec4(v[0], v[1], v[2], v[3]);
+        const double w = (df ? wf : 1 - wf) * (db ? wb : 1 - wb) * (dd ? wd : 1 - wd);
+        const float* v = &values_[((std::size_t(d0 + dd) * std::size_t(ns_) + std::size_t(b0 + db)) * std::size_t(ns_) +
+                                   std::size_t(f0 + df)) * 3];
+        color += w * glm::dvec3(v[0], v[1], v[2]);
       }
-  return sum;
+  const double alpha = -std::expm1(-depth);
+  return glm::dvec4(color * alpha, alpha);
 }
 
 }  // namespace volpost::optics

@@ -2,11 +2,12 @@
 #include <volpost/core/optics/TableWarp.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace volpost::optics {
 
-TableWarp::TableWarp(const TransferFunction& tf, double sMin, double sMax) {
+TableWarp::TableWarp(const TransferFunction& tf, double sMin, double sMax, int texels) {
   if (!(sMax > sMin)) throw std::invalid_argument("a table's value range must not be empty");
   s_.push_back(sMin);
   for (const ControlPoint& p : tf.points())
@@ -26,6 +27,21 @@ TableWarp::TableWarp(const TransferFunction& tf, double sMin, double sMax) {
   }
   for (double& u : u_) u /= u_.back();
   u_.back() = 1.0;
+  if (texels >= 2) snapToTexels(texels);
+}
+
+// Each inner knot to its nearest texel, at least one texel after the one before it and
+// leaving one for each knot after it; the ends stay at 0 and 1.
+void TableWarp::snapToTexels(int texels) {
+  const long intervals = texels - 1, knots = long(u_.size());
+  if (knots - 1 > intervals) return;  // more pieces than texels: left where they are
+  long previous = 0;
+  for (long k = 1; k + 1 < knots; ++k) {
+    const long nearest = std::lround(u_[std::size_t(k)] * double(intervals));
+    const long texel = std::clamp(nearest, previous + 1, intervals - (knots - 1 - k));
+    u_[std::size_t(k)] = double(texel) / double(intervals);
+    previous = texel;
+  }
 }
 
 double TableWarp::toTable(double s) const {
