@@ -26,8 +26,8 @@ TEST_F(RayCast, PreIntegratedAndSamplingAreBoundedToo) {
   caster_->setIntegrationMode(IntegrationMode::LinearSegmentsIsoTable);
   const ImageError iso = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast linear segments, iso-detection table 256^2 vs reference: RMSE %.3g, max %.3g\n", iso.rmse, iso.max);
-  EXPECT_LE(iso.rmse, 2e-3);
-  EXPECT_LE(iso.max, 1e-2);
+  EXPECT_LE(iso.rmse, 1e-5);  // measured 2.6e-7: the table only says where to cut, never wrongly
+  EXPECT_LE(iso.max, 1e-4);
   caster_->setIntegrationMode(IntegrationMode::PreIntegrated);
   const ImageError pre = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("raycast pre-integrated 128^2 x 9 vs reference: RMSE %.3g, max %.3g\n", pre.rmse, pre.max);
@@ -51,7 +51,8 @@ TEST_F(RayCast, ASharpPeakIsNotNettedByTheTables) {
   const double mid = *lo + 0.6 * (*hi - *lo), half = 0.015 * (*hi - *lo), tau = 60.0 / std::sqrt(3.0 * 64.0);
   const TransferFunction peak({{*lo, {0.2, 0.3, 0.9}, 0.0}, {mid - half, {0.2, 0.3, 0.9}, 0.0},
                                {mid, {1.0, 0.6, 0.1}, tau}, {mid + half, {0.9, 0.2, 0.1}, 0.0}, {*hi, {0.9, 0.2, 0.1}, 0.0}});
-  for (IntegrationMode mode : {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated}) {
+  for (IntegrationMode mode :
+       {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated, IntegrationMode::LinearSegmentsIsoTable}) {
     caster_->setIntegrationMode(mode);
     const ImageError e = againstReference(grid, FieldLocation::Node, wave, peak, isoCamera(grid), 96);
     std::printf("raycast %s through a sharp peak vs reference: RMSE %.3g, max %.3g\n", std::string(toString(mode)).c_str(),
@@ -376,7 +377,8 @@ TEST_F(RayCast, AFrameInManyShortDispatchesAndBandsIsTheSameImage) {
   caster_->setTransferFunction(kTf);
   caster_->setClipPlanes({{{2.0, 2.0, 2.0}, {0.3, -1.0, 0.2}}});
   caster_->setIsoSurfaces({{3.0, {1.0, 0.8, 0.2}, 0.5}});
-  for (IntegrationMode mode : {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated}) {
+  for (IntegrationMode mode :
+       {IntegrationMode::LinearSegments, IntegrationMode::PreIntegrated, IntegrationMode::LinearSegmentsIsoTable}) {
     caster_->setIntegrationMode(mode);
     auto& caster = rayCaster(*caster_);
     caster.setStepsPerPass(volume::RayCaster::kStepsPerPass);

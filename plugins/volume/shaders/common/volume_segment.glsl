@@ -98,6 +98,29 @@ void linearPiece(vec4 front, vec4 back, float len) {  // rgb color, a extinction
 float rangePos(float s) { return (s - sLo) / (sHi - sLo); }
 float rangeValue(float p) { return sLo + p * (sHi - sLo); }
 
+#if INTEGRATION_MODE == 3
+// Espinha 2005, 4.2: the iso-detection table says where to cut (optics::IsoDetectionTable::
+// cut, the same rule): its entry covers the whole cells of the two texels, so a point
+// between a value and its texel's centre is not missed; where the entry cannot tell
+// (several points in the front's cell, or one texel for both ends with a point in it) the
+// control points are searched.
+float isoTableCut(float s, float sb) {
+  int n = textureSize(isoTable, 0).x;
+  ivec2 texel = clamp(ivec2(floor(clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * float(n - 1) + 0.5)), 0, n - 1);
+  vec2 entry = texelFetch(isoTable, texel, 0).rg;
+  if (entry.x < 0.0) return sb;  // no point in the cells' span
+  if (texel.x == texel.y) return tfNextCut(s, sb);
+  bool up = sb > s;
+  float v = rangeValue(entry.x);
+  if (up ? !(v > s) : !(v < s)) {
+    if (entry.y < 0.0) return sb;
+    v = rangeValue(entry.y);
+    if (up ? !(v > s) : !(v < s)) return tfNextCut(s, sb);
+  }
+  return (up ? v < sb : v > sb) ? v : sb;
+}
+#endif
+
 void integrateLinear(float sf, float sb, float len) {
   // Constant (or varying below float resolution, where sb - sf may flush to zero and the
   // piece lengths below would divide by it): no division, no cut.
@@ -108,20 +131,14 @@ void integrateLinear(float sf, float sb, float len) {
     return;
   }
   float s = sf;
-  for (int k = 0; k <= tfCount + 1; ++k) {
+  // A cut per control point crossed; the table's values (float positions in the range) may
+  // add a piece a float long next to a point: room for those, and the last piece to the end.
+  int lastPiece = 2 * tfCount + 2;
+  for (int k = 0; k <= lastPiece; ++k) {
 #if INTEGRATION_MODE == 3
-    // Espinha 2005, 4.2: the iso-detection texture says where to cut.
-    float n = float(textureSize(isoTable, 0).x);
-    float end = sb;
-    vec2 uv = (clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * (n - 1.0) + 0.5) / n;
-    float iso = textureLod(isoTable, uv, 0.0).r;
-    if (iso >= 0.0) {
-      float v = rangeValue(iso);
-      // The table is quantised: cut only where the point really lies ahead.
-      if ((sb > s && v > s && v < sb) || (sb < s && v < s && v > sb)) end = v;
-    }
+    float end = k == lastPiece ? sb : isoTableCut(s, sb);
 #else
-    float end = tfNextCut(s, sb);
+    float end = k == lastPiece ? sb : tfNextCut(s, sb);
 #endif
     float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
     linearPiece(lit(tfEval(s), s), lit(tfEval(end), end), pieceLen);
