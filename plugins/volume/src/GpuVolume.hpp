@@ -136,7 +136,7 @@ class GpuVolume {
 
   /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration
   /// N^2 values x preDepthResolution depths.
-  int psiResolution = 512, isoResolution = 256, preResolution = 128, preDepthResolution = 9;
+  int psiResolution = 512, isoResolution = 256, preResolution = 256, preDepthResolution = 9;
 
  private:
   void uploadMesh();

@@ -38,7 +38,7 @@ std::string integrationModeChoices() {
 std::string_view describe(IntegrationMode mode) {
   switch (mode) {
     case IntegrationMode::LinearSegments: return "Linear segments, exact cuts";
-    case IntegrationMode::PreIntegrated: return "Pre-integrated table";
+    case IntegrationMode::PreIntegrated: return "Pre-integrated (exact opacity, color from a table)";
     case IntegrationMode::Sampling: return "Sampling (fixed step)";
     case IntegrationMode::LinearSegmentsIsoTable: return "Linear segments, cuts from a 2D table";
   }

@@ -16,8 +16,8 @@ TEST_F(CellProjection, ConvexGridMatchesTheReferenceInEveryMode) {
   caster_->setIntegrationMode(IntegrationMode::PreIntegrated);
   const ImageError pre = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64);
   std::printf("vicp pre-integrated vs reference: RMSE %.3g, max %.3g\n", pre.rmse, pre.max);
-  EXPECT_LE(pre.rmse, 2e-2);
-  EXPECT_LE(pre.max, 0.1);
+  EXPECT_LE(pre.rmse, 2e-5);  // measured 2.6e-6 / 7.9e-5, the ray caster's
+  EXPECT_LE(pre.max, 5e-4);
   // Sampling: the samples lie on one lattice along the ray whichever tet takes them, so the
   // picture is the ray caster's, sample for sample.
   caster_->setIntegrationMode(IntegrationMode::Sampling);
