@@ -4,6 +4,7 @@
 #include "cli/Commands.hpp"
 #include "core/PictureFile.hpp"
 #include "gui/MainWindow.hpp"
+#include "gui/SettledView.hpp"
 #include "gui/Viewport.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
@@ -26,6 +27,27 @@
 #include <unistd.h>
 
 namespace {
+
+// The window's picture once the view has settled (SettledView: not the quick frame shown
+// while the full one is computed); after ten minutes still refining it is saved as shown,
+// with a warning. Exit code 0 once written, 1 if not.
+void saveWhenSettled(volpost::app::MainWindow& window, const QString& shot) {
+  auto* wait = new volpost::app::SettledView(window.viewport(), 300, 10 * 60 * 1000, &window);
+  const auto save = [&window, shot] {
+    try {
+      volpost::app::savePicture(window.grab().toImage(), shot);
+      QApplication::exit(0);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "volpost: error: %s\n", e.what());
+      QApplication::exit(1);
+    }
+  };
+  QObject::connect(wait, &volpost::app::SettledView::settled, &window, save);
+  QObject::connect(wait, &volpost::app::SettledView::timedOut, &window, [save] {
+    std::fprintf(stderr, "volpost: warning: the picture was still being refined after 10 minutes; saved as shown\n");
+    save();
+  });
+}
 
 void printUsage() {
   std::printf(
@@ -108,15 +130,7 @@ int runWindow(int argc, char** argv) {
       QTimer::singleShot(0, &window, [] { QApplication::exit(1); });
       return;
     }
-    QTimer::singleShot(300, &window, [&window, shot] {
-      try {
-        volpost::app::savePicture(window.grab().toImage(), shot);
-        QApplication::exit(0);
-      } catch (const std::exception& e) {
-        std::fprintf(stderr, "volpost: error: %s\n", e.what());
-        QApplication::exit(1);
-      }
-    });
+    saveWhenSettled(window, shot);
   };
   if (parser.isSet(state)) {
     QObject::connect(&window, &volpost::app::MainWindow::stateApplied, &window, takeScreenshot);

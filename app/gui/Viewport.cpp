@@ -107,6 +107,7 @@ void Viewport::paintGL() {
   if (pending) QTimer::singleShot(30, this, [this] { update(); });
   if (pending != refining_) emit refining(refining_ = pending);
   if (overlayReady_) drawLegend(ctx.width, ctx.height);
+  ++paintedFrames_;
 }
 
 // The legend is painted on the CPU (same code as the headless picture) and drawn as a

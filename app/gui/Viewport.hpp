@@ -58,6 +58,10 @@ class Viewport : public QOpenGLWidget {
   std::optional<glm::dvec3> surfacePointAt(const QPointF& pixel) const;
 
   VolumeStats volumeStats() const { return scene_.volumeStats(); }
+  /// The picture shown is a quick one while the full one is computed (as last painted).
+  bool isRefining() const { return refining_; }
+  /// Frames painted so far: a picture taken after a change waits for one more.
+  std::size_t paintedFrames() const { return paintedFrames_; }
   /// Tets on the GPU (fewer than the model's when a clip box culls them).
   std::size_t uploadedTetCount() const { return volumeStats().tetrahedra; }
 
@@ -93,6 +97,7 @@ class Viewport : public QOpenGLWidget {
   OverlayRenderer overlay_;
   bool overlayReady_ = false;
   bool refining_ = false;  ///< last said by refining()
+  std::size_t paintedFrames_ = 0;
   QPoint lastMouse_;
   bool rakeMode_ = false;
   bool trackball_ = false;

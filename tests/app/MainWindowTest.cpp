@@ -2,6 +2,7 @@
 // The window under a (virtual) X display: open a model, switch the result, take a
 // screenshot, fail to open a bad file without losing the model.
 #include "gui/MainWindow.hpp"
+#include "gui/SettledView.hpp"
 #include "gui/LinePlotPanel.hpp"
 #include "gui/ProbePanel.hpp"
 #include "gui/StepController.hpp"
@@ -136,6 +137,28 @@ class MainWindowTest : public QObject {
     view->repaint();
     QVERIFY2(!refining->isVisible(), "no \"refining\" once the full frame is shown");
     volume->setChecked(false);
+  }
+
+  // `volpost --screenshot` saves what the view settles on: SettledView says so only once a
+  // frame was painted after the change and no full frame is computed behind a quick one.
+  void aScreenshotWaitsForTheFullPicture() {
+    Viewport* view = window_->viewport();
+    QVERIFY(window_->selectQuantity("S.mises"));
+    auto* volume = window_->findChild<QAction*>("volumeAction");
+    volume->setChecked(true);
+    window_->resize(1600, 1200);  // a full frame that takes a while on two cores
+    settled(view);
+    SettledView wait(view, 0);
+    QSignalSpy done(&wait, &SettledView::settled);
+    view->setStandardView(StandardView::PlusY);  // a new picture to compute
+    QVERIFY(done.wait(60000));
+    QVERIFY(!view->isRefining());
+    QVERIFY(!view->scene().hasPendingWork());
+    const QImage shown = view->grabFramebuffer();
+    QCOMPARE(summarize(shown), summarize(settled(view)));  // nothing changes after it
+    view->setStandardView(StandardView::Isometric);
+    volume->setChecked(false);
+    window_->resize(900, 600);
   }
 
   void switchingTheResultChangesThePicture() {
