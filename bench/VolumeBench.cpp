@@ -203,6 +203,7 @@ int main(int argc, char** argv) {
   const char* errorImages = nullptr;
   const char* exportDir = nullptr;
   bool cpuOnly = false;  // --cpu-only: leave out the GPU renderers
+  std::vector<IntegrationMode> onlyModes;  // --modes LIST: just these integration modes of the GPU renderers
   bool interactive = false;  // --interactive: the window's quick frames while the view turns
   const char* modelPath = nullptr;  // --model FILE --field NAME: that model instead of the built-in cases
   const char* fieldName = nullptr;
@@ -218,6 +219,20 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--error-images") && i + 1 < argc) errorImages = argv[++i];
     else if (!std::strcmp(argv[i], "--export") && i + 1 < argc) exportDir = argv[++i];
     else if (!std::strcmp(argv[i], "--cpu-only")) cpuOnly = true;
+    else if (!std::strcmp(argv[i], "--modes") && i + 1 < argc) {
+      const std::string list = argv[++i];
+      for (std::size_t at = 0; at <= list.size();) {
+        const std::size_t end = std::min(list.find(',', at), list.size());
+        const auto mode = integrationModeFromString(list.substr(at, end - at));
+        if (!mode) {
+          std::fprintf(stderr, "volpost_volume_bench: --modes: '%s' is not one of %s\n", list.substr(at, end - at).c_str(),
+                       integrationModeChoices().c_str());
+          return 2;
+        }
+        onlyModes.push_back(*mode);
+        at = end + 1;
+      }
+    }
     else if (!std::strcmp(argv[i], "--interactive")) interactive = true;
     else if (!std::strcmp(argv[i], "--model") && i + 1 < argc) modelPath = argv[++i];
     else if (!std::strcmp(argv[i], "--field") && i + 1 < argc) fieldName = argv[++i];
@@ -238,7 +253,8 @@ int main(int argc, char** argv) {
       std::fprintf(help ? stdout : stderr,
                    "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
                    "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
-                   "                            [--error-images DIR] [--export DIR] [--cpu-only] [--interactive]\n"
+                   "                            [--error-images DIR] [--export DIR] [--cpu-only] [--modes LIST]\n"
+                   "                            [--interactive]\n"
                    "                            [--model FILE --field NAME] [--tf FILE]\n"
                    "                            [--eye X,Y,Z --target X,Y,Z [--up X,Y,Z] [--view-angle DEG]]\n"
                    "  --size N            image N x N (default 512)\n"
@@ -250,6 +266,8 @@ int main(int argc, char** argv) {
                    "  --export DIR        each case's mesh (.vtu), transfer function, camera and reference image\n"
                    "                      (.npy), for docs/scripts/vtk_side_by_side.py\n"
                    "  --cpu-only          the reference and the CPU ray caster only (no GPU renderer)\n"
+                   "  --modes LIST        only these integration modes of the GPU renderers, e.g.\n"
+                   "                      pre-integrated,iso-table (of linear, iso-table, pre-integrated, sampling)\n"
                    "  --model FILE        this model instead of the built-in cases (any format volpost reads),\n"
                    "  --field NAME        with this scalar field (first step)\n"
                    "  --tf FILE           this transfer function (volpost TF JSON) instead of the bench's\n"
@@ -406,6 +424,7 @@ int main(int argc, char** argv) {
     caster->setVolume(c.mesh, c.location, c.values);
     caster->setTerminationThreshold(0.0);  // compare like with like
     for (IntegrationMode mode : *modes) {
+      if (!onlyModes.empty() && std::find(onlyModes.begin(), onlyModes.end(), mode) == onlyModes.end()) continue;
       caster->setIntegrationMode(mode);
       const auto tfStart = Clock::now();
       caster->setTransferFunction(tf);

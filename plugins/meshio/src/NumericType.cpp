@@ -40,7 +40,58 @@ std::vector<Out> convert(const std::uint8_t* bytes, std::size_t count, NumericTy
   return out;
 }
 
+template <typename T>
+SampleArray loadAll(const std::uint8_t* bytes, std::size_t count, NumericType stored, bool be, SampleType kept) {
+  SampleArray out(kept, count);
+  auto values = out.as<T>();
+  const std::size_t s = sizeOf(stored);
+  for (std::size_t i = 0; i < count; ++i) values[i] = T(load<T>(bytes + i * s, be));
+  return out;
+}
+
 }  // namespace
+
+SampleType sampleTypeFor(NumericType type) {
+  switch (type) {
+    case NumericType::Int8: return SampleType::Int8;
+    case NumericType::UInt8: return SampleType::UInt8;
+    case NumericType::Int16: return SampleType::Int16;
+    case NumericType::UInt16: return SampleType::UInt16;
+    case NumericType::Int32: return SampleType::Int32;
+    case NumericType::UInt32: return SampleType::UInt32;
+    case NumericType::Float32: return SampleType::Float32;
+    default: return SampleType::Float64;
+  }
+}
+
+SampleArray toSamples(const std::uint8_t* bytes, std::size_t count, NumericType type, bool be) {
+  const SampleType kept = sampleTypeFor(type);
+  switch (type) {
+    case NumericType::Int8: return loadAll<std::int8_t>(bytes, count, type, be, kept);
+    case NumericType::UInt8: return loadAll<std::uint8_t>(bytes, count, type, be, kept);
+    case NumericType::Int16: return loadAll<std::int16_t>(bytes, count, type, be, kept);
+    case NumericType::UInt16: return loadAll<std::uint16_t>(bytes, count, type, be, kept);
+    case NumericType::Int32: return loadAll<std::int32_t>(bytes, count, type, be, kept);
+    case NumericType::UInt32: return loadAll<std::uint32_t>(bytes, count, type, be, kept);
+    case NumericType::Float32: return loadAll<float>(bytes, count, type, be, kept);
+    case NumericType::Float64: return loadAll<double>(bytes, count, type, be, kept);
+    default: {  // 64-bit integers: as doubles, as every reader takes them
+      SampleArray out(kept, count);
+      const std::vector<double> v = toDoubles(bytes, count, type, be);
+      std::copy(v.begin(), v.end(), out.as<double>().begin());
+      return out;
+    }
+  }
+}
+
+SampleArray toSamples(const std::vector<double>& values, NumericType type) {
+  SampleArray out(sampleTypeFor(type), values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!out.fitsExactly(values[i]) && out.type() != SampleType::Float64) out = out.widenedTo(SampleType::Float64);
+    out.set(i, values[i]);
+  }
+  return out;
+}
 
 std::size_t sizeOf(NumericType type) {
   switch (type) {

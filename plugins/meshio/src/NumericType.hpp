@@ -4,6 +4,9 @@
 
 #include <cstddef>
 #include <cstdint>
+
+#include <volpost/core/SampleArray.hpp>
+
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -21,6 +24,14 @@ std::optional<NumericType> numericTypeFromLegacy(std::string_view name);
 
 /// Converts `count` values stored at `bytes` (little or big endian) to doubles.
 std::vector<double> toDoubles(const std::uint8_t* bytes, std::size_t count, NumericType type, bool bigEndian);
+/// The type a grid keeps such values in: the same, 64-bit integers as 64-bit floats.
+SampleType sampleTypeFor(NumericType type);
+/// `count` values stored at `bytes` in the type sampleTypeFor gives (no copy as doubles).
+SampleArray toSamples(const std::uint8_t* bytes, std::size_t count, NumericType type, bool bigEndian);
+/// Values read as text into that type, widened to 64-bit floats when one does not fit
+/// (text "300" in an unsigned_char array is kept as written).
+SampleArray toSamples(const std::vector<double>& values, NumericType type);
+
 /// Converts `count` integer values; floating values are rejected by the caller.
 std::vector<std::int64_t> toIntegers(const std::uint8_t* bytes, std::size_t count, NumericType type, bool bigEndian);
 

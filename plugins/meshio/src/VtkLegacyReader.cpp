@@ -194,6 +194,20 @@ class LegacyParser {
     };
   }
 
+  /// The same array kept in the file's type (a grid's samples): values now (ASCII) or a
+  /// lazy decode of the shared bytes (binary, big-endian as legacy VTK writes it).
+  SampleLoader samples(std::size_t count, NumericType t, const std::string& what) {
+    if (!binary) {
+      auto kept = std::make_shared<SampleArray>(toSamples(values(count, t, what), t));
+      return [kept](std::size_t) { return *kept; };
+    }
+    const std::size_t at = skipBinary(count, t, what);
+    auto bytes = bytesPtr_;
+    return [bytes, at, count, t](std::size_t) {
+      return toSamples(reinterpret_cast<const std::uint8_t*>(bytes->data() + at), count, t, true);
+    };
+  }
+
   bool atEnd() {
     while (pos_ < b_.size() && std::isspace(static_cast<unsigned char>(b_[pos_]))) ++pos_;
     return pos_ >= b_.size();
@@ -214,7 +228,8 @@ struct PendingArray {
   FieldLocation location;
   int components;
   std::size_t tuples;
-  StepLoader loader;
+  StepLoader loader;     ///< as doubles (meshes, tensors)
+  SampleLoader samples;  ///< or in the file's type (a grid's arrays)
 };
 
 // Full 3x3 tensors are stored as their symmetric part, in volpost's xx yy zz xy yz zx order.
@@ -449,9 +464,12 @@ class LegacyReading {
         const std::size_t tuples = p_.count("the number of tuples");
         const NumericType t = p_.type();
         if (comps < 1) p_.fail("FIELD array " + name + " has no components");
-        auto loader = p_.array(p_.product(tuples, std::size_t(comps), "FIELD array " + name), t, "FIELD array " + name);
+        const std::size_t count = p_.product(tuples, std::size_t(comps), "FIELD array " + name);
+        PendingArray a{name, location, comps, tuples, {}, {}};
+        if (structured_) a.samples = p_.samples(count, t, "FIELD array " + name);
+        else a.loader = p_.array(count, t, "FIELD array " + name);
         if (p_.peekToken() == "METADATA") { p_.token(); skipMetadata(); }
-        if (inSection) arrays_.push_back({name, location, comps, tuples, std::move(loader)});
+        if (inSection) arrays_.push_back(std::move(a));
       }
       return;
     }
@@ -482,7 +500,12 @@ class LegacyReading {
       if (p_.peekToken() == "LOOKUP_TABLE") { p_.token(); p_.token(); }
     }
     if (comps < 1 || comps > 4096) p_.fail("SCALARS " + name + ": bad number of components");
-    auto loader = p_.array(p_.product(n, std::size_t(comps), key + " " + name), t, key + " " + name);
+    const std::size_t count = p_.product(n, std::size_t(comps), key + " " + name);
+    if (structured_ && comps != 9) {  // a grid keeps its samples in the file's type (16-bit: 2 bytes, not 8)
+      arrays_.push_back({name, location, comps, n, {}, p_.samples(count, t, key + " " + name)});
+      return;
+    }
+    auto loader = p_.array(count, t, key + " " + name);
     if (comps == 9) {
       // A symmetric 3x3 tensor (stress, strain) becomes volpost's six components; one that
       // is not symmetric keeps its nine, and the user is told why it has no von Mises.
@@ -499,7 +522,7 @@ class LegacyReading {
                                 {}});
       }
     }
-    arrays_.push_back({name, location, comps, n, std::move(loader)});
+    arrays_.push_back({name, location, comps, n, std::move(loader), {}});
   }
 
   void skipMetadata() {  // METADATA blocks end at an empty line
@@ -516,6 +539,11 @@ class LegacyReading {
                                    "field " + a.name + " dropped: " + std::to_string(a.tuples) + " values for " +
                                        std::to_string(expected) + (a.location == FieldLocation::Node ? " points" : " cells"),
                                    {}});
+      return;
+    }
+    if (a.samples) {  // a grid: no cells are ever skipped
+      model.fields.push_back(Field::fromSamples(a.name, a.location, a.components, a.tuples, std::vector<Step>{{"", 0.0}},
+                                                std::move(a.samples)));
       return;
     }
     StepLoader loader = a.loader;

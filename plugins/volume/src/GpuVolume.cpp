@@ -410,8 +410,8 @@ void GpuVolume::rebuildTables() {
   gl::check("GpuVolume::rebuildTables");
 }
 
-// The pre-integrated table (tens of ms at 128^2 x 9, seconds for functions of hundreds of
-// points) is computed off the GL thread from a copy of the TF and the table's range.
+// The pre-integrated table (0.2 s at 256^2 x 9 for a function of ten pieces, seconds for
+// hundreds) is computed off the GL thread from a copy of the TF and the table's range.
 void GpuVolume::launchPreintegration() {
   preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, n = preResolution,
                                                depths = preDepthResolution] {

@@ -122,6 +122,43 @@ TEST_P(LegacyStructuredPoints, ReadAsARegularGrid) {
   ASSERT_TRUE(temperature && material);
   EXPECT_EQ(temperature->values(0)[g.pointIndex(3, 2, 1)], 223.0);
   EXPECT_EQ(material->values(0)[7], 1.0);
+  // Kept in the file's types, as the other grid readers keep them.
+  ASSERT_TRUE(temperature->storesSamples() && material->storesSamples());
+  EXPECT_EQ(temperature->samples(0).type(), SampleType::Float64);
+  EXPECT_EQ(material->samples(0).type(), SampleType::Int32);
+}
+
+// A 16-bit grid holds 2 bytes a sample, not the 8 of a double; text that does not fit its
+// declared type is kept as written.
+TEST(LegacyStructuredPoints, KeepSixteenBitSamplesAndWidenWhatDoesNotFit) {
+  const auto path = (std::filesystem::temp_directory_path() / "volpost_points_short.vtk").string();
+  std::string file = "# vtk DataFile Version 3.0\nshort\nBINARY\nDATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 2\n"
+                     "SPACING 1 1 1\nORIGIN 0 0 0\nPOINT_DATA 12\nSCALARS amplitude short 1\nLOOKUP_TABLE default\n";
+  for (int i = 0; i < 12; ++i) {
+    const std::int16_t v = std::int16_t(-30000 + 5000 * i);
+    file += char((std::uint16_t(v) >> 8) & 0xff);  // big-endian, as legacy VTK writes
+    file += char(std::uint16_t(v) & 0xff);
+  }
+  file += "\n";
+  std::ofstream(path, std::ios::binary) << file;
+  const auto model = VtkLegacyReader().read(path, {});
+  const Field* amplitude = model->findField("amplitude");
+  ASSERT_TRUE(amplitude && amplitude->storesSamples());
+  EXPECT_EQ(amplitude->samples(0).type(), SampleType::Int16);
+  EXPECT_EQ(amplitude->samples(0).bytes(), 24u);
+  EXPECT_EQ(amplitude->values(0)[11], 25000.0);
+  EXPECT_EQ(amplitude->values(0)[0], -30000.0);
+
+  std::string text = "# vtk DataFile Version 3.0\nbytes\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 2\n"
+                     "SPACING 1 1 1\nORIGIN 0 0 0\nPOINT_DATA 8\nSCALARS level unsigned_char 1\nLOOKUP_TABLE default\n"
+                     "0 1 2 3 4 5 6 255\nSCALARS over unsigned_char 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 300\n";
+  std::ofstream(path, std::ios::binary) << text;
+  const auto ascii = VtkLegacyReader().read(path, {});
+  EXPECT_EQ(ascii->findField("level")->samples(0).type(), SampleType::UInt8);
+  EXPECT_EQ(ascii->findField("level")->values(0)[7], 255.0);
+  EXPECT_EQ(ascii->findField("over")->samples(0).type(), SampleType::Float64);
+  EXPECT_EQ(ascii->findField("over")->values(0)[7], 300.0);
+  std::filesystem::remove(path);
 }
 
 INSTANTIATE_TEST_SUITE_P(Encodings, LegacyStructuredPoints,

@@ -25,8 +25,8 @@ class PreintegrationTable {
  public:
   /// Scalars span [sMin, sMax] in `scalarResolution` texels placed by the function's
   /// TableWarp (texel i at warp().fromTable(i / (N - 1))); depths [0, kMaxDepth] in
-  /// `depthResolution` texels, evenly. A function with more than 8 control
-  /// points per scalar texel is first resampled at 8 per texel for the colors (detail the
+  /// `depthResolution` texels, evenly. A function with more than 2 control
+  /// points per scalar texel is first resampled at 2 per texel for the colors (detail the
   /// table cannot show), so the cost stays bounded whatever the point count; the opacity
   /// still comes from every point.
   PreintegrationTable(const TransferFunction& tf, double sMin, double sMax, int scalarResolution, int depthResolution,
