@@ -114,6 +114,18 @@ TEST_F(CpuRayCast, LinearSegmentsMatchTheReference) {
   EXPECT_LE(e.max, 3e-5);
 }
 
+// A step (two control points at one value): the renderer and the reference each integrate
+// both sides with their own limits (the reference took the upper one for the piece below).
+TEST_F(CpuRayCast, AStepInTheFunctionMatchesTheReference) {
+  const Mesh grid = test::tetGrid(4, 4, 4);
+  const TransferFunction step({{0.0, {0.2, 0.3, 0.9}, 0.0}, {3.0, {0.2, 0.3, 0.9}, 0.1}, {3.0, {1.0, 0.5, 0.1}, 1.5},
+                               {6.0, {0.9, 0.1, 0.1}, 0.8}});
+  const ImageError e = againstReference(grid, FieldLocation::Node, field(grid), step, isoCamera(grid), 64);
+  std::printf("cpu vs reference, a step in the function: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+  EXPECT_LE(e.rmse, 2e-6);
+  EXPECT_LE(e.max, 3e-5);
+}
+
 TEST_F(CpuRayCast, NoPixelIsLostOnAxisAlignedAndDiagonalViewsOfATetrahedralizedGrid) {
   EXPECT_EQ(lostPixelsOnDegenerateViews(), 0);
 }

@@ -64,6 +64,15 @@ TEST(OpticalDepth, MatchesTheCutIntegralAndIsStableAcrossNearbyPoints) {
   EXPECT_NEAR(depth.depth(b, a, 1.0), mean, 1e-12 * mean);
   EXPECT_EQ(depth.depth(0.5, 0.5, 2.0), 2.0 * tf.extinction(0.5));
   EXPECT_THROW(OpticalDepth({1.0, 0.0}, {1.0, 1.0}), std::invalid_argument);
+  // A step (two points at one value), a single point, no point.
+  const TransferFunction step({{0.0, {1, 1, 1}, 0.0}, {0.5, {1, 1, 1}, 0.0}, {0.5, {1, 0, 0}, 4.0}, {1.0, {1, 0, 0}, 4.0}});
+  const OpticalDepth stepDepth(step);
+  EXPECT_NEAR(stepDepth.depth(0.25, 0.75, 2.0), 2.0 * 0.5 * 4.0, 1e-12);
+  EXPECT_NEAR(stepDepth.depth(0.75, 0.25, 2.0), 4.0, 1e-12);
+  EXPECT_NEAR(stepDepth.depth(0.1, 0.4, 2.0), 0.0, 1e-15);
+  EXPECT_NEAR(stepDepth.depth(0.6, 0.9, 2.0), 8.0, 1e-12);
+  EXPECT_EQ(OpticalDepth(TransferFunction({{0.3, {1, 1, 1}, 2.0}})).depth(-5.0, 5.0, 3.0), 6.0);
+  EXPECT_EQ(OpticalDepth(TransferFunction()).depth(0.0, 1.0, 1.0), 0.0);
 }
 
 TEST(PreintegrationTable, OpacityIsExactAndColorsHoldAtTexels) {

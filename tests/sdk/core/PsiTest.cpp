@@ -117,3 +117,26 @@ TEST(SegmentIntegral, EqualEndsIsAConstantSegment) {
   EXPECT_NEAR(s.transmittance, 1.0 - alpha, 1e-16);
   EXPECT_NEAR(s.color.r, 0.6 * alpha, 1e-16);
 }
+
+// A step (two points at one value): each side of it integrates its own limit, in both
+// directions; the value at the step itself belonged to the piece above, so a segment
+// rising to it took the higher extinction for the whole piece below.
+TEST(IntegrateSegment, EachSideOfAStepTakesItsOwnLimit) {
+  const TransferFunction step({{0.0, {1, 1, 1}, 1.0}, {0.5, {1, 0, 0}, 1.0}, {0.5, {0, 0, 1}, 3.0}, {1.0, {0, 0, 1}, 3.0}});
+  for (const auto& [front, back] : {std::pair{0.25, 0.75}, std::pair{0.75, 0.25}}) {
+    const optics::SegmentLight light = optics::integrateSegment(step, front, back, 2.0);  // half the length each side
+    EXPECT_NEAR(light.transmittance, std::exp(-4.0), 1e-14) << front << " -> " << back;
+  }
+  // Rising: white-to-red below (depth 1) in front of blue (depth 3); the exact light.
+  const optics::SegmentLight up = optics::integrateSegment(step, 0.25, 0.75, 2.0);
+  const double belowAlpha = 1.0 - std::exp(-1.0), aboveAlpha = 1.0 - std::exp(-3.0);
+  EXPECT_NEAR(up.color.b, optics::linearSegment({1, 0.5, 0.5}, 1.0, {1, 0, 0}, 1.0, 1.0).color.b + (1.0 - belowAlpha) * aboveAlpha, 1e-12);
+  const optics::TransferSample below = optics::sampleSide(step, 0.5, true), above = optics::sampleSide(step, 0.5, false);
+  EXPECT_EQ(below.extinction, 1.0);
+  EXPECT_EQ(above.extinction, 3.0);
+  EXPECT_EQ(below.color, glm::dvec3(1, 0, 0));
+  EXPECT_EQ(optics::sampleSide(step, 0.25, true).extinction, 1.0);
+  EXPECT_EQ(optics::sampleSide(step, 2.0, true).extinction, 3.0);
+  EXPECT_EQ(optics::sampleSide(step, -1.0, false).extinction, 1.0);
+}
+

@@ -18,6 +18,33 @@ vec4 tfEval(float s) {
   return mix(tfColorTau[lo], tfColorTau[hi], w);
 }
 
+// The first control point with a value above s (tfCount if none).
+int tfFirstAbove(float s) {
+  int lo = 0, hi = tfCount;
+  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] > s) hi = mid; else lo = mid + 1; }
+  return lo;
+}
+
+// The first control point with a value at or above s (tfCount if none).
+int tfFirstNotBelow(float s) {
+  int lo = 0, hi = tfCount;
+  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= s) hi = mid; else lo = mid + 1; }
+  return lo;
+}
+
+// Color and extinction at s as a piece of a segment sees them: reaching s from lower values
+// (fromBelow: where points share the value s, the first) or going on to higher ones (the
+// last). Two points at one value are a step; each side integrates its own limit
+// (optics::sampleSide).
+vec4 tfEvalFrom(float s, bool fromBelow) {
+  if (tfCount == 0) return vec4(0.0);
+  int hi = fromBelow ? tfFirstNotBelow(s) : tfFirstAbove(s);
+  if (hi == 0) return tfColorTau[0];
+  if (hi == tfCount) return tfColorTau[tfCount - 1];
+  float w = (s - tfValue[hi - 1]) / (tfValue[hi] - tfValue[hi - 1]);
+  return mix(tfColorTau[hi - 1], tfColorTau[hi], w);
+}
+
 // The first control-point value met going from a toward b (strictly beyond a, strictly
 // before b), or b itself if there is none: exact, by binary search.
 float tfNextCut(float a, float b) {

@@ -141,7 +141,8 @@ void integrateLinear(float sf, float sb, float len) {
     float end = k == lastPiece ? sb : tfNextCut(s, sb);
 #endif
     float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
-    linearPiece(lit(tfEval(s), s), lit(tfEval(end), end), pieceLen);
+    bool rising = sb > sf;  // each side of a step (two points at one value) with its own limit
+    linearPiece(lit(tfEvalFrom(s, !rising), s), lit(tfEvalFrom(end, rising), end), pieceLen);
     if (end == sb || accT < terminationTransmittance) return;
     s = end;
   }
@@ -177,20 +178,6 @@ void integrate2D(float t0, float t1, float sf, float sb) {
 #endif
 
 // ---- pre-integrated (optics::PreintegrationTable, optics::OpticalDepth) --------------
-// The first control point with a value above s (tfCount if none).
-int tfFirstAbove(float s) {
-  int lo = 0, hi = tfCount;
-  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] > s) hi = mid; else lo = mid + 1; }
-  return lo;
-}
-
-// The first control point with a value at or above s (tfCount if none).
-int tfFirstNotBelow(float s) {
-  int lo = 0, hi = tfCount;
-  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= s) hi = mid; else lo = mid + 1; }
-  return lo;
-}
-
 // The extinction at s, given the first control point above it.
 float tfExtinctionAt(float s, int above) {
   if (above == 0) return tfColorTau[0].a;

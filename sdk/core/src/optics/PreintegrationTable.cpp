@@ -108,8 +108,12 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& original, doubl
       const double sf = warp_.fromTable(double(f) / (ns_ - 1)), sb = warp_.fromTable(double(b) / (ns_ - 1));
       pieces.clear();
       double s0 = sf, x0 = 0.0;
+      const bool rising = sb >= sf;  // a constant segment takes the value above a step, as everywhere
       const auto addPiece = [&](double s1, double x1) {
-        if (x1 > x0) pieces.push_back({tf.color(s0), tf.color(s1), tf.extinction(s0), tf.extinction(s1), x1 - x0});
+        if (x1 > x0) {  // each side of a step (two points at one value) with its own limit
+          const TransferSample a = sampleSide(tf, s0, !rising), e = sampleSide(tf, s1, rising);
+          pieces.push_back({a.color, e.color, a.extinction, e.extinction, x1 - x0});
+        }
         s0 = s1;
         x0 = x1;
       };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -95,15 +96,32 @@ SegmentLight constantSegment(const glm::dvec3& color, double tau, double length)
   return {color * alpha, 1.0 - alpha};
 }
 
+TransferSample sampleSide(const TransferFunction& tf, double s, bool fromBelow) {
+  const auto& p = tf.points();
+  if (p.empty()) return {};
+  // The pair of points around s on that side: lo.value < s <= hi.value from below,
+  // lo.value <= s < hi.value from above.
+  const auto hi = fromBelow ? std::lower_bound(p.begin(), p.end(), s, [](const ControlPoint& q, double v) { return q.value < v; })
+                            : std::upper_bound(p.begin(), p.end(), s, [](double v, const ControlPoint& q) { return v < q.value; });
+  if (hi == p.begin()) return {p.front().color, p.front().extinction};
+  if (hi == p.end()) return {p.back().color, p.back().extinction};
+  const auto lo = hi - 1;
+  const double w = (s - lo->value) / (hi->value - lo->value);
+  return {lo->color + w * (hi->color - lo->color), lo->extinction + w * (hi->extinction - lo->extinction)};
+}
+
 SegmentLight integrateSegment(const TransferFunction& tf, double sFront, double sBack, double length) {
   SegmentLight total;
   if (!(length > 0.0) || tf.empty()) return total;
   if (sFront == sBack) return constantSegment(tf.color(sFront), tf.extinction(sFront), length);
+  const bool rising = sBack > sFront;
   double s0 = sFront, x0 = 0.0;
   const auto pieceTo = [&](double s1, double x1) {
     const double len = (x1 - x0) * length;
-    if (len > 0.0)
-      compositeBehind(total, linearSegment(tf.color(s0), tf.extinction(s0), tf.color(s1), tf.extinction(s1), len));
+    if (len > 0.0) {
+      const TransferSample a = sampleSide(tf, s0, !rising), b = sampleSide(tf, s1, rising);
+      compositeBehind(total, linearSegment(a.color, a.extinction, b.color, b.extinction, len));
+    }
     s0 = s1;
     x0 = x1;
   };

@@ -40,6 +40,16 @@ SegmentLight linearSegment(const glm::dvec3& colorFront, double tauFront, const 
 /// Constant color and extinction: alpha = 1 - exp(-tau D), associated color C alpha.
 SegmentLight constantSegment(const glm::dvec3& color, double tau, double length);
 
+/// The function at s as a piece of a segment sees it: `fromBelow`, a piece reaching s from
+/// lower values (where several points share the value s, the first); otherwise a piece
+/// going on to higher values (the last). Two points at one value are a step, and each side
+/// of it integrates its own limit.
+struct TransferSample {
+  glm::dvec3 color{0.0};
+  double extinction = 0.0;
+};
+TransferSample sampleSide(const TransferFunction& tf, double s, bool fromBelow);
+
 /// A segment over which the scalar goes linearly from sFront to sBack: cut at every
 /// control point crossed, each piece integrated exactly, composited front to back.
 SegmentLight integrateSegment(const TransferFunction& tf, double sFront, double sBack, double length);
