@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <cstdint>
 #include <cstring>
 #include <cmath>
@@ -387,6 +388,7 @@ void GpuVolume::rebuildTables() {
   tableLo_ = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
   tableHi_ = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
   if (!(tableHi_ > tableLo_)) tableHi_ = tableLo_ + 1.0;
+  uploadKnots(values);  // after the range: the table coordinates span it
   if (mode_ == IntegrationMode::LinearSegmentsIsoTable) {
     const optics::IsoDetectionTable iso(tf_, tableLo_, tableHi_, isoResolution);
     if (!isoTable_) {
@@ -396,7 +398,6 @@ void GpuVolume::rebuildTables() {
     glTextureSubImage2D(isoTable_.id(), 0, 0, 0, isoResolution, isoResolution, GL_RG, GL_FLOAT, iso.values.data());
   }
   if (mode_ == IntegrationMode::PreIntegrated && !tf_.empty()) {
-    uploadPreintegrationKnots(values);
     if (preFuture_.valid()) preOutdated_ = true;  // the running build finishes, then the latest TF goes
     else launchPreintegration();
     if (!asynchronous_) collectPreintegration(true);
@@ -419,24 +420,33 @@ void GpuVolume::launchPreintegration() {
   });
 }
 
-// Where each control point lies in the table (optics::TableWarp, the table's own) and the
-// extinction's running integral over the values as the GPU holds them (gpuValue), in double
-// split into two floats: the shader's difference of two of them keeps double accuracy.
-void GpuVolume::uploadPreintegrationKnots(const std::vector<float>& gpuValues) {
+// Per control point: where it lies in the pre-integration table (optics::TableWarp, the
+// table's own), the extinction's running integral over the values as the GPU holds them
+// (gpuValue) in double split into two floats (the shader's difference of two of them keeps
+// double accuracy), and up to which value the extinction stays zero from inside the piece
+// that starts there (-inf where it does not: PiecewiseIntegrator's empty-space test).
+void GpuVolume::uploadKnots(const std::vector<float>& gpuValues) {
   const optics::TableWarp warp(tf_, tableLo_, tableHi_, preResolution);
+  const std::size_t n = gpuValues.size();
   std::vector<double> values, taus;
-  for (std::size_t i = 0; i < gpuValues.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     values.push_back(gpuValues[i]);
     taus.push_back(tf_.points()[i].extinction);
   }
+  constexpr float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> zeroUntil(n, -inf);
+  if (n > 0) zeroUntil[n - 1] = taus[n - 1] == 0.0 ? inf : -inf;  // above the last point
+  for (std::size_t j = n > 0 ? n - 1 : 0; j-- > 0;)
+    if (taus[j] == 0.0 && taus[j + 1] == 0.0) zeroUntil[j] = std::max(gpuValues[j + 1], zeroUntil[j + 1]);
+  zeroBelow_ = n > 0 && taus[0] == 0.0 ? std::max(gpuValues[0], zeroUntil[0]) : -inf;
   // gpuValue rounds to float: equal values stay equal, the order stays.
   const optics::OpticalDepth depth(std::move(values), std::move(taus));
   std::vector<glm::vec4> knots;
-  for (std::size_t i = 0; i < gpuValues.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     const double integral = depth.runningIntegrals()[i];
     const float high = float(integral);
     knots.push_back(glm::vec4(float(warp.toTable(std::clamp(tf_.points()[i].value, tableLo_, tableHi_))), high,
-                              float(integral - double(high)), 0.0f));
+                              float(integral - double(high)), zeroUntil[i]));
   }
   upload(tfKnots_, knots);
 }
@@ -518,6 +528,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
   glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));
   glProgramUniform1i(p, u("tfCount"), int(tf_.points().size()));
+  glProgramUniform1f(p, u("tfZeroBelow"), zeroBelow_);
   glProgramUniform1f(p, u("sLo"), gpu_.gpuValue(tableLo_));
   glProgramUniform1f(p, u("sHi"), gpu_.gpuValue(tableHi_));
   glProgramUniform1f(p, u("preMaxDepth"), float(optics::PreintegrationTable::kMaxDepth));

@@ -156,8 +156,9 @@ class GpuVolume {
   };
   void uploadPreintegration(const PreintegrationBuild& build);
   /// Per control point: its table coordinate and the running integral of the extinction
-  /// (two floats), for the pre-integrated mode's exact opacity.
-  void uploadPreintegrationKnots(const std::vector<float>& gpuValues);
+  /// (two floats), for the pre-integrated mode's exact opacity, and where the extinction
+  /// stays zero from its piece on (the empty-space test).
+  void uploadKnots(const std::vector<float>& gpuValues);
   void collectPreintegration(bool wait);
   void ensureImage(int width, int height);
 
@@ -185,6 +186,7 @@ class GpuVolume {
   bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;
   std::size_t builtRevision_ = std::size_t(-1);
   double tableLo_ = 0.0, tableHi_ = 1.0;
+  float zeroBelow_ = 0.0f;  ///< the extinction is zero from below the first point up to this value
   std::future<PreintegrationBuild> preFuture_;  ///< the pre-integration table being built
   bool preOutdated_ = false;                   ///< the TF changed again while it was built
   std::chrono::steady_clock::time_point tfChanged_;

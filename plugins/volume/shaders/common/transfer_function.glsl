@@ -3,6 +3,12 @@
 layout(std430, binding = BINDING_TF_COLOR_TAU) readonly buffer TfColorTau { vec4 tfColorTau[]; };
 layout(std430, binding = BINDING_TF_VALUES) readonly buffer TfValues { float tfValue[]; };
 uniform int tfCount;
+// Per control point: its pre-integration table coordinate (optics::TableWarp), the running
+// integral of the extinction over the value from the first point (two floats: high, low
+// part), and the value up to which the extinction stays zero from inside the piece that
+// starts at the point (-inf where it does not); tfZeroBelow for values below the first.
+layout(std430, binding = BINDING_TF_KNOTS) readonly buffer TfKnots { vec4 tfKnot[]; };
+uniform float tfZeroBelow;
 
 // Color (rgb) and extinction (a) at scalar s, clamped at the ends.
 vec4 tfEval(float s) {
@@ -30,6 +36,14 @@ int tfFirstNotBelow(float s) {
   int lo = 0, hi = tfCount;
   while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= s) hi = mid; else lo = mid + 1; }
   return lo;
+}
+
+// True when the extinction is zero for every value in [a, b] (a <= b): a piece there
+// neither emits nor absorbs, and costs one search instead of its cuts and integrals.
+bool tfTransparent(float a, float b) {
+  if (tfCount == 0) return true;
+  int above = tfFirstAbove(a);
+  return b <= (above == 0 ? tfZeroBelow : tfKnot[above - 1].w);
 }
 
 // Color and extinction at s as a piece of a segment sees them: reaching s from lower values

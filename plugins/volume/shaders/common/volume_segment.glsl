@@ -25,9 +25,6 @@ uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-re
 layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
 layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
 layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, optical depth) -> mean color
-// Per control point: its table coordinate (optics::TableWarp), the running integral of the
-// extinction over the value from the first point (two floats: high, low part).
-layout(std430, binding = BINDING_TF_KNOTS) readonly buffer TfKnots { vec4 tfKnot[]; };
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
 uniform float preMaxDepth;           // segments thicker than this are integrated exactly
 layout(binding = UNIT_SCENE_DEPTH) uniform sampler2D sceneDepth;  // opaque geometry's depth (window 0..1), bottom row first
@@ -263,6 +260,9 @@ bool clipSegment(inout float t0, inout float t1) {
 
 void integratePiece(float t0, float t1, float sf, float sb) {
   if (t1 <= t0) return;
+#if INTEGRATION_MODE != 4
+  if (tfTransparent(min(sf, sb), max(sf, sb))) return;  // no extinction: nothing emitted or absorbed
+#endif
 #if INTEGRATION_MODE == 0 || INTEGRATION_MODE == 3
   integrateLinear(sf, sb, t1 - t0);
 #elif INTEGRATION_MODE == 1
