@@ -74,7 +74,7 @@ void main() {
       frontShade = backShade;
     }
   }
-  bool done = !inside || t >= t1 || accT < terminationTransmittance;
+  bool done = !inside || !(t < t1) || !(accT >= terminationTransmittance);  // a NaN ends the ray too
   imageStore(resumeAt, pix, vec4(done ? -1.0 : t, accT, 0.0, 0.0));
   imageStore(outImage, pix, vec4(accColor, 1.0 - accT));
 }

@@ -229,7 +229,9 @@ void main() {
       tet = next;
     }
   }
-  if (accT < terminationTransmittance) finished = true;
+  // Opaque enough, or not a number (a NaN would otherwise leave the ray unfinished for ever
+  // and the host dispatching again without end).
+  if (!(accT >= terminationTransmittance)) finished = true;
   if (!finished && steps >= maxSteps) {
     atomicAdd(cappedRays, 1u);
     finished = true;

@@ -45,30 +45,3 @@ bool tfTransparent(float a, float b) {
   int above = tfFirstAbove(a);
   return b <= (above == 0 ? tfZeroBelow : tfKnot[above - 1].w);
 }
-
-// Color and extinction at s as a piece of a segment sees them: reaching s from lower values
-// (fromBelow: where points share the value s, the first) or going on to higher ones (the
-// last). Two points at one value are a step; each side integrates its own limit
-// (optics::sampleSide).
-vec4 tfEvalFrom(float s, bool fromBelow) {
-  if (tfCount == 0) return vec4(0.0);
-  int hi = fromBelow ? tfFirstNotBelow(s) : tfFirstAbove(s);
-  if (hi == 0) return tfColorTau[0];
-  if (hi == tfCount) return tfColorTau[tfCount - 1];
-  float w = (s - tfValue[hi - 1]) / (tfValue[hi] - tfValue[hi - 1]);
-  return mix(tfColorTau[hi - 1], tfColorTau[hi], w);
-}
-
-// The first control-point value met going from a toward b (strictly beyond a, strictly
-// before b), or b itself if there is none: exact, by binary search.
-float tfNextCut(float a, float b) {
-  if (tfCount == 0 || a == b) return b;
-  if (b > a) {
-    int lo = 0, hi = tfCount;  // first index with tfValue > a
-    while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] > a) hi = mid; else lo = mid + 1; }
-    return (lo < tfCount && tfValue[lo] < b) ? tfValue[lo] : b;
-  }
-  int lo = 0, hi = tfCount;  // first index with tfValue >= a; the one before is below a
-  while (lo < hi) { int mid = (lo + hi) / 2; if (tfValue[mid] >= a) hi = mid; else lo = mid + 1; }
-  return (lo > 0 && tfValue[lo - 1] > b) ? tfValue[lo - 1] : b;
-}

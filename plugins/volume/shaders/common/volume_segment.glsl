@@ -96,25 +96,13 @@ float rangePos(float s) { return (s - sLo) / (sHi - sLo); }
 float rangeValue(float p) { return sLo + p * (sHi - sLo); }
 
 #if INTEGRATION_MODE == 3
-// Espinha 2005, 4.2: the iso-detection table says where to cut (optics::IsoDetectionTable::
-// cut, the same rule): its entry covers the whole cells of the two texels, so a point
-// between a value and its texel's centre is not missed; where the entry cannot tell
-// (several points in the front's cell, or one texel for both ends with a point in it) the
-// control points are searched.
-float isoTableCut(float s, float sb) {
+// Espinha 2005, 4.2: the iso-detection table says whether a segment crosses a control point
+// at all (optics::IsoDetectionTable: its entry covers the two texels' whole cells, so "none"
+// is never wrong); most segments cross none and are one exact piece without a search.
+bool isoTableSaysNoCut(float sf, float sb) {
   int n = textureSize(isoTable, 0).x;
-  ivec2 texel = clamp(ivec2(floor(clamp(vec2(rangePos(s), rangePos(sb)), 0.0, 1.0) * float(n - 1) + 0.5)), 0, n - 1);
-  vec2 entry = texelFetch(isoTable, texel, 0).rg;
-  if (entry.x < 0.0) return sb;  // no point in the cells' span
-  if (texel.x == texel.y) return tfNextCut(s, sb);
-  bool up = sb > s;
-  float v = rangeValue(entry.x);
-  if (up ? !(v > s) : !(v < s)) {
-    if (entry.y < 0.0) return sb;
-    v = rangeValue(entry.y);
-    if (up ? !(v > s) : !(v < s)) return tfNextCut(s, sb);
-  }
-  return (up ? v < sb : v > sb) ? v : sb;
+  ivec2 texel = clamp(ivec2(floor(clamp(vec2(rangePos(sf), rangePos(sb)), 0.0, 1.0) * float(n - 1) + 0.5)), 0, n - 1);
+  return texelFetch(isoTable, texel, 0).r < 0.0;
 }
 #endif
 
@@ -127,22 +115,37 @@ void integrateLinear(float sf, float sb, float len) {
     composite(c.rgb * alpha, 1.0 - alpha);
     return;
   }
-  float s = sf;
-  // A cut per control point crossed; the table's values (float positions in the range) may
-  // add a piece a float long next to a point: room for those, and the last piece to the end.
-  int lastPiece = 2 * tfCount + 2;
-  for (int k = 0; k <= lastPiece; ++k) {
 #if INTEGRATION_MODE == 3
-    float end = k == lastPiece ? sb : isoTableCut(s, sb);
-#else
-    float end = k == lastPiece ? sb : tfNextCut(s, sb);
+  if (isoTableSaysNoCut(sf, sb)) {
+    linearPiece(lit(tfEval(sf), sf), lit(tfEval(sb), sb), len);
+    return;
+  }
 #endif
-    float pieceLen = len * ((end - s) / (sb - sf));  // the fraction first: no tiny intermediate
-    bool rising = sb > sf;  // each side of a step (two points at one value) with its own limit
-    linearPiece(lit(tfEvalFrom(s, !rising), s), lit(tfEvalFrom(end, rising), end), pieceLen);
-    if (end == sb || accT < terminationTransmittance) return;
+  // The control points crossed, one after the other from the first beyond sf (one search):
+  // a piece ends at a point with that point's own color and extinction, and where two
+  // points share a value (a step) the next piece starts from the other one, so each side
+  // of a step integrates its own limit (optics::sampleSide).
+  bool rising = sb > sf;
+  int k = rising ? tfFirstAbove(sf) : tfFirstNotBelow(sf) - 1;
+  float s = sf;
+  vec4 front = tfEval(sf);
+  for (int n = 0; n <= tfCount; ++n) {
+    bool cut = rising ? (k < tfCount && tfValue[k] < sb) : (k >= 0 && tfValue[k] > sb);
+    float end = cut ? tfValue[k] : sb;
+    vec4 back = cut ? tfColorTau[k] : tfEval(sb);
+    linearPiece(lit(front, s), lit(back, end), len * ((end - s) / (sb - sf)));
+    if (!cut || accT < terminationTransmittance) return;
+    if (rising) {
+      while (k + 1 < tfCount && tfValue[k + 1] == end) ++k;
+    } else {
+      while (k > 0 && tfValue[k - 1] == end) --k;
+    }
+    front = tfColorTau[k];
+    k += rising ? 1 : -1;
     s = end;
   }
+  // Not reached (at most tfCount cuts); were it, the rest in one piece.
+  linearPiece(lit(front, s), lit(tfEval(sb), sb), len * ((sb - s) / (sb - sf)));
 }
 
 // ---- a 2D transfer function (value, gradient magnitude) ---------------------------
@@ -179,8 +182,9 @@ void integrate2D(float t0, float t1, float sf, float sb) {
 float tfExtinctionAt(float s, int above) {
   if (above == 0) return tfColorTau[0].a;
   if (above == tfCount) return tfColorTau[tfCount - 1].a;
-  float w = (s - tfValue[above - 1]) / (tfValue[above] - tfValue[above - 1]);
-  return mix(tfColorTau[above - 1].a, tfColorTau[above].a, w);
+  float width = tfValue[above] - tfValue[above - 1];
+  return width > 0.0 ? mix(tfColorTau[above - 1].a, tfColorTau[above].a, (s - tfValue[above - 1]) / width)
+                     : tfColorTau[above].a;
 }
 
 // The table coordinate of s: the warp is linear between control points (the range's ends
