@@ -24,8 +24,9 @@ std::vector<double> crossed(const std::vector<double>& sorted, double a, double 
 void checkTableResolution(int n, double sMin, double sMax);
 
 /// Espinha 2005, 4.2: for a segment from s_front to s_back, the first control point crossed
-/// and the one after it, -1 where there is none; the GPU cuts the ray there, integrates the
-/// piece exactly and looks the table up again from the cut. Looked up at the nearest texels
+/// and the one after it, -1 where there is none (the seed cut the ray there and looked the
+/// table up again from the cut; volpost's GPU modes take "none" from it, a segment that is
+/// one exact piece, and walk the control points of the others). Looked up at the nearest texels
 /// of s_front and s_back, an entry computed at the texel centres alone misses a point
 /// that lies between a value and its texel's centre, and the piece is integrated across it
 /// (a peak narrower than a few texels was lost: max error 0.68). So each entry covers its
@@ -42,10 +43,10 @@ struct IsoDetectionTable {
   std::vector<float> values;
   /// The entry (as scalar values, -1 for none) at the texel nearest to (sFront, sBack).
   std::pair<double, double> at(double sFront, double sBack) const;
-  /// Where a piece from s toward sBack is cut, as the GPU decides from the entry: the first
-  /// control point strictly between them, or sBack when there is none; nullopt where the
-  /// entry cannot tell (several points in the front's cell, or one texel holding both
-  /// ends with a point in it): the GPU then searches the control points.
+  /// Where a piece from s toward sBack is cut, from the entry alone: the first control
+  /// point strictly between them, or sBack when there is none; nullopt where the entry
+  /// cannot tell (several points in the front's cell, or one texel holding both ends with
+  /// a point in it) and the control points must be searched.
   std::optional<double> cut(double s, double sBack) const;
 };
 
