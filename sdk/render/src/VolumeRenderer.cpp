@@ -40,7 +40,7 @@ std::string_view describe(IntegrationMode mode) {
     case IntegrationMode::LinearSegments: return "Linear segments, exact cuts";
     case IntegrationMode::PreIntegrated: return "Pre-integrated (exact opacity, color from a table)";
     case IntegrationMode::Sampling: return "Sampling (fixed step)";
-    case IntegrationMode::LinearSegmentsIsoTable: return "Linear segments, cuts from a 2D table";
+    case IntegrationMode::LinearSegmentsIsoTable: return "Linear segments, a 2D table finds the pieces without cuts";
   }
   return "?";
 }
