@@ -40,12 +40,13 @@ std::vector<Out> convert(const std::uint8_t* bytes, std::size_t count, NumericTy
   return out;
 }
 
-template <typename T>
+// Stored as T in the file, kept as Kept (64-bit integers as doubles, as every reader takes them).
+template <typename T, typename Kept = T>
 SampleArray loadAll(const std::uint8_t* bytes, std::size_t count, NumericType stored, bool be, SampleType kept) {
   SampleArray out(kept, count);
-  auto values = out.as<T>();
+  auto values = out.as<Kept>();
   const std::size_t s = sizeOf(stored);
-  for (std::size_t i = 0; i < count; ++i) values[i] = T(load<T>(bytes + i * s, be));
+  for (std::size_t i = 0; i < count; ++i) values[i] = Kept(load<T>(bytes + i * s, be));
   return out;
 }
 
@@ -75,13 +76,10 @@ SampleArray toSamples(const std::uint8_t* bytes, std::size_t count, NumericType 
     case NumericType::UInt32: return loadAll<std::uint32_t>(bytes, count, type, be, kept);
     case NumericType::Float32: return loadAll<float>(bytes, count, type, be, kept);
     case NumericType::Float64: return loadAll<double>(bytes, count, type, be, kept);
-    default: {  // 64-bit integers: as doubles, as every reader takes them
-      SampleArray out(kept, count);
-      const std::vector<double> v = toDoubles(bytes, count, type, be);
-      std::copy(v.begin(), v.end(), out.as<double>().begin());
-      return out;
-    }
+    case NumericType::Int64: return loadAll<std::int64_t, double>(bytes, count, type, be, kept);
+    case NumericType::UInt64: return loadAll<std::uint64_t, double>(bytes, count, type, be, kept);
   }
+  return {};  // every type is handled above
 }
 
 SampleArray toSamples(const std::vector<double>& values, NumericType type) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "GpuVolume.hpp"
 
+#include "PiecewiseIntegrator.hpp"
+
 #include "GpuLimits.hpp"
 
 #include "VolumeBindings.hpp"
@@ -433,12 +435,8 @@ void GpuVolume::uploadKnots(const std::vector<float>& gpuValues) {
     values.push_back(gpuValues[i]);
     taus.push_back(tf_.points()[i].extinction);
   }
-  constexpr float inf = std::numeric_limits<float>::infinity();
-  std::vector<float> zeroUntil(n, -inf);
-  if (n > 0) zeroUntil[n - 1] = taus[n - 1] == 0.0 ? inf : -inf;  // above the last point
-  for (std::size_t j = n > 0 ? n - 1 : 0; j-- > 0;)
-    if (taus[j] == 0.0 && taus[j + 1] == 0.0) zeroUntil[j] = std::max(gpuValues[j + 1], zeroUntil[j + 1]);
-  zeroBelow_ = n > 0 && taus[0] == 0.0 ? std::max(gpuValues[0], zeroUntil[0]) : -inf;
+  const std::vector<double> zeroUntil = zeroExtinctionRuns(values, taus);  // in the GPU's frame
+  zeroBelow_ = float(zeroUntil[0]);
   // gpuValue rounds to float: equal values stay equal, the order stays.
   const optics::OpticalDepth depth(std::move(values), std::move(taus));
   std::vector<glm::vec4> knots;
@@ -446,7 +444,7 @@ void GpuVolume::uploadKnots(const std::vector<float>& gpuValues) {
     const double integral = depth.runningIntegrals()[i];
     const float high = float(integral);
     knots.push_back(glm::vec4(float(warp.toTable(std::clamp(tf_.points()[i].value, tableLo_, tableHi_))), high,
-                              float(integral - double(high)), zeroUntil[i]));
+                              float(integral - double(high)), float(zeroUntil[i + 1])));
   }
   upload(tfKnots_, knots);
 }

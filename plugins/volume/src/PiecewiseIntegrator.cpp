@@ -69,6 +69,18 @@ optics::SegmentLight linearPiece(const glm::dvec3& colorFront, double tauFront, 
 
 double PiecewiseIntegrator::psiThin(double tf, double tb) { return thinPsi(tf, 0.5 * (tb - tf)); }
 
+std::vector<double> zeroExtinctionRuns(const std::vector<double>& values, const std::vector<double>& taus) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const std::size_t n = values.size();
+  std::vector<double> until(n + 1, -inf);  // built from the top down
+  if (n == 0) return until;
+  until[n] = taus[n - 1] == 0.0 ? inf : -inf;  // above the last point
+  for (std::size_t j = n - 1; j-- > 0;)
+    if (taus[j] == 0.0 && taus[j + 1] == 0.0) until[j + 1] = std::max(values[j + 1], until[j + 2]);
+  if (taus[0] == 0.0) until[0] = std::max(values[0], until[1]);  // below the first point
+  return until;
+}
+
 PiecewiseIntegrator::PiecewiseIntegrator(const TransferFunction& tf) {
   for (const ControlPoint& p : tf.points()) {
     values_.push_back(p.value);
@@ -80,16 +92,7 @@ PiecewiseIntegrator::PiecewiseIntegrator(const TransferFunction& tf) {
     const double width = values_[std::size_t(i) + 1] - values_[std::size_t(i)];
     inverseWidth_.push_back(width > 0.0 ? 1.0 / width : 0.0);
   }
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  // zeroUntil_[j + 1] for piece j: the extinction is zero from anywhere in the piece up to
-  // this value (-inf when it is not zero over the piece). Built from the top down.
-  zeroUntil_.assign(std::size_t(n) + 1, -inf);
-  if (n == 0) return;
-  zeroUntil_[std::size_t(n)] = tau_[std::size_t(n) - 1] == 0.0 ? inf : -inf;  // above the last point
-  for (int j = n - 2; j >= 0; --j)
-    if (tau_[std::size_t(j)] == 0.0 && tau_[std::size_t(j) + 1] == 0.0)
-      zeroUntil_[std::size_t(j) + 1] = std::max(values_[std::size_t(j) + 1], zeroUntil_[std::size_t(j) + 2]);
-  if (tau_[0] == 0.0) zeroUntil_[0] = std::max(values_[0], zeroUntil_[1]);  // below the first point
+  zeroUntil_ = zeroExtinctionRuns(values_, tau_);
 }
 
 int PiecewiseIntegrator::pieceOf(double s) const {

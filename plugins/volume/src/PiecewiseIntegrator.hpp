@@ -20,6 +20,13 @@ struct EmissionShade {
   glm::dvec2 front{1.0, 0.0}, back{1.0, 0.0};
 };
 
+/// Where the extinction is zero, for an empty-space test: for control points at `values`
+/// (ascending) with extinctions `taus`, n + 1 entries: [0] for values below the first point,
+/// [j + 1] for the piece from point j on (above the last for j = n - 1). Each is the value up
+/// to which the extinction stays zero from anywhere in that piece, -inf where it is not zero
+/// over the piece, +inf where it stays zero for ever.
+std::vector<double> zeroExtinctionRuns(const std::vector<double>& values, const std::vector<double>& taus);
+
 class PiecewiseIntegrator {
  public:
   explicit PiecewiseIntegrator(const TransferFunction& tf);
