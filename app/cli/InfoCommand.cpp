@@ -31,7 +31,7 @@ void printFields(const Model& model) {
         s = f->stepCount() - 5;
       }
       try {
-        const ValueRange r = rangeOf(evaluate(*f, headline, s));
+        const ValueRange r = isStoredSamples(*f, headline) ? rangeOf(f->samples(s)) : rangeOf(evaluate(*f, headline, s));
         const std::string& label = f->steps()[s].label;
         std::printf("      %-14s %s [%.6g, %.6g]", label.empty() ? "" : label.c_str(),
                     headline.displayName().c_str(), r.min, r.max);

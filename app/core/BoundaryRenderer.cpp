@@ -103,7 +103,7 @@ std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const
   const Model& model = session_->model();
   if (!planes.empty() && !model.meshBuilt()) {  // a grid: cut its cells as they are, no tetrahedra
     const bool perNode = view && view->location == FieldLocation::Node;
-    const std::span<const double> gridValues = view ? std::span<const double>(view->values) : std::span<const double>();
+    const SampleView gridValues = view ? view->values : SampleView();
     for (const ClipPlane& plane : planes) {
       SectionTriangles cut = cutGrid(*model.grid, gridValues, perNode, plane);
       corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());

@@ -101,7 +101,13 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
   view.quantity = q;
   view.location = f.location();
   try {  // fields are read on first use: a failure here still names the file
-    view.values = volpost::evaluate(f, q, step);
+    if (isStoredSamples(f, q)) {
+      view.values = f.samples(step);
+      for (const auto& owned : model_->fields)  // the model's fields are shared: the view keeps its own alive
+        if (owned.get() == &f) view.owner = owned;
+    } else {
+      view.setValues(volpost::evaluate(f, q, step));
+    }
   } catch (const std::bad_alloc&) {
     throw ReadError(model_->sourcePath, "ran out of memory reading field " + f.name() + " (memory budget " +
                                             byteSizeText(double(memoryBudget())) + ")");
@@ -150,7 +156,15 @@ const PointLocator& ModelSession::locator() const {
 
 std::vector<double> ModelSession::tetValues(const ScalarView& view) const {
   const TetMesh& t = tetrahedra();
-  return view.location == FieldLocation::Node ? t.nodeValues(model_->mesh(), view.values) : t.cellValues(view.values);
+  std::vector<double> converted;  // samples in another type than double: a copy while the tet values are made
+  const std::span<const double> values = view.values.doubles(converted);
+  return view.location == FieldLocation::Node ? t.nodeValues(model_->mesh(), values) : t.cellValues(values);
+}
+
+void ScalarView::setValues(std::vector<double> computed) {
+  auto owned = std::make_shared<const std::vector<double>>(std::move(computed));
+  values = *owned;
+  owner = std::move(owned);
 }
 
 }  // namespace volpost::app

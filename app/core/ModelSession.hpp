@@ -21,12 +21,20 @@
 
 namespace volpost::app {
 
+/// A quantity's values at one step. A field's own scalar kept in its file's type (a
+/// 16-bit seismic cube) is viewed where the field keeps it, never copied to doubles; any
+/// other quantity (a component, von Mises ...) is computed into doubles the view owns.
+/// Copies share the values.
 struct ScalarView {
   Quantity quantity;
   FieldLocation location = FieldLocation::Node;
-  std::vector<double> values;  ///< one per node or per cell
+  SampleView values;  ///< one per node or per cell, alive while `owner` is
   ValueRange range;
   std::string stepLabel;
+  std::shared_ptr<const void> owner;  ///< the computed doubles, or the field holding the samples
+
+  /// Makes `computed` the view's values (owned by it); the range is left to the caller.
+  void setValues(std::vector<double> computed);
 };
 
 class ModelSession {

@@ -428,13 +428,16 @@ std::optional<Scene::Extremes> Scene::extremes() const {
   extremesVersion_ = viewVersion_;
   extremes_.reset();
   if (!view_ || !session_ || !view_->range.valid()) return extremes_;
-  const Mesh& mesh = session_->model().mesh();
-  const std::vector<double>& v = view_->values;
+  const Model& model = session_->model();
+  const SampleView& v = view_->values;
   std::size_t lo = v.size(), hi = v.size();
   std::vector<bool> used;
-  if (view_->location == FieldLocation::Node) {  // unused nodes are not part of the model
-    used.assign(mesh.nodeCount(), false);
-    for (NodeIndex n : mesh.connectivity()) used[n] = true;
+  // A grid without its cells built has every point used, its point and cell numbers in
+  // grid order: its hexahedra (57 bytes a point) are not built to find two values.
+  const bool gridOnly = model.grid && !model.meshBuilt();
+  if (view_->location == FieldLocation::Node && !gridOnly) {  // unused nodes are not part of the model
+    used.assign(model.mesh().nodeCount(), false);
+    for (NodeIndex n : model.mesh().connectivity()) used[n] = true;
   }
   for (std::size_t i = 0; i < v.size(); ++i) {
     if (!std::isfinite(v[i]) || (!used.empty() && !used[i])) continue;
@@ -443,14 +446,23 @@ std::optional<Scene::Extremes> Scene::extremes() const {
   }
   if (lo == v.size()) return extremes_;
   const auto where = [&](std::size_t i) {
-    if (view_->location == FieldLocation::Node) return mesh.nodes[i];
+    if (view_->location == FieldLocation::Node) return model.nodePosition(i);
+    if (gridOnly) {
+      const RegularGrid& g = *model.grid;
+      const std::size_t cx = g.dims[0] - 1, cy = g.dims[1] - 1;
+      return g.position(double(i % cx) + 0.5, double(i / cx % cy) + 0.5, double(i / (cx * cy)) + 0.5);
+    }
+    const Mesh& mesh = model.mesh();
     const CellTopology& topo = topology(mesh.cellType(i));
     const auto nodes = mesh.cellNodes(i);
     glm::dvec3 c(0.0);
     for (int k = 0; k < topo.cornerCount; ++k) c += mesh.nodes[nodes[std::size_t(k)]];
     return c / double(topo.cornerCount);
   };
-  const auto idOf = [&](std::size_t i) { return view_->location == FieldLocation::Node ? mesh.nodeId(i) : mesh.cellId(i); };
+  const auto idOf = [&](std::size_t i) {
+    if (gridOnly) return std::int64_t(i) + 1;  // as hexahedraOfGrid numbers them
+    return view_->location == FieldLocation::Node ? model.mesh().nodeId(i) : model.mesh().cellId(i);
+  };
   extremes_ = Extremes{where(lo), where(hi), v[lo], v[hi], idOf(lo), idOf(hi)};
   return extremes_;
 }
@@ -781,7 +793,7 @@ void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
     culledFor_.clear();
     renderer.setGrid(*model.grid, view_->values);
   } else if (changed_.values) {
-    renderer.setValues(view_->values);
+    renderer.setGridValues(view_->values);
   }
   if (changed_.mode) renderer.setShading(state_.volume.shading);
   if (changed_.tables) renderer.setTransferFunction2D(state_.volume.transferFunction2D);

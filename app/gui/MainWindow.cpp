@@ -1118,9 +1118,9 @@ void MainWindow::setTransferFunction(const TransferFunction& tf) {
     if (const auto note = transferFunctionRangeNote(tf, *view)) statusBar()->showMessage("Note: " + QString::fromStdString(*note));
 }
 
-std::vector<double> MainWindow::activeValues() const {
+SampleView MainWindow::activeValues() const {
   const auto& view = viewport_->scene().view();
-  return view ? view->values : std::vector<double>{};
+  return view ? view->values : SampleView();
 }
 
 double MainWindow::modelSize() const { return session_ ? session_->model().bounds().diagonal() : 0.0; }

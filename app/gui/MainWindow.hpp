@@ -67,7 +67,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void requestRender() override;
   TransferFunction transferFunction() const override;
   void setTransferFunction(const TransferFunction& tf) override;
-  std::vector<double> activeValues() const override;
+  SampleView activeValues() const override;
   double modelSize() const override;
   double lastTransferFunctionMs() const override;
   std::optional<TransferFunction2D> transferFunction2D() const override;

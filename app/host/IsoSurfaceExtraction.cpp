@@ -23,7 +23,7 @@ std::uint64_t edgeKey(NodeIndex a, NodeIndex b) {
 template <typename PositionOf>
 class IsoBuilder {
  public:
-  IsoBuilder(ExtractedSurface& out, std::span<const double> values, double iso, PositionOf positionOf)
+  IsoBuilder(ExtractedSurface& out, SampleView values, double iso, PositionOf positionOf)
       : out_(out), values_(values), iso_(iso), positionOf_(positionOf) {}
 
   void addTet(const std::array<NodeIndex, 4>& n) {
@@ -90,7 +90,7 @@ class IsoBuilder {
   }
 
   ExtractedSurface& out_;
-  std::span<const double> values_;
+  SampleView values_;
   double iso_;
   PositionOf positionOf_;
   std::unordered_map<std::uint64_t, SurfaceMesh::VertexHandle> vertexOfEdge_;
@@ -119,7 +119,7 @@ ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> 
 // Each cell the value iso passes through is split into the six tets around its diagonal
 // from corner (0,0,0) to (1,1,1), the same split in every cell (Freudenthal's), so
 // neighbours share their crossing vertices and the surface is watertight.
-ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const double> values, double iso,
+ExtractedSurface extractIsoSurface(const RegularGrid& grid, SampleView values, double iso,
                                    const Progress& progress) {
   if (values.size() != grid.pointCount())
     throw std::invalid_argument("iso-surface: " + std::to_string(values.size()) + " values for a grid of " +

@@ -5,6 +5,7 @@
 
 #include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Progress.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
 #include <span>
@@ -29,7 +30,7 @@ ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> 
 /// each cell the value crosses is split into six tets on the fly (one split in every cell,
 /// so the surface is watertight). Throws std::invalid_argument on a value count that is
 /// not one per point.
-ExtractedSurface extractIsoSurface(const RegularGrid& grid, std::span<const double> pointValues, double iso,
+ExtractedSurface extractIsoSurface(const RegularGrid& grid, SampleView pointValues, double iso,
                                    const Progress& progress = {});
 
 }  // namespace volpost

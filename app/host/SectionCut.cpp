@@ -100,7 +100,7 @@ SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> valu
 // Each cell the plane crosses is split into the six tets around its diagonal from corner
 // (0,0,0) to (1,1,1) (Freudenthal's split: the same in every cell, so neighbours' pieces
 // meet), positions and distances from the cell's indices, no hexahedra needed.
-SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values, bool perNodeValues,
+SectionTriangles cutGrid(const RegularGrid& grid, SampleView values, bool perNodeValues,
                          const ClipPlane& plane) {
   SectionTriangles out;
   const double length = glm::length(plane.normal);

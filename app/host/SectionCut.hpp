@@ -6,6 +6,7 @@
 
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
 #include <glm/vec3.hpp>
@@ -29,6 +30,6 @@ SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> valu
 /// (`perNode`) or per cell, or empty. Each crossed cell is cut as six tets, so the section
 /// is linear in each of them; on a plane through grid points it shows the samples exactly.
 /// `cutTets` counts those tets.
-SectionTriangles cutGrid(const RegularGrid& grid, std::span<const double> values, bool perNode, const ClipPlane& plane);
+SectionTriangles cutGrid(const RegularGrid& grid, SampleView values, bool perNode, const ClipPlane& plane);
 
 }  // namespace volpost

@@ -318,7 +318,7 @@ TEST(AnimationFrames, NumbersGoBeforeTheExtensionPaddedToTheCount) {
 // values hides the lowest); a one-signed result's rises with the value.
 TEST(VolumeDefaults, SignedResultsAreDenseAtBothEndsAndClearAtZero) {
   ScalarView signedView;
-  signedView.values = {-40.0, 0.0, 100.0};
+  signedView.setValues({-40.0, 0.0, 100.0});
   signedView.range = rangeOf(signedView.values);
   const TransferFunction tf = defaultTransferFunction(signedView, 1.0);
   const double tauMax = 24.0;
@@ -327,7 +327,7 @@ TEST(VolumeDefaults, SignedResultsAreDenseAtBothEndsAndClearAtZero) {
   EXPECT_NEAR(tf.extinction(-40.0), tauMax * (0.1 + 0.9 * 0.4), 1e-9);
   EXPECT_GT(tf.extinction(-40.0), tf.extinction(-10.0));
   ScalarView positive;
-  positive.values = {10.0, 30.0};
+  positive.setValues({10.0, 30.0});
   positive.range = rangeOf(positive.values);
   const TransferFunction rising = defaultTransferFunction(positive, 1.0);
   EXPECT_NEAR(rising.extinction(10.0), 0.1 * tauMax, 1e-9);
@@ -337,7 +337,7 @@ TEST(VolumeDefaults, SignedResultsAreDenseAtBothEndsAndClearAtZero) {
 TEST(VolumeDefaults, ATransferFunctionMadeForOtherValuesIsNoted) {
   ScalarView view;
   view.quantity = Quantity{"S", ScalarOp::VonMises, 0, FieldKind::SymTensor};
-  view.values = {58.0, 103.0};
+  view.setValues({58.0, 103.0});
   view.range = rangeOf(view.values);
   EXPECT_FALSE(transferFunctionRangeNote(defaultTransferFunction(view, 1.0), view));
   const TransferFunction other({{1000.0, {0, 0, 1}, 0.5}, {2000.0, {1, 0, 0}, 1.0}});
@@ -401,6 +401,55 @@ TEST(Scene, ADeformedGridIsDrawnAsItsMovedCells) {
   EXPECT_EQ(deformed->model().mesh().cellCount(), 8u);
   EXPECT_EQ(deformed->model().bounds().max.x, 4.0);
   EXPECT_TRUE(base->model().grid) << "the model as read keeps its grid";
+}
+
+// A grid's scalar kept in its file's type is shown from the field's own samples: the view
+// is 16-bit integers at the field's address (no 8-byte double per point), outlives the
+// session that made it, and the extremes are found without building the grid's cells; a
+// quantity computed from the samples is doubles the view owns.
+TEST(Scene, AGridsStoredSamplesAreShownWithoutADoubleCopy) {
+  auto model = std::make_shared<Model>();
+  RegularGrid g;
+  g.dims = {4, 3, 2};
+  g.axes = {glm::dvec3(2, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+  model->grid = g;
+  SampleArray samples(SampleType::Int16, g.pointCount());
+  for (std::size_t p = 0; p < g.pointCount(); ++p) samples.set(p, double(p) * 100.0 - 1000.0);
+  samples.set(g.pointIndex(2, 1, 1), 30000.0);  // the largest, inside
+  model->fields.push_back(Field::fromSamples("amplitude", FieldLocation::Node, 1, std::move(samples)));
+  const Field& field = *model->fields.back();
+  auto session = ModelSession::fromModel(model);
+  model.reset();
+
+  ScalarView view = session->evaluate(session->findQuantity("amplitude"), 0);
+  EXPECT_EQ(view.values.type(), SampleType::Int16);
+  EXPECT_EQ(view.values.bytes(), 2 * g.pointCount());
+  view.values.visit([&](auto typed) {
+    EXPECT_EQ(static_cast<const void*>(typed.data()), static_cast<const void*>(field.samples(0).as<std::int16_t>().data()));
+  });
+  EXPECT_EQ(view.range.max, 30000.0);
+  EXPECT_EQ(view.range.min, -1000.0);
+
+  Quantity magnitude = session->findQuantity("amplitude");
+  magnitude.op = ScalarOp::Magnitude;
+  const ScalarView computed = session->evaluate(magnitude, 0);
+  EXPECT_EQ(computed.values.type(), SampleType::Float64);
+  EXPECT_EQ(computed.values[0], 1000.0);
+
+  Scene scene(rayCasterOnly());
+  scene.setSession(session);
+  scene.setResult("amplitude", 0);
+  scene.setMarkExtremes(true);
+  const auto extremes = scene.extremes();
+  ASSERT_TRUE(extremes);
+  EXPECT_EQ(extremes->max, 30000.0);
+  EXPECT_EQ(extremes->maxAt, g.position(2, 1, 1));
+  EXPECT_EQ(extremes->min, -1000.0);
+  EXPECT_FALSE(session->model().meshBuilt()) << "finding the extremes built the grid's hexahedra";
+
+  session.reset();
+  scene.setSession(nullptr);
+  EXPECT_EQ(view.values[g.pointIndex(2, 1, 1)], 30000.0) << "the view keeps its field alive";
 }
 
 // The undeformed outline: the undeformed bar's twelve feature edges in gray over the

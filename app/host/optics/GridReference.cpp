@@ -52,7 +52,7 @@ struct Cell {
   }
 };
 
-Cell cellAt(const RegularGrid& g, std::span<const double> values, const glm::dvec3& index) {
+Cell cellAt(const RegularGrid& g, SampleView values, const glm::dvec3& index) {
   Cell c;
   std::size_t b[3];
   for (int a = 0; a < 3; ++a) {
@@ -197,7 +197,7 @@ SegmentLight integrateSmoothPiece(const Cubic& p, double ua, double ub, double l
 }
 
 // A grid without defects and a value per point, or std::invalid_argument saying which.
-void requireGridValues(const RegularGrid& grid, std::span<const double> values) {
+void requireGridValues(const RegularGrid& grid, SampleView values) {
   if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
   if (values.size() != grid.pointCount())
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
@@ -246,7 +246,7 @@ std::vector<double> cellBoundaries(const RegularGrid& grid, const glm::dvec3& or
 
 }  // namespace
 
-SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
+SegmentLight integrateGridRay(const RegularGrid& grid, SampleView values, const TransferFunction& tf,
                               glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
                               const RaySettings& settings) {
   SegmentLight total;
@@ -279,7 +279,7 @@ SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> v
   return total;
 }
 
-ReferenceImage renderGridReference(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
+ReferenceImage renderGridReference(const RegularGrid& grid, SampleView values, const TransferFunction& tf,
                                    const Camera& camera, int width, int height, const RaySettings& settings,
                                    const Progress& progress, int threads) {
   requireGridValues(grid, values);
@@ -298,7 +298,7 @@ namespace {
 // The ray by the midpoint rule, each cell's part cut at the iso-surfaces it crosses and
 // into parts of at most `step`: each part's color and extinction at its middle, from the
 // cell's trilinear value and gradient magnitude there.
-SegmentLight integrateGridRay2DAtStep(const RegularGrid& grid, std::span<const double> values,
+SegmentLight integrateGridRay2DAtStep(const RegularGrid& grid, SampleView values,
                                       const TransferFunction2D& tf, const glm::dvec3& origin, const glm::dvec3& d,
                                       double tMin, double tMax, const RaySettings& settings, double step) {
   SegmentLight total;
@@ -343,7 +343,7 @@ SegmentLight integrateGridRay2DAtStep(const RegularGrid& grid, std::span<const d
 
 }  // namespace
 
-SegmentLight integrateGridRay2D(const RegularGrid& grid, std::span<const double> values, const TransferFunction2D& tf,
+SegmentLight integrateGridRay2D(const RegularGrid& grid, SampleView values, const TransferFunction2D& tf,
                                 glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
                                 const RaySettings& settings, double tolerance) {
   const glm::dvec3 d = direction / glm::length(direction);
@@ -367,7 +367,7 @@ SegmentLight integrateGridRay2D(const RegularGrid& grid, std::span<const double>
   return last;
 }
 
-ReferenceImage renderGridReference2D(const RegularGrid& grid, std::span<const double> values,
+ReferenceImage renderGridReference2D(const RegularGrid& grid, SampleView values,
                                      const TransferFunction2D& tf, const Camera& camera, int width, int height,
                                      const RaySettings& settings, double tolerance, const Progress& progress,
                                      int threads) {

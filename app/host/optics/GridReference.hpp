@@ -13,6 +13,7 @@
 #include "host/optics/ReferenceRenderer.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 
 #include <span>
@@ -21,13 +22,13 @@ namespace volpost::optics {
 
 /// One ray: origin (model units), direction of any length (distances along the unit
 /// direction), over [tMin, tMax].
-SegmentLight integrateGridRay(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
+SegmentLight integrateGridRay(const RegularGrid& grid, SampleView values, const TransferFunction& tf,
                               glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
                               const RaySettings& settings = {});
 
 /// The picture, with the same rays as every renderer (pixel centres). Throws
 /// std::invalid_argument for a grid with a defect or a wrong value count; Cancelled.
-ReferenceImage renderGridReference(const RegularGrid& grid, std::span<const double> values, const TransferFunction& tf,
+ReferenceImage renderGridReference(const RegularGrid& grid, SampleView values, const TransferFunction& tf,
                                    const Camera& camera, int width, int height, const RaySettings& settings = {},
                                    const Progress& progress = {}, int threads = 0);
 
@@ -36,10 +37,10 @@ ReferenceImage renderGridReference(const RegularGrid& grid, std::span<const doub
 /// the step halved from a quarter of the shortest spacing until the ray's light changes by
 /// at most `tolerance` per channel in one halving after at most twice that in the one
 /// before (at most ten halvings); iso-surfaces as above.
-SegmentLight integrateGridRay2D(const RegularGrid& grid, std::span<const double> values, const TransferFunction2D& tf,
+SegmentLight integrateGridRay2D(const RegularGrid& grid, SampleView values, const TransferFunction2D& tf,
                                 glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax,
                                 const RaySettings& settings = {}, double tolerance = 1e-5);
-ReferenceImage renderGridReference2D(const RegularGrid& grid, std::span<const double> values,
+ReferenceImage renderGridReference2D(const RegularGrid& grid, SampleView values,
                                      const TransferFunction2D& tf, const Camera& camera, int width, int height,
                                      const RaySettings& settings = {}, double tolerance = 1e-5,
                                      const Progress& progress = {}, int threads = 0);

@@ -181,10 +181,14 @@ void SurfaceRenderer::setLines(const std::vector<glm::dvec3>& endpoints, const g
   gl::check("SurfaceRenderer::setLines");
 }
 
-void SurfaceRenderer::setScalars(FieldLocation location, std::span<const double> values, double min, double max) {
+void SurfaceRenderer::setScalars(FieldLocation location, SampleView values, double min, double max) {
   std::vector<float> data(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i)
-    data[i] = std::isfinite(values[i]) ? float(values[i]) : kNoValue;
+  values.visit([&data](auto typed) {
+    for (std::size_t i = 0; i < typed.size(); ++i) {
+      const double v = double(typed[i]);
+      data[i] = std::isfinite(v) ? float(v) : kNoValue;
+    }
+  });
   if (data.empty()) data.push_back(kNoValue);
   glNamedBufferData(scalars_.id(), GLsizeiptr(data.size() * sizeof(float)), data.data(), GL_DYNAMIC_DRAW);
   location_ = location == FieldLocation::Node ? 0 : 1;

@@ -6,6 +6,7 @@
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/ColorMap.hpp>
 #include <volpost/core/Field.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/render/GlObjects.hpp>
 
 #include <vector>
@@ -40,7 +41,7 @@ class SurfaceRenderer : public Renderer {
   }
   /// Uploads one value per node or per cell (only this changes with the field or step).
   /// Non-finite values are drawn in noValueColor. [min, max] maps onto the color map.
-  void setScalars(FieldLocation location, std::span<const double> values, double min, double max);
+  void setScalars(FieldLocation location, SampleView values, double min, double max);
   /// No result: the surface is drawn in a neutral gray.
   void clearScalars();
   void setColorMap(const ColorMap& map);

@@ -13,7 +13,7 @@ std::uint32_t JointHistogram::largest() const {
   return counts.empty() ? 0 : *std::max_element(counts.begin(), counts.end());
 }
 
-JointHistogram JointHistogram::ofGrid(const RegularGrid& grid, std::span<const double> values, int valueBins,
+JointHistogram JointHistogram::ofGrid(const RegularGrid& grid, SampleView values, int valueBins,
                                       int gradientBins) {
   JointHistogram h;
   h.valueBins = valueBins;

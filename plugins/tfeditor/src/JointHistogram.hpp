@@ -7,6 +7,7 @@
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/SampleView.hpp>
 
 #include <cstdint>
 #include <span>
@@ -23,7 +24,7 @@ struct JointHistogram {
   std::uint32_t largest() const;
 
   /// Of the grid's finite point values; points beyond 8 million are sampled on a stride.
-  static JointHistogram ofGrid(const RegularGrid& grid, std::span<const double> values, int valueBins = 256,
+  static JointHistogram ofGrid(const RegularGrid& grid, SampleView values, int valueBins = 256,
                                int gradientBins = 128);
 };
 

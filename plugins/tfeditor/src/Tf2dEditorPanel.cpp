@@ -132,8 +132,7 @@ void Tf2dEditorPanel::hostChanged() {
   const std::string key = model->sourcePath + "|" + quantity->key() + "|" + std::to_string(host_.activeStep());
   if (key != histogramKey_) {  // the values are copied only for a new result or step
     histogramKey_ = key;
-    const std::vector<double> values = host_.activeValues();
-    canvas_->setHistogram(JointHistogram::ofGrid(*model->grid, values));
+    canvas_->setHistogram(JointHistogram::ofGrid(*model->grid, host_.activeValues()));
   }
   canvas_->setDefaultExtinction(extinctionOf(0.5));
   const QSignalBlocker block(use_);

@@ -32,7 +32,7 @@ TfCurveWidget::TfCurveWidget(TfEditModel& model, QWidget* parent) : QWidget(pare
 // At most kMaxHistogramValues values are kept (every n-th, and the two extremes): a 512^3
 // cube's histogram is the same picture from a 32nd of its values, without a 1 GB sorted
 // copy and seconds of sorting on the GUI thread.
-void TfCurveWidget::setData(const std::vector<double>& values) {
+void TfCurveWidget::setData(SampleView values) {
   sortedData_.clear();
   const std::size_t stride = values.size() / kMaxHistogramValues + 1;
   double lo = INFINITY, hi = -INFINITY;

@@ -9,6 +9,8 @@
 
 #include "TfEditModel.hpp"
 
+#include <volpost/core/SampleView.hpp>
+
 #include <QWidget>
 
 #include <optional>
@@ -27,7 +29,7 @@ class TfCurveWidget : public QWidget {
   explicit TfCurveWidget(TfEditModel& model, QWidget* parent = nullptr);
 
   /// Values of the active result: the histogram and the Shift-drag snap targets.
-  void setData(const std::vector<double>& values);
+  void setData(SampleView values);
   void setLogHistogram(bool on);
   void setFineOpacityAxis(bool on);
   bool fineOpacityAxis() const { return fineAxis_; }

@@ -252,17 +252,14 @@ void TfEditorPanel::buildUi() {
              "wheel: zoom · middle or Alt+drag: window/level · arrows, PageUp/PageDown, Ctrl+Z");
 }
 
-std::pair<double, double> TfEditorPanel::dataRange() const {
-  double lo = INFINITY, hi = -INFINITY;
-  for (double v : values_)
-    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  if (!std::isfinite(lo)) return {0.0, 1.0};
-  return {lo, hi > lo ? hi : lo + 1.0};
-}
+std::pair<double, double> TfEditorPanel::dataRange() const { return dataRange_; }
 
 void TfEditorPanel::hostChanged() {
   hostUpdating_ = true;
-  values_ = host_.activeValues();
+  const SampleView values = host_.activeValues();  // valid during this call only
+  const ValueRange range = rangeOf(values);
+  dataRange_ = range.valid() ? std::pair(range.min, range.max > range.min ? range.max : range.min + 1.0)
+                             : std::pair(0.0, 1.0);
   const auto q = host_.activeQuantity();
   const std::string key = q ? q->key() : std::string();
   if (host_.modelSize() > 0.0) {
@@ -290,9 +287,9 @@ void TfEditorPanel::hostChanged() {
       }
     }
     model_.load(tf, {}, true);
-    curve_->setData(values_);
+    curve_->setData(values);
   } else {
-    curve_->setData(values_);
+    curve_->setData(values);
   }
   hostUpdating_ = false;
   if (restored) sendToHost();

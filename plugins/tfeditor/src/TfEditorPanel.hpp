@@ -79,7 +79,7 @@ class TfEditorPanel : public QWidget {
   QLabel* isoPreview_ = nullptr;
   QTimer* sendTimer_ = nullptr;
   std::string quantityKey_;
-  std::vector<double> values_;
+  std::pair<double, double> dataRange_{0.0, 1.0};  ///< of the active values (they are not kept)
   bool hostUpdating_ = false;
 
   QFuture<std::shared_ptr<optics::IsoDetectionTable>> isoFuture_;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "CpuGridMarcher.hpp"
 
+#include <volpost/core/Quantity.hpp>
 #include <volpost/core/WorkerThreads.hpp>
 #include <volpost/core/optics/Headlight.hpp>
 
@@ -18,18 +19,23 @@
 
 namespace volpost::volume {
 
-GridSamples::GridSamples(const RegularGrid& grid, std::span<const double> values) : grid_(grid) {
+GridSamples::GridSamples(const RegularGrid& grid, SampleView values) : grid_(grid) {
   if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
   if (values.size() != grid.pointCount())
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid.pointCount()) + " points");
-  double lo = INFINITY, hi = -INFINITY;
-  for (double v : values)
-    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  valueOffset_ = lo <= hi ? 0.5 * lo + 0.5 * hi : 0.0;
+  const ValueRange range = rangeOf(values);
+  const double lo = range.min, hi = range.max;  // 0, 0 without a finite value
+  valueOffset_ = 0.5 * lo + 0.5 * hi;
   values_.resize(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i)  // not a finite number: drawn as the lowest value
-    values_[i] = float((std::isfinite(values[i]) ? values[i] : (lo <= hi ? lo : 0.0)) - valueOffset_);
+  values.visit([&](auto typed) {  // not a finite number: drawn as the lowest value
+    forEachChunk(typed.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const double v = double(typed[i]);
+        values_[i] = float((std::isfinite(v) ? v : lo) - valueOffset_);
+      }
+    });
+  });
   toIndex_ = glm::inverse(grid.indexToWorld());
   shortestSpacing_ = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
   for (int a = 0; a < 3; ++a) bricks_[a] = (grid.dims[a] - 2) / kBrickCells + 1;

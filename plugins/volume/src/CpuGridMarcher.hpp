@@ -12,6 +12,7 @@
 #include "PiecewiseIntegrator.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/SampleView.hpp>
 
 #include <glm/mat3x3.hpp>
 
@@ -24,7 +25,7 @@ namespace volpost::volume {
 class GridSamples {
  public:
   /// Throws std::invalid_argument for a grid with a defect or a wrong value count.
-  GridSamples(const RegularGrid& grid, std::span<const double> values);
+  GridSamples(const RegularGrid& grid, SampleView values);
 
   const RegularGrid& grid() const { return grid_; }
   double valueOffset() const { return valueOffset_; }

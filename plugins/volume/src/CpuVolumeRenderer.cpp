@@ -40,7 +40,7 @@ void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std:
   visible_.reset();
 }
 
-void CpuVolumeRenderer::setGrid(const RegularGrid& grid, std::span<const double> values) {
+void CpuVolumeRenderer::setGrid(const RegularGrid& grid, SampleView values) {
   grid_ = std::make_shared<const GridSamples>(grid, values);  // throws before anything changes
   walkMesh_.reset();
   mesh_ = nullptr;
@@ -67,11 +67,16 @@ void CpuVolumeRenderer::setSamplingStep(double step) {
   gridStep_ = step;
 }
 
+void CpuVolumeRenderer::setGridValues(SampleView values) {
+  if (!grid_) throw std::logic_error("CpuVolumeRenderer::setGridValues before setGrid");
+  grid_ = std::make_shared<const GridSamples>(grid_->grid(), values);
+  ++valueUploads_;
+  ++revision_;
+}
+
 void CpuVolumeRenderer::setValues(std::span<const double> values) {
   if (grid_) {
-    grid_ = std::make_shared<const GridSamples>(grid_->grid(), values);
-    ++valueUploads_;
-    ++revision_;
+    setGridValues(values);
     return;
   }
   if (!mesh_) throw std::logic_error("CpuVolumeRenderer::setValues before setVolume");

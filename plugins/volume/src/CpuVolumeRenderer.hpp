@@ -34,7 +34,8 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   void render(const RenderContext& ctx) override;
 
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
-  void setGrid(const RegularGrid& grid, std::span<const double> values) override;
+  void setGrid(const RegularGrid& grid, SampleView values) override;
+  void setGridValues(SampleView values) override;
   bool drawsTetrahedra() const override { return true; }
   /// Grids only (the marcher shades by the trilinear gradient); meshes are drawn unlit.
   void setShading(bool on) override;

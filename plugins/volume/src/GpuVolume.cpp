@@ -24,6 +24,7 @@
 #include <cstring>
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
 
 namespace volpost::volume {
 namespace {
@@ -91,7 +92,7 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   meshDirty_ = true;
 }
 
-void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values) {
+void GpuVolume::setGrid(const RegularGrid& grid, SampleView values) {
   if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
   if (values.size() != grid.pointCount())
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
@@ -104,63 +105,103 @@ void GpuVolume::setGrid(const RegularGrid& grid, std::span<const double> values)
   mesh_ = nullptr;
   location_ = FieldLocation::Node;
   grid_ = grid;
-  setGridValues(values);
+  makeGridTexels(values);
   ++meshRevision_;
   ++revision_;
   meshDirty_ = true;
 }
 
-// Values go to the texture in their own frame (see TetMeshGpu::valueOffset), or, when they
-// are all integers of 8 or 16 bits (seismic samples as stored), as those integers in signed
-// normalized texels the shader maps back into the frame. A value that is not a finite
-// number is drawn as the field's minimum.
-void GpuVolume::setGridValues(std::span<const double> values) {
-  setValueFrame(gpu_, values);
-  double largest = 0.0, minimum = 0.0;
+namespace {
+
+// Whether every finite value is an integer within `limit` in magnitude; the smallest one.
+template <typename T>
+bool integersWithin(std::span<const T> values, double limit, double& minimum) {
+  if constexpr (std::is_integral_v<T>) {  // no loop for a type whose every value fits
+    if (double(std::numeric_limits<T>::max()) <= limit && double(std::numeric_limits<T>::min()) >= -limit) {
+      minimum = values.empty() ? 0.0 : double(*std::min_element(values.begin(), values.end()));
+      return true;
+    }
+  }
   bool integers = true, any = false;
-  for (const double v : values) {
+  minimum = 0.0;
+  for (const T value : values) {
+    const double v = double(value);
     if (!std::isfinite(v)) continue;
-    integers = integers && v == std::nearbyint(v);
-    largest = std::max(largest, std::abs(v));
+    integers = integers && v == std::nearbyint(v) && std::abs(v) <= limit;
     minimum = any ? std::min(minimum, v) : v;
     any = true;
   }
+  return integers && any;
+}
+
+template <typename Texel, typename T>
+std::vector<Texel> integerTexels(std::span<const T> values, double minimum) {
+  std::vector<Texel> out(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double v = double(values[i]);
+    out[i] = Texel(std::isfinite(v) ? v : minimum);
+  }
+  return out;
+}
+
+}  // namespace
+
+// Values go to the texture in their own frame (see TetMeshGpu::valueOffset), or, when they
+// are all integers of 8 or 16 bits (seismic samples as stored), as those integers in signed
+// normalized texels the shader maps back into the frame. A value that is not a finite
+// number is drawn as the field's minimum. Each type's values are read in that type, never
+// copied to doubles first.
+void GpuVolume::makeGridTexels(SampleView values) {
+  setValueFrame(gpu_, values);
   using Format = GridTexels::Format;
   GridTexels t;
-  t.format = !integers || !any || largest > 32767.0 ? Format::Float32 : largest <= 127.0 ? Format::Snorm8 : Format::Snorm16;
+  double minimum = 0.0;
+  t.format = values.visit([&](auto typed) {
+    if (integersWithin(typed, 127.0, minimum)) return Format::Snorm8;
+    if (integersWithin(typed, 32767.0, minimum)) return Format::Snorm16;
+    return Format::Float32;
+  });
   if (t.format == Format::Float32) {
     t.floats.resize(values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) t.floats[i] = std::isfinite(values[i]) ? gpu_.gpuValue(values[i]) : 0.0f;
+    values.visit([&](auto typed) {
+      for (std::size_t i = 0; i < typed.size(); ++i) {
+        const double v = double(typed[i]);
+        t.floats[i] = std::isfinite(v) ? gpu_.gpuValue(v) : 0.0f;
+      }
+    });
   } else {
     // A texel t is the integer / 127 (or 32767); the frame's value is (integer - valueOffset) * valueScale.
     const double unit = t.format == Format::Snorm8 ? 127.0 : 32767.0;
     t.scale = float(unit * gpu_.valueScale);
     t.offset = float(-gpu_.valueOffset * gpu_.valueScale);
-    const auto integerOf = [&](double v) { return std::isfinite(v) ? v : minimum; };
-    if (t.format == Format::Snorm8) {
-      t.bytes.resize(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i) t.bytes[i] = std::int8_t(integerOf(values[i]));
-    } else {
-      t.shorts.resize(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i) t.shorts[i] = std::int16_t(integerOf(values[i]));
-    }
+    values.visit([&](auto typed) {
+      if (t.format == Format::Snorm8) t.bytes = integerTexels<std::int8_t>(typed, minimum);
+      else t.shorts = integerTexels<std::int16_t>(typed, minimum);
+    });
   }
   gridValues_ = std::move(t);
 }
 
-void GpuVolume::setValues(std::span<const double> values) {
+void GpuVolume::setGridValues(SampleView values) {
+  if (!grid_) throw std::logic_error("GpuVolume::setGridValues before setGrid");
+  if (values.size() != grid_->pointCount())
+    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
+                                std::to_string(grid_->pointCount()) + " points");
+  makeGridTexels(values);
+  valuesDirty_ = true;
+  ++revision_;
+}
+
+void GpuVolume::setValues(SampleView values) {
   if (grid_) {
-    if (values.size() != grid_->pointCount())
-      throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
-                                  std::to_string(grid_->pointCount()) + " points");
     setGridValues(values);
-    valuesDirty_ = true;
-    ++revision_;
     return;
   }
   if (!mesh_) return;
-  if (!replaceValues(gpu_, *mesh_, location_, values)) {
-    setVolume(*mesh_, location_, values);  // the set of renderable tets changed
+  std::vector<double> converted;
+  const std::span<const double> doubles = values.doubles(converted);
+  if (!replaceValues(gpu_, *mesh_, location_, doubles)) {
+    setVolume(*mesh_, location_, doubles);  // the set of renderable tets changed
     return;
   }
   valuesDirty_ = true;

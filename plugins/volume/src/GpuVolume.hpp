@@ -38,8 +38,11 @@ class GpuVolume {
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values);
   /// A regular grid instead of tetrahedra: its point values go to a 3D texture. Throws
   /// std::invalid_argument for a wrong count or a grid with a defect.
-  void setGrid(const RegularGrid& grid, std::span<const double> values);
-  void setValues(std::span<const double> values);
+  void setGrid(const RegularGrid& grid, SampleView values);
+  /// New values on the same tetrahedra or grid.
+  void setValues(SampleView values);
+  /// New values on the same grid (std::logic_error before setGrid).
+  void setGridValues(SampleView values);
   void setTransferFunction(const TransferFunction& tf);
   /// Grids only: a 2D transfer function over the value and its gradient magnitude instead
   /// of the 1D one (nullopt: the 1D one again). Its table is integrated linearly between
@@ -145,7 +148,7 @@ class GpuVolume {
   /// Lays out the grid's bricks for the present budget (nothing changes when it is the same).
   void layOutBricks();
   std::size_t textureBudget() const;
-  void setGridValues(std::span<const double> values);
+  void makeGridTexels(SampleView values);
   void rebuildTables();
   void uploadTransferFunction2D();
   bool tablesNeedRebuild() const;

@@ -29,7 +29,8 @@ class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
  public:
   std::string name() const override { return "texture-slices"; }
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
-  void setGrid(const RegularGrid& grid, std::span<const double> values) override { volume_.setGrid(grid, values); }
+  void setGrid(const RegularGrid& grid, SampleView values) override { volume_.setGrid(grid, values); }
+  void setGridValues(SampleView values) override { volume_.setGridValues(values); }
   void setShading(bool on) override { volume_.setShading(on); }
   void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override { volume_.setTransferFunction2D(tf); }
   void initialize() override;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "TetMeshGpu.hpp"
 
+#include <volpost/core/Quantity.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 #include <volpost/core/WorkerThreads.hpp>
 
@@ -172,11 +173,9 @@ glm::ivec4 TetMeshGpu::neighborsOf(std::size_t tet) const {
 }
 
 // The range of the finite values (see TetMeshGpu::valueOffset).
-void setValueFrame(TetMeshGpu& g, std::span<const double> values) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (double v : values)
-    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  if (!(hi >= lo)) lo = hi = 0.0;
+void setValueFrame(TetMeshGpu& g, SampleView values) {
+  const ValueRange range = rangeOf(values);
+  const double lo = range.min, hi = range.max;  // 0, 0 without a finite value
   g.valueMin = lo;
   g.valueMax = hi;
   g.valueOffset = lo;

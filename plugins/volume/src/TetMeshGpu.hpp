@@ -9,6 +9,7 @@
 
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/TetAdjacency.hpp>
 
 #include <glm/vec3.hpp>
@@ -89,7 +90,7 @@ void packNeighbors(std::vector<std::uint32_t>& words, std::size_t tetCount, std:
                    std::vector<std::uint32_t>& boundaryFaces);
 
 /// Sets valueMin/Max and the frame (valueOffset, valueScale) from the finite values.
-void setValueFrame(TetMeshGpu& gpu, std::span<const double> values);
+void setValueFrame(TetMeshGpu& gpu, SampleView values);
 
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 /// Built on all cores.

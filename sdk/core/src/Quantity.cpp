@@ -153,6 +153,11 @@ double scalarOf(const Quantity& q, const double* t, int nc) {
 
 }  // namespace
 
+bool isStoredSamples(const Field& field, const Quantity& q) {
+  return field.storesSamples() && field.components() == 1 && q.op == ScalarOp::Component && q.component == 0 &&
+         q.field == field.name();
+}
+
 std::vector<double> evaluate(const Field& field, const Quantity& q, std::size_t step) {
   const int nc = field.components();
   checkQuantityFits(q, field.name(), nc);
@@ -174,19 +179,22 @@ double evaluateComponents(const Quantity& q, std::span<const double> components)
   return scalarOf(q, components.data(), int(components.size()));
 }
 
-ValueRange rangeOf(const std::vector<double>& values) {
+ValueRange rangeOf(SampleView values) {
   ValueRange r;
   r.min = std::numeric_limits<double>::infinity();
   r.max = -r.min;
-  for (double x : values) {
-    if (!std::isfinite(x)) {
-      ++r.nanCount;
-      continue;
+  values.visit([&r](auto typed) {
+    for (const auto v : typed) {
+      const double x = double(v);
+      if (!std::isfinite(x)) {
+        ++r.nanCount;
+        continue;
+      }
+      ++r.finiteCount;
+      r.min = std::min(r.min, x);
+      r.max = std::max(r.max, x);
     }
-    ++r.finiteCount;
-    r.min = std::min(r.min, x);
-    r.max = std::max(r.max, x);
-  }
+  });
   if (!r.valid()) r.min = r.max = 0.0;
   return r;
 }

@@ -41,7 +41,7 @@ class GridHost : public PanelHost {
   void requestRender() override {}
   TransferFunction transferFunction() const override { return {}; }
   void setTransferFunction(const TransferFunction&) override {}
-  std::vector<double> activeValues() const override { return values; }
+  SampleView activeValues() const override { return values; }
   double modelSize() const override { return 10.0; }
   double lastTransferFunctionMs() const override { return 0.0; }
   std::optional<TransferFunction2D> transferFunction2D() const override { return tf2d; }

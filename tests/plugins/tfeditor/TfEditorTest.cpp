@@ -40,7 +40,7 @@ class FakeHost : public PanelHost {
     tf = f;
     ++received;
   }
-  std::vector<double> activeValues() const override { return values; }
+  SampleView activeValues() const override { return values; }
   double modelSize() const override { return 10.0; }
   double lastTransferFunctionMs() const override { return 0.0; }
   std::optional<TransferFunction2D> transferFunction2D() const override { return tf2d; }

@@ -327,6 +327,57 @@ TEST_F(GridMarch, TheCpuAndGpuMarchersAgreeAndTheCpuRendererConvergesToItsFullFr
   cpu.release();
 }
 
+// Samples as the file stored them (8/16-bit integers, 32-bit floats) are drawn from their
+// own type: the same picture as their values in doubles, on the GPU and the CPU, through
+// setGrid and setGridValues alike, with no double copy made on the way.
+TEST_F(GridMarch, StoredSampleTypesDrawTheSamePictureAsTheirValuesInDoubles) {
+  const RegularGrid g = skewedGrid();
+  const std::vector<double> wavy = wavyValues(g);
+  const Camera camera = gridCamera(g);
+  struct Case {
+    SampleType type;
+    double scale, offset;  // stored = round((wavy + offset) * scale) for integers
+  };
+  for (const Case c : {Case{SampleType::Int8, 30.0, -3.7}, Case{SampleType::UInt8, 30.0, 0.0},
+                       Case{SampleType::Int16, 3000.0, -3.0}, Case{SampleType::UInt16, 5000.0, 0.0},
+                       Case{SampleType::Int32, 1e5, 0.0}, Case{SampleType::Float32, 1.0, 0.0}}) {
+    SCOPED_TRACE(toString(c.type));
+    SampleArray stored(c.type, wavy.size());
+    for (std::size_t i = 0; i < wavy.size(); ++i) {
+      const double v = (wavy[i] + c.offset) * c.scale;
+      stored.set(i, c.type == SampleType::Float32 ? v : std::round(v));
+    }
+    const std::vector<double> doubles = stored.toDoubles();
+    std::vector<ControlPoint> points = kGridTf.points();
+    for (ControlPoint& p : points) p.value = (p.value + c.offset) * c.scale;
+    const TransferFunction tf(points);
+
+    marcher().setTransferFunction(tf);
+    marcher().setTerminationThreshold(0.0);
+    marcher().setGrid(g, doubles);
+    const std::vector<float> fromDoubles = gpuImage(camera, 48, 48);
+    marcher().setGrid(g, stored);
+    EXPECT_EQ(gpuImage(camera, 48, 48), fromDoubles) << "GPU, setGrid";
+    marcher().setGrid(g, wavy);
+    marcher().setGridValues(stored);
+    EXPECT_EQ(gpuImage(camera, 48, 48), fromDoubles) << "GPU, setGridValues";
+
+    volume::CpuVolumeRenderer cpu;
+    cpu.initialize();
+    cpu.setTransferFunction(tf);
+    cpu.setTerminationThreshold(0.0);
+    cpu.setGrid(g, doubles);
+    const std::vector<float> cpuFromDoubles = imageOf(cpu, camera, 48, 48);
+    cpu.setGrid(g, stored);
+    EXPECT_EQ(imageOf(cpu, camera, 48, 48), cpuFromDoubles) << "CPU, setGrid";
+    cpu.setGrid(g, wavy);
+    cpu.setGridValues(stored);
+    EXPECT_EQ(imageOf(cpu, camera, 48, 48), cpuFromDoubles) << "CPU, setGridValues";
+    cpu.release();
+  }
+  EXPECT_THROW(marcher().setGridValues(std::vector<double>(3, 0.0)), std::invalid_argument);
+}
+
 // ---- view-aligned slices ----------------------------------------------------------------
 
 TEST(SlicePolygons, CutTheBoxBackToFrontOnALatticeOfDepths) {

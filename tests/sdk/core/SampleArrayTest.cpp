@@ -93,3 +93,40 @@ TEST(SampleArray, FieldFromValuesKeepsTheGivenVectorWithoutACopy) {
   EXPECT_EQ(field->values(0).data(), data);
   EXPECT_THROW((void)Field::fromValues("g", FieldLocation::Node, 1, {{1.0, 2.0}, {1.0}}), std::invalid_argument);
 }
+
+// The view the renderers and panels read: every type's values as doubles, the loop per type
+// over the same memory, and doubles converted only where a double span is asked for.
+TEST(SampleView, ReadsEveryTypeInPlace) {
+  for (const SampleType type : {SampleType::Int8, SampleType::UInt8, SampleType::Int16, SampleType::UInt16,
+                                SampleType::Int32, SampleType::UInt32, SampleType::Float32, SampleType::Float64}) {
+    SCOPED_TRACE(toString(type));
+    SampleArray a(type, 3);
+    a.set(0, 7.0), a.set(1, 100.0), a.set(2, 0.0);
+    const SampleView view(a);
+    EXPECT_EQ(view.type(), type);
+    EXPECT_EQ(view.size(), 3u);
+    EXPECT_EQ(view.bytes(), a.bytes());
+    EXPECT_EQ(view[0], 7.0);
+    EXPECT_EQ(view[1], 100.0);
+    double sum = 0.0;
+    std::size_t bytesPerValue = 0;
+    view.visit([&](auto typed) {
+      bytesPerValue = sizeof(typed[0]);
+      for (const auto v : typed) sum += double(v);
+    });
+    EXPECT_EQ(sum, 107.0);
+    EXPECT_EQ(bytesPerValue, bytesPerSample(type)) << "visit hands out the stored type";
+    std::vector<double> scratch;
+    const std::span<const double> doubles = view.doubles(scratch);
+    EXPECT_EQ(std::vector<double>(doubles.begin(), doubles.end()), (std::vector<double>{7.0, 100.0, 0.0}));
+    EXPECT_EQ(scratch.empty(), type == SampleType::Float64) << "doubles are not copied";
+  }
+  const std::vector<double> values = {1.5, NAN};
+  const SampleView ofDoubles(values);
+  EXPECT_EQ(ofDoubles.type(), SampleType::Float64);
+  EXPECT_TRUE(std::isnan(ofDoubles[1]));
+  const ValueRange r = rangeOf(ofDoubles);
+  EXPECT_EQ(r.finiteCount, 1u);
+  EXPECT_EQ(r.nanCount, 1u);
+  EXPECT_TRUE(SampleView().empty());
+}

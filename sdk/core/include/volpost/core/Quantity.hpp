@@ -3,6 +3,7 @@
 #pragma once
 
 #include <volpost/core/Field.hpp>
+#include <volpost/core/SampleView.hpp>
 
 #include <array>
 #include <optional>
@@ -33,6 +34,9 @@ std::vector<Quantity> quantitiesOf(const Field& field);
 /// Parses the written form; nullopt if the suffix does not fit the field's kind.
 std::optional<Quantity> parseQuantity(const std::string& text, const Field& field);
 
+/// Whether the quantity is the field's stored samples themselves (a scalar field kept in its
+/// file's type, as itself): field.samples() then holds its values, no evaluation needed.
+bool isStoredSamples(const Field& field, const Quantity& quantity);
 /// Evaluates the quantity for all entities of one step. NaN inputs give NaN.
 std::vector<double> evaluate(const Field& field, const Quantity& quantity, std::size_t step);
 /// Evaluates the quantity on one entity's components (e.g. a field interpolated at a point).
@@ -48,6 +52,6 @@ struct ValueRange {
   std::size_t nanCount = 0;  ///< NaN or infinite values, ignored by min/max
   bool valid() const { return finiteCount > 0; }
 };
-ValueRange rangeOf(const std::vector<double>& values);
+ValueRange rangeOf(SampleView values);
 
 }  // namespace volpost

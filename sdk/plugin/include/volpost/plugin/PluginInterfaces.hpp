@@ -7,6 +7,7 @@
 #include <volpost/core/MeshReader.hpp>
 #include <volpost/core/Model.hpp>
 #include <volpost/core/Quantity.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 
@@ -59,8 +60,10 @@ class PanelHost {
   /// often: slow tables are rebuilt off the GUI thread and rapid changes coalesce.
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
   /// Values of the active result at the active step (one per node or cell), for histograms
-  /// and snapping; empty when none is shown.
-  virtual std::vector<double> activeValues() const = 0;
+  /// and snapping, in the type that holds them (a seismic cube's samples as stored); empty
+  /// when none is shown. Valid until the panel's next hostChanged(): a panel copies what it
+  /// keeps longer.
+  virtual SampleView activeValues() const = 0;
   /// Diagonal of the model's bounding box (model length units): the scale for opacity.
   virtual double modelSize() const = 0;
   /// What the renderer's last transfer-function change cost (tables and upload), ms; 0 if
@@ -86,9 +89,9 @@ class PanelPlugin {
 
 }  // namespace volpost
 
-#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/7"
-#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/7"
-#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/7"
+#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/8"
+#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/8"
+#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/8"
 
 Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
 Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
@@ -16,10 +17,13 @@ namespace volpost {
 
 class GridVolumeRenderer : public VolumeRenderer {
  public:
-  /// One value per grid point (RegularGrid::pointIndex order); the values are copied, the
-  /// grid too. Throws std::invalid_argument for a wrong count or a grid with a defect().
-  /// setValues() then replaces the values only.
-  virtual void setGrid(const RegularGrid& grid, std::span<const double> pointValues) = 0;
+  /// One value per grid point (RegularGrid::pointIndex order), in the type that holds them
+  /// (a 16-bit cube's samples as stored: a renderer reads them in their type and keeps what
+  /// it draws, never a copy in doubles); the grid is copied. Throws std::invalid_argument
+  /// for a wrong count or a grid with a defect().
+  virtual void setGrid(const RegularGrid& grid, SampleView pointValues) = 0;
+  /// Replaces the values only (another step or quantity on the same grid); the same rules.
+  virtual void setGridValues(SampleView pointValues) = 0;
   /// Shading of the emission by the trilinear gradient with the light at the eye
   /// (volpost/core/optics/Headlight.hpp); off by default.
   virtual void setShading(bool on) = 0;
