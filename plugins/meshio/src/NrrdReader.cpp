@@ -479,7 +479,10 @@ std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress&
   const std::size_t points = checkedProduct(checkedProduct(grid.dims[0], grid.dims[1], path, "the volume"), grid.dims[2], path, "the volume");
   const std::size_t count = checkedProduct(points, std::uint64_t(layout.components), path, "the volume's samples");
   const std::size_t bytes = checkedProduct(count, std::uint64_t(h.type.bytes), path, "the volume's data");
-  requireMemory(double(points) * 80.0 + double(count) * 8.0, path, "a volume of " + std::to_string(points) + " points");
+  // The samples (kept in their type; 64-bit integers as doubles) and a renderer's copy; the
+  // grid holds no cells until something needs them (Model::mesh checks those).
+  requireMemory(double(count) * double(std::max(h.type.bytes, 1)) + double(points) * kGridDrawingBytesPerPoint, path,
+                "a volume of " + std::to_string(points) + " points and a renderer's copy of them");
 
   // Where the samples are: after the header, or in the data file beside the header.
   std::string dataPath = path;

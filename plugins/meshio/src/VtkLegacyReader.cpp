@@ -390,7 +390,9 @@ class LegacyReading {
     if (const std::string defect = grid.defect(); !defect.empty())
       p_.fail(defect + " (DIMENSIONS, SPACING): volpost reads volumes, not 2D images");
     const std::size_t points = p_.product(p_.product(grid.dims[0], grid.dims[1], "DIMENSIONS"), grid.dims[2], "DIMENSIONS");
-    requireMemory(double(points) * 80.0, path_, "a grid of " + std::to_string(points) + " points");
+    // One field's values (up to 8 bytes as stored, 8 more while decoded) and a renderer's
+    // copy; the grid holds no cells until something needs them (Model::mesh checks those).
+    requireMemory(double(points) * (16.0 + kGridDrawingBytesPerPoint), path_, "a grid of " + std::to_string(points) + " points");
     model.grid = grid;  // its hexahedra are built when something asks for the mesh
     mapping.modelCell.clear();
     mapping.fileCells = grid.cellCount();

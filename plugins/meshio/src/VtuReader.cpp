@@ -366,7 +366,9 @@ class VtuReading {
       failAt(image, defect + " (WholeExtent, Spacing, Direction): volpost reads volumes, not 2D images");
     const std::size_t pointCount = checkedProduct(checkedProduct(grid.dims[0], grid.dims[1], path_, "the image"),
                                                   grid.dims[2], path_, "the image");
-    requireMemory(double(pointCount) * 80.0, path_, "an image of " + std::to_string(pointCount) + " points");
+    // One field's values (up to 8 bytes as stored, 8 more while decoded) and a renderer's
+    // copy; the image holds no cells until something needs them (Model::mesh checks those).
+    requireMemory(double(pointCount) * (16.0 + kGridDrawingBytesPerPoint), path_, "an image of " + std::to_string(pointCount) + " points");
 
     auto model = std::make_unique<Model>();
     model->title = image.attribute("VolpostTitle").as_string("");

@@ -327,8 +327,11 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
   if (b.samplesPerTrace < 2) file.fail(kTextHeaderBytes + 20, "1 sample per trace: a volume needs at least 2");
   const std::size_t cells = checkedProduct(il.count, xl.count, path, "the grid");
   const std::size_t points = checkedProduct(cells, b.samplesPerTrace, path, "the grid");
-  // The values (8 B), the nodes (24 B) and the hexahedra (~45 B per point) of the model.
-  requireMemory(double(points) * 80.0, path, "a grid of " + std::to_string(points) + " samples");
+  // The samples as stored and a renderer's copy of them; the grid holds no cells until
+  // something needs them (Model::mesh checks those).
+  requireMemory(double(points) * (double(bytesPerSample(storedType(b.format))) + kGridDrawingBytesPerPoint), path,
+                "a grid of " + std::to_string(points) + " samples (" + toString(storedType(b.format)) +
+                    ") and a renderer's copy of them");
 
   std::vector<std::size_t> is(chosen.size()), js(chosen.size());
   std::vector<std::int64_t> traceAt(cells, -1);  // the trace at each (inline, crossline)

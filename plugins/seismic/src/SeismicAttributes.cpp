@@ -2,6 +2,7 @@
 #include "SeismicAttributes.hpp"
 
 #include <kiss_fft.h>
+#include <volpost/core/SampleView.hpp>
 #include <volpost/core/WorkerThreads.hpp>
 
 #include <cmath>
@@ -93,7 +94,9 @@ void addSeismicAttributes(Model& model) {
     // derived picture of the amplitude, not a measurement to keep to 16 digits.
     return Field::fromSamples(
         name, FieldLocation::Node, 1, grid.pointCount(), amplitude->steps(), [grid, amplitude, dt, kind](std::size_t step) {
-          const std::vector<double> x = amplitude->valuesCopy(step);  // the amplitude keeps no double copy
+          std::vector<double> converted;  // only for an amplitude not kept as samples
+          const SampleView x = amplitude->storesSamples() ? SampleView(amplitude->samples(step))
+                                                          : SampleView(converted = amplitude->valuesCopy(step));
           SampleArray out(SampleType::Float32, x.size());
           const std::size_t traces = grid.dims[0] * grid.dims[1], samples = grid.dims[2];
           const auto computeTraces = [&](std::size_t first, std::size_t end) {

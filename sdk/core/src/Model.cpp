@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/Model.hpp>
 
+#include <volpost/core/ResourceLimits.hpp>
+
 namespace volpost {
 
 Model::Model(const Model& other)
@@ -26,7 +28,14 @@ Model::MeshSlot& Model::slot() const {
   if (grid && !s.ready.load(std::memory_order_acquire)) {
     const std::lock_guard lock(s.mutex);
     if (!s.ready.load(std::memory_order_relaxed)) {
-      if (grid->defect().empty() && s.mesh.nodeCount() == 0 && s.mesh.cellCount() == 0) s.mesh = hexahedraOfGrid(*grid);
+      if (grid->defect().empty() && s.mesh.nodeCount() == 0 && s.mesh.cellCount() == 0) {
+        // The reader checked the samples only: what needs the cells checks them here (a
+        // throw leaves the grid without them, and the next call asks again).
+        requireMemory(double(grid->pointCount()) * kGridHexahedraBytesPerPoint, sourcePath,
+                      "the grid's " + std::to_string(grid->cellCount()) + " hexahedra as explicit cells (" +
+                          std::to_string(int(kGridHexahedraBytesPerPoint)) + " bytes per point)");
+        s.mesh = hexahedraOfGrid(*grid);
+      }
       s.ready.store(true, std::memory_order_release);
     }
   }

@@ -2,6 +2,8 @@
 // A grid model answers from its grid until something needs its cells, then builds them once.
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Model.hpp>
+#include <volpost/core/ResourceLimits.hpp>
+#include <volpost/core/Error.hpp>
 
 #include <gtest/gtest.h>
 
@@ -100,4 +102,31 @@ TEST(Model, AGridTooLargeForExplicitCellsOrWithInfiniteCornersIsRefused) {
   far.origin = {1.7e308, 0.0, 0.0};
   far.axes[0] = {1e308, 0.0, 0.0};
   EXPECT_NE(far.defect().find("far corners"), std::string::npos) << far.defect();
+}
+
+// Readers check a grid's samples only; the hexahedra (57 bytes a point) are checked against
+// the memory budget when something first needs them, with a message naming them, and the
+// model stays usable without them.
+TEST(Model, AGridsHexahedraOverTheMemoryBudgetAreRefusedWhenFirstNeeded) {
+  Model model;
+  model.sourcePath = "cube.sgy";
+  RegularGrid g;
+  g.dims = {40, 40, 40};
+  model.grid = g;
+  const std::size_t budget = memoryBudget();
+  setMemoryBudget(64000 * 40);  // 2.56 MB: less than 64,000 points x 57 bytes
+  try {
+    (void)model.mesh();
+    ADD_FAILURE() << "the hexahedra were built over the budget";
+  } catch (const ReadError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("cube.sgy"), std::string::npos) << m;
+    EXPECT_NE(m.find("59319 hexahedra"), std::string::npos) << m;
+    EXPECT_NE(m.find("memory budget"), std::string::npos) << m;
+  }
+  EXPECT_FALSE(model.meshBuilt());
+  EXPECT_EQ(model.nodeCount(), 64000u);
+  setMemoryBudget(budget);
+  EXPECT_EQ(model.mesh().cellCount(), 59319u);
+  EXPECT_TRUE(model.meshBuilt());
 }

@@ -67,6 +67,14 @@ std::array<NodeIndex, 8> gridHexahedron(const RegularGrid& grid, std::size_t i, 
 /// std::length_error for a grid of more points than 32-bit node indices number.
 Mesh hexahedraOfGrid(const RegularGrid& grid);
 
+/// Host bytes per point that drawing a grid takes besides its samples: a renderer's copy of
+/// them (float texels or the CPU marcher's floats, at most 4 bytes). Readers check the
+/// samples plus this against the memory budget; the hexahedra (kGridHexahedraBytesPerPoint)
+/// are checked when something first needs them as a mesh.
+inline constexpr double kGridDrawingBytesPerPoint = 4.0;
+/// A grid's explicit points and hexahedra (hexahedraOfGrid): 24 bytes a point, ~33 a cell.
+inline constexpr double kGridHexahedraBytesPerPoint = 57.0;
+
 /// Trilinear interpolation of point values at a continuous index (clamped to the grid).
 double trilinear(const RegularGrid& grid, const float* values, const glm::dvec3& index);
 double trilinear(const RegularGrid& grid, const double* values, const glm::dvec3& index);
