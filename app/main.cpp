@@ -10,6 +10,8 @@
 #include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/Version.hpp>
 
+#include <OpenMesh/Core/System/omstream.hh>
+
 #include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
@@ -189,6 +191,9 @@ bool takeBudgets(int& argc, char** argv) {
 int main(int argc, char** argv) {
   // A file-size limit (ulimit -f) must end a write with an error we report, not kill us.
   std::signal(SIGXFSZ, SIG_IGN);
+  // OpenMesh reports each face it refuses (a non-manifold vertex) on stderr; the boundary
+  // and iso-surface builders keep every such face with vertices of their own and count it.
+  omerr().disable();
   if (!takeBudgets(argc, argv)) return 2;
   const char* verb = argc >= 2 ? argv[1] : "";
   if (!std::strcmp(verb, "--help") || !std::strcmp(verb, "-h") || !std::strcmp(verb, "help")) {

@@ -79,7 +79,13 @@ class IsoBuilder {
   void addTriangle(SurfaceMesh::VertexHandle v0, SurfaceMesh::VertexHandle v1, SurfaceMesh::VertexHandle v2, bool flip) {
     if (v0 == v1 || v1 == v2 || v0 == v2) return;  // the crossing on a node: no area
     if (flip) std::swap(v1, v2);
-    out_.mesh.add_face(v0, v1, v2);
+    if (out_.mesh.add_face(v0, v1, v2).is_valid()) return;
+    // Sheets that touch at a node exactly at iso (integer samples hit it) make a vertex no
+    // manifold mesh can share: OpenMesh refuses the face. It is kept, with vertices of its
+    // own at the same places, so that the picture and the export lose no triangle.
+    const auto copy = [this](SurfaceMesh::VertexHandle v) { return out_.mesh.add_vertex(out_.mesh.point(v)); };
+    out_.mesh.add_face(copy(v0), copy(v1), copy(v2));
+    ++out_.separatedFaces;
   }
 
   static bool evenPermutation(std::array<int, 4> order) {

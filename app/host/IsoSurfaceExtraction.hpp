@@ -16,6 +16,9 @@ struct ExtractedSurface {
   /// Positions are float model coordinates minus `origin`, like BoundarySurface.
   SurfaceMesh mesh;
   glm::dvec3 origin{0.0};
+  /// Triangles kept with vertices of their own where sheets touch at one vertex (a node
+  /// exactly at the iso-value between two of them), which a manifold mesh cannot share.
+  std::size_t separatedFaces = 0;
 };
 
 /// The surface value == iso of a nodal field given on `tets.mesh`'s nodes (see

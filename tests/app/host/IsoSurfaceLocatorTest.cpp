@@ -111,6 +111,32 @@ TEST(IsoSurfaceExtraction, AGridsSurfaceComesFromItsCellsSplitOnTheFly) {
   EXPECT_THROW(extractIsoSurface(g, std::vector<double>(3, 0.0), 1.0), std::invalid_argument);
 }
 
+// Integer samples put grid points exactly on the iso-value: two balls touching at one such
+// point make two sheets through one vertex, which a manifold mesh refuses. No triangle may
+// be lost there: the pair gives exactly the two balls' triangles, each ball as alone.
+TEST(IsoSurfaceExtraction, SheetsTouchingAtANodeOnTheIsoValueLoseNoTriangle) {
+  RegularGrid g;
+  g.dims = {11, 9, 9};
+  std::vector<double> left(g.pointCount()), right(g.pointCount()), both(g.pointCount());
+  for (std::size_t k = 0; k < 9; ++k)
+    for (std::size_t j = 0; j < 9; ++j)
+      for (std::size_t i = 0; i < 11; ++i) {
+        const auto squared = [&](double ci) {  // integer distance squared to (ci, 4, 4)
+          const double x = double(i) - ci, y = double(j) - 4.0, z = double(k) - 4.0;
+          return x * x + y * y + z * z;
+        };
+        const std::size_t p = g.pointIndex(i, j, k);
+        left[p] = squared(3.0), right[p] = squared(7.0);
+        both[p] = std::min(left[p], right[p]);  // the balls of radius 2 touch at (5, 4, 4)
+      }
+  const std::size_t alone = extractIsoSurface(g, left, 4.0).mesh.n_faces();
+  const ExtractedSurface pair = extractIsoSurface(g, both, 4.0);
+  EXPECT_GT(alone, 0u);
+  EXPECT_EQ(extractIsoSurface(g, right, 4.0).mesh.n_faces(), alone);
+  EXPECT_EQ(pair.mesh.n_faces(), 2 * alone);
+  EXPECT_GT(pair.separatedFaces, 0u) << "the balls should touch at one vertex";
+}
+
 TEST(PointLocator, InterpolatesLinearFieldsExactlyAndRejectsOutsidePoints) {
   const TetMesh tets = tetrahedralize(tetGrid(5, 3, 4, glm::dvec3(1e6, -2.0, 0.5), 0.25));
   const auto f = [](const glm::dvec3& p) { return 3.0 * (p.x - 1e6) - 2.0 * p.y + 0.5 * p.z; };
