@@ -25,6 +25,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <set>
 
@@ -257,11 +258,21 @@ std::pair<double, double> TfEditorPanel::dataRange() const { return dataRange_; 
 void TfEditorPanel::hostChanged() {
   hostUpdating_ = true;
   const SampleView values = host_.activeValues();  // valid during this call only
-  const ValueRange range = rangeOf(values);
-  dataRange_ = range.valid() ? std::pair(range.min, range.max > range.min ? range.max : range.min + 1.0)
-                             : std::pair(0.0, 1.0);
   const auto q = host_.activeQuantity();
   const std::string key = q ? q->key() : std::string();
+  // The range and the histogram only for other values (another model, result or step):
+  // a 512^3 cube's took half a second, and the host calls this on every change it shows.
+  const Model* model = host_.model();
+  std::ostringstream identity;
+  identity << (model ? model->sourcePath : std::string()) << '|' << key << '|' << host_.activeStep() << '|'
+           << values.data() << '|' << values.size() << '|' << int(values.type());
+  const bool newValues = identity.str() != valuesKey_;
+  if (newValues) {
+    valuesKey_ = identity.str();
+    const ValueRange range = rangeOf(values);
+    dataRange_ = range.valid() ? std::pair(range.min, range.max > range.min ? range.max : range.min + 1.0)
+                               : std::pair(0.0, 1.0);
+  }
   if (host_.modelSize() > 0.0) {
     const QSignalBlocker block(lengthBox_);
     if (key != quantityKey_ || lengthBox_->value() <= 1e-9) {
@@ -287,10 +298,8 @@ void TfEditorPanel::hostChanged() {
       }
     }
     model_.load(tf, {}, true);
-    curve_->setData(values);
-  } else {
-    curve_->setData(values);
   }
+  if (newValues) curve_->setData(values);
   hostUpdating_ = false;
   if (restored) sendToHost();
   else startIsoTable(model_.toTransferFunction());  // the preview shows the host's function too

@@ -80,6 +80,7 @@ class TfEditorPanel : public QWidget {
   QTimer* sendTimer_ = nullptr;
   std::string quantityKey_;
   std::pair<double, double> dataRange_{0.0, 1.0};  ///< of the active values (they are not kept)
+  std::string valuesKey_;  ///< which values dataRange_ and the histogram are of
   bool hostUpdating_ = false;
 
   QFuture<std::shared_ptr<optics::IsoDetectionTable>> isoFuture_;

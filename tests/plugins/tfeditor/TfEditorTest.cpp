@@ -95,6 +95,20 @@ class TfEditorTest : public QObject {
     QVERIFY(std::abs(hi - (98765.25 + pad)) < 1e-6);
   }
 
+  // The histogram and range follow other values only: a change the host shows with the same
+  // values (a color map, the volume switched on) keeps the user's zoom and costs no pass
+  // over a large model's values; new values (another step, result or file) reset the view.
+  void theHistogramIsRebuiltForOtherValuesOnly() {
+    panel_->hostChanged();
+    panel_->curve().setView(20.0, 30.0);
+    panel_->hostChanged();
+    QCOMPARE(panel_->curve().view(), std::make_pair(20.0, 30.0));
+    host_->values = std::vector<double>{500.0, 700.0, 900.0};
+    panel_->hostChanged();
+    const auto [lo, hi] = panel_->curve().view();
+    QVERIFY2(lo < 500.0 && hi > 900.0, "the view shows the new values");
+  }
+
   void startsFromTheHostsFunctionWithOpacityOverATenthOfTheModel() {
     QCOMPARE(panel_->model().referenceLength(), 1.0);
     QCOMPARE(int(panel_->model().points().size()), 2);

@@ -25,6 +25,9 @@ class SampleView {
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   std::size_t bytes() const { return size_ * bytesPerSample(type_); }
+  /// Where the values lie: with size() and type(), which values are viewed (a panel that
+  /// keeps a histogram of them knows when they are others).
+  const void* data() const { return data_; }
 
   /// The i-th value as a double (every type converts exactly).
   double operator[](std::size_t i) const {
