@@ -261,6 +261,27 @@ std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc
   });
 }
 
+void vtuDoubleRuns(const VtuArraySource& src, const VtuEncoding& enc,
+                   const std::function<void(std::size_t first, const double* values, std::size_t count)>& consume) {
+  if (src.format == VtuArraySource::Format::Ascii) {
+    const std::vector<double> values = asciiValues(src);
+    consume(0, values.data(), values.size());
+    return;
+  }
+  const BinaryRun run(src);
+  const BlockLayout b = blockLayout(src, enc, run);
+  if (!enc.compressed && run.size() - b.headerBytes < b.rawBytes)
+    fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
+                  std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
+  const std::size_t total = std::size_t(b.rawBytes / sizeOf(src.type));
+  forEachValueRun(src, enc, run, b, [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) {
+    const std::size_t n = std::min(count, total - std::min(first, total));  // as decodeBinary: never past the header's count
+    if (n == 0) return;
+    const std::vector<double> values = toDoubles(bytes, n, src.type, enc.bigEndian);
+    consume(first, values.data(), n);
+  });
+}
+
 std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc) {
   if (isFloating(src.type)) fail(src, "must hold integers, its type is floating point");
   if (src.format == VtuArraySource::Format::Ascii) {

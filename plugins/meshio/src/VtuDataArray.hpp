@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <functional>
 #include <vector>
 
 namespace volpost::meshio {
@@ -46,6 +47,11 @@ struct VtuArrayError {
 /// chunk (or a zlib block) at a time into the result: no copy of the array's raw bytes.
 std::size_t vtuValueCount(const VtuArraySource& src, const VtuEncoding& enc);
 std::vector<double> vtuDoubles(const VtuArraySource& src, const VtuEncoding& enc);
+/// The same values handed to consume(first, values, count) a run at a time, in order, so
+/// that a caller placing them elsewhere (an image's samples in their own type) holds no
+/// array of them all as doubles (text arrays are parsed whole first).
+void vtuDoubleRuns(const VtuArraySource& src, const VtuEncoding& enc,
+                   const std::function<void(std::size_t first, const double* values, std::size_t count)>& consume);
 std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc);
 /// Thrown by vtuIndices for a value outside [0, limit): its position and the value.
 struct VtuIndexError {

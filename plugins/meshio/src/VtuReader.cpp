@@ -452,28 +452,29 @@ class VtuReading {
         if (stored == SampleType::Float32 || stored == SampleType::Float64)
           for (std::size_t i = 0; i < all.size(); ++i) all.set(i, NAN);
         for (const ImageArray& part : *parts) {
-          std::vector<double> v;
+          const std::array<std::size_t, 3> n = part.extent.points();
+          const std::size_t pieceValues = n[0] * n[1] * n[2] * std::size_t(comps);
+          if (pieceValues == 0) continue;
+          // Each run of values goes straight to its place in the image (no array of the
+          // piece's values as doubles): value q is component q % comps of the piece's point
+          // q / comps, x fastest.
+          const auto place = [&](std::size_t first, const double* values, std::size_t count) {
+            for (std::size_t q = first; q < first + count && q < pieceValues; ++q) {
+              const std::size_t at = q / std::size_t(comps), c = q % std::size_t(comps);
+              const std::size_t gi = std::size_t(part.extent.e[0] - low[0]) + at % n[0],
+                                gj = std::size_t(part.extent.e[2] - low[1]) + at / n[0] % n[1],
+                                gk = std::size_t(part.extent.e[4] - low[2]) + at / (n[0] * n[1]);
+              const double x = values[q - first];
+              // Text that does not fit its declared type ("300" in an Int8 array) is kept as written.
+              if (!all.fitsExactly(x)) all = all.widenedTo(SampleType::Float64);
+              all.set((gi + size[0] * (gj + size[1] * gk)) * std::size_t(comps) + c, x);
+            }
+          };
           try {
-            v = vtuDoubles(part.source, enc);
+            vtuDoubleRuns(part.source, enc, place);
           } catch (const VtuArrayError& e) {
             throw ReadError(path, e.message);
           }
-          const std::array<std::size_t, 3> n = part.extent.points();
-          std::size_t at = 0;
-          for (std::size_t k = 0; k < n[2]; ++k)
-            for (std::size_t j = 0; j < n[1]; ++j)
-              for (std::size_t i = 0; i < n[0]; ++i, ++at) {
-                const std::size_t gi = std::size_t(part.extent.e[0] - low[0]) + i, gj = std::size_t(part.extent.e[2] - low[1]) + j,
-                                  gk = std::size_t(part.extent.e[4] - low[2]) + k;
-                if (at * std::size_t(comps) + std::size_t(comps) > v.size()) continue;
-                const std::size_t to = gi + size[0] * (gj + size[1] * gk);
-                for (int c = 0; c < comps; ++c) {
-                  const double x = v[at * std::size_t(comps) + std::size_t(c)];
-                  // Text that does not fit its declared type ("300" in an Int8 array) is kept as written.
-                  if (!all.fitsExactly(x)) all = all.widenedTo(SampleType::Float64);
-                  all.set(to * std::size_t(comps) + std::size_t(c), x);
-                }
-              }
         }
         return all;
       };
