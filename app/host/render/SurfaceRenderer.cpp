@@ -89,12 +89,23 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
   const SurfaceMesh& m = surface.mesh;
   std::vector<SurfaceVertex> vertices;
   vertices.reserve(m.n_faces() * 3);
+  // The scalars buffer holds the surface's own nodes and cells only (a 512^3 grid's
+  // boundary touches 1.6M of its 134M points): each vertex carries their place in it.
+  scalarNodes_.clear();
+  scalarCells_.clear();
+  std::unordered_map<NodeIndex, std::uint32_t> nodeSlot;
+  std::unordered_map<std::uint32_t, std::uint32_t> cellSlot;
+  const auto slotOf = [](auto& slots, auto& list, auto id) {
+    const auto [it, added] = slots.try_emplace(id, std::uint32_t(list.size()));
+    if (added) list.push_back(id);
+    return it->second;
+  };
   for (const auto f : m.faces()) {
     const auto n = m.normal(f);
-    const std::uint32_t cell = m.property(surface.cellOfFace, f);
+    const std::uint32_t cell = slotOf(cellSlot, scalarCells_, m.property(surface.cellOfFace, f));
     for (const auto v : f.vertices()) {
       const auto p = m.point(v);
-      vertices.push_back({{p[0], p[1], p[2]}, {n[0], n[1], n[2]}, m.property(surface.nodeOfVertex, v), cell});
+      vertices.push_back({{p[0], p[1], p[2]}, {n[0], n[1], n[2]}, slotOf(nodeSlot, scalarNodes_, m.property(surface.nodeOfVertex, v)), cell});
     }
   }
   triangleVertices_ = GLsizei(vertices.size());
@@ -145,6 +156,8 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
 
 void SurfaceRenderer::setTriangles(const std::vector<glm::dvec3>& corners, const glm::dvec3& origin) {
   origin_ = origin;
+  scalarNodes_.clear();  // one value per corner, in order
+  scalarCells_.clear();
   std::vector<SurfaceVertex> vertices;
   vertices.reserve(corners.size());
   for (std::size_t t = 0; t + 2 < corners.size(); t += 3) {
@@ -182,10 +195,13 @@ void SurfaceRenderer::setLines(const std::vector<glm::dvec3>& endpoints, const g
 }
 
 void SurfaceRenderer::setScalars(FieldLocation location, SampleView values, double min, double max) {
-  std::vector<float> data(values.size());
-  values.visit([&data](auto typed) {
-    for (std::size_t i = 0; i < typed.size(); ++i) {
-      const double v = double(typed[i]);
+  const std::vector<std::uint32_t>& used = location == FieldLocation::Node ? scalarNodes_ : scalarCells_;
+  const bool gathered = !used.empty();  // a surface: its own nodes or cells; else one value per corner
+  std::vector<float> data(gathered ? used.size() : values.size());
+  values.visit([&](auto typed) {
+    for (std::size_t i = 0; i < data.size(); ++i) {
+      const std::size_t from = gathered ? used[i] : i;
+      const double v = from < typed.size() ? double(typed[from]) : NAN;
       data[i] = std::isfinite(v) ? float(v) : kNoValue;
     }
   });
