@@ -2,7 +2,9 @@
 // A read-only view of values in whatever type holds them: the samples of a field as its
 // file stored them (a 16-bit seismic cube, 2 bytes a point) or doubles computed from a
 // result. What draws, cuts or counts a whole grid takes this view, so showing a 2 GB cube
-// of 16-bit samples does not first make an 8 GB array of doubles of it.
+// of 16-bit samples does not first make an 8 GB array of doubles of it. A view owns
+// nothing: what it views must outlive it (a temporary vector only for the call it is
+// passed to).
 #pragma once
 
 #include <volpost/core/SampleArray.hpp>
