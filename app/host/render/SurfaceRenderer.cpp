@@ -90,22 +90,18 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
   std::vector<SurfaceVertex> vertices;
   vertices.reserve(m.n_faces() * 3);
   // The scalars buffer holds the surface's own nodes and cells only (a 512^3 grid's
-  // boundary touches 1.6M of its 134M points): each vertex carries their place in it.
-  scalarNodes_.clear();
-  scalarCells_.clear();
-  std::unordered_map<NodeIndex, std::uint32_t> nodeSlot;
-  std::unordered_map<std::uint32_t, std::uint32_t> cellSlot;
-  const auto slotOf = [](auto& slots, auto& list, auto id) {
-    const auto [it, added] = slots.try_emplace(id, std::uint32_t(list.size()));
-    if (added) list.push_back(id);
-    return it->second;
-  };
+  // boundary touches 1.6M of its 134M points): one value per surface vertex and per face,
+  // gathered from the model's node or cell each stands for.
+  scalarNodes_.resize(m.n_vertices());
+  scalarCells_.resize(m.n_faces());
+  for (const auto v : m.vertices()) scalarNodes_[std::size_t(v.idx())] = m.property(surface.nodeOfVertex, v);
   for (const auto f : m.faces()) {
     const auto n = m.normal(f);
-    const std::uint32_t cell = slotOf(cellSlot, scalarCells_, m.property(surface.cellOfFace, f));
+    const auto face = std::uint32_t(f.idx());
+    scalarCells_[face] = m.property(surface.cellOfFace, f);
     for (const auto v : f.vertices()) {
       const auto p = m.point(v);
-      vertices.push_back({{p[0], p[1], p[2]}, {n[0], n[1], n[2]}, slotOf(nodeSlot, scalarNodes_, m.property(surface.nodeOfVertex, v)), cell});
+      vertices.push_back({{p[0], p[1], p[2]}, {n[0], n[1], n[2]}, std::uint32_t(v.idx()), face});
     }
   }
   triangleVertices_ = GLsizei(vertices.size());

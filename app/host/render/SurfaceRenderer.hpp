@@ -78,8 +78,9 @@ class SurfaceRenderer : public Renderer {
   static std::vector<float> withOtherEnds(const std::vector<float>& segments, const std::vector<float>& spacing);
   bool fadeDenseEdges_ = true;  ///< element edges fade where they crowd; outlines do not
   glm::dvec3 origin_{0.0};  ///< what the uploaded positions are relative to
-  /// The surface's nodes and cells in the order of their scalars on the GPU (setSurface);
-  /// empty after setTriangles, whose scalars are one per corner.
+  /// The model's node of each surface vertex and cell of each face, in the order of their
+  /// scalars on the GPU (setSurface); empty after setTriangles, whose scalars are one per
+  /// corner.
   std::vector<std::uint32_t> scalarNodes_, scalarCells_;
   std::vector<ClipPlane> clipPlanes_;
   double clipTolerance_ = 0.0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/SampleArray.hpp>
 
-#include <volpost/core/WorkerThreads.hpp>
+#include <volpost/core/SampleView.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -97,16 +97,7 @@ SampleArray SampleArray::widenedTo(SampleType wider) const {
   return out;
 }
 
-void SampleArray::copyTo(std::span<double> out) const {
-  if (out.size() != size()) throw std::invalid_argument("copyTo: the target's size differs");
-  std::visit(
-      [&out](const auto& v) {
-        forEachChunk(v.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
-          for (std::size_t i = begin; i < end; ++i) out[i] = double(v[i]);
-        });
-      },
-      values_);
-}
+void SampleArray::copyTo(std::span<double> out) const { SampleView(*this).copyTo(out); }
 
 std::vector<double> SampleArray::toDoubles() const {
   std::vector<double> out(size());

@@ -3,6 +3,8 @@
 
 #include <volpost/core/WorkerThreads.hpp>
 
+#include <stdexcept>
+
 namespace volpost {
 
 SampleView::SampleView(const SampleArray& samples) : size_(samples.size()), type_(samples.type()) {
@@ -21,19 +23,17 @@ SampleView::SampleView(const SampleArray& samples) : size_(samples.size()), type
 std::span<const double> SampleView::doubles(std::vector<double>& scratch) const {
   if (type_ == SampleType::Float64) return typed<double>();
   scratch.resize(size_);
-  visit([&scratch](auto values) {
-    forEachChunk(values.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i) scratch[i] = double(values[i]);
-    });
-  });
+  copyTo(scratch);
   return scratch;
 }
 
-std::vector<double> SampleView::toDoubles() const {
-  std::vector<double> out;
-  if (type_ == SampleType::Float64) return std::vector<double>(typed<double>().begin(), typed<double>().end());
-  doubles(out);
-  return out;
+void SampleView::copyTo(std::span<double> out) const {
+  if (out.size() != size_) throw std::invalid_argument("copyTo: the target's size differs");
+  visit([&out](auto values) {
+    forEachChunk(values.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) out[i] = double(values[i]);
+    });
+  });
 }
 
 }  // namespace volpost

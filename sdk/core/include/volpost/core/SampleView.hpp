@@ -66,7 +66,8 @@ class SampleView {
   /// The values as doubles: the view's own when they are doubles, else converted into
   /// `scratch` (for what needs doubles and is not worth a loop per type).
   std::span<const double> doubles(std::vector<double>& scratch) const;
-  std::vector<double> toDoubles() const;
+  /// All values as doubles into `out` (its size is size()), converted on all cores.
+  void copyTo(std::span<double> out) const;
 
  private:
   template <typename T>
