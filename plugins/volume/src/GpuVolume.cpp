@@ -113,25 +113,14 @@ void GpuVolume::setGrid(const RegularGrid& grid, SampleView values) {
 
 namespace {
 
-// Whether every finite value is an integer within `limit` in magnitude; the smallest one.
+// Whether every finite value is a whole number (always, for an integer type).
 template <typename T>
-bool integersWithin(std::span<const T> values, double limit, double& minimum) {
-  if constexpr (std::is_integral_v<T>) {  // no loop for a type whose every value fits
-    if (double(std::numeric_limits<T>::max()) <= limit && double(std::numeric_limits<T>::min()) >= -limit) {
-      minimum = values.empty() ? 0.0 : double(*std::min_element(values.begin(), values.end()));
-      return true;
-    }
+bool finiteValuesAreIntegers(std::span<const T> values) {
+  if constexpr (!std::is_integral_v<T>) {
+    for (const T value : values)
+      if (std::isfinite(value) && value != std::nearbyint(value)) return false;
   }
-  bool integers = true, any = false;
-  minimum = 0.0;
-  for (const T value : values) {
-    const double v = double(value);
-    if (!std::isfinite(v)) continue;
-    integers = integers && v == std::nearbyint(v) && std::abs(v) <= limit;
-    minimum = any ? std::min(minimum, v) : v;
-    any = true;
-  }
-  return integers && any;
+  return true;
 }
 
 template <typename Texel, typename T>
@@ -152,15 +141,13 @@ std::vector<Texel> integerTexels(std::span<const T> values, double minimum) {
 // number is drawn as the field's minimum. Each type's values are read in that type, never
 // copied to doubles first.
 void GpuVolume::makeGridTexels(SampleView values) {
-  setValueFrame(gpu_, values);
+  const ValueRange range = rangeOf(values);
+  setValueFrame(gpu_, range);
   using Format = GridTexels::Format;
   GridTexels t;
-  double minimum = 0.0;
-  t.format = values.visit([&](auto typed) {
-    if (integersWithin(typed, 127.0, minimum)) return Format::Snorm8;
-    if (integersWithin(typed, 32767.0, minimum)) return Format::Snorm16;
-    return Format::Float32;
-  });
+  const double minimum = range.min, largest = std::max(std::abs(range.min), std::abs(range.max));
+  const bool integers = range.valid() && values.visit([](auto typed) { return finiteValuesAreIntegers(typed); });
+  t.format = !integers || largest > 32767.0 ? Format::Float32 : largest <= 127.0 ? Format::Snorm8 : Format::Snorm16;
   if (t.format == Format::Float32) {
     t.floats.resize(values.size());
     values.visit([&](auto typed) {

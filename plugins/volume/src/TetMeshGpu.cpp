@@ -173,8 +173,9 @@ glm::ivec4 TetMeshGpu::neighborsOf(std::size_t tet) const {
 }
 
 // The range of the finite values (see TetMeshGpu::valueOffset).
-void setValueFrame(TetMeshGpu& g, SampleView values) {
-  const ValueRange range = rangeOf(values);
+void setValueFrame(TetMeshGpu& g, SampleView values) { setValueFrame(g, rangeOf(values)); }
+
+void setValueFrame(TetMeshGpu& g, const ValueRange& range) {
   const double lo = range.min, hi = range.max;  // 0, 0 without a finite value
   g.valueMin = lo;
   g.valueMax = hi;

@@ -9,6 +9,7 @@
 
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
+#include <volpost/core/Quantity.hpp>
 #include <volpost/core/SampleView.hpp>
 #include <volpost/core/TetAdjacency.hpp>
 
@@ -91,6 +92,8 @@ void packNeighbors(std::vector<std::uint32_t>& words, std::size_t tetCount, std:
 
 /// Sets valueMin/Max and the frame (valueOffset, valueScale) from the finite values.
 void setValueFrame(TetMeshGpu& gpu, SampleView values);
+/// The same from the values' range, already known.
+void setValueFrame(TetMeshGpu& gpu, const ValueRange& range);
 
 /// Throws std::invalid_argument for cells that are not tetrahedra or a wrong value count.
 /// Built on all cores.
