@@ -76,16 +76,16 @@ int neighborAcross(int tet, int k, out int entryFace) {
 float l1(vec3 v) { return abs(v.x) + abs(v.y) + abs(v.z); }
 double firstNonZero(dvec3 v) { return v.x != 0.0lf ? v.x : v.y != 0.0lf ? v.y : v.z; }
 
-float edgeProduct(uint p, uint q) {
+float edgeProduct(uint p, uint q, vec3 pp, vec3 pq) {
   bool ascending = p < q;
-  uint lo = ascending ? p : q, hi = ascending ? q : p;
-  precise vec3 a = nodes[lo].xyz - rayOrigin;
-  precise vec3 b = nodes[hi].xyz - rayOrigin;
+  vec3 lo = ascending ? pp : pq, hi = ascending ? pq : pp;
+  precise vec3 a = lo - rayOrigin;
+  precise vec3 b = hi - rayOrigin;
   precise float c = dot(rayDir, cross(a, b));
   if (abs(c) <= 1e-6 * l1(a) * l1(b)) {
     dvec3 o = dvec3(rayOrigin), d = dvec3(rayDir);
-    precise dvec3 da = dvec3(nodes[lo].xyz) - o;
-    precise dvec3 db = dvec3(nodes[hi].xyz) - o;
+    precise dvec3 da = dvec3(lo) - o;
+    precise dvec3 db = dvec3(hi) - o;
     precise double v = dot(d, cross(da, db));
     if (v == 0.0lf) v = firstNonZero(cross(da - db, d));  // the origin's move
     if (v == 0.0lf) {  // the edge is parallel to the ray: the direction's move
@@ -100,23 +100,69 @@ float edgeProduct(uint p, uint q) {
   }
   return ascending ? c : -c;
 }
+// The product as computed from the lower id to the higher (what both tets of a face share).
+float fromLowerId(uint p, uint q, float product) { return p < q ? product : -product; }
+
+// The exit face's three edge products, carried into the tet across, where that face is the
+// entry face: the next step computes only the three edges to its fourth vertex, and the two
+// tets of a face decide with the very same numbers. ids: the face's vertices; lowerFirst[i]:
+// the product of the edge that leaves out ids[i], from its lower id to its higher.
+struct CarriedFace {
+  bool valid;
+  uvec3 ids;
+  vec3 lowerFirst;
+};
+
+// The product p -> q of an edge of the carried face.
+float carriedProduct(CarriedFace c, uint p, uint q) {
+  uint other = c.ids.x + c.ids.y + c.ids.z - p - q;  // the face's vertex not on the edge
+  float v = other == c.ids.x ? c.lowerFirst.x : other == c.ids.y ? c.lowerFirst.y : c.lowerFirst.z;
+  return p < q ? v : -v;
+}
 
 // The face (its index in the tet, opposite that vertex) a ray entered through face `entry`
 // leaves by: with the entry face's vertices a, b, c (in FACE order) and the fourth vertex k,
 // the ray leaves through the face opposite a when k->b turns like the entry face and k->c
 // the other way, and so on round. Float signs that name no face (only in near-degenerate
 // tets) give the face the ray misses by the least.
-int exitFaceOf(uvec4 tv, int entry) {
+int exitFaceOf(uvec4 tv, mat4 P, int entry, inout CarriedFace carried) {
   ivec3 f = FACE[entry];
   uint A = tv[f.x], B = tv[f.y], C = tv[f.z], K = tv[entry];
-  int votes = int(edgeProduct(A, B) > 0.0) + int(edgeProduct(B, C) > 0.0) + int(edgeProduct(C, A) > 0.0);
+  vec3 pA = P[f.x].xyz, pB = P[f.y].xyz, pC = P[f.z].xyz, pK = P[entry].xyz;
+  float pAB, pBC, pCA;
+  if (carried.valid) {
+    pAB = carriedProduct(carried, A, B);
+    pBC = carriedProduct(carried, B, C);
+    pCA = carriedProduct(carried, C, A);
+  } else {
+    pAB = edgeProduct(A, B, pA, pB);
+    pBC = edgeProduct(B, C, pB, pC);
+    pCA = edgeProduct(C, A, pC, pA);
+  }
+  int votes = int(pAB > 0.0) + int(pBC > 0.0) + int(pCA > 0.0);
   float s = votes >= 2 ? 1.0 : -1.0;  // how the entry face turns around the ray
-  float eA = s * edgeProduct(K, A), eB = s * edgeProduct(K, B), eC = s * edgeProduct(K, C);
-  if (eB > 0.0 && eC < 0.0) return f.x;
-  if (eC > 0.0 && eA < 0.0) return f.y;
-  if (eA > 0.0 && eB < 0.0) return f.z;
-  float m0 = min(eB, -eC), m1 = min(eC, -eA), m2 = min(eA, -eB);
-  return m0 >= m1 && m0 >= m2 ? f.x : (m1 >= m2 ? f.y : f.z);
+  float kA = edgeProduct(K, A, pK, pA), kB = edgeProduct(K, B, pK, pB), kC = edgeProduct(K, C, pK, pC);
+  float eA = s * kA, eB = s * kB, eC = s * kC;
+  int exitFace;
+  if (eB > 0.0 && eC < 0.0) exitFace = f.x;
+  else if (eC > 0.0 && eA < 0.0) exitFace = f.y;
+  else if (eA > 0.0 && eB < 0.0) exitFace = f.z;
+  else {
+    float m0 = min(eB, -eC), m1 = min(eC, -eA), m2 = min(eA, -eB);
+    exitFace = m0 >= m1 && m0 >= m2 ? f.x : (m1 >= m2 ? f.y : f.z);
+  }
+  carried.valid = true;
+  if (exitFace == f.x) {
+    carried.ids = uvec3(B, C, K);
+    carried.lowerFirst = vec3(fromLowerId(K, C, kC), fromLowerId(K, B, kB), fromLowerId(B, C, pBC));
+  } else if (exitFace == f.y) {
+    carried.ids = uvec3(A, C, K);
+    carried.lowerFirst = vec3(fromLowerId(K, C, kC), fromLowerId(K, A, kA), fromLowerId(C, A, pCA));
+  } else {
+    carried.ids = uvec3(A, B, K);
+    carried.lowerFirst = vec3(fromLowerId(K, B, kB), fromLowerId(K, A, kA), fromLowerId(A, B, pAB));
+  }
+  return exitFace;
 }
 
 // Nearest entry (front-facing boundary face) hit with parameter >= tMin, other than the
@@ -146,8 +192,9 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
       uint tet = code >> 2;
       int k = int(code & 3u);
       uvec4 tv = tets[tet];
+      mat4 P = cornersOf(tv);
       vec3 n, a;
-      facePlane(tv, k, n, a);
+      facePlane(P, k, n, a);
       float den = dot(n, rayDir);
       if (den >= 0.0) continue;  // leaving through it, not entering
       float t = dot(n, a - rayOrigin) / den;
@@ -157,8 +204,8 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
       // one of them (and the walk agrees with it).
       ivec3 f = FACE[k];
       uint A = tv[f.x], B = tv[f.y], C = tv[f.z];
-      float sAB = edgeProduct(A, B), sBC = edgeProduct(B, C), sCA = edgeProduct(C, A);
-      vec3 p0 = nodes[A].xyz, p1 = nodes[B].xyz, p2 = nodes[C].xyz;
+      vec3 p0 = P[f.x].xyz, p1 = P[f.y].xyz, p2 = P[f.z].xyz;
+      float sAB = edgeProduct(A, B, p0, p1), sBC = edgeProduct(B, C, p1, p2), sCA = edgeProduct(C, A, p2, p0);
       bool outwardListing = dot(cross(p1 - p0, p2 - p0), n) > 0.0;  // then entering turns negative
       bool entering = outwardListing ? (sAB < 0.0 && sBC < 0.0 && sCA < 0.0) : (sAB > 0.0 && sBC > 0.0 && sCA > 0.0);
       if (!entering) continue;
@@ -184,6 +231,8 @@ void main() {
   int steps = 0;
   uint lastEntry = 0xffffffffu;
   int tet = -1, face = 0;
+  CarriedFace carried;
+  carried.valid = false;
   if (phase != PHASE_FRESH) {  // carry on where the last pass stopped
     vec4 sofar = imageLoad(outImage, pix);  // an unfinished ray's pixel holds its transmittance
     accColor = sofar.rgb;
@@ -203,23 +252,27 @@ void main() {
       if (tet < 0 || tIn > tEnd) { finished = true; break; }
       lastEntry = uint(tet) * 4u + uint(face);
       t = tIn;
+      carried.valid = false;
     }
     // Walk until the ray leaves the mesh, then look for where it comes back.
     while (steps < passEnd && accT >= terminationTransmittance) {
       ++steps;
       uvec4 tv = tets[tet];
-      int exitFace = exitFaceOf(tv, face);
+      mat4 P = cornersOf(tv);
+      int exitFace = exitFaceOf(tv, P, face, carried);
       // Where it leaves: the exit face's plane, kept within the tet's extent along the ray
       // (a ray running in the face's plane may cross it anywhere along the face).
-      vec3 q0 = nodes[tv.x].xyz, q1 = nodes[tv.y].xyz, q2 = nodes[tv.z].xyz, q3 = nodes[tv.w].xyz;
-      float diameter = max(max(max(distance(q0, q1), distance(q0, q2)), max(distance(q0, q3), distance(q1, q2))),
-                           max(distance(q1, q3), distance(q2, q3)));
+      // (One square root of the longest squared edge: the same number as the longest edge.)
+      vec3 e01 = P[1].xyz - P[0].xyz, e02 = P[2].xyz - P[0].xyz, e03 = P[3].xyz - P[0].xyz;
+      vec3 e12 = P[2].xyz - P[1].xyz, e13 = P[3].xyz - P[1].xyz, e23 = P[3].xyz - P[2].xyz;
+      float diameter = sqrt(max(max(max(dot(e01, e01), dot(e02, e02)), max(dot(e03, e03), dot(e12, e12))),
+                                max(dot(e13, e13), dot(e23, e23))));
       vec3 n, a;
-      facePlane(tv, exitFace, n, a);
+      facePlane(P, exitFace, n, a);
       float den = dot(n, rayDir);
       float tOut = den > 0.0 ? dot(n, a - rayOrigin) / den : t;
       tOut = clamp(tOut, t, t + 1.001 * diameter);
-      integrate(tv, uint(tet), t, min(tOut, tEnd));
+      integrate(P, uint(tet), t, min(tOut, tEnd));
       t = tOut;
       if (tOut >= tEnd) { finished = true; break; }
       int entry;

@@ -75,7 +75,7 @@ void main() {
   tIn = max(tIn, range.x);
   tOut = min(tOut, range.y);  // opaque geometry in front of the exit ends the segment there
   if (tOut <= tIn) discard;
-  integrate(tv, vTet, tIn, tOut);
+  integrate(cornersOf(tv), vTet, tIn, tOut);
   // Defensive: a tet flat in float32 has no defined barycentric values; its fragment must
   // not poison the image with NaN.
   if (isnan(accT) || any(isnan(accColor))) discard;
