@@ -15,10 +15,6 @@
 // one dispatch, but its grid march was not, docs/seismic.md).
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D outImage;
-// The tet across each face: three words per tet holding four 24-bit fields, then the far
-// pairs (TetMeshGpu::neighbors): 0 = boundary, 1 = far, else the index step to the tet
-// across (bits 2..23, signed) and the face it is entered through (bits 0..1).
-layout(std430, binding = BINDING_NEIGHBORS) readonly buffer Neighbors { uint neighborWords[]; };
 layout(std430, binding = BINDING_BVH) readonly buffer Bvh { vec4 bvh[]; };
 layout(std430, binding = BINDING_BOUNDARY_FACES) readonly buffer BoundaryFaces { uint boundaryFaces[]; };
 // Per pixel: x = phase (bits 0-1) | face entered (bits 2-3) | steps taken (bits 4-31);
@@ -33,37 +29,12 @@ layout(std430, binding = BINDING_RAY_COUNTERS) buffer RayCounters {
 uniform int maxSteps;      // for the whole ray
 uniform int stepsPerPass;  // this dispatch's share of them
 uniform ivec2 band;        // the rows this dispatch covers (first, count); rayState holds them only
-uniform uint farNeighborBase;   // where the far pairs start in neighborWords (3 x tets)
-uniform uint farNeighborCount;
+uniform float reentryTolerance;  // a millionth of the mesh's diagonal
 const uint PHASE_FRESH = 0u, PHASE_WALKING = 1u, PHASE_SEEKING = 2u, PHASE_DONE = 3u;
 
 #include "common/tet_segment.glsl"
-
-// The packed field of tet `tet`'s face k.
-uint neighborField(int tet, int k) {
-  uint b = uint(tet) * 3u;
-  if (k == 0) return neighborWords[b] & 0xffffffu;
-  if (k == 1) return (neighborWords[b] >> 24) | ((neighborWords[b + 1u] & 0xffffu) << 8);
-  if (k == 2) return (neighborWords[b + 1u] >> 16) | ((neighborWords[b + 2u] & 0xffu) << 16);
-  return neighborWords[b + 2u] >> 8;
-}
-
-// The tet across face k of `tet` (-1: the boundary) and the face the ray enters it through.
-int neighborAcross(int tet, int k, out int entryFace) {
-  uint field = neighborField(tet, k);
-  entryFace = int(field & 3u);
-  if (field == 0u) return -1;
-  if (field != 1u) return tet + (int(field << 8) >> 10);
-  uint key = uint(tet) * 4u + uint(k), lo = 0u, hi = farNeighborCount;  // a far one: search its pair
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (neighborWords[farNeighborBase + 2u * mid] < key) lo = mid + 1u;
-    else hi = mid;
-  }
-  uint target = neighborWords[farNeighborBase + 2u * lo + 1u];
-  entryFace = int(target & 3u);
-  return int(target >> 2);
-}
+#include "common/tet_neighbors.glsl"
+#include "common/hidden_tets.glsl"
 
 // ---- the exit decision ---------------------------------------------------------------
 // The ray's Plucker product with the edge p -> q (vertex ids), computed from the lower id to
@@ -182,8 +153,15 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
     float enter = max(max(tn.x, tn.y), max(tn.z, tMin)), leave = min(min(tx.x, tx.y), min(tx.z, tHit));
     if (!(enter <= leave)) continue;  // NaN-safe: a NaN compares false
     uint first = floatBitsToUint(lo.w), count = floatBitsToUint(hi.w);
-    if (count == 0u) {
-      if (top < 62) { stack[top++] = first; stack[top++] = first + 1u; }
+    if (count == 0u) {  // the nearer child on top: its hits shorten the search of the other
+      if (top < 62) {
+        vec3 a0 = (bvh[2u * first].xyz - rayOrigin) * inv, a1 = (bvh[2u * first + 1u].xyz - rayOrigin) * inv;
+        vec3 b0 = (bvh[2u * first + 2u].xyz - rayOrigin) * inv, b1 = (bvh[2u * first + 3u].xyz - rayOrigin) * inv;
+        vec3 an = min(a0, a1), bn = min(b0, b1);
+        bool secondNearer = max(max(bn.x, bn.y), bn.z) < max(max(an.x, an.y), an.z);
+        stack[top++] = secondNearer ? first : first + 1u;
+        stack[top++] = secondNearer ? first + 1u : first;
+      }
       continue;
     }
     for (uint i = first; i < first + count; ++i) {
@@ -233,6 +211,7 @@ void main() {
   int tet = -1, face = 0;
   CarriedFace carried;
   carried.valid = false;
+  float tEntered = -3.4e38;  // where the ray last entered (unknown when a pass resumes)
   if (phase != PHASE_FRESH) {  // carry on where the last pass stopped
     vec4 sofar = imageLoad(outImage, pix);  // an unfinished ray's pixel holds its transmittance
     accColor = sofar.rgb;
@@ -252,6 +231,7 @@ void main() {
       if (tet < 0 || tIn > tEnd) { finished = true; break; }
       lastEntry = uint(tet) * 4u + uint(face);
       t = tIn;
+      tEntered = tIn;
       carried.valid = false;
     }
     // Walk until the ray leaves the mesh, then look for where it comes back.
@@ -277,7 +257,15 @@ void main() {
       if (tOut >= tEnd) { finished = true; break; }
       int entry;
       int next = neighborAcross(tet, exitFace, entry);
-      if (next < 0) { tet = -1; break; }  // left the mesh
+      if (next < 0 || tetHidden(next)) {  // left the mesh, or the part that shows
+        // Search again from a little before the exit: where the ray leaves through an edge
+        // or a vertex into a tet it only touches there, that tet's face is crossed at the
+        // same point, computed from another plane (the CPU ray caster's tolerance). Never
+        // before the last entry: that part is walked already.
+        t = max(tOut - reentryTolerance, tEntered);
+        tet = -1;
+        break;
+      }
       face = entry;
       tet = next;
     }

@@ -14,6 +14,7 @@
 layout(std430, binding = BINDING_NODES) readonly buffer Nodes { vec4 nodes[]; };
 layout(std430, binding = BINDING_TETS) readonly buffer Tets { uvec4 tets[]; };
 layout(std430, binding = BINDING_ORDER) readonly buffer Order { uint order[]; };
+#include "common/hidden_tets.glsl"
 uniform mat4 viewProjection;  // mesh-relative -> clip, y flipped: row 0 of the image is the top
 uniform vec2 viewportSize;    // pixels
 
@@ -69,8 +70,12 @@ vec2 grown(vec2 hull[4], int count, int i) {
 
 void main() {
   uint tet = order[gl_VertexID / 6];
-  uvec4 tv = tets[tet];
   vTet = tet;
+  if (tetHidden(int(tet))) {  // nothing to draw: outside the clip volume, no fragment
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    return;
+  }
+  uvec4 tv = tets[tet];
   vec2 q[4];
   bool behindEye = false;
   for (int k = 0; k < 4; ++k) {

@@ -89,7 +89,7 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   location_ = location;
   ++meshRevision_;
   ++revision_;
-  meshDirty_ = true;
+  meshDirty_ = visibleDirty_ = true;
 }
 
 void GpuVolume::setGrid(const RegularGrid& grid, SampleView values) {
@@ -175,7 +175,7 @@ void GpuVolume::setGridValues(SampleView values) {
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid_->pointCount()) + " points");
   makeGridTexels(values);
-  valuesDirty_ = true;
+  valuesDirty_ = visibleDirty_ = true;
   ++revision_;
 }
 
@@ -198,7 +198,7 @@ void GpuVolume::setValues(SampleView values) {
 void GpuVolume::setTransferFunction(const TransferFunction& tf) {
   if (tf == tf_) return;
   tf_ = tf;
-  tablesDirty_ = true;
+  tablesDirty_ = visibleDirty_ = true;
   ++revision_;
 }
 
@@ -225,6 +225,13 @@ void GpuVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) 
   for (const optics::IsoSurface& s : surfaces)
     if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
       throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
+  // Tets an iso-surface passes through show: a new value changes what rays skip.
+  const auto valuesOf = [](const std::vector<optics::IsoSurface>& list) {
+    std::vector<double> v;
+    for (const optics::IsoSurface& s : list) v.push_back(s.value);
+    return v;
+  };
+  if (valuesOf(surfaces) != valuesOf(isoSurfaces_)) visibleDirty_ = true;
   isoSurfaces_ = surfaces;
   ++revision_;
 }
@@ -246,7 +253,7 @@ void GpuVolume::initialize() {
   setFilter(psiTable_.id(), GL_LINEAR);
   glTextureSubImage2D(psiTable_.id(), 0, 0, 0, psiResolution, psiResolution, GL_RED, GL_FLOAT, psi.values().data());
   initialized_ = true;
-  meshDirty_ = tablesDirty_ = true;  // a fresh context holds nothing yet
+  meshDirty_ = tablesDirty_ = visibleDirty_ = true;  // a fresh context holds nothing yet
   meshUploads_ = valueUploads_ = tableBuilds_ = 0;
   gl::check("GpuVolume::initialize");
 }
@@ -260,6 +267,7 @@ void GpuVolume::release() {
   for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
   tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
+  visible_.release();
   programs_.clear();
   composite_.release();
   imageWidth_ = imageHeight_ = 0;
@@ -277,9 +285,24 @@ void GpuVolume::prepare(const RenderContext& ctx) {
   if (grid_) layOutBricks();  // the budget may have changed since
   if (tf2dDirty_) uploadTransferFunction2D();
   if (tablesNeedRebuild()) rebuildTables();
+  if (visibleDirty_ && hasTets()) findVisibleTets(ctx);
   // A table finished since the last frame goes up now; with none uploaded yet, wait.
   collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
   ensureImage(ctx.width, ctx.height);
+}
+
+// After the tables: the test reads the control points' zero-extinction runs.
+void GpuVolume::findVisibleTets(const RenderContext& ctx) {
+  visibleDirty_ = false;
+  if (!emptySpaceSkipping_) {
+    visible_.release();
+    return;
+  }
+  const GLuint p = program({"volume/visible_tets.comp"});
+  setSegmentUniforms(p, ctx);
+  bindSegmentResources(ctx);
+  visible_.update(p, gpu_);
+  gl::check("GpuVolume::findVisibleTets");
 }
 
 void GpuVolume::uploadMesh() {
@@ -550,6 +573,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("orthographic"), ctx.camera.projection() == Camera::Projection::Orthographic);
   glProgramUniform2i(p, u("imageSize_"), ctx.width, ctx.height);
   glProgramUniform1i(p, u("cellField"), location_ == FieldLocation::Cell);
+  glProgramUniform1i(p, u("skipsHiddenTets"), skipsHiddenTets());
   const double meanEdge = gpu_.maxEdge * 0.5;
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
   glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));
@@ -630,6 +654,7 @@ void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
       {binding::kTfColorTau, &tfColorTau_}, {binding::kTfValues, &tfValues_},
       {binding::kTfKnots, &tfKnots_}};
   for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
+  if (skipsHiddenTets()) visible_.bind();
 }
 
 void GpuVolume::compositeOver(const RenderContext& ctx, GLuint image) const {
@@ -642,7 +667,7 @@ VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tetCount;
   s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
-  s.gpuBytes = s.meshBytes + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
+  s.gpuBytes = s.meshBytes + visible_.bytes() + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
                (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
                (preTable_ ? std::size_t(preResolution) * preResolution * preDepthResolution * 12 +
                                 tf_.points().size() * 16

@@ -15,6 +15,7 @@
 #include "GridBricks.hpp"
 #include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
+#include "VisibleTetsGpu.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
@@ -69,6 +70,17 @@ class GpuVolume {
     ++revision_;
   }
   void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
+  /// Tets only: whether rays skip the tets the transfer function and the iso-surfaces leave
+  /// transparent (VisibleTetsGpu; on by default). Off, every tet a ray crosses is walked;
+  /// the picture is the same (tested).
+  void setEmptySpaceSkipping(bool on) {
+    if (on == emptySpaceSkipping_) return;
+    emptySpaceSkipping_ = on;
+    visibleDirty_ = true;
+    ++revision_;
+  }
+  /// The part the last prepare() found: tets that can show something, and the faces where it ends.
+  const VisibleTetsGpu& visibleTets() const { return visible_; }
   /// Whether the tets and their neighbours stay in host memory after they went to the GPU
   /// (cell projection sorts them on the CPU every frame). Otherwise they are let go once
   /// uploaded (32 bytes per tet: at 100M tets, 3.2 GB of host memory the ray caster never
@@ -143,6 +155,8 @@ class GpuVolume {
 
  private:
   void uploadMesh();
+  void findVisibleTets(const RenderContext& ctx);
+  bool skipsHiddenTets() const { return emptySpaceSkipping_ && !grid_ && !visibleDirty_ && visible_.skipping(); }
   void uploadValues();
   void uploadGrid();
   /// Lays out the grid's bricks for the present budget (nothing changes when it is the same).
@@ -182,11 +196,12 @@ class GpuVolume {
   double termination_ = 0.002;
   bool shading_ = false;
   bool asynchronous_ = false;
+  bool emptySpaceSkipping_ = true;
   std::size_t meshRevision_ = 0;
   std::uint64_t revision_ = 0;
 
   // What the GPU holds relative to that state.
-  bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true;
+  bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true, visibleDirty_ = true;
   std::size_t builtRevision_ = std::size_t(-1);
   double tableLo_ = 0.0, tableHi_ = 1.0;
   float zeroBelow_ = 0.0f;  ///< the extinction is zero from below the first point up to this value
@@ -203,6 +218,7 @@ class GpuVolume {
   gl::Texture psiTable_, isoTable_, preTable_, image_, tf2dTable_;
   bool tf2dDirty_ = false;
   GridBricks bricks_;
+  VisibleTetsGpu visible_;
   int imageWidth_ = 0, imageHeight_ = 0;
 };
 

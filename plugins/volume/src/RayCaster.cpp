@@ -71,6 +71,7 @@ std::size_t RayCaster::dispatch(const RenderContext& ctx, GLuint image, int firs
   glProgramUniform1ui(p, glGetUniformLocation(p, "farNeighborBase"), GLuint(volume_.mesh().tetCount * 3));
   glProgramUniform1ui(p, glGetUniformLocation(p, "farNeighborCount"), GLuint(volume_.mesh().farNeighbors));
   glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), steps);
+  glProgramUniform1f(p, glGetUniformLocation(p, "reentryTolerance"), float(1e-6 * volume_.mesh().diagonal));
   glProgramUniform2i(p, glGetUniformLocation(p, "band"), firstRow, rows);
   volume_.bindSegmentResources(ctx);
   const GLuint zeros[2] = {0, 0};

@@ -39,15 +39,18 @@ void findNeighbors(TetMeshGpu& g) {
   g.neighbors = std::move(words);
 }
 
-void buildBvh(TetMeshGpu& g) {
-  const std::size_t n = g.boundaryFaces.size();
-  if (n == 0) return;
+}  // namespace
+
+std::vector<glm::vec4> buildFaceBvh(std::vector<std::uint32_t>& faces, std::span<const glm::uvec3> faceNodes,
+                                    std::span<const glm::vec4> nodes) {
+  const std::size_t n = faces.size();
+  std::vector<glm::vec4> bvh;
+  if (n == 0) return bvh;
   std::vector<std::array<glm::vec3, 2>> boxes(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t t = g.boundaryFaces[i] / 4, f = g.boundaryFaces[i] % 4;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (int k = 0; k < 3; ++k) {
-      const glm::vec3 p(g.nodes[g.tetNodes(t)[kFaces[f][k]]]);
+      const glm::vec3 p(nodes[faceNodes[i][k]]);
       lo = glm::min(lo, p);
       hi = glm::max(hi, p);
     }
@@ -60,7 +63,7 @@ void buildBvh(TetMeshGpu& g) {
     std::uint32_t node, first, count;
   };
   std::vector<Task> tasks = {{0, 0, std::uint32_t(n)}};
-  g.bvh.assign(2, glm::vec4(0.0f));
+  bvh.assign(2, glm::vec4(0.0f));
   while (!tasks.empty()) {
     const Task t = tasks.back();
     tasks.pop_back();
@@ -81,21 +84,34 @@ void buildBvh(TetMeshGpu& g) {
       std::nth_element(b, b + t.count / 2, b + t.count, [&](std::uint32_t x, std::uint32_t y) {
         return boxes[x][0][axis] + boxes[x][1][axis] < boxes[y][0][axis] + boxes[y][1][axis];
       });
-      first = std::uint32_t(g.bvh.size() / 2);
+      first = std::uint32_t(bvh.size() / 2);
       count = 0;
-      g.bvh.resize(g.bvh.size() + 4, glm::vec4(0.0f));
+      bvh.resize(bvh.size() + 4, glm::vec4(0.0f));
       tasks.push_back({first, t.first, t.count / 2});
       tasks.push_back({first + 1, t.first + t.count / 2, t.count - t.count / 2});
     }
     std::uint32_t bits[2] = {first, count};
     float asFloat[2];
     std::memcpy(asFloat, bits, sizeof bits);
-    g.bvh[2 * t.node] = glm::vec4(lo, asFloat[0]);
-    g.bvh[2 * t.node + 1] = glm::vec4(hi, asFloat[1]);
+    bvh[2 * t.node] = glm::vec4(lo, asFloat[0]);
+    bvh[2 * t.node + 1] = glm::vec4(hi, asFloat[1]);
   }
-  std::vector<std::uint32_t> faces(n);
-  for (std::size_t i = 0; i < n; ++i) faces[i] = g.boundaryFaces[order[i]];
-  g.boundaryFaces = std::move(faces);
+  std::vector<std::uint32_t> ordered(n);
+  for (std::size_t i = 0; i < n; ++i) ordered[i] = faces[order[i]];
+  faces = std::move(ordered);
+  return bvh;
+}
+
+namespace {
+
+void buildBvh(TetMeshGpu& g) {
+  std::vector<glm::uvec3> faceNodes(g.boundaryFaces.size());
+  for (std::size_t i = 0; i < faceNodes.size(); ++i) {
+    const std::uint32_t t = g.boundaryFaces[i] / 4, f = g.boundaryFaces[i] % 4;
+    const glm::uvec4 v = g.tetNodes(t);
+    faceNodes[i] = {v[kFaces[f][0]], v[kFaces[f][1]], v[kFaces[f][2]]};
+  }
+  g.bvh = buildFaceBvh(g.boundaryFaces, faceNodes, g.nodes);
 }
 
 }  // namespace
@@ -197,6 +213,7 @@ TetMeshGpu buildTetMeshGpu(const Mesh& mesh, FieldLocation location, std::span<c
   TetMeshGpu g;
   const Bounds b = mesh.bounds();
   g.origin = b.valid ? b.center() : glm::dvec3(0.0);
+  g.diagonal = b.valid ? b.diagonal() : 0.0;
   setValueFrame(g, values);
   g.nodes.resize(mesh.nodeCount());
   forEachChunk(mesh.nodeCount(), kChunk, [&](std::size_t begin, std::size_t end) {

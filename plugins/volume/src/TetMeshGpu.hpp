@@ -49,6 +49,7 @@ struct TetMeshGpu {
   std::vector<glm::vec4> bvh;             ///< 2 per node: (lo, first), (hi, count); count 0 = inner
   std::size_t skippedTets = 0;            ///< zero volume or non-finite values
   double maxEdge = 0.0;                   ///< longest tet edge, model units
+  double diagonal = 0.0;                  ///< of the mesh's bounding box, model units
   /// Values travel in the frame of their own range, as positions do relative to origin:
   /// gpuValue(v) = (v - valueOffset) * valueScale, 0 at the field's minimum and 1 at its
   /// maximum. Float32 then resolves the range rather than the magnitude (a temperature
@@ -89,6 +90,12 @@ inline constexpr std::int64_t kNearNeighborStep = (std::int64_t(1) << 21) - 1;
 /// faces (tet x 4 + face). Words past the packed ones hold the far pairs; the rest is cut.
 void packNeighbors(std::vector<std::uint32_t>& words, std::size_t tetCount, std::size_t& farCount,
                    std::vector<std::uint32_t>& boundaryFaces);
+
+/// A BVH over triangles (faces[i] names one as tet x 4 + face, faceNodes[i] its corners
+/// in `nodes`), two vec4 per node as TetMeshGpu::bvh holds them; `faces` is put in leaf
+/// order. Empty for no faces.
+std::vector<glm::vec4> buildFaceBvh(std::vector<std::uint32_t>& faces, std::span<const glm::uvec3> faceNodes,
+                                    std::span<const glm::vec4> nodes);
 
 /// Sets valueMin/Max and the frame (valueOffset, valueScale) from the finite values.
 void setValueFrame(TetMeshGpu& gpu, SampleView values);

@@ -16,7 +16,8 @@ std::string glslDefines() {
       {"UNIT_ISO", kIsoTable},           {"UNIT_PRE", kPreTable},
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
       {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d},
-      {"BINDING_TF_KNOTS", kTfKnots}};
+      {"BINDING_TF_KNOTS", kTfKnots},    {"BINDING_VISIBLE_TETS", kVisibleTets},
+      {"BINDING_FOUND_FACES", kFoundFaces}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

@@ -23,7 +23,9 @@ inline constexpr GLuint kOrder = 8;          ///< cell projection: back-to-front
 inline constexpr GLuint kRayState = 9;       ///< ray caster: where each pixel's ray stopped (uvec4 per pixel)
 inline constexpr GLuint kRayCounters = 10;   ///< ray caster: rays left unfinished, rays stopped at the step cap
 inline constexpr GLuint kTfKnots = 11;       ///< transfer function: pre-integration coordinate, running extinction integral
-inline constexpr GLuint kBufferCount = 12;
+inline constexpr GLuint kVisibleTets = 12;   ///< empty-space skipping: a bit per tet that can show something
+inline constexpr GLuint kFoundFaces = 13;    ///< visible_tets.comp: the faces where the visible part ends
+inline constexpr GLuint kBufferCount = 14;
 
 // Texture units.
 inline constexpr GLuint kPsiTable = 0;

@@ -137,3 +137,8 @@ TEST_F(CellProjection, TheWindowGetsAQuickFrameAndTheFullOneInRunsThatEqualsTheS
     EXPECT_TRUE(projector.hasPendingWork()) << "so does another transfer function";
   }
 }
+
+TEST_F(CellProjection, HiddenTetsAreNotDrawnAndThePictureStaysTheSame) {
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  expectSkippingChangesNothing("vicp");
+}

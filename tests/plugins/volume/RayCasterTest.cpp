@@ -532,3 +532,8 @@ TEST_F(RayCast, APositiveTetMeshIsItsOwnTetListOnTheWayToTheGpu) {
   EXPECT_EQ(own.tetNodes(0), shared.tetNodes(0)) << "the inverted cell is drawn turned over";
   EXPECT_EQ(own.neighbors, shared.neighbors);
 }
+
+TEST_F(RayCast, HiddenTetsAreSkippedWithoutChangingThePicture) {
+  caster_->setIntegrationMode(IntegrationMode::LinearSegments);
+  expectSkippingChangesNothing("raycast");
+}

@@ -118,6 +118,60 @@ class RayCast : public ::testing::Test {
     return compare(gpu, optics::renderReference(volume, tf, camera, size, size, settings));
   }
 
+  // Empty-space skipping (GpuVolume::setEmptySpaceSkipping): the GPU renderer's picture with
+  // the tets the transfer function hides skipped, against the same without skipping and
+  // against the reference, for three parts: a narrow opacity peak with an iso-surface in the
+  // transparent range, a part of isolated tets (each a part of its own: more faces than the
+  // first list holds), and nothing at all.
+  void expectSkippingChangesNothing(const char* name) {
+    auto& gpu = static_cast<volume::TetVolumeRenderer&>(*caster_);
+    const auto compareSkipping = [&](const Mesh& mesh, FieldLocation loc, const std::vector<double>& values,
+                                     const TransferFunction& tf, const std::vector<optics::IsoSurface>& isos,
+                                     const char* what) {
+      gpu.setVolume(mesh, loc, values);
+      gpu.setTransferFunction(tf);
+      gpu.setIsoSurfaces(isos);
+      gpu.setTerminationThreshold(0.0);
+      gpu.volume().setEmptySpaceSkipping(true);
+      const Camera camera = isoCamera(mesh);
+      const auto skipped = gpuImage(camera, 64, 64);
+      const volume::VisibleTetsGpu& part = gpu.volume().visibleTets();
+      const std::size_t shown = part.visibleTets(), faces = part.boundaryFaces();
+      gpu.volume().setEmptySpaceSkipping(false);
+      const auto walked = gpuImage(camera, 64, 64);
+      double apart = 0.0;
+      for (std::size_t i = 0; i < walked.size(); ++i) apart = std::max(apart, double(std::abs(walked[i] - skipped[i])));
+      const optics::TetVolume volume(mesh, loc, values);
+      optics::RaySettings settings;
+      settings.isoSurfaces = isos;
+      const ImageError e = compare(skipped, optics::renderReference(volume, tf, camera, 64, 64, settings));
+      std::printf("%s, %s: %zu of %zu tets shown, %zu faces; skipping vs not: max %.3g; vs reference: RMSE %.3g, max %.3g\n",
+                  name, what, shown, mesh.cellCount(), faces, apart, e.rmse, e.max);
+      EXPECT_LE(apart, 2e-5) << what;
+      EXPECT_LE(e.rmse, 1e-5) << what;
+      EXPECT_LE(e.max, 1e-4) << what;
+      return std::pair{shown, faces};
+    };
+    const Mesh grid = test::tetGrid(6, 6, 6);
+    const TransferFunction peak({{0.0, {0.2, 0.3, 0.9}, 0.0}, {4.0, {0.2, 0.3, 0.9}, 0.0}, {4.2, {1.0, 0.6, 0.1}, 3.0},
+                                 {4.4, {0.9, 0.2, 0.1}, 0.0}, {9.0, {0.9, 0.2, 0.1}, 0.0}});
+    const auto [peakShown, peakFaces] =
+        compareSkipping(grid, FieldLocation::Node, field(grid), peak, {{1.5, {0.9, 0.9, 0.9}, 0.5}}, "narrow peak + iso-surface");
+    EXPECT_GT(peakShown, 0u);
+    EXPECT_LT(peakShown, grid.cellCount() / 2);
+    const Mesh fine = test::tetGrid(9, 9, 9);
+    std::vector<double> alternate(fine.cellCount());
+    for (std::size_t c = 0; c < alternate.size(); ++c) alternate[c] = double(c % 2);
+    const TransferFunction ones({{0.0, {0.2, 0.3, 0.9}, 0.0}, {0.5, {0.2, 0.3, 0.9}, 0.0}, {1.0, {1.0, 0.6, 0.1}, 1.5}});
+    const auto [isolatedShown, isolatedFaces] = compareSkipping(fine, FieldLocation::Cell, alternate, ones, {}, "isolated tets");
+    EXPECT_EQ(isolatedShown, fine.cellCount() / 2);
+    EXPECT_GT(isolatedFaces, 4096u);  // past the first list's room: found again with room for all
+    const TransferFunction none({{0.0, {1, 1, 1}, 0.0}, {9.0, {1, 1, 1}, 0.0}});
+    const auto [noneShown, noneFaces] = compareSkipping(grid, FieldLocation::Node, field(grid), none, {}, "nothing");
+    EXPECT_EQ(noneShown, 0u);
+    EXPECT_EQ(noneFaces, 0u);
+  }
+
   // A constant depth in an orthographic view is a plane facing the camera: the volume
   // behind it must vanish exactly as behind a clip plane there. The renderer's image (opaque
   // geometry at window depth 0.5) against the reference clipped at that plane.
