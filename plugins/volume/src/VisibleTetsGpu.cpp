@@ -48,12 +48,11 @@ void VisibleTetsGpu::update(GLuint program, const TetMeshGpu& mesh) {
     bytesOfBits_ = words * 4;
   }
   glClearNamedBufferSubData(bits_.id(), GL_R32UI, 0, GLsizeiptr(words * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
-  // Room for as many faces as the mesh's own boundary, at least 4096: enough for most
-  // transfer functions; otherwise stage 1 runs again with the count it found.
-  const std::size_t wanted = std::max<std::size_t>(mesh.boundaryFaces.size(), 4096);
-  if (!found_ || wanted > capacity_) {
-    found_ = storage(kHeaderBytes + wanted * sizeof(glm::uvec4));
-    capacity_ = wanted;
+  // Room for 4096 faces at first; when a part has more, stage 1 runs again with room for
+  // all of them, and the room stays for the next changes.
+  if (!found_) {
+    capacity_ = 4096;
+    found_ = storage(kHeaderBytes + capacity_ * sizeof(glm::uvec4));
   }
   glUseProgram(program);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kVisibleTets, bits_.id());
@@ -67,6 +66,14 @@ void VisibleTetsGpu::update(GLuint program, const TetMeshGpu& mesh) {
   glProgramUniform1i(program, u("stage"), 0);
   dispatchOverTets(tetCount_);
   GLuint counts[2] = {0, 0};
+  glGetNamedBufferSubData(found_.id(), 0, sizeof counts, counts);  // waits for stage 0
+  if (counts[1] == tetCount_) {  // everything shows: rays walk the whole mesh, no part to list
+    visibleTets_ = tetCount_;
+    faceCount_ = bvhNodes_ = 0;
+    faces_.reset();
+    bvh_.reset();
+    return;
+  }
   for (;;) {
     glProgramUniform1ui(program, u("capacity"), GLuint(capacity_));
     glProgramUniform1i(program, u("stage"), 1);

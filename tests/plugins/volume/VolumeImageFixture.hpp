@@ -122,7 +122,7 @@ class RayCast : public ::testing::Test {
   // the tets the transfer function hides skipped, against the same without skipping and
   // against the reference, for three parts: a narrow opacity peak with an iso-surface in the
   // transparent range, a part of isolated tets (each a part of its own: more faces than the
-  // first list holds), and nothing at all.
+  // first list holds), nothing at all, and everything.
   void expectSkippingChangesNothing(const char* name) {
     auto& gpu = static_cast<volume::TetVolumeRenderer&>(*caster_);
     const auto compareSkipping = [&](const Mesh& mesh, FieldLocation loc, const std::vector<double>& values,
@@ -170,6 +170,9 @@ class RayCast : public ::testing::Test {
     const auto [noneShown, noneFaces] = compareSkipping(grid, FieldLocation::Node, field(grid), none, {}, "nothing");
     EXPECT_EQ(noneShown, 0u);
     EXPECT_EQ(noneFaces, 0u);
+    const auto [allShown, allFaces] = compareSkipping(grid, FieldLocation::Node, field(grid), kTf, {}, "everything");
+    EXPECT_EQ(allShown, grid.cellCount());
+    EXPECT_EQ(allFaces, 0u);  // the whole mesh is walked: no part listed
   }
 
   // A constant depth in an orthographic view is a plane facing the camera: the volume
