@@ -298,6 +298,14 @@ void TfEditorPanel::hostChanged() {
       }
     }
     model_.load(tf, {}, true);
+    knownHostFunction_ = tf;
+  } else if (const TransferFunction hostFunction = host_.transferFunction();
+             hostFunction != knownHostFunction_ && !sendTimer_->isActive()) {
+    // Set by someone else (a state file, the command line's options in the window): what
+    // the picture shows is what the panel edits. (An edit of ours still waiting to be sent
+    // goes first.)
+    model_.load(hostFunction, {}, true);
+    knownHostFunction_ = hostFunction;
   }
   if (newValues) curve_->setData(values);
   hostUpdating_ = false;
@@ -309,7 +317,9 @@ void TfEditorPanel::hostChanged() {
 void TfEditorPanel::sendToHost() {
   if (quantityKey_.empty()) return;
   const TransferFunction tf = model_.toTransferFunction();
+  knownHostFunction_ = tf;  // before: the host may call hostChanged() from inside
   host_.setTransferFunction(tf);
+  knownHostFunction_ = host_.transferFunction();
   startIsoTable(tf);
   saveState();
 }

@@ -79,6 +79,9 @@ class TfEditorPanel : public QWidget {
   QLabel* isoPreview_ = nullptr;
   QTimer* sendTimer_ = nullptr;
   std::string quantityKey_;
+  /// The host's function as this panel last loaded or sent it: a different one in the host
+  /// (a state file opened, a function set elsewhere) is loaded into the panel.
+  std::optional<TransferFunction> knownHostFunction_;
   std::pair<double, double> dataRange_{0.0, 1.0};  ///< of the active values (they are not kept)
   std::string valuesKey_;  ///< which values dataRange_ and the histogram are of
   bool hostUpdating_ = false;

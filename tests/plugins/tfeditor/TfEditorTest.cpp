@@ -109,6 +109,30 @@ class TfEditorTest : public QObject {
     QVERIFY2(lo < 500.0 && hi > 900.0, "the view shows the new values");
   }
 
+  // A function the host gets from elsewhere (a state file opened in the window) is what
+  // the panel shows and edits; the panel's own edits, sent or still waiting, are not undone
+  // by it, and an edit sent does not reload the panel (its undo history stays).
+  void aFunctionSetByTheHostIsWhatThePanelEdits() {
+    panel_->hostChanged();
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(40.0, 0.2));
+    panel_->flush();
+    panel_->hostChanged();  // the host answers every change it shows
+    QCOMPARE(int(panel_->model().points().size()), 3);
+    QVERIFY(panel_->model().undoStack()->canUndo());
+    host_->tf = TransferFunction({{10.0, {0, 1, 0}, 0.0}, {15.0, {1, 0.5, 0}, 2.0}, {20.0, {1, 0, 0}, 0.0},
+                                  {90.0, {1, 0, 0}, 0.0}});
+    panel_->hostChanged();
+    QCOMPARE(int(panel_->model().points().size()), 4);
+    QCOMPARE(panel_->model().points()[1].value, 15.0);
+    panel_->flush();  // nothing waiting: the host keeps its function
+    QCOMPARE(host_->tf.points()[1].extinction, 2.0);
+    QTest::mouseClick(&panel_->curve(), Qt::LeftButton, {}, at(60.0, 0.3));  // waits to be sent
+    panel_->hostChanged();
+    QCOMPARE(int(panel_->model().points().size()), 5);
+    panel_->flush();
+    QCOMPARE(int(host_->tf.points().size()), 5);
+  }
+
   void startsFromTheHostsFunctionWithOpacityOverATenthOfTheModel() {
     QCOMPARE(panel_->model().referenceLength(), 1.0);
     QCOMPARE(int(panel_->model().points().size()), 2);
