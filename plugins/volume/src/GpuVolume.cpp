@@ -175,7 +175,7 @@ void GpuVolume::setGridValues(SampleView values) {
     throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid_->pointCount()) + " points");
   makeGridTexels(values);
-  valuesDirty_ = visibleDirty_ = true;
+  valuesDirty_ = true;
   ++revision_;
 }
 
@@ -191,7 +191,7 @@ void GpuVolume::setValues(SampleView values) {
     setVolume(*mesh_, location_, doubles);  // the set of renderable tets changed
     return;
   }
-  valuesDirty_ = true;
+  valuesDirty_ = visibleDirty_ = true;  // other values show other tets
   ++revision_;
 }
 

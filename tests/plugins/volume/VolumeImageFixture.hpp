@@ -159,6 +159,22 @@ class RayCast : public ::testing::Test {
         compareSkipping(grid, FieldLocation::Node, field(grid), peak, {{1.5, {0.9, 0.9, 0.9}, 0.5}}, "narrow peak + iso-surface");
     EXPECT_GT(peakShown, 0u);
     EXPECT_LT(peakShown, grid.cellCount() / 2);
+    {  // another result on the same tets shows other tets: the part is found again
+      std::vector<double> shifted = field(grid);
+      for (double& v : shifted) v += 1.5;
+      gpu.volume().setEmptySpaceSkipping(true);
+      const Camera camera = isoCamera(grid);
+      (void)gpuImage(camera, 64, 64);  // the part found for the first result
+      gpu.setValues(shifted);
+      const auto image = gpuImage(camera, 64, 64);
+      const optics::TetVolume volume(grid, FieldLocation::Node, shifted);
+      optics::RaySettings settings;
+      settings.isoSurfaces = {{1.5, {0.9, 0.9, 0.9}, 0.5}};
+      const ImageError e = compare(image, optics::renderReference(volume, peak, camera, 64, 64, settings));
+      std::printf("%s, narrow peak, another result: RMSE %.3g, max %.3g\n", name, e.rmse, e.max);
+      EXPECT_LE(e.rmse, 1e-5);
+      EXPECT_LE(e.max, 1e-4);
+    }
     const Mesh fine = test::tetGrid(9, 9, 9);
     std::vector<double> alternate(fine.cellCount());
     for (std::size_t c = 0; c < alternate.size(); ++c) alternate[c] = double(c % 2);
