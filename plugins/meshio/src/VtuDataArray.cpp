@@ -187,18 +187,30 @@ void forEachValueRun(const VtuArraySource& src, const VtuEncoding& enc, const Bi
   }
 }
 
-// The array's values converted by convert(bytes, count, out) into a vector of its count.
-template <typename Out, typename Convert>
-std::vector<Out> decodeBinary(const VtuArraySource& src, const VtuEncoding& enc, Convert convert) {
+// A binary array's values a run at a time: sized(total) with the header's count first, then
+// consume(bytes, count, first) for each run, never past that count. Data cut short fails.
+template <typename Sized, typename Consume>
+void forEachCheckedRun(const VtuArraySource& src, const VtuEncoding& enc, Sized sized, Consume consume) {
   const BinaryRun run(src);
   const BlockLayout b = blockLayout(src, enc, run);
   if (!enc.compressed && run.size() - b.headerBytes < b.rawBytes)
     fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
                   std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
-  std::vector<Out> out(std::size_t(b.rawBytes / sizeOf(src.type)));
+  const std::size_t total = std::size_t(b.rawBytes / sizeOf(src.type));
+  sized(total);
   forEachValueRun(src, enc, run, b, [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) {
-    convert(bytes, std::min(count, out.size() - std::min(first, out.size())), first, out.data() + first);
+    const std::size_t n = std::min(count, total - std::min(first, total));
+    if (n > 0) consume(bytes, n, first);
   });
+}
+
+// The array's values converted by convert(bytes, count, first, out) into a vector of its count.
+template <typename Out, typename Convert>
+std::vector<Out> decodeBinary(const VtuArraySource& src, const VtuEncoding& enc, Convert convert) {
+  std::vector<Out> out;
+  forEachCheckedRun(
+      src, enc, [&out](std::size_t total) { out.resize(total); },
+      [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) { convert(bytes, count, first, out.data() + first); });
   return out;
 }
 
@@ -268,18 +280,12 @@ void vtuDoubleRuns(const VtuArraySource& src, const VtuEncoding& enc,
     consume(0, values.data(), values.size());
     return;
   }
-  const BinaryRun run(src);
-  const BlockLayout b = blockLayout(src, enc, run);
-  if (!enc.compressed && run.size() - b.headerBytes < b.rawBytes)
-    fail(src, "data is cut short: header says " + std::to_string(b.rawBytes) + " bytes, " +
-                  std::to_string(run.size() - b.headerBytes) + " are there (truncated)");
-  const std::size_t total = std::size_t(b.rawBytes / sizeOf(src.type));
-  forEachValueRun(src, enc, run, b, [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) {
-    const std::size_t n = std::min(count, total - std::min(first, total));  // as decodeBinary: never past the header's count
-    if (n == 0) return;
-    const std::vector<double> values = toDoubles(bytes, n, src.type, enc.bigEndian);
-    consume(first, values.data(), n);
-  });
+  forEachCheckedRun(
+      src, enc, [](std::size_t) {},
+      [&](const std::uint8_t* bytes, std::size_t count, std::size_t first) {
+        const std::vector<double> values = toDoubles(bytes, count, src.type, enc.bigEndian);
+        consume(first, values.data(), count);
+      });
 }
 
 std::vector<std::int64_t> vtuIntegers(const VtuArraySource& src, const VtuEncoding& enc) {

@@ -4,6 +4,7 @@
 #include "PiecewiseIntegrator.hpp"
 
 #include "GpuLimits.hpp"
+#include "StorageUpload.hpp"
 
 #include "VolumeBindings.hpp"
 #include "VolumeShaders.hpp"
@@ -28,18 +29,6 @@
 
 namespace volpost::volume {
 namespace {
-
-void uploadBytes(gl::Buffer& buffer, const void* data, std::size_t bytes) {
-  if (!buffer) buffer = gl::createBuffer();
-  // Zero-size SSBOs cannot be bound: keep one element.
-  glNamedBufferData(buffer.id(), GLsizeiptr(std::max<std::size_t>(bytes, 16)), nullptr, GL_STATIC_DRAW);
-  if (bytes > 0) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(bytes), data);
-}
-
-template <typename T>
-void upload(gl::Buffer& buffer, const std::vector<T>& data) {
-  uploadBytes(buffer, data.data(), data.size() * sizeof(T));
-}
 
 gl::Texture texture2D(GLenum format, int w, int h) {
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);

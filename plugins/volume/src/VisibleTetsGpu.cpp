@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "VisibleTetsGpu.hpp"
 
+#include "StorageUpload.hpp"
 #include "VolumeBindings.hpp"
 
 #include <glm/vec3.hpp>
@@ -30,12 +31,6 @@ gl::Buffer storage(std::size_t bytes) {
   gl::Buffer b = gl::createBuffer();
   glNamedBufferStorage(b.id(), GLsizeiptr(std::max<std::size_t>(bytes, 16)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   return b;
-}
-
-void uploadTo(gl::Buffer& buffer, const void* data, std::size_t bytes) {
-  if (!buffer) buffer = gl::createBuffer();
-  glNamedBufferData(buffer.id(), GLsizeiptr(std::max<std::size_t>(bytes, 16)), nullptr, GL_STATIC_DRAW);
-  if (bytes > 0) glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(bytes), data);
 }
 
 }  // namespace
@@ -108,8 +103,8 @@ void VisibleTetsGpu::update(GLuint program, const TetMeshGpu& mesh) {
     faces = {0};
   }
   bvhNodes_ = bvh.size() / 2;
-  uploadTo(faces_, faces.data(), faces.size() * sizeof(std::uint32_t));
-  uploadTo(bvh_, bvh.data(), bvh.size() * sizeof(glm::vec4));
+  upload(faces_, faces);
+  upload(bvh_, bvh);
 }
 
 void VisibleTetsGpu::bind() const {
