@@ -1041,7 +1041,13 @@ std::optional<Quantity> MainWindow::activeQuantity() const {
 std::size_t MainWindow::activeStep() const { return std::size_t(std::max(0, stepBox_->currentIndex())); }
 
 bool MainWindow::selectQuantity(const QString& key) {
-  const int index = quantityBox_->findData(key);
+  int index = quantityBox_->findData(key);
+  if (index < 0 && session_) {  // a bare field name picks its headline quantity, as on the command line
+    try {
+      index = quantityBox_->findData(QString::fromStdString(session_->findQuantity(key.toStdString()).key()));
+    } catch (const std::invalid_argument&) {
+    }
+  }
   if (index < 0) return false;
   quantityBox_->setCurrentIndex(index);
   return true;

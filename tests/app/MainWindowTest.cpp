@@ -168,6 +168,13 @@ class MainWindowTest : public QObject {
     QVERIFY(window_->selectQuantity("U.magnitude"));
     QCOMPARE(window_->activeQuantity()->key(), std::string("U.magnitude"));
     const auto after = summarize(settled(window_->viewport()));
+    // A bare field name picks its headline quantity, as `volpost render --field U` does.
+    QVERIFY(window_->selectQuantity("S"));
+    QCOMPARE(window_->activeQuantity()->key(), std::string("S.mises"));
+    QVERIFY(window_->selectQuantity("U"));
+    QCOMPARE(window_->activeQuantity()->key(), std::string("U.magnitude"));
+    QVERIFY(!window_->selectQuantity("Nope"));
+    QCOMPARE(window_->activeQuantity()->key(), std::string("U.magnitude"));
     window_->viewport()->scene().setShowLegend(true);
     // Same geometry, the same pixels drawn...
     QVERIFY2(std::abs(after.first - before.first) < before.first / 100,
