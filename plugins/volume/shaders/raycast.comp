@@ -250,9 +250,9 @@ void main() {
       vec3 n, a;
       facePlane(P, exitFace, n, a);
       float den = dot(n, rayDir);
-      float tOut = den > 0.0 ? dot(n, a - rayOrigin) / den : t;
-      tOut = clamp(tOut, t, t + 1.001 * diameter);
-      integrate(P, uint(tet), t, min(tOut, tEnd));
+      float onPlane = den > 0.0 ? dot(n, a - rayOrigin) / den : t;
+      float tOut = clamp(onPlane, t, t + 1.001 * diameter);
+      integrateSegment(P, tv, uint(tet), t, min(tOut, tEnd), face, tOut == onPlane && tOut <= tEnd ? exitFace : -1);
       t = tOut;
       if (tOut >= tEnd) { finished = true; break; }
       int entry;

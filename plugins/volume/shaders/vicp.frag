@@ -32,9 +32,11 @@ vec3 nudgeDirection() {
 // is nudged sideways by an infinitesimal amount, the same for every plane, so that one
 // side only keeps it. (Treating rays within a tolerance of a plane as lying in it made
 // things worse: 1e-5 left 2.7e-3 errors on bar_hex8, none at all leaves 5.9e-6.)
-bool tetChord(uvec4 tv, out float tIn, out float tOut) {
+// faceIn, faceOut: the faces whose planes give tIn and tOut (-1 where none does).
+bool tetChord(uvec4 tv, out float tIn, out float tOut, out int faceIn, out int faceOut) {
   tIn = -3.4e38;
   tOut = 3.4e38;
+  faceIn = faceOut = -1;
   for (int k = 0; k < 4; ++k) {
     uvec3 f = uvec3(tv[OUTWARD[k].x], tv[OUTWARD[k].y], tv[OUTWARD[k].z]);
     bool flip = false;  // sorting by an odd permutation turns the normal inward
@@ -59,8 +61,12 @@ bool tetChord(uvec4 tv, out float tIn, out float tOut) {
       continue;
     }
     float t = h / den;
-    if (den > 0.0) tOut = min(tOut, t);
-    else tIn = max(tIn, t);
+    if (den > 0.0) {
+      if (t < tOut) { tOut = t; faceOut = k; }
+    } else if (t > tIn) {
+      tIn = t;
+      faceIn = k;
+    }
   }
   return tIn < tOut;
 }
@@ -71,11 +77,14 @@ void main() {
   vec2 range = setupRay(ndc, ivec2(gl_FragCoord.xy));  // the image's rows count from the top here
   uvec4 tv = tets[vTet];
   float tIn, tOut;
-  if (!tetChord(tv, tIn, tOut)) discard;
+  int faceIn, faceOut;
+  if (!tetChord(tv, tIn, tOut, faceIn, faceOut)) discard;
+  if (tIn < range.x) faceIn = -1;
+  if (tOut > range.y) faceOut = -1;
   tIn = max(tIn, range.x);
   tOut = min(tOut, range.y);  // opaque geometry in front of the exit ends the segment there
   if (tOut <= tIn) discard;
-  integrate(cornersOf(tv), vTet, tIn, tOut);
+  integrateSegment(cornersOf(tv), tv, vTet, tIn, tOut, faceIn, faceOut);
   // Defensive: a tet flat in float32 has no defined barycentric values; its fragment must
   // not poison the image with NaN.
   if (isnan(accT) || any(isnan(accColor))) discard;

@@ -105,6 +105,9 @@ TEST_F(CellProjection, IsoSurfacesMatchTheReference) {
   EXPECT_LE(e.max, 1e-4);
 }
 
+// An iso-surface on inner faces: each tet's fragment decides alone whether it crosses it.
+TEST_F(CellProjection, AnIsoSurfaceOnInnerFacesIsDrawnOnce) { expectIsoSurfaceOnInnerFacesDrawnOnce("vicp"); }
+
 TEST_F(CellProjection, TheWindowGetsAQuickFrameAndTheFullOneInRunsThatEqualsTheSynchronousFrame) {
   // The same blends in the same order, a run of the sorted tets per call: the refined
   // frame is the synchronous one bit for bit; a new view or transfer function starts over.

@@ -352,6 +352,9 @@ TEST_F(RayCast, IsoSurfacesMatchTheReference) {
   EXPECT_LE(e.max, 5e-3);
 }
 
+// An iso-surface on inner faces: the walk hands the value on from tet to tet.
+TEST_F(RayCast, AnIsoSurfaceOnInnerFacesIsDrawnOnce) { expectIsoSurfaceOnInnerFacesDrawnOnce("raycast"); }
+
 TEST_F(RayCast, OpaqueGeometryEndsRaysAtItsDepth) {
   const ImageError e = opaqueDepthAgainstReference();
   std::printf("raycast ended by scene depth vs reference clipped there: RMSE %.3g, max %.3g\n", e.rmse, e.max);
