@@ -178,6 +178,25 @@ TEST_F(CpuRayCast, IsoSurfacesMatchTheReference) {
   EXPECT_LE(e.max, 1e-3);  // a float crossing can fall on the other side of a pixel's surface edge
 }
 
+// The surface on inner faces (s = x at a grid plane), as for the GPU renderers: the walk
+// hands each exit value on as the next tet's entry value, so it is crossed once.
+TEST_F(CpuRayCast, AnIsoSurfaceOnInnerFacesIsDrawnOnce) {
+  const Mesh grid = test::tetGrid(4, 4, 4, glm::dvec3(0.1, 0.2, 0.3), 0.7);
+  std::vector<double> x;
+  for (const auto& p : grid.nodes) x.push_back(p.x);
+  const TransferFunction faint({{0.0, {0.2, 0.3, 0.9}, 0.05}, {3.0, {0.9, 0.3, 0.2}, 0.05}});
+  volume::CpuRaySettings settings;
+  settings.isoSurfaces = {{0.1 + 2.0 * 0.7, {1.0, 0.9, 0.2}, 0.5}};
+  const volume::TetWalkMesh walk(grid, FieldLocation::Node, x);
+  Camera turned = isoCamera(grid);
+  turned.orbit(-41.0, 23.0);
+  for (const Camera& camera : {isoCamera(grid), turned}) {
+    const ImageError e = cpuAgainstReference(walk, grid, FieldLocation::Node, x, faint, camera, 96, settings);
+    std::printf("cpu, iso-surface on inner faces vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
+    EXPECT_LE(e.max, 1e-3);
+  }
+}
+
 TEST_F(CpuRayCast, OpaqueGeometryEndsRaysAtItsDepth) {
   const ImageError e = opaqueDepthAgainstReference();
   std::printf("cpu ended by scene depth vs reference clipped there: RMSE %.3g, max %.3g\n", e.rmse, e.max);
