@@ -15,6 +15,7 @@
 #pragma once
 
 #include "QuickFrames.hpp"
+#include "TetRayDispatch.hpp"
 #include "TetVolumeRenderer.hpp"
 
 #include <algorithm>
@@ -23,18 +24,9 @@
 
 namespace volpost::volume {
 
-/// What the last complete frame took.
-struct RayFrameReport {
-  int dispatches = 0;          ///< passes over the image (1 unless rays crossed many tets or the frame was sliced)
-  std::size_t cappedRays = 0;  ///< rays stopped at the step cap (rayStepCap) before leaving the mesh
-  double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
-};
-
 class RayCaster final : public TetVolumeRenderer {
  public:
-  /// Tets a ray advances per dispatch when the frame need not be sliced: below the 65535
-  /// loop iterations llvmpipe documents as its limit.
-  static constexpr int kStepsPerPass = 32768;
+  static constexpr int kStepsPerPass = TetRayDispatch::kStepsPerPass;
 
   std::string name() const override { return "raycast"; }
   void initialize() override;
@@ -51,19 +43,11 @@ class RayCaster final : public TetVolumeRenderer {
   void setStepsPerPass(int steps);
   /// Tests: at most this many rows of rays per band, as on a device whose storage blocks
   /// hold little (0: as the device allows).
-  void setBandRowsLimit(int rows) { bandRowsLimit_ = std::max(rows, 0); }
+  void setBandRowsLimit(int rows) { rays_.setBandRowsLimit(rows); }
   /// What a quick frame and one slice of the full frame may take (asynchronous updates).
   void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
 
  private:
-  /// Rows of rays per band: all of them unless the device's storage blocks cannot hold a
-  /// state per pixel (16 bytes each).
-  int bandRows(int width, int height) const;
-  /// Clears the state of the `rows` rays' rows of a band for a new frame.
-  void beginBand(int width, int rows);
-  /// One dispatch advancing every unfinished ray of rows [firstRow, firstRow + rows) by up
-  /// to `steps` tets; returns the rays still unfinished and counts the capped ones.
-  std::size_t dispatch(const RenderContext& ctx, GLuint image, int firstRow, int rows, int steps);
   /// The whole frame into `image`, band by band, dispatching until every ray is done;
   /// returns its milliseconds.
   double renderWhole(const RenderContext& ctx, GLuint image);
@@ -72,10 +56,8 @@ class RayCaster final : public TetVolumeRenderer {
   void beginRefining(const RenderContext& ctx);
   bool refine(const RenderContext& ctx);
 
-  gl::Buffer rayState_, counters_;
-  std::size_t rayStateBytes_ = 0;
+  TetRayDispatch rays_;
   int stepsPerPass_ = kStepsPerPass;
-  int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
   RayFrameReport lastFrame_, building_;
   QuickFrames quick_;      ///< asynchronous updates: the quick frame and the refinement's state
   int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Dispatching raycast.comp over a GpuVolume's tets: the per-pixel ray states, the counters
+// the shader reports through, and the frame in dispatches and bands (raycast.comp keeps
+// where each ray stopped, so every dispatch takes each unfinished ray a bounded number of
+// tets further). The ray caster draws its frames with it; cell projection its quick frames
+// (the same picture, and, unlike cell projection's, a cost that shrinks with the
+// resolution).
+#pragma once
+
+#include "GpuVolume.hpp"
+
+#include <volpost/render/GlObjects.hpp>
+#include <volpost/render/RenderContext.hpp>
+
+#include <cstddef>
+
+namespace volpost::volume {
+
+/// What a frame took.
+struct RayFrameReport {
+  int dispatches = 0;          ///< passes over the image (1 unless rays crossed many tets or the frame was sliced)
+  std::size_t cappedRays = 0;  ///< rays stopped at the step cap (rayStepCap) before leaving the mesh
+  double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
+};
+
+class TetRayDispatch {
+ public:
+  /// Tets a ray advances per dispatch when the frame need not be sliced: below the 65535
+  /// loop iterations llvmpipe documents as its limit.
+  static constexpr int kStepsPerPass = 32768;
+
+  void initialize();
+  void release();
+
+  /// Rows of rays per band: all of them unless the device's storage blocks cannot hold a
+  /// state per pixel (16 bytes each) or a test set a limit.
+  int bandRows(int width, int height) const;
+  void setBandRowsLimit(int rows);
+  /// Clears the state of a band's `rows` rows of rays for a new frame.
+  void beginBand(int width, int rows);
+  /// One dispatch advancing every unfinished ray of rows [firstRow, firstRow + rows) by up
+  /// to `steps` tets; returns the rays still unfinished and adds to `report`.
+  std::size_t dispatch(GpuVolume& volume, const RenderContext& ctx, GLuint image, int firstRow, int rows, int steps,
+                       RayFrameReport& report);
+  /// The whole frame into `image`, band by band, up to `stepsPerPass` tets a dispatch
+  /// until every ray is done.
+  RayFrameReport renderWhole(GpuVolume& volume, const RenderContext& ctx, GLuint image, int stepsPerPass);
+
+  std::size_t bytes() const;
+
+ private:
+  gl::Buffer rayState_, counters_;
+  std::size_t rayStateBytes_ = 0;
+  int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
+};
+
+}  // namespace volpost::volume
