@@ -21,12 +21,15 @@ void CellProjector::initialize() {
   framebuffer_ = gl::createFramebuffer();
   emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
   attachedImage_ = 0;
+  quickRays_.initialize();
   quick_.release();
+  quick_.setQuickFramesElsewhere(true);
   gl::check("CellProjector::initialize");
 }
 
 void CellProjector::release() {
   quick_.release();
+  quickRays_.release();
   order_.reset();
   framebuffer_.reset();
   emptyVertexArray_.reset();
@@ -100,6 +103,11 @@ double CellProjector::drawWhole(const RenderContext& ctx, GLuint image) {
 
 bool CellProjector::refine(const RenderContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
+  if (sortPending_) {  // not while the view moves: only once it rests for a frame
+    sortFor(ctx);
+    sortPending_ = false;
+    refineMs_ += millisecondsSince(start);
+  }
   const std::size_t total = lastOrder_.backToFront.size();
   beginDrawing(ctx, volume_.image(), false);
   for (;;) {
@@ -119,7 +127,7 @@ bool CellProjector::refine(const RenderContext& ctx) {
     }
   }
   endDrawing();
-  quick_.measured(refineMs_, ctx.width, ctx.height);
+  quick_.measuredFull(refineMs_, ctx.width, ctx.height);
   return true;
 }
 
@@ -138,14 +146,23 @@ void CellProjector::render(const RenderContext& ctx) {
   const GLuint shown = quick_.frame(
       ctx, volume_.revision(), volume_.meshRevision(), int(method_), volume_.image(),
       [this, &ctx](const RenderContext& c, GLuint image) {
-        sortFor(ctx);  // once per view, for the full frame's size
-        return drawWhole(c, image);
+        if (c.width == ctx.width && c.height == ctx.height) {  // the full frame fits the budget
+          const auto start = std::chrono::steady_clock::now();
+          sortFor(ctx);
+          drawWhole(c, image);
+          return millisecondsSince(start);
+        }
+        // A quick frame: ray cast from the same GPU data, the same picture (the two
+        // renderers share the segment integration); cell projection's own cost is per tet
+        // and would hardly shrink with the resolution.
+        return quickRays_.renderWhole(volume_, c, image, TetRayDispatch::kStepsPerPass).milliseconds;
       },
       [this, &ctx] {
         beginDrawing(ctx, volume_.image(), true);  // the full frame starts empty
         endDrawing();
         drawnTets_ = 0;
         refineMs_ = 0.0;
+        sortPending_ = true;
       },
       [this, &ctx] { return refine(ctx); });
   volume_.compositeOver(ctx, shown);
@@ -154,7 +171,7 @@ void CellProjector::render(const RenderContext& ctx) {
 
 VolumeStats CellProjector::stats() const {
   VolumeStats s = volume_.stats();
-  s.gpuBytes += lastOrder_.backToFront.size() * 4 + quick_.bytes();
+  s.gpuBytes += lastOrder_.backToFront.size() * 4 + quick_.bytes() + quickRays_.bytes();
   s.meshBytes += sortMesh_.cellCount() * 4;  // the sorted index list
   s.lastSortMs = lastOrder_.milliseconds;
   return s;

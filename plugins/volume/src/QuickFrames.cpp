@@ -33,9 +33,11 @@ void QuickFrames::forget() {
 }
 
 int QuickFrames::reductionFor(int width, int height) const {
+  const double pixels = double(width) * double(height);
+  if (quickFramesElsewhere_ && fullMsPerPixel_ > 0.0 && fullMsPerPixel_ * pixels <= quickMs_) return 1;
   if (msPerPixel_ <= 0.0) return 4;  // nothing measured yet: a cautious first guess
-  const double fullMs = msPerPixel_ * double(width) * double(height);
-  return std::clamp(int(std::ceil(std::sqrt(fullMs / quickMs_))), 1, 16);
+  const int reduction = std::clamp(int(std::ceil(std::sqrt(msPerPixel_ * pixels / quickMs_))), 1, 16);
+  return quickFramesElsewhere_ ? std::max(reduction, 2) : reduction;  // 1 would be the full frame's way
 }
 
 RenderContext QuickFrames::quickContext(const RenderContext& ctx, int reduction) {
@@ -54,6 +56,11 @@ RenderContext QuickFrames::quickContext(const RenderContext& ctx, int reduction)
 void QuickFrames::measured(double ms, int width, int height) {
   const double pixels = double(width) * double(height);
   if (pixels > 0.0 && ms > 0.0) msPerPixel_ = ms / pixels;
+}
+
+void QuickFrames::measuredFull(double ms, int width, int height) {
+  const double pixels = double(width) * double(height);
+  if (pixels > 0.0 && ms > 0.0) fullMsPerPixel_ = ms / pixels;
 }
 
 void QuickFrames::release() {

@@ -38,7 +38,9 @@ class QuickFrames {
     if (viewChanged(ctx, revision, meshRevision, extra)) {
       const int reduction = reductionFor(ctx.width, ctx.height);
       if (reduction == 1) {
-        measured(whole(ctx, fullImage), ctx.width, ctx.height);
+        const double ms = whole(ctx, fullImage);
+        if (quickFramesElsewhere_) measuredFull(ms, ctx.width, ctx.height);
+        else measured(ms, ctx.width, ctx.height);
       } else {
         const RenderContext quick = quickContext(ctx, reduction);  // sizes the quick image: first
         measured(whole(quick, quickImage()), quick.width, quick.height);
@@ -60,6 +62,12 @@ class QuickFrames {
   GLuint quickImage() const { return quickImage_.id(); }
   /// A complete frame of width x height took `ms` (GPU work included): the cost per pixel.
   void measured(double ms, int width, int height);
+  /// For a renderer whose quick frames are drawn another way than its full frames (cell
+  /// projection's by ray casting: its own cost is per tet and does not shrink with the
+  /// resolution): measured() then sizes the quick frames, and the full frame is drawn at
+  /// once only where its own cost, given here, fits the quick frame's budget.
+  void setQuickFramesElsewhere(bool elsewhere) { quickFramesElsewhere_ = elsewhere; }
+  void measuredFull(double ms, int width, int height);
 
   /// The full frame is being refined; the quick one is shown meanwhile.
   void startRefining(int reduction) {
@@ -94,6 +102,8 @@ class QuickFrames {
   int reduction_ = 1;
   double quickMs_ = 40.0, sliceMs_ = 30.0;
   double msPerPixel_ = 0.0;
+  bool quickFramesElsewhere_ = false;
+  double fullMsPerPixel_ = 0.0;  ///< with quick frames drawn elsewhere: the full frame's cost
   gl::Texture quickImage_;
   int quickWidth_ = 0, quickHeight_ = 0;
 };

@@ -3,6 +3,8 @@
 // ray caster: the same fixture, the tets drawn in visibility order instead of walked.
 #include "VolumeImageFixture.hpp"
 
+#include "RayCaster.hpp"
+
 using namespace volpost;
 using namespace volpost::test;
 
@@ -107,6 +109,53 @@ TEST_F(CellProjection, IsoSurfacesMatchTheReference) {
 
 // An iso-surface on inner faces: each tet's fragment decides alone whether it crosses it.
 TEST_F(CellProjection, AnIsoSurfaceOnInnerFacesIsDrawnOnce) { expectIsoSurfaceOnInnerFacesDrawnOnce("vicp"); }
+
+// While the view moves, cell projection's quick frames are ray cast (its own cost is per
+// tet: sort and vertex work, whatever the resolution) and nothing is sorted; the sort and
+// the full frame wait until the view rests.
+TEST_F(CellProjection, QuickFramesAreRayCastAndTheSortWaitsForTheViewToRest) {
+  auto& projector = dynamic_cast<volume::CellProjector&>(*caster_);
+  const Mesh grid = test::tetGrid(12, 10, 8, glm::dvec3(0.0), 0.5);
+  volume::RayCaster rays;
+  rays.initialize();
+  for (VolumeRenderer* r : {caster_.get(), static_cast<VolumeRenderer*>(&rays)}) {
+    r->setVolume(grid, FieldLocation::Node, field(grid));
+    r->setTransferFunction(kTf);
+    r->setTerminationThreshold(0.0);
+    r->setAsynchronousUpdates(true);
+  }
+  projector.setFrameBudget(1e-3, 1e-3);
+  rays.setFrameBudget(1e-3, 1e-3);
+  const auto shown = [](VolumeRenderer& r, const Camera& camera) {
+    OffscreenTarget target(64, 48);
+    RenderContext ctx;
+    ctx.camera = camera;
+    ctx.width = 64;
+    ctx.height = 48;
+    ctx.framebuffer = target.framebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+    glClearColor(0, 0, 0, 0);
+    glClear(GL_COLOR_BUFFER_BIT);
+    r.render(ctx);
+    glFinish();
+    return target.readPixels();
+  };
+  Camera camera = isoCamera(grid);
+  const auto quick = shown(*caster_, camera);
+  EXPECT_GT(projector.shownReduction(), 1) << "a quick frame first";
+  EXPECT_EQ(quick, shown(rays, camera)) << "the ray caster's quick frame, the same reduction (nothing measured yet)";
+  EXPECT_EQ(rays.shownReduction(), projector.shownReduction());
+  for (int i = 0; i < 5; ++i) {  // the view turning: quick frames, no sort
+    camera.orbit(2.0, 0.0);
+    (void)shown(*caster_, camera);
+    EXPECT_GT(projector.shownReduction(), 1);
+    EXPECT_TRUE(projector.lastOrder().backToFront.empty()) << "sorted while the view moved, frame " << i;
+  }
+  for (int i = 0; i < 10000 && projector.hasPendingWork(); ++i) (void)shown(*caster_, camera);
+  EXPECT_EQ(projector.lastOrder().backToFront.size(), grid.cellCount()) << "sorted once the view rested";
+  EXPECT_EQ(projector.shownReduction(), 1);
+  rays.release();
+}
 
 TEST_F(CellProjection, TheWindowGetsAQuickFrameAndTheFullOneInRunsThatEqualsTheSynchronousFrame) {
   // The same blends in the same order, a run of the sorted tets per call: the refined
