@@ -172,6 +172,8 @@ void Scene::setVolumeRenderer(const std::string& name) {
   if (grid && !grid->drawsTetrahedra() && session_ && !session_->model().grid)
     throw std::invalid_argument("the volume renderer '" + name +
                                 "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
+  if (grid && !grid->drawsTetrahedra() && view_ && view_->location != FieldLocation::Node)
+    throw std::invalid_argument(perCellRefusal(name));
   if (name == state_.volume.renderer) return;
   state_.volume.renderer = name;
   changed_.renderer = true;
@@ -729,8 +731,17 @@ void Scene::applyToVolume() {
     changed_.volumeAll();
     culledFor_.clear();
   }
-  if (auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get());
-      grid && (session_->model().grid || !grid->drawsTetrahedra())) {
+  // A grid goes to a grid renderer as a grid, except a per-cell field where the renderer
+  // also draws tetrahedra (the CPU ray caster): grid renderers sample values at the points.
+  auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get());
+  const bool asGrid = grid && (!grid->drawsTetrahedra() ||
+                               (session_->model().grid && view_->location == FieldLocation::Node));
+  if (asGrid != volumeGivenAGrid_) {  // the other kind of data: everything goes again
+    changed_.volumeAll();
+    culledFor_.clear();
+    volumeGivenAGrid_ = asGrid;
+  }
+  if (asGrid) {
     applyToGridVolume(*grid);
     return;
   }
@@ -777,6 +788,11 @@ void Scene::applyVolumeSettings() {
   changed_.planes = changed_.iso = changed_.mode = false;
 }
 
+std::string Scene::perCellRefusal(const std::string& renderer) const {
+  return "the volume renderer '" + renderer + "' draws values at the grid's points; '" + view_->quantity.displayName() +
+         "' is given per cell: choose cpu, raycast, vicp or reference";
+}
+
 // A grid renderer samples the grid's point values itself: no tetrahedra, no culling (the
 // clip box's planes cut exactly).
 void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
@@ -784,10 +800,7 @@ void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
   if (!model.grid)
     throw std::invalid_argument("the volume renderer '" + state_.volume.renderer +
                                 "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
-  if (view_->location != FieldLocation::Node)
-    throw std::invalid_argument("the volume renderer '" + state_.volume.renderer +
-                                "' draws values at the grid's points; '" + view_->quantity.displayName() +
-                                "' is given per cell");
+  if (view_->location != FieldLocation::Node) throw std::invalid_argument(perCellRefusal(state_.volume.renderer));
   if (changed_.geometry) {
     culled_.reset();
     culledFor_.clear();

@@ -224,6 +224,8 @@ class Scene {
   void applyToBoundary();
   void applyToVolume();
   void applyToGridVolume(GridVolumeRenderer& renderer);
+  /// Why a grid-only renderer cannot draw the shown per-cell field.
+  std::string perCellRefusal(const std::string& renderer) const;
   void applyVolumeSettings();
   void renderVolume(const RenderContext& ctx);
   void applyToStreamlines();
@@ -268,6 +270,7 @@ class Scene {
   bool streamlinesUploaded_ = false;  ///< the renderer holds streamlineResult_ with the current style
   std::unique_ptr<VolumeRenderer> volume_;
   std::string volumeName_;                      ///< the renderer volume_ is
+  bool volumeGivenAGrid_ = false;               ///< volume_ was given the grid (else tetrahedra)
   std::optional<CulledMesh> culled_;            ///< the tets the GPU holds, when culled
   std::vector<ClipPlane> culledFor_;            ///< the planes culled_ was made for
   std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume

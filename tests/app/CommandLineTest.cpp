@@ -321,6 +321,34 @@ TEST(RenderCommand, CpuRayCasterMatchesTheReferenceAndRefusesGpuOptions) {
   EXPECT_EQ(runVolpost(common + " --renderer cpu --sampling-step 0.1").exitCode, 2);
 }
 
+// A regular grid's per-cell field: the CPU renderer draws it through the grid's tetrahedra
+// (its marcher samples point values), as the reference does; the texture renderers, which
+// sample points only, refuse it as a usage error naming the renderers that can.
+TEST(RenderCommand, APerCellFieldOnAGridIsDrawnByTheCpuRendererAndRefusedByTheTextureOnes) {
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string png = (dir / "per_cell.png").string(), cpuNpy = (dir / "per_cell_cpu.npy").string(),
+                    refNpy = (dir / "per_cell_ref.npy").string();
+  const std::string common = "render " + dataFile("formats/image_points_ascii.vtk") + " --field material --size 48x40 -o " + png;
+  const auto cpu = runVolpost(common + " --renderer cpu --termination 0 --float " + cpuNpy);
+  ASSERT_EQ(cpu.exitCode, 0) << cpu.output;
+  const auto ref = runVolpost(common + " --renderer reference --float " + refNpy);
+  ASSERT_EQ(ref.exitCode, 0) << ref.output;
+  const std::vector<float> a = readNpyFloats(cpuNpy), b = readNpyFloats(refNpy);
+  ASSERT_EQ(a.size(), 48u * 40u * 4u);
+  ASSERT_EQ(a.size(), b.size());
+  float worst = 0.0f, alpha = 0.0f;
+  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
+  for (std::size_t i = 3; i < a.size(); i += 4) alpha = std::max(alpha, a[i]);
+  EXPECT_GT(alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(worst, 1e-4f);
+  for (const char* renderer : {"texture-raymarch", "texture-slices"}) {
+    const auto r = runVolpost(common + " --renderer " + renderer);
+    EXPECT_EQ(r.exitCode, 2) << renderer;
+    EXPECT_NE(r.output.find("'material' is given per cell: choose cpu, raycast, vicp or reference"), std::string::npos)
+        << r.output;
+  }
+}
+
 TEST(RenderCommand, GpuRayCasterFromThePluginRendersHeadless) {
   const std::string png = (std::filesystem::temp_directory_path() / "volpost_raycast.png").string();
   std::filesystem::remove(png);

@@ -6,6 +6,7 @@
 #include "support/QtGuiEnvironment.hpp"
 #include "support/TestSupport.hpp"
 
+#include "CpuVolumeRenderer.hpp"
 #include "RayCaster.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
@@ -524,4 +525,35 @@ TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigur
   scene.render(ctx);
   EXPECT_FALSE(scene.readVolumeImage().empty());
   scene.release();
+}
+
+// The CPU renderer on a regular grid: point fields marched on the grid, a per-cell field
+// through the grid's tetrahedra. Switching between them in one scene hands the renderer
+// the other kind of data each time: every picture equals a fresh scene's.
+TEST_F(SceneWithContext, TheCpuRendererSwitchesBetweenAGridsPointAndCellFields) {
+  const auto session =
+      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/image_points_ascii.vtk"));
+  const VolumeRendererFactory cpu = [](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+    if (name == "cpu") return std::make_unique<volume::CpuVolumeRenderer>();
+    return nullptr;
+  };
+  const auto picture = [&](Scene& scene, const std::string& quantity) {
+    scene.setResult(quantity, 0);
+    scene.setVolumeRenderer("cpu");
+    scene.setVolumeShown(true);
+    return renderSceneImage(scene, 40, 32).volumeRgba;
+  };
+  const auto fresh = [&](const std::string& quantity) {
+    Scene scene(cpu);
+    scene.setSession(session);
+    return picture(scene, quantity);
+  };
+  const std::vector<float> points = fresh("temperature"), cells = fresh("material");
+  ASSERT_EQ(points.size(), 40u * 32u * 4u);
+  EXPECT_NE(points, cells);
+  Scene scene(cpu);
+  scene.setSession(session);
+  EXPECT_EQ(picture(scene, "temperature"), points);
+  EXPECT_EQ(picture(scene, "material"), cells) << "the grid's tetrahedra, with the cell values";
+  EXPECT_EQ(picture(scene, "temperature"), points) << "the grid again";
 }

@@ -3,7 +3,8 @@
 // RegularGrid's points sampled as a 3D texture. The rest of the contract (transfer
 // function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's. A
 // renderer that draws only grids says so (drawsTetrahedra() false) and its setVolume()
-// throws std::invalid_argument; one that draws both is given grids as grids.
+// throws std::invalid_argument; one that draws both is given grids as grids, and the
+// grid's tetrahedra where the field is given per cell.
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
