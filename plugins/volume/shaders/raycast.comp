@@ -35,42 +35,8 @@ const uint PHASE_FRESH = 0u, PHASE_WALKING = 1u, PHASE_SEEKING = 2u, PHASE_DONE 
 #include "common/tet_segment.glsl"
 #include "common/tet_neighbors.glsl"
 #include "common/hidden_tets.glsl"
+#include "common/boundary_entry.glsl"
 
-// ---- the exit decision ---------------------------------------------------------------
-// The ray's Plucker product with the edge p -> q (vertex ids), computed from the lower id to
-// the higher whatever the direction asked (then negated), so two tets sharing a face see the
-// same numbers and agree on every decision: no ray slips between them or is claimed by both.
-// Within its float rounding bound of zero the product is taken in double, and an exact zero
-// (a ray through a vertex, along an edge, in a face) is decided by a symbolic perturbation of
-// the ray (its origin moved by (e, e^2, e^3), then its direction by (h, h^2, h^3)), the same
-// for every edge: the signs are those of one ray in general position. Never returns 0.
-float l1(vec3 v) { return abs(v.x) + abs(v.y) + abs(v.z); }
-double firstNonZero(dvec3 v) { return v.x != 0.0lf ? v.x : v.y != 0.0lf ? v.y : v.z; }
-
-float edgeProduct(uint p, uint q, vec3 pp, vec3 pq) {
-  bool ascending = p < q;
-  vec3 lo = ascending ? pp : pq, hi = ascending ? pq : pp;
-  precise vec3 a = lo - rayOrigin;
-  precise vec3 b = hi - rayOrigin;
-  precise float c = dot(rayDir, cross(a, b));
-  if (abs(c) <= 1e-6 * l1(a) * l1(b)) {
-    dvec3 o = dvec3(rayOrigin), d = dvec3(rayDir);
-    precise dvec3 da = dvec3(lo) - o;
-    precise dvec3 db = dvec3(hi) - o;
-    precise double v = dot(d, cross(da, db));
-    if (v == 0.0lf) v = firstNonZero(cross(da - db, d));  // the origin's move
-    if (v == 0.0lf) {  // the edge is parallel to the ray: the direction's move
-      double lambda = dot(db - da, d) > 0.0lf ? 1.0lf : -1.0lf;
-      v = lambda * firstNonZero(cross(da, d));
-      if (v == 0.0lf) {  // on the ray's own line
-        double g = d.z != 0.0lf ? sign(d.z) : d.y != 0.0lf ? -sign(d.y) : sign(d.x);
-        v = -lambda * g;
-      }
-    }
-    c = v > 0.0lf ? max(float(v), 1e-30) : min(float(v), -1e-30);
-  }
-  return ascending ? c : -c;
-}
 // The product as computed from the lower id to the higher (what both tets of a face share).
 float fromLowerId(uint p, uint q, float product) { return p < q ? product : -product; }
 
@@ -167,28 +133,10 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
     for (uint i = first; i < first + count; ++i) {
       uint code = boundaryFaces[i];
       if (code == excluded) continue;  // the face the ray last entered through: no re-entry loop
-      uint tet = code >> 2;
-      int k = int(code & 3u);
-      uvec4 tv = tets[tet];
-      mat4 P = cornersOf(tv);
-      vec3 n, a;
-      facePlane(P, k, n, a);
-      float den = dot(n, rayDir);
-      if (den >= 0.0) continue;  // leaving through it, not entering
-      float t = dot(n, a - rayOrigin) / den;
-      if (t < tMin || t >= tHit) continue;
-      // Through the triangle: the signs of the ray's products with its edges, the very numbers
-      // the walk uses, so a ray through an edge shared by two boundary faces enters by exactly
-      // one of them (and the walk agrees with it).
-      ivec3 f = FACE[k];
-      uint A = tv[f.x], B = tv[f.y], C = tv[f.z];
-      vec3 p0 = P[f.x].xyz, p1 = P[f.y].xyz, p2 = P[f.z].xyz;
-      float sAB = edgeProduct(A, B, p0, p1), sBC = edgeProduct(B, C, p1, p2), sCA = edgeProduct(C, A, p2, p0);
-      bool outwardListing = dot(cross(p1 - p0, p2 - p0), n) > 0.0;  // then entering turns negative
-      bool entering = outwardListing ? (sAB < 0.0 && sBC < 0.0 && sCA < 0.0) : (sAB > 0.0 && sBC > 0.0 && sCA > 0.0);
-      if (!entering) continue;
-      best = int(tet);
-      faceOut = k;
+      float t;
+      if (!entersThrough(code, tMin, tHit, t)) continue;
+      best = int(code >> 2);
+      faceOut = int(code & 3u);
       tHit = t;
     }
   }
