@@ -143,6 +143,38 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
   return best;
 }
 
+// ---- the entry maps (TetRayDispatch::drawEntryMaps) -------------------------------------
+// Per pixel, the nearest and the farthest entry of its ray (the parameter's bits, the face
+// code; 0xffffffff: none), drawn before the frame with the same test (entry_faces.frag).
+uniform bool hasEntryMaps;
+layout(binding = UNIT_NEAREST_ENTRY) uniform usampler2D nearestEntry;
+layout(binding = UNIT_FARTHEST_ENTRY) uniform usampler2D farthestEntry;
+
+// Where a fresh ray first enters: the face the map names, checked with this ray (the map's
+// fragment traced the same ray, so it holds; the BVH decides where it would not), or no
+// entry at all where the map has none; without maps, the BVH.
+int firstEntry(ivec2 pix, float tMin, out float tIn, out int faceOut) {
+  if (!hasEntryMaps) return findEntry(tMin, 0xffffffffu, tIn, faceOut);
+  uint code = texelFetch(nearestEntry, pix, 0).y;
+  tIn = 3.4e38;
+  faceOut = 0;
+  if (code == 0xffffffffu) return -1;
+  float t;
+  if (!entersThrough(code, tMin, 3.4e38, t)) return findEntry(tMin, 0xffffffffu, tIn, faceOut);
+  tIn = t;
+  faceOut = int(code & 3u);
+  return int(code >> 2);
+}
+
+// True when the ray's farthest entry lies before tFrom (by more than the re-entry
+// tolerance, which covers any rounding between the map's parameter and the search's): no
+// search for a re-entry can find one.
+bool noEntryFrom(ivec2 pix, float tFrom) {
+  if (!hasEntryMaps) return false;
+  uvec2 far = texelFetch(farthestEntry, pix, 0).xy;
+  return far.y == 0xffffffffu || uintBitsToFloat(far.x) + reentryTolerance < tFrom;
+}
+
 void main() {
   ivec2 pix = ivec2(gl_GlobalInvocationID.xy) + ivec2(0, band.x);
   if (pix.x >= imageSize_.x || pix.y >= min(imageSize_.y, band.x + band.y)) return;
@@ -150,9 +182,7 @@ void main() {
   uvec4 state = rayState[index];
   uint phase = state.x & 3u;
   if (phase == PHASE_DONE) return;
-  vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
-                  1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
-  vec2 range = setupRay(ndc, pix);  // the same ray in every pass
+  vec2 range = setupRay(pixelNdc(pix), pix);  // the same ray in every pass
   float t = range.x, tEnd = range.y;
   int steps = 0;
   uint lastEntry = 0xffffffffu;
@@ -175,7 +205,7 @@ void main() {
   while (!finished && steps < passEnd && accT >= terminationTransmittance) {
     if (tet < 0) {  // outside the mesh: where does the ray enter (again)?
       float tIn;
-      tet = findEntry(t, lastEntry, tIn, face);
+      tet = phase == PHASE_FRESH && steps == 0 ? firstEntry(pix, t, tIn, face) : findEntry(t, lastEntry, tIn, face);
       if (tet < 0 || tIn > tEnd) { finished = true; break; }
       lastEntry = uint(tet) * 4u + uint(face);
       t = tIn;
@@ -212,6 +242,7 @@ void main() {
         // before the last entry: that part is walked already.
         t = max(tOut - reentryTolerance, tEntered);
         tet = -1;
+        if (noEntryFrom(pix, t)) finished = true;
         break;
       }
       face = entry;

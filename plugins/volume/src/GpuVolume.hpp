@@ -81,6 +81,11 @@ class GpuVolume {
   }
   /// The part the last prepare() found: tets that can show something, and the faces where it ends.
   const VisibleTetsGpu& visibleTets() const { return visible_; }
+  /// The faces rays enter by, as bindSegmentResources binds them: the visible part's when
+  /// hidden tets are skipped, else the mesh's boundary.
+  std::size_t entryFaceCount() const {
+    return skipsHiddenTets() ? visible_.boundaryFaces() : gpu_.boundaryFaces.size();
+  }
   /// Whether the tets and their neighbours stay in host memory after they went to the GPU
   /// (cell projection sorts them on the CPU every frame). Otherwise they are let go once
   /// uploaded (32 bytes per tet: at 100M tets, 3.2 GB of host memory the ray caster never

@@ -38,6 +38,7 @@ double RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
 void RayCaster::beginRefining(const RenderContext& ctx) {
   building_ = {};
   refineFirstRow_ = 0;
+  rays_.drawEntryMaps(volume_, ctx);
   refineRows_ = std::min(rays_.bandRows(ctx.width, ctx.height), ctx.height);
   rays_.beginBand(ctx.width, refineRows_);
 }

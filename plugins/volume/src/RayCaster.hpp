@@ -44,6 +44,9 @@ class RayCaster final : public TetVolumeRenderer {
   /// Tests: at most this many rows of rays per band, as on a device whose storage blocks
   /// hold little (0: as the device allows).
   void setBandRowsLimit(int rows) { rays_.setBandRowsLimit(rows); }
+  /// Tests and benches: without the entry maps (TetRayDispatch::drawEntryMaps) every ray
+  /// searches the BVH for where it enters; the picture is the same.
+  void setEntryMaps(bool on) { rays_.setEntryMaps(on); }
   /// What a quick frame and one slice of the full frame may take (asynchronous updates).
   void setFrameBudget(double quickMs, double sliceMs) { quick_.setBudget(quickMs, sliceMs); }
 

@@ -5,9 +5,12 @@
 #include "QuickFrames.hpp"
 #include "VolumeBindings.hpp"
 
+#include <glm/mat4x4.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <tuple>
 
 namespace volpost::volume {
 namespace {
@@ -27,9 +30,83 @@ void TetRayDispatch::release() {
   counters_.reset();
   rayState_.reset();
   rayStateBytes_ = 0;
+  nearest_.reset();
+  farthest_.reset();
+  mapsDepth_.reset();
+  mapsFramebuffer_.reset();
+  emptyVertexArray_.reset();
+  mapsWidth_ = mapsHeight_ = 0;
+  hasMaps_ = false;
 }
 
-std::size_t TetRayDispatch::bytes() const { return counters_ ? rayStateBytes_ + 2 * sizeof(GLuint) : 0; }
+std::size_t TetRayDispatch::bytes() const {
+  const std::size_t maps = std::size_t(mapsWidth_) * std::size_t(mapsHeight_) * (8 + 8 + 4);
+  return counters_ ? rayStateBytes_ + 2 * sizeof(GLuint) + maps : 0;
+}
+
+void TetRayDispatch::drawEntryMaps(GpuVolume& volume, const RenderContext& ctx) {
+  hasMaps_ = false;
+  if (!entryMaps_) return;
+  if (!mapsFramebuffer_ || mapsWidth_ != ctx.width || mapsHeight_ != ctx.height) {
+    const auto texture = [&](GLenum format) {
+      gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+      glTextureStorage2D(t.id(), 1, format, ctx.width, ctx.height);
+      glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      return t;
+    };
+    nearest_ = texture(GL_RG32UI);
+    farthest_ = texture(GL_RG32UI);
+    mapsDepth_ = texture(GL_DEPTH_COMPONENT32F);
+    mapsFramebuffer_ = gl::createFramebuffer();
+    glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_DEPTH_ATTACHMENT, mapsDepth_.id(), 0);
+    emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
+    mapsWidth_ = ctx.width;
+    mapsHeight_ = ctx.height;
+  }
+  GLint previousFramebuffer = 0, depthFunc = GL_LESS;
+  GLboolean depthMask = GL_TRUE;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
+  const bool depthTest = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND), cull = glIsEnabled(GL_CULL_FACE);
+
+  const GLuint p = volume.program({"volume/entry_faces.vert", "volume/entry_faces.frag"});
+  glUseProgram(p);
+  volume.setSegmentUniforms(p, ctx);
+  const glm::mat4 vp = volume.imageViewProjection(ctx);
+  glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, &vp[0][0]);
+  glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
+  volume.bindSegmentResources(ctx);
+  glBindFramebuffer(GL_FRAMEBUFFER, mapsFramebuffer_.id());
+  glViewport(0, 0, ctx.width, ctx.height);
+  glBindVertexArray(emptyVertexArray_.id());
+  glEnable(GL_DEPTH_TEST);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
+  const GLuint none[4] = {0xffffffffu, 0xffffffffu, 0, 0};
+  // Six vertices a face (the outline's two triangles); the vertex id stays an int.
+  const std::size_t faces = std::min<std::size_t>(volume.entryFaceCount(), std::size_t(0x7fffffff) / 6);
+  for (const auto& [map, clearDepth, test] : {std::tuple{&nearest_, 1.0f, GLenum(GL_LESS)},
+                                              std::tuple{&farthest_, 0.0f, GLenum(GL_GREATER)}}) {
+    glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_COLOR_ATTACHMENT0, map->id(), 0);
+    glClearNamedFramebufferuiv(mapsFramebuffer_.id(), GL_COLOR, 0, none);
+    glClearNamedFramebufferfv(mapsFramebuffer_.id(), GL_DEPTH, 0, &clearDepth);
+    glDepthFunc(test);
+    if (faces > 0) glDrawArrays(GL_TRIANGLES, 0, GLsizei(faces * 6));
+  }
+
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousFramebuffer));
+  glDepthFunc(GLenum(depthFunc));
+  glDepthMask(depthMask);
+  if (!depthTest) glDisable(GL_DEPTH_TEST);
+  if (blend) glEnable(GL_BLEND);
+  if (cull) glEnable(GL_CULL_FACE);
+  hasMaps_ = true;
+  gl::check("TetRayDispatch::drawEntryMaps");
+}
 
 void TetRayDispatch::setBandRowsLimit(int rows) { bandRowsLimit_ = std::max(rows, 0); }
 
@@ -63,7 +140,10 @@ std::size_t TetRayDispatch::dispatch(GpuVolume& volume, const RenderContext& ctx
   glProgramUniform1i(p, glGetUniformLocation(p, "stepsPerPass"), steps);
   glProgramUniform1f(p, glGetUniformLocation(p, "reentryTolerance"), float(1e-6 * volume.mesh().diagonal));
   glProgramUniform2i(p, glGetUniformLocation(p, "band"), firstRow, rows);
+  glProgramUniform1i(p, glGetUniformLocation(p, "hasEntryMaps"), hasMaps_);
   volume.bindSegmentResources(ctx);
+  glBindTextureUnit(binding::kNearestEntry, hasMaps_ ? nearest_.id() : 0);
+  glBindTextureUnit(binding::kFarthestEntry, hasMaps_ ? farthest_.id() : 0);
   const GLuint zeros[2] = {0, 0};
   glNamedBufferSubData(counters_.id(), 0, sizeof(zeros), zeros);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding::kRayState, rayState_.id());
@@ -84,6 +164,7 @@ std::size_t TetRayDispatch::dispatch(GpuVolume& volume, const RenderContext& ctx
 RayFrameReport TetRayDispatch::renderWhole(GpuVolume& volume, const RenderContext& ctx, GLuint image, int stepsPerPass) {
   const auto start = std::chrono::steady_clock::now();
   RayFrameReport report;
+  drawEntryMaps(volume, ctx);
   const int rowsPerBand = bandRows(ctx.width, ctx.height);
   for (int first = 0; first < ctx.height; first += rowsPerBand) {
     const int rows = std::min(rowsPerBand, ctx.height - first);

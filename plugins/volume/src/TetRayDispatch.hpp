@@ -38,6 +38,15 @@ class TetRayDispatch {
   void setBandRowsLimit(int rows);
   /// Clears the state of a band's `rows` rows of rays for a new frame.
   void beginBand(int width, int rows);
+  /// Draws each pixel's nearest and farthest entry for ctx's frame (entry_faces.vert/.frag:
+  /// the faces rays enter by, each pixel tested exactly as the entry search does): the
+  /// frame's rays start at the nearest without searching the BVH, and a ray that has left
+  /// the mesh searches for a re-entry only where an entry lies beyond it. Read by every
+  /// dispatch until the next call.
+  void drawEntryMaps(GpuVolume& volume, const RenderContext& ctx);
+  /// Tests and benches: without entry maps every ray searches the BVH (the same picture).
+  void setEntryMaps(bool on) { entryMaps_ = on; }
+
   /// One dispatch advancing every unfinished ray of rows [firstRow, firstRow + rows) by up
   /// to `steps` tets; returns the rays still unfinished and adds to `report`.
   std::size_t dispatch(GpuVolume& volume, const RenderContext& ctx, GLuint image, int firstRow, int rows, int steps,
@@ -51,6 +60,12 @@ class TetRayDispatch {
  private:
   gl::Buffer rayState_, counters_;
   std::size_t rayStateBytes_ = 0;
+  gl::Texture nearest_, farthest_, mapsDepth_;  ///< the entry maps (RG32UI: parameter bits, face code)
+  gl::Framebuffer mapsFramebuffer_;
+  gl::VertexArray emptyVertexArray_;
+  int mapsWidth_ = 0, mapsHeight_ = 0;
+  bool hasMaps_ = false;                         ///< drawn for the frame being dispatched
+  bool entryMaps_ = true;
   int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
 };
 

@@ -17,7 +17,8 @@ std::string glslDefines() {
       {"UNIT_SCENE_DEPTH", kSceneDepth}, {"UNIT_IMAGE", kImage},
       {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d},
       {"BINDING_TF_KNOTS", kTfKnots},    {"BINDING_VISIBLE_TETS", kVisibleTets},
-      {"BINDING_FOUND_FACES", kFoundFaces}};
+      {"BINDING_FOUND_FACES", kFoundFaces}, {"UNIT_NEAREST_ENTRY", kNearestEntry},
+      {"UNIT_FARTHEST_ENTRY", kFarthestEntry}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   return out;

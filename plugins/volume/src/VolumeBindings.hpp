@@ -35,6 +35,8 @@ inline constexpr GLuint kSceneDepth = 3;
 inline constexpr GLuint kImage = 4;          ///< the float image (composite pass, image unit 0)
 inline constexpr GLuint kGrid = 5;           ///< a regular grid's values (3D texture)
 inline constexpr GLuint kTf2d = 6;           ///< a 2D transfer function's table
+inline constexpr GLuint kNearestEntry = 7;   ///< ray caster: each pixel's nearest entry (TetRayDispatch)
+inline constexpr GLuint kFarthestEntry = 8;  ///< ray caster: each pixel's farthest entry
 
 /// "#define BINDING_NODES 0\n..." for every constant above.
 std::string glslDefines();

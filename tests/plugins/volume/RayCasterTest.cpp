@@ -278,6 +278,61 @@ TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
   EXPECT_LE(e.max, 1e-2);
 }
 
+// The entry maps (each pixel's nearest and farthest entry, drawn before the frame with the
+// entry search's own test) change nothing but the speed: the same picture bit for bit as
+// searching the BVH for every entry, on a convex grid, on a mesh every ray enters three
+// times, with a clip plane, through a part of the mesh (hidden tets skipped), orthographic
+// and perspective, and from inside the mesh's bounding box.
+TEST_F(RayCast, EntryMapsChangeNothingButTheSpeed) {
+  auto& caster = dynamic_cast<volume::RayCaster&>(*caster_);
+  Mesh slabs;
+  for (int k = 0; k < 3; ++k) {
+    const Mesh slab = test::tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
+    const NodeIndex base = NodeIndex(slabs.nodeCount());
+    slabs.nodes.insert(slabs.nodes.end(), slab.nodes.begin(), slab.nodes.end());
+    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
+      NodeIndex t[4];
+      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
+      slabs.addCell(CellType::Tet4, t);
+    }
+  }
+  const Mesh grid = test::tetGrid(6, 6, 6);
+  const TransferFunction peak({{0.0, {0.2, 0.3, 0.9}, 0.0}, {4.0, {0.2, 0.3, 0.9}, 0.0}, {4.2, {1.0, 0.6, 0.1}, 3.0},
+                               {4.4, {0.9, 0.2, 0.1}, 0.0}, {9.0, {0.9, 0.2, 0.1}, 0.0}});
+  struct Case {
+    const Mesh* mesh;
+    const TransferFunction* tf;
+    std::vector<ClipPlane> clips;
+    const char* what;
+  };
+  const std::vector<Case> cases = {{&grid, &kTf, {}, "convex grid"},
+                                   {&slabs, &kTf, {}, "three slabs"},
+                                   {&grid, &kTf, {{{3.0, 3.0, 3.0}, glm::normalize(glm::dvec3(1.0, -0.4, 0.2))}}, "clip plane"},
+                                   {&grid, &peak, {}, "narrow peak (a part of the mesh)"}};
+  caster_->setTerminationThreshold(0.0);
+  for (const Case& c : cases) {
+    caster_->setVolume(*c.mesh, FieldLocation::Node, field(*c.mesh));
+    caster_->setTransferFunction(*c.tf);
+    caster_->setClipPlanes(c.clips);
+    Camera ortho = isoCamera(*c.mesh), near = isoCamera(*c.mesh), axis;
+    ortho.setProjection(Camera::Projection::Orthographic);
+    near.zoom(3.0);  // the eye inside the mesh's bounding box
+    axis.setView(StandardView::PlusX);
+    axis.fit(c.mesh->bounds());
+    for (const Camera& camera : {isoCamera(*c.mesh), ortho, near, axis}) {
+      caster.setEntryMaps(true);
+      const auto mapped = gpuImage(camera, 56, 48);
+      caster.setEntryMaps(false);
+      const auto searched = gpuImage(camera, 56, 48);
+      float alpha = 0.0f;
+      for (std::size_t i = 3; i < mapped.size(); i += 4) alpha = std::max(alpha, mapped[i]);
+      EXPECT_GT(alpha, 0.01f) << c.what << ": something shows";
+      EXPECT_EQ(mapped, searched) << c.what;
+    }
+  }
+  caster.setEntryMaps(true);
+}
+
 TEST_F(RayCast, ANewResultUploadsOnlyValues) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   std::vector<double> other;

@@ -318,14 +318,24 @@ void integrateValues(float t0, float t1, float sf, float sb) {
 }
 
 // ---- the ray of a pixel ------------------------------------------------------------
+// The normalized image coordinates of pixel `pix`'s centre (row 0 at the top).
+vec2 pixelNdc(ivec2 pix) {
+  precise vec2 ndc = vec2(2.0 * (float(pix.x) + 0.5) / float(imageSize_.x) - 1.0,
+                          1.0 - 2.0 * (float(pix.y) + 0.5) / float(imageSize_.y));
+  return ndc;
+}
+
 // Sets rayOrigin and rayDir for the point `ndc` of the image (pixel `fromTop`, row 0 at
 // the top) and returns the ray's parameters at the near plane and at the far plane, or at
 // the opaque scene drawn before the volume where there is one.
+// (precise: the entry maps' fragments and the ray caster's invocations must trace the very
+// same ray for the same pixel.)
 vec2 setupRay(vec2 ndc, ivec2 fromTop) {
-  vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
-  vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
+  precise vec4 nearP = inverseViewProjection * vec4(ndc, -1.0, 1.0), farP = inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  precise vec3 nearPoint = nearP.xyz / nearP.w, farPoint = farP.xyz / farP.w;
   rayOrigin = orthographic ? nearPoint : eye;
-  rayDir = normalize(farPoint - rayOrigin);
+  precise vec3 direction = normalize(farPoint - rayOrigin);
+  rayDir = direction;
   float tNear = orthographic ? 0.0 : length(nearPoint - eye);
   float tFar = length(farPoint - rayOrigin);
   if (hasSceneDepth) {  // opaque geometry ends the ray where it is
