@@ -144,8 +144,9 @@ int findEntry(float tMin, uint excluded, out float tHit, out int faceOut) {
 }
 
 // ---- the entry maps (TetRayDispatch::drawEntryMaps) -------------------------------------
-// Per pixel, the nearest and the farthest entry of its ray (the parameter's bits, the face
-// code; 0xffffffff: none), drawn before the frame with the same test (entry_faces.frag).
+// Per pixel, the nearest entry of its ray (the parameter's bits, the face code; 0xffffffff:
+// none) and the farthest entry's parameter (0 where none), drawn before the frame with the
+// same test (entry_faces.frag).
 uniform bool hasEntryMaps;
 layout(binding = UNIT_NEAREST_ENTRY) uniform usampler2D nearestEntry;
 layout(binding = UNIT_FARTHEST_ENTRY) uniform usampler2D farthestEntry;
@@ -171,8 +172,7 @@ int firstEntry(ivec2 pix, float tMin, out float tIn, out int faceOut) {
 // search for a re-entry can find one.
 bool noEntryFrom(ivec2 pix, float tFrom) {
   if (!hasEntryMaps) return false;
-  uvec2 far = texelFetch(farthestEntry, pix, 0).xy;
-  return far.y == 0xffffffffu || uintBitsToFloat(far.x) + reentryTolerance < tFrom;
+  return uintBitsToFloat(texelFetch(farthestEntry, pix, 0).x) + reentryTolerance < tFrom;
 }
 
 void main() {

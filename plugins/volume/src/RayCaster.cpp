@@ -38,13 +38,17 @@ double RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
 void RayCaster::beginRefining(const RenderContext& ctx) {
   building_ = {};
   refineFirstRow_ = 0;
-  rays_.drawEntryMaps(volume_, ctx);
+  mapsPending_ = true;  // drawn by the first refine(): not while the view moves
   refineRows_ = std::min(rays_.bandRows(ctx.width, ctx.height), ctx.height);
   rays_.beginBand(ctx.width, refineRows_);
 }
 
 bool RayCaster::refine(const RenderContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
+  if (mapsPending_) {
+    rays_.drawEntryMaps(volume_, ctx);
+    mapsPending_ = false;
+  }
   for (;;) {
     const auto passStart = std::chrono::steady_clock::now();
     const std::size_t unfinished =

@@ -65,6 +65,7 @@ class RayCaster final : public TetVolumeRenderer {
   QuickFrames quick_;      ///< asynchronous updates: the quick frame and the refinement's state
   int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined
   int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to the slice's time
+  bool mapsPending_ = false;  ///< the full frame being refined has no entry maps yet
 };
 
 }  // namespace volpost::volume

@@ -21,6 +21,7 @@ struct RayFrameReport {
   int dispatches = 0;          ///< passes over the image (1 unless rays crossed many tets or the frame was sliced)
   std::size_t cappedRays = 0;  ///< rays stopped at the step cap (rayStepCap) before leaving the mesh
   double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
+  bool entryMaps = false;      ///< rays started from the entry maps (drawEntryMaps), not BVH searches
 };
 
 class TetRayDispatch {
@@ -42,7 +43,8 @@ class TetRayDispatch {
   /// the faces rays enter by, each pixel tested exactly as the entry search does): the
   /// frame's rays start at the nearest without searching the BVH, and a ray that has left
   /// the mesh searches for a re-entry only where an entry lies beyond it. Read by every
-  /// dispatch until the next call.
+  /// dispatch until the next call. Not drawn where the image has fewer than two pixels per
+  /// face (the searches are then cheaper than the maps).
   void drawEntryMaps(GpuVolume& volume, const RenderContext& ctx);
   /// Tests and benches: without entry maps every ray searches the BVH (the same picture).
   void setEntryMaps(bool on) { entryMaps_ = on; }

@@ -322,8 +322,10 @@ TEST_F(RayCast, EntryMapsChangeNothingButTheSpeed) {
     for (const Camera& camera : {isoCamera(*c.mesh), ortho, near, axis}) {
       caster.setEntryMaps(true);
       const auto mapped = gpuImage(camera, 56, 48);
+      EXPECT_TRUE(caster.lastFrame().entryMaps) << c.what;
       caster.setEntryMaps(false);
       const auto searched = gpuImage(camera, 56, 48);
+      EXPECT_FALSE(caster.lastFrame().entryMaps);
       float alpha = 0.0f;
       for (std::size_t i = 3; i < mapped.size(); i += 4) alpha = std::max(alpha, mapped[i]);
       EXPECT_GT(alpha, 0.01f) << c.what << ": something shows";
@@ -331,6 +333,12 @@ TEST_F(RayCast, EntryMapsChangeNothingButTheSpeed) {
     }
   }
   caster.setEntryMaps(true);
+  // A picture with fewer than two pixels per face (a quick frame of a big mesh): searched.
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setClipPlanes({});
+  (void)gpuImage(isoCamera(grid), 24, 16);
+  EXPECT_FALSE(caster.lastFrame().entryMaps) << "384 pixels, 432 faces";
 }
 
 TEST_F(RayCast, ANewResultUploadsOnlyValues) {
