@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <iterator>
 
@@ -295,6 +296,23 @@ std::vector<float> readNpyFloats(const std::string& path) {
   std::memcpy(values.data(), bytes.data() + header, values.size() * 4);
   return values;
 }
+
+// Two float pictures (--float .npy) of `floats` values each: their largest difference and
+// the first one's largest alpha (so a test can tell that something shows). Sizes that
+// differ fail the test and give an infinite difference.
+struct FloatPicturesApart {
+  float worst = 0.0f, alpha = 0.0f;
+};
+FloatPicturesApart compareFloatPictures(const std::string& picture, const std::string& reference, std::size_t floats) {
+  const std::vector<float> a = readNpyFloats(picture), b = readNpyFloats(reference);
+  EXPECT_EQ(a.size(), floats) << picture;
+  EXPECT_EQ(b.size(), floats) << reference;
+  FloatPicturesApart apart;
+  if (a.size() != floats || b.size() != floats) return {std::numeric_limits<float>::infinity(), 0.0f};
+  for (std::size_t i = 0; i < a.size(); ++i) apart.worst = std::max(apart.worst, std::abs(a[i] - b[i]));
+  for (std::size_t i = 3; i < a.size(); i += 4) apart.alpha = std::max(apart.alpha, a[i]);
+  return apart;
+}
 }  // namespace
 
 TEST(RenderCommand, CpuRayCasterMatchesTheReferenceAndRefusesGpuOptions) {
@@ -307,14 +325,9 @@ TEST(RenderCommand, CpuRayCasterMatchesTheReferenceAndRefusesGpuOptions) {
   EXPECT_EQ(QImage(QString::fromStdString(png)).size(), QSize(64, 48));
   const auto ref = runVolpost(common + " --renderer reference --float " + refNpy);
   ASSERT_EQ(ref.exitCode, 0) << ref.output;
-  const std::vector<float> a = readNpyFloats(cpuNpy), b = readNpyFloats(refNpy);
-  ASSERT_EQ(a.size(), 64u * 48u * 4u);
-  ASSERT_EQ(a.size(), b.size());
-  float worst = 0.0f, alpha = 0.0f;
-  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
-  for (std::size_t i = 3; i < a.size(); i += 4) alpha = std::max(alpha, a[i]);
-  EXPECT_GT(alpha, 0.05f) << "the volume shows";
-  EXPECT_LE(worst, 1e-4f) << "the CPU ray caster is exact up to float";
+  const FloatPicturesApart apart = compareFloatPictures(cpuNpy, refNpy, 64u * 48u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(apart.worst, 1e-4f) << "the CPU ray caster is exact up to float";
   const auto mode = runVolpost(common + " --renderer cpu --mode sampling");
   EXPECT_EQ(mode.exitCode, 2);
   EXPECT_NE(mode.output.find("integrates exactly"), std::string::npos) << mode.output;
@@ -333,14 +346,9 @@ TEST(RenderCommand, APerCellFieldOnAGridIsDrawnByTheCpuRendererAndRefusedByTheTe
   ASSERT_EQ(cpu.exitCode, 0) << cpu.output;
   const auto ref = runVolpost(common + " --renderer reference --float " + refNpy);
   ASSERT_EQ(ref.exitCode, 0) << ref.output;
-  const std::vector<float> a = readNpyFloats(cpuNpy), b = readNpyFloats(refNpy);
-  ASSERT_EQ(a.size(), 48u * 40u * 4u);
-  ASSERT_EQ(a.size(), b.size());
-  float worst = 0.0f, alpha = 0.0f;
-  for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, std::abs(a[i] - b[i]));
-  for (std::size_t i = 3; i < a.size(); i += 4) alpha = std::max(alpha, a[i]);
-  EXPECT_GT(alpha, 0.05f) << "the volume shows";
-  EXPECT_LE(worst, 1e-4f);
+  const FloatPicturesApart apart = compareFloatPictures(cpuNpy, refNpy, 48u * 40u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(apart.worst, 1e-4f);
   for (const char* renderer : {"texture-raymarch", "texture-slices"}) {
     const auto r = runVolpost(common + " --renderer " + renderer);
     EXPECT_EQ(r.exitCode, 2) << renderer;
@@ -365,18 +373,14 @@ TEST(RenderCommand, GpuRenderersDrawTheMixedWheelAsTheReference) {
   const std::string common = "render " + wheel + " --field S --tf " + tf + " --iso 5:1,1,1:0.4 -o " + png;
   const std::string refNpy = (dir / "wheel_ref.npy").string();
   ASSERT_EQ(runVolpost(common + " --renderer reference --float " + refNpy).exitCode, 0);
-  const std::vector<float> ref = readNpyFloats(refNpy);
-  ASSERT_EQ(ref.size(), 800u * 600u * 4u);
   for (const char* renderer : {"raycast", "vicp"}) {
     const std::string npy = (dir / (std::string("wheel_") + renderer + ".npy")).string();
     const auto r = runVolpost(common + " --renderer " + renderer + " --termination 0 --float " + npy);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const std::vector<float> image = readNpyFloats(npy);
-    ASSERT_EQ(image.size(), ref.size());
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < ref.size(); ++i) worst = std::max(worst, std::abs(image[i] - ref[i]));
-    std::printf("%s, mixed wheel at 800x600 vs reference: max %.3g\n", renderer, double(worst));
-    EXPECT_LE(worst, 1e-3f) << renderer;
+    const FloatPicturesApart apart = compareFloatPictures(npy, refNpy, 800u * 600u * 4u);
+    std::printf("%s, mixed wheel at 800x600 vs reference: max %.3g\n", renderer, double(apart.worst));
+    EXPECT_GT(apart.alpha, 0.05f) << renderer;
+    EXPECT_LE(apart.worst, 1e-3f) << renderer;
   }
 }
 

@@ -42,4 +42,21 @@ inline Mesh tetGrid(int nx, int ny, int nz, glm::dvec3 origin = glm::dvec3(0.0),
   return m;
 }
 
+// Three 3 x 3 x 1 slabs along z with gaps between them: a non-convex mesh every ray along z
+// enters three times.
+inline Mesh threeSlabs() {
+  Mesh m;
+  for (int k = 0; k < 3; ++k) {
+    const Mesh slab = tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
+    const NodeIndex base = NodeIndex(m.nodeCount());
+    m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
+    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
+      NodeIndex t[4];
+      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
+      m.addCell(CellType::Tet4, t);
+    }
+  }
+  return m;
+}
+
 }  // namespace volpost::test

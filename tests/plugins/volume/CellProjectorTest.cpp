@@ -126,20 +126,7 @@ TEST_F(CellProjection, QuickFramesAreRayCastAndTheSortWaitsForTheViewToRest) {
   }
   projector.setFrameBudget(1e-3, 1e-3);
   rays.setFrameBudget(1e-3, 1e-3);
-  const auto shown = [](VolumeRenderer& r, const Camera& camera) {
-    OffscreenTarget target(64, 48);
-    RenderContext ctx;
-    ctx.camera = camera;
-    ctx.width = 64;
-    ctx.height = 48;
-    ctx.framebuffer = target.framebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-    glClearColor(0, 0, 0, 0);
-    glClear(GL_COLOR_BUFFER_BIT);
-    r.render(ctx);
-    glFinish();
-    return target.readPixels();
-  };
+  const auto shown = [](VolumeRenderer& r, const Camera& camera) { return shownPixels(r, camera, 64, 48); };
   Camera camera = isoCamera(grid);
   const auto quick = shown(*caster_, camera);
   EXPECT_GT(projector.shownReduction(), 1) << "a quick frame first";

@@ -150,17 +150,7 @@ TEST_F(CpuRayCast, ElementResultsAreConstantPerCell) {
 }
 
 TEST_F(CpuRayCast, RaysReenterANonConvexMeshLikeTheReference) {
-  Mesh m;  // three slabs along z with gaps: every ray through them enters three times
-  for (int k = 0; k < 3; ++k) {
-    const Mesh slab = test::tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
-    const NodeIndex base = NodeIndex(m.nodeCount());
-    m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
-    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
-      NodeIndex t[4];
-      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
-      m.addCell(CellType::Tet4, t);
-    }
-  }
+  const Mesh m = test::threeSlabs();  // every ray along z enters three times
   const ImageError e = againstReference(m, FieldLocation::Node, field(m), kTf, isoCamera(m), 48);
   std::printf("cpu non-convex (3 slabs) vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
   EXPECT_LE(e.rmse, 2e-6);

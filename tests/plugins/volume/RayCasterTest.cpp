@@ -260,17 +260,7 @@ TEST_F(RayCast, AsynchronousPreIntegrationCatchesUpWithTheLatestFunction) {
 }
 
 TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
-  Mesh m;  // three slabs along z with gaps: every ray through them enters three times
-  for (int k = 0; k < 3; ++k) {
-    const Mesh slab = test::tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
-    const NodeIndex base = NodeIndex(m.nodeCount());
-    m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
-    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
-      NodeIndex t[4];
-      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
-      m.addCell(CellType::Tet4, t);
-    }
-  }
+  const Mesh m = test::threeSlabs();  // every ray along z enters three times
   caster_->setIntegrationMode(IntegrationMode::LinearSegments);
   const ImageError e = againstReference(m, FieldLocation::Node, field(m), kTf, isoCamera(m), 48);
   std::printf("raycast non-convex (3 slabs) vs reference: RMSE %.3g, max %.3g\n", e.rmse, e.max);
@@ -285,17 +275,7 @@ TEST_F(RayCast, RaysReenterANonConvexMeshLikeTheReference) {
 // and perspective, and from inside the mesh's bounding box.
 TEST_F(RayCast, EntryMapsChangeNothingButTheSpeed) {
   auto& caster = dynamic_cast<volume::RayCaster&>(*caster_);
-  Mesh slabs;
-  for (int k = 0; k < 3; ++k) {
-    const Mesh slab = test::tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
-    const NodeIndex base = NodeIndex(slabs.nodeCount());
-    slabs.nodes.insert(slabs.nodes.end(), slab.nodes.begin(), slab.nodes.end());
-    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
-      NodeIndex t[4];
-      for (int i = 0; i < 4; ++i) t[i] = slab.cellNodes(c)[std::size_t(i)] + base;
-      slabs.addCell(CellType::Tet4, t);
-    }
-  }
+  const Mesh slabs = test::threeSlabs();  // every ray along z enters three times
   const Mesh grid = test::tetGrid(6, 6, 6);
   const TransferFunction peak({{0.0, {0.2, 0.3, 0.9}, 0.0}, {4.0, {0.2, 0.3, 0.9}, 0.0}, {4.2, {1.0, 0.6, 0.1}, 3.0},
                                {4.4, {0.9, 0.2, 0.1}, 0.0}, {9.0, {0.9, 0.2, 0.1}, 0.0}});

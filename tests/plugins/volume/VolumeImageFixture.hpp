@@ -72,19 +72,31 @@ class RayCast : public ::testing::Test {
 
   static std::vector<float> imageOf(VolumeRenderer& renderer, const Camera& camera, int w, int h, float sceneDepth = 1.0f) {
     OffscreenTarget target(w, h);
+    drawInto(target, renderer, camera, sceneDepth);
+    return renderer.readImage();
+  }
+
+  /// What the renderer shows on the target (its image composited, 8 bits): a quick frame
+  /// while one is shown.
+  static std::vector<std::uint8_t> shownPixels(VolumeRenderer& renderer, const Camera& camera, int w, int h) {
+    OffscreenTarget target(w, h);
+    drawInto(target, renderer, camera, 1.0f);
+    return target.readPixels();
+  }
+
+  static void drawInto(OffscreenTarget& target, VolumeRenderer& renderer, const Camera& camera, float sceneDepth) {
     glClearNamedFramebufferfv(target.framebuffer(), GL_DEPTH, 0, &sceneDepth);
     RenderContext ctx;
     ctx.depthTexture = sceneDepth < 1.0f ? target.depthTexture() : 0;
     ctx.camera = camera;
-    ctx.width = w;
-    ctx.height = h;
+    ctx.width = target.width();
+    ctx.height = target.height();
     ctx.framebuffer = target.framebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     renderer.render(ctx);
     glFinish();
-    return renderer.readImage();
   }
 
 
