@@ -15,6 +15,38 @@ namespace volpost::volume {
 namespace {
 
 constexpr std::size_t kRayStateBytes = 16;  // one uvec4 per pixel (raycast.comp)
+constexpr std::size_t kMostMapFaces = std::size_t(0x7fffffff) / 6;  // six vertices a face, the ids ints
+
+// The GL state drawEntryMaps changes, taken on construction and put back on destruction: the
+// window draws its scene with it after the volume.
+class SavedDrawState {
+ public:
+  SavedDrawState() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_);
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
+    glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask_);
+  }
+  ~SavedDrawState() {
+    glBindVertexArray(0);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    glDepthFunc(GLenum(depthFunc_));
+    glDepthMask(depthMask_);
+    if (!depthTest_) glDisable(GL_DEPTH_TEST);
+    if (blend_) glEnable(GL_BLEND);
+    if (cull_) glEnable(GL_CULL_FACE);
+  }
+  SavedDrawState(const SavedDrawState&) = delete;
+  SavedDrawState& operator=(const SavedDrawState&) = delete;
+
+ private:
+  GLint drawFramebuffer_ = 0, readFramebuffer_ = 0, depthFunc_ = GL_LESS, viewport_[4] = {0, 0, 0, 0};
+  GLboolean depthMask_ = GL_TRUE;
+  bool depthTest_ = glIsEnabled(GL_DEPTH_TEST), blend_ = glIsEnabled(GL_BLEND), cull_ = glIsEnabled(GL_CULL_FACE);
+};
 
 }  // namespace
 
@@ -43,39 +75,35 @@ std::size_t TetRayDispatch::bytes() const {
   return counters_ ? rayStateBytes_ + 2 * sizeof(GLuint) + maps : 0;
 }
 
+void TetRayDispatch::sizeMaps(int width, int height) {
+  if (mapsFramebuffer_ && mapsWidth_ == width && mapsHeight_ == height) return;
+  const auto texture = [&](GLenum format) {
+    gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t.id(), 1, format, width, height);
+    glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return t;
+  };
+  nearest_ = texture(GL_RG32UI);
+  farthest_ = texture(GL_R32UI);
+  mapsDepth_ = texture(GL_DEPTH_COMPONENT32F);
+  mapsFramebuffer_ = gl::createFramebuffer();
+  glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_COLOR_ATTACHMENT0, nearest_.id(), 0);
+  glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_DEPTH_ATTACHMENT, mapsDepth_.id(), 0);
+  emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
+  mapsWidth_ = width;
+  mapsHeight_ = height;
+}
+
 void TetRayDispatch::drawEntryMaps(GpuVolume& volume, const RenderContext& ctx) {
   hasMaps_ = false;
   // Drawing the maps costs about the faces (six vertices each), the searches they save
   // about the rays: on a small image (a quick frame) of a mesh with many faces the BVH is
   // cheaper (post_fine's 23K faces at 64x48: 4.3 instead of 23 frames per second).
-  if (!entryMaps_ || std::size_t(ctx.width) * std::size_t(ctx.height) < 2 * volume.entryFaceCount()) return;
-  if (!mapsFramebuffer_ || mapsWidth_ != ctx.width || mapsHeight_ != ctx.height) {
-    const auto texture = [&](GLenum format) {
-      gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
-      glTextureStorage2D(t.id(), 1, format, ctx.width, ctx.height);
-      glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-      return t;
-    };
-    nearest_ = texture(GL_RG32UI);
-    farthest_ = texture(GL_R32UI);
-    mapsDepth_ = texture(GL_DEPTH_COMPONENT32F);
-    mapsFramebuffer_ = gl::createFramebuffer();
-    glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_DEPTH_ATTACHMENT, mapsDepth_.id(), 0);
-    emptyVertexArray_ = gl::createVertexArray();  // core profile: a draw needs one bound, even empty
-    mapsWidth_ = ctx.width;
-    mapsHeight_ = ctx.height;
-  }
-  // The caller's state comes back as it was (the window draws its scene with it after).
-  GLint drawFramebuffer = 0, readFramebuffer = 0, depthFunc = GL_LESS, viewport[4] = {0, 0, 0, 0};
-  GLboolean depthMask = GL_TRUE;
-  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer);
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-  glGetIntegerv(GL_VIEWPORT, viewport);
-  glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
-  glGetBooleanv(GL_DEPTH_WRITEMASK, &depthMask);
-  const bool depthTest = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND), cull = glIsEnabled(GL_CULL_FACE);
-
+  const std::size_t faces = volume.entryFaceCount();
+  if (!entryMaps_ || faces > kMostMapFaces || std::size_t(ctx.width) * std::size_t(ctx.height) < 2 * faces) return;
+  sizeMaps(ctx.width, ctx.height);
+  const SavedDrawState saved;
   const GLuint p = volume.program({"volume/entry_faces.vert", "volume/entry_faces.frag"});
   glUseProgram(p);
   volume.setSegmentUniforms(p, ctx);
@@ -88,30 +116,17 @@ void TetRayDispatch::drawEntryMaps(GpuVolume& volume, const RenderContext& ctx) 
   glBindVertexArray(emptyVertexArray_.id());
   glEnable(GL_DEPTH_TEST);
   glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   const GLuint none[4] = {0xffffffffu, 0xffffffffu, 0, 0}, zero = 0;
   const float farthestDepth = 1.0f;
-  glNamedFramebufferTexture(mapsFramebuffer_.id(), GL_COLOR_ATTACHMENT0, nearest_.id(), 0);
   glClearNamedFramebufferuiv(mapsFramebuffer_.id(), GL_COLOR, 0, none);
   glClearNamedFramebufferfv(mapsFramebuffer_.id(), GL_DEPTH, 0, &farthestDepth);
   glClearTexImage(farthest_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glBindImageTexture(1, farthest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  glDepthFunc(GL_LESS);
-  // Six vertices a face (the outline's two triangles); the vertex id stays an int.
-  const std::size_t faces = std::min<std::size_t>(volume.entryFaceCount(), std::size_t(0x7fffffff) / 6);
   if (faces > 0) glDrawArrays(GL_TRIANGLES, 0, GLsizei(faces * 6));
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the image's atomics, read by texelFetch
-
-  glBindVertexArray(0);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer));
-  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  glDepthFunc(GLenum(depthFunc));
-  glDepthMask(depthMask);
-  if (!depthTest) glDisable(GL_DEPTH_TEST);
-  if (blend) glEnable(GL_BLEND);
-  if (cull) glEnable(GL_CULL_FACE);
   hasMaps_ = true;
   gl::check("TetRayDispatch::drawEntryMaps");
 }

@@ -60,6 +60,9 @@ class TetRayDispatch {
   std::size_t bytes() const;
 
  private:
+  /// The maps' images and framebuffer at this size (made again when it changes).
+  void sizeMaps(int width, int height);
+
   gl::Buffer rayState_, counters_;
   std::size_t rayStateBytes_ = 0;
   gl::Texture nearest_, farthest_, mapsDepth_;  ///< the entry maps (RG32UI: parameter bits, face code)
