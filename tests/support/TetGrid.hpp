@@ -42,12 +42,12 @@ inline Mesh tetGrid(int nx, int ny, int nz, glm::dvec3 origin = glm::dvec3(0.0),
   return m;
 }
 
-// Three 3 x 3 x 1 slabs along z with gaps between them: a non-convex mesh every ray along z
-// enters three times.
-inline Mesh threeSlabs() {
+// `count` slabs of cells x cells x 1 unit cubes stacked along z, `spacing` apart (more than
+// 1: with gaps between them): a non-convex mesh every ray along z enters `count` times.
+inline Mesh stackedSlabs(int count, int cells, double spacing) {
   Mesh m;
-  for (int k = 0; k < 3; ++k) {
-    const Mesh slab = tetGrid(3, 3, 1, {0.0, 0.0, 1.5 * k});
+  for (int k = 0; k < count; ++k) {
+    const Mesh slab = tetGrid(cells, cells, 1, {0.0, 0.0, spacing * k});
     const NodeIndex base = NodeIndex(m.nodeCount());
     m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
     for (std::size_t c = 0; c < slab.cellCount(); ++c) {
@@ -58,5 +58,8 @@ inline Mesh threeSlabs() {
   }
   return m;
 }
+
+// Three 3 x 3 x 1 slabs with gaps: every ray along z enters three times.
+inline Mesh threeSlabs() { return stackedSlabs(3, 3, 1.5); }
 
 }  // namespace volpost::test

@@ -104,17 +104,7 @@ TEST(ReferenceRays, FieldAlongTheRayMatchesTheEmissionIntegral) {
 
 TEST(ReferenceRays, RaysLeavingAndReenteringANonConvexMesh) {
   // Five slabs along z separated by gaps: the ray re-enters four times.
-  Mesh m;
-  for (int s = 0; s < 5; ++s) {
-    const Mesh slab = tetGrid(2, 2, 1, {0.0, 0.0, 2.0 * s});
-    const NodeIndex base = NodeIndex(m.nodeCount());
-    m.nodes.insert(m.nodes.end(), slab.nodes.begin(), slab.nodes.end());
-    for (std::size_t c = 0; c < slab.cellCount(); ++c) {
-      NodeIndex t[4];
-      for (int k = 0; k < 4; ++k) t[k] = slab.cellNodes(c)[std::size_t(k)] + base;
-      m.addCell(CellType::Tet4, t);
-    }
-  }
+  const Mesh m = volpost::test::stackedSlabs(5, 2, 2.0);
   const TetVolume volume(m, FieldLocation::Node, nodalConstant(m, 0.5));
   const double tau = 0.4;
   for (const auto& p : {glm::dvec2(1.0, 1.0), glm::dvec2(0.5, 1.5), glm::dvec2(1.0, 0.25)}) {
