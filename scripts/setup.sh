@@ -11,6 +11,7 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri            # Mesa llvmpipe: OpenGL 4.5 with no GPU
   libpugixml-dev zlib1g-dev nlohmann-json3-dev libnetcdf-dev
   libcgal-dev libtet1.5-dev               # exact predicates; tetrahedralization templates
+  libboost-dev                            # Gauss-Legendre nodes of the pre-integration table
   libkissfft-dev                          # the Hilbert transform of seismic attributes
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # videos of animations
   libgtest-dev libbenchmark-dev
