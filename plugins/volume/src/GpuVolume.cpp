@@ -20,6 +20,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 #include <limits>
 #include <cstdint>
 #include <cstring>
@@ -42,6 +44,17 @@ void setFilter(GLuint tex, GLint filter) {
   glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
   glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
 }
+
+// The shaders compute in float (at most 3.4e38). An extinction above this is opaque over
+// any length a picture resolves (1e-10 units: an optical depth of 1e10), and capped there
+// its products with lengths and its running integrals stay finite (1e300 gave NaN pixels).
+constexpr double kMaxGpuExtinction = 1e20;
+double gpuExtinction(double extinction) { return std::min(extinction, kMaxGpuExtinction); }
+
+// The running integrals of the extinction matter between control points inside the values'
+// range only (0..1 on the GPU); points far outside it (a function spanning 1e30 times the
+// field's range) are moved in to here, so the integrals inside stay small and finite.
+constexpr double kIntegralValueMargin = 1.0;
 
 constexpr int kTransferFunction2DMode = 4;  // INTEGRATION_MODE of common/volume_segment.glsl
 
@@ -406,14 +419,17 @@ void GpuVolume::bindGridBrick(GLuint program, std::size_t b) {
                      GLint(brick.points[1]), GLint(brick.points[2]));
 }
 
+// The value tables span the values' range, not the function's: no value outside it is
+// ever looked up, and a function reaching far beyond the field (a preset over a fixed range,
+// a point at -1e30) would otherwise leave the field's values a few texels (0.018 off).
+std::pair<double, double> GpuVolume::tableRange() const {
+  const double lo = gpu_.valueMin, hi = gpu_.valueMax;
+  return {lo, hi > lo ? hi : lo + 1.0};
+}
+
 // The tables depend on the transfer function, the mode and the values' range (the tables
 // span it, and control points travel in the values' frame).
-bool GpuVolume::tablesNeedRebuild() const {
-  if (tablesDirty_) return true;
-  const double lo = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
-  const double hi = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
-  return lo != tableLo_ || (hi > lo ? hi : lo + 1.0) != tableHi_;
-}
+bool GpuVolume::tablesNeedRebuild() const { return tablesDirty_ || tableRange() != std::pair(tableLo_, tableHi_); }
 
 // What a TF edit costs: the control points and the table the mode uses (the 2D
 // iso-detection table or the 3D pre-integration table). The mesh is not touched.
@@ -422,14 +438,12 @@ void GpuVolume::rebuildTables() {
   std::vector<glm::vec4> colorTau;
   std::vector<float> values;
   for (const ControlPoint& p : tf_.points()) {
-    colorTau.push_back(glm::vec4(glm::vec3(p.color), float(p.extinction)));
+    colorTau.push_back(glm::vec4(glm::vec3(p.color), float(gpuExtinction(p.extinction))));
     values.push_back(gpu_.gpuValue(p.value));
   }
   upload(tfColorTau_, colorTau);
   upload(tfValues_, values);
-  tableLo_ = std::min(gpu_.valueMin, tf_.empty() ? gpu_.valueMin : tf_.minValue());
-  tableHi_ = std::max(gpu_.valueMax, tf_.empty() ? gpu_.valueMax : tf_.maxValue());
-  if (!(tableHi_ > tableLo_)) tableHi_ = tableLo_ + 1.0;
+  std::tie(tableLo_, tableHi_) = tableRange();
   uploadKnots(values);  // after the range: the table coordinates span it
   if (mode_ == IntegrationMode::LinearSegmentsIsoTable) {
     const optics::IsoDetectionTable iso(tf_, tableLo_, tableHi_, isoResolution);
@@ -470,15 +484,16 @@ void GpuVolume::launchPreintegration() {
 void GpuVolume::uploadKnots(const std::vector<float>& gpuValues) {
   const optics::TableWarp warp(tf_, tableLo_, tableHi_, preResolution);
   const std::size_t n = gpuValues.size();
-  std::vector<double> values, taus;
+  std::vector<double> values, taus, integralValues;
   for (std::size_t i = 0; i < n; ++i) {
     values.push_back(gpuValues[i]);
-    taus.push_back(tf_.points()[i].extinction);
+    taus.push_back(gpuExtinction(tf_.points()[i].extinction));
+    integralValues.push_back(std::clamp(values.back(), -kIntegralValueMargin, 1.0 + kIntegralValueMargin));
   }
   const std::vector<double> zeroUntil = zeroExtinctionRuns(values, taus);  // in the GPU's frame
   zeroBelow_ = float(zeroUntil[0]);
   // gpuValue rounds to float: equal values stay equal, the order stays.
-  const optics::OpticalDepth depth(std::move(values), std::move(taus));
+  const optics::OpticalDepth depth(std::move(integralValues), std::move(taus));
   std::vector<glm::vec4> knots;
   for (std::size_t i = 0; i < n; ++i) {
     const double integral = depth.runningIntegrals()[i];

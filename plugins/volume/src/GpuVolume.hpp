@@ -24,6 +24,7 @@
 #include <volpost/render/VolumeRenderer.hpp>
 
 #include <chrono>
+#include <utility>
 #include <cstdint>
 #include <future>
 #include <map>
@@ -170,6 +171,7 @@ class GpuVolume {
   void makeGridTexels(SampleView values);
   void rebuildTables();
   void uploadTransferFunction2D();
+  std::pair<double, double> tableRange() const;
   bool tablesNeedRebuild() const;
   void launchPreintegration();
   /// The pre-integration table's mean colors (optics::PreintegrationTable::values).

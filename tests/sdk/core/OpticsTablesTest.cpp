@@ -141,6 +141,31 @@ TEST(PreintegrationTable, EveryTexelHoldsTheExactMeanColor) {
   EXPECT_LE(worst, 3e-7);  // float rounding of colors <= 1
 }
 
+// The mean color at a given optical depth depends on the extinctions' ratios only: a
+// function scaled by 1e-300 or 1e300 has the same table, and extinctions at the double's
+// limits (a denormal, 1e308 whose sums overflow) give colors, never NaN or black.
+TEST(PreintegrationTable, TheTableDependsOnTheExtinctionsRatiosOnly) {
+  const auto scaled = [](double factor) {
+    std::vector<ControlPoint> p = segments(6).points();
+    for (ControlPoint& q : p) q.extinction *= factor;
+    return TransferFunction(p);
+  };
+  const PreintegrationTable plain(scaled(1.0), 0.0, 1.0, 17, 9);
+  for (double factor : {1e-300, 1e300, 1e-320 / 4.0, 1e308 / 4.0}) {
+    const PreintegrationTable table(scaled(factor), 0.0, 1.0, 17, 9);
+    const bool exactRatios = factor == 1e-300 || factor == 1e300;  // a denormal keeps few bits
+    for (std::size_t i = 0; i < plain.values().size(); ++i) {
+      ASSERT_TRUE(std::isfinite(table.values()[i])) << factor << " texel " << i;
+      if (exactRatios) ASSERT_NEAR(table.values()[i], plain.values()[i], 1e-6) << factor << " texel " << i;
+    }
+  }
+  const TransferFunction huge({{0.0, {1, 0, 0}, 1e308}, {1.0, {0, 1, 0}, 1e308}});
+  const PreintegrationTable table(huge, 0.0, 1.0, 9, 3);
+  const float* whole = &table.values()[((2 * 9 + 8) * 9 + 0) * 3];  // deepest, from 0 to 1
+  EXPECT_GT(whole[0], 0.5f);  // seen from the red end
+  EXPECT_GT(whole[1], 0.1f);
+}
+
 TEST(TableWarp, PiecewiseLinearBothWaysAndFairToNarrowPieces) {
   // A peak 0.01 wide at 0.5 in [0, 1]: its two pieces get a quarter of the table each.
   const TransferFunction peak({{0.495, {1, 1, 1}, 0.0}, {0.5, {1, 0, 0}, 400.0}, {0.505, {1, 1, 1}, 0.0}});

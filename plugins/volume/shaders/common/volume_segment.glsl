@@ -183,7 +183,7 @@ float tfExtinctionAt(float s, int above) {
   if (above == 0) return tfColorTau[0].a;
   if (above == tfCount) return tfColorTau[tfCount - 1].a;
   float width = tfValue[above] - tfValue[above - 1];
-  return width > 0.0 ? mix(tfColorTau[above - 1].a, tfColorTau[above].a, (s - tfValue[above - 1]) / width)
+  return width > 0.0 ? tfLerp(tfColorTau[above - 1].a, tfColorTau[above].a, (s - tfValue[above - 1]) / width)
                      : tfColorTau[above].a;
 }
 

@@ -86,20 +86,25 @@ class MeanColorSeries {
  public:
   static constexpr int kTerms = 9;  // moments mu_0 .. mu_8
 
-  MeanColorSeries(const std::vector<Piece>& pieces, double meanTau) {
+  /// `pieces` with some extinction > 0.
+  explicit MeanColorSeries(const std::vector<Piece>& pieces) {
     using Gauss = boost::math::quadrature::gauss<double, 10>;
+    // w depends on the extinctions' ratios only: scaled to a peak of 1, extinctions near
+    // the double's limits (1e-320, 1e308) neither vanish nor overflow.
+    double peak = 0.0, meanTau = 0.0;
+    for (const Piece& q : pieces) peak = std::max({peak, q.tau0, q.tau1});
+    for (const Piece& q : pieces) meanTau += q.fraction * 0.5 * (q.tau0 / peak + q.tau1 / peak);
     double w0 = 0.0;  // depth fraction at the piece's front
     for (const Piece& q : pieces) {
-      const double scale = q.fraction / meanTau, slope = q.tau1 - q.tau0;
+      const double tau0 = q.tau0 / peak, slope = q.tau1 / peak - tau0, scale = q.fraction / meanTau;
       for (std::size_t i = 0; i < Gauss::abscissa().size(); ++i)
         for (double sign : {-1.0, 1.0}) {
           const double t = 0.5 * (1.0 + sign * Gauss::abscissa()[i]);
-          const double tau = q.tau0 + slope * t;
-          const double v = w0 + scale * t * (q.tau0 + 0.5 * slope * t) - 0.5;
-          glm::dvec3 term = (0.5 * Gauss::weights()[i] * scale * tau) * (q.c0 + (q.c1 - q.c0) * t);
+          const double v = w0 + scale * t * (tau0 + 0.5 * slope * t) - 0.5;
+          glm::dvec3 term = (0.5 * Gauss::weights()[i] * scale * (tau0 + slope * t)) * (q.c0 + (q.c1 - q.c0) * t);
           for (int k = 0; k < kTerms; ++k, term *= v) moments_[k] += term;
         }
-      w0 += scale * 0.5 * (q.tau0 + q.tau1);
+      w0 += scale * 0.5 * (tau0 + tau0 + slope);
     }
   }
 
@@ -153,7 +158,7 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& original, doubl
       // A constant segment shows its one color at any depth (the value above a step, as
       // constantSegment composites it).
       const std::optional<MeanColorSeries> series =
-          meanTau > 0.0 && sf != sb ? std::optional(MeanColorSeries(pieces, meanTau)) : std::nullopt;
+          meanTau > 0.0 && sf != sb ? std::optional(MeanColorSeries(pieces)) : std::nullopt;
       const glm::dvec3 constant = pieces.front().c0;
       for (int d = 0; d < nd_; ++d) {
         const double depth = kMaxDepth * double(d) / (nd_ - 1);
