@@ -45,11 +45,8 @@ void setFilter(GLuint tex, GLint filter) {
   glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
 }
 
-// The shaders compute in float (at most 3.4e38). An extinction above this is opaque over
-// any length a picture resolves (1e-10 units: an optical depth of 1e10), and capped there
-// its products with lengths and its running integrals stay finite (1e300 gave NaN pixels).
-constexpr double kMaxGpuExtinction = 1e20;
-double gpuExtinction(double extinction) { return std::min(extinction, kMaxGpuExtinction); }
+// The shaders compute in float: extinctions go there capped (kMaxFloatExtinction).
+double gpuExtinction(double extinction) { return std::min(extinction, kMaxFloatExtinction); }
 
 // The running integrals of the extinction matter between control points inside the values'
 // range only (0..1 on the GPU); points far outside it (a function spanning 1e30 times the

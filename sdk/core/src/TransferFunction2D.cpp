@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/TransferFunction2D.hpp>
 
+#include <volpost/core/TransferFunction.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -73,6 +75,7 @@ void TransferFunction2D::buildTable() {
       glm::dvec4 node(0.0);
       for (const TfWidget2D& w : widgets_)
         if (const double k = w.weight(v, g) * w.extinction; k > 0.0) node += glm::dvec4(w.color * k, k);
+      if (node.a > kMaxFloatExtinction) node *= kMaxFloatExtinction / node.a;  // float nodes; the color kept
       table_[std::size_t(j) * kValueNodes + std::size_t(i)] = glm::vec4(node);
     }
 }

@@ -3,9 +3,12 @@
 // beyond it, a ramp one node wide at a widget's edge, overlapping widgets adding their
 // extinction and mixing their colors by it), its JSON both ways, and refusals naming the
 // widget and the number.
+#include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 using namespace volpost;
 
@@ -29,6 +32,18 @@ TEST(TransferFunction2D, WidgetsCoverTheirRegions) {
   EXPECT_EQ(triangle.weight(5.4, 2.0), 1.0);  // half-width 0.5 at gradient 2
   EXPECT_EQ(triangle.weight(5.6, 2.0), 0.0);
   EXPECT_EQ(triangle.weight(5.9, 2.9), 1.0);
+}
+
+// The table is float (the GPU's): an extinction beyond float's range is held at
+// kMaxFloatExtinction with its color, never as infinity (NaN colors in every renderer).
+TEST(TransferFunction2D, AnExtinctionBeyondFloatIsCappedWithItsColor) {
+  const TransferFunction2D tf({rectangle(5.0, 2.0, 1.0, 3.0, {1, 0.5, 0}, 1e300), rectangle(6.0, 2.0, 2.0, 4.0, {0, 0, 1}, 6.0)});
+  for (const glm::vec4& node : tf.table()) ASSERT_TRUE(std::isfinite(node.r) && std::isfinite(node.a));
+  const glm::dvec4 c = tf.evaluate(4.5, 1.5);
+  EXPECT_NEAR(c.a, kMaxFloatExtinction, 1e-6 * kMaxFloatExtinction);
+  EXPECT_NEAR(c.r, 1.0, 1e-6);
+  EXPECT_NEAR(c.g, 0.5, 1e-6);
+  EXPECT_TRUE(std::isfinite(tf.evaluate(5.5, 2.5).b));  // where the blue one overlaps: red-orange, finite
 }
 
 TEST(TransferFunction2D, TheTableIsWhatIsRendered) {

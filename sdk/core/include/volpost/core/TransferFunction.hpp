@@ -20,6 +20,12 @@
 
 namespace volpost {
 
+/// Where extinctions go through float (the GPU's arithmetic, the 2D function's table), they
+/// are capped here: opaque over any length a picture resolves (1e-10 units: an optical
+/// depth of 1e10), while its products with lengths and running integrals stay finite
+/// (float ends at 3.4e38; an extinction of 1e300 gave NaN pixels).
+inline constexpr double kMaxFloatExtinction = 1e20;
+
 struct ControlPoint {
   double value = 0.0;          ///< scalar value (the iso-value), in field units
   glm::dvec3 color{1.0};       ///< emitted color, linear RGB 0..1
