@@ -14,6 +14,7 @@
 #include <volpost/core/optics/OpticalDepth.hpp>
 #include <volpost/core/optics/PreintegrationTable.hpp>
 #include <volpost/core/optics/PsiTable.hpp>
+#include <volpost/core/optics/ThickPsi.hpp>
 #include <volpost/render/ShaderLibrary.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -251,6 +252,11 @@ void GpuVolume::initialize() {
   psiTable_ = texture2D(GL_R32F, psiResolution, psiResolution);
   setFilter(psiTable_.id(), GL_LINEAR);
   glTextureSubImage2D(psiTable_.id(), 0, 0, 0, psiResolution, psiResolution, GL_RED, GL_FLOAT, psi.values().data());
+  const optics::ThickPsiTable thick(thickPsiResolution);
+  thickPsiTable_ = gl::createTexture(GL_TEXTURE_1D);
+  glTextureStorage1D(thickPsiTable_.id(), 1, GL_RG32F, thickPsiResolution);
+  setFilter(thickPsiTable_.id(), GL_NEAREST);  // read with texelFetch, interpolated in the shader
+  glTextureSubImage1D(thickPsiTable_.id(), 0, 0, thickPsiResolution, GL_RG, GL_FLOAT, thick.values().data());
   initialized_ = true;
   meshDirty_ = tablesDirty_ = visibleDirty_ = true;  // a fresh context holds nothing yet
   meshUploads_ = valueUploads_ = tableBuilds_ = 0;
@@ -263,7 +269,7 @@ void GpuVolume::release() {
   preOutdated_ = false;
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_, &tfKnots_})
     b->reset();
-  for (gl::Texture* t : {&psiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
+  for (gl::Texture* t : {&psiTable_, &thickPsiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
   tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
   visible_.release();
@@ -644,6 +650,7 @@ glm::mat4 GpuVolume::imageViewProjection(const RenderContext& ctx) const {
 void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, ctx.depthTexture);
   glBindTextureUnit(binding::kPsiTable, psiTable_.id());
+  glBindTextureUnit(binding::kThickPsi, thickPsiTable_.id());
   glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
   glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
   glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's

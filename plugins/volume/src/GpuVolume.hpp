@@ -157,7 +157,7 @@ class GpuVolume {
 
   /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration
   /// N^2 values x preDepthResolution depths.
-  int psiResolution = 512, isoResolution = 256, preResolution = 256, preDepthResolution = 9;
+  int psiResolution = 512, thickPsiResolution = 1024, isoResolution = 256, preResolution = 256, preDepthResolution = 9;
 
  private:
   void uploadMesh();
@@ -222,7 +222,7 @@ class GpuVolume {
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_, tfKnots_;
-  gl::Texture psiTable_, isoTable_, preTable_, image_, tf2dTable_;
+  gl::Texture psiTable_, thickPsiTable_, isoTable_, preTable_, image_, tf2dTable_;
   bool tf2dDirty_ = false;
   GridBricks bricks_;
   VisibleTetsGpu visible_;

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "VolumeBindings.hpp"
 
+#include <volpost/core/optics/ThickPsi.hpp>
+
+#include <cstdio>
 #include <utility>
 
 namespace volpost::volume::binding {
@@ -18,9 +21,16 @@ std::string glslDefines() {
       {"UNIT_GRID", kGrid},              {"UNIT_TF2D", kTf2d},
       {"BINDING_TF_KNOTS", kTfKnots},    {"BINDING_VISIBLE_TETS", kVisibleTets},
       {"BINDING_FOUND_FACES", kFoundFaces}, {"UNIT_NEAREST_ENTRY", kNearestEntry},
-      {"UNIT_FARTHEST_ENTRY", kFarthestEntry}};
+      {"UNIT_FARTHEST_ENTRY", kFarthestEntry}, {"UNIT_THICK_PSI", kThickPsi}};
   std::string out;
   for (const auto& [name, value] : all) out += "#define " + std::string(name) + " " + std::to_string(value) + "\n";
+  const auto floatDefine = [&](const char* name, double value) {
+    char text[64];
+    std::snprintf(text, sizeof text, "#define %s %.17g\n", name, value);
+    out += text;
+  };
+  floatDefine("THICK_PSI_MIN_DEPTH", optics::ThickPsiTable::kMinDepth);
+  floatDefine("THICK_PSI_TABLE_END", optics::ThickPsiTable::kTableEnd);
   return out;
 }
 

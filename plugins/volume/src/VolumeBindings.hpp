@@ -37,8 +37,10 @@ inline constexpr GLuint kGrid = 5;           ///< a regular grid's values (3D te
 inline constexpr GLuint kTf2d = 6;           ///< a 2D transfer function's table
 inline constexpr GLuint kNearestEntry = 7;   ///< ray caster: each pixel's nearest entry (TetRayDispatch)
 inline constexpr GLuint kFarthestEntry = 8;  ///< ray caster: each pixel's farthest entry
+inline constexpr GLuint kThickPsi = 9;       ///< psi of thick pieces: optics::ThickPsiTable (1D)
 
-/// "#define BINDING_NODES 0\n..." for every constant above.
+/// "#define BINDING_NODES 0\n..." for every constant above, and the thick-psi table's
+/// constants (THICK_PSI_MIN_DEPTH, THICK_PSI_TABLE_END).
 std::string glslDefines();
 
 }  // namespace volpost::volume::binding

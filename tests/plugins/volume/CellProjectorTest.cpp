@@ -65,6 +65,8 @@ TEST_F(CellProjection, TinyAndOffsetValuesRenderLikeTheReference) {
 
 TEST_F(CellProjection, ExtremeExtinctionsRenderLikeTheReference) { expectExtremeExtinctionsLikeTheReference("vicp"); }
 
+TEST_F(CellProjection, AnOpaqueRampAfterAClearRangeRendersLikeTheReference) { expectAnOpaqueRampLikeTheReference("vicp"); }
+
 TEST_F(CellProjection, ClipPlanesCutLikeTheReference) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   const ImageError clipped = againstReference(grid, FieldLocation::Node, field(grid), kTf, isoCamera(grid), 64,

@@ -159,6 +159,8 @@ TEST_F(RayCast, TinyAndOffsetValuesRenderLikeTheReference) {
 
 TEST_F(RayCast, ExtremeExtinctionsRenderLikeTheReference) { expectExtremeExtinctionsLikeTheReference("raycast"); }
 
+TEST_F(RayCast, AnOpaqueRampAfterAClearRangeRendersLikeTheReference) { expectAnOpaqueRampLikeTheReference("raycast"); }
+
 TEST_F(RayCast, TransferFunctionEditsDoNotTouchTheMesh) {
   const Mesh grid = test::tetGrid(4, 4, 4);
   caster_->setVolume(grid, FieldLocation::Node, field(grid));

@@ -23,6 +23,7 @@ uniform float terminationTransmittance;
 uniform int clipCount;
 uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // keep dot(xyz, p) + w >= 0 (mesh-relative)
 layout(binding = UNIT_PSI) uniform sampler2D psiTable;  // psi over gamma = t / (t + 1)
+layout(binding = UNIT_THICK_PSI) uniform sampler1D thickPsiTable;  // (sqrt(pi)/2 erfcx, Dawson) x (1 + u) over u / (u + 1)
 layout(binding = UNIT_ISO) uniform sampler2D isoTable;  // first and next control point crossed (range positions)
 layout(binding = UNIT_PRE) uniform sampler3D preTable;  // (s_front, s_back, optical depth) -> mean color
 uniform float sLo, sHi;              // range of the iso and pre-integration tables
@@ -83,11 +84,41 @@ float psiSeries(float a, float d) {
   return 1.0 - k1 + k2 / 2.0 - k3 / 6.0 + k4 / 24.0 - k5 / 120.0;
 }
 
+// psi of thick pieces (optics::ThickPsiTable): F(t / 2r) / r, F tabulated over
+// y = u / (u + 1) up to THICK_PSI_TABLE_END and interpolated here with float weights (a
+// sampler's may have 8 bits), its asymptotic series beyond.
+float thickF(bool frontThicker, float t, float r) {
+  float u = t / (2.0 * r);
+  if (u > THICK_PSI_TABLE_END) {
+    float q = 2.0 * r * r / (t * t);
+    return (1.0 + (frontThicker ? q : -q) + 3.0 * q * q) / t;
+  }
+  int n = textureSize(thickPsiTable, 0);
+  float yEnd = THICK_PSI_TABLE_END / (THICK_PSI_TABLE_END + 1.0);
+  float x = u / (1.0 + u) / yEnd * float(n - 1);
+  int i = min(int(x), n - 2);
+  float w = x - float(i);
+  vec2 g = texelFetch(thickPsiTable, i, 0).rg * (1.0 - w) + texelFetch(thickPsiTable, i + 1, 0).rg * w;
+  return (frontThicker ? g.g : g.r) / ((1.0 + u) * r);
+}
+
+// Pieces of optical depth (tf + tb) / 2 > THICK_PSI_MIN_DEPTH: a transparent front and an
+// opaque back (or the reverse) is where the 2D table is far off (up to 0.02).
+float psiThick(float tf, float tb) {
+  float d = 0.5 * (tb - tf);
+  if (d == 0.0) return (1.0 - exp(-tf)) / tf;
+  bool frontThicker = d < 0.0;
+  float r = sqrt(abs(d));
+  return thickF(frontThicker, tf, r) - exp(-0.5 * (tf + tb)) * thickF(frontThicker, tb, r);
+}
+
 void linearPiece(vec4 front, vec4 back, float len) {  // rgb color, a extinction
   float tf = front.a * len, tb = back.a * len;
-  float zeta = exp(-0.5 * (tf + tb));
-  float psi = 0.5 * (tf + tb) <= 0.1 ? psiSeries(tf, 0.5 * (tb - tf))
-                                      : textureLod(psiTable, vec2(gammaUv(tf), gammaUv(tb)), 0.0).r;
+  float depth = 0.5 * (tf + tb);
+  float zeta = exp(-depth);
+  float psi = depth <= 0.1                 ? psiSeries(tf, 0.5 * (tb - tf))
+              : depth > THICK_PSI_MIN_DEPTH ? psiThick(tf, tb)
+                                            : textureLod(psiTable, vec2(gammaUv(tf), gammaUv(tb)), 0.0).r;
   psi = clamp(psi, zeta, 1.0);
   composite(back.rgb * (psi - zeta) + front.rgb * (1.0 - psi), zeta);
 }
