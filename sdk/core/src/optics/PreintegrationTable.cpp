@@ -76,11 +76,11 @@ glm::dvec3 colorAtNearestExtinction(const TransferFunction& tf, double a, double
 // accumulated so far: it depends on the values alone, not on D, and the color emitted per
 // unit of depth is c(w). So C = D int_0^1 c(w) e^(-D w) dw and alpha = 1 - e^(-D). Around
 // w = 1/2, e^(-D w) = e^(-D/2) sum_k (-D)^k (w - 1/2)^k / k!, whose terms beyond k = 8 are
-// below (D/4)^9 / 9! < 1.1e-11 for D <= kMaxDepth: the mean color is
+// below (D/2)^9 / 9! < 1.1e-11 for D <= kMaxDepth: the mean color is
 //   (D/2) / sinh(D/2) * sum_k (-D)^k / k! * mu_k,   mu_k = int_0^1 c(w) (w - 1/2)^k dw,
 // each moment a polynomial integral over every piece (c linear, w quadratic in the piece's
 // parameter: degree 2k + 2 <= 18, exact with ten Gauss-Legendre nodes). Nine depths cost one
-// pass over the pieces instead of nine exact integrations (a 255-point function built 8x
+// pass over the pieces instead of nine exact integrations (a 255-point function built 11x
 // slower that way).
 class MeanColorSeries {
  public:
