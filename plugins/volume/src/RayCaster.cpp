@@ -38,17 +38,15 @@ double RayCaster::renderWhole(const RenderContext& ctx, GLuint image) {
 void RayCaster::beginRefining(const RenderContext& ctx) {
   building_ = {};
   refineFirstRow_ = 0;
-  mapsPending_ = true;  // drawn by the first refine(): not while the view moves
+  mapsPending_ = true;  // drawn by refine(), in parts: not while the view moves
+  mapsBegun_ = false;
   refineRows_ = std::min(rays_.bandRows(ctx.width, ctx.height), ctx.height);
   rays_.beginBand(ctx.width, refineRows_);
 }
 
 bool RayCaster::refine(const RenderContext& ctx) {
   const auto start = std::chrono::steady_clock::now();
-  if (mapsPending_) {
-    rays_.drawEntryMaps(volume_, ctx);
-    mapsPending_ = false;
-  }
+  if (mapsPending_ && !drawMapsPart(ctx, start)) return false;
   for (;;) {
     const auto passStart = std::chrono::steady_clock::now();
     const std::size_t unfinished =
@@ -72,6 +70,31 @@ bool RayCaster::refine(const RenderContext& ctx) {
     if (millisecondsSince(start) >= quick_.sliceMs()) return false;
   }
 }
+// The entry maps of the frame being refined, as many faces a call as its slice allows (a
+// post of 23K faces took about a slice's time to draw at 1024x768 on llvmpipe); true once
+// they are done (or not drawn at all), and the slice's time is not spent.
+bool RayCaster::drawMapsPart(const RenderContext& ctx, std::chrono::steady_clock::time_point sliceStart) {
+  if (!mapsBegun_) {
+    mapsBegun_ = true;
+    if (!rays_.beginEntryMaps(volume_, ctx)) {
+      mapsPending_ = false;
+      return true;
+    }
+  }
+  for (;;) {
+    const auto partStart = std::chrono::steady_clock::now();
+    const bool done = rays_.drawEntryMapFaces(volume_, ctx, mapFacesPerPart_);
+    glFinish();  // the part's time, to size the next one
+    ++building_.entryMapParts;
+    const double ms = millisecondsSince(partStart);
+    const double factor = std::clamp(0.5 * quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
+    mapFacesPerPart_ = std::clamp(std::size_t(double(mapFacesPerPart_) * factor), std::size_t(64), std::size_t(1) << 26);
+    if (done) mapsPending_ = false;
+    if (millisecondsSince(sliceStart) >= quick_.sliceMs()) return false;
+    if (done) return true;
+  }
+}
+
 void RayCaster::render(const RenderContext& ctx) {
   if (!volume_.initialized() || !volume_.hasTets() || ctx.width <= 0 || ctx.height <= 0) return;
   volume_.prepare(ctx);

@@ -19,6 +19,7 @@
 #include "TetVolumeRenderer.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 
@@ -58,6 +59,9 @@ class RayCaster final : public TetVolumeRenderer {
   /// slice's time and says true when it is complete.
   void beginRefining(const RenderContext& ctx);
   bool refine(const RenderContext& ctx);
+  /// Part of the entry maps (TetRayDispatch::drawEntryMapFaces) within the slice that began
+  /// at sliceStart; true once they are done and the slice has time left for rays.
+  bool drawMapsPart(const RenderContext& ctx, std::chrono::steady_clock::time_point sliceStart);
 
   TetRayDispatch rays_;
   int stepsPerPass_ = kStepsPerPass;
@@ -66,6 +70,8 @@ class RayCaster final : public TetVolumeRenderer {
   int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined
   int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to the slice's time
   bool mapsPending_ = false;  ///< the full frame being refined has no entry maps yet
+  bool mapsBegun_ = false;    ///< its maps are cleared and partly drawn
+  std::size_t mapFacesPerPart_ = 1024;  ///< faces a part of the maps, adapted to the slice's time
 };
 
 }  // namespace volpost::volume

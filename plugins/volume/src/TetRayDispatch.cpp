@@ -96,39 +96,55 @@ void TetRayDispatch::sizeMaps(int width, int height) {
 }
 
 void TetRayDispatch::drawEntryMaps(GpuVolume& volume, const RenderContext& ctx) {
+  if (beginEntryMaps(volume, ctx)) drawEntryMapFaces(volume, ctx, mapsFaces_);
+}
+
+bool TetRayDispatch::beginEntryMaps(GpuVolume& volume, const RenderContext& ctx) {
   hasMaps_ = false;
   // Drawing the maps costs about the faces (six vertices each), the searches they save
   // about the rays: on a small image (a quick frame) of a mesh with many faces the BVH is
   // cheaper (post_fine's 23K faces at 64x48: 4.3 instead of 23 frames per second).
   const std::size_t faces = volume.entryFaceCount();
-  if (!entryMaps_ || faces > kMostMapFaces || std::size_t(ctx.width) * std::size_t(ctx.height) < 2 * faces) return;
+  if (!entryMaps_ || faces > kMostMapFaces || std::size_t(ctx.width) * std::size_t(ctx.height) < 2 * faces) return false;
   sizeMaps(ctx.width, ctx.height);
-  const SavedDrawState saved;
-  const GLuint p = volume.program({"volume/entry_faces.vert", "volume/entry_faces.frag"});
-  glUseProgram(p);
-  volume.setSegmentUniforms(p, ctx);
-  const glm::mat4 vp = volume.imageViewProjection(ctx);
-  glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, &vp[0][0]);
-  glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
-  volume.bindSegmentResources(ctx);
-  glBindFramebuffer(GL_FRAMEBUFFER, mapsFramebuffer_.id());
-  glViewport(0, 0, ctx.width, ctx.height);
-  glBindVertexArray(emptyVertexArray_.id());
-  glEnable(GL_DEPTH_TEST);
-  glDepthMask(GL_TRUE);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_BLEND);
-  glDisable(GL_CULL_FACE);
   const GLuint none[4] = {0xffffffffu, 0xffffffffu, 0, 0}, zero = 0;
   const float farthestDepth = 1.0f;
   glClearNamedFramebufferuiv(mapsFramebuffer_.id(), GL_COLOR, 0, none);
   glClearNamedFramebufferfv(mapsFramebuffer_.id(), GL_DEPTH, 0, &farthestDepth);
   glClearTexImage(farthest_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindImageTexture(1, farthest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
-  if (faces > 0) glDrawArrays(GL_TRIANGLES, 0, GLsizei(faces * 6));
+  mapsFaces_ = faces;
+  mapsNextFace_ = 0;
+  return true;
+}
+
+bool TetRayDispatch::drawEntryMapFaces(GpuVolume& volume, const RenderContext& ctx, std::size_t count) {
+  const std::size_t first = mapsNextFace_, n = std::min(count, mapsFaces_ - first);
+  if (n > 0) {
+    const SavedDrawState saved;
+    const GLuint p = volume.program({"volume/entry_faces.vert", "volume/entry_faces.frag"});
+    glUseProgram(p);
+    volume.setSegmentUniforms(p, ctx);
+    const glm::mat4 vp = volume.imageViewProjection(ctx);
+    glProgramUniformMatrix4fv(p, glGetUniformLocation(p, "viewProjection"), 1, GL_FALSE, &vp[0][0]);
+    glProgramUniform2f(p, glGetUniformLocation(p, "viewportSize"), float(ctx.width), float(ctx.height));
+    volume.bindSegmentResources(ctx);
+    glBindFramebuffer(GL_FRAMEBUFFER, mapsFramebuffer_.id());
+    glViewport(0, 0, ctx.width, ctx.height);
+    glBindVertexArray(emptyVertexArray_.id());
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glBindImageTexture(1, farthest_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    glDrawArrays(GL_TRIANGLES, GLint(first * 6), GLsizei(n * 6));  // gl_VertexID counts from first * 6
+  }
+  mapsNextFace_ = first + n;
+  if (mapsNextFace_ < mapsFaces_) return false;
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the image's atomics, read by texelFetch
   hasMaps_ = true;
-  gl::check("TetRayDispatch::drawEntryMaps");
+  gl::check("TetRayDispatch::drawEntryMapFaces");
+  return true;
 }
 
 void TetRayDispatch::setBandRowsLimit(int rows) { bandRowsLimit_ = std::max(rows, 0); }

@@ -22,6 +22,7 @@ struct RayFrameReport {
   std::size_t cappedRays = 0;  ///< rays stopped at the step cap (rayStepCap) before leaving the mesh
   double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
   bool entryMaps = false;      ///< rays started from the entry maps (drawEntryMaps), not BVH searches
+  int entryMapParts = 0;       ///< draws the maps took (asynchronous path: in parts, within the slices)
 };
 
 class TetRayDispatch {
@@ -46,6 +47,12 @@ class TetRayDispatch {
   /// dispatch until the next call. Not drawn where the image has fewer than two pixels per
   /// face (the searches are then cheaper than the maps).
   void drawEntryMaps(GpuVolume& volume, const RenderContext& ctx);
+  /// The same maps in parts, so that a window's refinement slice stays within its time:
+  /// beginEntryMaps clears them (false where none are drawn, as above); each
+  /// drawEntryMapFaces draws the next `count` faces and says true once every face is drawn
+  /// (the maps are then used). Faces go in the order of one draw: the same maps bit for bit.
+  bool beginEntryMaps(GpuVolume& volume, const RenderContext& ctx);
+  bool drawEntryMapFaces(GpuVolume& volume, const RenderContext& ctx, std::size_t count);
   /// Tests and benches: without entry maps every ray searches the BVH (the same picture).
   void setEntryMaps(bool on) { entryMaps_ = on; }
 
@@ -70,6 +77,7 @@ class TetRayDispatch {
   gl::VertexArray emptyVertexArray_;
   int mapsWidth_ = 0, mapsHeight_ = 0;
   bool hasMaps_ = false;                         ///< drawn for the frame being dispatched
+  std::size_t mapsFaces_ = 0, mapsNextFace_ = 0; ///< maps being drawn in parts: faces, the next one
   bool entryMaps_ = true;
   int bandRowsLimit_ = 0;  ///< tests: at most this many rows per band (0: as the device allows)
 };

@@ -519,6 +519,26 @@ TEST_F(RayCast, TheWindowGetsAQuickFrameAndTheFullOneInSlicesThatEqualsTheSynchr
   EXPECT_TRUE(caster.hasPendingWork());
 }
 
+// In the window the entry maps are drawn in parts, each within a refinement slice (a
+// post's 23K faces took about a whole slice): the same maps, so the same picture bit for bit.
+TEST_F(RayCast, EntryMapsDrawnInPartsGiveTheSynchronousFrame) {
+  const Mesh grid = test::tetGrid(12, 12, 12);  // 1728 boundary faces
+  const Camera camera = isoCamera(grid);
+  caster_->setVolume(grid, FieldLocation::Node, field(grid));
+  caster_->setTransferFunction(kTf);
+  caster_->setTerminationThreshold(0.0);
+  auto& caster = rayCaster(*caster_);
+  const std::vector<float> synchronous = gpuImage(camera, 128, 96);
+  ASSERT_TRUE(caster.lastFrame().entryMaps);
+  caster.setAsynchronousUpdates(true);
+  caster.setFrameBudget(1e-3, 1e-3);  // the smallest slices: a part of the maps each
+  for (int i = 0; i < 100000 && (i == 0 || caster.hasPendingWork()); ++i) (void)gpuImage(camera, 128, 96);
+  ASSERT_FALSE(caster.hasPendingWork());
+  EXPECT_TRUE(caster.lastFrame().entryMaps);
+  EXPECT_GT(caster.lastFrame().entryMapParts, 2) << "the maps took several parts";
+  EXPECT_EQ(gpuImage(camera, 128, 96), synchronous);
+}
+
 // Neighbours more than 2^21 tets apart in the numbering do not fit a packed field: they go
 // to the sorted pairs after the packed words, which the shader searches. A tet grid of 2.2M
 // tets in a shuffled order has tens of thousands of them: the packed adjacency decodes to
