@@ -62,6 +62,8 @@ class QuickFrames {
   GLuint quickImage() const { return quickImage_.id(); }
   /// A complete frame of width x height took `ms` (GPU work included): the cost per pixel.
   void measured(double ms, int width, int height);
+  /// The last measured cost per pixel (0 before any).
+  double msPerPixel() const { return msPerPixel_; }
   /// For a renderer whose quick frames are drawn another way than its full frames (cell
   /// projection's by ray casting: its own cost is per tet and does not shrink with the
   /// resolution): measured() then sizes the quick frames, and the full frame is drawn at

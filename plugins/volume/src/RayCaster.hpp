@@ -58,6 +58,7 @@ class RayCaster final : public TetVolumeRenderer {
   /// Starts the full frame of ctx (asynchronous path); refine() advances it for about the
   /// slice's time and says true when it is complete.
   void beginRefining(const RenderContext& ctx);
+  void beginRefiningBand(const RenderContext& ctx, int firstRow);
   bool refine(const RenderContext& ctx);
   /// Part of the entry maps (TetRayDispatch::drawEntryMapFaces) within the slice that began
   /// at sliceStart; true once they are done and the slice has time left for rays.
@@ -68,6 +69,8 @@ class RayCaster final : public TetVolumeRenderer {
   RayFrameReport lastFrame_, building_;
   QuickFrames quick_;      ///< asynchronous updates: the quick frame and the refinement's state
   int refineFirstRow_ = 0, refineRows_ = 0;  ///< the band being refined
+  double bandMs_ = 0.0;    ///< its dispatches' time so far
+  double msPerRow_ = 0.0;  ///< the last finished band's time per row (0: none yet this frame)
   int sliceSteps_ = 256;   ///< tets per dispatch while refining, adapted to the slice's time
   bool mapsPending_ = false;  ///< the full frame being refined has no entry maps yet
   bool mapsBegun_ = false;    ///< its maps are cleared and partly drawn

@@ -23,6 +23,7 @@ struct RayFrameReport {
   double milliseconds = 0.0;   ///< GPU work of the frame, summed over its dispatches (asynchronous path)
   bool entryMaps = false;      ///< rays started from the entry maps (drawEntryMaps), not BVH searches
   int entryMapParts = 0;       ///< draws the maps took (asynchronous path: in parts, within the slices)
+  int refinedBands = 0;        ///< bands of rows the window's refinement took (each sized to a slice)
 };
 
 class TetRayDispatch {

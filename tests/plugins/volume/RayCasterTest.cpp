@@ -507,6 +507,8 @@ TEST_F(RayCast, TheWindowGetsAQuickFrameAndTheFullOneInSlicesThatEqualsTheSynchr
   for (; calls < 10000 && caster.hasPendingWork(); ++calls) (void)gpuImage(camera, 64, 48);
   ASSERT_FALSE(caster.hasPendingWork());
   EXPECT_GT(calls, 2) << "the full frame took several calls";
+  // Bands sized to the slice: one band of the whole picture held the window 4 s on a post.
+  EXPECT_GT(caster.lastFrame().refinedBands, 4) << "the picture refined in bands of a few rows";
   EXPECT_EQ(caster.shownReduction(), 1);
   EXPECT_EQ(gpuImage(camera, 64, 48), synchronous) << "the refined frame is the synchronous one";
   // Another view starts over with a quick frame; so does a changed transfer function.
