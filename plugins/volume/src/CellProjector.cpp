@@ -107,16 +107,24 @@ bool CellProjector::refine(const RenderContext& ctx) {
     sortFor(ctx);
     sortPending_ = false;
     refineMs_ += millisecondsSince(start);
+    if (millisecondsSince(start) >= quick_.sliceMs()) return false;  // the sort was this slice
   }
   const std::size_t total = lastOrder_.backToFront.size();
   beginDrawing(ctx, volume_.image(), false);
+  double lastMs = 0.0;  // the slice's previous run
   for (;;) {
+    // Another run only where the slice can hold one like the last.
+    if (lastMs > 0.0 && millisecondsSince(start) + lastMs > quick_.sliceMs()) {
+      endDrawing();
+      return false;
+    }
     const auto runStart = std::chrono::steady_clock::now();
     const std::size_t count = std::min(tetsPerRun_, total - drawnTets_);
     drawRun(drawnTets_, count);
     glFinish();
     const double ms = millisecondsSince(runStart);
     refineMs_ += ms;
+    lastMs = ms;
     drawnTets_ += count;
     const double factor = std::clamp(quick_.sliceMs() / std::max(ms, 0.1), 0.25, 4.0);
     tetsPerRun_ = std::clamp<std::size_t>(std::size_t(double(tetsPerRun_) * factor), 64, std::size_t(1) << 26);
