@@ -45,10 +45,9 @@ void RayCaster::beginRefining(const RenderContext& ctx) {
 
 // A band of rows the slice can finish: a dispatch covers its band whatever its steps, and a
 // band of the whole 1024x768 picture of a 213K-tet post held the window 4 s on llvmpipe.
-// Sized from the last band's cost per row, or the quick frame's per pixel before one.
-// Rows cost what their rays cross: after rows of background the next may be dense, so a
-// band never costs less per row than half the picture's average (the quick frame's), nor
-// grows to more than twice the last band.
+// Sized from the last band's cost per row; as rows cost what their rays cross and rows of
+// background may be followed by dense ones, never below half the picture's average per
+// row (the quick frame's), nor more than twice the last band's rows.
 void RayCaster::beginRefiningBand(const RenderContext& ctx, int firstRow) {
   refineFirstRow_ = firstRow;
   const double average = quick_.msPerPixel() * double(ctx.width);
@@ -90,6 +89,7 @@ bool RayCaster::refine(const RenderContext& ctx) {
     if (millisecondsSince(start) >= quick_.sliceMs()) return false;
   }
 }
+
 // The entry maps of the frame being refined, as many faces a call as its slice allows (a
 // post of 23K faces took about a slice's time to draw at 1024x768 on llvmpipe); true once
 // they are done (or not drawn at all), and the slice's time is not spent.
