@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/TransferFunction.hpp>
 
+#include "ParseJson.hpp"
+
 #include <volpost/core/ColorMap.hpp>
 
 #include <glm/common.hpp>
@@ -96,12 +98,7 @@ TransferFunction TransferFunction::ramp(double min, double max, const std::strin
 }
 
 TransferFunction TransferFunction::fromJson(const std::string& text) {
-  Json j;
-  try {
-    j = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(std::string("transfer function JSON: ") + e.what());
-  }
+  Json j = parseJson(text, "transfer function JSON");
   const auto isString = [&](const char* key, const char* wanted) {
     return j.contains(key) && j[key].is_string() && j[key].get<std::string>() == wanted;
   };
@@ -149,12 +146,7 @@ std::string TransferFunction::toJson(const std::string& lengthUnit) const {
 
 TransferFunction TransferFunction::withParaViewColors(const std::string& presetJson, const std::string& presetName,
                                                       std::optional<std::pair<double, double>> range) const {
-  Json j;
-  try {
-    j = Json::parse(presetJson);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(std::string("ParaView preset: ") + e.what());
-  }
+  Json j = parseJson(presetJson, "ParaView preset");
   Json preset;
   if (j.is_array()) {
     for (const Json& p : j)

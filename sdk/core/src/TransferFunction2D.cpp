@@ -3,6 +3,8 @@
 
 #include <volpost/core/TransferFunction.hpp>
 
+#include "ParseJson.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -95,12 +97,7 @@ glm::dvec4 TransferFunction2D::evaluate(double value, double gradient) const {
 }
 
 TransferFunction2D TransferFunction2D::fromJson(const std::string& text) {
-  Json j;
-  try {
-    j = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    throw std::runtime_error(std::string("2D transfer function JSON: ") + e.what());
-  }
+  Json j = parseJson(text, "2D transfer function JSON");
   if (!j.is_object() || !j.contains("format") || j["format"] != "volpost-tf2d")
     throw std::runtime_error("2D transfer function JSON: not a volpost 2D transfer function (\"format\" must be the "
                              "string \"volpost-tf2d\")");

@@ -54,6 +54,13 @@ TEST(TransferFunction, JsonErrorsNameTheEntry) {
   EXPECT_NE(message(R"({"format":"volpost-tf","version":1,"points":[{"value":0,"color":[1,1,1],"extinction":-2}]})")
                 .find("extinction"),
             std::string::npos);
+  // The JSON library's own errors in a user's words: where, and no "[json.exception...]" tag;
+  // a number beyond a double is one of them (it was not caught here before).
+  const std::string truncated = message(R"({"format":"volpost-tf","version":1,"points":[)");
+  EXPECT_NE(truncated.find("transfer function JSON: parse error at line 1"), std::string::npos) << truncated;
+  const std::string overflow = message(R"({"format":"volpost-tf","version":1,"points":[{"value":0,"color":[1,1,1],"extinction":1e999}]})");
+  EXPECT_NE(overflow.find("transfer function JSON: number overflow parsing '1e999'"), std::string::npos) << overflow;
+  for (const std::string& m : {truncated, overflow}) EXPECT_EQ(m.find("json.exception"), std::string::npos) << m;
 }
 
 TEST(TransferFunction, ImportsParaViewPresetColorsOntoARange) {
