@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "SeismicAttributes.hpp"
 
-#include <kiss_fft.h>
+#include "AnyLengthFft.hpp"
+
 #include <volpost/core/SampleView.hpp>
 #include <volpost/core/WorkerThreads.hpp>
 
@@ -13,40 +14,34 @@
 namespace volpost::seismic {
 namespace {
 
-struct FftPlan {
-  kiss_fft_cfg forward, inverse;
-  explicit FftPlan(std::size_t n)
-      : forward(kiss_fft_alloc(int(n), 0, nullptr, nullptr)), inverse(kiss_fft_alloc(int(n), 1, nullptr, nullptr)) {
-    if (!forward || !inverse) throw std::runtime_error("no memory for an FFT of " + std::to_string(n) + " samples");
-  }
-  ~FftPlan() {
-    kiss_fft_free(forward);
-    kiss_fft_free(inverse);
-  }
-  FftPlan(const FftPlan&) = delete;
-  FftPlan& operator=(const FftPlan&) = delete;
-};
+// One plan per length and thread: a trace's attributes are computed on worker threads,
+// trace after trace of the same length.
+const AnyLengthFft& planFor(std::size_t n) {
+  thread_local std::unique_ptr<AnyLengthFft> plan;
+  if (!plan || plan->size() != n) plan = std::make_unique<AnyLengthFft>(n);
+  return *plan;
+}
 
 // The analytic signal: the spectrum's negative frequencies dropped, the positive doubled
-// (zero and Nyquist kept), back to time. Float FFT, so the result is good to ~1e-6 of the
-// trace's peak.
+// (zero and Nyquist kept), back to time; the same as scipy.signal.hilbert of the trace.
 std::vector<std::complex<double>> analyticSignal(std::span<const double> x) {
   const std::size_t n = x.size();
-  std::vector<std::complex<double>> z(n);
-  if (n == 0) return z;
-  const FftPlan plan(n);
-  std::vector<kiss_fft_cpx> in(n), spectrum(n), out(n);
-  for (std::size_t k = 0; k < n; ++k) in[k] = {float(x[k]), 0.0f};
-  kiss_fft(plan.forward, in.data(), spectrum.data());
+  if (n == 0) return {};
+  const AnyLengthFft& fft = planFor(n);
+  std::vector<std::complex<double>> spectrum = fft.transform({x.begin(), x.end()}, false);
   for (std::size_t k = 1; k < n; ++k) {
     const bool positive = 2 * k < n, nyquist = 2 * k == n;
-    const float scale = positive ? 2.0f : nyquist ? 1.0f : 0.0f;
-    spectrum[k].r *= scale;
-    spectrum[k].i *= scale;
+    spectrum[k] *= positive ? 2.0 : nyquist ? 1.0 : 0.0;
   }
-  kiss_fft(plan.inverse, spectrum.data(), out.data());
-  for (std::size_t k = 0; k < n; ++k) z[k] = {double(out[k].r) / double(n), double(out[k].i) / double(n)};
+  std::vector<std::complex<double>> z = fft.transform(spectrum, true);
+  for (auto& v : z) v /= double(n);
   return z;
+}
+
+// The phase advance from sample k to k + 1, in (-pi, pi]: up to half a turn a sample, so
+// frequencies up to Nyquist are told apart.
+double phaseAdvance(const std::vector<std::complex<double>>& z, std::size_t k) {
+  return std::arg(z[k + 1] * std::conj(z[k]));
 }
 
 }  // namespace
@@ -63,10 +58,14 @@ TraceAttributes traceAttributes(std::span<const double> trace, double intervalSe
     a.phaseDegrees[k] = std::arg(z[k]) * 180.0 / M_PI;
   }
   if (n < 2 || !(intervalSeconds > 0.0)) return a;
+  // The mean of the advances into and out of each sample (one of them at the ends), each
+  // wrapped on its own: the frequency at a sample, from -Nyquist to Nyquist.
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t before = k > 0 ? k - 1 : 0, after = k + 1 < n ? k + 1 : n - 1;
-    const double turn = std::arg(z[after] * std::conj(z[before]));  // the phase advance, in (-pi, pi]
-    a.frequencyHz[k] = turn / (2.0 * M_PI * double(after - before) * intervalSeconds);
+    double turn = 0.0;
+    int advances = 0;
+    if (k > 0) turn += phaseAdvance(z, k - 1), ++advances;
+    if (k + 1 < n) turn += phaseAdvance(z, k), ++advances;
+    a.frequencyHz[k] = turn / (2.0 * M_PI * double(advances) * intervalSeconds);
   }
   return a;
 }

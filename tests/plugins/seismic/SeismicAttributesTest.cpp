@@ -3,13 +3,16 @@
 // its phase advances linearly, its instantaneous frequency is its own; a modulated cosine's
 // envelope is the modulation; the RMS of a sine over whole periods is A / sqrt(2). And the
 // attributes arrive as fields of a SEG-Y model, computed when first asked for.
+#include "AnyLengthFft.hpp"
 #include "SeismicAttributes.hpp"
 #include "SegyReader.hpp"
 #include "SegyWriter.hpp"
 
 #include "support/TestSupport.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <filesystem>
 
 namespace volpost::seismic {
@@ -34,6 +37,44 @@ TEST(SeismicAttributes, ACosinesEnvelopePhaseAndFrequency) {
     const double expected = (2.0 * M_PI * 25.0 * double(k) * kDt + 0.4) * 180.0 / M_PI;
     EXPECT_NEAR(wrapDegrees(a.phaseDegrees[k] - expected), 0.0, 1e-3) << k;
     EXPECT_NEAR(a.frequencyHz[k], 25.0, 1e-3) << k;
+  }
+}
+
+TEST(SeismicAttributes, FrequenciesUpToNyquistAreTheirOwn) {
+  // At 4 ms Nyquist is 125 Hz. The phase advance over two samples wraps above 62.5 Hz (a
+  // 70 Hz cosine read -55 Hz); each one-sample advance wraps only at Nyquist. 500 samples:
+  // two seconds, whole periods of every frequency below.
+  for (double hz : {10.0, 62.0, 63.0, 70.0, 80.0, 95.0, 110.0, 120.0, 124.0}) {
+    const std::vector<double> x = cosine(500, 1.0, hz, 0.3);
+    const TraceAttributes a = traceAttributes(x, kDt);
+    for (std::size_t k = 0; k < x.size(); ++k) ASSERT_NEAR(a.frequencyHz[k], hz, 1e-6) << hz << " Hz, sample " << k;
+  }
+}
+
+TEST(SeismicAttributes, APrimeTraceLengthGivesTheSameTransformQuickly) {
+  // A length of one prime factor goes through the chirp-z transform: the same DFT as the
+  // direct sum, and the attributes of a trace of 65,521 samples (the largest 16-bit prime)
+  // in the time of a few power-of-two transforms, not n^2 (about 4e9 operations).
+  for (std::size_t n : {7, 97, 101, 1009}) {
+    const AnyLengthFft fft(n);
+    EXPECT_EQ(fft.usesChirp(), n > 61) << n;
+    std::vector<std::complex<double>> x(n);
+    for (std::size_t j = 0; j < n; ++j) x[j] = {std::sin(0.37 * double(j * j % 101)), std::cos(1.3 * double(j))};
+    const auto forward = fft.transform(x, false), back = fft.transform(forward, true);
+    for (std::size_t k = 0; k < n; k += std::max<std::size_t>(1, n / 17)) {
+      std::complex<double> sum(0.0);
+      for (std::size_t j = 0; j < n; ++j) sum += x[j] * std::polar(1.0, -2.0 * M_PI * double(j * k % n) / double(n));
+      EXPECT_LT(std::abs(forward[k] - sum), 1e-10 * double(n)) << n << " " << k;
+      EXPECT_LT(std::abs(back[k] / double(n) - x[k]), 1e-12) << n << " " << k;
+    }
+  }
+  EXPECT_EQ(largestPrimeFactor(65521), 65521u);
+  const std::vector<double> x = cosine(65521, 2.0, 30.0, 0.0);
+  const TraceAttributes a = traceAttributes(x, kDt);
+  // Not whole periods, so only away from the ends.
+  for (std::size_t k = 1000; k + 1000 < x.size(); k += 997) {
+    EXPECT_NEAR(a.envelope[k], 2.0, 1e-3) << k;
+    EXPECT_NEAR(a.frequencyHz[k], 30.0, 1e-2) << k;
   }
 }
 
