@@ -43,6 +43,7 @@ void StreamlineOptions::apply(const QCommandLineParser& p, StreamlineLayer& laye
   }
   if (p.isSet(maxSteps)) layer.settings.maxSteps = std::size_t(std::min(number(p, maxSteps, 1.0), 1e8));
   if (p.isSet(maxLength)) layer.settings.maxLength = number(p, maxLength, 0.0);
+  if (p.isSet(pointSpacing)) layer.settings.pointSpacing = number(p, pointSpacing, 0.0);
   if (p.isSet(colorBy)) layer.colorBy = p.value(colorBy).toStdString();
   if (p.isSet(averageCells)) layer.averageCellVectors = true;
 }

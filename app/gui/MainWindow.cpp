@@ -588,13 +588,17 @@ void MainWindow::traceStreamlines() {
       return;
     }
     viewport_->update();
-    std::size_t points = 0;
-    for (const auto& l : t.result->lines) points += l.points.size();
-    statusBar()->showMessage(QString("%1 streamlines, %2 points, traced in %3 ms%4")
+    std::size_t points = 0, spent = 0;
+    for (const auto& l : t.result->lines) {
+      points += l.points.size();
+      spent += l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
+    }
+    statusBar()->showMessage(QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
                                  .arg(t.result->lines.size())
                                  .arg(points)
                                  .arg(t.result->milliseconds, 0, 'f', 0)
-                                 .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString()));
+                                 .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString())
+                                 .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
     emit streamlinesTraced(true, {});
   });
   watcher->setFuture(QtConcurrent::run([session, layer, step, progress, cancel]() {

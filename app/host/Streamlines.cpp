@@ -62,6 +62,9 @@ const char* describe(StreamlineStop stop) {
     case StreamlineStop::Stagnation: return "stopped at a stagnation point";
     case StreamlineStop::ClosedOrbit: return "closed on itself";
     case StreamlineStop::StepTooSmall: return "needed steps too small to go on";
+    case StreamlineStop::PointBudget:
+      static_assert(kMaxStreamlinePoints == 2097152, "the words below give the limit");
+      return "reached the limit of 2,097,152 points for all lines together (fewer seeds or a shorter --max-length)";
   }
   return "?";
 }
@@ -161,26 +164,41 @@ StreamlineTracer::Walk StreamlineTracer::walk(std::uint32_t from, const glm::dve
 void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet, double sign,
                                    const StreamlineSettings& settings, std::vector<glm::dvec3>& points,
                                    std::vector<glm::dvec3>& velocity, StreamlineStop& stop, std::size_t& steps,
-                                   std::size_t& rejected, double& length, double& closure) const {
+                                   std::size_t& rejected, double& totalLength, double& closure,
+                                   std::atomic<std::int64_t>* pointsLeft) const {
+  // The limit holds for each direction: this direction's own length, added to the line's
+  // when it ends.
+  double length = 0.0;
+  struct AddLength {
+    double& total;
+    const double& mine;
+    ~AddLength() { total += mine; }
+  } addLength{totalLength, length};
   const double eps = std::max(settings.tolerance, 1e-14) * modelSize_;
   const double maxLength = settings.maxLength > 0.0 ? settings.maxLength : 20.0 * modelSize_;
   const double slow = settings.stagnation * maxSpeed_;
-  glm::dvec3 x = seed;
-  std::uint32_t t = seedTet;
-  glm::dvec3 v = sign * velocityIn(t, x);
-  const glm::dvec3 seedDirection = glm::length(v) > 0.0 ? glm::normalize(v) : glm::dvec3(0.0);
+  // Where the line is: the point, its tet and the (signed) field there.
+  struct State {
+    glm::dvec3 x;
+    std::uint32_t t;
+    glm::dvec3 v;
+  };
+  State at{seed, seedTet, sign * velocityIn(seedTet, seed)};
+  const glm::dvec3 seedDirection = glm::length(at.v) > 0.0 ? glm::normalize(at.v) : glm::dvec3(0.0);
   const double orbitRadius = std::max(100.0 * eps, 0.05 * cellSize(seedTet));
-  double h = 0.25 * cellSize(t) / std::max(glm::length(v), 1e-300);
+  double h = 0.25 * cellSize(at.t) / std::max(glm::length(at.v), 1e-300);
   std::size_t taken = 0;
 
-  // The field where a stage point lies, found by walking from x; nullopt when outside.
-  const auto field = [&](const glm::dvec3& q) -> std::optional<glm::dvec3> {
-    const Walk w = walk(t, x, q);
-    if (!w.inside) return std::nullopt;
-    return sign * velocityIn(w.tet, q);
-  };
-  // k1 = v; each method's stages and its error estimate.
-  const auto attempt = [&](double step) -> Attempt {
+  // One Runge-Kutta step of length `step` from `from`: its end and error estimate.
+  const auto attempt = [&](const State& from, double step) -> Attempt {
+    // The field where a stage point lies, found by walking from the step's start.
+    const auto field = [&](const glm::dvec3& q) -> std::optional<glm::dvec3> {
+      const Walk w = walk(from.t, from.x, q);
+      if (!w.inside) return std::nullopt;
+      return sign * velocityIn(w.tet, q);
+    };
+    const glm::dvec3& x = from.x;
+    const glm::dvec3& v = from.v;
     Attempt a;
     if (settings.method == StreamlineMethod::RK2) {  // Heun with Euler as the embedded estimate
       const auto k2 = field(x + step * v);
@@ -190,14 +208,14 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
       return a;
     }
     if (settings.method == StreamlineMethod::RK4) {  // classical, error by step doubling
-      const auto rk4 = [&](const glm::dvec3& from, const glm::dvec3& k1, double dt) -> std::optional<glm::dvec3> {
-        const auto k2 = field(from + 0.5 * dt * k1);
+      const auto rk4 = [&](const glm::dvec3& start, const glm::dvec3& k1, double dt) -> std::optional<glm::dvec3> {
+        const auto k2 = field(start + 0.5 * dt * k1);
         if (!k2) return std::nullopt;
-        const auto k3 = field(from + 0.5 * dt * *k2);
+        const auto k3 = field(start + 0.5 * dt * *k2);
         if (!k3) return std::nullopt;
-        const auto k4 = field(from + dt * *k3);
+        const auto k4 = field(start + dt * *k3);
         if (!k4) return std::nullopt;
-        return from + dt / 6.0 * (k1 + 2.0 * *k2 + 2.0 * *k3 + *k4);
+        return start + dt / 6.0 * (k1 + 2.0 * *k2 + 2.0 * *k3 + *k4);
       };
       const auto whole = rk4(x, v, step);
       const auto half = rk4(x, v, 0.5 * step);
@@ -235,11 +253,43 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
     a.error = glm::length(err);
     return a;
   };
+  // The step from `from` whose end satisfies `reached` first, by bisection on the step
+  // length between 0 and `step` (whose end satisfies it): each trial is a whole Runge-Kutta
+  // step, so the point found lies on the integrated line, within the tolerance.
+  struct Reached {
+    glm::dvec3 end;
+    double step;
+  };
+  const auto firstStepReaching = [&](const State& from, double step, const auto& reached) {
+    double lo = 0.0, hi = step;
+    Attempt best = attempt(from, step);
+    for (int i = 0; i < 60 && hi - lo > 1e-14 * step; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      const Attempt a = attempt(from, mid);
+      if (a.outside || !reached(a.end)) {
+        lo = mid;
+      } else {
+        hi = mid;
+        best = a;
+      }
+    }
+    return Reached{best.end, hi};
+  };
+  bool budgetSpent = false;
+  const auto record = [&](const glm::dvec3& p, const glm::dvec3& fieldThere) {  // the field, not its signed walk
+    points.push_back(p);
+    velocity.push_back(fieldThere);
+    if (pointsLeft && pointsLeft->fetch_sub(1) <= 1) budgetSpent = true;
+  };
   const double shrinkExponent = settings.method == StreamlineMethod::RK2 ? 0.5 : 0.2;
   const double growExponent = settings.method == StreamlineMethod::RK2 ? 1.0 / 3.0 : 0.2;
 
   while (true) {
-    const double speed = glm::length(v);
+    if (budgetSpent || (pointsLeft && pointsLeft->load() <= 0)) {
+      stop = StreamlineStop::PointBudget;
+      return;
+    }
+    const double speed = glm::length(at.v);
     if (!(speed > slow) || !std::isfinite(speed)) {
       stop = StreamlineStop::Stagnation;
       return;
@@ -252,13 +302,14 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
       stop = StreamlineStop::MaxLength;
       return;
     }
-    const double size = cellSize(t);
+    const double size = cellSize(at.t);
     h = std::min(h, 2.0 * size / speed);                 // a step crosses at most a couple of cells
     // Within each method's stability bound on the field's time scale (Heun: |h lambda| < 2,
     // the fourth- and fifth-order methods a little more), with a margin.
-    if (const double g = gradientNorm(t); g > 0.0) h = std::min(h, (settings.method == StreamlineMethod::RK2 ? 1.0 : 2.0) / g);
+    if (const double g = gradientNorm(at.t); g > 0.0)
+      h = std::min(h, (settings.method == StreamlineMethod::RK2 ? 1.0 : 2.0) / g);
     h = std::min(h, (maxLength - length) / speed * 1.0001);
-    const Attempt a = attempt(h);
+    const Attempt a = attempt(at, h);
     if (a.outside) {
       // A stage left the mesh: shorter steps, until the step is tiny; then go straight to
       // the boundary along the field and stop there.
@@ -266,18 +317,23 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
         h *= 0.5;
         continue;
       }
-      const Walk w = walk(t, x, x + (2.0 * size / speed) * v);
+      const Walk w = walk(at.t, at.x, at.x + (2.0 * size / speed) * at.v);
       if (!w.inside) {
-        length += glm::length(w.end - x);
-        points.push_back(w.end);
-        velocity.push_back(velocityIn(w.tet, w.end));
+        const double remaining = maxLength - length, straight = glm::length(w.end - at.x);
+        if (straight > remaining) {  // the limit comes first on the way to the boundary
+          const glm::dvec3 end = at.x + (remaining / straight) * (w.end - at.x);
+          length = maxLength;
+          record(end, velocityIn(w.tet, end));
+          stop = StreamlineStop::MaxLength;
+          return;
+        }
+        length += straight;
+        record(w.end, velocityIn(w.tet, w.end));
         stop = StreamlineStop::LeftMesh;
         return;
       }
       h = 0.25 * size / speed;  // the straight step stays inside: go on from the field there
-      x = w.end;
-      t = w.tet;
-      v = sign * velocityIn(t, x);
+      at = {w.end, w.tet, sign * velocityIn(w.tet, w.end)};
       continue;
     }
     if (a.error > eps) {
@@ -289,62 +345,74 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
       }
       continue;
     }
-    // Accepted: the end's tet by walking along the step; a step that leaves the mesh ends
-    // on the boundary face it crosses.
-    const Walk w = walk(t, x, a.end);
-    const double stepLength = glm::length(w.end - x);
-    length += stepLength;
-    const glm::dvec3 previous = x, previousVelocity = v;
-    x = w.end;
-    t = w.tet;
-    v = sign * velocityIn(t, x);
-    // Long steps (the higher-order methods take few) are drawn through points on the
-    // step's cubic Hermite curve, at most half a cell apart, so the line looks as smooth
-    // as it was integrated.
-    const int pieces = w.inside ? int(std::min(64.0, std::ceil(stepLength / (0.5 * size)))) : 1;
-    for (int i = 1; i < pieces; ++i) {
-      const double u = double(i) / pieces, u2 = u * u, u3 = u2 * u;
-      points.push_back((2 * u3 - 3 * u2 + 1) * previous + (u3 - 2 * u2 + u) * h * previousVelocity +
-                       (-2 * u3 + 3 * u2) * x + (u3 - u2) * h * v);
-      velocity.push_back(sign * ((1.0 - u) * previousVelocity + u * v));
+    // Accepted. The step was sized by the speed at its start, so it may run past the length
+    // limit: then the line ends where the integrated step reaches the limit.
+    glm::dvec3 end = a.end;
+    double stepTaken = h;
+    const double remaining = maxLength - length;
+    const bool lastStep = glm::length(end - at.x) > remaining;
+    if (lastStep) {
+      const Reached r = firstStepReaching(at, h, [&](const glm::dvec3& p) { return glm::length(p - at.x) >= remaining; });
+      end = r.end;
+      stepTaken = r.step;
     }
-    points.push_back(x);
-    velocity.push_back(sign * v);
+    // The end's tet by walking along the step; a step that leaves the mesh ends on the
+    // boundary face it crosses.
+    const Walk w = walk(at.t, at.x, end);
+    double stepLength = std::min(glm::length(w.end - at.x), remaining);
+    const State previous = at;
+    at = {w.end, w.tet, sign * velocityIn(w.tet, w.end)};
     ++steps;
     ++taken;
+    // Back through the plane across the seed, heading the same way and close to it: a
+    // closed orbit. The crossing is found on the integrated line (a step from the previous
+    // end sized to reach the plane); the closure error is how far from the seed it is.
+    const auto side = [&](const glm::dvec3& p) { return glm::dot(p - seed, seedDirection); };
+    bool closed = false;
+    if (w.inside && !lastStep && settings.stopOnClosedOrbits && length > 8.0 * orbitRadius && side(previous.x) < 0.0 &&
+        side(at.x) >= 0.0 && glm::length(at.x - seed) < orbitRadius + 2.0 * stepLength) {
+      const Reached crossing = firstStepReaching(previous, h, [&](const glm::dvec3& p) { return side(p) >= 0.0; });
+      if (const double gap = glm::length(crossing.end - seed); gap < orbitRadius) {
+        closed = true;
+        closure = gap;
+        stepTaken = crossing.step;
+        stepLength = glm::length(crossing.end - previous.x);
+        at = {crossing.end, walk(previous.t, previous.x, crossing.end).tet, glm::dvec3(0.0)};
+        at.v = sign * velocityIn(at.t, at.x);
+      }
+    }
+    // Where asked, points inside the step, each a Runge-Kutta step of its own from the
+    // step's start (as accurate as the step end); else only the step end is written (points
+    // on a curve through the ends would not be within the tolerance).
+    if (settings.pointSpacing > 0.0 && w.inside && stepLength > settings.pointSpacing) {
+      const int pieces = int(std::min(64.0, std::ceil(stepLength / settings.pointSpacing)));
+      for (int i = 1; i < pieces; ++i) {
+        const Attempt inner = attempt(previous, stepTaken * double(i) / double(pieces));
+        if (inner.outside) continue;
+        record(inner.end, velocityIn(walk(previous.t, previous.x, inner.end).tet, inner.end));
+      }
+    }
+    record(at.x, sign * at.v);
+    length += stepLength;
     if (!w.inside) {
       stop = StreamlineStop::LeftMesh;
       return;
     }
-    // Back through the plane across the seed, heading the same way and close to it: a
-    // closed orbit. The crossing is found on the step's cubic Hermite curve (its ends and
-    // their velocities), not its chord; the closure error is how far from the seed it is.
-    if (settings.stopOnClosedOrbits && length - stepLength > 8.0 * orbitRadius) {
-      const auto curve = [&](double u) {
-        const double u2 = u * u, u3 = u2 * u;
-        return (2 * u3 - 3 * u2 + 1) * previous + (u3 - 2 * u2 + u) * h * previousVelocity + (-2 * u3 + 3 * u2) * x +
-               (u3 - u2) * h * v;
-      };
-      const auto side = [&](double u) { return glm::dot(curve(u) - seed, seedDirection); };
-      if (side(0.0) < 0.0 && side(1.0) >= 0.0) {
-        double lo = 0.0, hi = 1.0;
-        for (int i = 0; i < 60; ++i) (side(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
-        const glm::dvec3 crossing = curve(hi);
-        const double gap = glm::length(crossing - seed);
-        if (gap < orbitRadius) {
-          closure = gap;
-          length += glm::length(crossing - previous) - stepLength;
-          points.back() = crossing;
-          stop = StreamlineStop::ClosedOrbit;
-          return;
-        }
-      }
+    if (lastStep) {
+      length = maxLength;
+      stop = StreamlineStop::MaxLength;
+      return;
+    }
+    if (closed) {
+      stop = StreamlineStop::ClosedOrbit;
+      return;
     }
     h *= std::min(5.0, 0.9 * std::pow(eps / std::max(a.error, 1e-300), growExponent));
   }
 }
 
-Streamline StreamlineTracer::trace(const glm::dvec3& seed, const StreamlineSettings& settings) const {
+Streamline StreamlineTracer::trace(const glm::dvec3& seed, const StreamlineSettings& settings,
+                                   std::atomic<std::int64_t>* pointsLeft) const {
   const auto at = locator_.locate(seed, 1e-6);
   if (!at) throw std::invalid_argument("the seed " + pointText(seed) + " is outside the mesh");
   const std::uint32_t tet = std::uint32_t(at->tet);
@@ -352,7 +420,7 @@ Streamline StreamlineTracer::trace(const glm::dvec3& seed, const StreamlineSetti
   if (settings.direction != StreamlineDirection::Forward) {
     std::vector<glm::dvec3> points, velocity;
     traceOneWay(seed, tet, -1.0, settings, points, velocity, line.backwardStop, line.steps, line.rejected, line.length,
-                line.closureError);
+                line.closureError, pointsLeft);
     line.points.assign(points.rbegin(), points.rend());
     line.velocity.assign(velocity.rbegin(), velocity.rend());
   }
@@ -361,21 +429,23 @@ Streamline StreamlineTracer::trace(const glm::dvec3& seed, const StreamlineSetti
   line.velocity.push_back(velocityIn(tet, seed));
   if (settings.direction != StreamlineDirection::Backward)
     traceOneWay(seed, tet, 1.0, settings, line.points, line.velocity, line.forwardStop, line.steps, line.rejected,
-                line.length, line.closureError);
+                line.length, line.closureError, pointsLeft);
   return line;
 }
 
 std::vector<Streamline> StreamlineTracer::traceAll(const std::vector<glm::dvec3>& seeds,
                                                    const StreamlineSettings& settings, std::size_t* outside,
-                                                   const Progress& progress) const {
+                                                   const Progress& progress, std::size_t maxPoints) const {
   std::vector<Streamline> lines(seeds.size());
+  // Each line's seed takes a point too; what is left is shared as the lines are traced.
+  std::atomic<std::int64_t> pointsLeft{std::int64_t(maxPoints) - std::int64_t(seeds.size())};
   std::vector<char> missed(seeds.size(), 0);
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> cancelled{false};
   runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned worker) {
     for (std::size_t i; !cancelled && (i = next++) < seeds.size();) {
       try {
-        lines[i] = trace(seeds[i], settings);
+        lines[i] = trace(seeds[i], settings, &pointsLeft);
       } catch (const std::invalid_argument&) {
         missed[i] = 1;
       }

@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,7 +25,11 @@ namespace volpost {
 enum class StreamlineMethod { RK2, RK4, RK45 };
 enum class StreamlineDirection { Forward, Backward, Both };
 /// Why a line ended (each direction on its own).
-enum class StreamlineStop { None, LeftMesh, MaxSteps, MaxLength, Stagnation, ClosedOrbit, StepTooSmall };
+enum class StreamlineStop { None, LeftMesh, MaxSteps, MaxLength, Stagnation, ClosedOrbit, StepTooSmall, PointBudget };
+
+/// The most points all lines of one tracing hold together (about 100 MB with their
+/// velocities and values, and within the tubes' vertex limit): lines that reach it stop.
+inline constexpr std::size_t kMaxStreamlinePoints = std::size_t(2) << 20;
 
 const char* toString(StreamlineMethod method);  ///< "rk2", "rk4", "rk45"
 const char* toString(StreamlineDirection direction);  ///< "forward", "backward", "both"
@@ -41,6 +46,9 @@ struct StreamlineSettings {
   double stagnation = 1e-6;
   /// Stop where the line comes back to its seed (a closed orbit), instead of circling on.
   bool stopOnClosedOrbits = true;
+  /// Model units between written points inside a step (0: the step ends only). Each extra
+  /// point is a Runge-Kutta step of its own from the step's start, as accurate as the ends.
+  double pointSpacing = 0.0;
   bool operator==(const StreamlineSettings&) const = default;
 };
 
@@ -61,10 +69,15 @@ class StreamlineTracer {
   StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors);
 
   /// Throws std::invalid_argument naming the point when the seed is not in the mesh.
-  Streamline trace(const glm::dvec3& seed, const StreamlineSettings& settings) const;
-  /// Every seed, on all cores; seeds outside the mesh are skipped and counted.
+  /// `pointsLeft`, where given, is shared by lines traced together: each point written takes
+  /// one, and a line stops (PointBudget) when none is left.
+  Streamline trace(const glm::dvec3& seed, const StreamlineSettings& settings,
+                   std::atomic<std::int64_t>* pointsLeft = nullptr) const;
+  /// Every seed, on all cores, with at most `maxPoints` points in all; seeds outside the
+  /// mesh are skipped and counted.
   std::vector<Streamline> traceAll(const std::vector<glm::dvec3>& seeds, const StreamlineSettings& settings,
-                                   std::size_t* outside = nullptr, const Progress& progress = {}) const;
+                                   std::size_t* outside = nullptr, const Progress& progress = {},
+                                   std::size_t maxPoints = kMaxStreamlinePoints) const;
 
   double modelSize() const { return modelSize_; }
   double maxSpeed() const { return maxSpeed_; }
@@ -85,7 +98,8 @@ class StreamlineTracer {
   double gradientNorm(std::uint32_t tet) const;
   void traceOneWay(const glm::dvec3& seed, std::uint32_t tet, double sign, const StreamlineSettings& settings,
                    std::vector<glm::dvec3>& points, std::vector<glm::dvec3>& velocity, StreamlineStop& stop,
-                   std::size_t& steps, std::size_t& rejected, double& length, double& closure) const;
+                   std::size_t& steps, std::size_t& rejected, double& length, double& closure,
+                   std::atomic<std::int64_t>* pointsLeft) const;
 
   const TetMesh& tets_;
   std::vector<glm::dvec3> vectors_;

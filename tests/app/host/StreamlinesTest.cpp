@@ -83,6 +83,83 @@ TEST(Streamlines, SolidBodyRotationClosesItsCircles) {
   }
 }
 
+TEST(Streamlines, EveryWrittenPointLiesOnTheIntegratedCircle) {
+  // The written line is the step ends, each within the tolerance of the exact line through
+  // the previous one: the exact flow keeps the radius, so the radius changes by at most
+  // the tolerance from point to point. Points on a cubic through the ends of rk4's and
+  // rk45's long steps strayed 1.5e-4 off the circle between them (five times the
+  // tolerance); the closure point is an integrated step too.
+  const GridField s = onGrid(8, 8, 1, {-1, -1, 0}, 0.25, [](glm::dvec3 p) { return glm::dvec3(-p.y, p.x, 0.0); });
+  const StreamlineTracer tracer(s.tets, s.vectors);
+  for (StreamlineMethod method : {StreamlineMethod::RK2, StreamlineMethod::RK4, StreamlineMethod::RK45}) {
+    StreamlineSettings settings;  // the default tolerance, 1e-5 of the model's size
+    settings.method = method;
+    settings.direction = StreamlineDirection::Forward;
+    const double eps = settings.tolerance * tracer.modelSize();
+    const Streamline line = tracer.trace({0.6, 0.0, 0.1}, settings);
+    ASSERT_EQ(line.forwardStop, StreamlineStop::ClosedOrbit) << toString(method);
+    EXPECT_EQ(line.points.size(), line.steps + 1) << "the seed and one point per step";
+    for (std::size_t i = 1; i < line.points.size(); ++i) {
+      const double before = std::hypot(line.points[i - 1].x, line.points[i - 1].y);
+      const double after = std::hypot(line.points[i].x, line.points[i].y);
+      EXPECT_LE(std::abs(after - before), eps) << toString(method) << ", point " << i;
+    }
+    EXPECT_LT(line.closureError, double(line.steps) * eps) << toString(method);
+  }
+}
+
+TEST(Streamlines, PointsInsideTheStepsAreAsAccurateAsTheEnds) {
+  // Asked for points every 0.05 model units, rk45's long steps (about 0.25 here) are
+  // written through inner points, each a step of its own from the step's start.
+  const GridField s = onGrid(8, 8, 1, {-1, -1, 0}, 0.25, [](glm::dvec3 p) { return glm::dvec3(-p.y, p.x, 0.0); });
+  const StreamlineTracer tracer(s.tets, s.vectors);
+  StreamlineSettings settings;
+  settings.method = StreamlineMethod::RK45;
+  settings.direction = StreamlineDirection::Forward;
+  settings.pointSpacing = 0.05;
+  const double eps = settings.tolerance * tracer.modelSize();
+  const Streamline line = tracer.trace({0.6, 0.0, 0.1}, settings);
+  ASSERT_EQ(line.forwardStop, StreamlineStop::ClosedOrbit);
+  EXPECT_GT(line.points.size(), 4 * line.steps) << "2 pi 0.6 / 0.05: about 75 points";
+  double worst = 0.0, longest = 0.0;
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    worst = std::max(worst, std::abs(std::hypot(line.points[i].x, line.points[i].y) - 0.6));
+    if (i > 0) longest = std::max(longest, glm::length(line.points[i] - line.points[i - 1]));
+  }
+  EXPECT_LT(worst, double(line.steps + 1) * eps);
+  EXPECT_LE(longest, 0.05 * 1.0001);
+}
+
+TEST(Streamlines, TheLengthLimitIsNotExceeded) {
+  // The last step was sized by the speed at its start and ran past the limit (1.0162 for
+  // a limit of 1 on the ABC flow): it now ends where the integrated step reaches it.
+  const double A = 1.0, B = std::sqrt(2.0 / 3.0), C = std::sqrt(1.0 / 3.0);
+  const auto abc = [&](glm::dvec3 p) {
+    return glm::dvec3(A * std::sin(p.z) + C * std::cos(p.y), B * std::sin(p.x) + A * std::cos(p.z),
+                      C * std::sin(p.y) + B * std::cos(p.x));
+  };
+  const GridField s = onGrid(12, 12, 12, {0, 0, 0}, 2.0 * M_PI / 12, abc);
+  const StreamlineTracer tracer(s.tets, s.vectors);
+  for (StreamlineMethod method : {StreamlineMethod::RK2, StreamlineMethod::RK4, StreamlineMethod::RK45})
+    for (double limit : {0.3, 1.0, 2.5}) {
+      StreamlineSettings settings;
+      settings.method = method;
+      settings.maxLength = limit;
+      const Streamline line = tracer.trace({M_PI, 2.0, 3.0}, settings);
+      // Each direction on its own (the forward one used to start with the backward one's
+      // length and stop at once).
+      double forward = 0.0, backward = 0.0;
+      for (std::size_t i = 0; i + 1 < line.points.size(); ++i)
+        (i < line.seedIndex ? backward : forward) += glm::length(line.points[i + 1] - line.points[i]);
+      for (const auto& [stop, walked] : {std::pair{line.forwardStop, forward}, std::pair{line.backwardStop, backward}}) {
+        EXPECT_LE(walked, limit * (1.0 + 1e-9)) << toString(method) << " " << limit;
+        if (limit < 2.0) EXPECT_EQ(stop, StreamlineStop::MaxLength) << toString(method) << " " << limit;
+        if (stop == StreamlineStop::MaxLength) EXPECT_NEAR(walked, limit, 1e-9 * limit) << toString(method);
+      }
+      EXPECT_NEAR(line.length, forward + backward, 1e-9 * limit) << toString(method);
+    }
+}
+
 TEST(Streamlines, LinearFieldKeepsTheInvariantOfItsExactSolution) {
   // v = (-x, y/2, 0): x = x0 e^-t, y = y0 e^(t/2), so y^2 x stays y0^2 x0.
   const GridField s = onGrid(6, 6, 1, {0.5, 0.5, 0}, 0.25, [](glm::dvec3 p) { return glm::dvec3(-p.x, 0.5 * p.y, 0.0); });
