@@ -97,3 +97,23 @@ TEST(RenderCommand, DrawsStreamlinesAndNotesSeedsOutsideTheMesh) {
   const auto allOutside = runVolpost("render " + model + " --streamlines U --seeds point:50,0,0 -o " + lines);
   EXPECT_EQ(allOutside.exitCode, 1) << allOutside.output;
 }
+
+TEST(RenderCommand, DrawsArrowsOnLitLinesAsOnTubes) {
+  // --arrows without --tubes drew nothing more than the lines and exited 0.
+  const std::string model = dataFile("bar/bar_tet4.vtu");
+  const std::string common = " --size 128x64 --no-legend --no-surface --camera +z --streamlines U" + kBarRake;
+  const auto differing = [](const std::string& a, const std::string& b) {
+    const QImage first(QString::fromStdString(a)), second(QString::fromStdString(b));
+    int changed = 0;
+    for (int y = 0; y < first.height(); ++y)
+      for (int x = 0; x < first.width(); ++x) changed += first.pixel(x, y) != second.pixel(x, y);
+    return changed;
+  };
+  for (const std::string style : {"", " --tubes"}) {
+    const std::string plain = tempFile("plain.png"), arrows = tempFile("arrows.png");
+    ASSERT_EQ(runVolpost("render " + model + common + style + " -o " + plain).exitCode, 0);
+    const auto r = runVolpost("render " + model + common + style + " --arrows -o " + arrows);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_GT(differing(plain, arrows), 5) << "arrows drawn with" << (style.empty() ? " lit lines" : style);
+  }
+}

@@ -23,7 +23,7 @@ constexpr std::size_t kMaxTubeVertices = 32u << 20;
 
 struct Vertex {
   glm::vec3 position;
-  glm::vec3 direction;  // tangent (lines) or normal (tubes)
+  glm::vec3 direction;  // tangent (lines) or normal (tubes, cones)
   float value;
 };
 
@@ -97,17 +97,6 @@ void StreamlineRenderer::setRange(double min, double max) {
   max_ = float(max);
 }
 
-void StreamlineRenderer::setLines(const std::vector<std::vector<glm::dvec3>>& lines,
-                                  const std::vector<std::vector<double>>& values, const glm::dvec3& origin,
-                                  const StreamlineStyle& style) {
-  origin_ = origin;
-  style_ = style;
-  segmentIndices_ = tubeVertices_ = 0;
-  if (style.tubes) uploadTubes(lines, values);
-  else uploadLines(lines, values);
-  gl::check("StreamlineRenderer::setLines");
-}
-
 void StreamlineRenderer::uploadLines(const std::vector<std::vector<glm::dvec3>>& lines,
                                      const std::vector<std::vector<double>>& values) {
   std::vector<Vertex> vertices;
@@ -128,86 +117,129 @@ void StreamlineRenderer::uploadLines(const std::vector<std::vector<glm::dvec3>>&
   segmentIndices_ = GLsizei(indices.size());
 }
 
-// Tubes: a ring of kRing vertices per point, its frame carried along by parallel
-// transport (no twist), rings joined by quads; arrows: cones every arrowSpacing.
-void StreamlineRenderer::uploadTubes(const std::vector<std::vector<glm::dvec3>>& lines,
-                                     const std::vector<std::vector<double>>& values) {
-  std::size_t points = 0;
-  for (const auto& l : lines) points += l.size();
-  if (points * (kRing + (style_.arrows ? 2 : 0)) > kMaxTubeVertices)
-    throw std::invalid_argument("tubes for " + std::to_string(points) + " streamline points would need more than " +
-                                std::to_string(kMaxTubeVertices) + " vertices: draw lines instead, or fewer seeds");
-  double lo = 1e300, hi = -1e300;
+struct StreamlineRenderer::Triangles {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+// The style's radius, or grown from 0.25x to 1x with the value over the lines' range.
+struct StreamlineRenderer::Radius {
+  Radius(const StreamlineStyle& style, const std::vector<std::vector<double>>& values);
+  double at(double value) const;
+  double base, lo = 1e300, hi = -1e300;
+  bool byValue;
+};
+
+StreamlineRenderer::Radius::Radius(const StreamlineStyle& style, const std::vector<std::vector<double>>& values)
+    : base(style.tubeRadius), byValue(style.radiusByValue) {
   for (const auto& v : values)
     for (double x : v)
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
-  const auto radiusAt = [&](double v) {
-    if (!style_.radiusByValue || !(hi > lo) || !std::isfinite(v)) return style_.tubeRadius;
-    return style_.tubeRadius * (0.25 + 0.75 * (v - lo) / (hi - lo));
-  };
-  std::vector<Vertex> vertices;
-  std::vector<std::uint32_t> indices;
+}
+
+double StreamlineRenderer::Radius::at(double v) const {
+  if (!byValue || !(hi > lo) || !std::isfinite(v)) return base;
+  return base * (0.25 + 0.75 * (v - lo) / (hi - lo));
+}
+
+// Tubes: a ring of kRing vertices per point, its frame carried along by parallel
+// transport (no twist), rings joined by quads.
+void StreamlineRenderer::appendTubes(const std::vector<std::vector<glm::dvec3>>& lines,
+                                     const std::vector<std::vector<double>>& values, const Radius& radius,
+                                     Triangles& out) const {
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const auto& p = lines[l];
     if (p.size() < 2) continue;
     const auto t = tangents(p);
     glm::dvec3 n = std::abs(t[0].x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     n = glm::normalize(n - glm::dot(n, t[0]) * t[0]);
-    const std::uint32_t base = std::uint32_t(vertices.size());
-    double sinceArrow = 0.5 * style_.arrowSpacing;
+    const std::uint32_t base = std::uint32_t(out.vertices.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (i > 0) {
         const glm::dvec3 carried = n - glm::dot(n, t[i]) * t[i];
         if (glm::dot(carried, carried) > 1e-24) n = glm::normalize(carried);
       }
       const glm::dvec3 b = glm::cross(t[i], n);
-      const double r = radiusAt(values[l][i]);
+      const double r = radius.at(values[l][i]);
       for (int k = 0; k < kRing; ++k) {
         const double a = 2.0 * M_PI * k / kRing;
         const glm::dvec3 normal = std::cos(a) * n + std::sin(a) * b;
-        vertices.push_back({glm::vec3(p[i] + r * normal - origin_), glm::vec3(normal), valueOf(values[l][i])});
+        out.vertices.push_back({glm::vec3(p[i] + r * normal - origin_), glm::vec3(normal), valueOf(values[l][i])});
       }
       if (i > 0) {
         const std::uint32_t r0 = base + std::uint32_t((i - 1) * kRing), r1 = r0 + kRing;
         for (std::uint32_t k = 0; k < kRing; ++k) {
           const std::uint32_t k1 = (k + 1) % kRing;
-          indices.insert(indices.end(), {r0 + k, r1 + k, r1 + k1, r0 + k, r1 + k1, r0 + k1});
+          out.indices.insert(out.indices.end(), {r0 + k, r1 + k, r1 + k1, r0 + k, r1 + k1, r0 + k1});
         }
       }
     }
-    if (!style_.arrows || !(style_.arrowSpacing > 0.0)) continue;
+  }
+}
+
+// Arrows: cones at even arc length (every arrowSpacing, the first half a spacing from the
+// line's start), a ring 2.5 radii wide around the line, the tip 5 radii downstream.
+void StreamlineRenderer::appendArrows(const std::vector<std::vector<glm::dvec3>>& lines,
+                                      const std::vector<std::vector<double>>& values, const Radius& radius,
+                                      Triangles& out) const {
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const auto& p = lines[l];
+    if (p.size() < 2) continue;
+    const auto t = tangents(p);
+    double sinceArrow = 0.5 * style_.arrowSpacing;
     for (std::size_t i = 1; i < p.size(); ++i) {
       sinceArrow += glm::length(p[i] - p[i - 1]);
       if (sinceArrow < style_.arrowSpacing) continue;
       sinceArrow = 0.0;
-      // A cone: a ring 2.5 radii wide around the line, its tip 5 radii downstream.
       const glm::dvec3 axis = t[i];
       glm::dvec3 u = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
       u = glm::normalize(u - glm::dot(u, axis) * axis);
       const glm::dvec3 w = glm::cross(axis, u);
-      const double r = radiusAt(values[l][i]);
+      const double r = radius.at(values[l][i]);
       const glm::dvec3 tip = p[i] + 5.0 * r * axis;
       const float value = valueOf(values[l][i]);
-      const std::uint32_t cone = std::uint32_t(vertices.size());
+      const std::uint32_t cone = std::uint32_t(out.vertices.size());
       for (int k = 0; k < kRing; ++k) {
         const double a = 2.0 * M_PI * k / kRing;
         const glm::dvec3 radial = std::cos(a) * u + std::sin(a) * w;
         const glm::dvec3 normal = glm::normalize(radial + 0.5 * axis);
-        vertices.push_back({glm::vec3(p[i] + 2.5 * r * radial - origin_), glm::vec3(normal), value});
-        vertices.push_back({glm::vec3(tip - origin_), glm::vec3(normal), value});
+        out.vertices.push_back({glm::vec3(p[i] + 2.5 * r * radial - origin_), glm::vec3(normal), value});
+        out.vertices.push_back({glm::vec3(tip - origin_), glm::vec3(normal), value});
       }
       for (std::uint32_t k = 0; k < kRing; ++k) {
         const std::uint32_t k1 = (k + 1) % kRing;
-        indices.insert(indices.end(), {cone + 2 * k, cone + 2 * k1, cone + 2 * k + 1});
+        out.indices.insert(out.indices.end(), {cone + 2 * k, cone + 2 * k1, cone + 2 * k + 1});
       }
     }
   }
-  glNamedBufferData(tubeVbo_.id(), GLsizeiptr(std::max<std::size_t>(vertices.size(), 1) * sizeof(Vertex)),
-                    vertices.empty() ? nullptr : vertices.data(), GL_STATIC_DRAW);
-  glNamedBufferData(tubeIbo_.id(), GLsizeiptr(std::max<std::size_t>(indices.size(), 1) * 4),
-                    indices.empty() ? nullptr : indices.data(), GL_STATIC_DRAW);
+}
+
+void StreamlineRenderer::setLines(const std::vector<std::vector<glm::dvec3>>& lines,
+                                  const std::vector<std::vector<double>>& values, const glm::dvec3& origin,
+                                  const StreamlineStyle& style) {
+  origin_ = origin;
+  style_ = style;
+  segmentIndices_ = tubeVertices_ = 0;
+  std::size_t points = 0;
+  for (const auto& l : lines) points += l.size();
+  const std::size_t perPoint = (style.tubes ? kRing : 0) + (style.arrows ? 2 * kRing : 0);
+  if (points * perPoint > kMaxTubeVertices)
+    throw std::invalid_argument(std::string(style.tubes ? "tubes" : "arrows") + " for " + std::to_string(points) +
+                                " streamline points would need more than " + std::to_string(kMaxTubeVertices) +
+                                " vertices: draw plain lines instead, or fewer seeds");
+  if (!style.tubes) uploadLines(lines, values);
+  // Tubes and arrow cones are shaded triangles; arrows go with lit lines as well as tubes.
+  Triangles triangles;
+  const Radius radius(style_, values);
+  if (style.tubes) appendTubes(lines, values, radius, triangles);
+  if (style.arrows && style.arrowSpacing > 0.0) appendArrows(lines, values, radius, triangles);
+  glNamedBufferData(tubeVbo_.id(), GLsizeiptr(std::max<std::size_t>(triangles.vertices.size(), 1) * sizeof(Vertex)),
+                    triangles.vertices.empty() ? nullptr : triangles.vertices.data(), GL_STATIC_DRAW);
+  glNamedBufferData(tubeIbo_.id(), GLsizeiptr(std::max<std::size_t>(triangles.indices.size(), 1) * 4),
+                    triangles.indices.empty() ? nullptr : triangles.indices.data(), GL_STATIC_DRAW);
   configure(tubeVao_.id(), tubeVbo_.id(), tubeIbo_.id());
-  tubeVertices_ = GLsizei(indices.size());
+  tubeVertices_ = GLsizei(triangles.indices.size());
+  gl::check("StreamlineRenderer::setLines");
 }
 
 void StreamlineRenderer::setCommonUniforms(GLuint p, const RenderContext& ctx) const {
@@ -232,13 +264,7 @@ void StreamlineRenderer::render(const RenderContext& ctx) {
   glViewport(0, 0, ctx.width, ctx.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  if (tubeVertices_ > 0) {
-    const GLuint p = tubeProgram_.id();
-    glUseProgram(p);
-    setCommonUniforms(p, ctx);
-    glBindVertexArray(tubeVao_.id());
-    glDrawElements(GL_TRIANGLES, tubeVertices_, GL_UNSIGNED_INT, nullptr);
-  } else {
+  if (segmentIndices_ > 0) {
     const GLuint p = lineProgram_.id();
     glUseProgram(p);
     setCommonUniforms(p, ctx);
@@ -252,6 +278,13 @@ void StreamlineRenderer::render(const RenderContext& ctx) {
     glProgramUniform1f(p, u("shininess"), shininess);
     glBindVertexArray(lineVao_.id());
     glDrawElements(GL_LINES, segmentIndices_, GL_UNSIGNED_INT, nullptr);
+  }
+  if (tubeVertices_ > 0) {  // tubes, arrow cones or both
+    const GLuint p = tubeProgram_.id();
+    glUseProgram(p);
+    setCommonUniforms(p, ctx);
+    glBindVertexArray(tubeVao_.id());
+    glDrawElements(GL_TRIANGLES, tubeVertices_, GL_UNSIGNED_INT, nullptr);
   }
   glBindVertexArray(0);
   glUseProgram(0);

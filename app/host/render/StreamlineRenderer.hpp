@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <vector>
 
 namespace volpost {
@@ -21,7 +22,7 @@ struct StreamlineStyle {
   bool tubes = false;          ///< shaded tubes instead of lines
   double tubeRadius = 0.0;     ///< model units (tubes and arrows)
   bool radiusByValue = false;  ///< tube radius from 0.25x to 1x by the colored scalar
-  bool arrows = false;         ///< cones along the lines, pointing downstream
+  bool arrows = false;         ///< cones along the lines or tubes, pointing downstream
   double arrowSpacing = 0.0;   ///< model units between arrows
   bool operator==(const StreamlineStyle&) const = default;
 };
@@ -48,8 +49,13 @@ class StreamlineRenderer {
   glm::vec3 noValueColor{0.55f, 0.55f, 0.55f};
 
  private:
+  struct Triangles;  // shaded triangles: tubes and arrow cones
+  struct Radius;     // the tube's (and arrow's) radius at a value
   void uploadLines(const std::vector<std::vector<glm::dvec3>>& lines, const std::vector<std::vector<double>>& values);
-  void uploadTubes(const std::vector<std::vector<glm::dvec3>>& lines, const std::vector<std::vector<double>>& values);
+  void appendTubes(const std::vector<std::vector<glm::dvec3>>& lines, const std::vector<std::vector<double>>& values,
+                   const Radius& radius, Triangles& out) const;
+  void appendArrows(const std::vector<std::vector<glm::dvec3>>& lines, const std::vector<std::vector<double>>& values,
+                    const Radius& radius, Triangles& out) const;
   void setCommonUniforms(GLuint program, const RenderContext& ctx) const;
 
   gl::Program lineProgram_, tubeProgram_;
