@@ -3,6 +3,8 @@
 #include "CliSupport.hpp"
 #include "Commands.hpp"
 
+#include "../core/ProbeTable.hpp"
+
 #include <QCommandLineParser>
 
 #include <cstdio>
@@ -10,7 +12,9 @@
 namespace volpost::app {
 namespace {
 
-void printFields(const Model& model) {
+// Returns how many steps could not be read (each said where it is listed).
+std::size_t printFields(const Model& model) {
+  std::size_t unreadable = 0;
   std::printf("fields:   %zu\n", model.fields.size());
   for (const auto& f : model.fields) {
     const Quantity headline = quantitiesOf(*f).front();
@@ -39,21 +43,30 @@ void printFields(const Model& model) {
         std::printf("\n");
       } catch (const std::exception& e) {
         std::printf("      step %zu: cannot be read: %s\n", s + 1, e.what());
+        ++unreadable;
       }
     }
   }
+  return unreadable;
 }
 
-// "grid:     23 inline (111 .. 133 by 1) x 18 crossline (...) x 75 time (ms) (4 .. 300 by 4)".
+std::string exactPoint(const glm::dvec3& p) {
+  return "(" + exactNumber(p.x) + ", " + exactNumber(p.y) + ", " + exactNumber(p.z) + ")";
+}
+
+// "grid:     23 inline (111 .. 133 by 1) x 18 crossline (...) x 75 time (ms) (4 .. 300 by 4)",
+// then where the grid lies, every number as the shortest text that reads back to it
+// (UTM coordinates of a survey need 8 or more digits).
 void printGrid(const RegularGrid& grid) {
   std::printf("grid:     ");
   for (int a = 0; a < 3; ++a)
-    std::printf("%s%zu %s (%.6g .. %.6g by %.6g)", a ? " x " : "", grid.dims[a], grid.axisNames[a].c_str(),
-                grid.label(a, 0.0), grid.label(a, double(grid.dims[a] - 1)), grid.labelStep[a]);
+    std::printf("%s%zu %s (%s .. %s by %s)", a ? " x " : "", grid.dims[a], grid.axisNames[a].c_str(),
+                exactNumber(grid.label(a, 0.0)).c_str(), exactNumber(grid.label(a, double(grid.dims[a] - 1))).c_str(),
+                exactNumber(grid.labelStep[a]).c_str());
   std::printf("\n");
+  std::printf("  %-12s %s model units (the first point)\n", "origin", exactPoint(grid.origin).c_str());
   for (int a = 0; a < 3; ++a)
-    std::printf("  %-12s step (%.6g, %.6g, %.6g) model units\n", grid.axisNames[a].c_str(), grid.axes[a].x,
-                grid.axes[a].y, grid.axes[a].z);
+    std::printf("  %-12s step %s model units\n", grid.axisNames[a].c_str(), exactPoint(grid.axes[a]).c_str());
   if (!grid.sampleStorage.empty()) std::printf("samples:  %s in the file\n", grid.sampleStorage.c_str());
 }
 
@@ -110,16 +123,22 @@ int runInfo(const QStringList& args) {
       std::printf("  %-9s %zu\n", std::string(cellTypeName(type)).c_str(), count);
     const Bounds b = model->bounds();
     if (b.valid)
-      std::printf("bounds:   x [%.6g, %.6g]  y [%.6g, %.6g]  z [%.6g, %.6g]\n", b.min.x, b.max.x, b.min.y, b.max.y,
-                  b.min.z, b.max.z);
+      std::printf("bounds:   x [%s, %s]  y [%s, %s]  z [%s, %s]\n", exactNumber(b.min.x).c_str(),
+                  exactNumber(b.max.x).c_str(), exactNumber(b.min.y).c_str(), exactNumber(b.max.y).c_str(),
+                  exactNumber(b.min.z).c_str(), exactNumber(b.max.z).c_str());
     else
       std::printf("bounds:   (empty model)\n");
     if (model->grid) printGrid(*model->grid);
-    printFields(*model);
+    const std::size_t unreadable = printFields(*model);
     std::printf("defects:  %s\n", model->diagnostics.empty() ? "none found" : "");
     for (const Diagnostic& d : model->diagnostics)
       std::printf("  %-7s %-22s %s\n", d.severity == Severity::Warning ? "warning" : "info", d.code.c_str(),
                   d.message.c_str());
+    if (unreadable > 0) {  // listed, but the model is not whole: not a success
+      printError(QString::fromStdString(std::to_string(unreadable) + " field step" + (unreadable == 1 ? "" : "s") +
+                                        " of " + path + " could not be read (said above)"));
+      return 1;
+    }
     return 0;
   } catch (const OptionError& e) {
     printError(e.what());
