@@ -15,12 +15,16 @@ namespace volpost::meshio {
 
 DiskFile::DiskFile(const std::string& path) : path_(path) {
   requireRegularFile(path);
-  fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // Without blocking: the name may have been swapped for a pipe since it was checked, and
+  // opening a pipe waits for a writer. What was opened is checked again by its descriptor.
+  fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd_ < 0) throw ReadError(path, std::string("cannot open: ") + std::strerror(errno));
   struct stat st {};
-  if (::fstat(fd_, &st) != 0) {
+  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
     const int error = errno;
+    const bool regular = S_ISREG(st.st_mode);
     ::close(fd_);
+    if (!regular) throw ReadError(path, "is no longer a regular file (it was replaced while being opened)");
     throw ReadError(path, std::string("cannot read its size: ") + std::strerror(error));
   }
   size_ = std::uint64_t(st.st_size);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "NrrdReader.hpp"
 
+#include "DiskFileStream.hpp"
+
 #include <volpost/core/Error.hpp>
 #include <volpost/core/ResourceLimits.hpp>
 
@@ -331,7 +333,10 @@ SampleArray decodeSamples(const std::string& bytes, std::size_t count, const Hea
 void skipLines(std::istream& in, std::int64_t lines, const std::string& path) {
   for (std::int64_t i = 0; i < lines; ++i) {
     in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    if (!in) throw ReadError(path, "the data file ends within its " + std::to_string(lines) + " skipped lines");
+    // Ended without the line's newline: nothing is left for the data.
+    if (!in || in.eof())
+      throw ReadError(path, "the data ends within the " + std::to_string(lines) + " line" + (lines == 1 ? "" : "s") +
+                                " the header's line skip passes over (" + std::to_string(i) + " found)");
   }
 }
 
@@ -340,7 +345,19 @@ struct DataSource {
   std::uint64_t offset;    ///< where the header or its skips leave off
 };
 
-std::string gunzip(std::istream& in, std::size_t needed, std::uint64_t skip, const std::string& path) {
+// Deflate gives at most 1032 bytes for one (its longest match, 258 bytes, in two bits at
+// best): more than that claimed from fewer compressed bytes is refused before the memory
+// for it is taken.
+constexpr double kMostDeflateExpansion = 1032.0;
+
+// The samples from gzip data: concatenated gzip members are read one after the other, as
+// gunzip does; `skip` decompressed bytes (the byte skip) are passed over first.
+std::string gunzip(std::istream& in, std::uint64_t compressed, std::size_t needed, std::uint64_t skip,
+                   const std::string& path) {
+  if (double(compressed) * kMostDeflateExpansion < double(needed) + double(skip))
+    throw ReadError(path, "its " + std::to_string(compressed) + " bytes of gzip data cannot hold the " +
+                              std::to_string(needed) + " bytes the header's sizes and type need (gzip compresses at "
+                              "most 1032 to 1): the sizes are wrong or the data is cut short");
   z_stream z{};
   if (inflateInit2(&z, 15 + 32) != Z_OK) throw ReadError(path, "zlib could not start");
   std::string out(needed, '\0');
@@ -348,12 +365,16 @@ std::string gunzip(std::istream& in, std::size_t needed, std::uint64_t skip, con
   std::uint64_t toSkip = skip;
   std::size_t filled = 0;
   int status = Z_OK;
-  while (filled < needed && status != Z_STREAM_END) {
+  while (filled < needed) {
     if (z.avail_in == 0) {
       in.read(chunk.data(), std::streamsize(chunk.size()));
       z.avail_in = uInt(in.gcount());
       z.next_in = reinterpret_cast<Bytef*>(chunk.data());
       if (z.avail_in == 0) break;
+    }
+    if (status == Z_STREAM_END) {  // another member follows the one that ended
+      if (inflateReset(&z) != Z_OK) break;
+      status = Z_OK;
     }
     char* target = toSkip > 0 ? scratch.data() : out.data() + filled;
     const std::size_t room = toSkip > 0 ? std::min<std::uint64_t>(scratch.size(), toSkip) : std::min<std::size_t>(needed - filled, 1u << 30);
@@ -470,9 +491,10 @@ std::string fieldName(const Header& h) {
 int NrrdReader::sniff(std::string_view head) const { return head.rfind("NRRD000", 0) == 0 ? 100 : 0; }
 
 std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress& progress) const {
-  requireRegularFile(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ReadError(path, "cannot open the file");
+  // Every byte is read through descriptors checked when opened (DiskFile): the data file is
+  // never opened by name again, so the file read is the file checked.
+  const auto headerFile = std::make_shared<const DiskFile>(path);
+  DiskFileStream in(headerFile);
   const Header h = HeaderParser(path, in).run();
   const Layout layout = layoutOf(h, path);
   const RegularGrid grid = gridOf(h, layout, path);
@@ -486,27 +508,22 @@ std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress&
 
   // Where the samples are: after the header, or in the data file beside the header.
   std::string dataPath = path;
-  std::ifstream detached;
-  std::istream* data = &in;
+  std::shared_ptr<const DiskFile> dataFile = headerFile;
   std::uint64_t start = h.dataOffset;
   if (!h.dataFile.empty()) {
     const std::filesystem::path named(h.dataFile);
     dataPath = (named.is_absolute() ? named : std::filesystem::path(path).parent_path() / named).string();
     try {
-      requireRegularFile(dataPath);
+      dataFile = std::make_shared<const DiskFile>(dataPath);
     } catch (const ReadError& e) {
       throw ReadError(path, "its data file '" + h.dataFile + "': " + e.detail());
     }
-    detached.open(dataPath, std::ios::binary);
-    if (!detached) throw ReadError(path, "cannot open its data file " + dataPath);
-    data = &detached;
     start = 0;
   }
-  data->clear();
-  data->seekg(std::streamoff(start));
-  skipLines(*data, h.lineSkip, dataPath);
-  start = std::uint64_t(data->tellg());
-  const std::uint64_t fileSize = std::filesystem::file_size(dataPath);
+  DiskFileStream data(dataFile, start);
+  skipLines(data, h.lineSkip, dataPath);
+  start = std::uint64_t(std::streamoff(data.tellg()));
+  const std::uint64_t fileSize = dataFile->size();
 
   auto model = std::make_unique<Model>();
   model->title = trim(h.content);
@@ -521,24 +538,21 @@ std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress&
       throw ReadError::atOffset(dataPath, fileSize, "the data ends after " + std::to_string(fileSize > offset ? fileSize - offset : 0) +
                                                         " of the " + std::to_string(bytes) + " bytes the header's sizes and type (" +
                                                         h.typeName + ") need");
-    SampleLoader loader = [dataPath, offset, bytes, count, h](std::size_t) {
-      std::ifstream f(dataPath, std::ios::binary);
-      std::string raw(bytes, '\0');
-      f.seekg(std::streamoff(offset));
-      f.read(raw.data(), std::streamsize(bytes));
-      if (std::size_t(f.gcount()) != bytes) throw ReadError(dataPath, "the data file changed since it was opened: it ends early");
-      return decodeSamples(raw, count, h);
+    // Read from the descriptor opened now (DiskFile refuses a file changed since).
+    SampleLoader loader = [dataFile, offset, bytes, count, h](std::size_t) {
+      return decodeSamples(dataFile->readString(offset, bytes), count, h);
     };
     model->fields.push_back(Field::fromSamples(name, FieldLocation::Node, comps, points, std::vector<Step>{{"", 0.0}},
                                                std::move(loader)));
   } else {
     // Text, hex and gzip are decoded now: their length is known only by reading them.
     if (h.encoding == Encoding::Gzip) {
-      SampleArray samples = decodeSamples(gunzip(*data, bytes, std::uint64_t(std::max<std::int64_t>(h.byteSkip, 0)), dataPath), count, h);
+      const std::uint64_t compressed = fileSize - std::min(fileSize, start);
+      SampleArray samples = decodeSamples(gunzip(data, compressed, bytes, std::uint64_t(std::max<std::int64_t>(h.byteSkip, 0)), dataPath), count, h);
       model->fields.push_back(Field::fromSamples(name, FieldLocation::Node, comps, std::move(samples)));
     } else {
-      if (h.byteSkip > 0) data->seekg(std::streamoff(start + std::uint64_t(h.byteSkip)));
-      std::vector<double> values = readText(*data, count, h.encoding == Encoding::Hex, h, dataPath);
+      if (h.byteSkip > 0) data.seekg(std::streamoff(start + std::uint64_t(h.byteSkip)));
+      std::vector<double> values = readText(data, count, h.encoding == Encoding::Hex, h, dataPath);
       std::vector<std::vector<double>> steps;
       steps.push_back(std::move(values));  // not {std::move(values)}: a braced list copies
       model->fields.push_back(Field::fromValues(name, FieldLocation::Node, comps, std::move(steps)));

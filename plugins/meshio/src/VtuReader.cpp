@@ -414,16 +414,26 @@ class VtuReading {
     // The type an image array is kept in: the pieces' own when they all share it and
     // together cover the image (VTK's pieces do not overlap); else floats wide enough for
     // it, so that a gap can be NaN (32-bit for small integers, 64-bit for the rest).
-    const auto imageSampleType = [](const std::vector<ImageArray>& parts, const std::array<std::size_t, 3>& size) {
-      std::size_t covered = 0;
-      bool same = !parts.empty();
+    // How many of the image's points (or cells) no piece gives a value: pieces may share
+    // their boundary planes, so this is counted point by point, not from their sizes.
+    const auto uncovered = [&](const std::vector<ImageArray>& parts, const std::array<std::size_t, 3>& size) {
+      std::vector<bool> covered(size[0] * size[1] * size[2], false);
       for (const ImageArray& part : parts) {
         const auto n = part.extent.points();
-        covered += n[0] * n[1] * n[2];
-        same = same && part.source.type == parts.front().source.type;
+        for (std::size_t k = 0; k < n[2]; ++k)
+          for (std::size_t j = 0; j < n[1]; ++j)
+            for (std::size_t i = 0; i < n[0]; ++i)
+              covered[std::size_t(part.extent.e[0] - low[0]) + i +
+                      size[0] * (std::size_t(part.extent.e[2] - low[1]) + j +
+                                 size[1] * (std::size_t(part.extent.e[4] - low[2]) + k))] = true;
       }
+      return std::size_t(std::count(covered.begin(), covered.end(), false));
+    };
+    const auto imageSampleType = [](const std::vector<ImageArray>& parts, std::size_t missing) {
+      bool same = !parts.empty();
+      for (const ImageArray& part : parts) same = same && part.source.type == parts.front().source.type;
       const NumericType type = same ? parts.front().source.type : NumericType::Float64;
-      const bool covers = same && covered == size[0] * size[1] * size[2];
+      const bool covers = same && missing == 0;
       switch (type) {
         case NumericType::Int8: return covers ? SampleType::Int8 : SampleType::Float32;
         case NumericType::UInt8: return covers ? SampleType::UInt8 : SampleType::Float32;
@@ -445,7 +455,15 @@ class VtuReading {
       auto parts = std::make_shared<std::vector<ImageArray>>(std::move(arrays[key]));
       // Kept in the file's type when every piece has it and the pieces cover the image;
       // else as floats wide enough for it, NaN where no piece is.
-      const SampleType stored = imageSampleType(*parts, size);
+      const std::size_t missing = uncovered(*parts, size);
+      const SampleType stored = imageSampleType(*parts, missing);
+      if (missing > 0)
+        model->diagnostics.push_back({Severity::Warning, "image-gap",
+                                      std::to_string(missing) + " of the " + std::to_string(entities) + " " +
+                                          (location == FieldLocation::Node ? "points" : "cells") + " of \"" +
+                                          key.substr(2) + "\" lie in no <Piece> (the pieces overlap or leave a gap): "
+                                          "they have no value (drawn gray)",
+                                      {}});
       // Every piece's values placed at its extent in the whole image.
       SampleLoader loader = [parts, size, low, comps, entities, stored, enc = enc_, path = path_](std::size_t) {
         SampleArray all(stored, entities * std::size_t(comps));

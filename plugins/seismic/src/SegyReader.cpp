@@ -11,8 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -22,6 +24,8 @@ namespace volpost::seismic {
 namespace {
 
 constexpr std::uint64_t kTextHeaderBytes = 3200, kBinaryHeaderBytes = 400, kTraceHeaderBytes = 240;
+// At most this many trace positions in the grid for each trace read (1 % filled).
+constexpr std::size_t kMostTracePositionsPerTrace = 100;
 
 struct TraceKey {
   std::int64_t inlineNumber = 0, crosslineNumber = 0, offset = 0;
@@ -326,6 +330,18 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                   "): a volume needs at least 2 of each; a 2D line or other header positions?");
   if (b.samplesPerTrace < 2) file.fail(kTextHeaderBytes + 20, "1 sample per trace: a volume needs at least 2");
   const std::size_t cells = checkedProduct(il.count, xl.count, path, "the grid");
+  // A few traces whose numbers lie far apart would span a grid of missing traces (3 traces,
+  // 250 million zero samples): refused before its memory is taken. A real survey's outline
+  // leaves gaps, never 99 % of the rectangle.
+  if (cells > kMostTracePositionsPerTrace * chosen.size() && cells > 10000)
+    file.fail(dataStart + std::uint64_t(at.inlineNumber - 1),
+              std::to_string(chosen.size()) + " traces span inlines " + std::to_string(il.first) + " .. " +
+                  std::to_string(il.first + std::int64_t(il.count - 1) * il.step) + " and crosslines " +
+                  std::to_string(xl.first) + " .. " + std::to_string(xl.first + std::int64_t(xl.count - 1) * xl.step) +
+                  ": a grid of " + std::to_string(cells) + " trace positions, more than " +
+                  std::to_string(kMostTracePositionsPerTrace) + " for each trace. The inline and crossline numbers (bytes " +
+                  std::to_string(at.inlineNumber) + " and " + std::to_string(at.crosslineNumber) +
+                  ") may be elsewhere in this file's trace headers: --reader-option inline-byte=N crossline-byte=M");
   const std::size_t points = checkedProduct(cells, b.samplesPerTrace, path, "the grid");
   // The samples as stored and a renderer's copy of them; the grid holds no cells until
   // something needs them (Model::mesh checks those).
@@ -368,6 +384,15 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
   grid.sampleStorage = describe(b.format);
   grid.axisNames = {"inline", "crossline", "time (ms)"};
   grid.firstLabel = {double(il.first), double(xl.first), double(keys[chosen.front()].delayMs)};
+  // Beyond ten seconds between samples is no recording: a corrupt or hostile header (rev 2's
+  // extended interval of 1e300 would overflow every time).
+  if (b.sampleIntervalMicroseconds > 1e7) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "binary header: the sample interval is %g microseconds (bytes %s), more than 10 s between samples",
+                  b.sampleIntervalMicroseconds, b.revisionMajor >= 2 ? "3273-3280, the extended interval" : "3217-3218");
+    file.fail(kTextHeaderBytes + (b.revisionMajor >= 2 ? 72 : 16), text);
+  }
   double dtMs = b.sampleIntervalMicroseconds / 1000.0;
   if (!(dtMs > 0.0)) {
     dtMs = 1.0;
@@ -402,7 +427,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
   SampleArray values(storedType(b.format), points);
   std::vector<unsigned char> samples(b.samplesPerTrace * sampleBytes(b.format));
   const std::size_t bytesPer = sampleBytes(b.format);
-  std::size_t missing = 0, nonFinite = 0;
+  std::size_t missing = 0, nonFinite = 0, beyondFloat = 0;
+  double largestBeyondFloat = 0.0;
   std::vector<std::size_t> missingItems;
   for (std::size_t c = 0; c < cells; ++c) {
     if (traceAt[c] < 0) {
@@ -416,6 +442,10 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
       if (!std::isfinite(v)) {
         ++nonFinite;
         v = 0.0;
+      }
+      if (std::abs(v) > double(std::numeric_limits<float>::max())) {
+        ++beyondFloat;
+        if (std::abs(v) > std::abs(largestBeyondFloat)) largestBeyondFloat = v;
       }
       if (!values.fitsExactly(v)) values = values.widenedTo(SampleType::Float64);
       values.set(c + cells * s, v);
@@ -431,7 +461,38 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
   if (nonFinite > 0)
     model->diagnostics.push_back({Severity::Warning, "nan-values",
                                   std::to_string(nonFinite) + " samples are not finite numbers: read as 0", {}});
+  if (beyondFloat > 0) {
+    // IBM floats reach 7.2e75: a sample beyond an IEEE float's 3.4e38 is almost always junk
+    // (a header or garbage read as samples); it stretches the color scale over everything.
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "%zu sample%s beyond a 32-bit float's range (up to %g): kept, but such values are usually junk "
+                  "and they stretch the color scale; give a --range to see the rest",
+                  beyondFloat, beyondFloat == 1 ? "" : "s", largestBeyondFloat);
+    model->diagnostics.push_back({Severity::Warning, "samples-beyond-float", text, {}});
+  }
   if (traceCountDiffers) model->diagnostics.push_back({Severity::Info, "trace-sample-count", traceCountNote, {}});
+  {
+    // Traces recorded from different start times are drawn on the first trace's time axis:
+    // said, with the range, so that times read off the picture are not trusted blindly.
+    std::int64_t earliest = keys[chosen.front()].delayMs, latest = earliest;
+    std::size_t differing = 0;
+    for (std::uint64_t t : chosen) {
+      earliest = std::min(earliest, keys[t].delayMs);
+      latest = std::max(latest, keys[t].delayMs);
+      differing += keys[t].delayMs != keys[chosen.front()].delayMs;
+    }
+    if (differing > 0)
+      model->diagnostics.push_back(
+          {Severity::Warning, "trace-start-times",
+           std::to_string(differing) + " of " + std::to_string(chosen.size()) +
+               " traces start at another time than the first (delay recording time, bytes " +
+               std::to_string(at.delayMs) + "-" + std::to_string(at.delayMs + 1) + ": " + std::to_string(earliest) +
+               " .. " + std::to_string(latest) + " ms): every trace is drawn from the first trace's start, " +
+               std::to_string(keys[chosen.front()].delayMs) + " ms, so their times are off by up to " +
+               std::to_string(latest - earliest) + " ms",
+           {}});
+  }
   if (offsets.size() > 1 && options.offset)
     model->diagnostics.push_back({Severity::Info, "offset-chosen",
                                   "pre-stack file: offset " + std::to_string(*options.offset) + " of " +

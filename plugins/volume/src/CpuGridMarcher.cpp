@@ -27,12 +27,17 @@ GridSamples::GridSamples(const RegularGrid& grid, SampleView values) : grid_(gri
   const ValueRange range = rangeOf(values);
   const double lo = range.min, hi = range.max;  // 0, 0 without a finite value
   valueOffset_ = 0.5 * lo + 0.5 * hi;
+  // Values reaching beyond a float's range from the mid-range (a junk sample of 1e39 in a
+  // double file, an IBM float of 7e75) are scaled by a power of two: trilinear sums and
+  // differences of them must stay finite (inf - inf is NaN).
+  const double halfRange = 0.5 * hi - 0.5 * lo;
+  while (halfRange * scale_ > 1e37) scale_ *= 0x1p-32;
   values_.resize(values.size());
   values.visit([&](auto typed) {  // not a finite number: drawn as the lowest value
     forEachChunk(typed.size(), 1 << 16, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const double v = double(typed[i]);
-        values_[i] = float((std::isfinite(v) ? v : lo) - valueOffset_);
+        values_[i] = float(((std::isfinite(v) ? v : lo) - valueOffset_) * scale_);
       }
     });
   });
@@ -143,7 +148,7 @@ struct Marcher {
   // The gradient magnitude of a sample (its index gradient) in model units, for a 2D
   // transfer function.
   double gradientOf(const glm::dvec3& indexGradient) const {
-    return settings.transferFunction2D ? glm::length(glm::transpose(grid.toIndex()) * indexGradient) : 0.0;
+    return settings.transferFunction2D ? grid.unscaled(glm::length(glm::transpose(grid.toIndex()) * indexGradient)) : 0.0;
   }
 
   // A piece over which the scalar is linear, cut at the iso-surfaces it crosses; with a 2D
@@ -180,8 +185,8 @@ struct Marcher {
   void integratePart(float sa, float sb, double x0, double x1, double length, const EmissionShade& shade,
                      const glm::dvec2& gradients, optics::SegmentLight& light) const {
     if (!(x1 > x0)) return;
-    const double offset = grid.valueOffset();
-    const double a = offset + double(sa) + x0 * double(sb - sa), b = offset + double(sa) + x1 * double(sb - sa);
+    const double a = grid.valueOf(double(sa) + x0 * (double(sb) - double(sa))),
+                 b = grid.valueOf(double(sa) + x1 * (double(sb) - double(sa)));
     if (const auto& tf2d = settings.transferFunction2D) {
       // Color and extinction at both ends from the table, linear between (as the GPU).
       glm::dvec4 front = tf2d->evaluate(a, gradients.x + x0 * (gradients.y - gradients.x));
@@ -292,7 +297,7 @@ std::vector<std::uint8_t> clearBricks(const GridSamples& grid, const PiecewiseIn
   const std::size_t count = grid.bricks()[0] * grid.bricks()[1] * grid.bricks()[2];
   std::vector<std::uint8_t> clear(count, 0);
   for (std::size_t b = 0; b < count; ++b) {
-    const double lo = grid.valueOffset() + grid.brickMin(b), hi = grid.valueOffset() + grid.brickMax(b);
+    const double lo = grid.valueOf(grid.brickMin(b)), hi = grid.valueOf(grid.brickMax(b));
     // A 2D transfer function is zero outside its table's values, whatever the gradient.
     bool clearHere = tf2d ? (tf2d->empty() || hi < tf2d->valueLow() || lo > tf2d->valueHigh())
                           : integrator.transparent(lo, hi);
@@ -316,7 +321,7 @@ CpuImage renderCpuGrid(const GridSamples& grid, const TransferFunction& tf, cons
   const PiecewiseIntegrator integrator(tf);
   const std::vector<std::uint8_t> clear = clearBricks(grid, integrator, settings.isoSurfaces, settings.transferFunction2D);
   Marcher marcher{grid, integrator, settings, clear, {}, step > 0.0 ? step : 0.5 * grid.shortestSpacing()};
-  for (const optics::IsoSurface& s : settings.isoSurfaces) marcher.isoValues.push_back(float(s.value - grid.valueOffset()));
+  for (const optics::IsoSurface& s : settings.isoSurfaces) marcher.isoValues.push_back(grid.relativeOf(s.value));
   marcher.readsGradient = settings.shading || settings.transferFunction2D.has_value();
 
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());

@@ -21,7 +21,8 @@
 namespace volpost::volume {
 
 /// A grid's values prepared for marching: float values relative to their mid-range (float
-/// resolves the range, not the magnitude), and each brick's value range.
+/// resolves the range, not the magnitude), scaled down where that range is beyond a float's,
+/// and each brick's value range.
 class GridSamples {
  public:
   /// Throws std::invalid_argument for a grid with a defect or a wrong value count.
@@ -29,6 +30,11 @@ class GridSamples {
 
   const RegularGrid& grid() const { return grid_; }
   double valueOffset() const { return valueOffset_; }
+  /// A stored (relative, scaled) value as the field's value, and back.
+  double valueOf(double relative) const { return valueOffset_ + relative / scale_; }
+  float relativeOf(double value) const { return float((value - valueOffset_) * scale_); }
+  /// A difference of stored values (a gradient) in the field's units.
+  double unscaled(double storedDifference) const { return storedDifference / scale_; }
   double shortestSpacing() const { return shortestSpacing_; }
   const glm::dmat3& toIndex() const { return toIndex_; }
   /// The value (relative to valueOffset) at a continuous index, trilinear.
@@ -52,6 +58,7 @@ class GridSamples {
   RegularGrid grid_;
   std::vector<float> values_;
   double valueOffset_ = 0.0, shortestSpacing_ = 1.0;
+  double scale_ = 1.0;  ///< stored = (value - offset) * scale; below 1 only for ranges beyond float
   glm::dmat3 toIndex_{1.0};
   std::array<std::size_t, 3> bricks_{1, 1, 1};
   std::vector<float> brickMin_, brickMax_;

@@ -100,7 +100,7 @@ int PiecewiseIntegrator::pieceOf(double s) const {
 }
 
 bool PiecewiseIntegrator::transparent(double a, double b) const {
-  if (values_.empty()) return true;
+  if (values_.empty() || !std::isfinite(a) || !std::isfinite(b)) return true;
   const double lo = std::min(a, b), hi = std::max(a, b);
   return hi <= zeroUntil_[std::size_t(pieceOf(lo) + 1)];
 }
@@ -130,6 +130,9 @@ optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack,
     c = c * k.x + glm::dvec3(k.y);
   };
   if (values_.empty() || !(length > 0.0)) return total;
+  // A value that is no number (a sample beyond the renderer's float range) shows nothing;
+  // it must not walk the control points for ever.
+  if (!std::isfinite(sFront) || !std::isfinite(sBack)) return total;
   glm::dvec3 c0, c1;
   double t0, t1;
   int piece = pieceOf(sFront);

@@ -1,10 +1,26 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/Field.hpp>
 
+#include <volpost/core/ResourceLimits.hpp>
+
+#include <atomic>
 #include <stdexcept>
 
 namespace volpost {
 namespace {
+
+// What every field's loaded steps hold together: the memory budget counts the whole, not
+// each array alone (forty arrays each within the budget must not together exceed it).
+std::atomic<std::size_t> g_heldBytes{0};
+
+// Before a step of `bytes` is loaded: room for it beside what is held.
+void requireRoomFor(const std::string& field, std::size_t step, double bytes) {
+  const double held = double(g_heldBytes.load()), budget = double(memoryBudget());
+  if (held + bytes > budget)
+    throw std::runtime_error("field " + field + ": step " + std::to_string(step + 1) + " needs " + byteSizeText(bytes) +
+                             ", and the fields read so far hold " + byteSizeText(held) + " of the memory budget of " +
+                             byteSizeText(budget) + " (set a larger one with VOLPOST_MEMORY_BUDGET or --memory-budget)");
+}
 
 // What a loader gave must be one value per entity and component.
 void requireLoadedSize(const std::string& field, std::size_t step, std::size_t size, std::size_t expected) {
@@ -50,6 +66,15 @@ Field::Field(std::string name, FieldLocation location, int components, std::size
   if (components_ < 1) throw std::invalid_argument("field " + name_ + ": no components");
 }
 
+Field::~Field() { g_heldBytes -= heldBytes_; }
+
+std::size_t Field::bytesHeldByAllFields() { return g_heldBytes.load(); }
+
+void Field::hold(std::size_t bytes) const {
+  heldBytes_ += bytes;
+  g_heldBytes += bytes;
+}
+
 std::shared_ptr<Field> Field::fromValues(std::string name, FieldLocation location, int components,
                                          std::vector<std::vector<double>> stepValues,
                                          std::vector<Step> steps) {
@@ -72,6 +97,7 @@ std::shared_ptr<Field> Field::fromValues(std::string name, FieldLocation locatio
                                   std::to_string(stepValues[i].size()) + " values, expected " +
                                   std::to_string(count * std::size_t(components)));
     field->cache_[i] = std::make_unique<std::vector<double>>(std::move(stepValues[i]));
+    field->hold(field->cache_[i]->size() * sizeof(double));
   }
   return field;
 }
@@ -92,6 +118,7 @@ std::shared_ptr<Field> Field::fromSamples(std::string name, FieldLocation locati
   auto field = fromSamples(std::move(name), location, components, count, {{"", 0.0}},
                            [shared](std::size_t) { return SampleArray(); });
   field->sampleCache_[0] = std::make_unique<SampleArray>(std::move(*shared));  // kept as given, no copy
+  field->hold(field->sampleCache_[0]->bytes());
   return field;
 }
 
@@ -101,8 +128,10 @@ const SampleArray& Field::samples(std::size_t step) const {
     throw std::out_of_range("field " + name_ + " has no step " + std::to_string(step + 1));
   std::lock_guard lock(mutex_);
   if (!sampleCache_[step]) {
+    requireRoomFor(name_, step, double(entityCount_) * double(components_));  // a byte each at least
     auto loaded = std::make_unique<SampleArray>(sampleLoader_(step));
     requireLoadedSize(name_, step, loaded->size(), entityCount_ * std::size_t(components_));
+    hold(loaded->bytes());
     sampleCache_[step] = std::move(loaded);
   }
   return *sampleCache_[step];
@@ -119,13 +148,19 @@ const std::vector<double>& Field::values(std::size_t step) const {
   if (storesSamples()) {
     const SampleArray& stored = samples(step);  // outside the lock below: it takes it too
     std::lock_guard lock(mutex_);
-    if (!cache_[step]) cache_[step] = std::make_unique<std::vector<double>>(stored.toDoubles());
+    if (!cache_[step]) {
+      requireRoomFor(name_, step, double(stored.size()) * sizeof(double));
+      cache_[step] = std::make_unique<std::vector<double>>(stored.toDoubles());
+      hold(cache_[step]->size() * sizeof(double));
+    }
     return *cache_[step];
   }
   std::lock_guard lock(mutex_);
   if (!cache_[step]) {
+    requireRoomFor(name_, step, double(entityCount_) * double(components_) * sizeof(double));
     auto loaded = std::make_unique<std::vector<double>>(loader_(step));
     requireLoadedSize(name_, step, loaded->size(), entityCount_ * std::size_t(components_));
+    hold(loaded->size() * sizeof(double));
     cache_[step] = std::move(loaded);
   }
   return *cache_[step];

@@ -3,6 +3,8 @@
 
 #include <volpost/core/ResourceLimits.hpp>
 
+#include <set>
+
 namespace volpost {
 
 Model::Model(const Model& other)
@@ -74,6 +76,25 @@ const Field* Model::findField(const std::string& name) const {
   for (const auto& f : fields)
     if (f->name() == name) return f.get();
   return nullptr;
+}
+
+void Model::makeFieldNamesUnique() {
+  std::set<std::string> taken;
+  for (const auto& f : fields) taken.insert(f->name());
+  std::set<std::string> seen;
+  for (const auto& f : fields) {
+    if (seen.insert(f->name()).second) continue;
+    const std::string original = f->name();
+    std::string name = original + (f->location() == FieldLocation::Cell ? " (cells)" : " (nodes)");
+    for (int n = 2; taken.count(name); ++n) name = original + " (" + std::to_string(n) + ")";
+    f->rename(name);
+    taken.insert(name);
+    seen.insert(name);
+    diagnostics.push_back({Severity::Info, "field-renamed",
+                           "two fields are named \"" + original + "\": the " + toString(f->location()) +
+                               " field is shown as \"" + name + "\"",
+                           {}});
+  }
 }
 
 }  // namespace volpost

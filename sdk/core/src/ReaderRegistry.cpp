@@ -91,6 +91,7 @@ std::unique_ptr<Model> ReaderRegistry::load(const std::string& path, const Reade
   }
   model->sourcePath = path;
   if (model->formatName.empty()) model->formatName = reader.formatName();
+  model->makeFieldNamesUnique();
   checkModel(*model);
   return model;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/TransferFunction.hpp>
 
-#include "ParseJson.hpp"
+#include <volpost/core/ParseJson.hpp>
 
 #include <volpost/core/ColorMap.hpp>
 

@@ -3,12 +3,13 @@
 
 #include <volpost/core/TransferFunction.hpp>
 
-#include "ParseJson.hpp"
+#include <volpost/core/ParseJson.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace volpost {
@@ -70,6 +71,17 @@ void TransferFunction2D::buildTable() {
   valueLow_ = lo - dv;
   valueHigh_ = hi + dv;
   gradientHigh_ = top + dg;
+  // The table spans every widget: widgets 1e308 apart give a span beyond a double, and every
+  // lookup in it would be NaN.
+  if (!std::isfinite(valueHigh_ - valueLow_) || !std::isfinite(gradientHigh_)) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "2D transfer function: its widgets span values %g .. %g and gradients 0 .. %g, too wide for one "
+                  "table (the span is beyond a double): keep the widgets within the data's range",
+                  lo, hi, top);
+    widgets_.clear();
+    throw std::invalid_argument(text);
+  }
   for (int j = 0; j < kGradientNodes; ++j)
     for (int i = 0; i < kValueNodes; ++i) {
       const double v = valueLow_ + (valueHigh_ - valueLow_) * double(i) / double(kValueNodes - 1);
@@ -87,6 +99,7 @@ glm::dvec4 TransferFunction2D::evaluate(double value, double gradient) const {
     return glm::dvec4(0.0);
   const double x = (value - valueLow_) / (valueHigh_ - valueLow_) * double(kValueNodes - 1);
   const double y = gradient / gradientHigh_ * double(kGradientNodes - 1);
+  if (!(x >= 0.0 && y >= 0.0)) return glm::dvec4(0.0);  // NaN: no node to read
   const int i = std::min(int(x), kValueNodes - 2), j = std::min(int(y), kGradientNodes - 2);
   const double fx = x - double(i), fy = y - double(j);
   const auto node = [&](int a, int b) { return glm::dvec4(table_[std::size_t(b) * kValueNodes + std::size_t(a)]); };

@@ -13,6 +13,7 @@
 #include <zlib.h>
 
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -224,6 +225,75 @@ TEST_F(Nrrd, TheRegistryPicksTheReaderByItsFirstBytes) {
   const auto model = allReadersRegistry().load(path);
   ASSERT_TRUE(model->grid);
   EXPECT_EQ(model->fields[0]->values(0), ramp());
+}
+
+}  // namespace
+}  // namespace volpost::meshio
+
+namespace volpost::meshio {
+namespace {
+
+TEST_F(Nrrd, TheDataFileReadLaterIsTheOneCheckedWhenOpened) {
+  // The samples are read when first shown, from the descriptor opened with the header:
+  // the data file reopened by name read whatever was there by then (a pipe swapped in
+  // blocked for ever; a same-size rewrite went unnoticed).
+  const std::string raw = write("later.raw", samples(as<float>(ramp()), false));
+  const auto model = read(write("later.nhdr", "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
+                                              "encoding: raw\ndata file: later.raw\n"));
+  // Replaced by name with a file of the same size: the model still reads the one it checked.
+  fs::rename(raw, raw + ".old");
+  write("later.raw", std::string(24 * 4, '\0'));
+  EXPECT_EQ(model->fields[0]->values(0), ramp());
+}
+
+TEST_F(Nrrd, DataRewrittenInPlaceIsRefusedWhenRead) {
+  const std::string raw = write("inplace.raw", samples(as<float>(ramp()), false));
+  const auto model = read(write("inplace.nhdr", "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
+                                                "encoding: raw\ndata file: inplace.raw\n"));
+  // Same size, other bytes, a later time: the values would belong to another file.
+  fs::last_write_time(raw, fs::last_write_time(raw) - std::chrono::hours(1));
+  { std::ofstream(raw, std::ios::binary | std::ios::in | std::ios::out) << std::string(8, '\x7f'); }
+  try {
+    (void)model->fields[0]->values(0);
+    FAIL() << "read a changed file";
+  } catch (const ReadError& e) {
+    EXPECT_NE(std::string(e.what()).find("changed after it was opened"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Nrrd, ALineSkipPastTheEndAndConcatenatedGzipMembers) {
+  EXPECT_NE(readError(write("skip.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\nencoding: raw\n"
+                                         "line skip: 1\nbyte skip: 1\n\nno newline after this")),
+            "no error");
+  const std::string skipped = readError(write("skip2.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\n"
+                                                            "encoding: raw\nline skip: 3\n\none\ntwo"));
+  EXPECT_NE(skipped.find("the data ends within the 3 lines the header's line skip passes over (1 found)"),
+            std::string::npos)
+      << skipped;
+  // Two gzip members, 12 bytes each: read whole.
+  const auto gzip = [](const std::string& bytes) {
+    z_stream z{};
+    deflateInit2(&z, 9, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
+    std::string out(256, '\0');
+    z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+    z.avail_in = uInt(bytes.size());
+    z.next_out = reinterpret_cast<Bytef*>(out.data());
+    z.avail_out = uInt(out.size());
+    deflate(&z, Z_FINISH);
+    out.resize(z.total_out);
+    deflateEnd(&z);
+    return out;
+  };
+  std::string bytes;
+  for (int i = 0; i < 24; ++i) bytes += char(i);
+  const auto model = read(write("two.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\nencoding: gzip\n\n" +
+                                                gzip(bytes.substr(0, 12)) + gzip(bytes.substr(12))));
+  ASSERT_EQ(model->fields[0]->values(0).size(), 24u);
+  for (int i = 0; i < 24; ++i) EXPECT_EQ(model->fields[0]->values(0)[std::size_t(i)], double(i));
+  // A header claiming far more than its compressed bytes can hold: refused before the memory.
+  const std::string claim = readError(write("claim.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 1000 1000 100\nendian: little\n"
+                                                          "encoding: gzip\n\n" + gzip("tiny")));
+  EXPECT_NE(claim.find("bytes of gzip data cannot hold the 800000000 bytes"), std::string::npos) << claim;
 }
 
 }  // namespace

@@ -93,7 +93,7 @@ TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
 }
 
 // An IBM float beyond a 32-bit float's range (IBM reaches 7e75) widens the kept samples to
-// 64-bit floats instead of turning into infinity.
+// 64-bit floats instead of turning into infinity, and is flagged.
 TEST(SegyReader, IbmFloatsBeyondAFloatsRangeAreKeptAsDoubles) {
   const RegularGrid grid = surveyGrid();
   std::vector<double> values = surveyValues(grid);
@@ -107,7 +107,11 @@ TEST(SegyReader, IbmFloatsBeyondAFloatsRangeAreKeptAsDoubles) {
   EXPECT_NEAR(kept[17], 1e40, 1e34);
   EXPECT_NEAR(kept[40], -3e-45, 1e-51);
   EXPECT_EQ(kept[16], values[16]);
-  EXPECT_TRUE(model->diagnostics.empty()) << "finite values: nothing to report";
+  // Kept, and said: such a sample is usually junk, and it stretches the color scale.
+  ASSERT_EQ(model->diagnostics.size(), 1u);
+  EXPECT_EQ(model->diagnostics[0].code, "samples-beyond-float");
+  EXPECT_NE(model->diagnostics[0].message.find("1 sample beyond a 32-bit float's range (up to 1e+40)"), std::string::npos)
+      << model->diagnostics[0].message;
   fs::remove(p);
 }
 

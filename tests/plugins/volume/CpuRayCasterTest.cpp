@@ -390,6 +390,14 @@ TEST(CpuRayCastIntegration, PiecesMatchTheExactSegmentIntegral) {
   EXPECT_TRUE(p.transparent(2.0, 9.0));
   EXPECT_TRUE(p.transparent(9.0, 2.0));
   EXPECT_FALSE(p.transparent(-1.0, 9.0));
+  // A value that is no number (a grid sample beyond the renderer's float) shows nothing:
+  // the walk over the control points never ended on it.
+  for (const double nan : {std::nan(""), double(INFINITY), -double(INFINITY)}) {
+    EXPECT_TRUE(p.transparent(nan, 1.2));
+    const optics::SegmentLight light = p.integrate(1.2, nan, 1.0);
+    EXPECT_EQ(light.transmittance, 1.0);
+    EXPECT_EQ(p.integrate(nan, nan, 1.0).transmittance, 1.0);
+  }
 }
 
 // Another step on the same mesh shares the tets and their neighbours (no rebuild of the

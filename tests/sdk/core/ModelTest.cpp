@@ -130,3 +130,45 @@ TEST(Model, AGridsHexahedraOverTheMemoryBudgetAreRefusedWhenFirstNeeded) {
   EXPECT_EQ(model.mesh().cellCount(), 59319u);
   EXPECT_TRUE(model.meshBuilt());
 }
+
+TEST(Model, FieldsCountTogetherAgainstTheMemoryBudget) {
+  // Forty arrays each within the budget, not together, took 2.5 GB: each step loaded must
+  // fit beside what the fields already hold.
+  const std::size_t before = Field::bytesHeldByAllFields();
+  const std::size_t entities = 1000;
+  std::vector<std::shared_ptr<Field>> fields;
+  for (int i = 0; i < 5; ++i)
+    fields.push_back(std::make_shared<Field>("f" + std::to_string(i), FieldLocation::Node, 1, entities,
+                                             std::vector<Step>{{"", 0.0}},
+                                             [](std::size_t) { return std::vector<double>(1000, 1.0); }));
+  setMemoryBudget(before + 3 * entities * sizeof(double) + 100);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(fields[std::size_t(i)]->values(0).size(), entities);
+  EXPECT_EQ(Field::bytesHeldByAllFields(), before + 3 * entities * sizeof(double));
+  try {
+    (void)fields[3]->values(0);
+    ADD_FAILURE() << "a fourth array beyond the budget was loaded";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("field f3: step 1 needs 7.81 KB, and the fields read so far hold"),
+              std::string::npos)
+        << e.what();
+  }
+  fields.resize(1);  // a released field gives its memory back
+  EXPECT_EQ(Field::bytesHeldByAllFields(), before + entities * sizeof(double));
+  fields.push_back(std::make_shared<Field>("g", FieldLocation::Node, 1, entities, std::vector<Step>{{"", 0.0}},
+                                           [](std::size_t) { return std::vector<double>(1000, 2.0); }));
+  EXPECT_EQ(fields.back()->values(0).front(), 2.0);
+  setMemoryBudget(0);
+}
+
+TEST(Model, FieldsSharingANameAreGivenNamesOfTheirOwn) {
+  Model m;
+  m.fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {{1.0, 2.0}}));
+  m.fields.push_back(Field::fromValues("T", FieldLocation::Cell, 1, {{3.0}}));
+  m.fields.push_back(Field::fromValues("T", FieldLocation::Cell, 1, {{4.0}}));
+  m.makeFieldNamesUnique();
+  EXPECT_EQ(m.fields[0]->name(), "T");
+  EXPECT_EQ(m.fields[1]->name(), "T (cells)");
+  EXPECT_EQ(m.fields[2]->name(), "T (2)");
+  ASSERT_EQ(m.diagnostics.size(), 2u);
+  EXPECT_EQ(m.diagnostics[0].code, "field-renamed");
+}

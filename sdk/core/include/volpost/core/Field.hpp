@@ -53,6 +53,8 @@ class Field {
                                             SampleArray samples);
 
   const std::string& name() const { return name_; }
+  /// While a model is being built (a reader's or the registry's): another name.
+  void rename(std::string name) { name_ = std::move(name); }
   FieldLocation location() const { return location_; }
   FieldKind kind() const { return kindForComponents(components_); }
   int components() const { return components_; }
@@ -72,7 +74,17 @@ class Field {
   /// converted without keeping a double copy in the field.
   std::vector<double> valuesCopy(std::size_t step) const;
 
+  /// What the loaded steps of every field in the process hold, in bytes. A step is loaded
+  /// only while this and its own size stay within memoryBudget() (else std::runtime_error).
+  static std::size_t bytesHeldByAllFields();
+
+  ~Field();
+  Field(const Field&) = delete;
+  Field& operator=(const Field&) = delete;
+
  private:
+  void hold(std::size_t bytes) const;
+
   std::string name_;
   FieldLocation location_;
   int components_;
@@ -83,6 +95,7 @@ class Field {
   mutable std::mutex mutex_;
   mutable std::vector<std::unique_ptr<std::vector<double>>> cache_;
   mutable std::vector<std::unique_ptr<SampleArray>> sampleCache_;
+  mutable std::size_t heldBytes_ = 0;  ///< this field's share of bytesHeldByAllFields()
 };
 
 }  // namespace volpost

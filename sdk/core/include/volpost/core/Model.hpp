@@ -49,6 +49,10 @@ class Model {
   Bounds bounds() const;
 
   const Field* findField(const std::string& name) const;
+  /// Gives fields that share a name names of their own ("T" per node and per cell: the
+  /// second becomes "T (cells)"; else "T (2)"), saying so in an info diagnostic: a
+  /// quantity named in a state file or on the command line must mean one field.
+  void makeFieldNamesUnique();
 
   Model() = default;
   Model(const Model& other);
