@@ -13,7 +13,9 @@
 
 #include <QCommandLineParser>
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace volpost::app {
@@ -106,25 +108,36 @@ int runProbe(const QStringList& args) {
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);
-    std::vector<ProbeResult> results;
-    std::size_t outside = 0;
+    // Probed and written a chunk at a time: a result holds every quantity at its point, so a
+    // million points kept together took gigabytes.
+    std::optional<AtomicFile> file;
+    if (!csvPath.empty()) file.emplace(csvPath);
+    const auto put = [&](const std::string& text) {
+      if (file) file->write(text);
+      else std::fwrite(text.data(), 1, text.size(), stdout);
+    };
+    if (parser.isSet(csv)) put(probeTableHeader(keys));
+    std::size_t outside = 0, done = 0;
     Progress progress = terminalProgress("probing");
-    for (const glm::dvec3& p : points) {
-      results.push_back(probeAt(*session, p, *stepIndex));
-      outside += !results.back().inside();
-      if (points.size() > 1000 && results.size() % 1000 == 0) progress.report(double(results.size()) / points.size());
+    constexpr std::size_t kChunk = 4096;
+    std::vector<ProbeResult> results;
+    for (std::size_t first = 0; first < points.size(); first += kChunk) {
+      results.clear();
+      for (std::size_t i = first; i < std::min(points.size(), first + kChunk); ++i) {
+        results.push_back(probeAt(*session, points[i], *stepIndex));
+        outside += !results.back().inside();
+      }
+      done += results.size();
+      if (parser.isSet(csv)) put(probeTableRows(results, keys));
+      else
+        for (const ProbeResult& r : results) printResult(r, keys);
+      if (points.size() > kChunk) progress.report(double(done) / double(points.size()));
     }
-    if (parser.isSet(csv)) {
-      const std::string table = probeTable(results, keys);
-      if (csvPath.empty()) std::fwrite(table.data(), 1, table.size(), stdout);
-      else writeFileAtomically(csvPath, table);
-    } else {
-      for (const ProbeResult& r : results) printResult(r, keys);
-    }
+    if (file) file->commit();
     if (!csvPath.empty())
-      std::printf("%s: %zu point%s, %zu quantit%s\n", csvPath.c_str(), results.size(), results.size() == 1 ? "" : "s",
-                  keys.size(), keys.size() == 1 ? "y" : "ies");
-    if (outside) std::fprintf(stderr, "volpost: %zu of %zu points are outside the mesh\n", outside, results.size());
+      std::printf("%s: %zu point%s, %zu quantit%s\n", csvPath.c_str(), done, done == 1 ? "" : "s", keys.size(),
+                  keys.size() == 1 ? "y" : "ies");
+    if (outside) std::fprintf(stderr, "volpost: %zu of %zu points are outside the mesh\n", outside, done);
     return outside == 0 ? 0 : 1;
   });
 }

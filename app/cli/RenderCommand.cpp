@@ -21,7 +21,9 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <cstdio>
 
@@ -269,6 +271,18 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
                      "and values are used: leave them out");
 }
 
+// The reference renderer draws the volume alone (with the legend and markers over it):
+// layers of the state drawn with GL are refused, from the command line or a state file.
+void refuseWhatTheReferenceCannotDraw(const SceneState& state) {
+  const bool slices = std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
+  if (slices)
+    throw UsageError("grid slices (--slice, or \"gridSlices\" in a state file) are not drawn by the reference renderer, "
+                     "which draws the volume alone: choose texture-raymarch, texture-slices or cpu");
+  if (state.streamlines.shown)
+    throw UsageError("streamlines (--streamlines, or \"streamlines\" in a state file) are not drawn by the reference "
+                     "renderer, which draws the volume alone: choose cpu, raycast or vicp");
+}
+
 // --eye, --target, --up, --view-angle: each replaces that part of the camera so far (the
 // state file's, --camera's or the default view).
 void applyExplicitCamera(const QCommandLineParser& p, const Options& o, Camera& camera) {
@@ -472,8 +486,13 @@ int runRender(const QStringList& args) {
     if (gpuVolume) {
       QStringList known = {"surface", "reference"};
       for (const RendererEntry& r : volumeRenderers(*plugins)) known << r.name;
-      if (!known.contains(rendererName))
-        throw UsageError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")).toStdString());
+      if (!known.contains(rendererName)) {
+        if (parser.isSet(o.renderer))
+          throw UsageError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")).toStdString());
+        throw UsageError(QString("%1: \"volume\": {\"renderer\": \"%2\"} names no volume renderer; the renderers are: %3")
+                             .arg(parser.value(o.state), rendererName, known.join(", "))
+                             .toStdString());
+      }
     }
     {
       Scene scene(volumeRendererFactory(*plugins));
@@ -493,6 +512,7 @@ int runRender(const QStringList& args) {
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
+      if (rendererName == "reference") refuseWhatTheReferenceCannotDraw(scene.state());
       if (rendererName != "surface" && !scene.view())
         throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
       if (rendererName == "cpu" && parser.isSet(o.samplingStep) && !session->model().grid)
@@ -511,9 +531,17 @@ int runRender(const QStringList& args) {
       };
       if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), draw);
       const SceneImage image = draw();
-      if (const auto lines = scene.streamlineResult(); lines && lines->outside)
-        std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
-                     lines->outside, lines->seeds);
+      if (const auto lines = scene.streamlineResult()) {
+        if (lines->outside)
+          std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",
+                       lines->outside, lines->seeds);
+        const auto spent = std::count_if(lines->lines.begin(), lines->lines.end(), [](const Streamline& l) {
+          return l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
+        });
+        if (spent)
+          std::fprintf(stderr, "volpost: note: %zu streamline%s %s\n", std::size_t(spent), spent == 1 ? "" : "s",
+                       describe(StreamlineStop::PointBudget));
+      }
       if (scene.deformation().shown)
         std::fprintf(stderr, "volpost: note: drawn deformed: %s x %.6g%s\n", scene.deformation().field.c_str(),
                      scene.deformationScale(),
@@ -527,11 +555,18 @@ int runRender(const QStringList& args) {
           std::fprintf(stderr, "volpost: note: probed point %zu (%.9g, %.9g, %.9g) lies outside the mesh\n", i + 1,
                        at.x, at.y, at.z);
       }
-      savePicture(image.picture, out);
-      if (parser.isSet(o.floatOut))
-        writeFloatImage(pathBytes(parser.value(o.floatOut)), image.width, image.height, image.volumeRgba,
-                        glm::dvec3(scene.background()));
-      if (parser.isSet(o.saveState)) scene.state().save(pathBytes(parser.value(o.saveState)));
+      // The picture, its float image and its state are written together: all or none.
+      std::vector<std::pair<std::string, std::string>> outputs{{pathBytes(out), pictureBytes(image.picture, out)}};
+      if (parser.isSet(o.floatOut)) {
+        const std::string floatPath = pathBytes(parser.value(o.floatOut));
+        outputs.emplace_back(floatPath, floatImageBytes(floatPath, image.width, image.height, image.volumeRgba,
+                                                        glm::dvec3(scene.background())));
+      }
+      if (parser.isSet(o.saveState)) {
+        const std::string statePath = pathBytes(parser.value(o.saveState));
+        outputs.emplace_back(statePath, scene.state().toJson(std::filesystem::absolute(statePath).parent_path().string()));
+      }
+      writeFilesTogether(outputs);
       std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));
       return 0;
     }

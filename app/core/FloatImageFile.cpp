@@ -56,14 +56,19 @@ std::string pfm(int width, int height, const std::vector<float>& rgba, const glm
 
 }  // namespace
 
-void writeFloatImage(const std::string& path, int width, int height, const std::vector<float>& rgba,
-                     const glm::dvec3& background) {
+std::string floatImageBytes(const std::string& path, int width, int height, const std::vector<float>& rgba,
+                            const glm::dvec3& background) {
   if (rgba.size() != std::size_t(width) * std::size_t(height) * 4)
     throw WriteError(path, "no float image to write (the picture has no volume)");
   const std::string ext = extensionOf(path);
-  if (ext == ".npy") writeFileAtomically(path, npy(width, height, rgba));
-  else if (ext == ".pfm") writeFileAtomically(path, pfm(width, height, rgba, background));
-  else throw WriteError(path, "float images are written as .npy (RGBA) or .pfm (RGB over the background), not '" + ext + "'");
+  if (ext == ".npy") return npy(width, height, rgba);
+  if (ext == ".pfm") return pfm(width, height, rgba, background);
+  throw WriteError(path, "float images are written as .npy (RGBA) or .pfm (RGB over the background), not '" + ext + "'");
+}
+
+void writeFloatImage(const std::string& path, int width, int height, const std::vector<float>& rgba,
+                     const glm::dvec3& background) {
+  writeFileAtomically(path, floatImageBytes(path, width, height, rgba, background));
 }
 
 }  // namespace volpost::app

@@ -16,5 +16,8 @@ namespace volpost::app {
 /// previous file stays intact on failure.
 void writeFloatImage(const std::string& path, int width, int height, const std::vector<float>& rgba,
                      const glm::dvec3& background);
+/// What writeFloatImage writes, as bytes.
+std::string floatImageBytes(const std::string& path, int width, int height, const std::vector<float>& rgba,
+                            const glm::dvec3& background);
 
 }  // namespace volpost::app

@@ -4,6 +4,8 @@
 #include <volpost/core/ResourceLimits.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace volpost::app {
@@ -113,6 +115,16 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
                                             byteSizeText(double(memoryBudget())) + ")");
   }
   view.range = rangeOf(view.values);
+  // Colors, transfer functions and legends divide by the range: a range whose width is
+  // beyond a double (values near -1.7e308 and 1.7e308) cannot be drawn.
+  if (!std::isfinite(view.range.max - view.range.min)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "the values of %s run from %g to %g: the width of that range is beyond a double, so no color "
+                  "scale can span it (such extremes are usually junk samples)",
+                  q.displayName().c_str(), view.range.min, view.range.max);
+    throw ReadError(model_->sourcePath, text);
+  }
   view.stepLabel = f.steps()[step].label;
   const std::lock_guard lock(rangesMutex_);
   stepRanges_[{q.key(), step}] = view.range;

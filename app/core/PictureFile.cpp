@@ -22,7 +22,7 @@ QByteArray pictureFormatOf(const QString& path) {
   return format;
 }
 
-void savePicture(const QImage& image, const QString& path) {
+std::string pictureBytes(const QImage& image, const QString& path) {
   QByteArray format;
   try {
     format = pictureFormatOf(path);
@@ -34,7 +34,11 @@ void savePicture(const QImage& image, const QString& path) {
   buffer.open(QIODevice::WriteOnly);
   if (!image.save(&buffer, format.constData()))
     throw WriteError(QFile::encodeName(path).toStdString(), "could not encode the picture as " + format.toStdString());
-  writeFileAtomically(QFile::encodeName(path).toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())));
+  return std::string(bytes.constData(), std::size_t(bytes.size()));
+}
+
+void savePicture(const QImage& image, const QString& path) {
+  writeFileAtomically(QFile::encodeName(path).toStdString(), pictureBytes(image, path));
 }
 
 }  // namespace volpost::app

@@ -33,11 +33,16 @@ std::string cell(const std::string& text, char separator) {
 
 }  // namespace
 
-std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator) {
+std::string probeTableHeader(const std::vector<std::string>& keys, char separator) {
   std::string out = "x";
   for (const char* column : {"y", "z", "element", "element_type", "node"}) out += separator + std::string(column);
   for (const std::string& key : keys) out += separator + cell(key, separator);
   out += '\n';
+  return out;
+}
+
+std::string probeTableRows(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator) {
+  std::string out;
   for (const ProbeResult& r : rows) {
     out += exactNumber(r.point.x) + separator + exactNumber(r.point.y) + separator + exactNumber(r.point.z);
     if (r.inside()) {
@@ -53,6 +58,10 @@ std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<s
     out += '\n';
   }
   return out;
+}
+
+std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator) {
+  return probeTableHeader(keys, separator) + probeTableRows(rows, keys, separator);
 }
 
 }  // namespace volpost::app

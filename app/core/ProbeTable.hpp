@@ -22,5 +22,9 @@ std::string exactNumber(double value);
 /// first: x, y, z, element, element_type, node (when the point is one), then `keys`.
 /// A point outside the mesh has empty element columns and "nan" values.
 std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator = ',');
+/// The same table in parts, for tables written as they are probed: its header line, and
+/// the lines of some rows.
+std::string probeTableHeader(const std::vector<std::string>& keys, char separator = ',');
+std::string probeTableRows(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator = ',');
 
 }  // namespace volpost::app

@@ -61,6 +61,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.modelPath = session_ ? session_->model().sourcePath : std::string();
   state_.readerOptions = session_ ? session_->readerOptions() : ReaderOptions{};
   state_.volume.shown = false;
+  state_.volume.samplingStep = 0.0;  // model units: the last model's step may not suit this one
   if (!session_ || !session_->model().grid) state_.volume.shading = false;  // lighting by the gradient is for grids
   changed_.mode = true;
   state_.volume.clipPlanes.clear();
@@ -303,8 +304,25 @@ std::vector<ClipPlane> Scene::gridSlicePlanes() const {
   return planes;
 }
 
-void Scene::setSamplingStep(double step) {
+// A step so short that a ray would take millions of samples would hold the picture for
+// hours: at most kMaxSamplesAcross along the model's diagonal.
+void Scene::checkSamplingStep(double step) const {
   if (!(step >= 0.0) || !std::isfinite(step)) throw std::invalid_argument("the sampling step must be >= 0 (0: automatic)");
+  if (step == 0.0 || !session_) return;
+  const Bounds b = session_->model().bounds();
+  const double across = b.valid ? b.diagonal() : 0.0;
+  if (across / step > kMaxSamplesAcross) {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "the sampling step %g (--sampling-step, or \"volume\": {\"samplingStep\"} in a state file) would take "
+                  "more than %.0f samples across the model (%g long): use at least %.3g, or 0 for the automatic step",
+                  step, kMaxSamplesAcross, across, across / kMaxSamplesAcross);
+    throw std::invalid_argument(text);
+  }
+}
+
+void Scene::setSamplingStep(double step) {
+  checkSamplingStep(step);
   state_.volume.samplingStep = step;
   changed_.mode = true;
 }
@@ -341,7 +359,15 @@ void Scene::applyState(const SceneState& s) {
   if (!session_) throw std::invalid_argument("no model is open to apply the state to");
   // Check everything before changing anything.
   std::optional<ScalarView> view;
-  if (!s.quantity.empty()) view = session_->evaluate(session_->findQuantity(s.quantity), s.step);
+  if (!s.quantity.empty()) {
+    const Quantity q = session_->findQuantity(s.quantity);
+    if (const std::size_t steps = session_->fieldOf(q).stepCount(); s.step >= steps)
+      throw std::invalid_argument("the state's result step (\"result\": {\"step\": " + std::to_string(s.step + 1) +
+                                  "}) does not exist: " + s.quantity + " has " + std::to_string(steps) + " step" +
+                                  (steps == 1 ? "" : "s"));
+    view = session_->evaluate(q, s.step);
+  }
+  checkSamplingStep(s.volume.samplingStep);
   (void)ColorMap::named(s.colorMap);
   if (s.volume.shown && !view) throw std::invalid_argument("the state shows a volume but names no result");
   if (s.volume.shown && !factory_(s.volume.renderer))

@@ -231,6 +231,9 @@ class Scene {
   void applyToStreamlines();
   void checkStreamlines(const StreamlineLayer& layer) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
+  void checkSamplingStep(double step) const;
+  /// The most samples a ray takes across the model's diagonal in the sampling mode.
+  static constexpr double kMaxSamplesAcross = 65536.0;
   bool streamlinesDrawn() const;
   std::vector<double> tetValues() const;
 

@@ -4,6 +4,8 @@
 #include "host/AtomicFile.hpp"
 #include "host/TextFile.hpp"
 
+#include <volpost/core/ParseJson.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -175,6 +177,7 @@ json jsonOf(const StreamlineLayer& l) {
           {"tolerance", l.settings.tolerance},
           {"maxSteps", l.settings.maxSteps},
           {"maxLength", l.settings.maxLength},
+          {"pointSpacing", l.settings.pointSpacing},
           {"stagnation", l.settings.stagnation},
           {"closedOrbits", l.settings.stopOnClosedOrbits},
           {"colorBy", l.colorBy},
@@ -223,6 +226,7 @@ StreamlineLayer streamlinesFrom(const Reader& r, const json& in) {
   number("maxSteps", steps, 1.0);
   l.settings.maxSteps = std::size_t(std::min(steps, 1e8));
   number("maxLength", l.settings.maxLength, 0.0);
+  number("pointSpacing", l.settings.pointSpacing, 0.0);
   number("stagnation", l.settings.stagnation, 0.0);
   flag("closedOrbits", l.settings.stopOnClosedOrbits);
   text("colorBy", l.colorBy);
@@ -304,14 +308,10 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
 }
 
 SceneState SceneState::fromJson(const std::string& text, const std::string& fileName) {
-  json in;
-  try {
-    in = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw std::runtime_error(fileName + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
-  }
+  const json in = parseJson(text, fileName + ": not valid JSON");
   const Reader r(fileName);
-  if (!in.is_object() || in.value("format", std::string()) != "volpost-state")
+  const auto format = in.is_object() ? in.find("format") : in.end();
+  if (!in.is_object() || format == in.end() || !format->is_string() || format->get<std::string>() != "volpost-state")
     throw std::runtime_error(fileName + ": not a volpost state file (no \"format\": \"volpost-state\")");
   const json* version = r.find(in, "version");
   if (!version || !version->is_number_integer()) r.fail("version", "must be an integer");

@@ -24,6 +24,27 @@ TEST(InfoCommand, PrintsCountsFieldsAndRanges) {
     EXPECT_NE(r.output.find(text), std::string::npos) << "missing '" << text << "' in\n" << r.output;
 }
 
+TEST(InfoCommand, PrintsWhereAGridLiesAtFullPrecision) {
+  // A survey's UTM coordinates need 8 and more digits: printed to 6, the northing of a grid
+  // at 6073556.25 read 6.07356e+06, 10 m off.
+  std::ifstream in(dataFile("formats/image_ascii.vti"));
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::string from = "Origin=\"10 -2 0.5\"";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "Origin=\"605835.123456789 6073556.25 -0.001\"");
+  const auto path = std::filesystem::path(::testing::TempDir()) / "volpost_utm.vti";
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  const auto r = runVolpost("info " + path.string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  // The grid's first point is the origin moved to the extent's start (1 0 2) along the
+  // rotated axes: every digit of it, and of the bounds.
+  for (const char* expected : {"origin       (605835.6011250335, 6073556.397760103, 3.999)",
+                               "i            step (0.477668244562803, 0.14776010333066977, 0)",
+                               "bounds:   x [605835.3794848785, 605837.5117980117]  y [6073556.397760103, "})
+    EXPECT_NE(r.output.find(expected), std::string::npos) << "missing '" << expected << "' in\n" << r.output;
+  EXPECT_EQ(r.output.find("e+06"), std::string::npos) << r.output;
+}
+
 // The bundled synthetic cube with its inline numbers moved from byte 189 to byte 17 of
 // every trace header (120 traces of 240 + 40 x 2 bytes after the 3600 bytes of headers).
 std::string segyWithMovedInlines() {
@@ -131,6 +152,15 @@ TEST(RenderCommand, GridSlicesOfASurvey) {
       << outside.output;
   EXPECT_EQ(runVolpost("render " + cube + common + "--slice depth=3 -o " + plain).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + dataFile("formats/golden.frd") + " --field T --slice i=1 -o " + plain).exitCode, 2);
+  // The reference renderer draws the volume alone: a slice it would leave out is refused
+  // (it exited 0 with the slice missing), from the option and from a state file.
+  const auto before = QImage(QString::fromStdString(plain));
+  const auto reference = runVolpost("render " + cube + common + "--renderer reference --slice inline=1004 -o " + plain);
+  EXPECT_EQ(reference.exitCode, 2) << reference.output;
+  EXPECT_NE(reference.output.find("grid slices"), std::string::npos) << reference.output;
+  const auto referenceState = runVolpost("render --state " + state + " --renderer reference -o " + plain);
+  EXPECT_EQ(referenceState.exitCode, 2) << referenceState.output;
+  EXPECT_EQ(QImage(QString::fromStdString(plain)), before) << "the refused pictures left the file as it was";
 }
 
 TEST(RenderCommand, TwoDimensionalTransferFunctionOfASurvey) {

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <sstream>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace volpost;
 namespace fs = std::filesystem;
@@ -90,4 +92,44 @@ TEST_F(AtomicFileTest, LinksPlantedNextToTheTargetAreNotFollowed) {
   writeFileAtomically(out.string(), "output");
   EXPECT_EQ(contents(victim), "precious");
   EXPECT_EQ(contents(out), "output");
+}
+
+TEST_F(AtomicFileTest, AReplacedFileKeepsItsPermissions) {
+  const fs::path out = dir_ / "private.png";
+  writeFileAtomically(out.string(), "first");
+  fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write);
+  writeFileAtomically(out.string(), "second");  // it became 0644 (umask's mode for a new file)
+  EXPECT_EQ(fs::status(out).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(contents(out), "second");
+}
+
+TEST_F(AtomicFileTest, ALinkAtTheTargetIsWrittenThrough) {
+  // As the shell's '>' and cp do: the link stays and the file it points to is replaced.
+  fs::create_directories(dir_ / "real");
+  const fs::path file = dir_ / "real" / "picture.png", link = dir_ / "picture.png";
+  writeFileAtomically(file.string(), "old");
+  fs::create_symlink(file, link);
+  writeFileAtomically(link.string(), "new");
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(contents(file), "new");
+  EXPECT_EQ(entries(), 2u) << "the link and the folder, no temporary";
+}
+
+TEST_F(AtomicFileTest, AnInterruptedWriteLeavesNoTemporary) {
+  // A video export killed with Ctrl+C or kill left its hidden ".name.XXXXXX" beside the target.
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    const fs::path out = dir_ / "movie.mp4";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      AtomicFile file(out.string());
+      file.write("half a video");
+      std::raise(signal);
+      ::_exit(0);  // not reached: the signal ends the process
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal) << "the signal still ends the process";
+    EXPECT_EQ(entries(), 0u) << "signal " << signal << " left a temporary";
+  }
 }
