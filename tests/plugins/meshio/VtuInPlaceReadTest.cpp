@@ -128,6 +128,8 @@ TEST(VtuInPlaceRead, EveryVtkXmlFileOfTheSuiteReadsTheSameFromItsPlaceAsWhole) {
   for (const auto& entry : std::filesystem::recursive_directory_iterator(VOLPOST_TEST_DATA)) {
     const std::string ext = entry.path().extension().string();
     if (ext != ".vtu" && ext != ".vti") continue;
+    // The hostile files that claim gigabytes are for the memory budget's tests, not this one.
+    if (entry.path().filename().string().rfind("mem_", 0) == 0) continue;
     const std::string path = entry.path().string();
     const bool image = ext == ".vti";
     const meshio::VtuReader wholeVtu, inPlaceVtu(0);
