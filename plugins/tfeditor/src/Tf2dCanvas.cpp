@@ -29,6 +29,7 @@ void Tf2dCanvas::setHistogram(const JointHistogram& h) {
   histogramImage_ = QImage(std::max(h.valueBins, 1), std::max(h.gradientBins, 1), QImage::Format_RGB32);
   histogramImage_.fill(Qt::black);
   const double top = std::log1p(double(h.largest()));
+  hasHistogram_ = h.largest() > 0;
   for (int g = 0; g < h.gradientBins; ++g)
     for (int v = 0; v < h.valueBins; ++v) {
       const int gray = top > 0.0 ? int(235.0 * std::log1p(double(h.count(v, g))) / top) : 0;

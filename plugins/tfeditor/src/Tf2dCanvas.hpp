@@ -25,6 +25,8 @@ class Tf2dCanvas : public QWidget {
 
   /// The histogram behind the widgets; its ranges are the canvas's axes.
   void setHistogram(const JointHistogram& histogram);
+  /// Whether a histogram with any count is behind the widgets.
+  bool hasHistogram() const { return hasHistogram_; }
   double valueLow() const { return valueLow_; }
   double valueHigh() const { return valueHigh_; }
   double gradientHigh() const { return gradientHigh_; }
@@ -71,6 +73,7 @@ class Tf2dCanvas : public QWidget {
   int widgetAt(const QPointF& p) const;
 
   QImage histogramImage_;
+  bool hasHistogram_ = false;
   double valueLow_ = 0.0, valueHigh_ = 1.0, gradientHigh_ = 1.0;
   std::vector<TfWidget2D> widgets_;
   int selected_ = -1;

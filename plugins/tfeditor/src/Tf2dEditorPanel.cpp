@@ -128,7 +128,11 @@ void Tf2dEditorPanel::hostChanged() {
   const bool grid = model && model->grid && quantity;
   setEnabled(grid);
   status_->setText(grid ? QString() : "For regular grids (SEG-Y, image data) with a result shown.");
-  if (!grid) return;
+  if (!grid) {  // no cube's histogram stays behind another model
+    if (!histogramKey_.empty()) canvas_->setHistogram(JointHistogram{});
+    histogramKey_.clear();
+    return;
+  }
   const std::string key = model->sourcePath + "|" + quantity->key() + "|" + std::to_string(host_.activeStep());
   if (key != histogramKey_) {  // the values are copied only for a new result or step
     histogramKey_ = key;

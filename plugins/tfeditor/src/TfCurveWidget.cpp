@@ -71,8 +71,7 @@ void TfCurveWidget::resetView() {
   for (const auto& p : model_.points()) lo = std::min(lo, p.value), hi = std::max(hi, p.value);
   if (!std::isfinite(lo)) lo = 0.0, hi = 1.0;
   if (!(hi > lo)) hi = lo + std::max(1.0, std::abs(lo)) * 1e-3;
-  const double pad = 0.02 * (hi - lo);
-  setView(lo - pad, hi + pad);
+  setView(lo, hi);  // the data's own range, as the legend shows it (no padding)
 }
 
 void TfCurveWidget::rebuildHistogram() {
@@ -200,7 +199,13 @@ void TfCurveWidget::paintEvent(QPaintEvent*) {
   painter.setPen(palette().text().color());
   painter.setBrush(Qt::NoBrush);
   painter.drawRect(bar);
+  // The end labels in black or white, whichever stands out from the bar's color under them.
+  const auto readableOn = [](const QColor& c) {
+    return 0.299 * c.redF() + 0.587 * c.greenF() + 0.114 * c.blueF() < 0.5 ? QColor(Qt::white) : QColor(Qt::black);
+  };
+  painter.setPen(readableOn(colorAt(viewLo_)));
   painter.drawText(bar.adjusted(3, 0, -3, 0), Qt::AlignLeft | Qt::AlignVCenter, QString::number(viewLo_, 'g', 4));
+  painter.setPen(readableOn(colorAt(viewHi_)));
   painter.drawText(bar.adjusted(3, 0, -3, 0), Qt::AlignRight | Qt::AlignVCenter, QString::number(viewHi_, 'g', 4));
   if (hasFocus()) {
     painter.setPen(QPen(palette().highlight().color(), 1, Qt::DashLine));

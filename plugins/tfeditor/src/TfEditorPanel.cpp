@@ -46,19 +46,6 @@ bool readText(const QString& path, QString& text, QString* error) {
   return true;
 }
 
-// The table as a picture: s_front to the right, s_back up; where a segment crosses a
-// control point the texel shows which one (gray levels), black where it crosses none.
-QImage isoImage(const optics::IsoDetectionTable& t) {
-  QImage image(t.resolution, t.resolution, QImage::Format_RGB32);
-  for (int back = 0; back < t.resolution; ++back)
-    for (int front = 0; front < t.resolution; ++front) {
-      const float s = t.values[std::size_t(back * t.resolution + front) * 2];
-      const int g = s < 0.0f ? 0 : 60 + int(195.0f * s);
-      image.setPixel(front, t.resolution - 1 - back, qRgb(g, g, s < 0.0f ? 0 : 255 - g / 2));
-    }
-  return image;
-}
-
 }  // namespace
 
 TfEditorPanel::TfEditorPanel(PanelHost& host, QWidget* parent) : QWidget(parent), host_(host) {
@@ -76,7 +63,6 @@ TfEditorPanel::TfEditorPanel(PanelHost& host, QWidget* parent) : QWidget(parent)
   connect(&isoWatcher_, &QFutureWatcherBase::finished, this, [this] {
     if (!isoFuture_.isFinished()) return;  // a newer build replaced the one that finished
     isoTable_ = isoFuture_.result();
-    if (isoTable_) isoPreview_->setPixmap(QPixmap::fromImage(isoImage(*isoTable_).scaled(96, 96)));
     if (isoPending_) {
       const TransferFunction next = *isoPending_;
       isoPending_.reset();
@@ -100,11 +86,8 @@ void TfEditorPanel::buildUi() {
   presets_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
   presets_->setToolTip("Colors of a preset on the current opacity curve");
   presets_->addItem("Colors...", QString());
-  presets_->addItem("Diverging blue-white-red", "cool-warm");
-  presets_->addItem("Viridis", "viridis");
-  presets_->addItem("Rainbow", "rainbow");
-  presets_->addItem("Grayscale", "grayscale");
-  presets_->addItem("Seismic red-white-blue", "seismic");
+  for (const std::string& name : ColorMap::names())  // named as the toolbar names them
+    presets_->addItem(QString::fromStdString(ColorMap::label(name)), QString::fromStdString(name));
   connect(presets_, &QComboBox::activated, this, [this](int index) {
     const QString name = presets_->itemData(index).toString();
     if (!name.isEmpty()) applyPreset(name);
@@ -218,9 +201,10 @@ void TfEditorPanel::buildUi() {
   auto* options = new QHBoxLayout;
   logBox_ = new QCheckBox("Log histogram", this);
   logBox_->setObjectName("tfLogHistogram");
-  fineBox_ = new QCheckBox("Fine low opacity", this);
+  fineBox_ = new QCheckBox("Stretch small opacities", this);
   fineBox_->setObjectName("tfFineAxis");
-  fineBox_->setToolTip("Cube-root opacity axis: most useful opacities are small");
+  fineBox_->setToolTip("The opacity axis on a cube-root scale: small opacities, the ones most volumes need, get "
+                       "most of the height");
   logBox_->setChecked(settings().value("tfeditor/logHistogram", true).toBool());
   fineBox_->setChecked(settings().value("tfeditor/fineAxis", true).toBool());
   curve_->setLogHistogram(logBox_->isChecked());
@@ -243,11 +227,6 @@ void TfEditorPanel::buildUi() {
   status_->setObjectName("tfStatus");
   status_->setWordWrap(true);
   bottom->addWidget(status_, 1);
-  isoPreview_ = new QLabel(this);
-  isoPreview_->setObjectName("tfIsoPreview");
-  isoPreview_->setFixedSize(96, 96);
-  isoPreview_->setToolTip("Iso-detection table: for a ray segment from s_front (right) to s_back (up), the first control point it crosses");
-  bottom->addWidget(isoPreview_);
   layout->addLayout(bottom);
   setToolTip("Click: add a point · drag: move (Shift snaps to data values) · right click / Delete: remove · "
              "wheel: zoom · middle or Alt+drag: window/level · arrows, PageUp/PageDown, Ctrl+Z");
@@ -381,11 +360,10 @@ void TfEditorPanel::showSelection() {
                      "tab); this one applies again when it is switched off there.</span>");
     return;
   }
-  status_->setText(QString("%1 points · %2 selected · iso-surface lookup %3 ms · volume update %4 ms")
-                       .arg(model_.points().size())
-                       .arg(sel.size())
-                       .arg(isoMs_, 0, 'f', 1)
-                       .arg(host_.lastTransferFunctionMs(), 0, 'f', 1));
+  status_->setText(QString("%1 points, %2 selected").arg(model_.points().size()).arg(sel.size()));
+  status_->setToolTip(QString("The last change took %1 ms to prepare and %2 ms for the renderer to take up")
+                          .arg(isoMs_, 0, 'f', 1)
+                          .arg(host_.lastTransferFunctionMs(), 0, 'f', 1));
 }
 
 void TfEditorPanel::applyNumericEntry() {

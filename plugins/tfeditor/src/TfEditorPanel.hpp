@@ -76,7 +76,6 @@ class TfEditorPanel : public QWidget {
   QCheckBox* logBox_ = nullptr;
   QCheckBox* fineBox_ = nullptr;
   QLabel* status_ = nullptr;
-  QLabel* isoPreview_ = nullptr;
   QTimer* sendTimer_ = nullptr;
   std::string quantityKey_;
   /// The host's function as this panel last loaded or sent it: a different one in the host

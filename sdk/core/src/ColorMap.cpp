@@ -30,6 +30,15 @@ ColorMap::ColorMap(std::string name, std::vector<Point> points)
 
 std::vector<std::string> ColorMap::names() { return {"cool-warm", "viridis", "rainbow", "grayscale", "seismic"}; }
 
+std::string ColorMap::label(const std::string& name) {
+  if (name == "cool-warm") return "Cool to warm (diverging)";
+  if (name == "viridis") return "Viridis";
+  if (name == "rainbow") return "Rainbow";
+  if (name == "grayscale") return "Grayscale";
+  if (name == "seismic") return "Seismic (blue-white-red)";
+  return name;
+}
+
 ColorMap ColorMap::named(const std::string& name) {
   // Moreland's diverging cool-warm and a viridis approximation, sampled at 9 points.
   if (name == "cool-warm")

@@ -172,9 +172,12 @@ class Tf2dEditorTest : public QObject {
   }
 
   void aHostWithoutAGridDisablesTheEditor() {
+    QVERIFY(panel_->canvas().hasHistogram());
     host_->data.grid.reset();
     panel_->hostChanged();
     QVERIFY(!panel_->isEnabled());
+    // The last cube's histogram goes with it (it stayed behind a mesh).
+    QVERIFY(!panel_->canvas().hasHistogram());
   }
 };
 

@@ -20,6 +20,8 @@ class ColorMap {
   /// Built-in maps: "cool-warm" (diverging, the default), "viridis", "rainbow", "grayscale".
   static ColorMap named(const std::string& name);
   static std::vector<std::string> names();
+  /// What a menu shows for a name of names(), the same everywhere: "Cool to warm (diverging)".
+  static std::string label(const std::string& name);
 
   const std::string& name() const { return name_; }
   glm::dvec3 at(double t) const;  ///< t clamped to [0, 1]
