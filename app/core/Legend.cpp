@@ -76,6 +76,27 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     painter.restore();
     return;
   }
+  const auto footer = [&](int y) {
+    // The data's own extremes, whatever range the colors span.
+    const double lo = c.dataMin.value_or(c.min), hi = c.dataMax.value_or(c.max);
+    const bool differs = c.dataMin && c.dataMax && (lo != c.min || hi != c.max);
+    const QString rangeText = QString("%1min %2  max %3").arg(differs ? "data " : "").arg(lo, 0, 'g', 5).arg(hi, 0, 'g', 5);
+    painter.drawText(QRect(area.left(), y, area.right() - 4 - area.left(), fm.height()), Qt::AlignRight | Qt::AlignVCenter,
+                     rangeText);
+    if (c.noValueCount)
+      painter.drawText(QRect(area.left(), y + fm.height(), area.right() - 4 - area.left(), fm.height()),
+                       Qt::AlignRight | Qt::AlignVCenter, QString("%1 without value (gray)").arg(c.noValueCount));
+  };
+  if (!c.noBarNote.isEmpty()) {
+    const QRect titleRect(area.left(), area.top() + 4, area.right() - 4 - area.left(), fm.height());
+    painter.setPen(QColor(40, 40, 40));
+    painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
+    painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
+    painter.drawText(titleRect.translated(0, 2 * fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.noBarNote);
+    footer(area.top() + 4 + 3 * fm.height());
+    painter.restore();
+    return;
+  }
   const auto ticks = niceTicks(c.min, c.max);
   const int labelWidth = labelWidthOf(fm, ticks);
   const int barRight = area.right() - labelWidth - 12;
@@ -100,12 +121,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   const QRect titleRect(area.left(), area.top() + 4, textRight - area.left(), fm.height());
   painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
   painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
-  const QString rangeText = QString("min %1  max %2").arg(c.min, 0, 'g', 5).arg(c.max, 0, 'g', 5);
-  painter.drawText(QRect(area.left(), bar.bottom() + 4, textRight - area.left(), fm.height()),
-                   Qt::AlignRight | Qt::AlignVCenter, rangeText);
-  if (c.noValueCount)
-    painter.drawText(QRect(area.left(), bar.bottom() + 4 + fm.height(), textRight - area.left(), fm.height()),
-                     Qt::AlignRight | Qt::AlignVCenter, QString("%1 without value (gray)").arg(c.noValueCount));
+  footer(bar.bottom() + 4);
   painter.restore();
 }
 

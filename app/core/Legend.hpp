@@ -7,6 +7,8 @@
 #include <QRect>
 #include <QString>
 
+#include <optional>
+
 class QPainter;
 
 namespace volpost::app {
@@ -14,8 +16,13 @@ namespace volpost::app {
 struct LegendContent {
   QString title;      ///< quantity, e.g. "S von Mises"
   QString subtitle;   ///< step label and location, e.g. "step 1 · per node"
-  double min = 0.0, max = 1.0;
+  double min = 0.0, max = 1.0;   ///< the bar's range (a typed range, or the data's)
   std::size_t noValueCount = 0;  ///< NaN values, drawn in the no-value color
+  /// The data's own extremes, named in the footer whatever the bar's range.
+  std::optional<double> dataMin, dataMax;
+  /// No color bar (a 2D transfer function's colors depend on more than the value): this
+  /// line says where the colors come from instead.
+  QString noBarNote;
 };
 
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.

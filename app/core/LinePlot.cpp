@@ -36,12 +36,18 @@ void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& s) {
   const auto xTicks = niceTicks(0.0, length, 6);
   int labelWidth = 0;
   for (double t : yTicks) labelWidth = std::max(labelWidth, fm.horizontalAdvance(tickText(t)));
-  const int keyHeight = fm.height() * int((s.keys.size() + 2) / 3);
-  const QRect plot = area.adjusted(labelWidth + 14, fm.height() + keyHeight + 8, -16, -2 * fm.height() - 10);
-  if (plot.width() < 20 || plot.height() < 20) {
-    painter.restore();
-    return;
-  }
+  // The key: as many columns (up to 3) as its longest name leaves room for; names are cut
+  // with an ellipsis only when one column cannot hold them.
+  int nameWidth = 0;
+  for (const std::string& name : s.names) nameWidth = std::max(nameWidth, fm.horizontalAdvance(QString::fromStdString(name)));
+  const int keyEntry = nameWidth + 40;
+  const int columns = std::clamp(area.width() / std::max(keyEntry, 1), 1, std::max(1, std::min(3, int(s.keys.size()))));
+  const int keyRows = int((s.keys.size() + std::size_t(columns) - 1) / std::size_t(columns));
+  const int keyHeight = fm.height() * keyRows;
+  // Room at the right for half of the last x label, at the left for the y axis's title.
+  const int rightMargin = std::max(16, fm.horizontalAdvance(tickText(xTicks.empty() ? length : xTicks.back())) / 2 + 6);
+  const QRect plot = area.adjusted(labelWidth + 14 + fm.height(), fm.height() + keyHeight + 8, -rightMargin,
+                                   -2 * fm.height() - 10);
   const auto px = [&](double a) { return plot.left() + a / length * plot.width(); };
   const auto py = [&](double v) { return plot.bottom() - (v - lo) / (hi - lo) * plot.height(); };
   painter.setPen(QPen(QColor(225, 225, 225), 1.0));
@@ -55,7 +61,16 @@ void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& s) {
   for (double t : xTicks)
     painter.drawText(QRectF(px(t) - 50, plot.bottom() + 4, 100, fm.height()), Qt::AlignHCenter | Qt::AlignTop, tickText(t));
   painter.drawText(QRectF(plot.left(), plot.bottom() + 6 + fm.height(), plot.width(), fm.height()), Qt::AlignHCenter,
-                   "distance along the line");
+                   "distance along the line (model units)");
+  {  // the y axis's title: the quantity, or "value" for several
+    painter.save();
+    painter.translate(area.left() + 2, plot.center().y());
+    painter.rotate(-90.0);
+    const QString title = s.names.size() == 1 ? QString::fromStdString(s.names.front()) : QString("value");
+    painter.drawText(QRectF(-plot.height() / 2.0, 0, plot.height(), fm.height()), Qt::AlignHCenter | Qt::AlignTop,
+                     fm.elidedText(title, Qt::ElideRight, plot.height()));
+    painter.restore();
+  }
   // One curve per quantity; a sample off the mesh breaks it.
   for (std::size_t k = 0; k < s.keys.size(); ++k) {
     const QColor color = kCurveColors[k % std::size(kCurveColors)];
@@ -74,12 +89,15 @@ void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& s) {
     }
     painter.setPen(QPen(color, std::max(1.5, font.pixelSize() / 7.0)));
     painter.drawPath(path);
-    const int column = int(k % 3), row = int(k / 3);
-    const QRectF key(area.left() + 8 + column * area.width() / 3.0, area.top() + 4 + row * fm.height(),
-                     area.width() / 3.0 - 8, fm.height());
+    const int column = int(k % std::size_t(columns)), row = int(k / std::size_t(columns));
+    const double columnWidth = double(area.width() - 8) / columns;
+    const QRectF key(area.left() + 8 + column * columnWidth, area.top() + 4 + row * fm.height(), columnWidth - 8,
+                     fm.height());
     painter.drawLine(QPointF(key.left(), key.center().y()), QPointF(key.left() + 18, key.center().y()));
     painter.setPen(QColor(30, 30, 30));
-    painter.drawText(key.adjusted(24, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, QString::fromStdString(s.names[k]));
+    const QRectF text = key.adjusted(24, 0, 0, 0);
+    painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter,
+                     fm.elidedText(QString::fromStdString(s.names[k]), Qt::ElideRight, int(text.width())));
   }
   painter.restore();
 }

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "ProbeTable.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 
 namespace volpost::app {
@@ -18,6 +21,21 @@ std::string exactNumber(double value) {
   char text[32];
   const auto end = std::to_chars(text, text + sizeof text, value).ptr;
   return std::string(text, end);
+}
+
+namespace {
+std::atomic<int> g_displayDigits{6};
+}  // namespace
+
+int displayDigits() { return g_displayDigits.load(); }
+void setDisplayDigits(int digits) { g_displayDigits.store(std::clamp(digits, 2, 17)); }
+
+std::string displayNumber(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", displayDigits(), value);
+  return text;
 }
 
 namespace {

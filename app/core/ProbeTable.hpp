@@ -17,6 +17,11 @@ std::vector<std::string> allQuantityKeys(const ModelSession& session);
 
 /// A double as the shortest text that reads back to it; "nan", "inf", "-inf" as such.
 std::string exactNumber(double value);
+/// A double as the screen shows it: displayDigits() significant digits (6 unless set; the
+/// window's setting), "nan", "inf", "-inf" as such.
+std::string displayNumber(double value);
+int displayDigits();
+void setDisplayDigits(int digits);  ///< 2 .. 17
 
 /// Comma-separated (or another separator, e.g. a tab for the clipboard), a header line
 /// first: x, y, z, element, element_type, node (when the point is one), then `keys`.

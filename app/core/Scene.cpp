@@ -67,7 +67,10 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.clipPlanes.clear();
   state_.volume.clipBox.reset();
   state_.volume.isoSurfaces.clear();
+  state_.volume.isoQuantity.clear();
   state_.gridSlices = {};
+  state_.plotLine.reset();
+  state_.surfaceOpacity = 1.0;  // a see-through surface chosen for another model's lines would stay a ghost
   state_.surfaceShown = true;  // hidden for another model's slices, it would leave this one's view empty
   state_.volume.transferFunction.reset();
   state_.volume.transferFunction2D.reset();  // its values and gradients were the last model's
@@ -368,6 +371,10 @@ void Scene::applyState(const SceneState& s) {
     view = session_->evaluate(q, s.step);
   }
   checkSamplingStep(s.volume.samplingStep);
+  if (!s.volume.isoQuantity.empty() &&
+      session_->fieldOf(session_->findQuantity(s.volume.isoQuantity)).location() != FieldLocation::Node)
+    throw std::invalid_argument("the state's iso-surfaces are of " + s.volume.isoQuantity +
+                                ", which is given per element; iso-surfaces need values at the nodes");
   (void)ColorMap::named(s.colorMap);
   if (s.volume.shown && !view) throw std::invalid_argument("the state shows a volume but names no result");
   if (s.volume.shown && !factory_(s.volume.renderer))
@@ -516,31 +523,52 @@ TransferFunction Scene::transferFunction() const {
 }
 
 std::optional<LegendPicture> Scene::legend() const {
-  if (!state_.legend) return std::nullopt;
-  // Streamlines over a hidden or see-through surface: their colors are what the eye reads.
-  if (!state_.volume.shown && streamlinesDrawn() && (!state_.surfaceShown || state_.surfaceOpacity < 1.0 || !view_)) {
+  auto all = legends();
+  if (all.empty()) return std::nullopt;
+  return std::move(all.front());
+}
+
+std::vector<LegendPicture> Scene::legends() const {
+  std::vector<LegendPicture> out;
+  if (!state_.legend) return out;
+  if (view_) {
+    LegendContent content;
+    content.title = QString::fromStdString(view_->quantity.displayName());
+    content.subtitle = stepAndLocation(*view_);
+    content.noValueCount = view_->range.nanCount;
+    if (view_->range.valid()) content.dataMin = view_->range.min, content.dataMax = view_->range.max;
+    if (state_.volume.shown && state_.volume.transferFunction2D) {
+      // A 2D transfer function's colors depend on the gradient too: no bar over the values
+      // could say what a color means; the legend says where they come from.
+      content.subtitle = "volume  " + content.subtitle.trimmed();
+      content.noBarNote = "colors: 2D transfer function (value and gradient)";
+      out.push_back({ColorMap::named(state_.colorMap), content});
+    } else if (state_.volume.shown) {
+      const TransferFunction tf = transferFunction();
+      content.subtitle = "volume  " + content.subtitle.trimmed();
+      content.min = tf.minValue();
+      content.max = tf.maxValue();
+      out.push_back({colorMapOf(tf), content});
+    } else {
+      const DisplayRange range = displayRange();
+      content.min = range.min;
+      content.max = range.max;
+      out.push_back({ColorMap::named(state_.colorMap), content});
+    }
+  }
+  // Streamlines have a key of their own, beside the result's (it replaced it before).
+  if (!state_.volume.shown && streamlinesDrawn()) {
     const StreamlineResult& r = *streamlineResult_;
-    LegendContent lines{QString::fromStdString(r.valueName),
-                        QString("%1 streamlines").arg(r.lines.size()), r.min, r.max, 0};
-    return LegendPicture{ColorMap::named(state_.colorMap), lines};
+    LegendContent lines;
+    lines.title = QString::fromStdString(r.valueName);
+    lines.subtitle = QString("%1 streamlines").arg(r.lines.size());
+    lines.min = r.min;
+    lines.max = r.max;
+    lines.dataMin = r.min;
+    lines.dataMax = r.max;
+    out.push_back({ColorMap::named(state_.colorMap), lines});
   }
-  if (!view_) return std::nullopt;
-  LegendContent content{QString::fromStdString(view_->quantity.displayName()), stepAndLocation(*view_), 0.0, 1.0,
-                        view_->range.nanCount};
-  // A 2D transfer function's colors depend on the gradient too: no bar over the values
-  // could say what a color means.
-  if (state_.volume.shown && state_.volume.transferFunction2D) return std::nullopt;
-  if (state_.volume.shown) {
-    const TransferFunction tf = transferFunction();
-    content.subtitle = "volume  " + content.subtitle.trimmed();
-    content.min = tf.minValue();
-    content.max = tf.maxValue();
-    return LegendPicture{colorMapOf(tf), content};
-  }
-  const DisplayRange range = displayRange();
-  content.min = range.min;
-  content.max = range.max;
-  return LegendPicture{ColorMap::named(state_.colorMap), content};
+  return out;
 }
 
 Camera Scene::pictureCamera(double width, double height) const {
@@ -554,6 +582,47 @@ Camera Scene::pictureCamera(double width, double height) const {
 std::vector<double> Scene::tetValues() const { return session_->tetValues(*view_); }
 
 // ---- streamlines ----
+
+// The values the iso-surfaces are of: the shown result's, or another quantity's at the
+// shown step (evaluated once per quantity, step and model).
+const ScalarView* Scene::isoSurfaceView() const {
+  const std::string& key = state_.volume.isoQuantity;
+  if (key.empty() || (view_ && view_->quantity.key() == key)) return view_ ? &*view_ : nullptr;
+  if (!session_) return nullptr;
+  const std::string id = key + "@" + std::to_string(state_.step) + "@" + std::to_string(viewVersion_);
+  if (isoViewFor_ != id) {
+    try {
+      isoView_ = session_->evaluate(session_->findQuantity(key), std::min(state_.step, stepCountOf(key) - 1));
+    } catch (const std::exception&) {
+      isoView_.reset();  // checked when set: a failure here is a damaged lazy read, drawn as none
+    }
+    isoViewFor_ = id;
+    ++isoViewVersion_;
+  }
+  return isoView_ ? &*isoView_ : nullptr;
+}
+
+std::size_t Scene::stepCountOf(const std::string& key) const {
+  return std::max<std::size_t>(1, session_->fieldOf(session_->findQuantity(key)).stepCount());
+}
+
+void Scene::setIsoQuantity(const std::string& key) {
+  if (!key.empty()) {
+    if (!session_) throw std::invalid_argument("open a model first");
+    const Quantity q = session_->findQuantity(key);  // invalid_argument naming the choices
+    if (session_->fieldOf(q).location() != FieldLocation::Node)
+      throw std::invalid_argument("iso-surfaces need values at the nodes; " + q.displayName() +
+                                  " is given per element");
+  }
+  state_.volume.isoQuantity = key;
+  changed_.iso = true;
+}
+
+void Scene::setPlotLine(std::optional<std::array<glm::dvec3, 2>> line) {
+  if (line && !std::isfinite((*line)[0].x + (*line)[0].y + (*line)[0].z + (*line)[1].x + (*line)[1].y + (*line)[1].z))
+    throw std::invalid_argument("the plotted line's ends must be finite X, Y, Z");
+  state_.plotLine = line;
+}
 
 void Scene::setSurfaceOpacity(double opacity) {
   if (!(opacity >= 0.0 && opacity <= 1.0)) throw std::invalid_argument("the surface opacity must lie in 0..1");
@@ -733,8 +802,9 @@ void Scene::applyToBoundary() {
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   boundary_.setCuts(state_.volume.shown ? std::vector<ClipPlane>{} : state_.volume.allClipPlanes(),
                     view_ ? &*view_ : nullptr, viewVersion_, displayRange());
-  boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces,
-                           view_ ? &*view_ : nullptr, viewVersion_);
+  const ScalarView* isoView = isoSurfaceView();
+  boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces, isoView,
+                           isoView == (view_ ? &*view_ : nullptr) ? viewVersion_ : isoViewVersion_);
   boundary_.setSlices(gridSlicePlanes(), state_.volume.allClipPlanes(), view_ ? &*view_ : nullptr, viewVersion_,
                       displayRange());
   changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
@@ -804,7 +874,11 @@ void Scene::applyVolumeSettings() {
   const VolumeLayer& v = state_.volume;
   if (changed_.tables) volume_->setTransferFunction(transferFunction());
   if (changed_.planes) volume_->setClipPlanes(v.allClipPlanes());
-  if (changed_.iso) volume_->setIsoSurfaces(v.isoSurfaces);
+  // A volume contours the quantity it renders: iso-surfaces of another show in the surface view.
+  if (changed_.iso)
+    volume_->setIsoSurfaces(v.isoQuantity.empty() || (view_ && view_->quantity.key() == v.isoQuantity)
+                                ? v.isoSurfaces
+                                : std::vector<optics::IsoSurface>{});
   if (changed_.mode) {
     volume_->setIntegrationMode(v.mode);
     volume_->setSamplingStep(v.samplingStep);

@@ -113,6 +113,12 @@ class Scene {
   void setClipPlanes(std::vector<ClipPlane> planes);
   void setClipBox(std::optional<ClipBox> box);
   void setIsoSurfaces(std::vector<optics::IsoSurface> surfaces);
+  /// The quantity the iso-surfaces are of (empty: the shown one). Throws
+  /// std::invalid_argument for an unknown quantity or one given per element.
+  void setIsoQuantity(const std::string& key);
+  /// The Plot Over Line panel's line, drawn over the picture (nullopt: none).
+  void setPlotLine(std::optional<std::array<glm::dvec3, 2>> line);
+  const std::optional<std::array<glm::dvec3, 2>>& plotLine() const { return state_.plotLine; }
   /// A regular grid's slices (inline, crossline, time for a survey) at these labels,
   /// drawn in the surface view and, opaque, in the volume. Throws std::invalid_argument
   /// for a model that is not a grid or a label outside its axis (naming both).
@@ -154,6 +160,9 @@ class Scene {
   /// The window's handles on the clip box (BoxWidget); pictures never show them.
   void setBoxWidgetShown(bool on) { boxWidgetShown_ = on; }
   bool showsBoxWidget() const { return boxWidgetShown_ && session_ && shownClipBox().has_value(); }
+  /// The window's rakes (the streamlines' line seeds) drawn over the picture; pictures never show them.
+  void setRakesShown(bool on) { rakesShown_ = on; }
+  bool showsRakes() const { return rakesShown_ && session_ && state_.streamlines.shown; }
   /// The box being dragged, drawn instead of the clip box until the window applies it.
   void setClipBoxPreview(std::optional<ClipBox> box) { clipBoxPreview_ = box; }
   std::optional<ClipBox> shownClipBox() const { return clipBoxPreview_ ? clipBoxPreview_ : state_.volume.clipBox; }
@@ -190,7 +199,11 @@ class Scene {
   TransferFunction transferFunction() const;
   bool volumeShown() const { return state_.volume.shown; }
   const VolumeLayer& volume() const { return state_.volume; }
+  /// The first of legends() (nullopt: none shown).
   std::optional<LegendPicture> legend() const;
+  /// What the legend strip shows, top to bottom: the result's key (surface or volume) and
+  /// the streamlines' when they are drawn.
+  std::vector<LegendPicture> legends() const;
   /// The camera for a picture of this size (logical pixels): the view keeps clear of the
   /// legend's strip at the right when the legend is shown. Everything that draws, projects
   /// or picks in a picture uses it, so markers and picks land where the model is drawn.
@@ -232,6 +245,11 @@ class Scene {
   void checkStreamlines(const StreamlineLayer& layer) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
   void checkSamplingStep(double step) const;
+  const ScalarView* isoSurfaceView() const;
+  std::size_t stepCountOf(const std::string& quantityKey) const;
+  mutable std::optional<ScalarView> isoView_;   ///< another quantity's values, for its iso-surfaces
+  mutable std::string isoViewFor_;              ///< the quantity, step and view version isoView_ is of
+  mutable std::uint64_t isoViewVersion_ = 1ull << 62;  ///< apart from viewVersion_'s counts
   /// The most samples a ray takes across the model's diagonal in the sampling mode.
   static constexpr double kMaxSamplesAcross = 65536.0;
   bool streamlinesDrawn() const;
@@ -246,6 +264,7 @@ class Scene {
   SceneState state_;
   bool planeWidgetShown_ = false;
   bool boxWidgetShown_ = false;
+  bool rakesShown_ = false;
   std::optional<ClipBox> clipBoxPreview_;
   Camera camera_;
   double devicePixelRatio_ = 1.0;

@@ -3,6 +3,7 @@
 
 #include "BoxWidget.hpp"
 #include "PlaneWidget.hpp"
+#include "StreamlineSeeds.hpp"
 
 
 #include <QFontMetrics>
@@ -72,12 +73,24 @@ void drawMarkerShape(QPainter& painter, const Marker& m, double scale) {
   painter.drawPath(triangle);
 }
 
+// A marker on the side a clip plane (or the box) removed is not drawn: the model is not
+// there to carry it. What lies on a plane stays, within a rounding of the model's size.
+bool keptByClipPlanes(const Scene& scene, const glm::dvec3& p) {
+  const double tolerance = 1e-9 * std::max(scene.session()->bounds().diagonal(), 1e-300);
+  for (const ClipPlane& c : scene.volume().allClipPlanes()) {
+    const double length = glm::length(c.normal);
+    if (length > 0.0 && glm::dot(c.normal / length, p - c.point) < -tolerance) return false;
+  }
+  return true;
+}
+
 void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
   const auto& probes = scene.probes();
   if (probes.empty() || !scene.session()) return;
   const bool labels = probes.size() <= 50;  // more would hide the model
   const Camera camera = scene.pictureCamera(area.width(), area.height());
   for (std::size_t i = 0; i < probes.size(); ++i) {
+    if (!keptByClipPlanes(scene, probes[i])) continue;
     const auto at = projectToPicture(camera, probes[i], area.width(), area.height());
     if (!at) continue;
     Marker m{QPointF(area.left() + at->x, area.top() + at->y), {}, QColor(20, 90, 200), MarkerShape::Dot};
@@ -98,6 +111,7 @@ void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& s
   if (!e) return;
   const Camera camera = scene.pictureCamera(area.width(), area.height());
   const auto add = [&](const glm::dvec3& where, const QString& text, const QColor& color, MarkerShape shape) {
+    if (!keptByClipPlanes(scene, where)) return;
     if (const auto at = projectToPicture(camera, where, area.width(), area.height()))
       markers.push_back({QPointF(area.left() + at->x, area.top() + at->y), text, color, shape});
   };
@@ -151,9 +165,9 @@ void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, 
   QPolygonF outline;
   for (const glm::dvec3& p : widget.outline)
     if (const auto q = at(p)) outline << *q;
-  if (outline.size() >= 3) {
+  if (outline.size() >= 3) {  // an outline only: a fill washed out the cut face's colors under it
     painter.setPen(QPen(color, 1.5 * scale));
-    painter.setBrush(QColor(color.red(), color.green(), color.blue(), 40));
+    painter.setBrush(Qt::NoBrush);
     painter.drawPolygon(outline);
   }
   const auto center = at(widget.center), knob = at(widget.knob);
@@ -177,8 +191,63 @@ void paintBoxWidget(QPainter& painter, const QRect& area, const Scene& scene, do
   }
   painter.setPen(QPen(Qt::white, 1.5 * scale));
   painter.setBrush(color);
+  // Square knobs: the round dots are probed points.
   for (const glm::dvec3& c : widget.faceCenters)
-    if (const auto q = at(c)) painter.drawEllipse(*q, 5.0 * scale, 5.0 * scale);
+    if (const auto q = at(c)) painter.drawRect(QRectF(*q - QPointF(5.0, 5.0) * scale, QSizeF(10.0, 10.0) * scale));
+}
+
+// The Plot Over Line panel's line: dashed, its ends marked A and B as the chart's axis runs.
+void paintPlotLine(QPainter& painter, const QRect& area, const Scene& scene, const std::array<glm::dvec3, 2>& line,
+                   double scale) {
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
+  const auto a = at(line[0]), b = at(line[1]);
+  if (!a || !b) return;
+  const QColor color(120, 40, 160);
+  painter.setPen(QPen(color, 2.0 * scale, Qt::DashLine, Qt::RoundCap));
+  painter.drawLine(*a, *b);
+  painter.setPen(QPen(Qt::white, 1.0 * scale));
+  painter.setBrush(color);
+  const QFontMetricsF fm(painter.font());
+  for (const auto& [p, name] : {std::pair{*a, "A"}, std::pair{*b, "B"}}) {
+    const double r = 0.5 * fm.height() + 2.0;
+    painter.drawEllipse(p, r, r);
+    painter.drawText(QRectF(p - QPointF(r, r), QSizeF(2 * r, 2 * r)), Qt::AlignCenter, name);
+  }
+}
+
+// The streamlines' seeds where they are (a placed rake's points, line seeds), so they can be
+// seen, edited in the Streamlines dialog and placed anew.
+void paintRakes(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
+  const QColor color(230, 120, 20);
+  // Point seeds as dots joined in their order (a rake placed with the mouse), line seeds as lines.
+  std::optional<QPointF> previous;
+  for (const std::string& spec : scene.streamlines().seeds) {
+    if (const auto seed = pointSeed(spec)) {
+      const auto p = at(*seed);
+      if (!p) continue;
+      if (previous) {
+        painter.setPen(QPen(color, 1.0 * scale, Qt::DotLine));
+        painter.drawLine(*previous, *p);
+      }
+      painter.setBrush(color);
+      painter.setPen(QPen(Qt::white, 1.0 * scale));
+      painter.drawEllipse(*p, 3.0 * scale, 3.0 * scale);
+      previous = p;
+      continue;
+    }
+    previous.reset();
+    const auto ends = rakeEnds(spec);
+    if (!ends) continue;
+    const auto a = at((*ends)[0]), b = at((*ends)[1]);
+    if (!a || !b) continue;
+    painter.setPen(QPen(color, 2.0 * scale, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(*a, *b);
+    painter.setBrush(color);
+    painter.setPen(QPen(Qt::white, 1.0 * scale));
+    painter.drawEllipse(*a, 4.0 * scale, 4.0 * scale);
+    painter.drawEllipse(*b, 4.0 * scale, 4.0 * scale);
+  }
 }
 
 std::optional<QPointF> PointInArea::operator()(const glm::dvec3& p) const {
@@ -207,6 +276,8 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   const double scale = std::max(1.0, font.pixelSize() / 12.0);
   if (scene.showsPlaneWidget()) paintPlaneWidget(painter, area, scene, scale);
   if (scene.showsBoxWidget()) paintBoxWidget(painter, area, scene, scale);
+  if (const auto& line = scene.plotLine()) paintPlotLine(painter, area, scene, *line, scale);
+  if (scene.showsRakes()) paintRakes(painter, area, scene, scale);
   std::vector<Marker> markers;
   addExtremes(markers, area, scene);
   addProbes(markers, area, scene);
@@ -214,12 +285,18 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   for (const Marker& m : markers) placed.push_back(QRectF(m.at - QPointF(7, 7) * scale, QSizeF(14, 14) * scale));
   for (const Marker& m : markers) drawMarkerShape(painter, m, scale);
   QRect room = area;  // labels stay left of the legend's strip
-  if (scene.legend()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
+  const std::vector<LegendPicture> legends = scene.legends();
+  if (!legends.empty()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
   for (const Marker& m : markers)
     if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
   if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);
   painter.restore();
-  if (const auto legend = scene.legend()) paintLegend(painter, area, legend->colors, legend->content);
+  // Several keys share the strip, one above the other.
+  for (std::size_t i = 0; i < legends.size(); ++i) {
+    const int top = area.top() + int(i) * area.height() / int(legends.size());
+    const int bottom = area.top() + int(i + 1) * area.height() / int(legends.size());
+    paintLegend(painter, QRect(area.left(), top, area.width(), bottom - top), legends[i].colors, legends[i].content);
+  }
 }
 
 }  // namespace volpost::app

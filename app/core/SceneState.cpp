@@ -78,6 +78,7 @@ json jsonOf(const VolumeLayer& v) {
   for (const optics::IsoSurface& s : v.isoSurfaces)
     isos.push_back({{"value", s.value}, {"color", jsonOf(s.color)}, {"opacity", s.opacity}});
   out["isoSurfaces"] = isos;
+  if (!v.isoQuantity.empty()) out["isoQuantity"] = v.isoQuantity;
   out["samplingStep"] = v.samplingStep;
   out["termination"] = v.termination;
   out["shading"] = v.shading;
@@ -133,6 +134,7 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
       if (!(b[i] < b[i + 1])) r.fail("volume.clipBox", "needs min < max on every axis");
     v.clipBox = b;
   }
+  if (const json* x = r.find(in, "isoQuantity")) v.isoQuantity = r.text(*x, "volume.isoQuantity");
   if (const json* x = r.find(in, "isoSurfaces")) {
     const json& isos = r.array(*x, "volume.isoSurfaces");
     for (std::size_t i = 0; i < isos.size(); ++i) {
@@ -262,8 +264,14 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["version"] = kVersion;
   std::string model = modelPath;
   if (!relativeTo.empty() && !model.empty()) {
-    const fs::path absolute = fs::absolute(model).lexically_normal();
-    const fs::path relative = absolute.lexically_relative(fs::absolute(relativeTo).lexically_normal());
+    // Compared with links resolved: a model reached through a linked folder (a home on
+    // another disk) still lies below the state's folder.
+    std::error_code error;
+    fs::path absolute = fs::weakly_canonical(fs::absolute(model), error);
+    if (error) absolute = fs::absolute(model).lexically_normal();
+    fs::path folder = fs::weakly_canonical(fs::absolute(relativeTo), error);
+    if (error) folder = fs::absolute(relativeTo).lexically_normal();
+    const fs::path relative = absolute.lexically_relative(folder);
     if (!relative.empty() && *relative.begin() != "..") model = relative.string();
   }
   out["model"] = model;
@@ -304,6 +312,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   json points = json::array();
   for (const glm::dvec3& p : probes) points.push_back(jsonOf(p));
   out["markers"] = {{"probes", points}, {"extremes", markExtremes}};
+  if (plotLine) out["plotLine"] = {{"from", jsonOf((*plotLine)[0])}, {"to", jsonOf((*plotLine)[1])}};
   return out.dump(2) + "\n";
 }
 
@@ -417,6 +426,13 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
       if (x->is_string() && x->get<std::string>() == "auto") s.deformation.scale.reset();
       else s.deformation.scale = r.number(*x, "deformation.scale");
     }
+  }
+  if (const json* line = r.find(in, "plotLine")) {
+    r.object(*line, "plotLine");
+    const json* from = r.find(*line, "from");
+    const json* to = r.find(*line, "to");
+    if (!from || !to) r.fail("plotLine", "needs \"from\" and \"to\"");
+    s.plotLine = std::array<glm::dvec3, 2>{r.vec3(*from, "plotLine.from"), r.vec3(*to, "plotLine.to")};
   }
   if (const json* markers = r.find(in, "markers")) {
     r.object(*markers, "markers");

@@ -64,6 +64,9 @@ struct VolumeLayer {
   std::vector<ClipPlane> clipPlanes;                  ///< free planes (the window's dragged one)
   std::optional<ClipBox> clipBox;                     ///< also culls: the GPU holds only its inside
   std::vector<optics::IsoSurface> isoSurfaces;
+  /// The quantity the iso-surfaces are of ("T", "S.mises"); empty: the shown one. Another
+  /// quantity's iso-surfaces are drawn in the surface view (a volume contours what it renders).
+  std::string isoQuantity;
   double samplingStep = 0.0;    ///< sampling mode; 0: a quarter of the mean edge
   double termination = 0.002;   ///< rays stop below this transmittance
   bool shading = false;         ///< regular grids: the emission lit by the gradient (headlight)
@@ -127,6 +130,8 @@ struct SceneState {
   StreamlineLayer streamlines;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
+  /// The line the Plot Over Line panel samples, drawn over the picture; "plotLine" in the file.
+  std::optional<std::array<glm::dvec3, 2>> plotLine;
   bool markExtremes = false;
   DeformationLayer deformation;  ///< the shown quantity's smallest and largest values marked where they are
 

@@ -153,4 +153,30 @@ std::string rakeSpec(const glm::dvec3& a, const glm::dvec3& b, int n) {
   return text;
 }
 
+std::string pointSeedSpec(const glm::dvec3& p) {
+  char text[128];
+  std::snprintf(text, sizeof text, "point:%.9g,%.9g,%.9g", p.x, p.y, p.z);
+  return text;
+}
+
+std::optional<glm::dvec3> pointSeed(const std::string& spec) {
+  const auto part = split(spec, ':');
+  if (part.size() != 2 || part[0] != "point") return std::nullopt;
+  try {
+    return point(spec, part[1]);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<std::array<glm::dvec3, 2>> rakeEnds(const std::string& spec) {
+  const auto part = split(spec, ':');
+  if (part.size() != 4 || part[0] != "line") return std::nullopt;
+  try {
+    return std::array<glm::dvec3, 2>{point(spec, part[1]), point(spec, part[2])};
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace volpost::app

@@ -11,6 +11,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,5 +28,10 @@ std::vector<glm::dvec3> seedPoints(const std::vector<std::string>& specs, const 
 
 /// The written form of a rake from a to b with n points.
 std::string rakeSpec(const glm::dvec3& a, const glm::dvec3& b, int n);
+/// "point:X,Y,Z" for a seed, and the point of such a spec (nullopt for another kind).
+std::string pointSeedSpec(const glm::dvec3& p);
+std::optional<glm::dvec3> pointSeed(const std::string& spec);
+/// The ends of a rake's spec (line:A:B:N); nullopt for another kind of spec.
+std::optional<std::array<glm::dvec3, 2>> rakeEnds(const std::string& spec);
 
 }  // namespace volpost::app

@@ -15,20 +15,21 @@ TransferFunction defaultTransferFunction(const ScalarView& view, double modelDia
     lo = range->min;
     hi = range->max;
   }
-  // A thin fog everywhere (10%) so the part's shape shows, dense where the result peaks.
+  // Clear at the lowest value and dense where the result peaks: no fog over the whole model
+  // (a floor of 10 % gave the lowest values a quarter of the opacity and veiled everything).
   // A signed result (a stress component, a pressure) peaks at both ends: dense at both,
-  // clear near zero, so no shell of high values hides the lowest ones.
+  // clear at zero, so no shell of high values hides the lowest ones.
   const double tauMax = 24.0 / std::max(modelDiagonal, 1e-300);
   std::vector<ControlPoint> points = TransferFunction::ramp(lo, hi, colorMap, tauMax).points();
   const bool signedResult = lo < 0.0 && hi > 0.0;
   const double largest = std::max(-lo, hi);
   for (auto& p : points) {
     const double weight = signedResult ? std::abs(p.value) / largest : (p.value - lo) / (hi - lo);
-    p.extinction = tauMax * (0.1 + 0.9 * weight);
+    p.extinction = tauMax * weight;
   }
   if (signedResult) {  // a point at zero, so the clear middle is where the sign changes
     const glm::dvec3 zeroColor = ColorMap::named(colorMap).at(-lo / (hi - lo));
-    points.push_back({0.0, zeroColor, tauMax * 0.1});
+    points.push_back({0.0, zeroColor, 0.0});
     std::sort(points.begin(), points.end(), [](const ControlPoint& a, const ControlPoint& b) { return a.value < b.value; });
     points.erase(std::unique(points.begin(), points.end(),
                              [](const ControlPoint& a, const ControlPoint& b) { return a.value == b.value; }),

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "VolumeSpecs.hpp"
 
+#include <QRegularExpression>
 #include <QStringList>
 
 #include <cmath>
@@ -8,8 +9,11 @@
 namespace volpost::app {
 namespace {
 
+// Numbers separated by commas, semicolons or spaces ("0 0 0", "1, 2, 3"), as a points
+// file writes them.
 std::optional<std::vector<double>> numbers(const QString& text, int count) {
-  const QStringList parts = text.split(',');
+  static const QRegularExpression separators("\\s*[,;]\\s*|\\s+");
+  const QStringList parts = text.trimmed().split(separators);
   if (parts.size() != count) return std::nullopt;
   std::vector<double> v;
   for (const QString& p : parts) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "GridSlicesDialog.hpp"
+#include "GridSlicesPanel.hpp"
 
 #include "../core/Scene.hpp"
 
@@ -12,9 +12,9 @@
 
 namespace volpost::app {
 
-GridSlicesDialog::GridSlicesDialog(Scene& scene, std::function<void()> changed, QWidget* parent)
-    : QDialog(parent), scene_(scene), changed_(std::move(changed)) {
-  setWindowTitle("Grid slices");
+GridSlicesPanel::GridSlicesPanel(Scene& scene, std::function<void()> changed, QWidget* parent)
+    : QWidget(parent), scene_(scene), changed_(std::move(changed)) {
+
   auto* grid = new QGridLayout(this);
   for (int a = 0; a < 3; ++a) {
     shown_[std::size_t(a)] = new QCheckBox(this);
@@ -41,7 +41,7 @@ GridSlicesDialog::GridSlicesDialog(Scene& scene, std::function<void()> changed, 
   followScene();
 }
 
-void GridSlicesDialog::followScene() {
+void GridSlicesPanel::followScene() {
   following_ = true;
   const auto session = scene_.session();
   const bool hasGrid = session && session->model().grid;
@@ -71,7 +71,7 @@ void GridSlicesDialog::followScene() {
   following_ = false;
 }
 
-void GridSlicesDialog::apply() {
+void GridSlicesPanel::apply() {
   if (following_) return;
   const auto session = scene_.session();
   if (!session || !session->model().grid) return;

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
-// View > Grid Slices...: a regular grid's three slices (inline, crossline and time for a
+// View > Grid Slices (a dock): a regular grid's three slices (inline, crossline and time for a
 // survey), each switched on by its box and moved by its slider (arrow keys, Page Up/Down
 // once it has the focus), its label shown beside it; the picture follows as the slider
 // moves. A box for the model's surface, which hides the slices inside the volume.
 #pragma once
 
-#include <QDialog>
+#include <QWidget>
 
 #include <array>
 #include <functional>
@@ -23,12 +23,12 @@ namespace volpost::app {
 
 class Scene;
 
-class GridSlicesDialog : public QDialog {
+class GridSlicesPanel : public QWidget {
   Q_OBJECT
 
  public:
   /// `changed`: the scene changed (the window redraws).
-  GridSlicesDialog(Scene& scene, std::function<void()> changed, QWidget* parent = nullptr);
+  GridSlicesPanel(Scene& scene, std::function<void()> changed, QWidget* parent = nullptr);
   /// Another model: the controls follow its grid (or are disabled without one).
   void followScene();
 

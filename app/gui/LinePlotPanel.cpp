@@ -49,7 +49,8 @@ QString pointText(const glm::dvec3& p) {
 
 }  // namespace
 
-LinePlotPanel::LinePlotPanel(SceneGetter scene, QWidget* parent) : QWidget(parent), scene_(std::move(scene)) {
+LinePlotPanel::LinePlotPanel(SceneGetter scene, LineShower showLine, QWidget* parent)
+    : QWidget(parent), scene_(std::move(scene)), showLine_(std::move(showLine)) {
   auto* layout = new QVBoxLayout(this);
   auto* form = new QFormLayout;
   from_ = new QLineEdit(this);
@@ -89,6 +90,22 @@ LinePlotPanel::LinePlotPanel(SceneGetter scene, QWidget* parent) : QWidget(paren
   chart_->setObjectName("lineChart");
   layout->addWidget(chart_, 1);
   for (QLineEdit* e : {from_, to_}) connect(e, &QLineEdit::returnPressed, this, [this] { plot(); });
+}
+
+void LinePlotPanel::modelChanged() {
+  samples_.reset();
+  from_->clear();
+  to_->clear();
+  refreshQuantities();  // the new model's, none checked
+  for (int i = 0; i < quantities_->count(); ++i) quantities_->item(i)->setCheckState(Qt::Unchecked);
+  chart_->update();
+}
+
+void LinePlotPanel::followScene() {
+  const auto& line = scene_().plotLine();
+  if (!line) return;
+  setEnds((*line)[0], (*line)[1]);
+  plot();
 }
 
 void LinePlotPanel::setEnds(const glm::dvec3& from, const glm::dvec3& to) {
@@ -144,8 +161,8 @@ bool LinePlotPanel::useLastProbes() {
 
 bool LinePlotPanel::plot() {
   const Scene& scene = scene_();
-  const auto a = parsePoint(from_->text().simplified().replace(' ', QString()));
-  const auto b = parsePoint(to_->text().simplified().replace(' ', QString()));
+  const auto a = parsePoint(from_->text());
+  const auto b = parsePoint(to_->text());
   if (!a || !b) {
     emit message(QString("Plot Over Line: '%1' and '%2' must both be X, Y, Z").arg(from_->text(), to_->text()));
     return false;
@@ -163,6 +180,7 @@ bool LinePlotPanel::plot() {
     emit message(QString("Plot Over Line: %1").arg(e.what()));
     return false;
   }
+  showLine_(std::array<glm::dvec3, 2>{*a, *b});  // the sampled line, drawn in the view
   std::size_t outside = 0;
   for (const ProbeResult& r : samples_->points) outside += !r.inside();
   emit message(outside ? QString("Plot Over Line: %1 of %2 samples lie outside the mesh (gaps)").arg(outside).arg(samples_->points.size())

@@ -8,6 +8,7 @@
 
 #include <QWidget>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -27,7 +28,14 @@ class LinePlotPanel : public QWidget {
 
  public:
   using SceneGetter = std::function<const Scene&()>;
-  LinePlotPanel(SceneGetter scene, QWidget* parent = nullptr);
+  /// Shows (or, with nullopt, hides) the sampled line in the view.
+  using LineShower = std::function<void(std::optional<std::array<glm::dvec3, 2>>)>;
+  LinePlotPanel(SceneGetter scene, LineShower showLine, QWidget* parent = nullptr);
+
+  /// Another model: its quantities listed, the old curves, ends and line gone.
+  void modelChanged();
+  /// The scene's line (a state file's) in the fields, plotted when it is set.
+  void followScene();
 
   /// Samples the line typed in the panel; false (with a message) when it cannot.
   bool plot();
@@ -52,6 +60,7 @@ class LinePlotPanel : public QWidget {
   void exportTo(const QString& title, const QString& filter, const std::function<void(const QString&)>& write);
 
   SceneGetter scene_;
+  LineShower showLine_;
   QLineEdit* from_ = nullptr;
   QLineEdit* to_ = nullptr;
   QSpinBox* count_ = nullptr;

@@ -2,6 +2,7 @@
 #include "MainWindow.hpp"
 
 #include "../core/PictureFile.hpp"
+#include "../core/ProbeTable.hpp"
 #include "../core/PluginRenderers.hpp"
 #include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeSpecs.hpp"
@@ -11,7 +12,7 @@
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "StepController.hpp"
-#include "GridSlicesDialog.hpp"
+#include "GridSlicesPanel.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
@@ -24,7 +25,7 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QDialog>
+#include <QWidget>
 #include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QFormLayout>
@@ -67,6 +68,13 @@ QString readerFilter(const ReaderRegistry& readers) {
   return QString("All models (%1);;%2;;All files (*)").arg(all.join(' '), each.join(";;"));
 }
 
+// A point as a user reads it: 4 significant digits, and a coordinate below a billionth of
+// `size` (the rounding of a plane through the centre) shown as 0, not 4.737e-15.
+QString roundedPoint(const glm::dvec3& p, double size) {
+  const auto c = [size](double x) { return std::abs(x) < 1e-9 * size ? 0.0 : x; };
+  return QString("(%1, %2, %3)").arg(c(p.x), 0, 'g', 4).arg(c(p.y), 0, 'g', 4).arg(c(p.z), 0, 'g', 4);
+}
+
 struct LoadResult {
   std::shared_ptr<ModelSession> session;
   QString error;
@@ -93,13 +101,13 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
   viewport_->scene().setPlaneWidgetShown(true);
   viewport_->scene().setBoxWidgetShown(true);
+  viewport_->scene().setRakesShown(true);
   connect(viewport_, &Viewport::clipBoxDragged, this, [this](const ClipBox& box) { applyClipBox(box); });
   connect(viewport_, &Viewport::clipPlaneDragged, this, [this](const ClipPlane& p) {
-    const auto v = [](const glm::dvec3& x) {
-      return QString("(%1, %2, %3)").arg(x.x, 0, 'g', 4).arg(x.y, 0, 'g', 4).arg(x.z, 0, 'g', 4);
-    };
-    statusBar()->showMessage("Clip plane through " + v(p.point) + ", normal " + v(glm::normalize(p.normal)) +
-                             " (View > Clip Plane > Type Plane to type it)");
+    const double size = session_ ? session_->bounds().diagonal() : 1.0;
+    statusBar()->showMessage("Clip plane through " + roundedPoint(p.point, size) + ", normal " +
+                             roundedPoint(glm::normalize(p.normal), 1.0) + " (View > Clip Plane > Type Plane to type it)");
+    checkClipAxisOf(p);
   });
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
@@ -119,6 +127,7 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   buildToolbar();
   buildPanels();
   QSettings settings("volpost", "volpost");
+  setDisplayDigits(settings.value("view/digits", 6).toInt());
   if (const std::size_t budget = parseByteSize(settings.value("limits/memoryBudget").toString().toStdString()))
     setMemoryBudget(budget);
   if (const std::size_t budget = parseByteSize(settings.value("limits/gpuMemoryBudget").toString().toStdString());
@@ -227,10 +236,20 @@ void MainWindow::buildActions() {
   legendAction_->setCheckable(true);
   legendAction_->setChecked(true);
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
-  buildDeformationActions(view);
+  view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)->setObjectName("surfaceOpacityAction");
+
+  // What is shown of the results (deformation, probes, cuts, contours, lines) and the
+  // volume each have a menu: one View menu held all 34 entries.
+  QMenu* results = menuBar()->addMenu("&Results");
+  resultsMenu_ = results;
+  buildDeformationActions(results);
+  results->addSeparator();
   // Probing follows what is drawn: the deformed model while a deformation is shown.
-  probes_ = new ProbeController(*this, *viewport_, *view, [this] { return viewport_->scene().sharedSession(); });
-  buildVolumeMenu(view);
+  probes_ = new ProbeController(*this, *viewport_, *results, [this] { return viewport_->scene().sharedSession(); });
+  results->addSeparator();
+  QMenu* volume = menuBar()->addMenu("V&olume");
+  volumeMenu_ = volume;
+  buildVolumeMenu(volume, results);
 
   QMenu* tools = menuBar()->addMenu("&Tools");
   tools->addAction("&Plugins...", this, [this] { PluginsDialog(plugins_, this).exec(); });
@@ -263,9 +282,18 @@ void MainWindow::buildActions() {
 // cores several times slower than the CPU ray caster, so volume rendering starts with it
 // unless the user or a state file chose a renderer.
 void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
-  if (rendererChosen_ || !gl::isSoftwareRasterizer(description.toStdString())) return;
+  if (!gl::isSoftwareRasterizer(description.toStdString())) return;
   QAction* cpu = findChild<QAction*>("renderer:cpu");
-  if (!cpu || cpu->isChecked()) return;
+  if (!cpu) return;
+  // The fast choice first, and the slow ones say so.
+  if (auto* menu = findChild<QMenu*>("rendererMenu"); menu && !menu->actions().isEmpty() && menu->actions().first() != cpu) {
+    menu->removeAction(cpu);
+    menu->insertAction(menu->actions().first(), cpu);
+    for (QAction* a : menu->actions())
+      if (a != cpu && !a->text().endsWith(")"))
+        a->setText(a->text() + " (slow here: OpenGL is drawn by the CPU)");
+  }
+  if (rendererChosen_ || cpu->isChecked()) return;
   if (!changeScene([](Scene& s) { s.setVolumeRenderer("cpu"); })) return;
   checkRendererAction("cpu");
   statusBar()->showMessage("OpenGL is drawn by the CPU here: volume rendering uses " + cpu->text() +
@@ -286,6 +314,14 @@ void MainWindow::fitRendererToModel() {
   if (!session_) return;
   const bool grid = session_->model().grid.has_value();
   const auto draws = [grid](const RendererEntry& r) { return grid ? r.drawsGrids : r.drawsMeshes; };
+  // A renderer that cannot draw this kind of model is shown, but not offered (a grid's cells
+  // are a mesh too: every renderer draws a grid).
+  for (const RendererEntry& r : renderers_)
+    if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
+      const bool offered = grid || r.drawsMeshes;
+      a->setEnabled(offered);
+      a->setToolTip(offered ? QString() : QString("Draws regular grids (SEG-Y, image data, NRRD), not meshes"));
+    }
   const std::string current = viewport_->scene().volume().renderer;
   for (const RendererEntry& r : renderers_)
     if (r.name.toStdString() == current && (draws(r) || (rendererChosen_ && r.drawsMeshes))) return;
@@ -299,13 +335,13 @@ void MainWindow::fitRendererToModel() {
   }
 }
 
-void MainWindow::buildVolumeMenu(QMenu* view) {
+void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
   // Every GPU volume renderer the plugins offer, named as the plugin names it; the first
   // is used until another is chosen.
   renderers_ = volumeRenderers(plugins_);
   const std::vector<RendererEntry>& renderers = renderers_;
-  view->addSeparator();
   QMenu* rendererMenu = view->addMenu("Volume &Renderer");
+  rendererMenu->setObjectName("rendererMenu");
   auto* rendererGroup = new QActionGroup(this);
   for (std::size_t i = 0; i < renderers.size(); ++i) {
     const QString name = renderers[i].name;
@@ -319,8 +355,13 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
     }
     connect(a, &QAction::triggered, this, [this, name, a] {
       rendererChosen_ = true;
-      if (changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); }))
-        statusBar()->showMessage("Volume renderer: " + a->text());
+      // Its first frame builds its programs and data: the window says so while it waits.
+      statusBar()->showMessage("Preparing " + a->text() + "...");
+      QApplication::setOverrideCursor(Qt::WaitCursor);
+      const bool ok = changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); });
+      if (ok && viewport_->scene().volumeShown()) viewport_->repaint();
+      QApplication::restoreOverrideCursor();
+      if (ok) statusBar()->showMessage("Volume renderer: " + a->text());
     });
   }
   volumeAction_ = view->addAction("&Volume Rendering");
@@ -369,8 +410,10 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
     modeGroup->addAction(a);
     connect(a, &QAction::triggered, this, [this, mode] { changeScene([mode](Scene& s) { s.setIntegrationMode(mode); }); });
   }
-  QMenu* clip = view->addMenu("&Clip Plane");
+  QMenu* clip = results->addMenu("&Clip Plane");
   auto* clipGroup = new QActionGroup(this);
+  // A plane typed or turned to another normal checks none of the axis entries.
+  clipGroup->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
   const char* axes[] = {"Off", "Normal +X", "Normal +Y", "Normal +Z"};
   for (int i = 0; i < 4; ++i) {
     QAction* a = clip->addAction(axes[i]);
@@ -395,15 +438,16 @@ void MainWindow::buildVolumeMenu(QMenu* view) {
   });
   clip->addSeparator();
   clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
-  view->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces);
-  view->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
+  results->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces)->setObjectName("isoSurfacesAction");
+  results->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
       ->setObjectName("gridSlicesAction");
-  QMenu* lines = view->addMenu("&Streamlines");
+  QMenu* lines = results->addMenu("&Streamlines");
   lines->addAction("&Streamlines...", this, &MainWindow::chooseStreamlines);
   QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
     if (!session_) return;
     viewport_->setRakeMode(true);
-    statusBar()->showMessage("Drag in the view to place a rake of seeds (in the plane through the view's centre); Esc cancels");
+    statusBar()->showMessage("Drag across the model to place a rake of 20 seeds (each end halfway through the model "
+                             "under it); Esc cancels. View > Streamlines > Streamlines... edits it");
   });
   rake->setObjectName("placeRake");
   streamlinesAction_ = lines->addAction("Show Streamlines");
@@ -464,12 +508,15 @@ void MainWindow::buildDeformationActions(QMenu* view) {
 void MainWindow::showDeformation(bool on, std::optional<double> scale) {
   if (!session_) return;
   DeformationLayer d = viewport_->scene().deformation();
-  if (on && !session_->model().findField(d.field))  // U, else the first nodal vector
-    for (const auto& f : session_->model().fields)
-      if (f->location() == FieldLocation::Node && f->components() == 3) {
-        d.field = f->name();
-        break;
-      }
+  if (on && !session_->model().findField(d.field)) {
+    const auto field = chooseDisplacementField();
+    if (!field) {
+      const QSignalBlocker block(deformAction_);
+      deformAction_->setChecked(false);
+      return;
+    }
+    d.field = *field;
+  }
   d.shown = on;
   d.scale = scale;
   const bool ok = changeScene([&](Scene& s) { s.setDeformation(d); });
@@ -486,13 +533,38 @@ void MainWindow::showDeformation(bool on, std::optional<double> scale) {
   notifyPanels();
 }
 
+// The field to deform by: one named as a displacement (U, DISP, displacement ...) when the
+// model has it; otherwise the user picks among the nodal vectors (a velocity is no
+// displacement, and was taken without asking). nullopt: none, or cancelled (said why).
+std::optional<std::string> MainWindow::chooseDisplacementField() {
+  QStringList vectors;
+  for (const auto& f : session_->model().fields)
+    if (f->location() == FieldLocation::Node && f->components() == 3) {
+      const QString name = QString::fromStdString(f->name());
+      const QString lower = name.toLower();
+      if (lower == "u" || lower == "disp" || lower.startsWith("displacement")) return f->name();
+      vectors << name;
+    }
+  if (vectors.isEmpty()) {
+    statusBar()->showMessage("This model has no nodal vector field to deform it by");
+    return std::nullopt;
+  }
+  bool ok = false;
+  const QString chosen = QInputDialog::getItem(this, "Deformed shape",
+                                               "No field is named as a displacement (U, DISP, displacement).\n"
+                                               "Deform the model by:",
+                                               vectors, 0, false, &ok);
+  if (!ok) return std::nullopt;
+  return chosen.toStdString();
+}
+
 void MainWindow::chooseStreamlines() {
   if (!session_) {
     statusBar()->showMessage("Open a model first");
     return;
   }
   Scene& scene = viewport_->scene();
-  StreamlineDialog dialog(*session_, scene.streamlines(), scene.state().surfaceOpacity, this);
+  StreamlineDialog dialog(*session_, scene.streamlines(), this);
   bool hasVectors = false;
   for (const auto& f : session_->model().fields) hasVectors = hasVectors || f->components() == 3;
   if (!hasVectors) {
@@ -504,7 +576,7 @@ void MainWindow::chooseStreamlines() {
     const StreamlineLayer layer = dialog.layer();
     if (changeScene([&](Scene& s) {
           s.setStreamlines(layer);
-          s.setSurfaceOpacity(dialog.surfaceOpacity());
+          seeThroughSurface(s, "the streamlines inside");
         })) {
       const QSignalBlocker block(streamlinesAction_);
       streamlinesAction_->setChecked(true);
@@ -515,9 +587,10 @@ void MainWindow::chooseStreamlines() {
   }
 }
 
-// A rake drawn with the mouse becomes the seeds (20 points along it) of the streamlines
-// of the layer's field, or of the model's first vector field.
-void MainWindow::placeRake(glm::dvec3 from, glm::dvec3 to) {
+// A rake drawn with the mouse becomes the seeds (up to 20 points along it, each inside the
+// model under the line) of the streamlines of the layer's field, or of the model's first
+// vector field.
+void MainWindow::placeRake(std::vector<glm::dvec3> seeds) {
   if (!session_) return;
   StreamlineLayer layer = viewport_->scene().streamlines();
   if (layer.field.empty())
@@ -531,10 +604,11 @@ void MainWindow::placeRake(glm::dvec3 from, glm::dvec3 to) {
     return;
   }
   layer.shown = true;
-  layer.seeds = {rakeSpec(from, to, 20)};
+  layer.seeds.clear();
+  for (const glm::dvec3& p : seeds) layer.seeds.push_back(pointSeedSpec(p));
   if (!changeScene([&](Scene& s) {
         s.setStreamlines(layer);
-        if (s.state().surfaceOpacity >= 1.0) s.setSurfaceOpacity(0.2);  // lines inside must show
+        seeThroughSurface(s, "the streamlines inside");
       }))
     return;
   const QSignalBlocker block(streamlinesAction_);
@@ -628,6 +702,20 @@ void MainWindow::setClipAxis(int axis) {
   changeScene([&](Scene& s) { s.setClipPlanes({plane}); });
 }
 
+// The Clip Plane menu shows the plane as it is: the axis entry whose normal it has (+X, +Y,
+// +Z), or none for a typed or turned plane (a -Y plane left "Normal +Y" checked).
+void MainWindow::checkClipAxisOf(const ClipPlane& plane) {
+  const glm::dvec3 n = glm::normalize(plane.normal);
+  int axis = -2;  // none
+  for (int a = 0; a < 3; ++a)
+    if (n[a] > 1.0 - 1e-12) axis = a;
+  for (int i = -1; i < 3; ++i)
+    if (QAction* action = findChild<QAction*>(QString("clip:%1").arg(i))) {
+      const QSignalBlocker block(action);
+      action->setChecked(i == axis);
+    }
+}
+
 void MainWindow::typeClipPlane() {
   if (!session_) return;
   const auto& planes = viewport_->scene().volume().clipPlanes;
@@ -642,7 +730,7 @@ void MainWindow::typeClipPlane() {
       std::vector<ClipPlane> next = planes;
       if (next.empty()) next.push_back(*plane);
       else next.front() = *plane;
-      changeScene([&](Scene& s) { s.setClipPlanes(next); });
+      if (changeScene([&](Scene& s) { s.setClipPlanes(next); })) checkClipAxisOf(*plane);
       return;
     }
     QMessageBox::warning(this, "Clip plane", QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(text));
@@ -700,37 +788,104 @@ void MainWindow::showGridSlices() {
       s.setSurfaceShown(false);
     });
   }
-  if (!gridSlices_) gridSlices_ = new GridSlicesDialog(scene, [this] { viewport_->update(); }, this);
+  if (!gridSlices_) {  // a dock, beside the others: a floating dialog covered the model
+    gridSlicesDock_ = new QDockWidget("Grid Slices", this);
+    gridSlicesDock_->setObjectName("gridSlicesDock");
+    gridSlices_ = new GridSlicesPanel(scene, [this] { viewport_->update(); }, gridSlicesDock_);
+    gridSlices_->setObjectName("gridSlicesPanel");
+    gridSlicesDock_->setWidget(gridSlices_);
+    addDockWidget(Qt::BottomDockWidgetArea, gridSlicesDock_);
+    if (auto* panels = findChild<QMenu*>("panelsMenu")) panels->addAction(gridSlicesDock_->toggleViewAction());
+  }
   gridSlices_->followScene();
-  gridSlices_->show();
-  gridSlices_->raise();
+  gridSlicesDock_->show();
+  gridSlicesDock_->raise();
 }
 
 void MainWindow::chooseIsoSurfaces() {
-  QString text = isoSurfacesText(viewport_->scene().volume().isoSurfaces);
-  if (text.isEmpty()) {
-    if (const auto& v = viewport_->scene().view(); v && v->range.valid())
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  QDialog dialog(this);
+  dialog.setWindowTitle("Iso-surfaces");
+  auto* form = new QFormLayout(&dialog);
+  auto* quantity = new QComboBox(&dialog);
+  quantity->setObjectName("isoQuantity");
+  quantity->addItem("The shown result", QString());
+  for (const Quantity& q : session_->quantities())
+    if (session_->fieldOf(q).location() == FieldLocation::Node)  // contours need values at the nodes
+      quantity->addItem(QString::fromStdString(q.displayName()), QString::fromStdString(q.key()));
+  quantity->setCurrentIndex(std::max(0, quantity->findData(QString::fromStdString(scene.volume().isoQuantity))));
+  form->addRow("Of:", quantity);
+  auto* values = new QLineEdit(&dialog);
+  values->setObjectName("isoValues");
+  values->setMinimumWidth(360);
+  values->setToolTip("VALUE[:r,g,b[:opacity]] separated by ';' (colors and opacity 0..1, up to 8; empty: none)");
+  QString text = isoSurfacesText(scene.volume().isoSurfaces);
+  if (text.isEmpty())
+    if (const auto& v = scene.view(); v && v->range.valid())
       text = QString("%1:1,0.85,0.2:0.6").arg(0.5 * (v->range.min + v->range.max), 0, 'g', 6);
-  }
+  values->setText(text);
+  form->addRow("Values:", values);
+  form->addRow(new QLabel("VALUE[:r,g,b[:opacity]] separated by ';', up to 8; empty: none"));
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  form->addRow(buttons);
   for (;;) {
-    bool ok = false;
-    text = QInputDialog::getText(this, "Iso-surfaces",
-                                 "VALUE[:r,g,b[:opacity]] separated by ';' (colors and opacity 0..1, up to 8; empty: none):",
-                                 QLineEdit::Normal, text, &ok);
-    if (!ok) return;
+    if (dialog.exec() != QDialog::Accepted) return;
     QString bad;
-    if (const auto surfaces = parseIsoSurfaces(text, &bad)) {
-      if (!changeScene([&](Scene& s) { s.setIsoSurfaces(*surfaces); })) return;
-      if (!surfaces->empty() && !viewport_->scene().volumeShown()) volumeAction_->setChecked(true);
-      return;
+    const auto surfaces = parseIsoSurfaces(values->text(), &bad);
+    if (!surfaces) {
+      QMessageBox::warning(this, "Iso-surfaces", QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
+      continue;
     }
-    QMessageBox::warning(this, "Iso-surfaces", QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
+    const std::string key = quantity->currentData().toString().toStdString();
+    // They stay in the view the user is in (this switched to volume rendering); in the
+    // surface view an opaque surface would hide them, so it becomes see-through.
+    if (!changeScene([&](Scene& s) {
+          s.setIsoQuantity(key);
+          s.setIsoSurfaces(*surfaces);
+          if (!surfaces->empty() && !s.volumeShown()) seeThroughSurface(s, "the iso-surfaces inside");
+        }))
+      continue;
+    return;
   }
+}
+
+// Makes the surface see-through (30 %) when it is opaque, saying why: what is inside it
+// (iso-surfaces, streamlines) would not show.
+void MainWindow::seeThroughSurface(Scene& scene, const QString& what) {
+  if (scene.state().surfaceOpacity < 1.0) return;
+  scene.setSurfaceOpacity(0.3);
+  QTimer::singleShot(0, this, [this, what] {
+    statusBar()->showMessage(QString("The surface is see-through so that %1 show (View > Surface Opacity...)").arg(what),
+                             10000);
+  });
+}
+
+void MainWindow::chooseSurfaceOpacity() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  bool ok = false;
+  const int percent = QInputDialog::getInt(this, "Surface opacity",
+                                           "Opacity of the model's surface, percent (below 100 it is see-through and "
+                                           "what is inside shows):",
+                                           int(std::lround(viewport_->scene().state().surfaceOpacity * 100.0)), 0, 100, 5,
+                                           &ok);
+  if (!ok) return;
+  if (changeScene([&](Scene& s) { s.setSurfaceOpacity(percent / 100.0); }))
+    statusBar()->showMessage(QString("Surface opacity %1 %").arg(percent));
 }
 
 void MainWindow::setVolumeShown(bool on) {
   if (!on || !session_) {
     changeScene([](Scene& s) { s.setVolumeShown(false); });
+    notifyPanels();  // the color controls follow the view back (the Colors box stayed disabled)
     return;
   }
   if (!viewport_->scene().view()) {
@@ -744,8 +899,19 @@ void MainWindow::setVolumeShown(bool on) {
     volumeAction_->setChecked(false);
     return;
   }
-  statusBar()->showMessage(QString("Volume rendering %1 (extinction in 1 / model length unit)")
-                               .arg(QString::fromStdString(viewport_->scene().view()->quantity.displayName())));
+  for (QDockWidget* d : pluginDocks_)
+    if (d->isHidden()) {
+      d->show();
+      d->raise();
+    }
+  QString message = QString("Volume rendering of %1: colors and opacity in the Transfer Function panel")
+                        .arg(QString::fromStdString(viewport_->scene().view()->quantity.displayName()));
+  const VolumeLayer& volume = viewport_->scene().volume();
+  if (!volume.isoSurfaces.empty() && !volume.isoQuantity.empty() &&
+      volume.isoQuantity != viewport_->scene().view()->quantity.key())
+    message += QString("; the iso-surfaces of %1 show in the surface view (a volume contours what it renders)")
+                   .arg(QString::fromStdString(volume.isoQuantity));
+  statusBar()->showMessage(message);
   notifyPanels();
 }
 
@@ -762,13 +928,16 @@ void MainWindow::buildToolbar() {
   stepBox_->setObjectName("stepBox");
   stepBox_->setMinimumContentsLength(14);
   bar->addWidget(stepBox_);
-  steps_ = new StepController(*this, *viewport_, *bar, *stepBox_, *viewMenu_, *fileMenu_, [this] { notifyPanels(); });
+  steps_ = new StepController(*this, *viewport_, *bar, *stepBox_, *resultsMenu_, *fileMenu_, [this] { notifyPanels(); });
   bar->addWidget(new QLabel("  Colors: "));
   colorMapBox_ = new QComboBox(this);
   colorMapBox_->setObjectName("colorMapBox");
-  for (const auto& name : ColorMap::names()) colorMapBox_->addItem(QString::fromStdString(name));
-  colorMapBox_->setCurrentText(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString());
-  changeScene([this](Scene& s) { s.setColorMap(colorMapBox_->currentText().toStdString()); });
+  // Named as the transfer-function editor names them; the item's data is the written name.
+  for (const auto& name : ColorMap::names())
+    colorMapBox_->addItem(QString::fromStdString(ColorMap::label(name)), QString::fromStdString(name));
+  colorMapBox_->setCurrentIndex(
+      std::max(0, colorMapBox_->findData(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString())));
+  changeScene([this](Scene& s) { s.setColorMap(colorMapBox_->currentData().toString().toStdString()); });
   bar->addWidget(colorMapBox_);
   connect(quantityBox_, &QComboBox::currentIndexChanged, this, [this] {
     fillSteps();
@@ -776,7 +945,8 @@ void MainWindow::buildToolbar() {
     refreshScalars();
   });
   connect(stepBox_, &QComboBox::currentIndexChanged, this, &MainWindow::refreshScalars);
-  connect(colorMapBox_, &QComboBox::currentTextChanged, this, [this](const QString& name) {
+  connect(colorMapBox_, &QComboBox::currentIndexChanged, this, [this] {
+    const QString name = colorMapBox_->currentData().toString();
     changeScene([&](Scene& s) { s.setColorMap(name.toStdString()); });
     notifyPanels();
     QSettings("volpost", "volpost").setValue("view/colorMap", name);
@@ -798,6 +968,10 @@ void MainWindow::buildPanels() {
     d->setWidget(panel->createPanel(*this, d));
     addDockWidget(Qt::RightDockWidgetArea, d);
     resizeDocks({d}, {360}, Qt::Horizontal);  // the view keeps most of the window
+    // The volume's panels (the transfer-function editor) open with the volume: in the
+    // surface view they took a third of the window. A saved layout restores them as left.
+    d->hide();
+    pluginDocks_.push_back(d);
     if (probes_ && !tabifiedProbes) {  // the Probe panel shares this place, a tab away
       tabifyDockWidget(d, probes_->dock());
       d->raise();
@@ -807,14 +981,21 @@ void MainWindow::buildPanels() {
   // View > Plot Over Line: a dock beside the Probe panel.
   auto* lineDock = new QDockWidget("Plot Over Line", this);
   lineDock->setObjectName("linePlotDock");
-  linePlot_ = new LinePlotPanel([this]() -> const Scene& { return viewport_->scene(); }, lineDock);
+  linePlot_ = new LinePlotPanel([this]() -> const Scene& { return viewport_->scene(); },
+                                [this](std::optional<std::array<glm::dvec3, 2>> line) {
+                                  changeScene([&](Scene& s) { s.setPlotLine(line); });
+                                },
+                                lineDock);
   linePlot_->setObjectName("linePlotPanel");
   lineDock->setWidget(linePlot_);
   addDockWidget(Qt::RightDockWidgetArea, lineDock);
   if (probes_) tabifyDockWidget(probes_->dock(), lineDock);
   lineDock->hide();
+  connect(lineDock, &QDockWidget::visibilityChanged, this, [this, lineDock](bool visible) {
+    if (!visible && !lineDock->isVisible()) changeScene([](Scene& s) { s.setPlotLine(std::nullopt); });
+  });
   connect(linePlot_, &LinePlotPanel::message, this, [this](const QString& m) { statusBar()->showMessage(m); });
-  QAction* plotAction = viewMenu_->addAction("Plot Over &Line...", this, [this, lineDock] {
+  QAction* plotAction = resultsMenu_->addAction("Plot Over &Line...", this, [this, lineDock] {
     lineDock->show();
     lineDock->raise();
     if (linePlot_->useLastProbes()) linePlot_->plot();
@@ -984,13 +1165,16 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   viewport_->update();
   if (gridSlices_) {
     gridSlices_->followScene();
-    if (!session_->model().grid) gridSlices_->hide();
+    if (!session_->model().grid) gridSlicesDock_->hide();
   }
-  for (QAction* action : {volumeAction_, streamlinesAction_}) {
+  // What the scene dropped with the old model, the controls drop too (the deformed shape
+  // stayed checked; the plot kept the old model's curves).
+  for (QAction* action : {volumeAction_, streamlinesAction_, deformAction_, undeformedAction_}) {
     if (!action) continue;
     const QSignalBlocker block(action);
     action->setChecked(false);
   }
+  if (linePlot_) linePlot_->modelChanged();
   fitRendererToModel();
   if (auto* shading = findChild<QAction*>("shadingAction")) {
     const QSignalBlocker block(shading);
@@ -1179,6 +1363,10 @@ void MainWindow::showModelInfo() {
     html += "<br>";
   }
   html += QString("%1 boundary faces<br><br><b>Memory</b><br>").arg(session_->surface().boundaryFaceCount);
+  // What the process holds, all of it (this model, what is drawn, the program), then parts.
+  if (const std::size_t held = processResidentBytes())
+    html += QString("volpost holds %1 in all<br>").arg(QString::fromStdString(byteSizeText(double(held))));
+  html += QString("fields read: %1<br>").arg(QString::fromStdString(byteSizeText(double(Field::bytesHeldByAllFields()))));
   // Host: the cells, nodes and ids the model holds (fields are read on first use). The
   // volume renderer's figure is its structure's (GPU buffers, or host memory for the CPU
   // ray caster), as of its last frame.
@@ -1288,6 +1476,7 @@ void MainWindow::applyState(const SceneState& state) {
   rendererChosen_ = true;  // the state names its renderer
   syncControlsToScene();
   if (gridSlices_) gridSlices_->followScene();
+  if (linePlot_) linePlot_->followScene();
   viewport_->update();
   notifyPanels();
   statusBar()->showMessage("View restored from the state file");
@@ -1304,7 +1493,7 @@ void MainWindow::syncControlsToScene() {
     quantityBox_->setCurrentIndex(std::max(0, quantityBox_->findData(QString::fromStdString(state.quantity))));
     fillSteps();
     stepBox_->setCurrentIndex(int(state.step));
-    colorMapBox_->setCurrentText(QString::fromStdString(state.colorMap));
+    colorMapBox_->setCurrentIndex(std::max(0, colorMapBox_->findData(QString::fromStdString(state.colorMap))));
   }
   const auto check = [](QAction* action, bool on) {
     if (!action) return;

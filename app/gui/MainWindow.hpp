@@ -29,6 +29,7 @@ class VolumeRenderer;
 namespace volpost::app {
 
 class ProbeController;
+class Scene;
 class LinePlotPanel;
 class StepController;
 class Viewport;
@@ -110,7 +111,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   bool changeScene(Change&& change);
   void showModelInfo();
   void notifyPanels();
-  void buildVolumeMenu(QMenu* view);
+  void buildVolumeMenu(QMenu* volume, QMenu* results);
   void preferCpuOnSoftwareGl(const QString& description);
   /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
   /// renderer for a seismic cube, a mesh renderer for a mesh).
@@ -119,12 +120,16 @@ class MainWindow : public QMainWindow, public PanelHost {
   void setVolumeShown(bool on);
   void chooseClipBox();
   void typeClipPlane();
+  void checkClipAxisOf(const ClipPlane& plane);
   void applyClipBox(const ClipBox& box);
   void chooseIsoSurfaces();
+  void seeThroughSurface(Scene& scene, const QString& what);
+  void chooseSurfaceOpacity();
+  std::optional<std::string> chooseDisplacementField();
   void chooseStreamlines();
   void buildDeformationActions(QMenu* view);
   void showDeformation(bool on, std::optional<double> scale);
-  void placeRake(glm::dvec3 from, glm::dvec3 to);
+  void placeRake(std::vector<glm::dvec3> seeds);
 
  public:
   /// Traces the scene's streamlines on a worker thread (a cancellable progress dialog) if
@@ -155,13 +160,17 @@ class MainWindow : public QMainWindow, public PanelHost {
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
+  QMenu* resultsMenu_ = nullptr;
+  QMenu* volumeMenu_ = nullptr;
   ProbeController* probes_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   bool tracing_ = false;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
-  class GridSlicesDialog* gridSlices_ = nullptr;
+  class GridSlicesPanel* gridSlices_ = nullptr;
+  class QDockWidget* gridSlicesDock_ = nullptr;
+  std::vector<class QDockWidget*> pluginDocks_;  ///< the plugins' panels, opened with the volume
   QString lastPath_;              ///< the last file opened or tried (for File > Reader Options)
   ReaderOptions lastReaderOptions_;
   QString pendingStatePath_;

@@ -15,6 +15,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -23,11 +24,18 @@ namespace volpost::app {
 
 namespace {
 
-QString number(double v) { return QString::fromStdString(exactNumber(v)); }
+// On screen: the chosen significant digits; the item's tooltip, Copy and CSV: every digit.
+QString number(double v) { return QString::fromStdString(displayNumber(v)); }
 
 QTableWidgetItem* readOnly(const QString& text) {
   auto* item = new QTableWidgetItem(text);
   item->setFlags(item->flags() & ~Qt::ItemIsEditable);
+  return item;
+}
+
+QTableWidgetItem* readOnlyNumber(double v) {
+  QTableWidgetItem* item = readOnly(number(v));
+  item->setToolTip(QString::fromStdString(exactNumber(v)));
   return item;
 }
 
@@ -42,7 +50,7 @@ ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
   auto* typedRow = new QHBoxLayout;
   typed_ = new QLineEdit(this);
   typed_->setObjectName("probeTyped");
-  typed_->setPlaceholderText("X, Y, Z");
+  typed_->setPlaceholderText("X, Y, Z (or X Y Z)");
   auto* add = new QPushButton("Add", this);
   typedRow->addWidget(typed_);
   typedRow->addWidget(add);
@@ -78,6 +86,18 @@ ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
     buttons->addWidget(b);
     connect(b, &QPushButton::clicked, this, slot);
   };
+  digits_ = new QSpinBox(this);
+  digits_->setObjectName("probeDigits");
+  digits_->setRange(2, 17);
+  digits_->setValue(displayDigits());
+  digits_->setPrefix("digits: ");
+  digits_->setToolTip("Significant digits shown here and in tooltips; Copy and CSV give every digit");
+  connect(digits_, &QSpinBox::valueChanged, this, [this](int n) {
+    setDisplayDigits(n);
+    QSettings("volpost", "volpost").setValue("view/digits", n);
+    fillPicks();
+  });
+  buttons->addWidget(digits_);
   button("Copy", &ProbePanel::copyAll);
   button("Export CSV...", &ProbePanel::exportCsv);
   button("Remove", &ProbePanel::removeSelected);
@@ -109,13 +129,10 @@ void ProbePanel::fillPicks() {
   for (int row = 0; row < int(results_.size()); ++row) {
     const ProbeResult& r = results_[std::size_t(row)];
     const auto value = r.inside() && !quantityKey_.empty() ? r.value(quantityKey_) : std::nullopt;
-    const QString cells[6] = {QString::number(row + 1),
-                              number(r.point.x),
-                              number(r.point.y),
-                              number(r.point.z),
-                              r.inside() ? QString::number(r.cellId) : QString("outside"),
-                              value ? number(*value) : QString()};
-    for (int c = 0; c < 6; ++c) picks_->setItem(row, c, readOnly(cells[c]));
+    picks_->setItem(row, 0, readOnly(QString::number(row + 1)));
+    for (int c = 0; c < 3; ++c) picks_->setItem(row, 1 + c, readOnlyNumber(r.point[c]));
+    picks_->setItem(row, 4, readOnly(r.inside() ? QString::number(r.cellId) : QString("outside")));
+    picks_->setItem(row, 5, value ? readOnlyNumber(*value) : readOnly(QString()));
   }
   picks_->resizeColumnsToContents();
   if (!results_.empty()) picks_->selectRow(selected >= 0 && selected < int(results_.size()) ? selected : int(results_.size()) - 1);
@@ -151,7 +168,7 @@ void ProbePanel::fillDetails() {
       details_->insertRow(at);
       details_->setItem(at, 0, readOnly(QString::fromStdString(q.quantity.key()) +
                                         (f.location == FieldLocation::Cell ? " (element)" : "")));
-      details_->setItem(at, 1, readOnly(number(q.value)));
+      details_->setItem(at, 1, readOnlyNumber(q.value));
     }
   details_->resizeColumnsToContents();
 }
@@ -175,6 +192,7 @@ void ProbePanel::addTyped() {
   std::vector<glm::dvec3> all = points();
   all.push_back(*p);
   typed_->clear();
+  typed_->clearFocus();  // the next shortcut letter goes to the window, not into the field
   emit pointsChanged(all);
 }
 

@@ -14,6 +14,7 @@
 
 class QLabel;
 class QLineEdit;
+class QSpinBox;
 class QPushButton;
 class QTableWidget;
 
@@ -49,6 +50,7 @@ class ProbePanel : public QWidget {
   std::shared_ptr<const ModelSession> session_;
   std::vector<ProbeResult> results_;
   std::string quantityKey_;
+  QSpinBox* digits_ = nullptr;
   QLineEdit* typed_ = nullptr;
   QTableWidget* picks_ = nullptr;
   QTableWidget* details_ = nullptr;

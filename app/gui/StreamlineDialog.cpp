@@ -13,7 +13,7 @@
 
 namespace volpost::app {
 
-StreamlineDialog::StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer, double surfaceOpacity,
+StreamlineDialog::StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer,
                                    QWidget* parent)
     : QDialog(parent), original_(layer) {
   setWindowTitle("Streamlines");
@@ -55,13 +55,18 @@ StreamlineDialog::StreamlineDialog(const ModelSession& session, const Streamline
   direction_->addItem("Upstream", int(StreamlineDirection::Backward));
   direction_->setCurrentIndex(direction_->findData(int(layer.settings.direction)));
   form->addRow("Direction:", direction_);
-  tolerance_ = new QDoubleSpinBox(this);
-  tolerance_->setDecimals(1);
-  tolerance_->setRange(-12.0, -1.0);
-  tolerance_->setValue(std::log10(layer.settings.tolerance));
-  tolerance_->setPrefix("10^");
-  tolerance_->setToolTip("Largest position error per step, as a fraction of the model's size");
-  form->addRow("Step error:", tolerance_);
+  // The accuracy as a user reads it: the error a step may make, a fraction of the model.
+  tolerance_ = new QComboBox(this);
+  tolerance_->setObjectName("streamlineTolerance");
+  for (int e = 2; e <= 10; ++e)
+    tolerance_->addItem(QString("1e-%1 of the model's size%2").arg(e).arg(e == 5 ? " (default)" : ""),
+                        std::pow(10.0, -e));
+  if (tolerance_->findData(layer.settings.tolerance) < 0)
+    tolerance_->addItem(QString("%1 of the model's size").arg(layer.settings.tolerance, 0, 'g', 3), layer.settings.tolerance);
+  tolerance_->setCurrentIndex(tolerance_->findData(layer.settings.tolerance));
+  tolerance_->setToolTip("The largest error a step may make in the line's position, as a fraction of the model's "
+                         "size: smaller is more accurate and slower");
+  form->addRow("Accuracy per step:", tolerance_);
   colorBy_ = new QComboBox(this);
   colorBy_->addItem("Speed", QString());
   for (const Quantity& q : session.quantities()) colorBy_->addItem(QString::fromStdString(q.displayName()), QString::fromStdString(q.key()));
@@ -75,18 +80,12 @@ StreamlineDialog::StreamlineDialog(const ModelSession& session, const Streamline
   tubes_ = new QCheckBox("Shaded tubes instead of lit lines", this);
   tubes_->setChecked(layer.style.tubes);
   form->addRow(tubes_);
-  arrows_ = new QCheckBox("Arrows along the lines (with tubes)", this);
+  arrows_ = new QCheckBox("Arrows along the lines, pointing downstream", this);
   arrows_->setChecked(layer.style.arrows);
   form->addRow(arrows_);
   average_ = new QCheckBox("Average a per-element field at the nodes (an approximation)", this);
   average_->setChecked(layer.averageCellVectors);
   form->addRow(average_);
-  opacity_ = new QDoubleSpinBox(this);
-  opacity_->setRange(0.0, 1.0);
-  opacity_->setSingleStep(0.05);
-  opacity_->setValue(surfaceOpacity);
-  opacity_->setToolTip("Below 1 the model's surface is see-through and the lines inside show");
-  form->addRow("Surface opacity:", opacity_);
   auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
   connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
   connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -102,7 +101,7 @@ StreamlineLayer StreamlineDialog::layer() const {
     if (!line.trimmed().isEmpty()) l.seeds.push_back(line.trimmed().toStdString());
   l.settings.method = StreamlineMethod(integrator_->currentData().toInt());
   l.settings.direction = StreamlineDirection(direction_->currentData().toInt());
-  l.settings.tolerance = std::pow(10.0, tolerance_->value());
+  l.settings.tolerance = tolerance_->currentData().toDouble();
   l.colorBy = colorBy_->currentData().toString().toStdString();
   l.style.width = float(width_->value());
   l.style.tubes = tubes_->isChecked();
@@ -110,7 +109,5 @@ StreamlineLayer StreamlineDialog::layer() const {
   l.averageCellVectors = average_->isChecked();
   return l;
 }
-
-double StreamlineDialog::surfaceOpacity() const { return opacity_->value(); }
 
 }  // namespace volpost::app

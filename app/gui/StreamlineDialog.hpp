@@ -20,23 +20,21 @@ class StreamlineDialog : public QDialog {
   Q_OBJECT
 
  public:
-  StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer, double surfaceOpacity, QWidget* parent);
+  StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer, QWidget* parent);
   /// The layer as the dialog shows it (shown = true).
   StreamlineLayer layer() const;
-  double surfaceOpacity() const;
 
  private:
   QComboBox* field_ = nullptr;
   QPlainTextEdit* seeds_ = nullptr;
   QComboBox* integrator_ = nullptr;
   QComboBox* direction_ = nullptr;
-  QDoubleSpinBox* tolerance_ = nullptr;
+  QComboBox* tolerance_ = nullptr;
   QComboBox* colorBy_ = nullptr;
   QDoubleSpinBox* width_ = nullptr;
   QCheckBox* tubes_ = nullptr;
   QCheckBox* arrows_ = nullptr;
   QCheckBox* average_ = nullptr;
-  QDoubleSpinBox* opacity_ = nullptr;
   StreamlineLayer original_;
 };
 

@@ -115,7 +115,7 @@ void Viewport::paintGL() {
 void Viewport::drawLegend(int w, int h) {
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
   if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad() &&
-      !scene_.showsPlaneWidget() && !scene_.showsBoxWidget())
+      !scene_.showsPlaneWidget() && !scene_.showsBoxWidget() && !scene_.plotLine() && !scene_.showsRakes())
     return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
@@ -156,6 +156,21 @@ glm::dvec3 Viewport::pointInTargetPlane(const QPointF& pixel) const {
   const glm::dvec3 normal = camera.viewDirection();
   const double t = glm::dot(camera.target() - a, normal) / glm::dot(b - a, normal);
   return a + t * (b - a);
+}
+
+// A rake's seed under a pixel: halfway through the model where the pixel's ray first crosses
+// it (a thin part seen face on gets its seeds inside it, not in a plane through the view's
+// centre that misses it between spokes or holes); nullopt off the model.
+std::optional<glm::dvec3> Viewport::rakePointAt(const QPointF& pixel) const {
+  if (!scene_.session()) return std::nullopt;
+  const PickRay ray = pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height());
+  const auto entry = pickSurface(*scene_.session(), ray);
+  if (!entry) return std::nullopt;
+  const double slack = 1e-9 * std::max(scene_.session()->bounds().diagonal(), 1e-300);
+  const auto exit = pickSurface(*scene_.session(), ray, [&](const glm::dvec3& p) {
+    return glm::dot(p - ray.origin, ray.direction) > entry->distance + slack;
+  });
+  return exit ? 0.5 * (entry->point + exit->point) : entry->point;
 }
 
 void Viewport::setProbeMode(bool on) {
@@ -233,7 +248,15 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
   const QPointF a = *rakeStart_, b = event->position();
   setRakeMode(false);
   if ((b - a).manhattanLength() < 4.0) return;  // a click, not a rake
-  emit rakePlaced(pointInTargetPlane(a), pointInTargetPlane(b));
+  // 20 seeds along the dragged line, each placed through the model under it; pixels off the
+  // model give none. Off the model altogether: the line in the plane through the view's centre.
+  constexpr int kSeeds = 20;
+  std::vector<glm::dvec3> seeds;
+  for (int i = 0; i < kSeeds; ++i)
+    if (const auto p = rakePointAt(a + (b - a) * (double(i) / (kSeeds - 1)))) seeds.push_back(*p);
+  if (seeds.empty())
+    for (int i = 0; i < kSeeds; ++i) seeds.push_back(pointInTargetPlane(a + (b - a) * (double(i) / (kSeeds - 1))));
+  emit rakePlaced(seeds);
 }
 
 // Escape leaves rake placement without seeds (the lines shown stay as they were).

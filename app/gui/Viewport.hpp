@@ -19,6 +19,7 @@
 class QTimer;
 
 #include <optional>
+#include <vector>
 
 namespace volpost::app {
 
@@ -44,11 +45,13 @@ class Viewport : public QOpenGLWidget {
   void moveClipPlane(double distance);
 
   /// Rake mode: a left drag draws a line in the plane through the view's target, facing the
-  /// viewer; on release rakePlaced() gives its ends (model coordinates). Off after one rake.
+  /// viewer; on release rakePlaced() gives its 20 seeds, each halfway through the model under its
+  /// point of the dragged line (so a rake across holes or a thin part still seeds it). Off after one rake.
   void setRakeMode(bool on);
   bool rakeMode() const { return rakeMode_; }
   /// The point of that plane under a pixel of the widget.
   glm::dvec3 pointInTargetPlane(const QPointF& pixel) const;
+  std::optional<glm::dvec3> rakePointAt(const QPointF& pixel) const;
 
   /// Probe mode: a left click (no drag) on the model emits picked() with the surface point
   /// under it; resting the mouse emits hovered(). Drags still orbit.
@@ -70,7 +73,8 @@ class Viewport : public QOpenGLWidget {
   /// The picture shown is a quick one; the renderer is computing the full one (or is done).
   void refining(bool on);
   void renderFailed(const QString& message);
-  void rakePlaced(glm::dvec3 from, glm::dvec3 to);
+  /// The seeds of a rake dragged across the view (model coordinates, in order).
+  void rakePlaced(std::vector<glm::dvec3> seeds);
   void picked(glm::dvec3 point);
   /// The mouse rests over the model at `point` (hit) or off it (not hit).
   void hovered(QPoint globalPosition, bool hit, glm::dvec3 point);

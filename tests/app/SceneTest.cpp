@@ -15,6 +15,7 @@
 #include "core/Legend.hpp"
 #include "core/Probe.hpp"
 #include "core/SceneImage.hpp"
+#include "core/SceneOverlay.hpp"
 #include "core/VolumeDefaults.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
@@ -321,22 +322,24 @@ TEST(AnimationFrames, NumbersGoBeforeTheExtensionPaddedToTheCount) {
 }
 
 // A signed result's default is dense at both ends and clear at zero (no shell of high
-// values hides the lowest); a one-signed result's rises with the value.
+// values hides the lowest); a one-signed result's rises from clear with the value.
 TEST(VolumeDefaults, SignedResultsAreDenseAtBothEndsAndClearAtZero) {
   ScalarView signedView;
   signedView.setValues({-40.0, 0.0, 100.0});
   signedView.range = rangeOf(signedView.values);
   const TransferFunction tf = defaultTransferFunction(signedView, 1.0);
   const double tauMax = 24.0;
-  EXPECT_NEAR(tf.extinction(0.0), 0.1 * tauMax, 1e-9);
+  EXPECT_EQ(tf.extinction(0.0), 0.0);
   EXPECT_NEAR(tf.extinction(100.0), tauMax, 1e-9);
-  EXPECT_NEAR(tf.extinction(-40.0), tauMax * (0.1 + 0.9 * 0.4), 1e-9);
+  EXPECT_NEAR(tf.extinction(-40.0), tauMax * 0.4, 1e-9);
   EXPECT_GT(tf.extinction(-40.0), tf.extinction(-10.0));
   ScalarView positive;
   positive.setValues({10.0, 30.0});
   positive.range = rangeOf(positive.values);
   const TransferFunction rising = defaultTransferFunction(positive, 1.0);
-  EXPECT_NEAR(rising.extinction(10.0), 0.1 * tauMax, 1e-9);
+  // Clear at the lowest value: a floor of 10 % veiled the whole model in a fog.
+  EXPECT_EQ(rising.extinction(10.0), 0.0);
+  EXPECT_NEAR(rising.extinction(20.0), 0.5 * tauMax, 1e-9);
   EXPECT_NEAR(rising.extinction(30.0), tauMax, 1e-9);
 }
 
@@ -561,4 +564,60 @@ TEST_F(SceneWithContext, TheCpuRendererSwitchesBetweenAGridsPointAndCellFields) 
   EXPECT_EQ(picture(scene, "temperature"), points);
   EXPECT_EQ(picture(scene, "material"), cells) << "the grid's tetrahedra, with the cell values";
   EXPECT_EQ(picture(scene, "temperature"), points) << "the grid again";
+}
+
+// Under a typed range the legend's footer still names the data's own extremes (it said
+// "min -20 max 20" for data down to -42.4), and streamlines add their key beside the
+// result's instead of replacing it; a 2D transfer function's volume keeps a legend saying
+// where its colors come from.
+TEST(Scene, TheLegendNamesTheDataExtremesAndKeepsEveryKey) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.xx", 0);
+  const ValueRange data = scene.view()->range;
+  scene.setFixedRange(DisplayRange{data.min / 2, data.max / 2});
+  const auto legends = scene.legends();
+  ASSERT_EQ(legends.size(), 1u);
+  EXPECT_EQ(legends[0].content.min, data.min / 2);
+  ASSERT_TRUE(legends[0].content.dataMin && legends[0].content.dataMax);
+  EXPECT_EQ(*legends[0].content.dataMin, data.min);
+  EXPECT_EQ(*legends[0].content.dataMax, data.max);
+  StreamlineLayer lines;
+  lines.shown = true;
+  lines.field = "U";
+  lines.seeds = {"line:0.5,0.2,0.5:0.5,0.8,0.5:5"};
+  scene.setStreamlines(lines);
+  scene.setStreamlineResult(scene.traceStreamlines());
+  const auto both = scene.legends();
+  ASSERT_EQ(both.size(), 2u) << "the streamlines' key replaced the result's";
+  EXPECT_EQ(both[0].content.title.toStdString(), scene.view()->quantity.displayName());
+  EXPECT_EQ(both[1].content.title.toStdString(), "U speed");
+}
+
+// A probed point or an extreme where a clip plane removed the model is not drawn over the
+// picture (they stayed drawn in empty space).
+TEST(Scene, MarkersWhereAClipPlaneRemovedTheModelAreNotDrawn) {
+  Scene scene(rayCasterOnly());
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  scene.camera().setView(StandardView::PlusY);
+  scene.fitCamera();
+  const glm::dvec3 kept(7.5, 0.5, 0.5), removed(2.5, 0.5, 0.5);
+  scene.setProbes({kept, removed});
+  const auto markedPixels = [&](const glm::dvec3& point) {
+    QImage image(400, 200, QImage::Format_ARGB32);
+    image.fill(Qt::transparent);
+    paintSceneOverlay(image, scene);
+    const auto at = projectToPicture(scene.pictureCamera(400, 200), point, 400, 200);
+    int n = 0;
+    for (int dy = -3; dy <= 3; ++dy)
+      for (int dx = -3; dx <= 3; ++dx) n += qAlpha(image.pixel(int(at->x) + dx, int(at->y) + dy)) > 0;
+    return n;
+  };
+  EXPECT_GT(markedPixels(removed), 0);
+  scene.setClipPlanes({ClipPlane{{5.0, 0.5, 0.5}, {1.0, 0.0, 0.0}}});  // keeps x > 5
+  EXPECT_GT(markedPixels(kept), 0);
+  EXPECT_EQ(markedPixels(removed), 0) << "a marker drawn where the model was cut away";
 }

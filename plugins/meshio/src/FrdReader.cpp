@@ -90,7 +90,9 @@ class FrdParser {
   std::size_t idWidth(int format) const { return format == 0 ? 5 : 10; }
 
   std::string_view recordLine(const char* where) {
-    if (s_.atEnd()) s_.fail(std::string("file ends inside the ") + where + " (truncated: no ' -3')");
+    if (s_.atEnd())
+      s_.fail(std::string("the file ends inside the ") + where +
+              ": the line ' -3' that closes a block never comes (the file was cut short)");
     line_ = s_.nextLine();
     return trim(column(0, 3));
   }

@@ -180,7 +180,8 @@ class GmshParser {
     while (!s_.atEnd() && (line = trim(s_.nextLine())).empty()) {
     }
     if (line != "$End" + name) {
-      if (line.empty()) s_.fail("file ends inside $" + name + " (truncated: no $End" + name + ")");
+      if (line.empty())
+        s_.fail("the file ends inside $" + name + ": its closing $End" + name + " never comes (the file was cut short)");
       s_.fail("expected $End" + name + ", found '" + std::string(line.substr(0, 40)) +
               "' (the section holds more or fewer records than its header says)");
     }

@@ -70,6 +70,16 @@ std::string byteSizeText(double bytes) {
   return text;
 }
 
+std::size_t processResidentBytes() {
+  std::FILE* f = std::fopen("/proc/self/statm", "r");
+  if (!f) return 0;
+  unsigned long long size = 0, resident = 0;
+  const int read = std::fscanf(f, "%llu %llu", &size, &resident);
+  std::fclose(f);
+  const long page = sysconf(_SC_PAGESIZE);
+  return read == 2 && page > 0 ? std::size_t(resident) * std::size_t(page) : 0;
+}
+
 std::size_t memoryBudget() {
   const std::size_t set = g_budget.load();
   if (set) return set;

@@ -23,6 +23,8 @@ void setMemoryBudget(std::size_t bytes);
 /// default). Regular grids larger than it are drawn in bricks streamed through it.
 std::size_t gpuMemoryBudget();
 void setGpuMemoryBudget(std::size_t bytes);
+/// The memory this process holds now (resident, bytes; /proc/self/statm), 0 where unknown.
+std::size_t processResidentBytes();
 /// Parses "512M", "8G", "1.5T", "1000000" (bytes); 0 when the text is not a size.
 std::size_t parseByteSize(const std::string& text);
 /// "3.2 GB", "512 MB", for messages.
