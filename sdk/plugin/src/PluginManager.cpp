@@ -32,9 +32,25 @@ QString checkMetadata(const QJsonObject& meta, PluginRecord& record) {
     return QString("built against volpost SDK %1, this volpost has SDK %2; rebuild the plugin "
                    "against this SDK")
         .arg(record.sdkVersion.isEmpty() ? "(unknown)" : record.sdkVersion, VOLPOST_SDK_VERSION);
-  if (!iid.endsWith(QString("/%1").arg(VOLPOST_SDK_VERSION_MAJOR)))
-    return QString("declares interface %1, which this SDK (%2) does not provide").arg(iid, VOLPOST_SDK_VERSION);
-  return {};
+  // The interface it implements, at its own version.
+  struct Interface {
+    const char* name;
+    const char* words;
+    int version;
+  };
+  const Interface interfaces[] = {{"ReaderPlugin", "reader", VOLPOST_READER_INTERFACE_VERSION},
+                                  {"RendererPlugin", "renderer", VOLPOST_RENDERER_INTERFACE_VERSION},
+                                  {"PanelPlugin", "panel", VOLPOST_PANEL_INTERFACE_VERSION}};
+  const QString kind = iid.section('/', 0, 0).section('.', -1), version = iid.section('/', 1);
+  for (const Interface& i : interfaces)
+    if (kind == i.name) {
+      if (version == QString::number(i.version)) return {};
+      return QString("implements the %1 interface version %2; this volpost provides version %3: rebuild the "
+                     "plugin against this SDK")
+          .arg(i.words, version.isEmpty() ? QString("(none)") : version)
+          .arg(i.version);
+    }
+  return QString("declares interface %1, which this SDK (%2) does not provide").arg(iid, VOLPOST_SDK_VERSION);
 }
 
 }  // namespace

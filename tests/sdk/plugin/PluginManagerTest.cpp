@@ -30,11 +30,16 @@ TEST(PluginManager, LoadsTheBundledReaderPlugin) {
 TEST(PluginManager, RefusesOtherSdkVersionsAndNonPluginsWithReasons) {
   PluginManager plugins;
   plugins.loadFrom({REFUSED_PLUGIN_DIR});
-  ASSERT_EQ(plugins.records().size(), 2u);
+  ASSERT_EQ(plugins.records().size(), 3u);
   for (const PluginRecord& r : plugins.records()) {
     EXPECT_FALSE(r.loaded);
     if (r.path.contains("oldsdk"))
       EXPECT_NE(r.error.toStdString().find("built against volpost SDK 0.9"), std::string::npos) << r.error.toStdString();
+    else if (r.path.contains("oldreader"))  // this SDK, another reader interface: refused for that alone
+      EXPECT_NE(r.error.toStdString().find("implements the reader interface version 7; this volpost provides version " +
+                                           std::to_string(VOLPOST_READER_INTERFACE_VERSION)),
+                std::string::npos)
+          << r.error.toStdString();
     else
       EXPECT_NE(r.error.toStdString().find("not a Qt plugin"), std::string::npos) << r.error.toStdString();
   }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// The Qt plugin interfaces of volpost. Each IID carries the SDK's major version: a plugin
-// built against another major version does not cast to these interfaces, and the host
-// refuses it from its metadata before loading it (see PluginManager).
+// The Qt plugin interfaces of volpost. Each IID carries the version of its own interface
+// (VOLPOST_*_INTERFACE_VERSION): a plugin built against another version of the interface it
+// implements does not cast to it, and the host refuses it from its metadata before loading
+// it (see PluginManager); a change of one interface leaves plugins of the others alone.
 #pragma once
 
 #include <volpost/core/MeshReader.hpp>
@@ -10,6 +11,7 @@
 #include <volpost/core/SampleView.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
+#include <volpost/core/Version.hpp>
 
 #include <QtPlugin>
 #include <QList>
@@ -89,9 +91,11 @@ class PanelPlugin {
 
 }  // namespace volpost
 
-#define VOLPOST_READER_PLUGIN_IID "org.volpost.ReaderPlugin/8"
-#define VOLPOST_RENDERER_PLUGIN_IID "org.volpost.RendererPlugin/8"
-#define VOLPOST_PANEL_PLUGIN_IID "org.volpost.PanelPlugin/8"
+#define VOLPOST_IID_TEXT(x) #x
+#define VOLPOST_IID(name, version) "org.volpost." name "/" VOLPOST_IID_TEXT(version)
+#define VOLPOST_READER_PLUGIN_IID VOLPOST_IID("ReaderPlugin", VOLPOST_READER_INTERFACE_VERSION)
+#define VOLPOST_RENDERER_PLUGIN_IID VOLPOST_IID("RendererPlugin", VOLPOST_RENDERER_INTERFACE_VERSION)
+#define VOLPOST_PANEL_PLUGIN_IID VOLPOST_IID("PanelPlugin", VOLPOST_PANEL_INTERFACE_VERSION)
 
 Q_DECLARE_INTERFACE(volpost::ReaderPlugin, VOLPOST_READER_PLUGIN_IID)
 Q_DECLARE_INTERFACE(volpost::RendererPlugin, VOLPOST_RENDERER_PLUGIN_IID)
