@@ -16,6 +16,7 @@ packages=(
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # videos of animations
   libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core            # GUI tests on a virtual display; legend text
+  clang-format                            # the format check of changed lines (.ci/run)
 )
 
 missing=()

@@ -21,9 +21,11 @@ struct StreamlineOptions {
                                             "(default 1e-5).", "T"};
   QCommandLineOption maxSteps{"max-steps", "Most steps per direction (default 20000).", "N"};
   QCommandLineOption maxLength{"max-length", "Longest line per direction, model units (default 20 x the model).", "L"};
-  QCommandLineOption pointSpacing{"point-spacing", "Model units between written points inside a step, each "
-                                                  "integrated as accurately as the step ends (default 0: the "
-                                                  "step ends only).", "D"};
+  QCommandLineOption pointSpacing{"point-spacing",
+                                  "Model units between written points inside a step, each "
+                                  "integrated as accurately as the step ends (default 0: the "
+                                  "step ends only).",
+                                  "D"};
   QCommandLineOption colorBy{"color-lines-by", "Quantity the lines are colored by (default: the speed).", "Q"};
   QCommandLineOption averageCells{"average-cell-vectors", "Trace a field given per element by averaging it at the "
                                                           "nodes (an approximation)."};

@@ -63,7 +63,8 @@ std::string floatImageBytes(const std::string& path, int width, int height, cons
   const std::string ext = extensionOf(path);
   if (ext == ".npy") return npy(width, height, rgba);
   if (ext == ".pfm") return pfm(width, height, rgba, background);
-  throw WriteError(path, "float images are written as .npy (RGBA) or .pfm (RGB over the background), not '" + ext + "'");
+  throw WriteError(path,
+                   "float images are written as .npy (RGBA) or .pfm (RGB over the background), not '" + ext + "'");
 }
 
 void writeFloatImage(const std::string& path, int width, int height, const std::vector<float>& rgba,

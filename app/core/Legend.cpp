@@ -80,9 +80,10 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     // The data's own extremes, whatever range the colors span.
     const double lo = c.dataMin.value_or(c.min), hi = c.dataMax.value_or(c.max);
     const bool differs = c.dataMin && c.dataMax && (lo != c.min || hi != c.max);
-    const QString rangeText = QString("%1min %2  max %3").arg(differs ? "data " : "").arg(lo, 0, 'g', 5).arg(hi, 0, 'g', 5);
-    painter.drawText(QRect(area.left(), y, area.right() - 4 - area.left(), fm.height()), Qt::AlignRight | Qt::AlignVCenter,
-                     rangeText);
+    const QString rangeText =
+        QString("%1min %2  max %3").arg(differs ? "data " : "").arg(lo, 0, 'g', 5).arg(hi, 0, 'g', 5);
+    painter.drawText(QRect(area.left(), y, area.right() - 4 - area.left(), fm.height()),
+                     Qt::AlignRight | Qt::AlignVCenter, rangeText);
     if (c.noValueCount)
       painter.drawText(QRect(area.left(), y + fm.height(), area.right() - 4 - area.left(), fm.height()),
                        Qt::AlignRight | Qt::AlignVCenter, QString("%1 without value (gray)").arg(c.noValueCount));

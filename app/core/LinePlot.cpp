@@ -39,15 +39,16 @@ void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& s) {
   // The key: as many columns (up to 3) as its longest name leaves room for; names are cut
   // with an ellipsis only when one column cannot hold them.
   int nameWidth = 0;
-  for (const std::string& name : s.names) nameWidth = std::max(nameWidth, fm.horizontalAdvance(QString::fromStdString(name)));
+  for (const std::string& name : s.names)
+    nameWidth = std::max(nameWidth, fm.horizontalAdvance(QString::fromStdString(name)));
   const int keyEntry = nameWidth + 40;
   const int columns = std::clamp(area.width() / std::max(keyEntry, 1), 1, std::max(1, std::min(3, int(s.keys.size()))));
   const int keyRows = int((s.keys.size() + std::size_t(columns) - 1) / std::size_t(columns));
   const int keyHeight = fm.height() * keyRows;
   // Room at the right for half of the last x label, at the left for the y axis's title.
   const int rightMargin = std::max(16, fm.horizontalAdvance(tickText(xTicks.empty() ? length : xTicks.back())) / 2 + 6);
-  const QRect plot = area.adjusted(labelWidth + 14 + fm.height(), fm.height() + keyHeight + 8, -rightMargin,
-                                   -2 * fm.height() - 10);
+  const QRect plot =
+      area.adjusted(labelWidth + 14 + fm.height(), fm.height() + keyHeight + 8, -rightMargin, -2 * fm.height() - 10);
   const auto px = [&](double a) { return plot.left() + a / length * plot.width(); };
   const auto py = [&](double v) { return plot.bottom() - (v - lo) / (hi - lo) * plot.height(); };
   painter.setPen(QPen(QColor(225, 225, 225), 1.0));

@@ -30,6 +30,7 @@ std::string probeTable(const std::vector<ProbeResult>& rows, const std::vector<s
 /// The same table in parts, for tables written as they are probed: its header line, and
 /// the lines of some rows.
 std::string probeTableHeader(const std::vector<std::string>& keys, char separator = ',');
-std::string probeTableRows(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys, char separator = ',');
+std::string probeTableRows(const std::vector<ProbeResult>& rows, const std::vector<std::string>& keys,
+                           char separator = ',');
 
 }  // namespace volpost::app

@@ -5,7 +5,6 @@
 #include "PlaneWidget.hpp"
 #include "StreamlineSeeds.hpp"
 
-
 #include <QFontMetrics>
 #include <QPainter>
 #include <QPainterPath>

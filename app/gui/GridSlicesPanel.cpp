@@ -14,7 +14,6 @@ namespace volpost::app {
 
 GridSlicesPanel::GridSlicesPanel(Scene& scene, std::function<void()> changed, QWidget* parent)
     : QWidget(parent), scene_(scene), changed_(std::move(changed)) {
-
   auto* grid = new QGridLayout(this);
   for (int a = 0; a < 3; ++a) {
     shown_[std::size_t(a)] = new QCheckBox(this);

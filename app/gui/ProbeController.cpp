@@ -104,10 +104,13 @@ void ProbeController::showHover(QPoint globalPosition, bool hit, const glm::dvec
     if (scene.view()) {
       const auto& view = *scene.view();
       const auto v = r.value(view.quantity.key());
-      text += QString("\n%1 = %2").arg(QString::fromStdString(view.quantity.displayName()),
-                                        v ? QString::fromStdString(displayNumber(*v)) : QString("no value"));
+      text += QString("\n%1 = %2")
+                  .arg(QString::fromStdString(view.quantity.displayName()),
+                       v ? QString::fromStdString(displayNumber(*v)) : QString("no value"));
       if (view.location == FieldLocation::Node && r.nearestNode < view.values.size())
-        text += QString("\nat node %1: %2").arg(r.nearestNodeId).arg(QString::fromStdString(displayNumber(view.values[r.nearestNode])));
+        text += QString("\nat node %1: %2")
+                    .arg(r.nearestNodeId)
+                    .arg(QString::fromStdString(displayNumber(view.values[r.nearestNode])));
     }
     QToolTip::showText(globalPosition, text, &viewport_);
   } catch (const std::exception&) {

@@ -13,8 +13,7 @@
 
 namespace volpost::app {
 
-StreamlineDialog::StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer,
-                                   QWidget* parent)
+StreamlineDialog::StreamlineDialog(const ModelSession& session, const StreamlineLayer& layer, QWidget* parent)
     : QDialog(parent), original_(layer) {
   setWindowTitle("Streamlines");
   auto* form = new QFormLayout(this);
@@ -62,10 +61,12 @@ StreamlineDialog::StreamlineDialog(const ModelSession& session, const Streamline
     tolerance_->addItem(QString("1e-%1 of the model's size%2").arg(e).arg(e == 5 ? " (default)" : ""),
                         std::pow(10.0, -e));
   if (tolerance_->findData(layer.settings.tolerance) < 0)
-    tolerance_->addItem(QString("%1 of the model's size").arg(layer.settings.tolerance, 0, 'g', 3), layer.settings.tolerance);
+    tolerance_->addItem(QString("%1 of the model's size").arg(layer.settings.tolerance, 0, 'g', 3),
+                        layer.settings.tolerance);
   tolerance_->setCurrentIndex(tolerance_->findData(layer.settings.tolerance));
-  tolerance_->setToolTip("The largest error a step may make in the line's position, as a fraction of the model's "
-                         "size: smaller is more accurate and slower");
+  tolerance_->setToolTip(
+      "The largest error a step may make in the line's position, as a fraction of the model's "
+      "size: smaller is more accurate and slower");
   form->addRow("Accuracy per step:", tolerance_);
   colorBy_ = new QComboBox(this);
   colorBy_->addItem("Speed", QString());

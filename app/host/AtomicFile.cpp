@@ -1,18 +1,18 @@
 // SPDX-License-Identifier: MIT
 #include "host/AtomicFile.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <array>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
-#include <mutex>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <memory>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <mutex>
 #include <vector>
 
 namespace volpost {

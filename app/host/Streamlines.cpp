@@ -352,7 +352,8 @@ void StreamlineTracer::traceOneWay(const glm::dvec3& seed, std::uint32_t seedTet
     const double remaining = maxLength - length;
     const bool lastStep = glm::length(end - at.x) > remaining;
     if (lastStep) {
-      const Reached r = firstStepReaching(at, h, [&](const glm::dvec3& p) { return glm::length(p - at.x) >= remaining; });
+      const Reached r =
+          firstStepReaching(at, h, [&](const glm::dvec3& p) { return glm::length(p - at.x) >= remaining; });
       end = r.end;
       stepTaken = r.step;
     }

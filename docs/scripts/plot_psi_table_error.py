@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Plots docs/psi_table_error.csv (written by `volpost_optics_bench --csv`) to
+# Plots docs/results/psi_table_error.csv (written by `volpost_optics_bench --csv`) to
 # docs/images/psi_table_error.png. Needs Debian's python3-matplotlib (docs only).
 import csv
 import pathlib
@@ -10,7 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).resolve().parent.parent
-rows = list(csv.DictReader(open(here / "psi_table_error.csv")))
+rows = list(csv.DictReader(open(here / "results" / "psi_table_error.csv")))
 n = [int(r["resolution"]) for r in rows]
 fig, ax = plt.subplots(figsize=(6, 4), dpi=110)
 ax.loglog(n, [float(r["max_abs_error"]) for r in rows], "o-", label="max |error|")

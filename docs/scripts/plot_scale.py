@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Plots the table `volpost_scale_bench` prints (saved as docs/scale_bench_cpu.md) to
+# Plots the table `volpost_scale_bench` prints (saved as docs/results/scale_bench_cpu.md) to
 # docs/images/scale.png: seconds per stage to the first volume picture, and host bytes per
 # tet, against the number of tets. Needs Debian's python3-matplotlib (docs only).
 import pathlib
@@ -11,7 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).resolve().parent.parent
-source = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "scale_bench_cpu.md"
+source = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here / "results" / "scale_bench_cpu.md"
 rows = []
 header = None
 for line in source.read_text().splitlines():

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-# Speed against error of the GPU volume renderers: reads docs/volume_speed_error.csv
+# Speed against error of the GPU volume renderers: reads docs/results/volume_speed_error.csv
 # (written by `volpost_volume_bench --csv`) and draws docs/images/volume_speed_error.png.
 # Needs Debian's python3-matplotlib (docs only).
 import csv
@@ -11,7 +11,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 here = pathlib.Path(__file__).resolve().parent.parent
-rows = list(csv.DictReader(open(here / "volume_speed_error.csv")))
+rows = list(csv.DictReader(open(here / "results" / "volume_speed_error.csv")))
 markers = {"linear": "o", "iso-table": "s", "pre-integrated": "^", "sampling": "x",
            "vicp linear": "D", "vicp pre-integrated": "v", "vicp sampling": "1",
            "vicp-exact linear": "P", "vicp-exact pre-integrated": "*", "vicp-exact sampling": "2"}

@@ -4,13 +4,13 @@
 // volumes, regular grids, state and transfer-function files, streamlines, probing and
 // outputs. Each ends in seconds, within a memory cap, with exit 1 (a bad file) or 2 (a bad
 // option) and words that say what is wrong, or is read whole with its defect flagged.
-#include "support/TestSupport.hpp"
 #include "ProcessRunner.hpp"
+#include "support/TestSupport.hpp"
 
+#include <sys/stat.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/stat.h>
 
 using volpost::test::dataFile;
 using volpost::test::runVolpost;
@@ -49,25 +49,27 @@ std::string deeplyNested(const std::string& before, const std::string& after) {
 TEST(HostileSecondSet, DeeplyNestedJsonIsRefusedNamingTheKey) {
   // A serializer recursing on a sub-tree 100,000 deep overflowed the stack (SIGSEGV).
   const std::string state = temp("deep_state.json"), tf = temp("deep_tf.json"), tf2d = temp("deep.tf2d.json");
-  std::ofstream(state) << deeplyNested(R"({"format": "volpost-state", "version": 1, "model": "", "volume": {"transferFunction": {"points": )", "}}}");
+  std::ofstream(state) << deeplyNested(
+      R"({"format": "volpost-state", "version": 1, "model": "", "volume": {"transferFunction": {"points": )", "}}}");
   std::ofstream(tf) << deeplyNested(R"({"format": "volpost-tf", "version": )", R"(, "points": []})");
   std::ofstream(tf2d) << deeplyNested(R"({"format": "volpost-tf2d", "version": 1, "widgets": [{"shape": )", "}]}");
   expectSays(runVolpostLimited("render --state " + state + " -o " + temp("x.png"), kMemoryKB, kSeconds), 1,
              "nested more than 64 deep under \"volume.transferFunction.points\"");
-  expectSays(runVolpostLimited("render " + kWheel + " --renderer cpu --field S.mises --tf " + tf + " -o " + temp("x.png"),
-                               kMemoryKB, kSeconds),
-             1, "deep_tf.json: transfer function JSON: lists and objects nested more than 64 deep under \"version\"");
-  expectSays(runVolpostLimited("render " + kSurvey + " --renderer cpu --field amplitude --tf2d " + tf2d + " -o " +
-                                   temp("x.png"),
-                               kMemoryKB, kSeconds),
+  expectSays(
+      runVolpostLimited("render " + kWheel + " --renderer cpu --field S.mises --tf " + tf + " -o " + temp("x.png"),
+                        kMemoryKB, kSeconds),
+      1, "deep_tf.json: transfer function JSON: lists and objects nested more than 64 deep under \"version\"");
+  expectSays(runVolpostLimited(
+                 "render " + kSurvey + " --renderer cpu --field amplitude --tf2d " + tf2d + " -o " + temp("x.png"),
+                 kMemoryKB, kSeconds),
              1, "nested more than 64 deep under \"widgets.shape\"");
 }
 
 TEST(HostileSecondSet, WidgetsBeyondADoublesSpanAreRefused) {
   for (const char* renderer : {"cpu", "reference"})
     expectSays(runVolpostLimited(std::string("render ") + kSurvey + " --renderer " + renderer +
-                                     " --field amplitude --size 32x32 --tf2d " + set2("crash_tf2d_far_apart.tf2d.json") +
-                                     " -o " + temp("x.png"),
+                                     " --field amplitude --size 32x32 --tf2d " +
+                                     set2("crash_tf2d_far_apart.tf2d.json") + " -o " + temp("x.png"),
                                  kMemoryKB, kSeconds),
                1, "too wide for one table");
 }
@@ -100,8 +102,8 @@ TEST(HostileSecondSet, StateFilesSayWhatIsWrongInTheirOwnKeys) {
              "unclear_state_number_overflow.json: not valid JSON: number overflow parsing '1e999'");
   expectSays(runVolpost("render --state " + set2("unclear_state_format_number.json") + " -o " + temp("x.png")), 1,
              "not a volpost state file");
-  const auto renderer = runVolpost("render " + kWheel + " --state " + set2("unclear_state_renderer.json") + " -o " +
-                                   temp("x.png"));
+  const auto renderer =
+      runVolpost("render " + kWheel + " --state " + set2("unclear_state_renderer.json") + " -o " + temp("x.png"));
   expectSays(renderer, 2, "unclear_state_renderer.json: \"volume\": {\"renderer\": \"nope\"} names no volume renderer");
   EXPECT_EQ(renderer.output.find("--renderer nope"), std::string::npos) << "an option the user never typed";
   expectSays(runVolpost("render " + kWheel + " --state " + set2("unclear_state_step.json") + " -o " + temp("x.png")), 2,
@@ -128,7 +130,8 @@ TEST(HostileSecondSet, ProbingAMillionPointsStreamsTheTable) {
     std::ofstream out(points);
     for (int i = 0; i < 1000000; ++i) out << "0 -90 15\n";
   }
-  const auto r = runVolpostLimited("probe " + kWheel + " --field S.mises --points " + points + " --csv " + csv, 700'000, 120);
+  const auto r =
+      runVolpostLimited("probe " + kWheel + " --field S.mises --points " + points + " --csv " + csv, 700'000, 120);
   EXPECT_EQ(r.exitCode, 0) << r.output;
   std::ifstream table(csv);
   std::size_t lines = 0;
@@ -158,8 +161,9 @@ TEST(HostileSecondSet, SilentlyWrongReadsAreRefusedOrFlagged) {
   // Two pieces of the same extent left half the image reading 0.
   const auto gap = runVolpostLimited("info " + set2("silent_vti_overlapping_pieces.vti"), kMemoryKB, kSeconds);
   expectSays(gap, 0, "32 of the 64 points of \"value\" lie in no <Piece>");
-  expectSays(runVolpostLimited("probe " + set2("silent_vti_overlapping_pieces.vti") + " --at 1,1,3", kMemoryKB, kSeconds),
-             0, "value = nan");
+  expectSays(
+      runVolpostLimited("probe " + set2("silent_vti_overlapping_pieces.vti") + " --at 1,1,3", kMemoryKB, kSeconds), 0,
+      "value = nan");
   expectSays(runVolpostLimited("info " + set2("silent_segy_trace_delays_differ.sgy"), kMemoryKB, kSeconds), 0,
              "8 of 9 traces start at another time than the first (delay recording time, bytes 109-110: 0 .. 1600 ms)");
   expectSays(runVolpostLimited("info " + set2("low_segy_rev2_interval_1e300.sgy"), kMemoryKB, kSeconds), 1,

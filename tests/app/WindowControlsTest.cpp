@@ -16,20 +16,20 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
-#include <QSurfaceFormat>
-#include <QDir>
-#include <QFile>
-#include <QRegularExpression>
 #include <QStatusBar>
+#include <QSurfaceFormat>
 #include <QTableWidget>
 #include <QTest>
 #include <QTextBrowser>
@@ -94,7 +94,8 @@ class WindowControlsTest : public QObject {
     // model about 420 px at 1280 x 800; it opens with the volume now.
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     QTest::qWait(50);
-    QVERIFY2(window_->viewport()->width() > 0.6 * window_->width(), qPrintable(QString::number(window_->viewport()->width())));
+    QVERIFY2(window_->viewport()->width() > 0.6 * window_->width(),
+             qPrintable(QString::number(window_->viewport()->width())));
     action("volumeAction")->setChecked(true);
     QTest::qWait(50);
     bool editorShown = false;
@@ -222,7 +223,7 @@ class WindowControlsTest : public QObject {
       QString digits = shown;
       digits.remove(QRegularExpression("e.*")).remove('-').remove('.');
       while (digits.startsWith('0') && digits.size() > 1) digits.remove(0, 1);
-      QVERIFY2(digits.size() <= 6, qPrintable(shown));  // 16-17 digits before
+      QVERIFY2(digits.size() <= 6, qPrintable(shown));       // 16-17 digits before
       QVERIFY(!details->item(row, 1)->toolTip().isEmpty());  // every digit on hover
     }
   }

@@ -26,7 +26,9 @@ DiskFileBuffer::int_type DiskFileBuffer::underflow() {
 
 DiskFileBuffer::pos_type DiskFileBuffer::seekoff(off_type offset, std::ios_base::seekdir way, std::ios_base::openmode) {
   const std::int64_t here = std::int64_t(chunkStart_) + (gptr() - eback());
-  const std::int64_t base = way == std::ios_base::beg ? 0 : way == std::ios_base::cur ? here : std::int64_t(file_->size());
+  const std::int64_t base = way == std::ios_base::beg   ? 0
+                            : way == std::ios_base::cur ? here
+                                                        : std::int64_t(file_->size());
   return seekpos(pos_type(off_type(base + offset)), std::ios_base::in);
 }
 

@@ -181,7 +181,8 @@ class GmshParser {
     }
     if (line != "$End" + name) {
       if (line.empty())
-        s_.fail("the file ends inside $" + name + ": its closing $End" + name + " never comes (the file was cut short)");
+        s_.fail("the file ends inside $" + name + ": its closing $End" + name +
+                " never comes (the file was cut short)");
       s_.fail("expected $End" + name + ", found '" + std::string(line.substr(0, 40)) +
               "' (the section holds more or fewer records than its header says)");
     }

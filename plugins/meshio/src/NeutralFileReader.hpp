@@ -2,7 +2,7 @@
 // The Tecgraf/PUC-Rio neutral file (.nf, .pos) of the Pos3D family (MTool, MView, FAST):
 // %NODE.COORD, %ELEMENT.<type> (TETR4/TET4, TET10, BRICK8, BRICK20; T3/T6/Q4/Q8 surfaces
 // skipped), and %RESULT.CASE.STEP blocks: nodal displacement, scalars and vectors,
-// Gauss-point and element-nodal scalars. What is accepted: docs/formats.md.
+// Gauss-point and element-nodal scalars. What is accepted: docs/user/formats.md.
 #pragma once
 
 #include <volpost/core/MeshReader.hpp>

@@ -356,7 +356,8 @@ std::string gunzip(std::istream& in, std::uint64_t compressed, std::size_t neede
                    const std::string& path) {
   if (double(compressed) * kMostDeflateExpansion < double(needed) + double(skip))
     throw ReadError(path, "its " + std::to_string(compressed) + " bytes of gzip data cannot hold the " +
-                              std::to_string(needed) + " bytes the header's sizes and type need (gzip compresses at "
+                              std::to_string(needed) +
+                              " bytes the header's sizes and type need (gzip compresses at "
                               "most 1032 to 1): the sizes are wrong or the data is cut short");
   z_stream z{};
   if (inflateInit2(&z, 15 + 32) != Z_OK) throw ReadError(path, "zlib could not start");
@@ -548,7 +549,8 @@ std::unique_ptr<Model> NrrdReader::read(const std::string& path, const Progress&
     // Text, hex and gzip are decoded now: their length is known only by reading them.
     if (h.encoding == Encoding::Gzip) {
       const std::uint64_t compressed = fileSize - std::min(fileSize, start);
-      SampleArray samples = decodeSamples(gunzip(data, compressed, bytes, std::uint64_t(std::max<std::int64_t>(h.byteSkip, 0)), dataPath), count, h);
+      SampleArray samples = decodeSamples(
+          gunzip(data, compressed, bytes, std::uint64_t(std::max<std::int64_t>(h.byteSkip, 0)), dataPath), count, h);
       model->fields.push_back(Field::fromSamples(name, FieldLocation::Node, comps, std::move(samples)));
     } else {
       if (h.byteSkip > 0) data.seekg(std::streamoff(start + std::uint64_t(h.byteSkip)));

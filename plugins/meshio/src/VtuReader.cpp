@@ -435,14 +435,22 @@ class VtuReading {
       const NumericType type = same ? parts.front().source.type : NumericType::Float64;
       const bool covers = same && missing == 0;
       switch (type) {
-        case NumericType::Int8: return covers ? SampleType::Int8 : SampleType::Float32;
-        case NumericType::UInt8: return covers ? SampleType::UInt8 : SampleType::Float32;
-        case NumericType::Int16: return covers ? SampleType::Int16 : SampleType::Float32;
-        case NumericType::UInt16: return covers ? SampleType::UInt16 : SampleType::Float32;
-        case NumericType::Int32: return covers ? SampleType::Int32 : SampleType::Float64;
-        case NumericType::UInt32: return covers ? SampleType::UInt32 : SampleType::Float64;
-        case NumericType::Float32: return SampleType::Float32;
-        default: return SampleType::Float64;  // 64-bit integers as doubles, as they are read
+        case NumericType::Int8:
+          return covers ? SampleType::Int8 : SampleType::Float32;
+        case NumericType::UInt8:
+          return covers ? SampleType::UInt8 : SampleType::Float32;
+        case NumericType::Int16:
+          return covers ? SampleType::Int16 : SampleType::Float32;
+        case NumericType::UInt16:
+          return covers ? SampleType::UInt16 : SampleType::Float32;
+        case NumericType::Int32:
+          return covers ? SampleType::Int32 : SampleType::Float64;
+        case NumericType::UInt32:
+          return covers ? SampleType::UInt32 : SampleType::Float64;
+        case NumericType::Float32:
+          return SampleType::Float32;
+        default:
+          return SampleType::Float64;  // 64-bit integers as doubles, as they are read
       }
     };
     for (const std::string& key : order) {
@@ -458,10 +466,12 @@ class VtuReading {
       const std::size_t missing = uncovered(*parts, size);
       const SampleType stored = imageSampleType(*parts, missing);
       if (missing > 0)
-        model->diagnostics.push_back({Severity::Warning, "image-gap",
+        model->diagnostics.push_back({Severity::Warning,
+                                      "image-gap",
                                       std::to_string(missing) + " of the " + std::to_string(entities) + " " +
                                           (location == FieldLocation::Node ? "points" : "cells") + " of \"" +
-                                          key.substr(2) + "\" lie in no <Piece> (the pieces overlap or leave a gap): "
+                                          key.substr(2) +
+                                          "\" lie in no <Piece> (the pieces overlap or leave a gap): "
                                           "they have no value (drawn gray)",
                                       {}});
       // Every piece's values placed at its extent in the whole image.

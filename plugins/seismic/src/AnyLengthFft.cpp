@@ -39,7 +39,7 @@ struct AnyLengthFft::Direct {
 // keeps double precision for any length.
 struct AnyLengthFft::Chirp {
   std::size_t n, m;
-  std::vector<Complex> c;         // c[j], j < n
+  std::vector<Complex> c;          // c[j], j < n
   std::vector<Complex> kernelHat;  // the transform of c[-(n-1) .. n-1] laid out circularly in m
   kissfft<double> forward, inverse;
   explicit Chirp(std::size_t length)

@@ -339,8 +339,9 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                   std::to_string(il.first + std::int64_t(il.count - 1) * il.step) + " and crosslines " +
                   std::to_string(xl.first) + " .. " + std::to_string(xl.first + std::int64_t(xl.count - 1) * xl.step) +
                   ": a grid of " + std::to_string(cells) + " trace positions, more than " +
-                  std::to_string(kMostTracePositionsPerTrace) + " for each trace. The inline and crossline numbers (bytes " +
-                  std::to_string(at.inlineNumber) + " and " + std::to_string(at.crosslineNumber) +
+                  std::to_string(kMostTracePositionsPerTrace) +
+                  " for each trace. The inline and crossline numbers (bytes " + std::to_string(at.inlineNumber) +
+                  " and " + std::to_string(at.crosslineNumber) +
                   ") may be elsewhere in this file's trace headers: --reader-option inline-byte=N crossline-byte=M");
   const std::size_t points = checkedProduct(cells, b.samplesPerTrace, path, "the grid");
   // The samples as stored and a renderer's copy of them; the grid holds no cells until
@@ -390,7 +391,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
     char text[200];
     std::snprintf(text, sizeof text,
                   "binary header: the sample interval is %g microseconds (bytes %s), more than 10 s between samples",
-                  b.sampleIntervalMicroseconds, b.revisionMajor >= 2 ? "3273-3280, the extended interval" : "3217-3218");
+                  b.sampleIntervalMicroseconds,
+                  b.revisionMajor >= 2 ? "3273-3280, the extended interval" : "3217-3218");
     file.fail(kTextHeaderBytes + (b.revisionMajor >= 2 ? 72 : 16), text);
   }
   double dtMs = b.sampleIntervalMicroseconds / 1000.0;
@@ -484,7 +486,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
     }
     if (differing > 0)
       model->diagnostics.push_back(
-          {Severity::Warning, "trace-start-times",
+          {Severity::Warning,
+           "trace-start-times",
            std::to_string(differing) + " of " + std::to_string(chosen.size()) +
                " traces start at another time than the first (delay recording time, bytes " +
                std::to_string(at.delayMs) + "-" + std::to_string(at.delayMs + 1) + ": " + std::to_string(earliest) +

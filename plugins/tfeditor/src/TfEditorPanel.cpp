@@ -203,8 +203,9 @@ void TfEditorPanel::buildUi() {
   logBox_->setObjectName("tfLogHistogram");
   fineBox_ = new QCheckBox("Stretch small opacities", this);
   fineBox_->setObjectName("tfFineAxis");
-  fineBox_->setToolTip("The opacity axis on a cube-root scale: small opacities, the ones most volumes need, get "
-                       "most of the height");
+  fineBox_->setToolTip(
+      "The opacity axis on a cube-root scale: small opacities, the ones most volumes need, get "
+      "most of the height");
   logBox_->setChecked(settings().value("tfeditor/logHistogram", true).toBool());
   fineBox_->setChecked(settings().value("tfeditor/fineAxis", true).toBool());
   curve_->setLogHistogram(logBox_->isChecked());

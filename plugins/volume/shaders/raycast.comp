@@ -12,7 +12,7 @@
 // resets the device after a few seconds of one; the window slices a long frame into short
 // dispatches to stay responsive) and every loop's iteration count (llvmpipe documents an
 // iteration limit for shader loops; its tet walk here was measured right at 300000 tets in
-// one dispatch, but its grid march was not, docs/seismic.md).
+// one dispatch, but its grid march was not, docs/user/seismic.md).
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform image2D outImage;
 layout(std430, binding = BINDING_BVH) readonly buffer Bvh { vec4 bvh[]; };

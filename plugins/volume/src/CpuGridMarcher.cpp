@@ -148,7 +148,8 @@ struct Marcher {
   // The gradient magnitude of a sample (its index gradient) in model units, for a 2D
   // transfer function.
   double gradientOf(const glm::dvec3& indexGradient) const {
-    return settings.transferFunction2D ? grid.unscaled(glm::length(glm::transpose(grid.toIndex()) * indexGradient)) : 0.0;
+    return settings.transferFunction2D ? grid.unscaled(glm::length(glm::transpose(grid.toIndex()) * indexGradient))
+                                       : 0.0;
   }
 
   // A piece over which the scalar is linear, cut at the iso-surfaces it crosses; with a 2D

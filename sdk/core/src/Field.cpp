@@ -19,7 +19,8 @@ void requireRoomFor(const std::string& field, std::size_t step, double bytes) {
   if (held + bytes > budget)
     throw std::runtime_error("field " + field + ": step " + std::to_string(step + 1) + " needs " + byteSizeText(bytes) +
                              ", and the fields read so far hold " + byteSizeText(held) + " of the memory budget of " +
-                             byteSizeText(budget) + " (set a larger one with VOLPOST_MEMORY_BUDGET or --memory-budget)");
+                             byteSizeText(budget) +
+                             " (set a larger one with VOLPOST_MEMORY_BUDGET or --memory-budget)");
 }
 
 // What a loader gave must be one value per entity and component.

@@ -90,7 +90,8 @@ void Model::makeFieldNamesUnique() {
     f->rename(name);
     taken.insert(name);
     seen.insert(name);
-    diagnostics.push_back({Severity::Info, "field-renamed",
+    diagnostics.push_back({Severity::Info,
+                           "field-renamed",
                            "two fields are named \"" + original + "\": the " + toString(f->location()) +
                                " field is shown as \"" + name + "\"",
                            {}});

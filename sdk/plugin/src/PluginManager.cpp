@@ -45,8 +45,9 @@ QString checkMetadata(const QJsonObject& meta, PluginRecord& record) {
   for (const Interface& i : interfaces)
     if (kind == i.name) {
       if (version == QString::number(i.version)) return {};
-      return QString("implements the %1 interface version %2; this volpost provides version %3: rebuild the "
-                     "plugin against this SDK")
+      return QString(
+                 "implements the %1 interface version %2; this volpost provides version %3: rebuild the "
+                 "plugin against this SDK")
           .arg(i.words, version.isEmpty() ? QString("(none)") : version)
           .arg(i.version);
     }

@@ -151,7 +151,8 @@ TEST(Streamlines, TheLengthLimitIsNotExceeded) {
       double forward = 0.0, backward = 0.0;
       for (std::size_t i = 0; i + 1 < line.points.size(); ++i)
         (i < line.seedIndex ? backward : forward) += glm::length(line.points[i + 1] - line.points[i]);
-      for (const auto& [stop, walked] : {std::pair{line.forwardStop, forward}, std::pair{line.backwardStop, backward}}) {
+      for (const auto& [stop, walked] :
+           {std::pair{line.forwardStop, forward}, std::pair{line.backwardStop, backward}}) {
         EXPECT_LE(walked, limit * (1.0 + 1e-9)) << toString(method) << " " << limit;
         if (limit < 2.0) EXPECT_EQ(stop, StreamlineStop::MaxLength) << toString(method) << " " << limit;
         if (stop == StreamlineStop::MaxLength) EXPECT_NEAR(walked, limit, 1e-9 * limit) << toString(method);

@@ -238,8 +238,9 @@ TEST_F(Nrrd, TheDataFileReadLaterIsTheOneCheckedWhenOpened) {
   // the data file reopened by name read whatever was there by then (a pipe swapped in
   // blocked for ever; a same-size rewrite went unnoticed).
   const std::string raw = write("later.raw", samples(as<float>(ramp()), false));
-  const auto model = read(write("later.nhdr", "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
-                                              "encoding: raw\ndata file: later.raw\n"));
+  const auto model = read(write("later.nhdr",
+                                "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
+                                "encoding: raw\ndata file: later.raw\n"));
   // Replaced by name with a file of the same size: the model still reads the one it checked.
   fs::rename(raw, raw + ".old");
   write("later.raw", std::string(24 * 4, '\0'));
@@ -248,8 +249,9 @@ TEST_F(Nrrd, TheDataFileReadLaterIsTheOneCheckedWhenOpened) {
 
 TEST_F(Nrrd, DataRewrittenInPlaceIsRefusedWhenRead) {
   const std::string raw = write("inplace.raw", samples(as<float>(ramp()), false));
-  const auto model = read(write("inplace.nhdr", "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
-                                                "encoding: raw\ndata file: inplace.raw\n"));
+  const auto model = read(write("inplace.nhdr",
+                                "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nendian: little\n"
+                                "encoding: raw\ndata file: inplace.raw\n"));
   // Same size, other bytes, a later time: the values would belong to another file.
   fs::last_write_time(raw, fs::last_write_time(raw) - std::chrono::hours(1));
   { std::ofstream(raw, std::ios::binary | std::ios::in | std::ios::out) << std::string(8, '\x7f'); }
@@ -262,11 +264,13 @@ TEST_F(Nrrd, DataRewrittenInPlaceIsRefusedWhenRead) {
 }
 
 TEST_F(Nrrd, ALineSkipPastTheEndAndConcatenatedGzipMembers) {
-  EXPECT_NE(readError(write("skip.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\nencoding: raw\n"
-                                         "line skip: 1\nbyte skip: 1\n\nno newline after this")),
+  EXPECT_NE(readError(write("skip.nrrd",
+                            "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\nencoding: raw\n"
+                            "line skip: 1\nbyte skip: 1\n\nno newline after this")),
             "no error");
-  const std::string skipped = readError(write("skip2.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\n"
-                                                            "encoding: raw\nline skip: 3\n\none\ntwo"));
+  const std::string skipped = readError(write("skip2.nrrd",
+                                              "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 4 3 2\n"
+                                              "encoding: raw\nline skip: 3\n\none\ntwo"));
   EXPECT_NE(skipped.find("the data ends within the 3 lines the header's line skip passes over (1 found)"),
             std::string::npos)
       << skipped;
@@ -291,8 +295,11 @@ TEST_F(Nrrd, ALineSkipPastTheEndAndConcatenatedGzipMembers) {
   ASSERT_EQ(model->fields[0]->values(0).size(), 24u);
   for (int i = 0; i < 24; ++i) EXPECT_EQ(model->fields[0]->values(0)[std::size_t(i)], double(i));
   // A header claiming far more than its compressed bytes can hold: refused before the memory.
-  const std::string claim = readError(write("claim.nrrd", "NRRD0004\ntype: double\ndimension: 3\nsizes: 1000 1000 100\nendian: little\n"
-                                                          "encoding: gzip\n\n" + gzip("tiny")));
+  const std::string claim =
+      readError(write("claim.nrrd",
+                      "NRRD0004\ntype: double\ndimension: 3\nsizes: 1000 1000 100\nendian: little\n"
+                      "encoding: gzip\n\n" +
+                          gzip("tiny")));
   EXPECT_NE(claim.find("bytes of gzip data cannot hold the 800000000 bytes"), std::string::npos) << claim;
 }
 

@@ -110,7 +110,8 @@ TEST(SegyReader, IbmFloatsBeyondAFloatsRangeAreKeptAsDoubles) {
   // Kept, and said: such a sample is usually junk, and it stretches the color scale.
   ASSERT_EQ(model->diagnostics.size(), 1u);
   EXPECT_EQ(model->diagnostics[0].code, "samples-beyond-float");
-  EXPECT_NE(model->diagnostics[0].message.find("1 sample beyond a 32-bit float's range (up to 1e+40)"), std::string::npos)
+  EXPECT_NE(model->diagnostics[0].message.find("1 sample beyond a 32-bit float's range (up to 1e+40)"),
+            std::string::npos)
       << model->diagnostics[0].message;
   fs::remove(p);
 }

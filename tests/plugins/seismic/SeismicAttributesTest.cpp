@@ -4,9 +4,9 @@
 // envelope is the modulation; the RMS of a sine over whole periods is A / sqrt(2). And the
 // attributes arrive as fields of a SEG-Y model, computed when first asked for.
 #include "AnyLengthFft.hpp"
-#include "SeismicAttributes.hpp"
 #include "SegyReader.hpp"
 #include "SegyWriter.hpp"
+#include "SeismicAttributes.hpp"
 
 #include "support/TestSupport.hpp"
 

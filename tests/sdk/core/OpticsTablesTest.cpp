@@ -43,7 +43,7 @@ TEST(PsiTable, TexelsHoldExactPsiAndInterpolationErrorIsBounded) {
     worst = std::max(worst, std::abs(table.lookup(tf, tb) - psi(tf, tb)));
   }
   std::printf("psi table 256^2: worst absolute error %.3g over depths 1e-4..1e3\n", worst);
-  EXPECT_LE(worst, 0.012);  // measured 0.0096; 1024^2 is in bench/ and docs/optics.md
+  EXPECT_LE(worst, 0.012);  // measured 0.0096; 1024^2 is in bench/ and docs/methods/optics.md
 }
 
 TEST(ThickPsi, FunctionsHoldKnownValuesAndPsiHoldsOverEveryThickDepth) {

@@ -21,8 +21,9 @@ double zeta(double tf, double tb);
 /// psi(tf, tb) for tf, tb >= 0 in double precision, stable from 0 to 1e4 and for nearly
 /// equal arguments: expm1 when tf == tb, a 9-term series for thin segments (optical depth
 /// <= 0.1), otherwise Gauss-Legendre quadrature of the (monotone, positive) integrand on
-/// panels of bounded optical depth and slope, cut where it falls below 1e-17. No closed form with erf/erfi (unstable) is used. Worst relative error
-/// measured against a 113-bit adaptive quadrature: see docs/optics.md and PsiTest.
+/// panels of bounded optical depth and slope, cut where it falls below 1e-17. No closed form with erf/erfi (unstable)
+/// is used. Worst relative error measured against a 113-bit adaptive quadrature: see docs/methods/optics.md and
+/// PsiTest.
 double psi(double tf, double tb);
 
 /// What a segment adds when composited front to back: `color` is the associated
