@@ -23,9 +23,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <cstdio>
 
 namespace volpost::app {
 namespace {
@@ -229,38 +229,78 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
   if (p.isSet(o.shading)) scene.setShading(true);
 }
 
-// Options a chosen renderer cannot honour are errors, never silently ignored.
-void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o, const QString& renderer) {
-  const bool surface = renderer == "surface", reference = renderer == "reference";
+// The renderer a picture is drawn with: the surface (no entry) or a volume renderer.
+struct ChosenRenderer {
+  QString name;
+  std::optional<RendererEntry> volume;  ///< nullopt: the surface picture
+  std::vector<RendererEntry> all;       ///< every volume renderer, for messages
+  /// "texture-raymarch, texture-slices, cpu, reference": the renderers `has` is true for.
+  QString namesWhere(bool (*has)(const RendererEntry&)) const {
+    QStringList names;
+    for (const RendererEntry& e : all)
+      if (has(e)) names << e.name;
+    return names.join(", ");
+  }
+};
+
+// The renderer `name` (from --renderer or the state file), or a usage error listing them.
+ChosenRenderer chooseRenderer(const PluginManager& plugins, const QString& name, const QCommandLineParser& p,
+                              const Options& o) {
+  ChosenRenderer chosen{name, std::nullopt, volumeRenderers(plugins)};
+  chosen.all.push_back(referenceRenderer());
+  if (name == "surface") return chosen;
+  for (const RendererEntry& r : chosen.all)
+    if (r.name == name) chosen.volume = r;
+  if (chosen.volume) return chosen;
+  const QString known = "surface, " + chosen.namesWhere([](const RendererEntry&) { return true; });
+  if (p.isSet(o.renderer)) throw UsageError(QString("--renderer %1 is not one of: %2").arg(name, known).toStdString());
+  throw UsageError(QString("%1: \"volume\": {\"renderer\": \"%2\"} names no volume renderer; the renderers are: %3")
+                       .arg(p.value(o.state), name, known)
+                       .toStdString());
+}
+
+// Options a chosen renderer cannot honour are errors, never silently ignored; what each
+// renderer honours is what it says of itself (its traits).
+void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o, const ChosenRenderer& chosen) {
   const auto refuse = [&](const QCommandLineOption& option, const QString& why) {
     if (p.isSet(option)) throw UsageError(QString("--%1 %2").arg(option.names().constLast(), why).toStdString());
   };
-  if (surface) {
-    const QString why = "works with volume renderers (--renderer raycast, vicp, cpu, reference)";
+  if (!chosen.volume) {
+    const QString why =
+        "works with volume renderers (--renderer " + chosen.namesWhere([](const RendererEntry&) { return true; }) + ")";
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges,
                                              &o.samplingStep, &o.termination, &o.shading, &o.floatOut, &o.threads})
       refuse(*option, why);
-  } else {
-    refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
-    refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
-    refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
+    return;
   }
-  if (!reference) refuse(o.threads, "sets the reference renderer's threads (--renderer reference)");
-  if (renderer == "raycast" || renderer == "vicp" || renderer == "vicp-exact")
-    refuse(o.shading, "is drawn by the regular-grid renderers (texture-raymarch, texture-slices, cpu, reference), not by " +
-                          renderer);
-  if (renderer == "cpu") {
-    refuse(o.mode, "chooses a GPU integration; the CPU ray caster integrates exactly");
-  }
-  if (reference) {
-    refuse(o.mode, "chooses a GPU integration; the reference renderer integrates exactly");
-    refuse(o.volumeEdges, "is not drawn by the reference renderer");
-    refuse(o.samplingStep, "is not used by the reference renderer (it integrates exactly)");
-    refuse(o.termination, "is not used by the reference renderer (it never stops early)");
-  }
-  if (renderer == "raycast" || renderer == "vicp" || renderer == "vicp-exact")
-    refuse(o.tf2d, "is drawn by the regular-grid renderers (texture-raymarch, texture-slices, cpu, reference), not by " +
-                       renderer);
+  refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
+  refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
+  refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
+  const RendererEntry& r = *chosen.volume;
+  const VolumeRendererTraits& t = r.traits;
+  const QString name = r.name;
+  if (!r.takesThreadCount)
+    refuse(o.threads, "sets the threads of " + chosen.namesWhere([](const RendererEntry& e) {
+      return e.takesThreadCount;
+    }) + ", not of " + name);
+  if (!t.shading)
+    refuse(o.shading, "is drawn by the regular-grid renderers that shade (" +
+                          chosen.namesWhere([](const RendererEntry& e) { return e.traits.shading; }) + "), not by " +
+                          name);
+  if (!t.transferFunction2D)
+    refuse(o.tf2d, "is drawn by the regular-grid renderers that take it (" +
+                       chosen.namesWhere([](const RendererEntry& e) { return e.traits.transferFunction2D; }) +
+                       "), not by " + name);
+  if (t.modes.empty())
+    refuse(o.mode, "chooses how the transfer function is integrated; " + name + " integrates exactly (no modes)");
+  if (p.isSet(o.mode))
+    if (const auto mode = integrationModeFromString(p.value(o.mode).toStdString());
+        mode && std::find(t.modes.begin(), t.modes.end(), *mode) == t.modes.end())
+      refuse(o.mode, p.value(o.mode) + " is not a mode of " + name);
+  if (!r.drawsSceneLayers) refuse(o.volumeEdges, "is not drawn by " + name + ", which draws the volume alone");
+  if (!t.samplingStepOnMeshes && !t.samplingStepOnGrids)
+    refuse(o.samplingStep, "is not used by " + name + " (it integrates exactly)");
+  if (!t.earlyTermination) refuse(o.termination, "is not used by " + name + " (it never stops early)");
   if (p.isSet(o.tf2d) && p.isSet(o.tf))
     throw UsageError("--tf and --tf2d: a volume is drawn with one transfer function; give one");
   if (p.isSet(o.tf2d) && (p.isSet(o.colormap) || p.isSet(o.range)))
@@ -271,16 +311,36 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
                      "and values are used: leave them out");
 }
 
-// The reference renderer draws the volume alone (with the legend and markers over it):
-// layers of the state drawn with GL are refused, from the command line or a state file.
-void refuseWhatTheReferenceCannotDraw(const SceneState& state) {
-  const bool slices = std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
+// A renderer that draws the volume alone (the reference, with the legend and markers over
+// it) refuses the layers of the state drawn with GL, from the command line or a state file.
+void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRenderer& chosen) {
+  if (!chosen.volume || chosen.volume->drawsSceneLayers) return;
+  const QString name = chosen.volume->name;
+  const bool slices =
+      std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
   if (slices)
-    throw UsageError("grid slices (--slice, or \"gridSlices\" in a state file) are not drawn by the reference renderer, "
-                     "which draws the volume alone: choose texture-raymarch, texture-slices or cpu");
+    throw UsageError(("grid slices (--slice, or \"gridSlices\" in a state file) are not drawn by " + name +
+                      ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
+                        return e.drawsSceneLayers && e.traits.drawsGrids;
+                      })).toStdString());
   if (state.streamlines.shown)
-    throw UsageError("streamlines (--streamlines, or \"streamlines\" in a state file) are not drawn by the reference "
-                     "renderer, which draws the volume alone: choose cpu, raycast or vicp");
+    throw UsageError(("streamlines (--streamlines, or \"streamlines\" in a state file) are not drawn by " + name +
+                      ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
+                        return e.drawsSceneLayers && e.traits.drawsMeshes;
+                      })).toStdString());
+}
+
+// The model is known: options this renderer takes on one kind of model but not the other.
+void refuseWhatTheRendererIgnoresOnThisModel(const QCommandLineParser& p, const Options& o,
+                                             const ChosenRenderer& chosen, bool grid) {
+  if (!chosen.volume || !p.isSet(o.samplingStep)) return;
+  const VolumeRendererTraits& t = chosen.volume->traits;
+  if (!grid && !t.samplingStepOnMeshes)
+    throw UsageError(("--sampling-step is not used by " + chosen.volume->name +
+                      " on meshes (it integrates exactly); on regular grids it sets the step of its march")
+                         .toStdString());
+  if (grid && !t.samplingStepOnGrids)
+    throw UsageError(("--sampling-step is not used by " + chosen.volume->name + " on regular grids").toStdString());
 }
 
 // --eye, --target, --up, --view-angle: each replaces that part of the camera so far (the
@@ -471,7 +531,9 @@ int runRender(const QStringList& args) {
     QString rendererName = parser.isSet(o.renderer) ? parser.value(o.renderer)
                            : base.volume.shown      ? QString::fromStdString(base.volume.renderer)
                                                     : QString("surface");
-    refuseWhatTheRendererIgnores(parser, o, rendererName);
+    auto plugins = loadPluginsForCli();
+    const ChosenRenderer chosen = chooseRenderer(*plugins, rendererName, parser, o);
+    refuseWhatTheRendererIgnores(parser, o, chosen);
     bool threadsOk = true;
     const int threads = parser.isSet(o.threads) ? parser.value(o.threads).toInt(&threadsOk) : 0;
     if (!threadsOk || threads < 0 || threads > 1024)
@@ -481,27 +543,15 @@ int runRender(const QStringList& args) {
     checkWritable(pathBytes(parser.isSet(o.allSteps) && !video ? framePath(out, 0, 1) : out));
     if (parser.isSet(o.floatOut)) checkWritable(pathBytes(parser.value(o.floatOut)));
     if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
-    auto plugins = loadPluginsForCli();
-    const bool gpuVolume = rendererName != "surface" && rendererName != "reference";
-    if (gpuVolume) {
-      QStringList known = {"surface", "reference"};
-      for (const RendererEntry& r : volumeRenderers(*plugins)) known << r.name;
-      if (!known.contains(rendererName)) {
-        if (parser.isSet(o.renderer))
-          throw UsageError(QString("--renderer %1 is not one of: %2").arg(rendererName, known.join(", ")).toStdString());
-        throw UsageError(QString("%1: \"volume\": {\"renderer\": \"%2\"} names no volume renderer; the renderers are: %3")
-                             .arg(parser.value(o.state), rendererName, known.join(", "))
-                             .toStdString());
-      }
-    }
+    // The plugins' renderers draw with the scene's GL layers; the reference draws alone.
+    const bool glVolume = chosen.volume && chosen.volume->drawsSceneLayers;
     {
       Scene scene(volumeRendererFactory(*plugins));
       // A volume picture never draws the boundary surface: it is left unextracted.
       std::shared_ptr<ModelSession> session;
       try {
         session = ModelSession::load(plugins->readers(), base.modelPath, terminalProgress("reading"),
-                                     rendererName == "surface" ? ModelSession::Boundary::Now
-                                                               : ModelSession::Boundary::OnFirstUse,
+                                     !chosen.volume ? ModelSession::Boundary::Now : ModelSession::Boundary::OnFirstUse,
                                      base.readerOptions);
       } catch (const ReaderOptionError& e) {
         throw UsageError(e.what());
@@ -512,20 +562,18 @@ int runRender(const QStringList& args) {
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
-      if (rendererName == "reference") refuseWhatTheReferenceCannotDraw(scene.state());
-      if (rendererName != "surface" && !scene.view())
+      refuseLayersTheRendererCannotDraw(scene.state(), chosen);
+      if (chosen.volume && !scene.view())
         throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
-      if (rendererName == "cpu" && parser.isSet(o.samplingStep) && !session->model().grid)
-        throw UsageError("--sampling-step is not used by the CPU ray caster on meshes (it integrates exactly); on "
-                         "regular grids it sets the step of its march");
+      refuseWhatTheRendererIgnoresOnThisModel(parser, o, chosen, session->model().grid.has_value());
       try {
-        if (gpuVolume) scene.setVolumeRenderer(rendererName.toStdString());
+        if (glVolume) scene.setVolumeRenderer(rendererName.toStdString());
       } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
       }
-      scene.setVolumeShown(rendererName != "surface");
+      scene.setVolumeShown(chosen.volume.has_value());
       const auto draw = [&] {
-        return rendererName == "reference"
+        return chosen.volume && !glVolume
                    ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
                    : renderSceneImage(scene, width, height);
       };
@@ -564,7 +612,8 @@ int runRender(const QStringList& args) {
       }
       if (parser.isSet(o.saveState)) {
         const std::string statePath = pathBytes(parser.value(o.saveState));
-        outputs.emplace_back(statePath, scene.state().toJson(std::filesystem::absolute(statePath).parent_path().string()));
+        outputs.emplace_back(statePath,
+                             scene.state().toJson(std::filesystem::absolute(statePath).parent_path().string()));
       }
       writeFilesTogether(outputs);
       std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));

@@ -2,7 +2,8 @@
 #include "PluginRenderers.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
-#include <volpost/render/GridVolumeRenderer.hpp>
+
+#include <QStringList>
 
 namespace volpost::app {
 namespace {
@@ -25,15 +26,36 @@ std::vector<RendererEntry> volumeRenderers(const PluginManager& plugins) {
   std::vector<RendererEntry> out;
   for (RendererPlugin* plugin : plugins.rendererPlugins())
     for (const QString& name : plugin->rendererNames())
-      if (const auto renderer = create(plugins, name)) {
-        const auto* grid = dynamic_cast<const GridVolumeRenderer*>(renderer.get());
-        out.push_back({name, plugin->rendererLabel(name), !grid || grid->drawsTetrahedra(), grid != nullptr});
-      }
+      if (const auto renderer = create(plugins, name)) out.push_back({name, renderer->traits()});
   return out;
 }
 
+RendererEntry referenceRenderer() {
+  RendererEntry r;
+  r.name = "reference";
+  r.traits.label = "Exact reference on the CPU (double precision, slow)";
+  r.traits.drawsGrids = r.traits.transferFunction2D = r.traits.shading = true;
+  r.traits.samplingStepOnMeshes = r.traits.samplingStepOnGrids = false;  // integrates exactly
+  r.traits.earlyTermination = false;
+  r.traits.runsOnCpu = true;
+  r.drawsSceneLayers = false;
+  r.takesThreadCount = true;
+  return r;
+}
+
 VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins) {
-  return [&plugins](const std::string& name) { return create(plugins, QString::fromStdString(name)); };
+  std::vector<std::string> names;
+  for (const RendererPlugin* plugin : plugins.rendererPlugins())
+    for (const QString& name : plugin->rendererNames()) names.push_back(name.toStdString());
+  return {[&plugins](const std::string& name) { return create(plugins, QString::fromStdString(name)); },
+          std::move(names)};
+}
+
+QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const VolumeRendererTraits&)) {
+  QStringList names;
+  for (const RendererEntry& e : entries)
+    if (has(e.traits)) names << e.name;
+  return names.join(", ");
 }
 
 }  // namespace volpost::app

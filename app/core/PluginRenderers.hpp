@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
-// The volume renderers the loaded plugins offer, by name and in words.
+// The volume renderers the loaded plugins offer, by name, each with what it says of itself.
 #pragma once
 
 #include "Scene.hpp"
 
 #include <volpost/plugin/PluginManager.hpp>
+#include <volpost/render/VolumeRendererTraits.hpp>
 
 #include <QString>
 
@@ -13,16 +14,30 @@
 namespace volpost::app {
 
 struct RendererEntry {
-  QString name;   ///< what the command line and state files say ("raycast")
-  QString label;  ///< what the menu says ("Ray casting"), from the plugin
-  bool drawsMeshes = true;   ///< meshes of tetrahedra (any mesh, split into them)
-  bool drawsGrids = false;   ///< regular grids as grids (a GridVolumeRenderer)
+  QString name;                 ///< what the command line and state files say ("raycast")
+  VolumeRendererTraits traits;  ///< what it draws and takes, and its words for a menu
+  /// Drawn by the scene with its other layers (edges, slices, streamlines); false for the
+  /// host's reference, which draws the volume alone, off the GL path.
+  bool drawsSceneLayers = true;
+  /// Takes a thread count (--threads).
+  bool takesThreadCount = false;
+  QString label() const { return QString::fromStdString(traits.label); }
+  /// Draws this kind of model's values as it is: a grid as a grid, a mesh as tetrahedra.
+  bool drawsKindOf(bool grid) const { return grid ? traits.drawsGrids : traits.drawsMeshes; }
 };
 
 /// Every volume renderer of every loaded renderer plugin, in plugin order.
 std::vector<RendererEntry> volumeRenderers(const PluginManager& plugins);
 
+/// The host's exact reference renderer ("reference": CPU, double precision, the yardstick
+/// of the others; ReferenceVolumeImage.hpp), described like a plugin's.
+RendererEntry referenceRenderer();
+
 /// Creates volume renderers by name from the plugins (which must outlive it).
 VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins);
+
+/// The names of the renderers in `entries` for which `has` is true: "texture-raymarch,
+/// texture-slices, cpu", for messages that say which renderers take an option.
+QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const VolumeRendererTraits&));
 
 }  // namespace volpost::app

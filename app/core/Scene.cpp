@@ -22,6 +22,9 @@
 namespace volpost::app {
 namespace {
 
+// " (raycast, vicp)" after a message's advice, or nothing where no renderer is listed.
+std::string inParentheses(const std::string& names) { return names.empty() ? std::string() : " (" + names + ")"; }
+
 QString stepAndLocation(const ScalarView& view) {
   return QString("%1%2").arg(QString::fromStdString(view.stepLabel),
                              view.location == FieldLocation::Node ? "  per node" : "  per cell");
@@ -31,7 +34,7 @@ QString stepAndLocation(const ScalarView& view) {
 // the memory it will need next to the model is checked against the budget: a clear
 // message with the figure instead of the system killing the program. About 96 bytes per
 // tet and 48 per node cover the peaks volpost_scale_bench measures for the CPU and GPU ray
-// casters above the model (docs/scale.md).
+// casters above the model (docs/methods/scale.md).
 void requireVolumeMemory(const Model& model, const Mesh& tets) {
   const double modelBytes = double(model.mesh().cellBytes()) + 24.0 * double(model.nodeCount());
   const double rendererBytes = 96.0 * double(tets.cellCount()) + 48.0 * double(tets.nodeCount());
@@ -172,12 +175,11 @@ void Scene::setVolumeShown(bool shown) {
 void Scene::setVolumeRenderer(const std::string& name) {
   const std::unique_ptr<VolumeRenderer> candidate = factory_(name);
   if (!candidate) throw std::invalid_argument("no volume renderer named '" + name + "' is loaded");
-  const auto* grid = dynamic_cast<const GridVolumeRenderer*>(candidate.get());
-  if (grid && !grid->drawsTetrahedra() && session_ && !session_->model().grid)
+  const bool gridsOnly = !candidate->traits().drawsMeshes;
+  if (gridsOnly && session_ && !session_->model().grid)
     throw std::invalid_argument("the volume renderer '" + name +
                                 "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
-  if (grid && !grid->drawsTetrahedra() && view_ && view_->location != FieldLocation::Node)
-    throw std::invalid_argument(perCellRefusal(name));
+  if (gridsOnly && view_ && view_->location != FieldLocation::Node) throw std::invalid_argument(perCellRefusal(name));
   if (name == state_.volume.renderer) return;
   state_.volume.renderer = name;
   changed_.renderer = true;
@@ -207,15 +209,9 @@ void Scene::setTransferFunction2D(std::optional<TransferFunction2D> tf) {
 }
 
 void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
-  for (const ClipPlane& p : planes) {
-    const double scale = std::max({std::abs(p.normal.x), std::abs(p.normal.y), std::abs(p.normal.z)});
-    if (!(scale > 0.0) || !std::isfinite(scale) || !std::isfinite(glm::length(p.point)))
-      throw std::invalid_argument("a clip plane needs a finite point and a finite, non-zero normal");
-  }
   VolumeLayer next = state_.volume;
   next.clipPlanes = std::move(planes);
-  if (next.allClipPlanes().size() > std::size_t(kMaxClipPlanes))
-    throw std::invalid_argument("at most " + std::to_string(kMaxClipPlanes) + " clip planes, the box's six included");
+  checkClipPlanes(next.allClipPlanes());
   state_.volume.clipPlanes = std::move(next.clipPlanes);
   changed_.planes = true;
 }
@@ -223,18 +219,13 @@ void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
 void Scene::setClipBox(std::optional<ClipBox> box) {
   VolumeLayer next = state_.volume;
   next.clipBox = box;
-  if (next.allClipPlanes().size() > std::size_t(kMaxClipPlanes))
-    throw std::invalid_argument("at most " + std::to_string(kMaxClipPlanes) + " clip planes, the box's six included");
+  checkClipPlanes(next.allClipPlanes());
   state_.volume.clipBox = box;
   changed_.planes = true;
 }
 
 void Scene::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
-  if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
-    throw std::invalid_argument("at most " + std::to_string(kMaxIsoSurfaces) + " iso-surfaces");
-  for (const optics::IsoSurface& s : surfaces)
-    if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
-      throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
+  checkIsoSurfaces(surfaces);
   state_.volume.isoSurfaces = std::move(surfaces);
   changed_.iso = true;
 }
@@ -316,10 +307,11 @@ void Scene::checkSamplingStep(double step) const {
   const double across = b.valid ? b.diagonal() : 0.0;
   if (across / step > kMaxSamplesAcross) {
     char text[256];
-    std::snprintf(text, sizeof text,
-                  "the sampling step %g (--sampling-step, or \"volume\": {\"samplingStep\"} in a state file) would take "
-                  "more than %.0f samples across the model (%g long): use at least %.3g, or 0 for the automatic step",
-                  step, kMaxSamplesAcross, across, across / kMaxSamplesAcross);
+    std::snprintf(
+        text, sizeof text,
+        "the sampling step %g (--sampling-step, or \"volume\": {\"samplingStep\"} in a state file) would take "
+        "more than %.0f samples across the model (%g long): use at least %.3g, or 0 for the automatic step",
+        step, kMaxSamplesAcross, across, across / kMaxSamplesAcross);
     throw std::invalid_argument(text);
   }
 }
@@ -384,9 +376,8 @@ void Scene::applyState(const SceneState& s) {
   if (s.deformation.shown) checkDeformationField(*baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   checkGridSlices(session_->model().grid, s.gridSlices);
-  if (s.volume.allClipPlanes().size() > std::size_t(kMaxClipPlanes) ||
-      s.volume.isoSurfaces.size() > std::size_t(kMaxIsoSurfaces))
-    throw std::invalid_argument("too many clip planes or iso-surfaces");
+  checkClipPlanes(s.volume.allClipPlanes());
+  checkIsoSurfaces(s.volume.isoSurfaces);
   Camera camera = camera_;
   camera.fit(session_->model().bounds());
   if (s.camera) {
@@ -829,9 +820,10 @@ void Scene::applyToVolume() {
   }
   // A grid goes to a grid renderer as a grid, except a per-cell field where the renderer
   // also draws tetrahedra (the CPU ray caster): grid renderers sample values at the points.
-  auto* grid = dynamic_cast<GridVolumeRenderer*>(volume_.get());
-  const bool asGrid = grid && (!grid->drawsTetrahedra() ||
-                               (session_->model().grid && view_->location == FieldLocation::Node));
+  const VolumeRendererTraits traits = volume_->traits();
+  auto* grid = traits.drawsGrids ? dynamic_cast<GridVolumeRenderer*>(volume_.get()) : nullptr;
+  const bool asGrid =
+      grid && (!traits.drawsMeshes || (session_->model().grid && view_->location == FieldLocation::Node));
   if (asGrid != volumeGivenAGrid_) {  // the other kind of data: everything goes again
     changed_.volumeAll();
     culledFor_.clear();
@@ -842,11 +834,12 @@ void Scene::applyToVolume() {
     return;
   }
   if (v.transferFunction2D)
-    throw std::invalid_argument(session_->model().grid
-                                    ? "the volume renderer '" + v.renderer +
-                                          "' has no 2D transfer functions: choose texture-raymarch, texture-slices or cpu"
-                                    : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
-                                      "(SEG-Y, image data); this model is a mesh");
+    throw std::invalid_argument(
+        session_->model().grid
+            ? "the volume renderer '" + v.renderer + "' has no 2D transfer functions: choose one that has" +
+                  inParentheses(factory_.namesWhere([](const VolumeRendererTraits& t) { return t.transferFunction2D; }))
+            : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
+              "(SEG-Y, image data); this model is a mesh");
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
   if (cullPlanes != culledFor_) changed_.geometry = true;
   const Mesh& tets = session_->tetrahedra().mesh;
@@ -890,7 +883,8 @@ void Scene::applyVolumeSettings() {
 
 std::string Scene::perCellRefusal(const std::string& renderer) const {
   return "the volume renderer '" + renderer + "' draws values at the grid's points; '" + view_->quantity.displayName() +
-         "' is given per cell: choose cpu, raycast, vicp or reference";
+         "' is given per cell: choose a renderer that draws meshes" +
+         inParentheses(factory_.namesWhere([](const VolumeRendererTraits& t) { return t.drawsMeshes; }));
 }
 
 // A grid renderer samples the grid's point values itself: no tetrahedra, no culling (the

@@ -13,6 +13,7 @@
 #include "Legend.hpp"
 #include "ModelSession.hpp"
 #include "SceneState.hpp"
+#include "VolumeRendererFactory.hpp"
 
 #include "host/ClipCulling.hpp"
 #include "host/render/StreamlineRenderer.hpp"
@@ -31,9 +32,6 @@ namespace volpost::app {
 /// The axis of `grid` a user names: the first word of its name ("inline", "crossline",
 /// "time" for a survey), its letter (i, j, k) or its number (1, 2, 3), any case; -1 for none.
 int gridAxisNamed(const RegularGrid& grid, const std::string& name);
-
-/// A volume renderer by its plugin name, or nullptr if no plugin offers it.
-using VolumeRendererFactory = std::function<std::unique_ptr<VolumeRenderer>(const std::string& name)>;
 
 /// Streamlines traced for a StreamlineLayer, and the values they are colored by.
 struct StreamlineResult {
@@ -247,8 +245,8 @@ class Scene {
   void checkSamplingStep(double step) const;
   const ScalarView* isoSurfaceView() const;
   std::size_t stepCountOf(const std::string& quantityKey) const;
-  mutable std::optional<ScalarView> isoView_;   ///< another quantity's values, for its iso-surfaces
-  mutable std::string isoViewFor_;              ///< the quantity, step and view version isoView_ is of
+  mutable std::optional<ScalarView> isoView_;          ///< another quantity's values, for its iso-surfaces
+  mutable std::string isoViewFor_;                     ///< the quantity, step and view version isoView_ is of
   mutable std::uint64_t isoViewVersion_ = 1ull << 62;  ///< apart from viewVersion_'s counts
   /// The most samples a ray takes across the model's diagonal in the sampling mode.
   static constexpr double kMaxSamplesAcross = 65536.0;

@@ -2,17 +2,17 @@
 #include "MainWindow.hpp"
 
 #include "../core/PictureFile.hpp"
-#include "../core/ProbeTable.hpp"
 #include "../core/PluginRenderers.hpp"
+#include "../core/ProbeTable.hpp"
 #include "../core/StreamlineSeeds.hpp"
-#include "../core/VolumeSpecs.hpp"
-#include "PluginsDialog.hpp"
 #include "../core/VolumeDefaults.hpp"
+#include "../core/VolumeSpecs.hpp"
+#include "GridSlicesPanel.hpp"
 #include "LinePlotPanel.hpp"
+#include "PluginsDialog.hpp"
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "StepController.hpp"
-#include "GridSlicesPanel.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
 
@@ -20,20 +20,22 @@
 #include <volpost/core/Version.hpp>
 #include <volpost/render/VolumeRenderer.hpp>
 
+#include <algorithm>
+
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QWidget>
 #include <QDialogButtonBox>
 #include <QDockWidget>
-#include <QFormLayout>
-#include <QPushButton>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QFormLayout>
 #include <QMimeData>
+#include <QPushButton>
 #include <QUrl>
+#include <QWidget>
 #include "host/TextFile.hpp"
 
 #include <QFileDialog>
@@ -106,7 +108,8 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   connect(viewport_, &Viewport::clipPlaneDragged, this, [this](const ClipPlane& p) {
     const double size = session_ ? session_->bounds().diagonal() : 1.0;
     statusBar()->showMessage("Clip plane through " + roundedPoint(p.point, size) + ", normal " +
-                             roundedPoint(glm::normalize(p.normal), 1.0) + " (View > Clip Plane > Type Plane to type it)");
+                             roundedPoint(glm::normalize(p.normal), 1.0) +
+                             " (View > Clip Plane > Type Plane to type it)");
     checkClipAxisOf(p);
   });
   setCentralWidget(viewport_);
@@ -236,7 +239,8 @@ void MainWindow::buildActions() {
   legendAction_->setCheckable(true);
   legendAction_->setChecked(true);
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
-  view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)->setObjectName("surfaceOpacityAction");
+  view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)
+      ->setObjectName("surfaceOpacityAction");
 
   // What is shown of the results (deformation, probes, cuts, contours, lines) and the
   // volume each have a menu: one View menu held all 34 entries.
@@ -279,58 +283,86 @@ void MainWindow::buildActions() {
 }
 
 // OpenGL drawn by the CPU (no GPU, a remote desktop): the GPU renderers then run on the same
-// cores several times slower than the CPU ray caster, so volume rendering starts with it
-// unless the user or a state file chose a renderer.
+// cores several times slower than a renderer that computes on the CPU, so volume rendering
+// starts with the first such renderer unless the user or a state file chose one.
 void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
   if (!gl::isSoftwareRasterizer(description.toStdString())) return;
-  QAction* cpu = findChild<QAction*>("renderer:cpu");
+  const auto onCpu =
+      std::find_if(renderers_.begin(), renderers_.end(), [](const RendererEntry& r) { return r.traits.runsOnCpu; });
+  if (onCpu == renderers_.end()) return;
+  const QString cpuName = onCpu->name;
+  QAction* cpu = findChild<QAction*>("renderer:" + cpuName);
   if (!cpu) return;
   // The fast choice first, and the slow ones say so.
-  if (auto* menu = findChild<QMenu*>("rendererMenu"); menu && !menu->actions().isEmpty() && menu->actions().first() != cpu) {
+  if (auto* menu = findChild<QMenu*>("rendererMenu");
+      menu && !menu->actions().isEmpty() && menu->actions().first() != cpu) {
     menu->removeAction(cpu);
     menu->insertAction(menu->actions().first(), cpu);
-    for (QAction* a : menu->actions())
-      if (a != cpu && !a->text().endsWith(")"))
-        a->setText(a->text() + " (slow here: OpenGL is drawn by the CPU)");
+    for (const RendererEntry& r : renderers_) {
+      QAction* a = findChild<QAction*>("renderer:" + r.name);
+      if (!a || r.traits.runsOnCpu || a->text().contains("slow here")) continue;
+      const QString text = a->text();
+      a->setText(text.endsWith(")") ? text.chopped(1) + "; slow here: OpenGL is drawn by the CPU)"
+                                    : text + " (slow here: OpenGL is drawn by the CPU)");
+    }
   }
   if (rendererChosen_ || cpu->isChecked()) return;
-  if (!changeScene([](Scene& s) { s.setVolumeRenderer("cpu"); })) return;
-  checkRendererAction("cpu");
+  if (!changeScene([&](Scene& s) { s.setVolumeRenderer(cpuName.toStdString()); })) return;
+  checkRendererAction(cpuName);
   statusBar()->showMessage("OpenGL is drawn by the CPU here: volume rendering uses " + cpu->text() +
                            " (View > Volume Renderer to change)", 10000);
 }
 
-// The menu shows `name` as the renderer, without triggering it (signals blocked, so the
-// group's exclusivity is done by hand).
+// The menu shows `name` as the renderer, without triggering it. Its signals are not
+// blocked: the exclusive group learns of the change through them and unchecks the others
+// (blocked, it kept its old choice, and the next one picked from the menu left two
+// checked). Only `triggered` acts on the scene, and setChecked does not emit it.
 void MainWindow::checkRendererAction(const QString& name) {
-  for (const RendererEntry& r : renderers_)
-    if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
-      const QSignalBlocker block(a);
-      a->setChecked(r.name == name);
-    }
+  if (QAction* a = findChild<QAction*>("renderer:" + name)) a->setChecked(true);
+  fitModeMenuToRenderer();
+}
+
+// Volume Integration offers the modes the scene's renderer has; one that integrates
+// exactly has none to choose.
+void MainWindow::fitModeMenuToRenderer() {
+  const std::string current = viewport_->scene().volume().renderer;
+  const auto r = std::find_if(renderers_.begin(), renderers_.end(),
+                              [&](const RendererEntry& e) { return e.name.toStdString() == current; });
+  for (IntegrationMode mode : allIntegrationModes()) {
+    QAction* a =
+        findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(mode).data(), int(toString(mode).size())));
+    if (!a) continue;
+    const bool offered = r == renderers_.end() ||
+                         std::find(r->traits.modes.begin(), r->traits.modes.end(), mode) != r->traits.modes.end();
+    a->setEnabled(offered);
+    a->setToolTip(offered ? QString()
+                  : r->traits.modes.empty()
+                      ? r->label() + " integrates the transfer function exactly: it has no modes to choose"
+                      : r->label() + " does not offer this mode");
+  }
 }
 
 void MainWindow::fitRendererToModel() {
   if (!session_) return;
   const bool grid = session_->model().grid.has_value();
-  const auto draws = [grid](const RendererEntry& r) { return grid ? r.drawsGrids : r.drawsMeshes; };
+  const auto draws = [grid](const RendererEntry& r) { return r.drawsKindOf(grid); };
   // A renderer that cannot draw this kind of model is shown, but not offered (a grid's cells
   // are a mesh too: every renderer draws a grid).
   for (const RendererEntry& r : renderers_)
     if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
-      const bool offered = grid || r.drawsMeshes;
+      const bool offered = grid || r.traits.drawsMeshes;
       a->setEnabled(offered);
       a->setToolTip(offered ? QString() : QString("Draws regular grids (SEG-Y, image data, NRRD), not meshes"));
     }
   const std::string current = viewport_->scene().volume().renderer;
   for (const RendererEntry& r : renderers_)
-    if (r.name.toStdString() == current && (draws(r) || (rendererChosen_ && r.drawsMeshes))) return;
+    if (r.name.toStdString() == current && (draws(r) || (rendererChosen_ && r.traits.drawsMeshes))) return;
   // The first in the menu's order that draws this kind of model.
   for (const RendererEntry& r : renderers_) {
     if (!draws(r)) continue;
     if (!changeScene([&](Scene& s) { s.setVolumeRenderer(r.name.toStdString()); })) return;
     checkRendererAction(r.name);
-    if (rendererChosen_) statusBar()->showMessage("Volume renderer for this model: " + r.label, 10000);
+    if (rendererChosen_) statusBar()->showMessage("Volume renderer for this model: " + r.label(), 10000);
     return;
   }
 }
@@ -345,7 +377,7 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
   auto* rendererGroup = new QActionGroup(this);
   for (std::size_t i = 0; i < renderers.size(); ++i) {
     const QString name = renderers[i].name;
-    QAction* a = rendererMenu->addAction(renderers[i].label);
+    QAction* a = rendererMenu->addAction(renderers[i].label());
     a->setObjectName("renderer:" + name);
     a->setCheckable(true);
     rendererGroup->addAction(a);
@@ -359,6 +391,7 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
       statusBar()->showMessage("Preparing " + a->text() + "...");
       QApplication::setOverrideCursor(Qt::WaitCursor);
       const bool ok = changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); });
+      fitModeMenuToRenderer();
       if (ok && viewport_->scene().volumeShown()) viewport_->repaint();
       QApplication::restoreOverrideCursor();
       if (ok) statusBar()->showMessage("Volume renderer: " + a->text());
@@ -410,6 +443,7 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
     modeGroup->addAction(a);
     connect(a, &QAction::triggered, this, [this, mode] { changeScene([mode](Scene& s) { s.setIntegrationMode(mode); }); });
   }
+  fitModeMenuToRenderer();
   QMenu* clip = results->addMenu("&Clip Plane");
   auto* clipGroup = new QActionGroup(this);
   // A plane typed or turned to another normal checks none of the axis entries.
@@ -446,8 +480,9 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
   QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
     if (!session_) return;
     viewport_->setRakeMode(true);
-    statusBar()->showMessage("Drag across the model to place a rake of 20 seeds (each end halfway through the model "
-                             "under it); Esc cancels. View > Streamlines > Streamlines... edits it");
+    statusBar()->showMessage(
+        "Drag across the model to place a rake of 20 seeds (each end halfway through the model "
+        "under it); Esc cancels. View > Streamlines > Streamlines... edits it");
   });
   rake->setObjectName("placeRake");
   streamlinesAction_ = lines->addAction("Show Streamlines");
@@ -667,12 +702,13 @@ void MainWindow::traceStreamlines() {
       points += l.points.size();
       spent += l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
     }
-    statusBar()->showMessage(QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
-                                 .arg(t.result->lines.size())
-                                 .arg(points)
-                                 .arg(t.result->milliseconds, 0, 'f', 0)
-                                 .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString())
-                                 .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
+    statusBar()->showMessage(
+        QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
+            .arg(t.result->lines.size())
+            .arg(points)
+            .arg(t.result->milliseconds, 0, 'f', 0)
+            .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString())
+            .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
     emit streamlinesTraced(true, {});
   });
   watcher->setFuture(QtConcurrent::run([session, layer, step, progress, cancel]() {
@@ -710,10 +746,8 @@ void MainWindow::checkClipAxisOf(const ClipPlane& plane) {
   for (int a = 0; a < 3; ++a)
     if (n[a] > 1.0 - 1e-12) axis = a;
   for (int i = -1; i < 3; ++i)
-    if (QAction* action = findChild<QAction*>(QString("clip:%1").arg(i))) {
-      const QSignalBlocker block(action);
-      action->setChecked(i == axis);
-    }
+    if (QAction* action = findChild<QAction*>(QString("clip:%1").arg(i)))
+      action->setChecked(i == axis);  // signals on, for the group (the entries act on `triggered`)
 }
 
 void MainWindow::typeClipPlane() {
@@ -791,7 +825,8 @@ void MainWindow::showGridSlices() {
   if (!gridSlices_) {  // a dock, beside the others: a floating dialog covered the model
     gridSlicesDock_ = new QDockWidget("Grid Slices", this);
     gridSlicesDock_->setObjectName("gridSlicesDock");
-    gridSlices_ = new GridSlicesPanel(scene, [this] { viewport_->update(); }, gridSlicesDock_);
+    gridSlices_ = new GridSlicesPanel(
+        scene, [this] { viewport_->update(); }, gridSlicesDock_);
     gridSlices_->setObjectName("gridSlicesPanel");
     gridSlicesDock_->setWidget(gridSlices_);
     addDockWidget(Qt::BottomDockWidgetArea, gridSlicesDock_);
@@ -839,7 +874,8 @@ void MainWindow::chooseIsoSurfaces() {
     QString bad;
     const auto surfaces = parseIsoSurfaces(values->text(), &bad);
     if (!surfaces) {
-      QMessageBox::warning(this, "Iso-surfaces", QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
+      QMessageBox::warning(this, "Iso-surfaces",
+                           QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
       continue;
     }
     const std::string key = quantity->currentData().toString().toStdString();
@@ -861,8 +897,8 @@ void MainWindow::seeThroughSurface(Scene& scene, const QString& what) {
   if (scene.state().surfaceOpacity < 1.0) return;
   scene.setSurfaceOpacity(0.3);
   QTimer::singleShot(0, this, [this, what] {
-    statusBar()->showMessage(QString("The surface is see-through so that %1 show (View > Surface Opacity...)").arg(what),
-                             10000);
+    statusBar()->showMessage(
+        QString("The surface is see-through so that %1 show (View > Surface Opacity...)").arg(what), 10000);
   });
 }
 
@@ -872,11 +908,11 @@ void MainWindow::chooseSurfaceOpacity() {
     return;
   }
   bool ok = false;
-  const int percent = QInputDialog::getInt(this, "Surface opacity",
-                                           "Opacity of the model's surface, percent (below 100 it is see-through and "
-                                           "what is inside shows):",
-                                           int(std::lround(viewport_->scene().state().surfaceOpacity * 100.0)), 0, 100, 5,
-                                           &ok);
+  const int percent =
+      QInputDialog::getInt(this, "Surface opacity",
+                           "Opacity of the model's surface, percent (below 100 it is see-through and "
+                           "what is inside shows):",
+                           int(std::lround(viewport_->scene().state().surfaceOpacity * 100.0)), 0, 100, 5, &ok);
   if (!ok) return;
   if (changeScene([&](Scene& s) { s.setSurfaceOpacity(percent / 100.0); }))
     statusBar()->showMessage(QString("Surface opacity %1 %").arg(percent));
@@ -928,15 +964,16 @@ void MainWindow::buildToolbar() {
   stepBox_->setObjectName("stepBox");
   stepBox_->setMinimumContentsLength(14);
   bar->addWidget(stepBox_);
-  steps_ = new StepController(*this, *viewport_, *bar, *stepBox_, *resultsMenu_, *fileMenu_, [this] { notifyPanels(); });
+  steps_ =
+      new StepController(*this, *viewport_, *bar, *stepBox_, *resultsMenu_, *fileMenu_, [this] { notifyPanels(); });
   bar->addWidget(new QLabel("  Colors: "));
   colorMapBox_ = new QComboBox(this);
   colorMapBox_->setObjectName("colorMapBox");
   // Named as the transfer-function editor names them; the item's data is the written name.
   for (const auto& name : ColorMap::names())
     colorMapBox_->addItem(QString::fromStdString(ColorMap::label(name)), QString::fromStdString(name));
-  colorMapBox_->setCurrentIndex(
-      std::max(0, colorMapBox_->findData(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString())));
+  colorMapBox_->setCurrentIndex(std::max(
+      0, colorMapBox_->findData(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString())));
   changeScene([this](Scene& s) { s.setColorMap(colorMapBox_->currentData().toString().toStdString()); });
   bar->addWidget(colorMapBox_);
   connect(quantityBox_, &QComboBox::currentIndexChanged, this, [this] {
@@ -981,11 +1018,10 @@ void MainWindow::buildPanels() {
   // View > Plot Over Line: a dock beside the Probe panel.
   auto* lineDock = new QDockWidget("Plot Over Line", this);
   lineDock->setObjectName("linePlotDock");
-  linePlot_ = new LinePlotPanel([this]() -> const Scene& { return viewport_->scene(); },
-                                [this](std::optional<std::array<glm::dvec3, 2>> line) {
-                                  changeScene([&](Scene& s) { s.setPlotLine(line); });
-                                },
-                                lineDock);
+  linePlot_ = new LinePlotPanel(
+      [this]() -> const Scene& { return viewport_->scene(); },
+      [this](std::optional<std::array<glm::dvec3, 2>> line) { changeScene([&](Scene& s) { s.setPlotLine(line); }); },
+      lineDock);
   linePlot_->setObjectName("linePlotPanel");
   lineDock->setWidget(linePlot_);
   addDockWidget(Qt::RightDockWidgetArea, lineDock);
@@ -1366,7 +1402,8 @@ void MainWindow::showModelInfo() {
   // What the process holds, all of it (this model, what is drawn, the program), then parts.
   if (const std::size_t held = processResidentBytes())
     html += QString("volpost holds %1 in all<br>").arg(QString::fromStdString(byteSizeText(double(held))));
-  html += QString("fields read: %1<br>").arg(QString::fromStdString(byteSizeText(double(Field::bytesHeldByAllFields()))));
+  html +=
+      QString("fields read: %1<br>").arg(QString::fromStdString(byteSizeText(double(Field::bytesHeldByAllFields()))));
   // Host: the cells, nodes and ids the model holds (fields are read on first use). The
   // volume renderer's figure is its structure's (GPU buffers, or host memory for the CPU
   // ray caster), as of its last frame.
@@ -1509,9 +1546,15 @@ void MainWindow::syncControlsToScene() {
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);
   check(findChild<QAction*>("shadingAction"), state.volume.shading);
-  check(findChild<QAction*>("renderer:" + QString::fromStdString(state.volume.renderer)), true);
-  check(findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(), int(toString(state.volume.mode).size()))), true);
-  if (state.volume.clipPlanes.empty()) check(findChild<QAction*>("clip:-1"), true);
+  // Actions of exclusive groups: checked with their signals on, so that the group unchecks
+  // the others (they act on `triggered` only).
+  checkRendererAction(QString::fromStdString(state.volume.renderer));
+  if (QAction* mode =
+          findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(),
+                                                                   int(toString(state.volume.mode).size()))))
+    mode->setChecked(true);
+  if (state.volume.clipPlanes.empty())
+    if (QAction* off = findChild<QAction*>("clip:-1")) off->setChecked(true);
   probes_->syncToScene();
   steps_->syncToScene();
 }

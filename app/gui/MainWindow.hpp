@@ -117,6 +117,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   /// renderer for a seismic cube, a mesh renderer for a mesh).
   void fitRendererToModel();
   void checkRendererAction(const QString& name);
+  void fitModeMenuToRenderer();
   void setVolumeShown(bool on);
   void chooseClipBox();
   void typeClipPlane();

@@ -2,7 +2,7 @@
 // dot(n, p) + w >= -clipTolerance, in coordinates relative to the model center. A section
 // lying on a plane passes its own plane by the tolerance.
 uniform int clipCount;
-uniform vec4 clipPlanes[8];  // kMaxClipPlanes, planes and box together
+uniform vec4 clipPlanes[MAX_CLIP_PLANES];  // volumeLimitDefines(): planes and box together
 uniform float clipTolerance;
 
 bool clippedAway(vec3 p) {

@@ -102,6 +102,34 @@ TEST(InfoCommand, ReaderOptionsAreListedHonouredAndKeptInTheState) {
 // --slice: a survey's inline, crossline and time slices in the surface view and, opaque,
 // in the volume; kept in the state (render --state gives the same picture); refused on a
 // mesh, for an axis the grid lacks and outside the grid, naming them.
+// Each option is refused, before any reading, by the renderers that say (in their traits)
+// they do not take it, and the message names the ones that do; the same options pass the
+// renderers that take them.
+TEST(RenderCommand, OptionsARendererDoesNotTakeAreRefusedNamingTheOnesThatDo) {
+  const std::string out = (std::filesystem::temp_directory_path() / "volpost_traits.png").string();
+  const std::string common = "render " + dataFile("bar/bar_tet4.vtu") + " --field S.mises --size 32x24 -o " + out;
+  const auto refused = [&](const std::string& extra, const std::string& says) {
+    const auto r = runVolpost(common + " " + extra);
+    EXPECT_EQ(r.exitCode, 2) << extra << ": " << r.output;
+    EXPECT_NE(r.output.find(says), std::string::npos) << extra << ": " << r.output;
+  };
+  refused("--renderer cpu --mode linear", "cpu integrates exactly");
+  refused("--renderer reference --mode linear", "reference integrates exactly");
+  refused("--renderer raycast --threads 2", "--threads sets the threads of reference, not of raycast");
+  refused("--renderer vicp --shading", "(cpu, texture-raymarch, texture-slices, reference), not by vicp");
+  refused("--renderer reference --termination 0", "not used by reference (it never stops early)");
+  refused("--renderer reference --sampling-step 0.1", "not used by reference (it integrates exactly)");
+  refused("--renderer cpu --sampling-step 0.1", "not used by cpu on meshes");
+  refused("--renderer reference --volume-edges", "which draws the volume alone");
+  refused("--renderer nope",
+          "--renderer nope is not one of: surface, raycast, vicp, vicp-exact, cpu, "
+          "texture-raymarch, texture-slices, reference");
+  for (const char* ok :
+       {"--renderer raycast --mode sampling --sampling-step 0.1 --termination 0", "--renderer vicp --mode iso-table",
+        "--renderer cpu --termination 0", "--renderer reference --threads 1"})
+    EXPECT_EQ(runVolpost(common + " " + ok).exitCode, 0) << ok;
+}
+
 TEST(RenderCommand, GridSlicesOfASurvey) {
   const auto dir = std::filesystem::path(::testing::TempDir());
   const std::string cube = dataFile("seismic/synthetic_12x10x40.sgy"), common = " --field amplitude --size 64x48 ";
@@ -382,7 +410,9 @@ TEST(RenderCommand, APerCellFieldOnAGridIsDrawnByTheCpuRendererAndRefusedByTheTe
   for (const char* renderer : {"texture-raymarch", "texture-slices"}) {
     const auto r = runVolpost(common + " --renderer " + renderer);
     EXPECT_EQ(r.exitCode, 2) << renderer;
-    EXPECT_NE(r.output.find("'material' is given per cell: choose cpu, raycast, vicp or reference"), std::string::npos)
+    EXPECT_NE(r.output.find(
+                  "'material' is given per cell: choose a renderer that draws meshes (raycast, vicp, vicp-exact, cpu)"),
+              std::string::npos)
         << r.output;
   }
 }

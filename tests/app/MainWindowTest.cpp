@@ -256,7 +256,7 @@ class MainWindowTest : public QObject {
   }
 
   void theRendererMenuShowsThePluginsOwnWords() {
-    // The labels come from the volume plugin (RendererPlugin::rendererLabel), not the host.
+    // The labels come from the renderers themselves (VolumeRenderer::traits), not the host.
     auto* raycast = window_->findChild<QAction*>("renderer:raycast");
     auto* vicp = window_->findChild<QAction*>("renderer:vicp");
     QVERIFY(raycast && vicp);
@@ -269,8 +269,30 @@ class MainWindowTest : public QObject {
       QVERIFY(menu);
       QCOMPARE(menu->actions().first()->objectName(), QString("renderer:cpu"));
       QVERIFY2(raycast->text().contains("slow here"), qPrintable(raycast->text()));
+      QVERIFY2(vicp->text().contains("slow here") && vicp->text().count('(') == 1, qPrintable(vicp->text()));
       QVERIFY2(!window_->findChild<QAction*>("renderer:cpu")->text().contains("slow"), "the fast one is not marked");
     }
+    // One renderer checked, the scene's (a renderer checked by the window itself, then
+    // another picked from the menu, left both checked).
+    const auto checkedRenderers = [&] {
+      QStringList names;
+      for (QAction* a : window_->findChild<QMenu*>("rendererMenu")->actions())
+        if (a->isChecked()) names << a->objectName();
+      return names;
+    };
+    QCOMPARE(checkedRenderers(),
+             QStringList{"renderer:" + QString::fromStdString(window_->viewport()->scene().state().volume.renderer)});
+    // The CPU ray caster integrates exactly: Volume Integration has nothing to offer it; the
+    // GPU ray caster offers every mode.
+    auto* linear = window_->findChild<QAction*>("mode:linear");
+    QVERIFY(linear);
+    window_->findChild<QAction*>("renderer:cpu")->trigger();
+    QCOMPARE(checkedRenderers(), QStringList{"renderer:cpu"});
+    QVERIFY(!linear->isEnabled());
+    QVERIFY2(linear->toolTip().contains("exactly"), qPrintable(linear->toolTip()));
+    raycast->trigger();
+    QCOMPARE(checkedRenderers(), QStringList{"renderer:raycast"});
+    QVERIFY(linear->isEnabled());
     for (QAction* a : window_->findChildren<QAction*>())
       QVERIFY2(!a->text().contains("seed") && !a->text().contains("MPVONC"), qPrintable(a->text()));
   }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "host/render/ClipUniforms.hpp"
 
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>

@@ -4,12 +4,13 @@
 #include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 
 namespace volpost {
 
 void OverlayRenderer::initialize() {
   registerHostShaders();
-  program_ = gl::buildProgram({"host/overlay.vert", "host/overlay.frag"});
+  program_ = gl::buildProgram({"host/overlay.vert", "host/overlay.frag"}, volumeLimitDefines());
   vao_ = gl::createVertexArray();  // the quad comes from gl_VertexID
 }
 

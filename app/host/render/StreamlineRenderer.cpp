@@ -5,6 +5,7 @@
 #include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -56,8 +57,9 @@ void configure(GLuint vao, GLuint vbo, GLuint ibo) {
 
 void StreamlineRenderer::initialize() {
   registerHostShaders();
-  lineProgram_ = gl::buildProgram({"host/streamline.vert", "host/streamline.geom", "host/streamline.frag"});
-  tubeProgram_ = gl::buildProgram({"host/tube.vert", "host/tube.frag"});
+  lineProgram_ =
+      gl::buildProgram({"host/streamline.vert", "host/streamline.geom", "host/streamline.frag"}, volumeLimitDefines());
+  tubeProgram_ = gl::buildProgram({"host/tube.vert", "host/tube.frag"}, volumeLimitDefines());
   lineVao_ = gl::createVertexArray();
   tubeVao_ = gl::createVertexArray();
   lineVbo_ = gl::createBuffer();

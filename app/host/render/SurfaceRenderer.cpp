@@ -5,6 +5,7 @@
 #include "host/render/HostShaders.hpp"
 
 #include <volpost/render/ShaderLibrary.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -35,8 +36,8 @@ constexpr int kColorMapTexels = 256;
 
 void SurfaceRenderer::initialize() {
   registerHostShaders();
-  surfaceProgram_ = gl::buildProgram({"host/surface.vert", "host/surface.frag"});
-  edgeProgram_ = gl::buildProgram({"host/edges.vert", "host/edges.frag"});
+  surfaceProgram_ = gl::buildProgram({"host/surface.vert", "host/surface.frag"}, volumeLimitDefines());
+  edgeProgram_ = gl::buildProgram({"host/edges.vert", "host/edges.frag"}, volumeLimitDefines());
   surfaceVao_ = gl::createVertexArray();
   edgeVao_ = gl::createVertexArray();
   surfaceVbo_ = gl::createBuffer();

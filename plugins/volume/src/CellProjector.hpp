@@ -29,6 +29,13 @@ class CellProjector final : public TetVolumeRenderer {
  public:
   explicit CellProjector(OrderMethod method = OrderMethod::Mpvonc) : method_(method) {}
   std::string name() const override { return method_ == OrderMethod::ImageSpace ? "vicp-exact" : "vicp"; }
+  VolumeRendererTraits traits() const override {
+    VolumeRendererTraits t;
+    t.label = method_ == OrderMethod::ImageSpace ? "Cell projection (exact sort per pixel)"
+                                                 : "Cell projection (fast sort, may err on non-convex meshes)";
+    t.modes = allIntegrationModes();
+    return t;
+  }
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;

@@ -87,20 +87,13 @@ void CpuVolumeRenderer::setValues(std::span<const double> values) {
 }
 
 void CpuVolumeRenderer::setClipPlanes(const std::vector<ClipPlane>& planes) {
-  if (planes.size() > std::size_t(kMaxClipPlanes))
-    throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
-                                std::to_string(kMaxClipPlanes));
+  checkClipPlanes(planes);
   settings_.clipPlanes = planes;
   ++revision_;
 }
 
 void CpuVolumeRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
-  if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
-    throw std::invalid_argument(std::to_string(surfaces.size()) + " iso-surfaces: a volume takes at most " +
-                                std::to_string(kMaxIsoSurfaces));
-  for (const optics::IsoSurface& s : surfaces)
-    if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
-      throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
+  checkIsoSurfaces(surfaces);
   settings_.isoSurfaces = surfaces;
   ++revision_;
   visible_.reset();

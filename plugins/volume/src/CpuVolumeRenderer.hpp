@@ -29,6 +29,14 @@ namespace volpost::volume {
 class CpuVolumeRenderer : public GridVolumeRenderer {
  public:
   std::string name() const override { return "cpu"; }
+  VolumeRendererTraits traits() const override {
+    VolumeRendererTraits t;
+    t.label = "Ray casting on the CPU (exact, all cores)";
+    t.drawsGrids = t.transferFunction2D = t.shading = true;
+    t.samplingStepOnMeshes = false;  // meshes are integrated exactly; grids are marched
+    t.runsOnCpu = true;
+    return t;
+  }
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;
@@ -36,7 +44,6 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
   void setGrid(const RegularGrid& grid, SampleView values) override;
   void setGridValues(SampleView values) override;
-  bool drawsTetrahedra() const override { return true; }
   /// Grids only (the marcher shades by the trilinear gradient); meshes are drawn unlit.
   void setShading(bool on) override;
   /// Grids only; a mesh's frame with one set is refused.

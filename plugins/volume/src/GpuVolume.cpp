@@ -210,21 +210,13 @@ void GpuVolume::setTransferFunction2D(const std::optional<TransferFunction2D>& t
 }
 
 void GpuVolume::setClipPlanes(const std::vector<ClipPlane>& planes) {
-  if (planes.size() > std::size_t(kMaxClipPlanes))
-    throw std::invalid_argument(std::to_string(planes.size()) + " clip planes: a volume takes at most " +
-                                std::to_string(kMaxClipPlanes) + " (a clip box is 6)");
-  for (const ClipPlane& p : planes) (void)unitNormal(p);
+  checkClipPlanes(planes);
   clipPlanes_ = planes;
   ++revision_;
 }
 
 void GpuVolume::setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) {
-  if (surfaces.size() > std::size_t(kMaxIsoSurfaces))
-    throw std::invalid_argument(std::to_string(surfaces.size()) + " iso-surfaces: a volume takes at most " +
-                                std::to_string(kMaxIsoSurfaces));
-  for (const optics::IsoSurface& s : surfaces)
-    if (!std::isfinite(s.value) || !(s.opacity >= 0.0 && s.opacity <= 1.0))
-      throw std::invalid_argument("an iso-surface needs a finite value and an opacity in 0..1");
+  checkIsoSurfaces(surfaces);
   // Tets an iso-surface passes through show: a new value changes what rays skip.
   const auto valuesOf = [](const std::vector<optics::IsoSurface>& list) {
     std::vector<double> v;

@@ -22,6 +22,9 @@ namespace volpost::volume {
 class GridRayMarcher final : public GpuVolumeRenderer<GridVolumeRenderer> {
  public:
   std::string name() const override { return "texture-raymarch"; }
+  VolumeRendererTraits traits() const override {
+    return gridTraits("Ray marching through a 3D texture (regular grids)");
+  }
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, SampleView values) override { volume_.setGrid(grid, values); }
   void setGridValues(SampleView values) override { volume_.setGridValues(values); }

@@ -28,6 +28,7 @@ namespace volpost::volume {
 class GridSlicer final : public GpuVolumeRenderer<GridVolumeRenderer> {
  public:
   std::string name() const override { return "texture-slices"; }
+  VolumeRendererTraits traits() const override { return gridTraits("View-aligned texture slices (regular grids)"); }
   void setVolume(const Mesh&, FieldLocation, std::span<const double>) override;
   void setGrid(const RegularGrid& grid, SampleView values) override { volume_.setGrid(grid, values); }
   void setGridValues(SampleView values) override { volume_.setGridValues(values); }

@@ -30,6 +30,12 @@ class RayCaster final : public TetVolumeRenderer {
   static constexpr int kStepsPerPass = TetRayDispatch::kStepsPerPass;
 
   std::string name() const override { return "raycast"; }
+  VolumeRendererTraits traits() const override {
+    VolumeRendererTraits t;
+    t.label = "Ray casting";
+    t.modes = allIntegrationModes();
+    return t;
+  }
   void initialize() override;
   void release() override;
   void render(const RenderContext& ctx) override;

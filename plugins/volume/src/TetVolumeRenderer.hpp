@@ -34,6 +34,17 @@ class GpuVolumeRenderer : public Interface {
   GpuVolume& volume() { return volume_; }
 
  protected:
+  /// What a renderer of grids only says of itself: grids as a texture, with every mode,
+  /// shading and 2D transfer functions.
+  static VolumeRendererTraits gridTraits(std::string label) {
+    VolumeRendererTraits t;
+    t.label = std::move(label);
+    t.drawsMeshes = false;
+    t.drawsGrids = t.transferFunction2D = t.shading = true;
+    t.modes = allIntegrationModes();
+    return t;
+  }
+
   GpuVolume volume_;
 };
 

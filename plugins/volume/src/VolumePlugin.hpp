@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The volume plugin: hands the host its GPU volume renderers and their names in words.
+// The volume plugin: hands the host its volume renderers by name (each says what it is and
+// draws through traits()).
 #pragma once
 
 #include "CellProjector.hpp"
@@ -27,15 +28,6 @@ class VolumePlugin : public QObject, public RendererPlugin {
   /// 3D texture marched along rays; texture-slices: the same texture in view-aligned slices.
   QStringList rendererNames() const override {
     return {"raycast", "vicp", "vicp-exact", "cpu", "texture-raymarch", "texture-slices"};
-  }
-  QString rendererLabel(const QString& name) const override {
-    if (name == "raycast") return "Ray casting";
-    if (name == "vicp") return "Cell projection (fast sort, may err on non-convex meshes)";
-    if (name == "vicp-exact") return "Cell projection (exact sort per pixel)";
-    if (name == "cpu") return "Ray casting on the CPU (exact, all cores)";
-    if (name == "texture-raymarch") return "Ray marching through a 3D texture (regular grids)";
-    if (name == "texture-slices") return "View-aligned texture slices (regular grids)";
-    return name;
   }
   std::unique_ptr<Renderer> createRenderer(const QString& name) const override {
     if (name == "raycast") return std::make_unique<RayCaster>();

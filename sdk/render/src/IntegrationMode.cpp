@@ -1,12 +1,7 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/IntegrationMode.hpp>
 
 namespace volpost {
-
-std::string volumeLimitDefines() {
-  return "#define MAX_CLIP_PLANES " + std::to_string(kMaxClipPlanes) + "\n#define MAX_ISO_SURFACES " +
-         std::to_string(kMaxIsoSurfaces) + "\n";
-}
 
 std::string_view toString(IntegrationMode mode) {
   switch (mode) {

@@ -5,6 +5,7 @@
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/ShaderLibrary.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 #include "host/render/HostShaders.hpp"
 #include "host/render/SurfaceRenderer.hpp"
 
@@ -108,7 +109,8 @@ TEST_F(HeadlessRender, EveryHostShaderCompiles) {
     std::vector<std::string> stages = {name};
     if (std::find(names.begin(), names.end(), base + ".geom") != names.end()) stages.push_back(base + ".geom");
     stages.push_back(base + ".frag");
-    EXPECT_NO_THROW(gl::buildProgram(stages)) << name;
+    // As the host builds them: the volume limits defined (clip_planes.glsl sizes its array).
+    EXPECT_NO_THROW(gl::buildProgram(stages, volumeLimitDefines())) << name;
     ++programs;
   }
   EXPECT_GE(programs, 5);  // surface, edges, overlay, streamline, tube

@@ -36,13 +36,13 @@ class ReaderPlugin {
 };
 
 /// Provides renderers (they draw into a RenderContext; see volpost/render/Renderer.hpp).
+/// A volume renderer says what it draws, which settings it takes and its words for a menu
+/// itself (VolumeRenderer::traits()).
 class RendererPlugin {
  public:
   virtual ~RendererPlugin() = default;
   /// The names the command line and state files use ("raycast"), in menu order.
   virtual QStringList rendererNames() const = 0;
-  /// What a user reads in the window's menu for `name` ("Ray casting"), in plain words.
-  virtual QString rendererLabel(const QString& name) const = 0;
   /// A new renderer; the caller initializes it with a current GL context.
   virtual std::unique_ptr<Renderer> createRenderer(const QString& name) const = 0;
 };

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Volume renderers of regular grids (seismic cubes, image data): the values of a
 // RegularGrid's points sampled as a 3D texture. The rest of the contract (transfer
-// function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's. A
-// renderer that draws only grids says so (drawsTetrahedra() false) and its setVolume()
-// throws std::invalid_argument; one that draws both is given grids as grids, and the
-// grid's tetrahedra where the field is given per cell.
+// function, clip planes, iso-surfaces, modes, the float image) is VolumeRenderer's. Its
+// traits() say drawsGrids; a renderer that draws only grids says drawsMeshes false and its
+// setVolume() throws std::invalid_argument; one that draws both is given grids as grids,
+// and the grid's tetrahedra where the field is given per cell.
 #pragma once
 
 #include <volpost/core/RegularGrid.hpp>
@@ -32,8 +32,6 @@ class GridVolumeRenderer : public VolumeRenderer {
   /// field's, in model units), used instead of the 1D one while set; nullopt goes back to
   /// the 1D one. Throws std::invalid_argument where the renderer cannot draw it.
   virtual void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) = 0;
-  /// Whether setVolume() takes meshes of tetrahedra too.
-  virtual bool drawsTetrahedra() const { return false; }
 };
 
 }  // namespace volpost

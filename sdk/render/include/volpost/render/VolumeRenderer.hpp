@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The interface of GPU volume renderers (ray casting, cell projection), provided by
 // renderer plugins, and the contract every one of them honours: how many clip planes and
-// iso-surfaces, the integration modes and their one written form each.
+// iso-surfaces (VolumeLimits.hpp), the integration modes (IntegrationMode.hpp), and what it
+// says of itself (VolumeRendererTraits.hpp).
 //
 // Setters only record state: they make no GL call and may be called without a context.
 // render() (a context current) uploads and rebuilds what changed since the last frame,
@@ -14,7 +15,10 @@
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/render/IntegrationMode.hpp>
 #include <volpost/render/Renderer.hpp>
+#include <volpost/render/VolumeLimits.hpp>
+#include <volpost/render/VolumeRendererTraits.hpp>
 
 #include <optional>
 #include <span>
@@ -23,32 +27,6 @@
 #include <vector>
 
 namespace volpost {
-
-/// At most this many clip planes (a clip box is six, plus two free planes) and
-/// iso-surfaces per volume. Shaders receive them as MAX_CLIP_PLANES / MAX_ISO_SURFACES.
-inline constexpr int kMaxClipPlanes = 8;
-inline constexpr int kMaxIsoSurfaces = 8;
-/// "#define MAX_CLIP_PLANES 8\n#define MAX_ISO_SURFACES 8\n", for buildProgram.
-std::string volumeLimitDefines();
-
-/// How a renderer integrates the transfer function along a ray segment.
-enum class IntegrationMode {
-  LinearSegments,          ///< cut exactly at every control point crossed, psi table
-  PreIntegrated,           ///< 3D (s_front, s_back, length) table
-  Sampling,                ///< fixed step, the baseline users know from other tools
-  LinearSegmentsIsoTable,  ///< cut points looked up in a 2D (s_front, s_back) table (Espinha 2005, 4.2)
-};
-/// The one written form of each mode, used by the command line, state files, benches
-/// and settings: "linear", "pre-integrated", "sampling", "iso-table".
-std::string_view toString(IntegrationMode mode);
-/// The mode written `name` (exactly as toString writes it), or nullopt.
-std::optional<IntegrationMode> integrationModeFromString(std::string_view name);
-/// Every mode, in menu order.
-std::vector<IntegrationMode> allIntegrationModes();
-/// "linear, iso-table, pre-integrated, sampling": for messages listing the choices.
-std::string integrationModeChoices();
-/// Words for a menu or a report: "Linear segments, exact cuts", ...
-std::string_view describe(IntegrationMode mode);
 
 struct VolumeStats {
   std::size_t gpuBytes = 0;        ///< buffers and textures this renderer holds
@@ -65,6 +43,9 @@ struct VolumeStats {
 
 class VolumeRenderer : public Renderer {
  public:
+  /// What it draws and which settings it takes (the host derives its menus and refusals
+  /// from these); the same for every instance of one renderer.
+  virtual VolumeRendererTraits traits() const = 0;
   /// Mesh of tetrahedra (tet4, tet10 corners) and one value per node or per cell. The mesh
   /// must outlive the renderer's use of it (until the next setVolume or release); the
   /// values are copied. Throws std::invalid_argument for other cells (tetrahedralize
@@ -73,11 +54,11 @@ class VolumeRenderer : public Renderer {
   /// Only the values change (another result or step on the same mesh).
   virtual void setValues(std::span<const double> values) = 0;
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
-  /// Throws std::invalid_argument for more than kMaxClipPlanes.
+  /// Throws std::invalid_argument where checkClipPlanes does (VolumeLimits.hpp).
   virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;
   /// Iso-surfaces drawn where rays cross their values, opaque or translucent, shaded by
   /// the cell gradient and composited in order with the volume. Throws
-  /// std::invalid_argument for more than kMaxIsoSurfaces.
+  /// std::invalid_argument where checkIsoSurfaces does.
   virtual void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces) = 0;
   virtual void setIntegrationMode(IntegrationMode mode) = 0;
   /// Sampling mode's step, model length units.
