@@ -2,7 +2,6 @@
 #include "BoxWidget.hpp"
 
 #include "PlaneWidget.hpp"
-#include "SceneOverlay.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -33,7 +32,7 @@ std::optional<int> hitBoxWidget(const BoxWidget& widget, const Camera& camera, d
   std::optional<int> best;
   double nearest = tolerance;
   for (int f = 0; f < 6; ++f) {
-    const auto at = projectToPicture(camera, widget.faceCenters[std::size_t(f)], width, height);
+    const auto at = camera.projectToPicture(widget.faceCenters[std::size_t(f)], width, height);
     if (!at) continue;
     const double d = glm::length(pixel - *at);
     if (d <= nearest) {

@@ -5,7 +5,7 @@
 // shape, drawn without caging the picture in element edges.
 #pragma once
 
-#include <volpost/core/BoundarySurface.hpp>
+#include "host/BoundarySurface.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -3,12 +3,12 @@
 // Shared by the window and the command line so both show the same thing.
 #pragma once
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Model.hpp>
 #include <volpost/core/Quantity.hpp>
 #include <volpost/core/ReaderRegistry.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
+#include "host/BoundarySurface.hpp"
 #include "host/PointLocator.hpp"
 
 #include <atomic>

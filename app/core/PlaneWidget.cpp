@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include "PlaneWidget.hpp"
 
-#include "SceneOverlay.hpp"
-
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
@@ -96,8 +94,8 @@ PlaneWidget planeWidget(const ClipPlane& plane, const Bounds& bounds) {
 
 PlaneWidgetPart hitPlaneWidget(const PlaneWidget& widget, const Camera& camera, double width, double height,
                                glm::dvec2 pixel, double tolerance) {
-  const auto center = projectToPicture(camera, widget.center, width, height);
-  const auto knob = projectToPicture(camera, widget.knob, width, height);
+  const auto center = camera.projectToPicture(widget.center, width, height);
+  const auto knob = camera.projectToPicture(widget.knob, width, height);
   if (!center || !knob) return PlaneWidgetPart::None;
   if (glm::length(pixel - *knob) <= tolerance + 3.0) return PlaneWidgetPart::Knob;  // the knob is drawn larger
   // A handle seen end on (the normal at the viewer) has no shaft to take: the knob only.
@@ -121,8 +119,8 @@ ClipPlane turnedPlane(const ClipPlane& plane, const PlaneWidget& widget, const C
 
 double dragAlong(const glm::dvec3& anchor, const glm::dvec3& direction, double length, const Camera& camera,
                  double width, double height, glm::dvec2 from, glm::dvec2 to) {
-  const auto a = projectToPicture(camera, anchor, width, height);
-  const auto b = projectToPicture(camera, anchor + length * direction, width, height);
+  const auto a = camera.projectToPicture(anchor, width, height);
+  const auto b = camera.projectToPicture(anchor + length * direction, width, height);
   const glm::dvec2 move = to - from;
   if (a && b && glm::length(*b - *a) > 8.0) {  // the direction on the screen
     const glm::dvec2 s = *b - *a;

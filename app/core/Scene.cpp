@@ -230,78 +230,21 @@ void Scene::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
   changed_.iso = true;
 }
 
-namespace {
-
-// Throws unless each set label lies on its axis of the grid (within half a step).
-void checkGridSlices(const std::optional<RegularGrid>& grid, const std::array<std::optional<double>, 3>& labels) {
-  if (!labels[0] && !labels[1] && !labels[2]) return;
-  if (!grid)
-    throw std::invalid_argument("grid slices (inline, crossline, time) need a regular grid (SEG-Y, image data); this "
-                                "model is a mesh: use clip planes");
-  for (int a = 0; a < 3; ++a) {
-    const auto& label = labels[std::size_t(a)];
-    if (!label) continue;
-    const double index = (*label - grid->firstLabel[std::size_t(a)]) / grid->labelStep[std::size_t(a)];
-    const double last = double(grid->dims[std::size_t(a)] - 1);
-    if (!std::isfinite(index) || index < -0.5 || index > last + 0.5) {
-      const double from = grid->label(a, 0.0), to = grid->label(a, last);
-      const auto number = [](double v) {
-        std::ostringstream text;
-        text << std::setprecision(10) << v;
-        return text.str();
-      };
-      throw std::invalid_argument("the " + grid->axisNames[std::size_t(a)] + " slice at " + number(*label) +
-                                  " lies outside the grid's " + grid->axisNames[std::size_t(a)] + " " +
-                                  number(std::min(from, to)) + " .. " + number(std::max(from, to)));
-    }
-  }
-}
-
-}  // namespace
-
-int gridAxisNamed(const RegularGrid& grid, const std::string& name) {
-  const auto lower = [](std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-  };
-  const std::string wanted = lower(name);
-  for (int a = 0; a < 3; ++a) {
-    const std::string axis = lower(grid.axisNames[std::size_t(a)]);
-    const std::string firstWord = axis.substr(0, axis.find_first_of(" ("));
-    if (wanted == axis || wanted == firstWord || wanted == std::string(1, char('i' + a)) || wanted == std::to_string(a + 1))
-      return a;
-  }
-  return -1;
-}
-
 void Scene::setGridSlices(const std::array<std::optional<double>, 3>& labels) {
   checkGridSlices(session_ ? session_->model().grid : std::nullopt, labels);
   state_.gridSlices = labels;
 }
 
 std::vector<ClipPlane> Scene::gridSlicePlanes() const {
-  std::vector<ClipPlane> planes;
-  if (!session_ || !session_->model().grid) return planes;
-  const RegularGrid& g = *session_->model().grid;
-  for (int a = 0; a < 3; ++a) {
-    const auto& label = state_.gridSlices[std::size_t(a)];
-    if (!label) continue;
-    // At the label's position along its axis, across the other two axes; the first and last
-    // layers a millionth of a step inside (a plane on the box's face cuts no cell), and a
-    // label up to half a step outside cuts the outermost layer.
-    const double last = double(g.dims[std::size_t(a)] - 1), inside = 1e-6;
-    const double index =
-        std::clamp((*label - g.firstLabel[std::size_t(a)]) / g.labelStep[std::size_t(a)], inside, last - inside);
-    const glm::dvec3 normal = glm::normalize(glm::cross(g.axes[std::size_t((a + 1) % 3)], g.axes[std::size_t((a + 2) % 3)]));
-    planes.push_back({g.origin + g.axes[std::size_t(a)] * index, normal});
-  }
-  return planes;
+  if (!session_ || !session_->model().grid) return {};
+  return gridSlicePlanesAt(*session_->model().grid, state_.gridSlices);
 }
 
 // A step so short that a ray would take millions of samples would hold the picture for
 // hours: at most kMaxSamplesAcross along the model's diagonal.
 void Scene::checkSamplingStep(double step) const {
-  if (!(step >= 0.0) || !std::isfinite(step)) throw std::invalid_argument("the sampling step must be >= 0 (0: automatic)");
+  if (!(step >= 0.0) || !std::isfinite(step))
+    throw std::invalid_argument("the sampling step must be >= 0 (0: automatic)");
   if (step == 0.0 || !session_) return;
   const Bounds b = session_->model().bounds();
   const double across = b.valid ? b.diagonal() : 0.0;
@@ -659,70 +602,6 @@ bool Scene::streamlinesDrawn() const {
 std::shared_ptr<const StreamlineResult> Scene::traceStreamlines(const Progress& progress) const {
   if (!session_) throw std::invalid_argument("open a model first");
   return traceStreamlineLayer(*session_, state_.streamlines, state_.step, progress);
-}
-
-std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& l,
-                                                             std::size_t wantedStep, const Progress& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  const ModelSession* session_ = &session;
-  const Model& model = session_->model();
-  const Field* f = model.findField(l.field);
-  if (!f || f->components() != 3) throw std::invalid_argument("no vector field named '" + l.field + "'");
-  const std::size_t step = std::min(wantedStep, f->stepCount() - 1);
-  std::vector<double> nodal = f->values(step);
-  if (f->location() == FieldLocation::Cell) nodal = averageCellVectorsToNodes(model.mesh(), nodal);
-  const TetMesh& tets = session_->tetrahedra();
-  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh(), nodal));
-  const std::vector<glm::dvec3> seeds = seedPoints(l.seeds, *session_);
-  auto result = std::make_shared<StreamlineResult>();
-  result->layer = l;
-  result->session = session_;
-  result->step = wantedStep;
-  result->seeds = seeds.size();
-  result->lines = tracer.traceAll(seeds, l.settings, &result->outside, progress);
-  if (!seeds.empty() && result->outside == seeds.size()) {
-    const Bounds b = model.bounds();
-    char text[256];
-    std::snprintf(text, sizeof text, "x [%g, %g]  y [%g, %g]  z [%g, %g]", b.min.x, b.max.x, b.min.y, b.max.y, b.min.z,
-                  b.max.z);
-    const std::string which = seeds.size() == 1 ? "the seed lies" : "all " + std::to_string(seeds.size()) + " seeds lie";
-    throw std::invalid_argument(which + " outside the mesh (its bounds: " + text + ")");
-  }
-  // The values the lines are colored by: the speed, or a quantity interpolated at each point.
-  if (l.colorBy.empty()) {
-    result->valueName = l.field + " speed";
-    for (const Streamline& line : result->lines) {
-      std::vector<double> v;
-      for (const glm::dvec3& u : line.velocity) v.push_back(glm::length(u));
-      result->values.push_back(std::move(v));
-    }
-  } else {
-    const ScalarView view = session_->evaluate(session_->findQuantity(l.colorBy), step);
-    result->valueName = view.quantity.displayName();
-    const std::vector<double> values = session_->tetValues(view);
-    const PointLocator locator(tets);
-    for (const Streamline& line : result->lines) {
-      std::vector<double> v;
-      for (const glm::dvec3& p : line.points) {
-        const auto at = locator.locate(p, 1e-6);
-        v.push_back(!at ? std::nan("")
-                        : view.location == FieldLocation::Node ? PointLocator::interpolateNodal(*at, values)
-                                                                : values[at->tet]);
-      }
-      result->values.push_back(std::move(v));
-    }
-  }
-  result->min = std::numeric_limits<double>::infinity();
-  result->max = -std::numeric_limits<double>::infinity();
-  for (const auto& v : result->values)
-    for (double x : v)
-      if (std::isfinite(x)) result->min = std::min(result->min, x), result->max = std::max(result->max, x);
-  if (!(result->max > result->min)) {
-    if (!std::isfinite(result->min)) result->min = 0.0;
-    result->max = result->min + 1.0;
-  }
-  result->milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return result;
 }
 
 void Scene::setStreamlineResult(std::shared_ptr<const StreamlineResult> result) {

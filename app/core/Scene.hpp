@@ -10,9 +10,11 @@
 #pragma once
 
 #include "BoundaryRenderer.hpp"
+#include "GridSlices.hpp"
 #include "Legend.hpp"
 #include "ModelSession.hpp"
 #include "SceneState.hpp"
+#include "StreamlineTracing.hpp"
 #include "VolumeRendererFactory.hpp"
 
 #include "host/ClipCulling.hpp"
@@ -29,33 +31,11 @@
 
 namespace volpost::app {
 
-/// The axis of `grid` a user names: the first word of its name ("inline", "crossline",
-/// "time" for a survey), its letter (i, j, k) or its number (1, 2, 3), any case; -1 for none.
-int gridAxisNamed(const RegularGrid& grid, const std::string& name);
-
-/// Streamlines traced for a StreamlineLayer, and the values they are colored by.
-struct StreamlineResult {
-  StreamlineLayer layer;                        ///< what they were traced for
-  const ModelSession* session = nullptr;        ///< on which model
-  std::size_t step = 0;                         ///< and step
-  std::vector<Streamline> lines;
-  std::vector<std::vector<double>> values;      ///< per point of each line
-  std::string valueName;                        ///< "velocity speed", or the quantity's name
-  double min = 0.0, max = 1.0;                  ///< range of the values
-  std::size_t seeds = 0, outside = 0;           ///< seeds given, and those outside the mesh
-  double milliseconds = 0.0;                    ///< tracing time
-};
-
 /// What the legend shows: the colors and the words.
 struct LegendPicture {
   ColorMap colors;
   LegendContent content;
 };
-
-/// Traces a streamline layer's lines on a model at a step (no GL; any thread). Throws
-/// std::invalid_argument for a field or seeds that do not fit; Cancelled on request.
-std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& layer,
-                                                             std::size_t step, const Progress& progress = {});
 
 class Scene {
  public:

@@ -90,7 +90,7 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
   const Camera camera = scene.pictureCamera(area.width(), area.height());
   for (std::size_t i = 0; i < probes.size(); ++i) {
     if (!keptByClipPlanes(scene, probes[i])) continue;
-    const auto at = projectToPicture(camera, probes[i], area.width(), area.height());
+    const auto at = camera.projectToPicture(probes[i], area.width(), area.height());
     if (!at) continue;
     Marker m{QPointF(area.left() + at->x, area.top() + at->y), {}, QColor(20, 90, 200), MarkerShape::Dot};
     if (labels) {
@@ -111,7 +111,7 @@ void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& s
   const Camera camera = scene.pictureCamera(area.width(), area.height());
   const auto add = [&](const glm::dvec3& where, const QString& text, const QColor& color, MarkerShape shape) {
     if (!keptByClipPlanes(scene, where)) return;
-    if (const auto at = projectToPicture(camera, where, area.width(), area.height()))
+    if (const auto at = camera.projectToPicture(where, area.width(), area.height()))
       markers.push_back({QPointF(area.left() + at->x, area.top() + at->y), text, color, shape});
   };
   add(e->maxAt, QString("max %1").arg(shortNumber(e->max)), QColor(200, 30, 30), MarkerShape::Up);
@@ -250,21 +250,12 @@ void paintRakes(QPainter& painter, const QRect& area, const Scene& scene, double
 }
 
 std::optional<QPointF> PointInArea::operator()(const glm::dvec3& p) const {
-  const auto q = projectToPicture(camera, p, area.width(), area.height());
+  const auto q = camera.projectToPicture(p, area.width(), area.height());
   if (!q) return std::nullopt;
   return QPointF(area.left() + q->x, area.top() + q->y);
 }
 
 }  // namespace
-
-std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height) {
-  if (!(width > 0.0 && height > 0.0)) return std::nullopt;
-  const glm::dmat4 m = camera.projectionMatrix(width / height) * camera.viewMatrix();
-  const glm::dvec4 clip = m * glm::dvec4(point, 1.0);
-  if (!(clip.w > 0.0)) return std::nullopt;
-  const glm::dvec2 ndc(clip.x / clip.w, clip.y / clip.w);
-  return glm::dvec2((ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height);
-}
 
 void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene) {
   painter.save();

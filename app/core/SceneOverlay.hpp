@@ -15,10 +15,6 @@ class QRect;
 
 namespace volpost::app {
 
-/// Where a model point lands in a picture of `width` x `height` (pixels, top left origin);
-/// nullopt behind the eye.
-std::optional<glm::dvec2> projectToPicture(const Camera& camera, const glm::dvec3& point, double width, double height);
-
 void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene);
 
 }  // namespace volpost::app

@@ -3,10 +3,11 @@
 // the model), for export and for drawing as opaque geometry.
 #pragma once
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Progress.hpp>
 #include <volpost/core/SampleView.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+
+#include "host/BoundarySurface.hpp"
 
 #include <span>
 

@@ -2,7 +2,7 @@
 // Surface meshes (boundary, iso-surfaces) to files other tools read.
 #pragma once
 
-#include <volpost/core/BoundarySurface.hpp>
+#include "host/BoundarySurface.hpp"
 
 #include <string>
 

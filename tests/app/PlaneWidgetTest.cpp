@@ -9,7 +9,7 @@
 
 #include "support/TetGrid.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
+#include "host/BoundarySurface.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -86,8 +86,8 @@ TEST(PlaneWidget, TheKnobAndTheShaftAreHitWhereTheyAreDrawn) {
   const Bounds b = unitCube();
   const Camera camera = lookingAt(b);
   const PlaneWidget w = planeWidget({{0.5, 0.5, 0.5}, {1.0, 0.0, 0.0}}, b);
-  const auto knob = projectToPicture(camera, w.knob, 400, 300);
-  const auto center = projectToPicture(camera, w.center, 400, 300);
+  const auto knob = camera.projectToPicture(w.knob, 400, 300);
+  const auto center = camera.projectToPicture(w.center, 400, 300);
   ASSERT_TRUE(knob && center);
   EXPECT_EQ(hitPlaneWidget(w, camera, 400, 300, *knob + glm::dvec2(3, -2), 6.0), PlaneWidgetPart::Knob);
   EXPECT_EQ(hitPlaneWidget(w, camera, 400, 300, 0.5 * (*knob + *center), 6.0), PlaneWidgetPart::Shaft);
@@ -102,7 +102,7 @@ TEST(PlaneWidget, DraggingTheKnobTurnsThePlaneTowardTheMouse) {
   // Where the knob goes: a point in the plane through the knob that faces the camera.
   const glm::dvec3 up = camera.up();
   const glm::dvec3 target = w.knob + 0.3 * up;
-  const auto pixel = projectToPicture(camera, target, 400, 300);
+  const auto pixel = camera.projectToPicture(target, 400, 300);
   ASSERT_TRUE(pixel);
   const ClipPlane turned = turnedPlane(plane, w, camera, 400, 300, *pixel);
   const glm::dvec3 expected = glm::normalize(target - w.center);
@@ -116,8 +116,8 @@ TEST(PlaneWidget, DraggingTheShaftSlidesThePlaneByWhatTheMouseMovedAlongIt) {
   const Camera camera = lookingAt(b);
   const ClipPlane plane{{0.5, 0.5, 0.5}, {1.0, 0.0, 0.0}};
   const PlaneWidget w = planeWidget(plane, b);
-  const auto knob = projectToPicture(camera, w.knob, 400, 300);
-  const auto center = projectToPicture(camera, w.center, 400, 300);
+  const auto knob = camera.projectToPicture(w.knob, 400, 300);
+  const auto center = camera.projectToPicture(w.center, 400, 300);
   ASSERT_TRUE(knob && center);
   // From the centre's pixel to the knob's: the plane moves by the handle's length.
   const ClipPlane moved = slidPlane(plane, w, camera, 400, 300, *center, *knob);
@@ -167,17 +167,17 @@ TEST(BoxWidget, DraggingAFaceKnobMovesThatFaceOnlyAndNeverPastTheOpposite) {
   Camera camera = lookingAt(unitCube());
   camera.setProjection(Camera::Projection::Orthographic);  // screen moves linear in model ones: exact figures
   const BoxWidget w = boxWidget(box);
-  const auto xmax = projectToPicture(camera, w.faceCenters[1], 400, 300);
+  const auto xmax = camera.projectToPicture(w.faceCenters[1], 400, 300);
   ASSERT_TRUE(xmax);
   EXPECT_EQ(hitBoxWidget(w, camera, 400, 300, *xmax + glm::dvec2(2, 1), 7.0), 1);
   EXPECT_FALSE(hitBoxWidget(w, camera, 400, 300, *xmax + glm::dvec2(30, 30), 7.0).has_value());
   // Toward the screen image of +x by what +0.1 in x spans there: xmax grows by 0.1.
-  const auto further = projectToPicture(camera, w.faceCenters[1] + glm::dvec3(0.1, 0, 0), 400, 300);
+  const auto further = camera.projectToPicture(w.faceCenters[1] + glm::dvec3(0.1, 0, 0), 400, 300);
   const ClipBox out = draggedBox(box, 1, camera, 400, 300, *xmax, *further);
   EXPECT_NEAR(out[1], 1.1, 1e-9);
   for (std::size_t i : {0u, 2u, 3u, 4u, 5u}) EXPECT_EQ(out[i], box[i]);
   // Far past the opposite face: it stops just short of it.
-  const auto beyond = projectToPicture(camera, w.faceCenters[1] - glm::dvec3(5.0, 0, 0), 400, 300);
+  const auto beyond = camera.projectToPicture(w.faceCenters[1] - glm::dvec3(5.0, 0, 0), 400, 300);
   const ClipBox flat = draggedBox(box, 1, camera, 400, 300, *xmax, *beyond);
   EXPECT_GT(flat[1], flat[0]);
   EXPECT_LT(flat[1] - flat[0], 0.01);

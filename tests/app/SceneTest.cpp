@@ -610,7 +610,7 @@ TEST(Scene, MarkersWhereAClipPlaneRemovedTheModelAreNotDrawn) {
     QImage image(400, 200, QImage::Format_ARGB32);
     image.fill(Qt::transparent);
     paintSceneOverlay(image, scene);
-    const auto at = projectToPicture(scene.pictureCamera(400, 200), point, 400, 200);
+    const auto at = scene.pictureCamera(400, 200).projectToPicture(point, 400, 200);
     int n = 0;
     for (int dy = -3; dy <= 3; ++dy)
       for (int dx = -3; dx <= 3; ++dx) n += qAlpha(image.pixel(int(at->x) + dx, int(at->y) + dy)) > 0;

@@ -2,12 +2,13 @@
 // Draws the model's boundary surface colored by a scalar result, with element edges.
 #pragma once
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/ColorMap.hpp>
 #include <volpost/core/Field.hpp>
 #include <volpost/core/SampleView.hpp>
 #include <volpost/render/GlObjects.hpp>
+
+#include "host/BoundarySurface.hpp"
 
 #include <vector>
 #include <volpost/render/Renderer.hpp>

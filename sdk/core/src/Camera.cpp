@@ -148,6 +148,14 @@ glm::dmat4 Camera::projectionMatrix(double aspect) const {
   return squeeze * projection;
 }
 
+std::optional<glm::dvec2> Camera::projectToPicture(const glm::dvec3& point, double width, double height) const {
+  if (!(width > 0.0 && height > 0.0)) return std::nullopt;
+  const glm::dvec4 clip = projectionMatrix(width / height) * viewMatrix() * glm::dvec4(point, 1.0);
+  if (!(clip.w > 0.0)) return std::nullopt;
+  const glm::dvec2 ndc(clip.x / clip.w, clip.y / clip.w);
+  return glm::dvec2((ndc.x + 1.0) * 0.5 * width, (1.0 - ndc.y) * 0.5 * height);
+}
+
 void Camera::setRightMargin(double fraction) {
   rightMargin_ = std::isfinite(fraction) ? std::clamp(fraction, 0.0, 0.5) : 0.0;
 }

@@ -3,7 +3,7 @@
 
 #include <volpost/core/WorkerThreads.hpp>
 
-#include "FaceGroups.hpp"
+#include <volpost/core/FaceGroups.hpp>
 
 #include <algorithm>
 #include <array>
@@ -102,7 +102,7 @@ void faceNeighborsInto(std::size_t tetCount, const std::function<glm::uvec4(std:
       i = j;
     }
   };
-  detail::forEachFaceGroup<std::uint32_t>(vertices, std::clamp<std::size_t>(tetCount >> 20, 1, 4), listFaces, matchGroup);
+  forEachFaceGroup<std::uint32_t>(vertices, std::clamp<std::size_t>(tetCount >> 20, 1, 4), listFaces, matchGroup);
 }
 
 std::vector<glm::ivec4> faceNeighbors(const Mesh& tets) {

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The surface renderer in a headless EGL context, checked pixel by pixel against the
 // exact colors a field must produce (no stored reference images).
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/ShaderLibrary.hpp>
 #include <volpost/render/VolumeLimits.hpp>
+
+#include "host/BoundarySurface.hpp"
 #include "host/render/HostShaders.hpp"
 #include "host/render/SurfaceRenderer.hpp"
 

@@ -4,8 +4,9 @@
 #include "support/TestSupport.hpp"
 #include "support/ReaderSupport.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Quantity.hpp>
+
+#include "host/BoundarySurface.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -5,8 +5,9 @@
 #include "support/TestSupport.hpp"
 #include "support/ReaderSupport.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+
+#include "host/BoundarySurface.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
 
 #include <glm/geometric.hpp>

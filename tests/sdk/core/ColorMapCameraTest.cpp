@@ -94,6 +94,33 @@ TEST(Camera, FittedModelStaysInsideTallPicturesAndLeftOfTheMargin) {
   EXPECT_EQ(c.rightMargin(), 0.0);
 }
 
+// A point's pixel: the target lands in the middle of the framed part (left of the margin),
+// a point on the screen's right lands right of it, one behind the eye and an empty picture
+// have none.
+TEST(Camera, ProjectToPictureFindsThePixelOfAPoint) {
+  for (auto projection : {Camera::Projection::Perspective, Camera::Projection::Orthographic}) {
+    Camera c;
+    c.setProjection(projection);
+    Bounds b;
+    b.extend({-1, -1, -1});
+    b.extend({1, 1, 1});
+    c.fit(b);
+    c.setRightMargin(0.25);
+    const auto target = c.projectToPicture(c.target(), 400, 300);
+    ASSERT_TRUE(target);
+    EXPECT_NEAR(target->x, 0.5 * 400 * 0.75, 1e-9);
+    EXPECT_NEAR(target->y, 150.0, 1e-9);
+    const glm::dvec3 right = glm::normalize(glm::cross(c.viewDirection(), c.up()));
+    const auto beside = c.projectToPicture(c.target() + 0.5 * right + 0.5 * c.up(), 400, 300);
+    ASSERT_TRUE(beside);
+    EXPECT_GT(beside->x, target->x);
+    EXPECT_LT(beside->y, target->y) << "up in the model is up in the picture (rows go down)";
+    EXPECT_FALSE(c.projectToPicture(c.target(), 0, 300));
+    if (projection == Camera::Projection::Perspective)
+      EXPECT_FALSE(c.projectToPicture(c.eye() - c.viewDirection(), 400, 300)) << "behind the eye";
+  }
+}
+
 // A turntable keeps the model upright: after any drags the screen's x axis stays level
 // (no roll), and the elevation stops short of looking straight down the axis. The
 // trackball, by contrast, rolls after a loop of drags.

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "support/ReferenceCells.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/MeshChecks.hpp>
+
+#include "host/BoundarySurface.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

@@ -4,8 +4,9 @@
 // mixed wheel (hexahedra, wedges, pyramids, tetrahedra from gmsh).
 #include "support/ReferenceCells.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+
+#include "host/BoundarySurface.hpp"
 
 #include <gtest/gtest.h>
 

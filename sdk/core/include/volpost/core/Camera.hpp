@@ -6,6 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <optional>
@@ -66,6 +67,9 @@ class Camera {
   /// stored relative to it in float, so far-from-origin models keep their precision.
   glm::dmat4 viewMatrix(const glm::dvec3& origin = glm::dvec3(0.0)) const;
   glm::dmat4 projectionMatrix(double aspect) const;
+  /// Where a model point lands in a picture of `width` x `height` (pixels, top left
+  /// origin); nullopt behind the eye or for an empty picture.
+  std::optional<glm::dvec2> projectToPicture(const glm::dvec3& point, double width, double height) const;
 
   /// A strip at the right of the picture, this fraction of its width (0..0.5), kept for the
   /// legend: the view is framed in the rest of the picture (an off-centre projection).

@@ -3,7 +3,8 @@
 // face is listed under its smallest corner (both copies of a shared face land in one group)
 // as a small id, and each group, a few dozen faces, is matched on its own. Large meshes go
 // in passes over shares of the vertex numbers holding about equal numbers of faces, so the
-// lists hold a share of the faces at once. Every step runs on all cores.
+// lists hold a share of the faces at once. Every step runs on all cores. Installed with the
+// SDK for plugins that match faces of their own (the host's boundary surface does).
 #pragma once
 
 #include <volpost/core/WorkerThreads.hpp>
@@ -15,7 +16,7 @@
 #include <span>
 #include <vector>
 
-namespace volpost::detail {
+namespace volpost {
 
 /// listFaces(visit) calls visit(smallest corner, id) for every face, the same faces each
 /// time it is called (from several threads: visit is thread-safe). matchGroup(ids) is called
@@ -55,4 +56,4 @@ void forEachFaceGroup(std::size_t vertexCount, std::size_t passes, ListFaces lis
   }
 }
 
-}  // namespace volpost::detail
+}  // namespace volpost

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "support/ReferenceCells.hpp"
 
-#include <volpost/core/BoundarySurface.hpp>
+#include "host/BoundarySurface.hpp"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>

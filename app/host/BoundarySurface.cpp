@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include <volpost/core/BoundarySurface.hpp>
+#include "host/BoundarySurface.hpp"
 
 // GCC 12 reports a false -Warray-bounds inside std::sort's insertion sort at -O2.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -8,7 +8,7 @@
 
 #include <volpost/core/WorkerThreads.hpp>
 
-#include "FaceGroups.hpp"
+#include <volpost/core/FaceGroups.hpp>
 
 #include <algorithm>
 #include <mutex>
@@ -70,8 +70,8 @@ std::vector<std::uint64_t> unsharedFaces(const Mesh& mesh, const Progress& progr
       i = j;
     }
   };
-  detail::forEachFaceGroup<std::uint64_t>(mesh.nodeCount(), std::clamp<std::size_t>(mesh.cellCount() >> 20, 1, 4),
-                                          listFaces, matchGroup);
+  forEachFaceGroup<std::uint64_t>(mesh.nodeCount(), std::clamp<std::size_t>(mesh.cellCount() >> 20, 1, 4), listFaces,
+                                  matchGroup);
   progress.report(0.5);
   std::sort(unshared.begin(), unshared.end());  // cell order, whatever the threads did
   return unshared;
