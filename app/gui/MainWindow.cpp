@@ -12,6 +12,7 @@
 #include "PluginsDialog.hpp"
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
+#include "RendererMenu.hpp"
 #include "StepController.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
@@ -117,7 +118,9 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   glLabel_->setObjectName("glLabel");
   statusBar()->addPermanentWidget(glLabel_);
   connect(viewport_, &Viewport::glInfo, glLabel_, &QLabel::setText);
-  connect(viewport_, &Viewport::glInfo, this, &MainWindow::preferCpuOnSoftwareGl);
+  connect(viewport_, &Viewport::glInfo, this, [this](const QString& description) {
+    if (rendererMenu_) rendererMenu_->preferCpuOnSoftwareGl(description);
+  });
   refiningLabel_ = new QLabel("Refining the picture...", this);
   refiningLabel_->setObjectName("refiningLabel");
   refiningLabel_->setVisible(false);
@@ -282,121 +285,14 @@ void MainWindow::buildActions() {
   });
 }
 
-// OpenGL drawn by the CPU (no GPU, a remote desktop): the GPU renderers then run on the same
-// cores several times slower than a renderer that computes on the CPU, so volume rendering
-// starts with the first such renderer unless the user or a state file chose one.
-void MainWindow::preferCpuOnSoftwareGl(const QString& description) {
-  if (!gl::isSoftwareRasterizer(description.toStdString())) return;
-  const auto onCpu =
-      std::find_if(renderers_.begin(), renderers_.end(), [](const RendererEntry& r) { return r.traits.runsOnCpu; });
-  if (onCpu == renderers_.end()) return;
-  const QString cpuName = onCpu->name;
-  QAction* cpu = findChild<QAction*>("renderer:" + cpuName);
-  if (!cpu) return;
-  // The fast choice first, and the slow ones say so.
-  if (auto* menu = findChild<QMenu*>("rendererMenu");
-      menu && !menu->actions().isEmpty() && menu->actions().first() != cpu) {
-    menu->removeAction(cpu);
-    menu->insertAction(menu->actions().first(), cpu);
-    for (const RendererEntry& r : renderers_) {
-      QAction* a = findChild<QAction*>("renderer:" + r.name);
-      if (!a || r.traits.runsOnCpu || a->text().contains("slow here")) continue;
-      const QString text = a->text();
-      a->setText(text.endsWith(")") ? text.chopped(1) + "; slow here: OpenGL is drawn by the CPU)"
-                                    : text + " (slow here: OpenGL is drawn by the CPU)");
-    }
-  }
-  if (rendererChosen_ || cpu->isChecked()) return;
-  if (!changeScene([&](Scene& s) { s.setVolumeRenderer(cpuName.toStdString()); })) return;
-  checkRendererAction(cpuName);
-  statusBar()->showMessage("OpenGL is drawn by the CPU here: volume rendering uses " + cpu->text() +
-                           " (View > Volume Renderer to change)", 10000);
-}
-
-// The menu shows `name` as the renderer, without triggering it. Its signals are not
-// blocked: the exclusive group learns of the change through them and unchecks the others
-// (blocked, it kept its old choice, and the next one picked from the menu left two
-// checked). Only `triggered` acts on the scene, and setChecked does not emit it.
-void MainWindow::checkRendererAction(const QString& name) {
-  if (QAction* a = findChild<QAction*>("renderer:" + name)) a->setChecked(true);
-  fitModeMenuToRenderer();
-}
-
-// Volume Integration offers the modes the scene's renderer has; one that integrates
-// exactly has none to choose.
-void MainWindow::fitModeMenuToRenderer() {
-  const std::string current = viewport_->scene().volume().renderer;
-  const auto r = std::find_if(renderers_.begin(), renderers_.end(),
-                              [&](const RendererEntry& e) { return e.name.toStdString() == current; });
-  for (IntegrationMode mode : allIntegrationModes()) {
-    QAction* a =
-        findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(mode).data(), int(toString(mode).size())));
-    if (!a) continue;
-    const bool offered = r == renderers_.end() ||
-                         std::find(r->traits.modes.begin(), r->traits.modes.end(), mode) != r->traits.modes.end();
-    a->setEnabled(offered);
-    a->setToolTip(offered ? QString()
-                  : r->traits.modes.empty()
-                      ? r->label() + " integrates the transfer function exactly: it has no modes to choose"
-                      : r->label() + " does not offer this mode");
-  }
-}
-
-void MainWindow::fitRendererToModel() {
-  if (!session_) return;
-  const bool grid = session_->model().grid.has_value();
-  const auto draws = [grid](const RendererEntry& r) { return r.drawsKindOf(grid); };
-  // A renderer that cannot draw this kind of model is shown, but not offered (a grid's cells
-  // are a mesh too: every renderer draws a grid).
-  for (const RendererEntry& r : renderers_)
-    if (QAction* a = findChild<QAction*>("renderer:" + r.name)) {
-      const bool offered = grid || r.traits.drawsMeshes;
-      a->setEnabled(offered);
-      a->setToolTip(offered ? QString() : QString("Draws regular grids (SEG-Y, image data, NRRD), not meshes"));
-    }
-  const std::string current = viewport_->scene().volume().renderer;
-  for (const RendererEntry& r : renderers_)
-    if (r.name.toStdString() == current && (draws(r) || (rendererChosen_ && r.traits.drawsMeshes))) return;
-  // The first in the menu's order that draws this kind of model.
-  for (const RendererEntry& r : renderers_) {
-    if (!draws(r)) continue;
-    if (!changeScene([&](Scene& s) { s.setVolumeRenderer(r.name.toStdString()); })) return;
-    checkRendererAction(r.name);
-    if (rendererChosen_) statusBar()->showMessage("Volume renderer for this model: " + r.label(), 10000);
-    return;
-  }
-}
-
 void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
-  // Every GPU volume renderer the plugins offer, named as the plugin names it; the first
-  // is used until another is chosen.
-  renderers_ = volumeRenderers(plugins_);
-  const std::vector<RendererEntry>& renderers = renderers_;
-  QMenu* rendererMenu = view->addMenu("Volume &Renderer");
-  rendererMenu->setObjectName("rendererMenu");
-  auto* rendererGroup = new QActionGroup(this);
-  for (std::size_t i = 0; i < renderers.size(); ++i) {
-    const QString name = renderers[i].name;
-    QAction* a = rendererMenu->addAction(renderers[i].label());
-    a->setObjectName("renderer:" + name);
-    a->setCheckable(true);
-    rendererGroup->addAction(a);
-    if (i == 0) {
-      viewport_->scene().setVolumeRenderer(name.toStdString());
-      a->setChecked(true);
-    }
-    connect(a, &QAction::triggered, this, [this, name, a] {
-      rendererChosen_ = true;
-      // Its first frame builds its programs and data: the window says so while it waits.
-      statusBar()->showMessage("Preparing " + a->text() + "...");
-      QApplication::setOverrideCursor(Qt::WaitCursor);
-      const bool ok = changeScene([&](Scene& s) { s.setVolumeRenderer(name.toStdString()); });
-      fitModeMenuToRenderer();
-      if (ok && viewport_->scene().volumeShown()) viewport_->repaint();
-      QApplication::restoreOverrideCursor();
-      if (ok) statusBar()->showMessage("Volume renderer: " + a->text());
-    });
-  }
+  rendererMenu_ = new RendererMenu(
+      *this, viewport_->scene(), volumeRenderers(plugins_), *view,
+      [this](const std::function<void(Scene&)>& change) { return changeScene(change); },
+      [this] {
+        if (viewport_->scene().volumeShown()) viewport_->repaint();
+      });
+  const std::vector<RendererEntry>& renderers = rendererMenu_->renderers();
   volumeAction_ = view->addAction("&Volume Rendering");
   volumeAction_->setObjectName("volumeAction");
   volumeAction_->setCheckable(true);
@@ -433,17 +329,6 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
       statusBar()->showMessage("Volume colors from the 1D transfer function");
   });
 
-  QMenu* modes = view->addMenu("Volume &Integration");
-  auto* modeGroup = new QActionGroup(this);
-  for (IntegrationMode mode : allIntegrationModes()) {
-    QAction* a = modes->addAction(QString::fromUtf8(describe(mode).data(), int(describe(mode).size())));
-    a->setObjectName(QString("mode:") + QString::fromUtf8(toString(mode).data(), int(toString(mode).size())));
-    a->setCheckable(true);
-    a->setChecked(mode == IntegrationMode::LinearSegments);
-    modeGroup->addAction(a);
-    connect(a, &QAction::triggered, this, [this, mode] { changeScene([mode](Scene& s) { s.setIntegrationMode(mode); }); });
-  }
-  fitModeMenuToRenderer();
   QMenu* clip = results->addMenu("&Clip Plane");
   auto* clipGroup = new QActionGroup(this);
   // A plane typed or turned to another normal checks none of the axis entries.
@@ -1211,7 +1096,7 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
     action->setChecked(false);
   }
   if (linePlot_) linePlot_->modelChanged();
-  fitRendererToModel();
+  if (session_) rendererMenu_->fitToModel(session_->model().grid.has_value());
   if (auto* shading = findChild<QAction*>("shadingAction")) {
     const QSignalBlocker block(shading);
     shading->setChecked(viewport_->scene().volume().shading);
@@ -1510,7 +1395,6 @@ void MainWindow::applyState(const SceneState& state) {
   }
   if (state.volume.transferFunction && !state.quantity.empty())
     userTransferFunctions_[viewport_->scene().view()->quantity.key()] = *state.volume.transferFunction;
-  rendererChosen_ = true;  // the state names its renderer
   syncControlsToScene();
   if (gridSlices_) gridSlices_->followScene();
   if (linePlot_) linePlot_->followScene();
@@ -1546,13 +1430,7 @@ void MainWindow::syncControlsToScene() {
   check(volumeAction_, state.volume.shown);
   check(streamlinesAction_, state.streamlines.shown);
   check(findChild<QAction*>("shadingAction"), state.volume.shading);
-  // Actions of exclusive groups: checked with their signals on, so that the group unchecks
-  // the others (they act on `triggered` only).
-  checkRendererAction(QString::fromStdString(state.volume.renderer));
-  if (QAction* mode =
-          findChild<QAction*>(QString("mode:") + QString::fromUtf8(toString(state.volume.mode).data(),
-                                                                   int(toString(state.volume.mode).size()))))
-    mode->setChecked(true);
+  rendererMenu_->syncToScene();
   if (state.volume.clipPlanes.empty())
     if (QAction* off = findChild<QAction*>("clip:-1")) off->setChecked(true);
   probes_->syncToScene();

@@ -29,6 +29,7 @@ class VolumeRenderer;
 namespace volpost::app {
 
 class ProbeController;
+class RendererMenu;
 class Scene;
 class LinePlotPanel;
 class StepController;
@@ -112,12 +113,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void showModelInfo();
   void notifyPanels();
   void buildVolumeMenu(QMenu* volume, QMenu* results);
-  void preferCpuOnSoftwareGl(const QString& description);
   /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
   /// renderer for a seismic cube, a mesh renderer for a mesh).
-  void fitRendererToModel();
-  void checkRendererAction(const QString& name);
-  void fitModeMenuToRenderer();
   void setVolumeShown(bool on);
   void chooseClipBox();
   void typeClipPlane();
@@ -148,8 +145,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   QTextBrowser* modelInfo_ = nullptr;
   QLabel* glLabel_ = nullptr;
   QLabel* refiningLabel_ = nullptr;  ///< shown while the renderer refines a quick frame
-  std::vector<RendererEntry> renderers_;  ///< the volume renderers of the menu, in its order
-  bool rendererChosen_ = false;      ///< by the user or a state file: no automatic choice then
   QAction* edgesAction_ = nullptr;
   QAction* volumeAction_ = nullptr;
   QAction* orthoAction_ = nullptr;
@@ -164,6 +159,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QMenu* resultsMenu_ = nullptr;
   QMenu* volumeMenu_ = nullptr;
   ProbeController* probes_ = nullptr;
+  RendererMenu* rendererMenu_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   bool tracing_ = false;
   bool loading_ = false;
