@@ -16,6 +16,7 @@
 #include "StepController.hpp"
 #include "StreamlineDialog.hpp"
 #include "Viewport.hpp"
+#include "WorkWithProgress.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/Version.hpp>
@@ -41,21 +42,16 @@
 
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFutureWatcher>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QProgressDialog>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
 #include <QToolBar>
-#include <QtConcurrent/QtConcurrentRun>
-
-#include <mutex>
 
 namespace volpost::app {
 namespace {
@@ -77,12 +73,6 @@ QString roundedPoint(const glm::dvec3& p, double size) {
   const auto c = [size](double x) { return std::abs(x) < 1e-9 * size ? 0.0 : x; };
   return QString("(%1, %2, %3)").arg(c(p.x), 0, 'g', 4).arg(c(p.y), 0, 'g', 4).arg(c(p.z), 0, 'g', 4);
 }
-
-struct LoadResult {
-  std::shared_ptr<ModelSession> session;
-  QString error;
-  bool cancelled = false;
-};
 
 }  // namespace
 
@@ -548,68 +538,41 @@ void MainWindow::traceStreamlines() {
   const auto session = session_;
   const StreamlineLayer layer = scene.streamlines();
   const std::size_t step = scene.state().step;
-  auto progress = std::make_shared<std::atomic<int>>(0);
-  auto cancel = std::make_shared<std::atomic<bool>>(false);
-  auto* dialog = new QProgressDialog("Tracing streamlines...", "Cancel", 0, 100, this);
-  dialog->setWindowModality(Qt::WindowModal);
-  dialog->setMinimumDuration(500);
-  connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
-  auto* timer = new QTimer(dialog);
-  connect(timer, &QTimer::timeout, dialog, [dialog, progress] { dialog->setValue(*progress); });
-  timer->start(50);
-  struct Traced {
-    std::shared_ptr<const StreamlineResult> result;
-    QString error;
-  };
-  auto* watcher = new QFutureWatcher<Traced>(this);
-  connect(watcher, &QFutureWatcher<Traced>::finished, this, [this, watcher, dialog, timer] {
-    const Traced t = watcher->result();
-    watcher->deleteLater();
-    timer->stop();
-    dialog->reset();
-    dialog->hide();
-    dialog->deleteLater();
-    tracing_ = false;
-    Scene& current = viewport_->scene();
-    if (!t.result) {
-      statusBar()->showMessage("Streamlines: " + t.error);
-      emit streamlinesTraced(false, t.error);
-      return;
-    }
-    current.setStreamlineResult(t.result);
-    if (current.streamlinesNeedTracing()) {  // changed while tracing: trace the latest
-      traceStreamlines();
-      return;
-    }
-    viewport_->update();
-    std::size_t points = 0, spent = 0;
-    for (const auto& l : t.result->lines) {
-      points += l.points.size();
-      spent += l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
-    }
-    statusBar()->showMessage(
-        QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
-            .arg(t.result->lines.size())
-            .arg(points)
-            .arg(t.result->milliseconds, 0, 'f', 0)
-            .arg(t.result->outside ? QString(" (%1 seeds outside the mesh)").arg(t.result->outside) : QString())
-            .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
-    emit streamlinesTraced(true, {});
-  });
-  watcher->setFuture(QtConcurrent::run([session, layer, step, progress, cancel]() {
-    Traced t;
-    try {
-      t.result = traceStreamlineLayer(*session, layer, step, Progress([&](double f, const std::string&) {
-                                        *progress = int(f * 100.0);
-                                        return !*cancel;
-                                      }));
-    } catch (const Cancelled&) {
-      t.error = "cancelled";
-    } catch (const std::exception& e) {
-      t.error = QString::fromStdString(e.what());
-    }
-    return t;
-  }));
+  runWithProgress<std::shared_ptr<const StreamlineResult>>(
+      *this, "Tracing streamlines", 500,
+      [session, layer, step](const Progress& progress) {
+        return traceStreamlineLayer(*session, layer, step, progress);
+      },
+      [this](WorkOutcome<std::shared_ptr<const StreamlineResult>> t) {
+        tracing_ = false;
+        Scene& current = viewport_->scene();
+        if (!t.value) {
+          const QString error = t.cancelled ? QString("cancelled") : t.error;
+          statusBar()->showMessage("Streamlines: " + error);
+          emit streamlinesTraced(false, error);
+          return;
+        }
+        const auto& result = *t.value;
+        current.setStreamlineResult(result);
+        if (current.streamlinesNeedTracing()) {  // changed while tracing: trace the latest
+          traceStreamlines();
+          return;
+        }
+        viewport_->update();
+        std::size_t points = 0, spent = 0;
+        for (const auto& l : result->lines) {
+          points += l.points.size();
+          spent += l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
+        }
+        statusBar()->showMessage(
+            QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
+                .arg(result->lines.size())
+                .arg(points)
+                .arg(result->milliseconds, 0, 'f', 0)
+                .arg(result->outside ? QString(" (%1 seeds outside the mesh)").arg(result->outside) : QString())
+                .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
+        emit streamlinesTraced(true, {});
+      });
 }
 
 void MainWindow::setClipAxis(int axis) {
@@ -945,79 +908,37 @@ void MainWindow::openFile(const QString& path, const ReaderOptions& options) {
   loading_ = true;
   lastPath_ = path;
   lastReaderOptions_ = options;
-  auto progress = std::make_shared<std::atomic<int>>(0);
-  auto stage = std::make_shared<QString>();
-  auto stageMutex = std::make_shared<std::mutex>();
-  auto cancel = std::make_shared<std::atomic<bool>>(false);
-  auto* dialog = new QProgressDialog(QString("Reading %1...").arg(QFileInfo(path).fileName()), "Cancel", 0, 100, this);
-  dialog->setWindowModality(Qt::WindowModal);
-  dialog->setMinimumDuration(300);
-  connect(dialog, &QProgressDialog::canceled, this, [cancel] { *cancel = true; });
-  auto* timer = new QTimer(dialog);
-  const QString fileName = QFileInfo(path).fileName();
-  connect(timer, &QTimer::timeout, dialog, [dialog, progress, stage, stageMutex, fileName] {
-    QString now;
-    {
-      const std::lock_guard lock(*stageMutex);
-      now = *stage;
-    }
-    if (!now.isEmpty()) dialog->setLabelText(QString("%1: %2...").arg(fileName, now));
-    dialog->setValue(*progress);
-  });
-  timer->start(50);
   statusBar()->showMessage("Reading " + path);
-
   const ReaderRegistry& readers = plugins_.readers();
-  auto* watcher = new QFutureWatcher<LoadResult>(this);
-  connect(watcher, &QFutureWatcher<LoadResult>::finished, this, [this, watcher, dialog, timer, path] {
-    const LoadResult r = watcher->result();
-    watcher->deleteLater();
-    // The dialog goes now, not when control is back in the main loop: an error box below
-    // runs its own loop, in which the timer would show the dialog again over everything.
-    timer->stop();
-    dialog->reset();
-    dialog->hide();
-    dialog->deleteLater();
-    loading_ = false;
-    if (r.session) {
-      installSession(r.session);
-      emit loadFinished(true, {});
-      if (pendingState_) {
-        const SceneState state = *pendingState_;
-        pendingState_.reset();
-        applyState(state);
-      }
-    } else if (r.cancelled) {
-      pendingState_.reset();
-      statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
-      emit loadFinished(false, "cancelled");
-    } else {
-      statusBar()->showMessage("Could not open " + path);
-      emit loadFinished(false, r.error);
-      if (pendingState_) {
-        pendingState_.reset();
-        emit stateApplied(false, r.error);
-      }
-      QMessageBox::critical(this, "Cannot open model", r.error);
-    }
-  });
-  watcher->setFuture(QtConcurrent::run([&readers, path, options, progress, cancel, stage, stageMutex]() {
-    LoadResult r;
-    try {
-      Progress p([&](double f, const std::string& name) {
-        *progress = int(f * 100.0);
-        const std::lock_guard lock(*stageMutex);
-        *stage = QString::fromStdString(name);
-        return !*cancel;
+  runWithProgress<std::shared_ptr<ModelSession>>(
+      *this, "Reading " + QFileInfo(path).fileName(), 300,
+      [&readers, path, options](const Progress& progress) {
+        return ModelSession::load(readers, path.toStdString(), progress, ModelSession::Boundary::Now, options);
+      },
+      [this, path](WorkOutcome<std::shared_ptr<ModelSession>> r) {
+        loading_ = false;
+        if (r.value) {
+          installSession(*r.value);
+          emit loadFinished(true, {});
+          if (pendingState_) {
+            const SceneState state = *pendingState_;
+            pendingState_.reset();
+            applyState(state);
+          }
+        } else if (r.cancelled) {
+          pendingState_.reset();
+          statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
+          emit loadFinished(false, "cancelled");
+        } else {
+          statusBar()->showMessage("Could not open " + path);
+          emit loadFinished(false, r.error);
+          if (pendingState_) {
+            pendingState_.reset();
+            emit stateApplied(false, r.error);
+          }
+          QMessageBox::critical(this, "Cannot open model", r.error);
+        }
       });
-      r.session = ModelSession::load(readers, path.toStdString(), p, ModelSession::Boundary::Now, options);
-    } catch (const Cancelled&) {
-      r.cancelled = true;
-    } catch (const std::exception& e) {
-      r.error = QString::fromStdString(e.what());
-    }
-    return r;
-  }));
 }
 
 bool MainWindow::reopenWithReaderOptions(const ReaderOptions& options) {
