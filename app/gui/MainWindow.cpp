@@ -1053,7 +1053,7 @@ void MainWindow::fillQuantities() {
 void MainWindow::fillSteps() {
   const QSignalBlocker block(stepBox_);
   stepBox_->clear();
-  const auto q = activeQuantity();
+  const auto q = chosenQuantity();
   if (!q) return;
   const Field& f = session_->fieldOf(*q);
   for (std::size_t s = 0; s < f.stepCount(); ++s) {
@@ -1063,12 +1063,22 @@ void MainWindow::fillSteps() {
   stepBox_->setEnabled(f.stepCount() > 1);
 }
 
-std::optional<Quantity> MainWindow::activeQuantity() const {
+// What the quantity box asks for; the scene may have refused it (activeQuantity says what
+// is shown).
+std::optional<Quantity> MainWindow::chosenQuantity() const {
   if (!session_ || quantityBox_->currentIndex() <= 0) return std::nullopt;
   return session_->findQuantity(quantityBox_->currentData().toString().toStdString());
 }
 
-std::size_t MainWindow::activeStep() const { return std::size_t(std::max(0, stepBox_->currentIndex())); }
+// Panels and tests read what is shown from the scene, the one record of it, not from the
+// boxes that ask for it.
+std::optional<Quantity> MainWindow::activeQuantity() const {
+  const auto& view = viewport_->scene().view();
+  if (!view) return std::nullopt;
+  return view->quantity;
+}
+
+std::size_t MainWindow::activeStep() const { return viewport_->scene().step(); }
 
 bool MainWindow::selectQuantity(const QString& key) {
   int index = quantityBox_->findData(key);
@@ -1085,11 +1095,12 @@ bool MainWindow::selectQuantity(const QString& key) {
 
 void MainWindow::refreshScalars() {
   if (!session_) return;
-  const auto q = activeQuantity();
+  const auto q = chosenQuantity();
   const std::string key = q ? q->key() : std::string();
   const auto tf = userTransferFunctions_.find(key);
+  const std::size_t step = std::size_t(std::max(0, stepBox_->currentIndex()));
   const bool ok = changeScene([&](Scene& s) {
-    s.setResult(key, activeStep());
+    s.setResult(key, step);
     s.setTransferFunction(tf != userTransferFunctions_.end() ? std::optional(tf->second) : std::nullopt);
   });
   if (!ok) {

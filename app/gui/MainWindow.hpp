@@ -88,6 +88,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   void dropEvent(QDropEvent* event) override;
 
  private:
+  std::optional<Quantity> chosenQuantity() const;
   void buildActions();
   void askBudget(const QString& title, const QString& prompt, const QString& key, void (*apply)(std::size_t));
   void buildToolbar();
