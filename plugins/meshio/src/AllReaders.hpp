@@ -9,6 +9,7 @@
 #include "GmshReader.hpp"
 #include "NeutralFileReader.hpp"
 #include "NrrdReader.hpp"
+#include "VtiReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// VTK XML unstructured grids (.vtu) and image data (.vti): ascii, inline base64 and appended (raw or base64)
-// data, zlib compression, UInt32 or UInt64 headers, either byte order, several pieces.
+// VTK XML unstructured grids (.vtu): ascii, inline base64 and appended (raw or base64) data,
+// zlib compression, UInt32 or UInt64 headers, either byte order, several pieces. The image
+// data reader (.vti, VtiReader.hpp) shares the machinery (VtkXmlReading.hpp).
 #pragma once
 
 #include <volpost/core/MeshReader.hpp>
@@ -19,21 +20,6 @@ class VtuReader : public MeshReader {
   explicit VtuReader(std::uint64_t readInPlaceFrom = kReadVtkXmlInPlaceFrom) : readInPlaceFrom_(readInPlaceFrom) {}
   std::string formatName() const override { return "VTK XML unstructured grid"; }
   std::vector<std::string> extensions() const override { return {"vtu"}; }
-  int sniff(std::string_view head) const override;
-  std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
-
- private:
-  std::uint64_t readInPlaceFrom_;
-};
-
-/// VTK XML image data (.vti): a regular grid (WholeExtent, Origin, Spacing and VTK 9's
-/// Direction), its pieces' point and cell arrays placed at their extents; read by the same
-/// XML machinery as .vtu (every encoding). The model carries the grid and its hexahedra.
-class VtiReader : public MeshReader {
- public:
-  explicit VtiReader(std::uint64_t readInPlaceFrom = kReadVtkXmlInPlaceFrom) : readInPlaceFrom_(readInPlaceFrom) {}
-  std::string formatName() const override { return "VTK XML image data"; }
-  std::vector<std::string> extensions() const override { return {"vti"}; }
   int sniff(std::string_view head) const override;
   std::unique_ptr<Model> read(const std::string& path, const Progress& progress) const override;
 

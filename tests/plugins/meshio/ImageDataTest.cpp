@@ -2,6 +2,7 @@
 // VTK XML image data (.vti) as written by VTK itself in three encodings: the grid (extent
 // not starting at 0, spacing, a rotated Direction), point and cell arrays at the right
 // points, and refusals of damaged files that name the line.
+#include "VtiReader.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
 

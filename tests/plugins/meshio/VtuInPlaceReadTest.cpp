@@ -4,6 +4,7 @@
 // give the same model (nodes, cells, every field's values) or the same error as reading
 // it whole; zlib blocks that cut a value in two are joined; and a field read after its
 // file was changed is refused, naming the file, instead of reading the new bytes as the old.
+#include "VtiReader.hpp"
 #include "VtuReader.hpp"
 
 #include "support/TestSupport.hpp"
