@@ -8,6 +8,7 @@
 
 #include "VolumeBindings.hpp"
 #include "VolumeShaders.hpp"
+#include "VolumeTextures.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
@@ -32,27 +33,6 @@
 
 namespace volpost::volume {
 namespace {
-
-gl::Texture texture2D(GLenum format, int w, int h) {
-  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
-  glTextureStorage2D(t.id(), 1, format, w, h);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return t;
-}
-
-void setFilter(GLuint tex, GLint filter) {
-  glTextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
-  glTextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
-}
-
-// The shaders compute in float: extinctions go there capped (kMaxFloatExtinction).
-double gpuExtinction(double extinction) { return std::min(extinction, kMaxFloatExtinction); }
-
-// The running integrals of the extinction matter between control points inside the values'
-// range only (0..1 on the GPU); points far outside it (a function spanning 1e30 times the
-// field's range) are moved in to here, so the integrals inside stay small and finite.
-constexpr double kIntegralValueMargin = 1.0;
 
 constexpr int kTransferFunction2DMode = 4;  // INTEGRATION_MODE of common/volume_segment.glsl
 
@@ -240,28 +220,17 @@ void GpuVolume::setIntegrationMode(IntegrationMode mode) {
 void GpuVolume::initialize() {
   registerVolumeShaders();
   composite_.initialize();
-  const optics::PsiTable psi(psiResolution);
-  psiTable_ = texture2D(GL_R32F, psiResolution, psiResolution);
-  setFilter(psiTable_.id(), GL_LINEAR);
-  glTextureSubImage2D(psiTable_.id(), 0, 0, 0, psiResolution, psiResolution, GL_RED, GL_FLOAT, psi.values().data());
-  const optics::ThickPsiTable thick(thickPsiResolution);
-  thickPsiTable_ = gl::createTexture(GL_TEXTURE_1D);
-  glTextureStorage1D(thickPsiTable_.id(), 1, GL_RG32F, thickPsiResolution);
-  setFilter(thickPsiTable_.id(), GL_NEAREST);  // read with texelFetch, interpolated in the shader
-  glTextureSubImage1D(thickPsiTable_.id(), 0, 0, thickPsiResolution, GL_RG, GL_FLOAT, thick.values().data());
+  tables_.initialize();
   initialized_ = true;
   meshDirty_ = tablesDirty_ = visibleDirty_ = true;  // a fresh context holds nothing yet
-  meshUploads_ = valueUploads_ = tableBuilds_ = 0;
+  meshUploads_ = valueUploads_ = 0;
   gl::check("GpuVolume::initialize");
 }
 
 void GpuVolume::release() {
-  if (preFuture_.valid()) preFuture_.wait();
-  preFuture_ = {};
-  preOutdated_ = false;
-  for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_, &tfColorTau_, &tfValues_, &tfKnots_})
-    b->reset();
-  for (gl::Texture* t : {&psiTable_, &thickPsiTable_, &isoTable_, &preTable_, &image_, &tf2dTable_}) t->reset();
+  tables_.release();
+  for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_}) b->reset();
+  image_.reset();
   tf2dDirty_ = tf2d_.has_value();
   bricks_.release();
   visible_.release();
@@ -280,11 +249,20 @@ void GpuVolume::prepare(const RenderContext& ctx) {
     valuesDirty_ = false;
   }
   if (grid_) layOutBricks();  // the budget may have changed since
-  if (tf2dDirty_) uploadTransferFunction2D();
-  if (tablesNeedRebuild()) rebuildTables();
+  if (tf2dDirty_) {
+    tables_.upload2D(tf2d_);
+    tf2dDirty_ = false;
+  }
+  if (tablesDirty_ || !tables_.spanTheRangeOf(gpu_)) {
+    // The tables depend on the transfer function, the mode and the values' range (they span
+    // it, and control points travel in the values' frame). The mesh is not touched.
+    if (tables_.rebuild(tf_, mode_, gpu_, asynchronous_)) ++revision_;
+    tablesDirty_ = false;
+  }
   if (visibleDirty_ && hasTets()) findVisibleTets(ctx);
   // A table finished since the last frame goes up now; with none uploaded yet, wait.
-  collectPreintegration(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !preTable_));
+  if (tables_.collect(!asynchronous_ || (mode_ == IntegrationMode::PreIntegrated && !tables_.hasPreintegrationTable())))
+    ++revision_;  // frames drawn with the previous table are outdated
   ensureImage(ctx.width, ctx.height);
 }
 
@@ -414,135 +392,6 @@ void GpuVolume::bindGridBrick(GLuint program, std::size_t b) {
                      GLint(brick.points[1]), GLint(brick.points[2]));
 }
 
-// The value tables span the values' range, not the function's: no value outside it is
-// ever looked up, and a function reaching far beyond the field (a preset over a fixed range,
-// a point at -1e30) would otherwise leave the field's values a few texels (0.018 off).
-std::pair<double, double> GpuVolume::tableRange() const {
-  const double lo = gpu_.valueMin, hi = gpu_.valueMax;
-  return {lo, hi > lo ? hi : lo + 1.0};
-}
-
-// The tables depend on the transfer function, the mode and the values' range (the tables
-// span it, and control points travel in the values' frame).
-bool GpuVolume::tablesNeedRebuild() const { return tablesDirty_ || tableRange() != std::pair(tableLo_, tableHi_); }
-
-// What a TF edit costs: the control points and the table the mode uses (the 2D
-// iso-detection table or the 3D pre-integration table). The mesh is not touched.
-void GpuVolume::rebuildTables() {
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<glm::vec4> colorTau;
-  std::vector<float> values;
-  for (const ControlPoint& p : tf_.points()) {
-    colorTau.push_back(glm::vec4(glm::vec3(p.color), float(gpuExtinction(p.extinction))));
-    values.push_back(gpu_.gpuValue(p.value));
-  }
-  upload(tfColorTau_, colorTau);
-  upload(tfValues_, values);
-  std::tie(tableLo_, tableHi_) = tableRange();
-  uploadKnots(values);  // after the range: the table coordinates span it
-  if (mode_ == IntegrationMode::LinearSegmentsIsoTable) {
-    const optics::IsoDetectionTable iso(tf_, tableLo_, tableHi_, isoResolution);
-    if (!isoTable_) {
-      isoTable_ = texture2D(GL_RG32F, isoResolution, isoResolution);
-      setFilter(isoTable_.id(), GL_NEAREST);
-    }
-    glTextureSubImage2D(isoTable_.id(), 0, 0, 0, isoResolution, isoResolution, GL_RG, GL_FLOAT, iso.values.data());
-  }
-  if (mode_ == IntegrationMode::PreIntegrated && !tf_.empty()) {
-    if (preFuture_.valid()) preOutdated_ = true;  // the running build finishes, then the latest TF goes
-    else launchPreintegration();
-    if (!asynchronous_) collectPreintegration(true);
-  }
-  glFinish();  // the cost reported is the whole change, upload included
-  if (!preFuture_.valid())
-    lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  tfChanged_ = start;
-  tablesDirty_ = false;
-  ++tableBuilds_;
-  gl::check("GpuVolume::rebuildTables");
-}
-
-// The pre-integrated table (0.04 s at 256^2 x 9 for a function of ten pieces, 0.4 s for
-// 255) is computed off the GL thread from a copy of the TF and the table's range.
-void GpuVolume::launchPreintegration() {
-  preFuture_ = std::async(std::launch::async, [tf = tf_, lo = tableLo_, hi = tableHi_, n = preResolution,
-                                               depths = preDepthResolution] {
-    return PreintegrationBuild{optics::PreintegrationTable(tf, lo, hi, n, depths).values()};
-  });
-}
-
-// Per control point: where it lies in the pre-integration table (optics::TableWarp, the
-// table's own), the extinction's running integral over the values as the GPU holds them
-// (gpuValue) in double split into two floats (the shader's difference of two of them keeps
-// double accuracy), and up to which value the extinction stays zero from inside the piece
-// that starts there (-inf where it does not: PiecewiseIntegrator's empty-space test).
-void GpuVolume::uploadKnots(const std::vector<float>& gpuValues) {
-  const optics::TableWarp warp(tf_, tableLo_, tableHi_, preResolution);
-  const std::size_t n = gpuValues.size();
-  std::vector<double> values, taus, integralValues;
-  for (std::size_t i = 0; i < n; ++i) {
-    values.push_back(gpuValues[i]);
-    taus.push_back(gpuExtinction(tf_.points()[i].extinction));
-    integralValues.push_back(std::clamp(values.back(), -kIntegralValueMargin, 1.0 + kIntegralValueMargin));
-  }
-  const std::vector<double> zeroUntil = zeroExtinctionRuns(values, taus);  // in the GPU's frame
-  zeroBelow_ = float(zeroUntil[0]);
-  // gpuValue rounds to float: equal values stay equal, the order stays.
-  const optics::OpticalDepth depth(std::move(integralValues), std::move(taus));
-  std::vector<glm::vec4> knots;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double integral = depth.runningIntegrals()[i];
-    const float high = float(integral);
-    knots.push_back(glm::vec4(float(warp.toTable(std::clamp(tf_.points()[i].value, tableLo_, tableHi_))), high,
-                              float(integral - double(high)), float(zeroUntil[i + 1])));
-  }
-  upload(tfKnots_, knots);
-}
-
-void GpuVolume::collectPreintegration(bool wait) {
-  if (!preFuture_.valid()) return;
-  if (!wait && preFuture_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  uploadPreintegration(preFuture_.get());
-  if (preOutdated_) {
-    preOutdated_ = false;
-    launchPreintegration();
-    if (wait) collectPreintegration(true);
-    return;
-  }
-  lastTfMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - tfChanged_).count();
-}
-
-void GpuVolume::uploadPreintegration(const PreintegrationBuild& build) {
-  if (!preTable_) {
-    preTable_ = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(preTable_.id(), 1, GL_RGB32F, preResolution, preResolution, preDepthResolution);
-    setFilter(preTable_.id(), GL_LINEAR);
-    for (GLenum w : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
-      glTextureParameteri(preTable_.id(), w, GL_CLAMP_TO_EDGE);
-  }
-  glTextureSubImage3D(preTable_.id(), 0, 0, 0, 0, preResolution, preResolution, preDepthResolution, GL_RGB, GL_FLOAT,
-                      build.values.data());
-  ++revision_;  // frames drawn with the previous table are outdated
-}
-
-// The 2D transfer function's nodes, interpolated bilinearly by the texture unit as
-// TransferFunction2D::evaluate does (emission and extinction, the color their quotient).
-void GpuVolume::uploadTransferFunction2D() {
-  tf2dDirty_ = false;
-  if (!tf2d_) {
-    tf2dTable_.reset();
-    return;
-  }
-  if (!tf2dTable_) {
-    tf2dTable_ = texture2D(GL_RGBA32F, TransferFunction2D::kValueNodes, TransferFunction2D::kGradientNodes);
-    setFilter(tf2dTable_.id(), GL_LINEAR);
-  }
-  glTextureSubImage2D(tf2dTable_.id(), 0, 0, 0, TransferFunction2D::kValueNodes, TransferFunction2D::kGradientNodes,
-                      GL_RGBA, GL_FLOAT, tf2d_->table().data());
-  ++tableBuilds_;
-  gl::check("GpuVolume::uploadTransferFunction2D");
-}
-
 void GpuVolume::ensureImage(int width, int height) {
   if (image_ && width == imageWidth_ && height == imageHeight_) return;
   image_ = texture2D(GL_RGBA32F, width, height);
@@ -576,11 +425,7 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   const double meanEdge = gpu_.maxEdge * 0.5;
   glProgramUniform1f(p, u("samplingStep"), float(samplingStep_ > 0.0 ? samplingStep_ : 0.25 * meanEdge));
   glProgramUniform1f(p, u("terminationTransmittance"), float(termination_));
-  glProgramUniform1i(p, u("tfCount"), int(tf_.points().size()));
-  glProgramUniform1f(p, u("tfZeroBelow"), zeroBelow_);
-  glProgramUniform1f(p, u("sLo"), gpu_.gpuValue(tableLo_));
-  glProgramUniform1f(p, u("sHi"), gpu_.gpuValue(tableHi_));
-  glProgramUniform1f(p, u("preMaxDepth"), float(optics::PreintegrationTable::kMaxDepth));
+  tables_.setUniforms(p, gpu_);
   std::vector<glm::vec4> planes;
   for (const ClipPlane& c : clipPlanes_) {
     const glm::dvec3 n = unitNormal(c);
@@ -641,18 +486,11 @@ glm::mat4 GpuVolume::imageViewProjection(const RenderContext& ctx) const {
 
 void GpuVolume::bindSegmentResources(const RenderContext& ctx) const {
   glBindTextureUnit(binding::kSceneDepth, ctx.depthTexture);
-  glBindTextureUnit(binding::kPsiTable, psiTable_.id());
-  glBindTextureUnit(binding::kThickPsi, thickPsiTable_.id());
-  glBindTextureUnit(binding::kIsoTable, isoTable_ ? isoTable_.id() : 0);
-  glBindTextureUnit(binding::kPreTable, preTable_ ? preTable_.id() : 0);
+  tables_.bind();
   glBindTextureUnit(binding::kGrid, 0);  // bindGridBrick binds each brick's
-  glBindTextureUnit(binding::kTf2d, tf2dTable_ ? tf2dTable_.id() : 0);
   const std::pair<GLuint, const gl::Buffer*> buffers[] = {
-      {binding::kNodes, &nodes_},         {binding::kTets, &tets_},
-      {binding::kNeighbors, &neighbors_}, {binding::kCellValues, &cellValues_},
-      {binding::kBvh, &bvh_},             {binding::kBoundaryFaces, &boundary_},
-      {binding::kTfColorTau, &tfColorTau_}, {binding::kTfValues, &tfValues_},
-      {binding::kTfKnots, &tfKnots_}};
+      {binding::kNodes, &nodes_},           {binding::kTets, &tets_}, {binding::kNeighbors, &neighbors_},
+      {binding::kCellValues, &cellValues_}, {binding::kBvh, &bvh_},   {binding::kBoundaryFaces, &boundary_}};
   for (const auto& [index, buffer] : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, buffer->id());
   if (skipsHiddenTets()) visible_.bind();
 }
@@ -667,16 +505,11 @@ VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tetCount;
   s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
-  s.gpuBytes = s.meshBytes + visible_.bytes() + tf_.points().size() * 20 + std::size_t(psiResolution) * psiResolution * 4 +
-               (isoTable_ ? std::size_t(isoResolution) * isoResolution * 8 : 0) +
-               (preTable_ ? std::size_t(preResolution) * preResolution * preDepthResolution * 12 +
-                                tf_.points().size() * 16
-                          : 0) +
-               std::size_t(imageWidth_) * imageHeight_ * 16;
-  s.lastTransferFunctionMs = lastTfMs_;
+  s.gpuBytes = s.meshBytes + visible_.bytes() + tables_.bytes() + std::size_t(imageWidth_) * imageHeight_ * 16;
+  s.lastTransferFunctionMs = tables_.lastChangeMs();
   s.meshUploads = meshUploads_;
   s.valueUploads = valueUploads_;
-  s.tableBuilds = tableBuilds_;
+  s.tableBuilds = tables_.builds();
   return s;
 }
 

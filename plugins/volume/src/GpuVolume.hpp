@@ -15,6 +15,7 @@
 #include "GridBricks.hpp"
 #include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
+#include "TransferFunctionTables.hpp"
 #include "VisibleTetsGpu.hpp"
 
 #include <volpost/core/RegularGrid.hpp>
@@ -93,7 +94,7 @@ class GpuVolume {
   /// reads again), and a renderer released and initialized again needs setVolume again.
   void setKeepsTetrahedraOnHost(bool keep) { keepsTetrahedraOnHost_ = keep; }
   bool asynchronous() const { return asynchronous_; }
-  bool hasPendingWork() const { return preFuture_.valid(); }
+  bool hasPendingWork() const { return tables_.pending(); }
   /// Changes with anything that changes the picture besides the camera: every setter, and
   /// a transfer-function table that arrives from its worker thread. Renderers that build a
   /// frame over several calls start again when it moves.
@@ -155,10 +156,6 @@ class GpuVolume {
   VolumeStats stats() const;
   std::vector<float> readImage() const;
 
-  /// Texture sizes (set before initialize): psi table N^2, iso table N^2, pre-integration
-  /// N^2 values x preDepthResolution depths.
-  int psiResolution = 512, thickPsiResolution = 1024, isoResolution = 256, preResolution = 256, preDepthResolution = 9;
-
  private:
   void uploadMesh();
   void findVisibleTets(const RenderContext& ctx);
@@ -169,21 +166,6 @@ class GpuVolume {
   void layOutBricks();
   std::size_t textureBudget() const;
   void makeGridTexels(SampleView values);
-  void rebuildTables();
-  void uploadTransferFunction2D();
-  std::pair<double, double> tableRange() const;
-  bool tablesNeedRebuild() const;
-  void launchPreintegration();
-  /// The pre-integration table's mean colors (optics::PreintegrationTable::values).
-  struct PreintegrationBuild {
-    std::vector<float> values;
-  };
-  void uploadPreintegration(const PreintegrationBuild& build);
-  /// Per control point: its table coordinate and the running integral of the extinction
-  /// (two floats), for the pre-integrated mode's exact opacity, and where the extinction
-  /// stays zero from its piece on (the empty-space test).
-  void uploadKnots(const std::vector<float>& gpuValues);
-  void collectPreintegration(bool wait);
   void ensureImage(int width, int height);
 
   // State.
@@ -210,19 +192,14 @@ class GpuVolume {
   // What the GPU holds relative to that state.
   bool meshDirty_ = true, valuesDirty_ = false, tablesDirty_ = true, visibleDirty_ = true;
   std::size_t builtRevision_ = std::size_t(-1);
-  double tableLo_ = 0.0, tableHi_ = 1.0;
-  float zeroBelow_ = 0.0f;  ///< the extinction is zero from below the first point up to this value
-  std::future<PreintegrationBuild> preFuture_;  ///< the pre-integration table being built
-  bool preOutdated_ = false;                   ///< the TF changed again while it was built
-  std::chrono::steady_clock::time_point tfChanged_;
-  double lastTfMs_ = 0.0;
-  std::size_t meshUploads_ = 0, valueUploads_ = 0, tableBuilds_ = 0;
+  std::size_t meshUploads_ = 0, valueUploads_ = 0;
   bool initialized_ = false;
 
   std::map<std::string, gl::Program> programs_;  ///< by stage files and mode
   ImageComposite composite_;
-  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_, tfColorTau_, tfValues_, tfKnots_;
-  gl::Texture psiTable_, thickPsiTable_, isoTable_, preTable_, image_, tf2dTable_;
+  TransferFunctionTables tables_;  ///< the transfer function as the shaders read it
+  gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_;
+  gl::Texture image_;
   bool tf2dDirty_ = false;
   GridBricks bricks_;
   VisibleTetsGpu visible_;
