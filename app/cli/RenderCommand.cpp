@@ -235,12 +235,7 @@ struct ChosenRenderer {
   std::optional<RendererEntry> volume;  ///< nullopt: the surface picture
   std::vector<RendererEntry> all;       ///< every volume renderer, for messages
   /// "texture-raymarch, texture-slices, cpu, reference": the renderers `has` is true for.
-  QString namesWhere(bool (*has)(const RendererEntry&)) const {
-    QStringList names;
-    for (const RendererEntry& e : all)
-      if (has(e)) names << e.name;
-    return names.join(", ");
-  }
+  QString namesWhere(bool (*has)(const RendererEntry&)) const { return rendererNamesWhere(all, has); }
 };
 
 // The renderer `name` (from --renderer or the state file), or a usage error listing them.

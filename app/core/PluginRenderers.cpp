@@ -51,10 +51,10 @@ VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins) {
           std::move(names)};
 }
 
-QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const VolumeRendererTraits&)) {
+QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const RendererEntry&)) {
   QStringList names;
   for (const RendererEntry& e : entries)
-    if (has(e.traits)) names << e.name;
+    if (has(e)) names << e.name;
   return names.join(", ");
 }
 

@@ -38,6 +38,6 @@ VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins);
 
 /// The names of the renderers in `entries` for which `has` is true: "texture-raymarch,
 /// texture-slices, cpu", for messages that say which renderers take an option.
-QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const VolumeRendererTraits&));
+QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const RendererEntry&));
 
 }  // namespace volpost::app

@@ -694,12 +694,13 @@ void Scene::applyToVolume() {
     volume_->initialize();
     volume_->setAsynchronousUpdates(interactive_);
     volumeName_ = v.renderer;
+    volumeTraits_ = volume_->traits();
     changed_.volumeAll();
     culledFor_.clear();
   }
   // A grid goes to a grid renderer as a grid, except a per-cell field where the renderer
   // also draws tetrahedra (the CPU ray caster): grid renderers sample values at the points.
-  const VolumeRendererTraits traits = volume_->traits();
+  const VolumeRendererTraits& traits = volumeTraits_;
   auto* grid = traits.drawsGrids ? dynamic_cast<GridVolumeRenderer*>(volume_.get()) : nullptr;
   const bool asGrid =
       grid && (!traits.drawsMeshes || (session_->model().grid && view_->location == FieldLocation::Node));

@@ -270,6 +270,7 @@ class Scene {
   bool streamlinesUploaded_ = false;  ///< the renderer holds streamlineResult_ with the current style
   std::unique_ptr<VolumeRenderer> volume_;
   std::string volumeName_;                      ///< the renderer volume_ is
+  VolumeRendererTraits volumeTraits_;           ///< what it says of itself (asked once)
   bool volumeGivenAGrid_ = false;               ///< volume_ was given the grid (else tetrahedra)
   std::optional<CulledMesh> culled_;            ///< the tets the GPU holds, when culled
   std::vector<ClipPlane> culledFor_;            ///< the planes culled_ was made for

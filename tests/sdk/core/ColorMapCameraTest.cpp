@@ -62,14 +62,24 @@ TEST(Camera, OrbitKeepsDistanceAndZoomMovesCloser) {
 
 // A fitted model stays whole in a tall picture (the angle spans the narrower side) and
 // keeps clear of a right margin (the legend's strip), in both projections.
+namespace {
+
+// A camera of `projection` fitted to the cube [-1, 1]^3.
+Camera fittedToTheUnitCube(Camera::Projection projection) {
+  Camera c;
+  c.setProjection(projection);
+  Bounds b;
+  b.extend({-1, -1, -1});
+  b.extend({1, 1, 1});
+  c.fit(b);
+  return c;
+}
+
+}  // namespace
+
 TEST(Camera, FittedModelStaysInsideTallPicturesAndLeftOfTheMargin) {
   for (auto projection : {Camera::Projection::Perspective, Camera::Projection::Orthographic}) {
-    Camera c;
-    c.setProjection(projection);
-    Bounds b;
-    b.extend({-1, -1, -1});
-    b.extend({1, 1, 1});
-    c.fit(b);
+    Camera c = fittedToTheUnitCube(projection);
     for (double aspect : {0.25, 1.0, 3.0})
       for (double margin : {0.0, 0.3}) {
         c.setRightMargin(margin);
@@ -99,12 +109,7 @@ TEST(Camera, FittedModelStaysInsideTallPicturesAndLeftOfTheMargin) {
 // have none.
 TEST(Camera, ProjectToPictureFindsThePixelOfAPoint) {
   for (auto projection : {Camera::Projection::Perspective, Camera::Projection::Orthographic}) {
-    Camera c;
-    c.setProjection(projection);
-    Bounds b;
-    b.extend({-1, -1, -1});
-    b.extend({1, 1, 1});
-    c.fit(b);
+    Camera c = fittedToTheUnitCube(projection);
     c.setRightMargin(0.25);
     const auto target = c.projectToPicture(c.target(), 400, 300);
     ASSERT_TRUE(target);
