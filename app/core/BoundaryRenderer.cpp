@@ -9,11 +9,6 @@
 
 namespace volpost::app {
 
-DisplayRange autoRange(const ScalarView& view) {
-  if (!view.range.valid()) return {0.0, 1.0};
-  return {view.range.min, view.range.max};
-}
-
 void BoundaryRenderer::initialize() {
   surface_.initialize();
   sections_.initialize();

@@ -124,7 +124,4 @@ class BoundaryRenderer {
   std::optional<PendingScalars> pendingScalars_;  ///< colors for the surface not yet uploaded
 };
 
-/// The range a view maps onto the color map: its own, or a tiny span around a constant.
-DisplayRange autoRange(const ScalarView& view);
-
 }  // namespace volpost::app

@@ -2,6 +2,7 @@
 #include "PluginRenderers.hpp"
 
 #include <volpost/plugin/PluginInterfaces.hpp>
+#include <volpost/render/VolumeRenderer.hpp>
 
 #include <QStringList>
 

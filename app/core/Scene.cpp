@@ -1,51 +1,36 @@
 // SPDX-License-Identifier: MIT
 #include "Scene.hpp"
 
-#include "FeatureEdges.hpp"
-
-#include <volpost/core/ResourceLimits.hpp>
-
 #include "Deformation.hpp"
 #include "Probe.hpp"
 #include "StreamlineSeeds.hpp"
 #include "VolumeDefaults.hpp"
 
 #include <algorithm>
-#include <iomanip>
-#include <sstream>
+#include <atomic>
 #include <chrono>
-#include <cstdio>
-#include <limits>
 #include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace volpost::app {
 namespace {
-
-// " (raycast, vicp)" after a message's advice, or nothing where no renderer is listed.
-std::string inParentheses(const std::string& names) { return names.empty() ? std::string() : " (" + names + ")"; }
 
 QString stepAndLocation(const ScalarView& view) {
   return QString("%1%2").arg(QString::fromStdString(view.stepLabel),
                              view.location == FieldLocation::Node ? "  per node" : "  per cell");
 }
 
-// Before a renderer builds its structure (face adjacency, per-tet data, the GPU copy),
-// the memory it will need next to the model is checked against the budget: a clear
-// message with the figure instead of the system killing the program. About 96 bytes per
-// tet and 48 per node cover the peaks volpost_scale_bench measures for the CPU and GPU ray
-// casters above the model (docs/methods/scale.md).
-void requireVolumeMemory(const Model& model, const Mesh& tets) {
-  const double modelBytes = double(model.mesh().cellBytes()) + 24.0 * double(model.nodeCount());
-  const double rendererBytes = 96.0 * double(tets.cellCount()) + 48.0 * double(tets.nodeCount());
-  requireMemory(modelBytes + rendererBytes, model.sourcePath,
-                "the model and the volume renderer's structures for " + std::to_string(tets.cellCount()) +
-                    " tetrahedra (about 96 bytes per tet)");
-}
-
 }  // namespace
 
-Scene::Scene(VolumeRendererFactory factory) : factory_(std::move(factory)) { camera_.setView(StandardView::Isometric); }
+Scene::Scene(VolumeRendererFactory factory) : factory_(std::move(factory)) {
+  static std::atomic<std::uint64_t> scenesMade{0};
+  revisions_.scene = ++scenesMade;
+  camera_.setView(StandardView::Isometric);
+}
 
 Scene::~Scene() = default;
 
@@ -66,7 +51,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.shown = false;
   state_.volume.samplingStep = 0.0;  // model units: the last model's step may not suit this one
   if (!session_ || !session_->model().grid) state_.volume.shading = false;  // lighting by the gradient is for grids
-  changed_.mode = true;
+  ++revisions_.mode;
   state_.volume.clipPlanes.clear();
   state_.volume.clipBox.reset();
   state_.volume.isoSurfaces.clear();
@@ -79,10 +64,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.transferFunction2D.reset();  // its values and gradients were the last model's
   state_.streamlines = StreamlineLayer{};
   streamlineResult_.reset();
-  streamlinesUploaded_ = false;
-  culled_.reset();
-  culledFor_.clear();
-  changed_ = Changes{};
+  ++revisions_.streamlines;
+  changeEverything();
   camera_.setView(StandardView::Isometric);
   fitCamera();
 }
@@ -110,10 +93,8 @@ void Scene::rebuildDeformation() {
   deformedStep_ = state_.step;
   ++viewVersion_;
   streamlineResult_.reset();
-  streamlinesUploaded_ = false;
-  culled_.reset();
-  culledFor_.clear();
-  changed_ = Changes{};
+  ++revisions_.streamlines;
+  changeEverything();
 }
 
 void Scene::fitCamera() {
@@ -131,22 +112,23 @@ void Scene::setResult(const std::string& quantity, std::size_t step) {
     state_.volume.shown = false;
   } else {
     ScalarView view = session_->evaluate(session_->findQuantity(quantity), step);  // throws, changing nothing
-    if (!view_ || view_->location != view.location) changed_.geometry = true;
+    if (!view_ || view_->location != view.location) ++revisions_.geometry;
     view_ = std::move(view);
     state_.quantity = quantity;
     state_.step = step;
     if (state_.deformation.shown && step != deformedStep_) rebuildDeformation();  // the step's displacement
   }
-  changed_.scalars = changed_.values = true;
-  if (!state_.volume.transferFunction) changed_.tables = true;  // the default follows the range
+  ++revisions_.scalars;
+  ++revisions_.values;
+  if (!state_.volume.transferFunction) ++revisions_.tables;  // the default follows the range
 }
 
 void Scene::setColorMap(const std::string& name) {
   (void)ColorMap::named(name);  // throws for an unknown name
   state_.colorMap = name;
-  changed_.colorMap = true;
-  streamlinesUploaded_ = false;
-  if (!state_.volume.transferFunction) changed_.tables = true;  // the default takes the map's colors
+  ++revisions_.colorMap;
+  ++revisions_.streamlines;
+  if (!state_.volume.transferFunction) ++revisions_.tables;  // the default takes the map's colors
 }
 
 void Scene::setFixedRange(std::optional<DisplayRange> range) {
@@ -154,15 +136,15 @@ void Scene::setFixedRange(std::optional<DisplayRange> range) {
     throw std::invalid_argument("a color range needs finite min < max");
   state_.fixedRange = range;
   if (range) state_.rangeOverSteps = false;
-  changed_.scalars = true;
-  if (!state_.volume.transferFunction) changed_.tables = true;  // the default spans the range
+  ++revisions_.scalars;
+  if (!state_.volume.transferFunction) ++revisions_.tables;  // the default spans the range
 }
 
 void Scene::setRangeOverSteps(bool on) {
   state_.rangeOverSteps = on;
   state_.fixedRange.reset();  // either way, the values' own range: over all steps or per step
-  changed_.scalars = true;
-  if (!state_.volume.transferFunction) changed_.tables = true;
+  ++revisions_.scalars;
+  if (!state_.volume.transferFunction) ++revisions_.tables;
 }
 
 void Scene::setShowEdges(bool show) { state_.edges = show; }
@@ -173,16 +155,16 @@ void Scene::setVolumeShown(bool shown) {
 }
 
 void Scene::setVolumeRenderer(const std::string& name) {
-  const std::unique_ptr<VolumeRenderer> candidate = factory_(name);
-  if (!candidate) throw std::invalid_argument("no volume renderer named '" + name + "' is loaded");
-  const bool gridsOnly = !candidate->traits().drawsMeshes;
+  const std::optional<VolumeRendererTraits> traits = factory_.traitsOf(name);
+  if (!traits) throw std::invalid_argument("no volume renderer named '" + name + "' is loaded");
+  const bool gridsOnly = !traits->drawsMeshes;
   if (gridsOnly && session_ && !session_->model().grid)
     throw std::invalid_argument("the volume renderer '" + name +
                                 "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
   if (gridsOnly && view_ && view_->location != FieldLocation::Node) throw std::invalid_argument(perCellRefusal(name));
   if (name == state_.volume.renderer) return;
   state_.volume.renderer = name;
-  changed_.renderer = true;
+  ++revisions_.renderer;
 }
 
 void Scene::setShading(bool on) {
@@ -190,22 +172,22 @@ void Scene::setShading(bool on) {
     throw std::invalid_argument("shading by the gradient applies to regular grids (SEG-Y, image data); this model is a "
                                 "mesh");
   state_.volume.shading = on;
-  changed_.mode = true;
+  ++revisions_.mode;
 }
 
 void Scene::setIntegrationMode(IntegrationMode mode) {
   state_.volume.mode = mode;
-  changed_.mode = true;
+  ++revisions_.mode;
 }
 
 void Scene::setTransferFunction(std::optional<TransferFunction> tf) {
   state_.volume.transferFunction = std::move(tf);
-  changed_.tables = true;
+  ++revisions_.tables;
 }
 
 void Scene::setTransferFunction2D(std::optional<TransferFunction2D> tf) {
   state_.volume.transferFunction2D = std::move(tf);
-  changed_.tables = true;
+  ++revisions_.tables;
 }
 
 void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
@@ -213,7 +195,7 @@ void Scene::setClipPlanes(std::vector<ClipPlane> planes) {
   next.clipPlanes = std::move(planes);
   checkClipPlanes(next.allClipPlanes());
   state_.volume.clipPlanes = std::move(next.clipPlanes);
-  changed_.planes = true;
+  ++revisions_.planes;
 }
 
 void Scene::setClipBox(std::optional<ClipBox> box) {
@@ -221,13 +203,13 @@ void Scene::setClipBox(std::optional<ClipBox> box) {
   next.clipBox = box;
   checkClipPlanes(next.allClipPlanes());
   state_.volume.clipBox = box;
-  changed_.planes = true;
+  ++revisions_.planes;
 }
 
 void Scene::setIsoSurfaces(std::vector<optics::IsoSurface> surfaces) {
   checkIsoSurfaces(surfaces);
   state_.volume.isoSurfaces = std::move(surfaces);
-  changed_.iso = true;
+  ++revisions_.iso;
 }
 
 void Scene::setGridSlices(const std::array<std::optional<double>, 3>& labels) {
@@ -262,7 +244,7 @@ void Scene::checkSamplingStep(double step) const {
 void Scene::setSamplingStep(double step) {
   checkSamplingStep(step);
   state_.volume.samplingStep = step;
-  changed_.mode = true;
+  ++revisions_.mode;
 }
 
 void Scene::setTermination(double transmittance) {
@@ -272,7 +254,7 @@ void Scene::setTermination(double transmittance) {
     throw std::invalid_argument(std::string("the early-termination transmittance must lie in [0, 1), not ") + value);
   }
   state_.volume.termination = transmittance;
-  changed_.mode = true;
+  ++revisions_.mode;
 }
 
 void Scene::setVolumeEdges(bool show) { state_.volume.edges = show; }
@@ -312,7 +294,7 @@ void Scene::applyState(const SceneState& s) {
                                 ", which is given per element; iso-surfaces need values at the nodes");
   (void)ColorMap::named(s.colorMap);
   if (s.volume.shown && !view) throw std::invalid_argument("the state shows a volume but names no result");
-  if (s.volume.shown && !factory_(s.volume.renderer))
+  if (s.volume.shown && !factory_.traitsOf(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   checkStreamlines(s.streamlines);
   checkProbes(s.probes);
@@ -344,6 +326,7 @@ void Scene::applyState(const SceneState& s) {
   }
 
   const bool locationChanged = !view_ || !view || view_->location != view->location;
+  const bool rendererChanged = s.volume.renderer != state_.volume.renderer;
   const std::string keptModel = state_.modelPath;
   const ReaderOptions keptOptions = state_.readerOptions;
   if (s.volume.shading && session_ && !session_->model().grid)
@@ -353,14 +336,15 @@ void Scene::applyState(const SceneState& s) {
   state_.modelPath = keptModel;
   state_.readerOptions = keptOptions;
   state_.camera.reset();  // the live camera holds it
-  streamlinesUploaded_ = false;
+  ++revisions_.streamlines;
   view_ = std::move(view);
   ++viewVersion_;
   camera_ = camera;
-  changed_.scalars = changed_.colorMap = changed_.edges = true;
-  changed_.values = changed_.tables = changed_.planes = changed_.iso = changed_.mode = true;
-  if (locationChanged) changed_.geometry = true;
-  if (volumeName_ != state_.volume.renderer) changed_.renderer = true;
+  for (std::uint64_t* r : {&revisions_.scalars, &revisions_.colorMap, &revisions_.values, &revisions_.tables,
+                           &revisions_.planes, &revisions_.iso, &revisions_.mode})
+    ++*r;
+  if (locationChanged) ++revisions_.geometry;
+  if (rendererChanged) ++revisions_.renderer;
   if (state_.deformation.shown || session_ != baseSession_) rebuildDeformation();
 }
 
@@ -513,16 +497,11 @@ Camera Scene::pictureCamera(double width, double height) const {
   return camera;
 }
 
-std::vector<double> Scene::tetValues() const { return session_->tetValues(*view_); }
-
-// ---- streamlines ----
-
-// The values the iso-surfaces are of: the shown result's, or another quantity's at the
-// shown step (evaluated once per quantity, step and model).
-const ScalarView* Scene::isoSurfaceView() const {
+// The values of another quantity are evaluated once per quantity, step and model.
+VersionedView Scene::isoSurfaceValues() const {
   const std::string& key = state_.volume.isoQuantity;
-  if (key.empty() || (view_ && view_->quantity.key() == key)) return view_ ? &*view_ : nullptr;
-  if (!session_) return nullptr;
+  if (key.empty() || (view_ && view_->quantity.key() == key)) return shownValues();
+  if (!session_) return {};
   const std::string id = key + "@" + std::to_string(state_.step) + "@" + std::to_string(viewVersion_);
   if (isoViewFor_ != id) {
     try {
@@ -533,7 +512,7 @@ const ScalarView* Scene::isoSurfaceView() const {
     isoViewFor_ = id;
     ++isoViewVersion_;
   }
-  return isoView_ ? &*isoView_ : nullptr;
+  return {isoView_ ? &*isoView_ : nullptr, isoViewVersion_};
 }
 
 std::size_t Scene::stepCountOf(const std::string& key) const {
@@ -549,7 +528,7 @@ void Scene::setIsoQuantity(const std::string& key) {
                                   " is given per element");
   }
   state_.volume.isoQuantity = key;
-  changed_.iso = true;
+  ++revisions_.iso;
 }
 
 void Scene::setPlotLine(std::optional<std::array<glm::dvec3, 2>> line) {
@@ -566,7 +545,7 @@ void Scene::setSurfaceOpacity(double opacity) {
 void Scene::setStreamlines(StreamlineLayer layer) {
   checkStreamlines(layer);
   state_.streamlines = std::move(layer);
-  streamlinesUploaded_ = false;
+  ++revisions_.streamlines;
 }
 
 void Scene::checkStreamlines(const StreamlineLayer& layer) const {
@@ -606,159 +585,7 @@ std::shared_ptr<const StreamlineResult> Scene::traceStreamlines(const Progress& 
 
 void Scene::setStreamlineResult(std::shared_ptr<const StreamlineResult> result) {
   streamlineResult_ = std::move(result);
-  streamlinesUploaded_ = false;
-}
-
-// Uploads the lines with the current style (a style change re-uploads, never re-traces).
-void Scene::applyToStreamlines() {
-  if (!state_.streamlines.shown) return;
-  if (streamlinesNeedTracing()) {
-    if (interactive_) return;  // the window traces on a worker thread and hands the result in
-    setStreamlineResult(traceStreamlines());
-  }
-  if (streamlinesUploaded_ || !streamlineResult_) return;
-  const StreamlineResult& r = *streamlineResult_;
-  std::vector<std::vector<glm::dvec3>> lines;
-  for (const Streamline& l : r.lines) lines.push_back(l.points);
-  StreamlineStyle style = state_.streamlines.style;
-  const double size = session_->model().bounds().diagonal();
-  if (style.tubeRadius <= 0.0) style.tubeRadius = 0.003 * size;
-  if (style.arrowSpacing <= 0.0) style.arrowSpacing = 0.08 * size;
-  streamlineRenderer_.setLines(lines, r.values, session_->origin(), style);
-  streamlineRenderer_.setColorMap(ColorMap::named(state_.colorMap));
-  streamlineRenderer_.setRange(r.min, r.max);
-  streamlinesUploaded_ = true;
-}
-
-// ---- GL ----
-
-void Scene::initialize() {
-  boundary_.initialize();
-  undeformedEdges_.initialize();
-  undeformedUploaded_ = nullptr;
-  streamlineRenderer_.initialize();
-  streamlinesUploaded_ = false;
-  initialized_ = true;
-  changed_ = Changes{};  // a fresh context holds nothing
-}
-
-void Scene::release() {
-  if (!initialized_) return;
-  if (volume_) volume_->release();
-  volume_.reset();
-  volumeName_.clear();
-  culled_.reset();
-  culledFor_.clear();
-  depthTarget_.reset();
-  streamlineRenderer_.release();
-  streamlinesUploaded_ = false;
-  boundary_.release();
-  undeformedEdges_.release();
-  undeformedUploaded_ = nullptr;
-  initialized_ = false;
-  changed_ = Changes{};
-}
-
-VolumeStats Scene::volumeStats() const { return volume_ ? volume_->stats() : VolumeStats{}; }
-
-std::vector<float> Scene::readVolumeImage() const {
-  return volume_ && state_.volume.shown ? volume_->readImage() : std::vector<float>{};
-}
-
-void Scene::applyToBoundary() {
-  if (changed_.model) boundary_.setSession(session_);
-  if (changed_.model || changed_.scalars) boundary_.setScalars(view_ ? &*view_ : nullptr, displayRange());
-  if (changed_.colorMap) boundary_.setColorMap(ColorMap::named(state_.colorMap));
-  // Section cuts in the surface view: the volume's planes and box cut the surface too.
-  boundary_.setCuts(state_.volume.shown ? std::vector<ClipPlane>{} : state_.volume.allClipPlanes(),
-                    view_ ? &*view_ : nullptr, viewVersion_, displayRange());
-  const ScalarView* isoView = isoSurfaceView();
-  boundary_.setIsoSurfaces(state_.volume.shown ? std::vector<optics::IsoSurface>{} : state_.volume.isoSurfaces, isoView,
-                           isoView == (view_ ? &*view_ : nullptr) ? viewVersion_ : isoViewVersion_);
-  boundary_.setSlices(gridSlicePlanes(), state_.volume.allClipPlanes(), view_ ? &*view_ : nullptr, viewVersion_,
-                      displayRange());
-  changed_.model = changed_.scalars = changed_.colorMap = changed_.edges = false;
-}
-
-// Hands the volume renderer what changed, and only that. The GPU holds only the tets the
-// clip box can show (the renderer cuts exactly at every plane, so the picture is the
-// same); free planes are not culled to, so dragging one never rebuilds, and the window
-// and the command line hold the same tets and draw the same pixels.
-void Scene::applyToVolume() {
-  const VolumeLayer& v = state_.volume;
-  if (changed_.renderer || !volume_ || volumeName_ != v.renderer) {
-    if (volume_) volume_->release();
-    volume_ = factory_(v.renderer);
-    volumeName_.clear();
-    if (!volume_) throw std::invalid_argument("no volume renderer named '" + v.renderer + "' is loaded");
-    volume_->initialize();
-    volume_->setAsynchronousUpdates(interactive_);
-    volumeName_ = v.renderer;
-    volumeTraits_ = volume_->traits();
-    changed_.volumeAll();
-    culledFor_.clear();
-  }
-  // A grid goes to a grid renderer as a grid, except a per-cell field where the renderer
-  // also draws tetrahedra (the CPU ray caster): grid renderers sample values at the points.
-  const VolumeRendererTraits& traits = volumeTraits_;
-  auto* grid = traits.drawsGrids ? dynamic_cast<GridVolumeRenderer*>(volume_.get()) : nullptr;
-  const bool asGrid =
-      grid && (!traits.drawsMeshes || (session_->model().grid && view_->location == FieldLocation::Node));
-  if (asGrid != volumeGivenAGrid_) {  // the other kind of data: everything goes again
-    changed_.volumeAll();
-    culledFor_.clear();
-    volumeGivenAGrid_ = asGrid;
-  }
-  if (asGrid) {
-    applyToGridVolume(*grid);
-    return;
-  }
-  if (v.transferFunction2D)
-    throw std::invalid_argument(
-        session_->model().grid
-            ? "the volume renderer '" + v.renderer + "' has no 2D transfer functions: choose one that has" +
-                  inParentheses(factory_.namesWhere([](const VolumeRendererTraits& t) { return t.transferFunction2D; }))
-            : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
-              "(SEG-Y, image data); this model is a mesh");
-  const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
-  if (cullPlanes != culledFor_) changed_.geometry = true;
-  const Mesh& tets = session_->tetrahedra().mesh;
-  if (changed_.geometry) {
-    requireVolumeMemory(session_->model(), tets);
-    const std::vector<double> values = tetValues();
-    if (cullPlanes.empty()) {
-      culled_.reset();
-      volume_->setVolume(tets, view_->location, values);
-    } else {
-      culled_ = cullToClipPlanes(tets, cullPlanes);
-      volume_->setVolume(culled_->mesh, view_->location, culled_->values(view_->location, values));
-    }
-    culledFor_ = cullPlanes;
-  } else if (changed_.values) {
-    const std::vector<double> values = tetValues();
-    volume_->setValues(culled_ ? culled_->values(view_->location, values) : values);  // only the values travel
-  }
-  applyVolumeSettings();
-}
-
-// What every volume renderer takes the same way: the transfer function, planes,
-// iso-surfaces and the mode's settings.
-void Scene::applyVolumeSettings() {
-  const VolumeLayer& v = state_.volume;
-  if (changed_.tables) volume_->setTransferFunction(transferFunction());
-  if (changed_.planes) volume_->setClipPlanes(v.allClipPlanes());
-  // A volume contours the quantity it renders: iso-surfaces of another show in the surface view.
-  if (changed_.iso)
-    volume_->setIsoSurfaces(v.isoQuantity.empty() || (view_ && view_->quantity.key() == v.isoQuantity)
-                                ? v.isoSurfaces
-                                : std::vector<optics::IsoSurface>{});
-  if (changed_.mode) {
-    volume_->setIntegrationMode(v.mode);
-    volume_->setSamplingStep(v.samplingStep);
-    volume_->setTerminationThreshold(v.termination);
-  }
-  changed_.renderer = changed_.geometry = changed_.values = changed_.tables = false;
-  changed_.planes = changed_.iso = changed_.mode = false;
+  ++revisions_.streamlines;
 }
 
 std::string Scene::perCellRefusal(const std::string& renderer) const {
@@ -767,102 +594,17 @@ std::string Scene::perCellRefusal(const std::string& renderer) const {
          inParentheses(factory_.namesWhere([](const VolumeRendererTraits& t) { return t.drawsMeshes; }));
 }
 
-// A grid renderer samples the grid's point values itself: no tetrahedra, no culling (the
-// clip box's planes cut exactly).
-void Scene::applyToGridVolume(GridVolumeRenderer& renderer) {
-  const Model& model = session_->model();
-  if (!model.grid)
-    throw std::invalid_argument("the volume renderer '" + state_.volume.renderer +
-                                "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
-  if (view_->location != FieldLocation::Node) throw std::invalid_argument(perCellRefusal(state_.volume.renderer));
-  if (changed_.geometry) {
-    culled_.reset();
-    culledFor_.clear();
-    renderer.setGrid(*model.grid, view_->values);
-  } else if (changed_.values) {
-    renderer.setGridValues(view_->values);
-  }
-  if (changed_.mode) renderer.setShading(state_.volume.shading);
-  if (changed_.tables) renderer.setTransferFunction2D(state_.volume.transferFunction2D);
-  applyVolumeSettings();
+// ---- streamlines ----
+
+void Scene::updateStreamlines() {
+  if (streamlinesNeedTracing()) setStreamlineResult(traceStreamlines());
 }
 
-void Scene::render(const RenderContext& target) {
-  if (!initialized_) return;
-  RenderContext ctx = target;
-  ctx.camera = pictureCamera(ctx.width / devicePixelRatio_, ctx.height / devicePixelRatio_);
-  applyToBoundary();
-  applyToStreamlines();
-  streamlineRenderer_.setClipPlanes(state_.volume.allClipPlanes());
-  if (state_.volume.shown && view_ && session_) {
-    renderVolume(ctx);
-    return;
-  }
-  // Opaque lines first, then the surface: opaque it hides the lines inside, see-through
-  // it is blended over them.
-  boundary_.renderBackground(ctx);
-  if (streamlinesDrawn()) streamlineRenderer_.render(ctx);
-  boundary_.setShowEdges(state_.edges && state_.surfaceOpacity >= 1.0);  // edges would cage what shows through
-  boundary_.setLighting(state_.lighting);
-  boundary_.setOpacity(float(state_.surfaceOpacity));
-  boundary_.setSurfaceShown(state_.surfaceShown);  // hidden, the sections and iso-surfaces still show
-  boundary_.renderOver(ctx);
-  if (state_.deformation.shown && state_.deformation.undeformedOutline && baseSession_ && session_ != baseSession_)
-    drawUndeformedOutline(ctx);
-}
-
-// The undeformed model's outline (its feature edges) in gray, hidden where the deformed
-// surface is in front, cut by the same planes: how far each part moved, at a glance.
-void Scene::drawUndeformedOutline(const RenderContext& ctx) {
-  if (undeformedUploaded_ != baseSession_.get()) {
-    undeformedEdges_.setLines(featureEdges(baseSession_->surface()), baseSession_->origin());
-    undeformedUploaded_ = baseSession_.get();
-  }
-  undeformedEdges_.setShowFaces(false);
-  undeformedEdges_.setShowEdges(true);
-  undeformedEdges_.edgeColor = {0.55f, 0.57f, 0.62f};
-  const double tolerance = 1e-5 * std::max(baseSession_->bounds().diagonal(), 1e-300);
-  undeformedEdges_.setClipPlanes(state_.volume.allClipPlanes(), tolerance);
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  RenderContext local = ctx;
-  local.origin = baseSession_->origin();
-  undeformedEdges_.render(local);
-  glDisable(GL_DEPTH_TEST);
-}
-
-// The element edges stay visible over the volume and end its rays: they are drawn into
-// the target and, depth only, into a texture the volume renderer reads.
-void Scene::renderVolume(const RenderContext& ctx) {
-  applyToVolume();
-  RenderContext volumeCtx = ctx;
-  const bool lines = streamlinesDrawn();
-  const bool slices = boundary_.sliceTriangles() > 0;
-  if (state_.volume.edges || lines || slices) {
-    // The opaque things (edges, streamlines) drawn into the target and, depth only, into a
-    // texture the volume renderer reads: its rays end at them.
-    if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
-      depthTarget_ = std::make_unique<OffscreenTarget>(ctx.width, ctx.height);
-    boundary_.setShowFaces(false);
-    boundary_.setSurfaceShown(true);  // its edges, that is
-    boundary_.setShowEdges(state_.volume.edges);
-    boundary_.setOpacity(1.0f);
-    for (const GLuint target : {depthTarget_->framebuffer(), ctx.framebuffer}) {
-      RenderContext pass = ctx;
-      pass.framebuffer = target;
-      boundary_.renderBackground(pass);
-      if (slices) boundary_.renderSlices(pass);
-      if (lines) streamlineRenderer_.render(pass);
-      if (state_.volume.edges) boundary_.renderOver(pass);
-    }
-    boundary_.setShowFaces(true);
-    volumeCtx.depthTexture = depthTarget_->depthTexture();
-  } else {
-    boundary_.renderBackground(ctx);
-  }
-  volume_->render(volumeCtx);
+void Scene::changeEverything() {
+  for (std::uint64_t* r : {&revisions_.model, &revisions_.scalars, &revisions_.colorMap, &revisions_.renderer,
+                           &revisions_.geometry, &revisions_.values, &revisions_.tables, &revisions_.planes,
+                           &revisions_.iso, &revisions_.mode, &revisions_.streamlines})
+    ++*r;
 }
 
 }  // namespace volpost::app

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
-// The one place a picture is made: a model (ModelSession), a SceneState (result, step,
-// colors, layers) and a live camera, drawn by the boundary renderer and a volume renderer
-// from a plugin. The window's viewport and `volpost render` are thin callers of it.
+// What a picture shows, as state: a model (ModelSession), a SceneState (result, step,
+// colors, layers) and a live camera. The window's viewport and `volpost render` change it;
+// a SceneDrawing (with a GL context) draws it. No GL here: the command-line verbs and the
+// panels use a scene without a context.
 //
-// Setters record state and what kind of thing changed (the model, the values, the colors,
-// the transfer-function tables, the plane parameters, the renderer); render(), with the
-// context current, hands each layer only what changed: a dragged plane reaches the volume
-// renderer as a new plane and nothing else.
+// Setters check their input, record it and count what kind of thing changed (the model,
+// the values, the colors, the transfer-function tables, the plane parameters, the
+// renderer) in revisions(); a drawing compares those counts with what it last drew and
+// hands each layer only what changed: a dragged plane reaches the volume renderer as a
+// new plane and nothing else.
 #pragma once
 
-#include "BoundaryRenderer.hpp"
 #include "GridSlices.hpp"
 #include "Legend.hpp"
 #include "ModelSession.hpp"
@@ -17,13 +18,12 @@
 #include "StreamlineTracing.hpp"
 #include "VolumeRendererFactory.hpp"
 
-#include "host/ClipCulling.hpp"
-#include "host/render/StreamlineRenderer.hpp"
-
 #include <volpost/core/Camera.hpp>
-#include <volpost/render/OffscreenTarget.hpp>
-#include <volpost/render/GridVolumeRenderer.hpp>
 
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -35,6 +35,32 @@ namespace volpost::app {
 struct LegendPicture {
   ColorMap colors;
   LegendContent content;
+};
+
+/// The scene's light gray behind the model, in pictures and the window alike.
+inline constexpr glm::vec3 kSceneBackground{0.96f, 0.96f, 0.97f};
+
+/// How often each kind of thing has changed; a drawing keeps the counts it last drew and
+/// uploads only what differs. Counts only grow.
+struct SceneRevisions {
+  std::uint64_t scene = 0;    ///< which scene: each one made has its own number
+  std::uint64_t model = 0;    ///< the drawn model: a new one, or deformed anew
+  std::uint64_t scalars = 0;  ///< the surface's values or color range
+  std::uint64_t colorMap = 0;
+  std::uint64_t renderer = 0;     ///< the volume renderer chosen
+  std::uint64_t geometry = 0;     ///< what the volume's cells are (model, per node or per cell)
+  std::uint64_t values = 0;       ///< the volume's values
+  std::uint64_t tables = 0;       ///< the transfer functions
+  std::uint64_t planes = 0;       ///< clip planes and box
+  std::uint64_t iso = 0;          ///< iso-surfaces
+  std::uint64_t mode = 0;         ///< integration mode, sampling step, termination, shading
+  std::uint64_t streamlines = 0;  ///< the lines shown or how they look
+};
+
+/// Values with a count of their changes (the count tells a cache whether it is stale).
+struct VersionedView {
+  const ScalarView* view = nullptr;
+  std::uint64_t version = 0;
 };
 
 class Scene {
@@ -61,7 +87,7 @@ class Scene {
   /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
   double deformationScale() const { return deformationScale_; }
 
-  // ---- what is shown (no GL; render() applies it) ----
+  // ---- what is shown (a drawing applies it) ----
   /// Throws std::invalid_argument (no such quantity or step) and changes nothing then.
   void setResult(const std::string& quantity, std::size_t step);
   void setColorMap(const std::string& name);
@@ -124,6 +150,11 @@ class Scene {
   std::shared_ptr<const StreamlineResult> traceStreamlines(const Progress& progress = {}) const;
   void setStreamlineResult(std::shared_ptr<const StreamlineResult> result);
   std::shared_ptr<const StreamlineResult> streamlineResult() const { return streamlineResult_; }
+  /// Traces the lines here and now when they need it (pictures; the window traces on a
+  /// worker thread instead).
+  void updateStreamlines();
+  /// Lines are shown and the ones held belong to the current model, step and layer.
+  bool streamlinesDrawn() const;
   // ---- probed points and min/max markers (painted over the picture: paintSceneOverlay) ----
   /// Throws std::invalid_argument for more than kMaxProbes points or one not finite.
   void setProbes(std::vector<glm::dvec3> points);
@@ -157,9 +188,6 @@ class Scene {
   /// probed once per change of the points, result, step or geometry, not per frame.
   const std::vector<std::optional<double>>& probedValues() const;
 
-  /// Interactive use (the window): slow tables build off the GUI thread.
-  void setInteractive(bool on) { interactive_ = on; }
-
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   void fitCamera();
@@ -186,52 +214,37 @@ class Scene {
   /// legend's strip at the right when the legend is shown. Everything that draws, projects
   /// or picks in a picture uses it, so markers and picks land where the model is drawn.
   Camera pictureCamera(double width, double height) const;
-  /// Device pixels per logical pixel of the pictures render() draws (the window's HiDPI
+  /// Device pixels per logical pixel of the pictures drawn (the window's HiDPI
   /// factor; 1 headless): the legend strip is measured in logical pixels.
   void setDevicePixelRatio(double ratio) { devicePixelRatio_ = ratio > 0.0 ? ratio : 1.0; }
-  glm::vec3 background() const { return boundary_.background; }
+  glm::vec3 background() const { return kSceneBackground; }
+  double devicePixelRatio() const { return devicePixelRatio_; }
 
-  // ---- GL (a context current) ----
-  void initialize();
-  void release();
-  bool initialized() const { return initialized_; }
-  /// Draws the picture into ctx.framebuffer (cleared to the background). The legend is not
-  /// drawn: callers paint legend() over the image their own way.
-  void render(const RenderContext& ctx);
-  VolumeStats volumeStats() const;
-  /// The last frame's volume alone: premultiplied RGBA floats, top row first; empty when
-  /// no volume is shown.
-  std::vector<float> readVolumeImage() const;
-  /// Triangles of the section cuts the last surface frame drew.
-  std::size_t sectionTriangles() const { return boundary_.sectionTriangles(); }
-  /// Triangles of the iso-surfaces the last surface frame drew.
-  std::size_t isoTriangles() const { return boundary_.isoTriangles(); }
-  /// The surface view's iso-surface triangles as last drawn (three corners each).
-  const std::vector<glm::dvec3>& isoSurfaceCorners() const { return boundary_.isoCorners(); }
-  bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
+  // ---- for a drawing ----
+  /// The state without the camera (state() adds it): what each layer shows.
+  const SceneState& shown() const { return state_; }
+  const SceneRevisions& revisions() const { return revisions_; }
+  const VolumeRendererFactory& volumeRenderers() const { return factory_; }
+  /// The shown values and the count of their changes.
+  VersionedView shownValues() const { return {view_ ? &*view_ : nullptr, viewVersion_}; }
+  /// The values the iso-surfaces are of: the shown result's, or another quantity's at the
+  /// shown step (evaluated once per quantity, step and model).
+  VersionedView isoSurfaceValues() const;
+  /// Why a renderer that draws grids' point values cannot draw the shown per-cell field.
+  std::string perCellRefusal(const std::string& renderer) const;
 
  private:
-  void drawUndeformedOutline(const RenderContext& ctx);
-  void applyToBoundary();
-  void applyToVolume();
-  void applyToGridVolume(GridVolumeRenderer& renderer);
-  /// Why a grid-only renderer cannot draw the shown per-cell field.
-  std::string perCellRefusal(const std::string& renderer) const;
-  void applyVolumeSettings();
-  void renderVolume(const RenderContext& ctx);
-  void applyToStreamlines();
   void checkStreamlines(const StreamlineLayer& layer) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
   void checkSamplingStep(double step) const;
-  const ScalarView* isoSurfaceView() const;
   std::size_t stepCountOf(const std::string& quantityKey) const;
   mutable std::optional<ScalarView> isoView_;          ///< another quantity's values, for its iso-surfaces
   mutable std::string isoViewFor_;                     ///< the quantity, step and view version isoView_ is of
   mutable std::uint64_t isoViewVersion_ = 1ull << 62;  ///< apart from viewVersion_'s counts
   /// The most samples a ray takes across the model's diagonal in the sampling mode.
   static constexpr double kMaxSamplesAcross = 65536.0;
-  bool streamlinesDrawn() const;
-  std::vector<double> tetValues() const;
+  /// Every kind of thing changed: a new or newly deformed model.
+  void changeEverything();
 
   VolumeRendererFactory factory_;
   std::shared_ptr<const ModelSession> session_;      ///< drawn: baseSession_ or its deformed copy
@@ -253,29 +266,9 @@ class Scene {
   mutable std::vector<std::optional<double>> probedValues_;
   mutable std::uint64_t probedVersion_ = ~std::uint64_t(0);  ///< viewVersion_ probedValues_ is for
   mutable std::vector<glm::dvec3> probedPoints_;              ///< and the points
-  bool interactive_ = false;
+  SceneRevisions revisions_;
 
-  // What changed since the last render().
-  struct Changes {
-    bool model = true, scalars = true, colorMap = true, edges = true;  // boundary
-    bool renderer = true, geometry = true, values = true, tables = true, planes = true, iso = true, mode = true;
-    void volumeAll() { renderer = geometry = values = tables = planes = iso = mode = true; }
-  } changed_;
-
-  BoundaryRenderer boundary_;
-  SurfaceRenderer undeformedEdges_;            ///< the undeformed model's element edges (deformation's outline)
-  const ModelSession* undeformedUploaded_ = nullptr;
-  StreamlineRenderer streamlineRenderer_;
   std::shared_ptr<const StreamlineResult> streamlineResult_;
-  bool streamlinesUploaded_ = false;  ///< the renderer holds streamlineResult_ with the current style
-  std::unique_ptr<VolumeRenderer> volume_;
-  std::string volumeName_;                      ///< the renderer volume_ is
-  VolumeRendererTraits volumeTraits_;           ///< what it says of itself (asked once)
-  bool volumeGivenAGrid_ = false;               ///< volume_ was given the grid (else tetrahedra)
-  std::optional<CulledMesh> culled_;            ///< the tets the GPU holds, when culled
-  std::vector<ClipPlane> culledFor_;            ///< the planes culled_ was made for
-  std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume
-  bool initialized_ = false;
 };
 
 }  // namespace volpost::app

@@ -2,6 +2,7 @@
 #include "SceneImage.hpp"
 
 #include "ReferenceVolumeImage.hpp"
+#include "SceneDrawing.hpp"
 #include "SceneOverlay.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
@@ -28,17 +29,20 @@ SceneImage renderSceneImage(Scene& scene, int width, int height) {
   SceneImage out;
   out.width = width;
   out.height = height;
+  scene.updateStreamlines();  // a picture waits for its lines
   {
     // Released before the context goes, also when a frame throws.
-    const ScopedInitialization<Scene> initialized(scene);
+    SceneDrawing drawing;
+    const ScopedInitialization<SceneDrawing> initialized(drawing);
     RenderContext ctx;
     ctx.width = width;
     ctx.height = height;
     ctx.framebuffer = target.framebuffer();
-    scene.render(ctx);
+    drawing.render(scene, ctx);
     glFinish();
     pixels = target.readPixels();
-    out.volumeRgba = scene.readVolumeImage();
+    out.volumeRgba = drawing.readVolumeImage();
+    out.isoSurfaceCorners = drawing.isoSurfaceCorners();
   }
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   for (int y = 0; y < height; ++y)

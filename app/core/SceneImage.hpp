@@ -18,10 +18,11 @@ struct SceneImage {
   QImage picture;                 ///< RGBA8, what the window would show at this size
   int width = 0, height = 0;
   std::vector<float> volumeRgba;  ///< premultiplied RGBA, top row first; empty without a volume
+  std::vector<glm::dvec3> isoSurfaceCorners;  ///< the surface view's iso-surface triangles as drawn
 };
 
-/// Draws the scene with its GPU renderers in a headless context of its own. The scene is
-/// initialized and released here (it must not be initialized already). Throws
+/// Draws the scene with its GPU renderers in a headless context of its own (a SceneDrawing
+/// made and released here), tracing its streamlines first where they need it. Throws
 /// std::exception subclasses with a message for the user (no GL 4.5, a renderer error).
 SceneImage renderSceneImage(Scene& scene, int width, int height);
 

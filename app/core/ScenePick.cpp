@@ -66,7 +66,8 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
   return best;
 }
 
-std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray) {
+std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
+                                         std::span<const glm::dvec3> isoSurfaceCorners) {
   const ModelSession* session = scene.session();
   if (!session) return std::nullopt;
   const std::vector<ClipPlane> slices = scene.gridSlicePlanes();
@@ -87,7 +88,7 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray)
     }
   // Iso-surfaces as drawn in the surface view (already cut by the same planes).
   if (!scene.volumeShown()) {
-    const std::vector<glm::dvec3>& iso = scene.isoSurfaceCorners();
+    const std::span<const glm::dvec3> iso = isoSurfaceCorners;
     for (std::size_t i = 0; i + 2 < iso.size(); i += 3)
       if (const auto t = rayHitsTriangle(ray, iso[i], iso[i + 1], iso[i + 2]); t && *t < nearest) {
         const glm::dvec3 point = ray.origin + *t * ray.direction;

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 
 namespace volpost::app {
 
@@ -35,8 +36,9 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
 
 /// The first point along the ray of what the scene shows to click on: the boundary surface
 /// where the clip planes and box keep it, the section faces they cut, the iso-surfaces of
-/// the surface view (as last drawn), a regular grid's slices; not the surface while it is
-/// hidden. nullopt: a miss.
-std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray);
+/// the surface view (their triangles as last drawn: SceneDrawing::isoSurfaceCorners), a
+/// regular grid's slices; not the surface while it is hidden. nullopt: a miss.
+std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
+                                         std::span<const glm::dvec3> isoSurfaceCorners = {});
 
 }  // namespace volpost::app

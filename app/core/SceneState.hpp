@@ -7,15 +7,18 @@
 // Serialized as versioned JSON ("volpost-state", version 1).
 #pragma once
 
+#include "DisplayRange.hpp"
+
+#include "host/StreamlineStyle.hpp"
 #include "host/Streamlines.hpp"
-#include "host/render/StreamlineRenderer.hpp"
 
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/MeshReader.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/IntegrationMode.hpp>
+#include <volpost/render/VolumeLimits.hpp>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
@@ -26,12 +29,6 @@
 #include <vector>
 
 namespace volpost::app {
-
-/// The range mapped onto the color map.
-struct DisplayRange {
-  double min = 0.0, max = 1.0;
-  bool operator==(const DisplayRange&) const = default;
-};
 
 /// An explicit camera (model coordinates).
 struct CameraState {

@@ -1,17 +1,23 @@
 // SPDX-License-Identifier: MIT
 // How a scene gets its volume renderer: by name, from whatever offers them (the loaded
 // plugins in the app, a single renderer in a test), with the names it knows for messages
-// that point to another renderer.
+// that point to another renderer. The renderer itself stays behind a declaration, so the
+// scene's state compiles without GL.
 #pragma once
 
-#include <volpost/render/VolumeRenderer.hpp>
+#include <volpost/render/VolumeRendererTraits.hpp>
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+namespace volpost {
+class VolumeRenderer;
+}
 
 namespace volpost::app {
 
@@ -27,22 +33,22 @@ class VolumeRendererFactory {
       F create, std::vector<std::string> names = {})  // NOLINT: converts
       : create_(std::move(create)), names_(std::move(names)) {}
 
-  std::unique_ptr<VolumeRenderer> operator()(const std::string& name) const {
-    return create_ ? create_(name) : nullptr;
-  }
+  /// A new renderer (GL objects not yet made), or nullptr for a name it does not know.
+  std::unique_ptr<VolumeRenderer> operator()(const std::string& name) const;
+  /// What the renderer of that name says of itself (nullopt: no such renderer).
+  std::optional<VolumeRendererTraits> traitsOf(const std::string& name) const;
   /// The names of the renderers whose traits satisfy `has`, in menu order: "raycast, vicp,
   /// cpu".
-  std::string namesWhere(bool (*has)(const VolumeRendererTraits&)) const {
-    std::string out;
-    for (const std::string& name : names_)
-      if (const auto renderer = (*this)(name); renderer && has(renderer->traits()))
-        out += (out.empty() ? "" : ", ") + name;
-    return out;
-  }
+  std::string namesWhere(bool (*has)(const VolumeRendererTraits&)) const;
 
  private:
   Create create_;
   std::vector<std::string> names_;
 };
+
+/// " (raycast, vicp)" after a message's advice, or nothing where no renderer is listed.
+inline std::string inParentheses(const std::string& names) {
+  return names.empty() ? std::string() : " (" + names + ")";
+}
 
 }  // namespace volpost::app

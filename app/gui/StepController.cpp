@@ -220,8 +220,8 @@ int StepController::exportAnimation(const QString& path, double framesPerSecond)
     // is waited for, so each picture is complete.
     QElapsedTimer waited;
     waited.start();
-    while ((viewport_.scene().hasPendingWork() || viewport_.scene().streamlinesNeedTracing()) && waited.elapsed() < 60000 &&
-           !progress.wasCanceled()) {
+    while ((viewport_.drawing().hasPendingWork() || viewport_.scene().streamlinesNeedTracing()) &&
+           waited.elapsed() < 60000 && !progress.wasCanceled()) {
       QApplication::processEvents(QEventLoop::AllEvents, 50);
       QThread::msleep(10);
     }

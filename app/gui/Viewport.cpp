@@ -22,7 +22,7 @@ namespace volpost::app {
 Viewport::Viewport(VolumeRendererFactory factory, QWidget* parent) : QOpenGLWidget(parent), scene_(std::move(factory)) {
   setMinimumSize(200, 150);
   setFocusPolicy(Qt::StrongFocus);
-  scene_.setInteractive(true);  // transfer-function drags never block the window
+  drawing_.setAsynchronousUpdates(true);  // transfer-function drags never block the window
 }
 
 Viewport::~Viewport() { cleanupGL(); }
@@ -31,7 +31,7 @@ void Viewport::initializeGL() {
   // GL objects die with the context, which can go before the widget (reparenting).
   connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanupGL, Qt::UniqueConnection);
   try {
-    scene_.initialize();
+    drawing_.initialize();
     overlay_.initialize();
     overlayReady_ = true;
     emit glInfo(QString::fromStdString(gl::describeContext()));
@@ -41,9 +41,9 @@ void Viewport::initializeGL() {
 }
 
 void Viewport::cleanupGL() {
-  if (!scene_.initialized() && !overlayReady_) return;
+  if (!drawing_.initialized() && !overlayReady_) return;
   makeCurrent();
-  scene_.release();
+  drawing_.release();
   if (overlayReady_) overlay_.release();
   overlayReady_ = false;
   doneCurrent();
@@ -88,7 +88,7 @@ void Viewport::dragPlaneWidget(const QPointF& at) {
 }
 
 void Viewport::paintGL() {
-  if (!scene_.initialized()) return;
+  if (!drawing_.initialized()) return;
   const qreal dpr = devicePixelRatioF();
   RenderContext ctx;
   ctx.width = int(std::lround(width() * dpr));
@@ -96,14 +96,14 @@ void Viewport::paintGL() {
   ctx.framebuffer = defaultFramebufferObject();
   scene_.setDevicePixelRatio(dpr);
   try {
-    scene_.render(ctx);
+    drawing_.render(scene_, ctx);
   } catch (const std::exception& e) {
     scene_.setVolumeShown(false);  // back to the surface, which draws
     emit renderFailed(e.what());
     return;
   }
   // A table or a full frame still computed on worker threads: draw again when it may be there.
-  const bool pending = scene_.hasPendingWork();
+  const bool pending = drawing_.hasPendingWork();
   if (pending) QTimer::singleShot(30, this, [this] { update(); });
   if (pending != refining_) emit refining(refining_ = pending);
   if (overlayReady_) drawLegend(ctx.width, ctx.height);
@@ -182,7 +182,9 @@ void Viewport::setProbeMode(bool on) {
 
 std::optional<glm::dvec3> Viewport::surfacePointAt(const QPointF& pixel) const {
   if (!scene_.session()) return std::nullopt;
-  return pickScenePoint(scene_, pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()));
+  return pickScenePoint(scene_,
+                        pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()),
+                        drawing_.isoSurfaceCorners());
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

@@ -7,9 +7,9 @@
 // changes the scene calls update().
 #pragma once
 
-#include "../core/Scene.hpp"  // brings in epoxy before any Qt GL header
 #include "../core/BoxWidget.hpp"
 #include "../core/PlaneWidget.hpp"
+#include "../core/SceneDrawing.hpp"  // brings in epoxy before any Qt GL header
 
 #include "host/render/OverlayRenderer.hpp"
 
@@ -32,6 +32,8 @@ class Viewport : public QOpenGLWidget {
 
   Scene& scene() { return scene_; }
   const Scene& scene() const { return scene_; }
+  /// What draws the scene in this widget's context, and what it last drew.
+  const SceneDrawing& drawing() const { return drawing_; }
 
   void fit();
   void setStandardView(StandardView view);
@@ -60,7 +62,7 @@ class Viewport : public QOpenGLWidget {
   /// The model's surface point under a pixel of the widget, if any.
   std::optional<glm::dvec3> surfacePointAt(const QPointF& pixel) const;
 
-  VolumeStats volumeStats() const { return scene_.volumeStats(); }
+  VolumeStats volumeStats() const { return drawing_.volumeStats(); }
   /// The picture shown is a quick one while the full one is computed (as last painted).
   bool isRefining() const { return refining_; }
   /// Frames painted so far: a picture taken after a change waits for one more.
@@ -98,6 +100,7 @@ class Viewport : public QOpenGLWidget {
   void dragPlaneWidget(const QPointF& at);
 
   Scene scene_;
+  SceneDrawing drawing_;
   OverlayRenderer overlay_;
   bool overlayReady_ = false;
   bool refining_ = false;  ///< last said by refining()

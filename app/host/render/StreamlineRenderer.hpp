@@ -5,6 +5,8 @@
 // by clip planes. GL objects: initialize() and release() with the context current.
 #pragma once
 
+#include "host/StreamlineStyle.hpp"
+
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/ColorMap.hpp>
 #include <volpost/render/GlObjects.hpp>
@@ -16,16 +18,6 @@
 #include <vector>
 
 namespace volpost {
-
-struct StreamlineStyle {
-  float width = 2.0f;          ///< lit lines: pixels
-  bool tubes = false;          ///< shaded tubes instead of lines
-  double tubeRadius = 0.0;     ///< model units (tubes and arrows)
-  bool radiusByValue = false;  ///< tube radius from 0.25x to 1x by the colored scalar
-  bool arrows = false;         ///< cones along the lines or tubes, pointing downstream
-  double arrowSpacing = 0.0;   ///< model units between arrows
-  bool operator==(const StreamlineStyle&) const = default;
-};
 
 class StreamlineRenderer {
  public:

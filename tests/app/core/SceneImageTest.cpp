@@ -7,9 +7,10 @@
 
 #include "core/CameraSpec.hpp"
 #include "core/PluginRenderers.hpp"
-#include "core/ScenePick.hpp"
 #include "core/Probe.hpp"
+#include "core/SceneDrawing.hpp"
 #include "core/SceneImage.hpp"
+#include "core/ScenePick.hpp"
 
 #include "support/HeadlessGl.hpp"
 
@@ -159,12 +160,13 @@ TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
   EXPECT_FALSE(pickScenePoint(scene, centre).has_value()) << "a hidden surface is not clicked on";
   const double iso = 0.5 * (scene.view()->range.min + scene.view()->range.max);
   scene.setIsoSurfaces({{iso, {1, 0.8, 0.2}, 1.0}});
-  (void)renderSceneImage(scene, 64, 64);
-  ASSERT_GT(scene.isoSurfaceCorners().size(), 0u);
+  const SceneImage drawn = renderSceneImage(scene, 64, 64);
+  ASSERT_GT(drawn.isoSurfaceCorners.size(), 0u);
   int hits = 0;
   for (int y = 1; y < 64; y += 2)
     for (int x = 1; x < 64; x += 2) {
-      const auto p = pickScenePoint(scene, pixelRay(scene.pictureCamera(64, 64), x, y, 64, 64));
+      const auto p =
+          pickScenePoint(scene, pixelRay(scene.pictureCamera(64, 64), x, y, 64, 64), drawn.isoSurfaceCorners);
       if (!p) continue;
       ++hits;
       const ProbeResult r = probeAt(*scene.session(), *p, 0);

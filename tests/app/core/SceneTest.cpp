@@ -14,6 +14,7 @@
 #include "core/Deformation.hpp"
 #include "core/Legend.hpp"
 #include "core/Probe.hpp"
+#include "core/SceneDrawing.hpp"
 #include "core/SceneImage.hpp"
 #include "core/SceneOverlay.hpp"
 #include "core/VolumeDefaults.hpp"
@@ -68,7 +69,8 @@ class SceneWithContext : public ::testing::Test {
 
 TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   Scene scene(rayCasterOnly());
-  scene.setInteractive(true);
+  SceneDrawing drawing;
+  drawing.setAsynchronousUpdates(true);
   scene.setSession(bar());
   scene.setResult("S.mises", 0);
   scene.setVolumeRenderer("raycast");
@@ -76,16 +78,16 @@ TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   scene.setClipPlanes({{{5.0, 0.5, 0.5}, {1, 0, 0}}});
   OffscreenTarget target(48, 32);
   const RenderContext ctx = contextFor(target);
-  scene.initialize();
-  scene.render(ctx);
-  const VolumeStats first = scene.volumeStats();
+  drawing.initialize();
+  drawing.render(scene, ctx);
+  const VolumeStats first = drawing.volumeStats();
   EXPECT_EQ(first.meshUploads, 1u);
   EXPECT_EQ(first.tableBuilds, 1u);
   for (int i = 1; i <= 10; ++i) {  // ten mouse events of a Ctrl+drag
     scene.setClipPlanes({{{5.0 + 0.2 * i, 0.5, 0.5}, {1, 0, 0}}});
-    scene.render(ctx);
+    drawing.render(scene, ctx);
   }
-  const VolumeStats dragged = scene.volumeStats();
+  const VolumeStats dragged = drawing.volumeStats();
   EXPECT_EQ(dragged.meshUploads, first.meshUploads) << "no mesh upload";
   EXPECT_EQ(dragged.valueUploads, first.valueUploads) << "no value upload";
   EXPECT_EQ(dragged.tableBuilds, first.tableBuilds) << "no table rebuild";
@@ -94,23 +96,23 @@ TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   // (Each picture completed: a frame too slow for the interactive budget is refined over
   // several calls.)
   const auto finished = [&] {
-    do scene.render(ctx);
-    while (scene.hasPendingWork());
-    return scene.readVolumeImage();
+    do drawing.render(scene, ctx);
+    while (drawing.hasPendingWork());
+    return drawing.readVolumeImage();
   };
   scene.setClipBox(ClipBox{1.0, 9.0, -1.0, 2.0, -1.0, 2.0});
   const auto boxed = finished();
-  const VolumeStats withBox = scene.volumeStats();
+  const VolumeStats withBox = drawing.volumeStats();
   scene.setClipPlanes({{{2.0, 0.5, 0.5}, {1, 0, 0}}});
   EXPECT_NE(finished(), boxed) << "the plane moved the cut inside the box";
-  EXPECT_EQ(scene.volumeStats().meshUploads, withBox.meshUploads);
-  EXPECT_EQ(scene.volumeStats().tableBuilds, withBox.tableBuilds);
+  EXPECT_EQ(drawing.volumeStats().meshUploads, withBox.meshUploads);
+  EXPECT_EQ(drawing.volumeStats().tableBuilds, withBox.tableBuilds);
   // Another step or result: only values travel.
   scene.setResult("U.magnitude", 0);
-  scene.render(ctx);
-  EXPECT_EQ(scene.volumeStats().meshUploads, withBox.meshUploads);
-  EXPECT_EQ(scene.volumeStats().valueUploads, withBox.valueUploads + 1);
-  scene.release();
+  drawing.render(scene, ctx);
+  EXPECT_EQ(drawing.volumeStats().meshUploads, withBox.meshUploads);
+  EXPECT_EQ(drawing.volumeStats().valueUploads, withBox.valueUploads + 1);
+  drawing.release();
 }
 
 // A volume picture never draws the boundary surface, so it never extracts it (at 12.6M
@@ -124,19 +126,20 @@ TEST_F(SceneWithContext, AVolumePictureLeavesTheBoundaryUnextracted) {
   scene.setVolumeShown(true);
   OffscreenTarget target(32, 24);
   const RenderContext ctx = contextFor(target);
-  scene.initialize();
-  scene.render(ctx);
+  SceneDrawing drawing;
+  drawing.initialize();
+  drawing.render(scene, ctx);
   EXPECT_FALSE(session->surfaceExtracted());
-  EXPECT_FALSE(scene.readVolumeImage().empty());
+  EXPECT_FALSE(drawing.readVolumeImage().empty());
   scene.setVolumeShown(false);
-  scene.render(ctx);
+  drawing.render(scene, ctx);
   EXPECT_TRUE(session->surfaceExtracted());
   const std::vector<std::uint8_t> pixels = target.readPixels();
   int drawn = 0;  // the surface is drawn over the background (245, 245, 247)
   for (std::size_t i = 0; i < pixels.size(); i += 4)
     drawn += std::abs(int(pixels[i]) - 245) + std::abs(int(pixels[i + 1]) - 245) + std::abs(int(pixels[i + 2]) - 247) > 30;
   EXPECT_GT(drawn, 20);
-  scene.release();
+  drawing.release();
 }
 
 TEST_F(SceneWithContext, AStateFileGivesTheSamePicture) {
@@ -518,11 +521,12 @@ TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigur
   scene.setVolumeShown(true);
   OffscreenTarget target(16, 16);
   const RenderContext ctx = contextFor(target);
-  scene.initialize();
+  SceneDrawing drawing;
+  drawing.initialize();
   const std::size_t budget = memoryBudget();
   setMemoryBudget(64 * 1024);
   try {
-    scene.render(ctx);
+    drawing.render(scene, ctx);
     ADD_FAILURE() << "rendered over the budget";
   } catch (const std::exception& e) {
     const std::string m = e.what();
@@ -530,9 +534,9 @@ TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigur
     EXPECT_NE(m.find("tetrahedra"), std::string::npos) << m;
   }
   setMemoryBudget(budget);
-  scene.render(ctx);
-  EXPECT_FALSE(scene.readVolumeImage().empty());
-  scene.release();
+  drawing.render(scene, ctx);
+  EXPECT_FALSE(drawing.readVolumeImage().empty());
+  drawing.release();
 }
 
 // The CPU renderer on a regular grid: point fields marched on the grid, a per-cell field

@@ -68,7 +68,7 @@ class MainWindowTest : public QObject {
   // frame at once and the full one when its worker threads are done).
   static QImage settled(Viewport* view) {
     QImage image = view->grabFramebuffer();
-    for (int i = 0; i < 3000 && view->scene().hasPendingWork(); ++i) {
+    for (int i = 0; i < 3000 && view->drawing().hasPendingWork(); ++i) {
       QTest::qWait(10);
       image = view->grabFramebuffer();
     }
@@ -162,7 +162,7 @@ class MainWindowTest : public QObject {
     view->setStandardView(StandardView::PlusY);  // a new picture to compute
     QVERIFY(done.wait(60000));
     QVERIFY(!view->isRefining());
-    QVERIFY(!view->scene().hasPendingWork());
+    QVERIFY(!view->drawing().hasPendingWork());
     const QImage shown = view->grabFramebuffer();
     QCOMPARE(summarize(shown), summarize(settled(view)));  // nothing changes after it
     view->setStandardView(StandardView::Isometric);
@@ -613,7 +613,7 @@ class MainWindowTest : public QObject {
     const QImage whole = settled(view);
     window_->findChild<QAction*>("clip:0")->trigger();  // normal +x through the centre
     const QImage cut = settled(view);
-    QVERIFY(view->scene().sectionTriangles() > 0);
+    QVERIFY(view->drawing().sectionTriangles() > 0);
     QVERIFY(cut != whole);
     QTest::mousePress(view, Qt::LeftButton, Qt::ControlModifier, view->rect().center());
     QMouseEvent move(QEvent::MouseMove, QPointF(view->rect().center() + QPoint(0, 30)),
@@ -625,7 +625,7 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("clip:-1")->trigger();
     QVERIFY(view->scene().volume().clipPlanes.empty());
     QCOMPARE(settled(view), whole);
-    QCOMPARE(view->scene().sectionTriangles(), std::size_t(0));
+    QCOMPARE(view->drawing().sectionTriangles(), std::size_t(0));
   }
 
   // The clip plane's widget: its knob turns the plane toward the mouse, its shaft slides it;

@@ -174,7 +174,7 @@ class WindowControlsTest : public QObject {
     QVERIFY2(scene().state().surfaceOpacity < 1.0, "the surface no longer hides them");
     // Drawn by the next frame the view paints (a repaint right away can come before the
     // view is exposed again, and draws nothing).
-    QTRY_VERIFY2((window_->viewport()->update(), scene().isoTriangles() > 0),
+    QTRY_VERIFY2((window_->viewport()->update(), window_->viewport()->drawing().isoTriangles() > 0),
                  "the iso-surface of U.magnitude is drawn");
     QCOMPARE(scene().view()->quantity.key(), std::string("S.mises"));
   }

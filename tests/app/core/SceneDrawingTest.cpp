@@ -1,0 +1,96 @@
+// SPDX-License-Identifier: MIT
+// A drawing holds what it handed its renderers and catches up with the scene's counts:
+// a second drawing of one scene, or a drawing handed another scene, draws everything.
+#include "support/HeadlessGl.hpp"
+#include "support/QtGuiEnvironment.hpp"
+#include "support/ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+
+#include "RayCaster.hpp"
+
+#include "core/SceneDrawing.hpp"
+
+#include <volpost/render/HeadlessContext.hpp>
+#include <volpost/render/OffscreenTarget.hpp>
+
+using namespace volpost;
+using namespace volpost::app;
+
+namespace {
+
+VolumeRendererFactory rayCasterOnly() {
+  return [](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+    if (name == "raycast") return std::make_unique<volume::RayCaster>();
+    return nullptr;
+  };
+}
+
+std::shared_ptr<const ModelSession> bar() {
+  static const auto session =
+      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
+  return session;
+}
+
+void showVolume(Scene& scene, const std::string& colorMap) {
+  scene.setSession(bar());
+  scene.setResult("S.mises", 0);
+  scene.setColorMap(colorMap);
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+}
+
+// The frame's pixels, drawn to completion.
+std::vector<std::uint8_t> draw(SceneDrawing& drawing, const Scene& scene, const OffscreenTarget& target) {
+  RenderContext ctx;
+  ctx.width = target.width();
+  ctx.height = target.height();
+  ctx.framebuffer = target.framebuffer();
+  for (int i = 0; i == 0 || (i < 10000 && drawing.hasPendingWork()); ++i) drawing.render(scene, ctx);
+  return target.readPixels();
+}
+
+}  // namespace
+
+// A second drawing made after the scene changed (a window's second view, an export in
+// the window's process) draws the whole scene, not only what changed since.
+TEST(SceneDrawing, ASecondDrawingOfOneSceneDrawsEverything) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(40, 30);
+  Scene scene(rayCasterOnly());
+  showVolume(scene, "viridis");
+  SceneDrawing first;
+  first.initialize();
+  const auto firstPixels = draw(first, scene, target);
+  scene.setClipPlanes({{{5.0, 0.5, 0.5}, {1, 0, 0}}});
+  const auto firstCut = draw(first, scene, target);
+  EXPECT_NE(firstCut, firstPixels) << "the plane cut the volume";
+  SceneDrawing second;
+  second.initialize();
+  EXPECT_EQ(draw(second, scene, target), firstCut);
+  EXPECT_EQ(second.volumeStats().meshUploads, 1u);
+  EXPECT_EQ(first.volumeStats().meshUploads, 1u) << "the first drawing uploaded the mesh once";
+  second.release();
+  first.release();
+}
+
+// One drawing handed another scene draws that scene, whatever its counts.
+TEST(SceneDrawing, ADrawingHandedAnotherSceneDrawsThatScene) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(40, 30);
+  Scene viridis(rayCasterOnly()), coolWarm(rayCasterOnly());
+  showVolume(viridis, "viridis");
+  showVolume(coolWarm, "cool-warm");
+  SceneDrawing drawing;
+  drawing.initialize();
+  const auto first = draw(drawing, viridis, target);
+  const auto other = draw(drawing, coolWarm, target);
+  EXPECT_NE(other, first);
+  SceneDrawing fresh;
+  fresh.initialize();
+  EXPECT_EQ(draw(fresh, coolWarm, target), other);
+  EXPECT_EQ(draw(drawing, viridis, target), first);
+  fresh.release();
+  drawing.release();
+}
