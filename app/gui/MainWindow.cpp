@@ -7,14 +7,16 @@
 #include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeDefaults.hpp"
 #include "../core/VolumeSpecs.hpp"
+#include "ClipActions.hpp"
 #include "GridSlicesPanel.hpp"
 #include "LinePlotPanel.hpp"
 #include "PluginsDialog.hpp"
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "RendererMenu.hpp"
+#include "SeeThroughSurface.hpp"
 #include "StepController.hpp"
-#include "StreamlineDialog.hpp"
+#include "StreamlineActions.hpp"
 #include "Viewport.hpp"
 #include "WorkWithProgress.hpp"
 
@@ -67,13 +69,6 @@ QString readerFilter(const ReaderRegistry& readers) {
   return QString("All models (%1);;%2;;All files (*)").arg(all.join(' '), each.join(";;"));
 }
 
-// A point as a user reads it: 4 significant digits, and a coordinate below a billionth of
-// `size` (the rounding of a plane through the centre) shown as 0, not 4.737e-15.
-QString roundedPoint(const glm::dvec3& p, double size) {
-  const auto c = [size](double x) { return std::abs(x) < 1e-9 * size ? 0.0 : x; };
-  return QString("(%1, %2, %3)").arg(c(p.x), 0, 'g', 4).arg(c(p.y), 0, 'g', 4).arg(c(p.z), 0, 'g', 4);
-}
-
 }  // namespace
 
 template <typename Change>
@@ -92,17 +87,7 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   setWindowTitle("volpost");
   setAcceptDrops(true);
   viewport_ = new Viewport(volumeRendererFactory(plugins_), this);
-  viewport_->scene().setPlaneWidgetShown(true);
-  viewport_->scene().setBoxWidgetShown(true);
   viewport_->scene().setRakesShown(true);
-  connect(viewport_, &Viewport::clipBoxDragged, this, [this](const ClipBox& box) { applyClipBox(box); });
-  connect(viewport_, &Viewport::clipPlaneDragged, this, [this](const ClipPlane& p) {
-    const double size = session_ ? session_->bounds().diagonal() : 1.0;
-    statusBar()->showMessage("Clip plane through " + roundedPoint(p.point, size) + ", normal " +
-                             roundedPoint(glm::normalize(p.normal), 1.0) +
-                             " (View > Clip Plane > Type Plane to type it)");
-    checkClipAxisOf(p);
-  });
   setCentralWidget(viewport_);
   glLabel_ = new QLabel(this);
   glLabel_->setObjectName("glLabel");
@@ -319,62 +304,23 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
       statusBar()->showMessage("Volume colors from the 1D transfer function");
   });
 
-  QMenu* clip = results->addMenu("&Clip Plane");
-  auto* clipGroup = new QActionGroup(this);
-  // A plane typed or turned to another normal checks none of the axis entries.
-  clipGroup->setExclusionPolicy(QActionGroup::ExclusionPolicy::ExclusiveOptional);
-  const char* axes[] = {"Off", "Normal +X", "Normal +Y", "Normal +Z"};
-  for (int i = 0; i < 4; ++i) {
-    QAction* a = clip->addAction(axes[i]);
-    a->setObjectName(QString("clip:%1").arg(i - 1));
-    a->setCheckable(true);
-    a->setChecked(i == 0);
-    clipGroup->addAction(a);
-    connect(a, &QAction::triggered, this, [this, i] {
-      setClipAxis(i - 1);
-      if (i > 0) statusBar()->showMessage("Drag the handle's knob to turn the clip plane, its shaft (or Ctrl+drag) to move it");
-    });
-  }
-  clip->addAction("&Type Plane...", this, &MainWindow::typeClipPlane)->setObjectName("typeClipPlane");
-  QAction* handle = clip->addAction("Show Plane and Box &Handles");
-  handle->setObjectName("planeHandle");
-  handle->setCheckable(true);
-  handle->setChecked(true);
-  connect(handle, &QAction::toggled, this, [this](bool on) {
-    viewport_->scene().setPlaneWidgetShown(on);
-    viewport_->scene().setBoxWidgetShown(on);
-    viewport_->update();
-  });
-  clip->addSeparator();
-  clip->addAction("Clip &Box...", this, &MainWindow::chooseClipBox);
+  clips_ = new ClipActions(
+      *this, viewport_->scene(), *results, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
+      [this] { viewport_->update(); },
+      [this] {
+        viewport_->repaint();
+        return viewport_->uploadedTetCount();
+      });
+  connect(viewport_, &Viewport::clipBoxDragged, clips_, &ClipActions::applyBox);
+  connect(viewport_, &Viewport::clipPlaneDragged, clips_, &ClipActions::planeDragged);
   results->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces)->setObjectName("isoSurfacesAction");
   results->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
       ->setObjectName("gridSlicesAction");
-  QMenu* lines = results->addMenu("&Streamlines");
-  lines->addAction("&Streamlines...", this, &MainWindow::chooseStreamlines);
-  QAction* rake = lines->addAction("Place a &Rake", QKeySequence(Qt::Key_R), this, [this] {
-    if (!session_) return;
-    viewport_->setRakeMode(true);
-    statusBar()->showMessage(
-        "Drag across the model to place a rake of 20 seeds (each end halfway through the model "
-        "under it); Esc cancels. View > Streamlines > Streamlines... edits it");
-  });
-  rake->setObjectName("placeRake");
-  streamlinesAction_ = lines->addAction("Show Streamlines");
-  streamlinesAction_->setObjectName("streamlinesAction");
-  streamlinesAction_->setCheckable(true);
-  connect(streamlinesAction_, &QAction::toggled, this, [this](bool on) {
-    StreamlineLayer layer = viewport_->scene().streamlines();
-    if (on && (layer.field.empty() || layer.seeds.empty())) {
-      const QSignalBlocker block(streamlinesAction_);
-      streamlinesAction_->setChecked(false);
-      chooseStreamlines();
-      return;
-    }
-    layer.shown = on;
-    if (changeScene([&](Scene& s) { s.setStreamlines(layer); }) && on) traceStreamlines();
-  });
-  connect(viewport_, &Viewport::rakePlaced, this, &MainWindow::placeRake);
+  streamlines_ = new StreamlineActions(
+      *this, viewport_->scene(), *results, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
+      [this] { viewport_->setRakeMode(true); }, [this] { viewport_->update(); });
+  connect(streamlines_, &StreamlineActions::traced, this, &MainWindow::streamlinesTraced);
+  connect(viewport_, &Viewport::rakePlaced, streamlines_, &StreamlineActions::placeRake);
 }
 
 // View > Deformed Shape (D): the displacement (U, else the first nodal vector) times an
@@ -439,7 +385,7 @@ void MainWindow::showDeformation(bool on, std::optional<double> scale) {
                                  .arg(QString::fromStdString(d.field))
                                  .arg(viewport_->scene().deformationScale(), 0, 'g', 4)
                                  .arg(scale ? "" : " (automatic: largest displacement = 10 % of the model)"));
-  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();
+  if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();
   notifyPanels();
 }
 
@@ -466,191 +412,6 @@ std::optional<std::string> MainWindow::chooseDisplacementField() {
                                                vectors, 0, false, &ok);
   if (!ok) return std::nullopt;
   return chosen.toStdString();
-}
-
-void MainWindow::chooseStreamlines() {
-  if (!session_) {
-    statusBar()->showMessage("Open a model first");
-    return;
-  }
-  Scene& scene = viewport_->scene();
-  StreamlineDialog dialog(*session_, scene.streamlines(), this);
-  bool hasVectors = false;
-  for (const auto& f : session_->model().fields) hasVectors = hasVectors || f->components() == 3;
-  if (!hasVectors) {
-    QMessageBox::information(this, "Streamlines", "This model has no vector field to follow.");
-    return;
-  }
-  for (;;) {
-    if (dialog.exec() != QDialog::Accepted) return;
-    const StreamlineLayer layer = dialog.layer();
-    if (changeScene([&](Scene& s) {
-          s.setStreamlines(layer);
-          seeThroughSurface(s, "the streamlines inside");
-        })) {
-      const QSignalBlocker block(streamlinesAction_);
-      streamlinesAction_->setChecked(true);
-      traceStreamlines();
-      return;
-    }
-    QMessageBox::warning(this, "Streamlines", statusBar()->currentMessage());
-  }
-}
-
-// A rake drawn with the mouse becomes the seeds (up to 20 points along it, each inside the
-// model under the line) of the streamlines of the layer's field, or of the model's first
-// vector field.
-void MainWindow::placeRake(std::vector<glm::dvec3> seeds) {
-  if (!session_) return;
-  StreamlineLayer layer = viewport_->scene().streamlines();
-  if (layer.field.empty())
-    for (const auto& f : session_->model().fields)
-      if (f->components() == 3 && f->location() == FieldLocation::Node) {
-        layer.field = f->name();
-        break;
-      }
-  if (layer.field.empty()) {
-    statusBar()->showMessage("This model has no nodal vector field to follow");
-    return;
-  }
-  layer.shown = true;
-  layer.seeds.clear();
-  for (const glm::dvec3& p : seeds) layer.seeds.push_back(pointSeedSpec(p));
-  if (!changeScene([&](Scene& s) {
-        s.setStreamlines(layer);
-        seeThroughSurface(s, "the streamlines inside");
-      }))
-    return;
-  const QSignalBlocker block(streamlinesAction_);
-  streamlinesAction_->setChecked(true);
-  traceStreamlines();
-}
-
-void MainWindow::traceStreamlines() {
-  Scene& scene = viewport_->scene();
-  if (!scene.streamlinesNeedTracing()) {
-    viewport_->update();
-    emit streamlinesTraced(true, {});
-    return;
-  }
-  if (tracing_) return;  // the running trace's end traces again if the layer changed meanwhile
-  tracing_ = true;
-  const auto session = session_;
-  const StreamlineLayer layer = scene.streamlines();
-  const std::size_t step = scene.state().step;
-  runWithProgress<std::shared_ptr<const StreamlineResult>>(
-      *this, "Tracing streamlines", 500,
-      [session, layer, step](const Progress& progress) {
-        return traceStreamlineLayer(*session, layer, step, progress);
-      },
-      [this](WorkOutcome<std::shared_ptr<const StreamlineResult>> t) {
-        tracing_ = false;
-        Scene& current = viewport_->scene();
-        if (!t.value) {
-          const QString error = t.cancelled ? QString("cancelled") : t.error;
-          statusBar()->showMessage("Streamlines: " + error);
-          emit streamlinesTraced(false, error);
-          return;
-        }
-        const auto& result = *t.value;
-        current.setStreamlineResult(result);
-        if (current.streamlinesNeedTracing()) {  // changed while tracing: trace the latest
-          traceStreamlines();
-          return;
-        }
-        viewport_->update();
-        std::size_t points = 0, spent = 0;
-        for (const auto& l : result->lines) {
-          points += l.points.size();
-          spent += l.forwardStop == StreamlineStop::PointBudget || l.backwardStop == StreamlineStop::PointBudget;
-        }
-        statusBar()->showMessage(
-            QString("%1 streamlines, %2 points, traced in %3 ms%4%5")
-                .arg(result->lines.size())
-                .arg(points)
-                .arg(result->milliseconds, 0, 'f', 0)
-                .arg(result->outside ? QString(" (%1 seeds outside the mesh)").arg(result->outside) : QString())
-                .arg(spent ? QString("; %1 %2").arg(spent).arg(describe(StreamlineStop::PointBudget)) : QString()));
-        emit streamlinesTraced(true, {});
-      });
-}
-
-void MainWindow::setClipAxis(int axis) {
-  if (axis < 0 || !session_) {
-    changeScene([](Scene& s) { s.setClipPlanes({}); });
-    return;
-  }
-  glm::dvec3 n(0.0);
-  n[axis] = 1.0;
-  const ClipPlane plane{session_->model().bounds().center(), n};
-  changeScene([&](Scene& s) { s.setClipPlanes({plane}); });
-}
-
-// The Clip Plane menu shows the plane as it is: the axis entry whose normal it has (+X, +Y,
-// +Z), or none for a typed or turned plane (a -Y plane left "Normal +Y" checked).
-void MainWindow::checkClipAxisOf(const ClipPlane& plane) {
-  const glm::dvec3 n = glm::normalize(plane.normal);
-  int axis = -2;  // none
-  for (int a = 0; a < 3; ++a)
-    if (n[a] > 1.0 - 1e-12) axis = a;
-  for (int i = -1; i < 3; ++i)
-    if (QAction* action = findChild<QAction*>(QString("clip:%1").arg(i)))
-      action->setChecked(i == axis);  // signals on, for the group (the entries act on `triggered`)
-}
-
-void MainWindow::typeClipPlane() {
-  if (!session_) return;
-  const auto& planes = viewport_->scene().volume().clipPlanes;
-  const ClipPlane current = planes.empty() ? ClipPlane{session_->bounds().center(), {1.0, 0.0, 0.0}} : planes.front();
-  QString text = clipPlaneText(current);
-  for (;;) {
-    bool ok = false;
-    text = QInputDialog::getText(this, "Clip plane", "Point on the plane and normal toward the kept side, px,py,pz,nx,ny,nz:",
-                                 QLineEdit::Normal, text, &ok);
-    if (!ok) return;
-    if (const auto plane = parseClipPlane(text)) {
-      std::vector<ClipPlane> next = planes;
-      if (next.empty()) next.push_back(*plane);
-      else next.front() = *plane;
-      if (changeScene([&](Scene& s) { s.setClipPlanes(next); })) checkClipAxisOf(*plane);
-      return;
-    }
-    QMessageBox::warning(this, "Clip plane", QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(text));
-  }
-}
-
-void MainWindow::applyClipBox(const ClipBox& box) {
-  if (!session_ || !changeScene([&](Scene& s) { s.setClipBox(box); })) return;
-  viewport_->repaint();  // uploads now, so the message below is about this box
-  QString message = "Clip box " + clipBoxText(box) + " (drag a face's knob to move it)";
-  if (viewport_->scene().volumeShown())
-    message += QString("; the GPU holds %1 of the %2 tets")
-                   .arg(viewport_->uploadedTetCount())
-                   .arg(session_->tetrahedra().mesh.cellCount());
-  statusBar()->showMessage(message);
-}
-
-void MainWindow::chooseClipBox() {
-  if (!session_) return;
-  const Bounds b = session_->model().bounds();
-  const auto current = viewport_->scene().volume().clipBox;
-  QString text = current ? clipBoxText(*current)
-                         : clipBoxText({b.min.x, b.max.x, b.min.y, b.max.y, b.min.z, b.max.z});
-  for (;;) {
-    bool ok = false;
-    text = QInputDialog::getText(this, "Clip box", "Keep inside xmin,xmax,ymin,ymax,zmin,zmax (empty: no box):",
-                                 QLineEdit::Normal, text, &ok);
-    if (!ok) return;
-    if (text.trimmed().isEmpty()) {
-      changeScene([](Scene& s) { s.setClipBox(std::nullopt); });
-      return;
-    }
-    if (const auto box = parseClipBox(text)) {
-      applyClipBox(*box);
-      return;
-    }
-    QMessageBox::warning(this, "Clip box", QString("'%1' is not six numbers xmin,xmax,ymin,ymax,zmin,zmax with min < max").arg(text));
-  }
 }
 
 void MainWindow::showGridSlices() {
@@ -732,22 +493,11 @@ void MainWindow::chooseIsoSurfaces() {
     if (!changeScene([&](Scene& s) {
           s.setIsoQuantity(key);
           s.setIsoSurfaces(*surfaces);
-          if (!surfaces->empty() && !s.volumeShown()) seeThroughSurface(s, "the iso-surfaces inside");
+          if (!surfaces->empty() && !s.volumeShown()) seeThroughSurface(*this, s, "the iso-surfaces inside");
         }))
       continue;
     return;
   }
-}
-
-// Makes the surface see-through (30 %) when it is opaque, saying why: what is inside it
-// (iso-surfaces, streamlines) would not show.
-void MainWindow::seeThroughSurface(Scene& scene, const QString& what) {
-  if (scene.state().surfaceOpacity < 1.0) return;
-  scene.setSurfaceOpacity(0.3);
-  QTimer::singleShot(0, this, [this, what] {
-    statusBar()->showMessage(
-        QString("The surface is see-through so that %1 show (View > Surface Opacity...)").arg(what), 10000);
-  });
 }
 
 void MainWindow::chooseSurfaceOpacity() {
@@ -1011,11 +761,13 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   }
   // What the scene dropped with the old model, the controls drop too (the deformed shape
   // stayed checked; the plot kept the old model's curves).
-  for (QAction* action : {volumeAction_, streamlinesAction_, deformAction_, undeformedAction_}) {
+  for (QAction* action : {volumeAction_, deformAction_, undeformedAction_}) {
     if (!action) continue;
     const QSignalBlocker block(action);
     action->setChecked(false);
   }
+  streamlines_->syncToScene();
+  clips_->syncToScene();
   if (linePlot_) linePlot_->modelChanged();
   if (session_) rendererMenu_->fitToModel(session_->model().grid.has_value());
   if (auto* shading = findChild<QAction*>("shadingAction")) {
@@ -1111,7 +863,7 @@ void MainWindow::refreshScalars() {
                                  .arg(QString::fromStdString(view->quantity.displayName()))
                                  .arg(view->range.nanCount));
   }
-  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();  // another step: the lines follow
+  if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();  // another step: the lines follow
   if (!viewport_->scene().view() && volumeAction_ && volumeAction_->isChecked()) {
     const QSignalBlocker block(volumeAction_);
     volumeAction_->setChecked(false);
@@ -1333,7 +1085,7 @@ void MainWindow::applyState(const SceneState& state) {
   viewport_->update();
   notifyPanels();
   statusBar()->showMessage("View restored from the state file");
-  if (viewport_->scene().streamlinesNeedTracing()) traceStreamlines();
+  if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();
   emit stateApplied(true, {});
 }
 
@@ -1360,11 +1112,10 @@ void MainWindow::syncControlsToScene() {
   check(undeformedAction_, state.deformation.undeformedOutline);
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
-  check(streamlinesAction_, state.streamlines.shown);
+  streamlines_->syncToScene();
   check(findChild<QAction*>("shadingAction"), state.volume.shading);
   rendererMenu_->syncToScene();
-  if (state.volume.clipPlanes.empty())
-    if (QAction* off = findChild<QAction*>("clip:-1")) off->setChecked(true);
+  clips_->syncToScene();
   probes_->syncToScene();
   steps_->syncToScene();
 }

@@ -28,11 +28,13 @@ class VolumeRenderer;
 
 namespace volpost::app {
 
+class ClipActions;
 class ProbeController;
 class RendererMenu;
 class Scene;
 class LinePlotPanel;
 class StepController;
+class StreamlineActions;
 class Viewport;
 
 class MainWindow : public QMainWindow, public PanelHost {
@@ -107,7 +109,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   void showGridSlices();
   /// The dialog of File > Reader Options...: a field per option of the last file's reader.
   void editReaderOptions();
-  void setClipAxis(int axis);
   /// Runs a change of the scene, then redraws; an error goes to the status bar.
   template <typename Change>
   bool changeScene(Change&& change);
@@ -117,25 +118,11 @@ class MainWindow : public QMainWindow, public PanelHost {
   /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
   /// renderer for a seismic cube, a mesh renderer for a mesh).
   void setVolumeShown(bool on);
-  void chooseClipBox();
-  void typeClipPlane();
-  void checkClipAxisOf(const ClipPlane& plane);
-  void applyClipBox(const ClipBox& box);
   void chooseIsoSurfaces();
-  void seeThroughSurface(Scene& scene, const QString& what);
   void chooseSurfaceOpacity();
   std::optional<std::string> chooseDisplacementField();
-  void chooseStreamlines();
   void buildDeformationActions(QMenu* view);
   void showDeformation(bool on, std::optional<double> scale);
-  void placeRake(std::vector<glm::dvec3> seeds);
-
- public:
-  /// Traces the scene's streamlines on a worker thread (a cancellable progress dialog) if
-  /// they need it, then shows them; emits streamlinesTraced.
-  void traceStreamlines();
-
- private:
 
   PluginManager& plugins_;
   std::shared_ptr<ModelSession> session_;
@@ -153,7 +140,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* triadAction_ = nullptr;
   QAction* deformAction_ = nullptr;
   QAction* undeformedAction_ = nullptr;
-  QAction* streamlinesAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
@@ -161,8 +147,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   QMenu* volumeMenu_ = nullptr;
   ProbeController* probes_ = nullptr;
   RendererMenu* rendererMenu_ = nullptr;
+  StreamlineActions* streamlines_ = nullptr;
+  ClipActions* clips_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
-  bool tracing_ = false;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded

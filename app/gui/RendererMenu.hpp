@@ -5,6 +5,8 @@
 // renderer says of itself (VolumeRendererTraits); the scene is the record of the choice.
 #pragma once
 
+#include "ChangeScene.hpp"
+
 #include "../core/PluginRenderers.hpp"
 
 #include <QObject>
@@ -25,9 +27,6 @@ class RendererMenu : public QObject {
   Q_OBJECT
 
  public:
-  /// Applies a change to the scene; false (the window said why) when the scene refused it.
-  using ChangeScene = std::function<bool(const std::function<void(Scene&)>&)>;
-
   /// Adds the two menus to `view`; the first renderer is the scene's until another is
   /// chosen. `shown`: the scene's renderer changed (the window repaints a shown volume).
   RendererMenu(QMainWindow& window, Scene& scene, std::vector<RendererEntry> renderers, QMenu& view,
