@@ -8,6 +8,7 @@
 #include "../core/VolumeDefaults.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "ClipActions.hpp"
+#include "DeformationActions.hpp"
 #include "GridSlicesPanel.hpp"
 #include "LinePlotPanel.hpp"
 #include "PluginsDialog.hpp"
@@ -224,7 +225,12 @@ void MainWindow::buildActions() {
   // volume each have a menu: one View menu held all 34 entries.
   QMenu* results = menuBar()->addMenu("&Results");
   resultsMenu_ = results;
-  buildDeformationActions(results);
+  deformation_ = new DeformationActions(
+      *this, viewport_->scene(), *results, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
+      [this] {
+        if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();  // the lines follow the shape
+        notifyPanels();
+      });
   results->addSeparator();
   // Probing follows what is drawn: the deformed model while a deformation is shown.
   probes_ = new ProbeController(*this, *viewport_, *results, [this] { return viewport_->scene().sharedSession(); });
@@ -321,97 +327,6 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
       [this] { viewport_->setRakeMode(true); }, [this] { viewport_->update(); });
   connect(streamlines_, &StreamlineActions::traced, this, &MainWindow::streamlinesTraced);
   connect(viewport_, &Viewport::rakePlaced, streamlines_, &StreamlineActions::placeRake);
-}
-
-// View > Deformed Shape (D): the displacement (U, else the first nodal vector) times an
-// automatic or typed scale.
-void MainWindow::buildDeformationActions(QMenu* view) {
-  deformAction_ = view->addAction("&Deformed Shape");
-  deformAction_->setObjectName("deformAction");
-  deformAction_->setCheckable(true);
-  deformAction_->setShortcut(QKeySequence(Qt::Key_D));
-  connect(deformAction_, &QAction::toggled, this, [this](bool on) { showDeformation(on, viewport_->scene().deformation().scale); });
-  undeformedAction_ = view->addAction("&Undeformed Outline");
-  undeformedAction_->setObjectName("undeformedAction");
-  undeformedAction_->setCheckable(true);
-  undeformedAction_->setToolTip("With the deformed shape: the undeformed model's element edges in gray");
-  connect(undeformedAction_, &QAction::toggled, this, [this](bool on) {
-    DeformationLayer d = viewport_->scene().deformation();
-    d.undeformedOutline = on;
-    changeScene([&](Scene& s) { s.setDeformation(d); });
-  });
-  view->addAction("Deformation &Scale...", this, [this] {
-    bool ok = false;
-    const auto current = viewport_->scene().deformation().scale;
-    const QString text = QInputDialog::getText(this, "Deformation scale",
-                                               "Displacement x this factor (empty: automatic, the largest displacement "
-                                               "10 % of the model's size):",
-                                               QLineEdit::Normal, current ? QString::number(*current, 'g', 10) : QString(), &ok);
-    if (!ok) return;
-    std::optional<double> scale;
-    if (!text.trimmed().isEmpty()) {
-      bool number = false;
-      scale = text.trimmed().toDouble(&number);
-      if (!number || !std::isfinite(*scale)) {
-        statusBar()->showMessage(QString("'%1' is not a scale factor").arg(text));
-        return;
-      }
-    }
-    showDeformation(true, scale);
-  });
-}
-
-void MainWindow::showDeformation(bool on, std::optional<double> scale) {
-  if (!session_) return;
-  DeformationLayer d = viewport_->scene().deformation();
-  if (on && !session_->model().findField(d.field)) {
-    const auto field = chooseDisplacementField();
-    if (!field) {
-      const QSignalBlocker block(deformAction_);
-      deformAction_->setChecked(false);
-      return;
-    }
-    d.field = *field;
-  }
-  d.shown = on;
-  d.scale = scale;
-  const bool ok = changeScene([&](Scene& s) { s.setDeformation(d); });
-  {
-    const QSignalBlocker block(deformAction_);
-    deformAction_->setChecked(viewport_->scene().deformation().shown);
-  }
-  if (ok && on)
-    statusBar()->showMessage(QString("Deformed: %1 x %2%3; probing uses the deformed coordinates")
-                                 .arg(QString::fromStdString(d.field))
-                                 .arg(viewport_->scene().deformationScale(), 0, 'g', 4)
-                                 .arg(scale ? "" : " (automatic: largest displacement = 10 % of the model)"));
-  if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();
-  notifyPanels();
-}
-
-// The field to deform by: one named as a displacement (U, DISP, displacement ...) when the
-// model has it; otherwise the user picks among the nodal vectors (a velocity is no
-// displacement, and was taken without asking). nullopt: none, or cancelled (said why).
-std::optional<std::string> MainWindow::chooseDisplacementField() {
-  QStringList vectors;
-  for (const auto& f : session_->model().fields)
-    if (f->location() == FieldLocation::Node && f->components() == 3) {
-      const QString name = QString::fromStdString(f->name());
-      const QString lower = name.toLower();
-      if (lower == "u" || lower == "disp" || lower.startsWith("displacement")) return f->name();
-      vectors << name;
-    }
-  if (vectors.isEmpty()) {
-    statusBar()->showMessage("This model has no nodal vector field to deform it by");
-    return std::nullopt;
-  }
-  bool ok = false;
-  const QString chosen = QInputDialog::getItem(this, "Deformed shape",
-                                               "No field is named as a displacement (U, DISP, displacement).\n"
-                                               "Deform the model by:",
-                                               vectors, 0, false, &ok);
-  if (!ok) return std::nullopt;
-  return chosen.toStdString();
 }
 
 void MainWindow::showGridSlices() {
@@ -761,11 +676,11 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   }
   // What the scene dropped with the old model, the controls drop too (the deformed shape
   // stayed checked; the plot kept the old model's curves).
-  for (QAction* action : {volumeAction_, deformAction_, undeformedAction_}) {
-    if (!action) continue;
-    const QSignalBlocker block(action);
-    action->setChecked(false);
+  {
+    const QSignalBlocker block(volumeAction_);
+    volumeAction_->setChecked(false);
   }
+  deformation_->syncToScene();
   streamlines_->syncToScene();
   clips_->syncToScene();
   if (linePlot_) linePlot_->modelChanged();
@@ -1108,8 +1023,7 @@ void MainWindow::syncControlsToScene() {
   check(edgesAction_, state.edges);
   check(legendAction_, state.legend);
   check(triadAction_, state.triad);
-  check(deformAction_, state.deformation.shown);
-  check(undeformedAction_, state.deformation.undeformedOutline);
+  deformation_->syncToScene();
   check(orthoAction_, state.camera && state.camera->orthographic);
   check(volumeAction_, state.volume.shown);
   streamlines_->syncToScene();

@@ -29,6 +29,7 @@ class VolumeRenderer;
 namespace volpost::app {
 
 class ClipActions;
+class DeformationActions;
 class ProbeController;
 class RendererMenu;
 class Scene;
@@ -120,9 +121,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   void setVolumeShown(bool on);
   void chooseIsoSurfaces();
   void chooseSurfaceOpacity();
-  std::optional<std::string> chooseDisplacementField();
-  void buildDeformationActions(QMenu* view);
-  void showDeformation(bool on, std::optional<double> scale);
 
   PluginManager& plugins_;
   std::shared_ptr<ModelSession> session_;
@@ -138,8 +136,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
   QAction* triadAction_ = nullptr;
-  QAction* deformAction_ = nullptr;
-  QAction* undeformedAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;
   QMenu* viewMenu_ = nullptr;
@@ -149,6 +145,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   RendererMenu* rendererMenu_ = nullptr;
   StreamlineActions* streamlines_ = nullptr;
   ClipActions* clips_ = nullptr;
+  DeformationActions* deformation_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key

@@ -4,9 +4,7 @@
 // is: its axis, none for a turned plane, Off without one (after a state or a new model too).
 #include "gui/ClipActions.hpp"
 
-#include "core/Scene.hpp"
-
-#include "AllReaders.hpp"
+#include "support/WindowParts.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -16,7 +14,6 @@
 #include <QStatusBar>
 #include <QTest>
 
-#include <filesystem>
 #include <memory>
 
 using namespace volpost;
@@ -39,10 +36,7 @@ class ClipActionsTest : public QObject {
       if (entry(i)->isChecked()) out << i;
     return out;
   }
-  void open() {
-    scene_->setSession(ModelSession::load(meshio::allReadersRegistry(),
-                                          (std::filesystem::path(VOLPOST_TEST_DATA) / "bar/bar_tet4.vtu").string()));
-  }
+  void open() { scene_->setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu")); }
 
  private slots:
   void init() {
@@ -51,18 +45,8 @@ class ClipActionsTest : public QObject {
     QMenu* results = window_->menuBar()->addMenu("Results");
     redraws_ = 0;
     clips_ = new ClipActions(
-        *window_, *scene_, *results,
-        [this](const std::function<void(Scene&)>& change) {
-          try {
-            change(*scene_);
-          } catch (const std::exception& e) {
-            window_->statusBar()->showMessage(e.what());
-            return false;
-          }
-          ++redraws_;
-          return true;
-        },
-        [this] { ++redraws_; }, [] { return std::size_t(0); });
+        *window_, *scene_, *results, volpost::test::changingScene(*window_, *scene_), [this] { ++redraws_; },
+        [] { return std::size_t(0); });
     open();
   }
 

@@ -4,9 +4,7 @@
 // (deformed too) and handed to the scene once, and the menu shows what the scene shows.
 #include "gui/StreamlineActions.hpp"
 
-#include "core/Scene.hpp"
-
-#include "AllReaders.hpp"
+#include "support/WindowParts.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -17,20 +15,10 @@
 #include <QStatusBar>
 #include <QTest>
 
-#include <filesystem>
 #include <memory>
 
 using namespace volpost;
 using namespace volpost::app;
-
-namespace {
-
-std::shared_ptr<const ModelSession> load(const std::string& relative) {
-  return ModelSession::load(meshio::allReadersRegistry(),
-                            (std::filesystem::path(VOLPOST_TEST_DATA) / relative).string());
-}
-
-}  // namespace
 
 class StreamlineActionsTest : public QObject {
   Q_OBJECT
@@ -62,18 +50,9 @@ class StreamlineActionsTest : public QObject {
     QMenu* results = window_->menuBar()->addMenu("Results");
     rakes_ = redraws_ = 0;
     actions_ = new StreamlineActions(
-        *window_, *scene_, *results,
-        [this](const std::function<void(Scene&)>& change) {
-          try {
-            change(*scene_);
-          } catch (const std::exception& e) {
-            window_->statusBar()->showMessage(e.what());
-            return false;
-          }
-          return true;
-        },
-        [this] { ++rakes_; }, [this] { ++redraws_; });
-    scene_->setSession(load("bar/bar_tet4.vtu"));
+        *window_, *scene_, *results, volpost::test::changingScene(*window_, *scene_), [this] { ++rakes_; },
+        [this] { ++redraws_; });
+    scene_->setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));
   }
 
   void cleanup() {
@@ -123,13 +102,13 @@ class StreamlineActionsTest : public QObject {
     shown()->setChecked(true);
     QVERIFY(scene_->streamlines().shown);
     QVERIFY2(scene_->streamlinesDrawn(), "the same lines: nothing to trace again");
-    scene_->setSession(load("bar/bar_tet4.vtu"));  // another model drops the lines
+    scene_->setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));  // another model drops the lines
     actions_->syncToScene();
     QVERIFY(!shown()->isChecked());
   }
 
   void aModelWithoutNodalVectorsSaysSoAndChangesNothing() {
-    scene_->setSession(load("formats/image_points_ascii.vtk"));
+    scene_->setSession(volpost::test::loadTestModel("formats/image_points_ascii.vtk"));
     actions_->placeRake(rake());
     QVERIFY(!scene_->streamlines().shown);
     QVERIFY(!shown()->isChecked());
