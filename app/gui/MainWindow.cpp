@@ -11,6 +11,7 @@
 #include "DeformationActions.hpp"
 #include "GridSlicesPanel.hpp"
 #include "LinePlotPanel.hpp"
+#include "ModelLoader.hpp"
 #include "PluginsDialog.hpp"
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
@@ -105,6 +106,7 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   connect(viewport_, &Viewport::renderFailed, this, [this](const QString& m) {
     statusBar()->showMessage("Rendering error: " + m);
   });
+  loader_ = new ModelLoader(*this, plugins_.readers());
   buildActions();
   buildToolbar();
   buildPanels();
@@ -160,7 +162,9 @@ void MainWindow::buildActions() {
   QMenu* recent = file->addMenu("Open &Recent");
   recent->setObjectName("recentMenu");
   new RecentFiles(*recent, [this](const QString& path) { openFile(path); }, this);
-  QAction* readerOptions = file->addAction("Reader &Options...", this, &MainWindow::editReaderOptions);
+  QAction* readerOptions = file->addAction("Reader &Options...", this, [this] {
+    if (const auto options = loader_->askReaderOptions()) reopenWithReaderOptions(*options);
+  });
   readerOptions->setObjectName("readerOptionsAction");
   readerOptions->setToolTip("Settings of the file's reader (for example where a SEG-Y file keeps its inline "
                             "numbers, or which offset of a pre-stack file to load), then the file read again");
@@ -566,100 +570,31 @@ void MainWindow::chooseFile() {
 }
 
 void MainWindow::openFile(const QString& path, const ReaderOptions& options) {
-  if (loading_) {
-    statusBar()->showMessage("Still loading the previous file");
-    return;
-  }
-  loading_ = true;
-  lastPath_ = path;
-  lastReaderOptions_ = options;
-  statusBar()->showMessage("Reading " + path);
-  const ReaderRegistry& readers = plugins_.readers();
-  runWithProgress<std::shared_ptr<ModelSession>>(
-      *this, "Reading " + QFileInfo(path).fileName(), 300,
-      [&readers, path, options](const Progress& progress) {
-        return ModelSession::load(readers, path.toStdString(), progress, ModelSession::Boundary::Now, options);
-      },
-      [this, path](WorkOutcome<std::shared_ptr<ModelSession>> r) {
-        loading_ = false;
-        if (r.value) {
-          installSession(*r.value);
-          emit loadFinished(true, {});
-          if (pendingState_) {
-            const SceneState state = *pendingState_;
-            pendingState_.reset();
-            applyState(state);
-          }
-        } else if (r.cancelled) {
-          pendingState_.reset();
-          statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
-          emit loadFinished(false, "cancelled");
-        } else {
-          statusBar()->showMessage("Could not open " + path);
-          emit loadFinished(false, r.error);
-          if (pendingState_) {
-            pendingState_.reset();
-            emit stateApplied(false, r.error);
-          }
-          QMessageBox::critical(this, "Cannot open model", r.error);
-        }
-      });
+  loader_->open(path, options, [this, path](const ModelRead& read) {
+    const std::optional<SceneState> state = std::exchange(pendingState_, std::nullopt);
+    if (read.session) {
+      installSession(read.session);
+      emit loadFinished(true, {});
+      if (state) applyState(*state);
+    } else if (read.cancelled) {
+      statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
+      emit loadFinished(false, "cancelled");
+    } else {
+      statusBar()->showMessage("Could not open " + path);
+      emit loadFinished(false, read.error);
+      if (state) emit stateApplied(false, read.error);
+      QMessageBox::critical(this, "Cannot open model", read.error);
+    }
+  });
 }
 
 bool MainWindow::reopenWithReaderOptions(const ReaderOptions& options) {
-  if (lastPath_.isEmpty()) {
+  if (loader_->lastPath().isEmpty()) {
     statusBar()->showMessage("Open a model first: reader options apply to a file");
     return false;
   }
-  openFile(lastPath_, options);
+  openFile(loader_->lastPath(), options);
   return true;
-}
-
-void MainWindow::editReaderOptions() {
-  if (lastPath_.isEmpty()) {
-    statusBar()->showMessage("Open a model first: reader options apply to a file");
-    return;
-  }
-  const MeshReader* reader = nullptr;
-  try {
-    reader = &plugins_.readers().choose(lastPath_.toStdString());
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, "Reader options", e.what());
-    return;
-  }
-  const std::vector<ReaderOption> options = reader->options();
-  const QString fileName = QFileInfo(lastPath_).fileName();
-  if (options.empty()) {
-    statusBar()->showMessage(QString("The %1 reader of %2 has no options")
-                                 .arg(QString::fromStdString(reader->formatName()), fileName));
-    return;
-  }
-  QDialog dialog(this);
-  dialog.setWindowTitle("Reader options: " + fileName);
-  auto* form = new QFormLayout(&dialog);
-  form->addRow(new QLabel(QString("%1, read by the %2 reader. Empty fields keep the defaults.")
-                              .arg(fileName, QString::fromStdString(reader->formatName()))));
-  std::vector<std::pair<std::string, QLineEdit*>> fields;
-  for (const ReaderOption& o : options) {
-    auto* edit = new QLineEdit(&dialog);
-    edit->setObjectName(QString::fromStdString("readerOption_" + o.name));
-    edit->setToolTip(QString::fromStdString(o.description));
-    edit->setPlaceholderText(QString::fromStdString(o.valueName));
-    if (const auto it = lastReaderOptions_.find(o.name); it != lastReaderOptions_.end())
-      edit->setText(QString::fromStdString(it->second));
-    form->addRow(QString::fromStdString(o.name), edit);
-    fields.emplace_back(o.name, edit);
-  }
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-  buttons->button(QDialogButtonBox::Ok)->setText("Read Again");
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  form->addRow(buttons);
-  if (dialog.exec() != QDialog::Accepted) return;
-  ReaderOptions chosen;
-  for (const auto& [name, edit] : fields)
-    if (const QString text = edit->text().trimmed(); !text.isEmpty()) chosen[name] = text.toStdString();
-  reopenWithReaderOptions(chosen);
 }
 
 void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
@@ -974,7 +909,7 @@ void MainWindow::openStateFile(const QString& path) {
     applyState(state);
     return;
   }
-  if (loading_) {
+  if (loader_->busy()) {
     statusBar()->showMessage("Still loading the previous file");
     emit stateApplied(false, "still loading the previous file");
     return;

@@ -34,6 +34,7 @@ class ProbeController;
 class RendererMenu;
 class Scene;
 class LinePlotPanel;
+class ModelLoader;
 class StepController;
 class StreamlineActions;
 class Viewport;
@@ -108,8 +109,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   void chooseStateToOpen();
   /// View > Grid Slices... (G): the slices dialog; on first use the three middle slices.
   void showGridSlices();
-  /// The dialog of File > Reader Options...: a field per option of the last file's reader.
-  void editReaderOptions();
   /// Runs a change of the scene, then redraws; an error goes to the status bar.
   template <typename Change>
   bool changeScene(Change&& change);
@@ -146,15 +145,13 @@ class MainWindow : public QMainWindow, public PanelHost {
   StreamlineActions* streamlines_ = nullptr;
   ClipActions* clips_ = nullptr;
   DeformationActions* deformation_ = nullptr;
+  ModelLoader* loader_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
-  bool loading_ = false;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
   class GridSlicesPanel* gridSlices_ = nullptr;
   class QDockWidget* gridSlicesDock_ = nullptr;
   std::vector<class QDockWidget*> pluginDocks_;  ///< the plugins' panels, opened with the volume
-  QString lastPath_;              ///< the last file opened or tried (for File > Reader Options)
-  ReaderOptions lastReaderOptions_;
   QString pendingStatePath_;
 };
 
