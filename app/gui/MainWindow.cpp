@@ -17,6 +17,7 @@
 #include "RecentFiles.hpp"
 #include "RendererMenu.hpp"
 #include "SeeThroughSurface.hpp"
+#include "StateFiles.hpp"
 #include "StepController.hpp"
 #include "StreamlineActions.hpp"
 #include "Viewport.hpp"
@@ -170,8 +171,13 @@ void MainWindow::buildActions() {
                             "numbers, or which offset of a pre-stack file to load), then the file read again");
   file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
   file->addSeparator();
-  file->addAction("Open S&tate...", this, &MainWindow::chooseStateToOpen);
-  file->addAction("Save St&ate...", this, &MainWindow::chooseStateToSave);
+  stateFiles_ = new StateFiles(
+      *this, viewport_->scene(), *file,
+      [this](const QString& path, const ReaderOptions& options, std::function<void(bool, const QString&)> then) {
+        return readModel(path, options, std::move(then));
+      },
+      [this] { followAppliedState(); });
+  connect(stateFiles_, &StateFiles::applied, this, &MainWindow::stateApplied);
   file->addSeparator();
   file->addAction("&Quit", QKeySequence::Quit, this, &QWidget::close);
 
@@ -569,20 +575,23 @@ void MainWindow::chooseFile() {
   openFile(path);
 }
 
-void MainWindow::openFile(const QString& path, const ReaderOptions& options) {
-  loader_->open(path, options, [this, path](const ModelRead& read) {
-    const std::optional<SceneState> state = std::exchange(pendingState_, std::nullopt);
+void MainWindow::openFile(const QString& path, const ReaderOptions& options) { readModel(path, options, {}); }
+
+bool MainWindow::readModel(const QString& path, const ReaderOptions& options,
+                           std::function<void(bool ok, const QString& error)> then) {
+  return loader_->open(path, options, [this, path, then = std::move(then)](const ModelRead& read) {
     if (read.session) {
       installSession(read.session);
       emit loadFinished(true, {});
-      if (state) applyState(*state);
+      if (then) then(true, {});
     } else if (read.cancelled) {
       statusBar()->showMessage("Loading cancelled; the previous model is unchanged");
       emit loadFinished(false, "cancelled");
+      if (then) then(false, "cancelled");
     } else {
       statusBar()->showMessage("Could not open " + path);
       emit loadFinished(false, read.error);
-      if (state) emit stateApplied(false, read.error);
+      if (then) then(false, read.error);
       QMessageBox::critical(this, "Cannot open model", read.error);
     }
   });
@@ -857,86 +866,21 @@ void MainWindow::showModelInfo() {
   modelInfo_->setHtml(html);
 }
 
-bool MainWindow::saveStateFile(const QString& path) {
-  try {
-    viewport_->scene().state().save(path.toStdString());
-  } catch (const std::exception& e) {
-    statusBar()->showMessage(QString("Could not save the state: %1").arg(e.what()));
-    return false;
-  }
-  statusBar()->showMessage("Saved the view to " + path + " (volpost render --state reproduces it)");
-  return true;
-}
+bool MainWindow::saveStateFile(const QString& path) { return stateFiles_->save(path); }
 
-void MainWindow::chooseStateToSave() {
-  if (!session_) {
-    statusBar()->showMessage("Open a model first: a state describes a view of one");
-    return;
-  }
-  QSettings settings("volpost", "volpost");
-  const QString suggested = QFileInfo(QString::fromStdString(session_->model().sourcePath)).absolutePath() + "/view.json";
-  const QString path = QFileDialog::getSaveFileName(this, "Save state", settings.value("files/lastState", suggested).toString(),
-                                                    "volpost state (*.json)");
-  if (path.isEmpty()) return;
-  settings.setValue("files/lastState", path);
-  if (!saveStateFile(path)) QMessageBox::critical(this, "Save state", statusBar()->currentMessage());
-}
+void MainWindow::openStateFile(const QString& path) { stateFiles_->open(path); }
 
-void MainWindow::chooseStateToOpen() {
-  QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getOpenFileName(this, "Open state", settings.value("files/lastState").toString(),
-                                                    "volpost state (*.json);;All files (*)");
-  if (path.isEmpty()) return;
-  settings.setValue("files/lastState", path);
-  openStateFile(path);
-}
-
-void MainWindow::openStateFile(const QString& path) {
-  SceneState state;
-  try {
-    state = SceneState::load(path.toStdString());
-  } catch (const std::exception& e) {
-    statusBar()->showMessage("Could not open the state " + path);
-    emit stateApplied(false, e.what());
-    QMessageBox::critical(this, "Cannot open state", e.what());
-    return;
-  }
-  const auto sameFile = [](const std::string& a, const std::string& b) {
-    return QFileInfo(QString::fromStdString(a)).canonicalFilePath() == QFileInfo(QString::fromStdString(b)).canonicalFilePath();
-  };
-  if (session_ && sameFile(session_->model().sourcePath, state.modelPath) &&
-      session_->readerOptions() == state.readerOptions) {
-    applyState(state);
-    return;
-  }
-  if (loader_->busy()) {
-    statusBar()->showMessage("Still loading the previous file");
-    emit stateApplied(false, "still loading the previous file");
-    return;
-  }
-  pendingState_ = state;  // applied once its model is in
-  openFile(QString::fromStdString(state.modelPath), state.readerOptions);
-}
-
-void MainWindow::applyState(const SceneState& state) {
-  try {
-    viewport_->scene().applyState(state);
-  } catch (const std::exception& e) {
-    statusBar()->showMessage(QString("The state does not fit this model: %1").arg(e.what()));
-    emit stateApplied(false, e.what());
-    QMessageBox::warning(this, "Cannot apply state", e.what());
-    return;
-  }
-  if (state.volume.transferFunction && !state.quantity.empty())
-    userTransferFunctions_[viewport_->scene().view()->quantity.key()] = *state.volume.transferFunction;
+// A state file was applied: the controls, panels and lines follow the scene.
+void MainWindow::followAppliedState() {
+  const Scene& scene = viewport_->scene();
+  if (scene.volume().transferFunction && scene.view())
+    userTransferFunctions_[scene.view()->quantity.key()] = *scene.volume().transferFunction;
   syncControlsToScene();
   if (gridSlices_) gridSlices_->followScene();
   if (linePlot_) linePlot_->followScene();
   viewport_->update();
   notifyPanels();
-  statusBar()->showMessage("View restored from the state file");
   if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();
-  emit stateApplied(true, {});
 }
 
 // The menus and the toolbar show what the scene holds (after a state was applied).

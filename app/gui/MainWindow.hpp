@@ -12,6 +12,7 @@
 #include <QMainWindow>
 
 #include <atomic>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -35,6 +36,7 @@ class RendererMenu;
 class Scene;
 class LinePlotPanel;
 class ModelLoader;
+class StateFiles;
 class StepController;
 class StreamlineActions;
 class Viewport;
@@ -104,9 +106,11 @@ class MainWindow : public QMainWindow, public PanelHost {
   void fillSteps();
   void refreshScalars();
   void syncControlsToScene();
-  void applyState(const SceneState& state);
-  void chooseStateToSave();
-  void chooseStateToOpen();
+  /// Reads a model on a worker and shows it; `then` gets the outcome. False while another
+  /// file is still being read.
+  bool readModel(const QString& path, const ReaderOptions& options,
+                 std::function<void(bool ok, const QString& error)> then);
+  void followAppliedState();
   /// View > Grid Slices... (G): the slices dialog; on first use the three middle slices.
   void showGridSlices();
   /// Runs a change of the scene, then redraws; an error goes to the status bar.
@@ -146,9 +150,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   ClipActions* clips_ = nullptr;
   DeformationActions* deformation_ = nullptr;
   ModelLoader* loader_ = nullptr;
+  StateFiles* stateFiles_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
-  std::optional<SceneState> pendingState_;  ///< applied when its model has loaded
   class GridSlicesPanel* gridSlices_ = nullptr;
   class QDockWidget* gridSlicesDock_ = nullptr;
   std::vector<class QDockWidget*> pluginDocks_;  ///< the plugins' panels, opened with the volume
