@@ -10,6 +10,7 @@
 #include "ClipActions.hpp"
 #include "DeformationActions.hpp"
 #include "GridSlicesPanel.hpp"
+#include "IsoSurfaceDialog.hpp"
 #include "LinePlotPanel.hpp"
 #include "ModelLoader.hpp"
 #include "PluginsDialog.hpp"
@@ -376,52 +377,26 @@ void MainWindow::chooseIsoSurfaces() {
     statusBar()->showMessage("Open a model first");
     return;
   }
-  Scene& scene = viewport_->scene();
-  QDialog dialog(this);
-  dialog.setWindowTitle("Iso-surfaces");
-  auto* form = new QFormLayout(&dialog);
-  auto* quantity = new QComboBox(&dialog);
-  quantity->setObjectName("isoQuantity");
-  quantity->addItem("The shown result", QString());
-  for (const Quantity& q : session_->quantities())
-    if (session_->fieldOf(q).location() == FieldLocation::Node)  // contours need values at the nodes
-      quantity->addItem(QString::fromStdString(q.displayName()), QString::fromStdString(q.key()));
-  quantity->setCurrentIndex(std::max(0, quantity->findData(QString::fromStdString(scene.volume().isoQuantity))));
-  form->addRow("Of:", quantity);
-  auto* values = new QLineEdit(&dialog);
-  values->setObjectName("isoValues");
-  values->setMinimumWidth(360);
-  values->setToolTip("VALUE[:r,g,b[:opacity]] separated by ';' (colors and opacity 0..1, up to 8; empty: none)");
-  QString text = isoSurfacesText(scene.volume().isoSurfaces);
-  if (text.isEmpty())
-    if (const auto& v = scene.view(); v && v->range.valid())
-      text = QString("%1:1,0.85,0.2:0.6").arg(0.5 * (v->range.min + v->range.max), 0, 'g', 6);
-  values->setText(text);
-  form->addRow("Values:", values);
-  form->addRow(new QLabel("VALUE[:r,g,b[:opacity]] separated by ';', up to 8; empty: none"));
-  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-  form->addRow(buttons);
+  const Scene& scene = viewport_->scene();
+  IsoSurfaceDialog dialog(*session_, scene.volume(), scene.view() ? &*scene.view() : nullptr, this);
   for (;;) {
     if (dialog.exec() != QDialog::Accepted) return;
     QString bad;
-    const auto surfaces = parseIsoSurfaces(values->text(), &bad);
+    const auto surfaces = dialog.surfaces(&bad);
     if (!surfaces) {
-      QMessageBox::warning(this, "Iso-surfaces",
-                           QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than 8)").arg(bad));
+      QMessageBox::warning(
+          this, "Iso-surfaces",
+          QString("'%1' is not VALUE[:r,g,b[:opacity]] (or more than %2)").arg(bad).arg(kMaxIsoSurfaces));
       continue;
     }
-    const std::string key = quantity->currentData().toString().toStdString();
     // They stay in the view the user is in (this switched to volume rendering); in the
     // surface view an opaque surface would hide them, so it becomes see-through.
-    if (!changeScene([&](Scene& s) {
-          s.setIsoQuantity(key);
+    if (changeScene([&](Scene& s) {
+          s.setIsoQuantity(dialog.quantity());
           s.setIsoSurfaces(*surfaces);
           if (!surfaces->empty() && !s.volumeShown()) seeThroughSurface(*this, s, "the iso-surfaces inside");
         }))
-      continue;
-    return;
+      return;
   }
 }
 
