@@ -69,18 +69,14 @@ struct Options {
   QCommandLineOption noTriad{"no-triad", "Hide the orientation axes in the lower left corner."};
   QCommandLineOption flat{"flat", "No shading on the surface: the color map's exact colors."};
   QCommandLineOption output{QStringList{"o", "output"}, "Output picture (.png; .jpg and others by extension).", "FILE"};
-  QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result; reference: exact "
-                                          "CPU volume rendering in double precision (slow, the yardstick); a volume "
-                                          "renderer from a plugin: raycast, vicp, vicp-exact (GPU), cpu (exact ray "
-                                          "casting on all cores, the fast choice without a GPU; marching on regular "
-                                          "grids), texture-raymarch, texture-slices (regular grids such as SEG-Y "
-                                          "cubes, GPU); volpost plugins lists them.", "NAME"};
+  // The renderers' own words and what they take are filled in from their traits
+  // (describeRenderers), so the help names what is loaded.
+  QCommandLineOption renderer{"renderer", "surface (default): the boundary colored by the result.", "NAME"};
   QCommandLineOption mode{"mode", QString("GPU volume integration: %1 (default linear: exact cuts at every control "
                                           "point).").arg(QString::fromStdString(integrationModeChoices())), "MODE"};
   QCommandLineOption tf{"tf", "Transfer function (volpost TF JSON) for volume rendering; default: a ramp of the "
                               "color map over the result's range.", "FILE"};
-  QCommandLineOption tf2d{"tf2d", "Regular grids: a 2D transfer function over the value and its gradient magnitude "
-                                  "(volpost-tf2d JSON: rectangles and triangles), instead of --tf.", "FILE"};
+  QCommandLineOption tf2d{"tf2d", "Regular grids: a 2D transfer function instead of --tf.", "FILE"};
   QCommandLineOption clip{"clip", "Clip plane px,py,pz,nx,ny,nz keeping the side the normal points to "
                                   "(repeatable; the surface shows the cut face colored by the result).", "PLANE"};
   QCommandLineOption clipBox{"clip-box", "Keep the inside of the box xmin,xmax,ymin,ymax,zmin,zmax (the "
@@ -93,8 +89,9 @@ struct Options {
                                                    "mean edge); on regular grids the step of the march or the slice "
                                                    "spacing of every mode (default: half the shortest grid spacing).",
                                   "H"};
-  QCommandLineOption shading{"shading", "Regular grids: light the volume's emission by the gradient, the light at the "
-                                        "eye (texture-raymarch, texture-slices, cpu, reference)."};
+  QCommandLineOption shading{"shading",
+                             "Regular grids: light the volume's emission by the gradient, the light at the "
+                             "eye."};
   QCommandLineOption termination{"termination", "Rays stop when the light left behind is below this fraction "
                                                 "(default 0.002; 0: never).", "T"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
@@ -238,11 +235,36 @@ struct ChosenRenderer {
   QString namesWhere(bool (*has)(const RendererEntry&)) const { return rendererNamesWhere(all, has); }
 };
 
+// Every volume renderer loaded and the exact reference, in menu order.
+std::vector<RendererEntry> allVolumeRenderers(const PluginManager& plugins) {
+  std::vector<RendererEntry> all = volumeRenderers(plugins);
+  all.push_back(referenceRenderer());
+  return all;
+}
+
+// --renderer lists each renderer in its own words; --shading, --tf2d and --sampling-step
+// name the renderers that take them.
+void describeRenderers(Options& o, const std::vector<RendererEntry>& all) {
+  QString renderers = "surface (default): the boundary colored by the result";
+  for (const RendererEntry& r : all)
+    renderers += QString("; %1: %2").arg(r.name, QString::fromStdString(r.traits.label));
+  o.renderer.setDescription(renderers + " (volpost plugins lists the plugins that offer them).");
+  const auto drawnBy = [&](bool (*has)(const RendererEntry&)) {
+    const QString names = rendererNamesWhere(all, has);
+    return names.isEmpty() ? QString(" (no renderer loaded draws it)") : " (drawn by " + names + ")";
+  };
+  o.shading.setDescription("Regular grids: light the volume's emission by the gradient, the light at the eye" +
+                           drawnBy([](const RendererEntry& r) { return r.traits.shading; }) + ".");
+  o.tf2d.setDescription(
+      "Regular grids: a 2D transfer function over the value and its gradient magnitude "
+      "(volpost-tf2d JSON: rectangles and triangles), instead of --tf" +
+      drawnBy([](const RendererEntry& r) { return r.traits.transferFunction2D; }) + ".");
+}
+
 // The renderer `name` (from --renderer or the state file), or a usage error listing them.
 ChosenRenderer chooseRenderer(const PluginManager& plugins, const QString& name, const QCommandLineParser& p,
                               const Options& o) {
-  ChosenRenderer chosen{name, std::nullopt, volumeRenderers(plugins)};
-  chosen.all.push_back(referenceRenderer());
+  ChosenRenderer chosen{name, std::nullopt, allVolumeRenderers(plugins)};
   if (name == "surface") return chosen;
   for (const RendererEntry& r : chosen.all)
     if (r.name == name) chosen.volume = r;
@@ -475,7 +497,9 @@ int runRender(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription("volpost render: draws MODEL headless (EGL) as the window would, to a picture.");
   parser.addPositionalArgument("MODEL", "mesh or results file (optional with --state)");
-  const Options o;
+  auto plugins = loadPluginsForCli();
+  Options o;
+  describeRenderers(o, allVolumeRenderers(*plugins));
   parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
                      o.renderer, o.mode, o.tf, o.tf2d, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
                      o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
@@ -526,7 +550,6 @@ int runRender(const QStringList& args) {
     QString rendererName = parser.isSet(o.renderer) ? parser.value(o.renderer)
                            : base.volume.shown      ? QString::fromStdString(base.volume.renderer)
                                                     : QString("surface");
-    auto plugins = loadPluginsForCli();
     const ChosenRenderer chosen = chooseRenderer(*plugins, rendererName, parser, o);
     refuseWhatTheRendererIgnores(parser, o, chosen);
     bool threadsOk = true;

@@ -7,11 +7,12 @@
 #include <QImage>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 using volpost::test::dataFile;
 using volpost::test::runVolpost;
@@ -685,6 +686,16 @@ TEST(CommandLine, EveryVerbsHelpNamesTheVerbAndExitsZero) {
     EXPECT_EQ(r.exitCode, 0) << verb;
     EXPECT_EQ(r.output.rfind("Usage: volpost " + std::string(verb) + " [options]", 0), 0u) << r.output;
   }
+  // The renderers in their own words, and the options they take, from what they say of
+  // themselves: the help names what is loaded.
+  std::string help;  // the words as one line, whatever the wrapping
+  for (const char c : runVolpost("render --help").output)
+    if (!std::isspace(static_cast<unsigned char>(c)) || (!help.empty() && help.back() != ' '))
+      help += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+  for (const char* entry :
+       {"cpu: Ray casting on the CPU", "raycast: Ray casting", "reference: Exact reference",
+        "texture-slices: View-aligned", "(drawn by cpu, texture-raymarch, texture-slices, reference)"})
+    EXPECT_NE(help.find(entry), std::string::npos) << entry << "\n" << help;
   const auto unknown = runVolpost("render --no-such-option");
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("no-such-option"), std::string::npos) << unknown.output;
