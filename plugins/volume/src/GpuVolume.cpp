@@ -10,7 +10,6 @@
 #include "VolumeShaders.hpp"
 #include "VolumeTextures.hpp"
 
-#include <volpost/core/ResourceLimits.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/OpticalDepth.hpp>
 #include <volpost/core/optics/PreintegrationTable.hpp>
@@ -22,14 +21,13 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <tuple>
-#include <utility>
-#include <limits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <cmath>
+#include <limits>
 #include <stdexcept>
-#include <type_traits>
+#include <tuple>
+#include <utility>
 
 namespace volpost::volume {
 namespace {
@@ -64,8 +62,7 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
   gpu_ = buildTetMeshGpu(mesh, location, values);  // CPU only; throws for cells that are not tets
   tetrahedraOnlyOnGpu_ = false;
   mesh_ = &mesh;
-  grid_.reset();
-  gridValues_ = GridTexels{};
+  grid_.clear();
   location_ = location;
   ++meshRevision_;
   ++revision_;
@@ -73,94 +70,29 @@ void GpuVolume::setVolume(const Mesh& mesh, FieldLocation location, std::span<co
 }
 
 void GpuVolume::setGrid(const RegularGrid& grid, SampleView values) {
-  if (const std::string defect = grid.defect(); !defect.empty()) throw std::invalid_argument(defect);
-  if (values.size() != grid.pointCount())
-    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
-                                std::to_string(grid.pointCount()) + " points");
-  gpu_ = TetMeshGpu{};
-  tetrahedraOnlyOnGpu_ = false;
-  gpu_.origin = grid.bounds().center();
+  TetMeshGpu frame;
+  frame.origin = grid.bounds().center();
   // The shortest step between grid points: the tables' segment length and the march's unit.
-  gpu_.maxEdge = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
+  frame.maxEdge = std::min({glm::length(grid.axes[0]), glm::length(grid.axes[1]), glm::length(grid.axes[2])});
+  grid_.set(grid, values, frame);  // throws for a defect or a wrong count, changing nothing
+  gpu_ = std::move(frame);
+  tetrahedraOnlyOnGpu_ = false;
   mesh_ = nullptr;
   location_ = FieldLocation::Node;
-  grid_ = grid;
-  makeGridTexels(values);
   ++meshRevision_;
   ++revision_;
   meshDirty_ = true;
 }
 
-namespace {
-
-// Whether every finite value is a whole number (always, for an integer type).
-template <typename T>
-bool finiteValuesAreIntegers(std::span<const T> values) {
-  if constexpr (!std::is_integral_v<T>) {
-    for (const T value : values)
-      if (std::isfinite(value) && value != std::nearbyint(value)) return false;
-  }
-  return true;
-}
-
-template <typename Texel, typename T>
-std::vector<Texel> integerTexels(std::span<const T> values, double minimum) {
-  std::vector<Texel> out(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const double v = double(values[i]);
-    out[i] = Texel(std::isfinite(v) ? v : minimum);
-  }
-  return out;
-}
-
-}  // namespace
-
-// Values go to the texture in their own frame (see TetMeshGpu::valueOffset), or, when they
-// are all integers of 8 or 16 bits (seismic samples as stored), as those integers in signed
-// normalized texels the shader maps back into the frame. A value that is not a finite
-// number is drawn as the field's minimum. Each type's values are read in that type, never
-// copied to doubles first.
-void GpuVolume::makeGridTexels(SampleView values) {
-  const ValueRange range = rangeOf(values);
-  setValueFrame(gpu_, range);
-  using Format = GridTexels::Format;
-  GridTexels t;
-  const double minimum = range.min, largest = std::max(std::abs(range.min), std::abs(range.max));
-  const bool integers = range.valid() && values.visit([](auto typed) { return finiteValuesAreIntegers(typed); });
-  t.format = !integers || largest > 32767.0 ? Format::Float32 : largest <= 127.0 ? Format::Snorm8 : Format::Snorm16;
-  if (t.format == Format::Float32) {
-    t.floats.resize(values.size());
-    values.visit([&](auto typed) {
-      for (std::size_t i = 0; i < typed.size(); ++i) {
-        const double v = double(typed[i]);
-        t.floats[i] = std::isfinite(v) ? gpu_.gpuValue(v) : 0.0f;
-      }
-    });
-  } else {
-    // A texel t is the integer / 127 (or 32767); the frame's value is (integer - valueOffset) * valueScale.
-    const double unit = t.format == Format::Snorm8 ? 127.0 : 32767.0;
-    t.scale = float(unit * gpu_.valueScale);
-    t.offset = float(-gpu_.valueOffset * gpu_.valueScale);
-    values.visit([&](auto typed) {
-      if (t.format == Format::Snorm8) t.bytes = integerTexels<std::int8_t>(typed, minimum);
-      else t.shorts = integerTexels<std::int16_t>(typed, minimum);
-    });
-  }
-  gridValues_ = std::move(t);
-}
-
 void GpuVolume::setGridValues(SampleView values) {
-  if (!grid_) throw std::logic_error("GpuVolume::setGridValues before setGrid");
-  if (values.size() != grid_->pointCount())
-    throw std::invalid_argument(std::to_string(values.size()) + " values for a grid of " +
-                                std::to_string(grid_->pointCount()) + " points");
-  makeGridTexels(values);
+  if (!grid_.has()) throw std::logic_error("GpuVolume::setGridValues before setGrid");
+  grid_.setValues(values, gpu_);
   valuesDirty_ = true;
   ++revision_;
 }
 
 void GpuVolume::setValues(SampleView values) {
-  if (grid_) {
+  if (grid_.has()) {
     setGridValues(values);
     return;
   }
@@ -232,7 +164,7 @@ void GpuVolume::release() {
   for (gl::Buffer* b : {&nodes_, &tets_, &neighbors_, &cellValues_, &bvh_, &boundary_}) b->reset();
   image_.reset();
   tf2dDirty_ = tf2d_.has_value();
-  bricks_.release();
+  grid_.release();
   visible_.release();
   programs_.clear();
   composite_.release();
@@ -248,7 +180,7 @@ void GpuVolume::prepare(const RenderContext& ctx) {
     uploadValues();
     valuesDirty_ = false;
   }
-  if (grid_) layOutBricks();  // the budget may have changed since
+  if (grid_.has()) grid_.layOut();  // the budget may have changed since
   if (tf2dDirty_) {
     tables_.upload2D(tf2d_);
     tf2dDirty_ = false;
@@ -283,8 +215,8 @@ void GpuVolume::findVisibleTets(const RenderContext& ctx) {
 void GpuVolume::uploadMesh() {
   if (tetrahedraOnlyOnGpu_)
     throw std::logic_error("the volume renderer was released after its tetrahedra went to the GPU: set the volume again");
-  if (grid_) uploadGrid();
-  else bricks_.release();
+  if (grid_.has()) uploadGrid();
+  else grid_.release();
   // Checked before anything is uploaded: a buffer past the device's limit would read as
   // zeros (or fault) on drivers that enforce it.
   GLint64 limit = 0;
@@ -318,79 +250,30 @@ void GpuVolume::uploadMesh() {
 
 // Only the values travel: 16 B per node (position and value share a vec4) or 4 B per tet.
 void GpuVolume::uploadValues() {
-  if (grid_) uploadGrid();
+  if (grid_.has()) uploadGrid();
   else if (location_ == FieldLocation::Node) upload(nodes_, gpu_.nodes);
   else upload(cellValues_, gpu_.cellValues);
   ++valueUploads_;
 }
 
-// The grid's values as 3D float textures, fetched texel by texel (the shader interpolates
-// in float itself: hardware filtering weighs with as few as 8 bits on some GPUs): one
-// texture when the grid fits the GPU memory budget and the device's largest texture,
-// else bricks (GridBricks), uploaded as they are drawn.
+// The grid's values go up as textures (GridTexture); a second upload of the same grid is
+// a value upload.
 void GpuVolume::uploadGrid() {
-  const bool sameGrid = bricks_.count() > 0 && builtRevision_ == meshRevision_;
-  layOutBricks();
-  bricks_.valuesChanged();
-  if (bricks_.count() == 1) bricks_.resident(0, gridValues_);  // what the next frame draws anyway
+  const bool sameGrid = grid_.bricks().count() > 0 && builtRevision_ == meshRevision_;
+  grid_.upload();
   if (sameGrid) ++valueUploads_;
   gl::check("GpuVolume::uploadGrid");
 }
 
-void GpuVolume::layOutBricks() {
-  GLint largest = 0;
-  glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-  bricks_.configure(grid_->dims, gridValues_.format, gridValues_.bytesPerTexel(), textureBudget(),
-                    std::size_t(std::max(largest, 2)));
-}
-
-// The GPU memory budget for the grid's textures: the setting, else 3/4 of what an NVIDIA
-// device reports as its dedicated memory, else none.
-std::size_t GpuVolume::textureBudget() const {
-  if (const std::size_t set = gpuMemoryBudget()) return set;
-  if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
-    GLint kilobytes = 0;
-    glGetIntegerv(0x9047, &kilobytes);  // GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX
-    if (kilobytes > 0) return std::size_t(kilobytes) * 1024 / 4 * 3;
-  }
-  return 0;
-}
-
 std::vector<std::size_t> GpuVolume::gridBricksInOrder(const RenderContext& ctx, bool backToFront) const {
-  const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
-  const bool ortho = ctx.camera.projection() == Camera::Projection::Orthographic;
-  std::vector<std::size_t> order = bricksBackToFront(bricks_.bricks(), toIndex * (ctx.camera.eye() - grid_->origin),
-                                                     toIndex * ctx.camera.viewDirection(), ortho);
-  if (!backToFront) std::reverse(order.begin(), order.end());
-  return order;
+  return grid_.inOrder(ctx, backToFront);
 }
 
 std::pair<glm::vec2, glm::vec2> GpuVolume::gridBrickOnScreen(const RenderContext& ctx, std::size_t b) const {
-  const GridBrick& brick = bricks_.bricks()[b];
-  const glm::mat4 viewProjection = imageViewProjection(ctx);
-  glm::vec2 lo(1e30f), hi(-1e30f);
-  for (int c = 0; c < 8; ++c) {
-    glm::dvec3 index;
-    for (int a = 0; a < 3; ++a)
-      index[a] = double(brick.first[std::size_t(a)] + ((c >> a) & 1) * (brick.points[std::size_t(a)] - 1));
-    const glm::dvec3 p = grid_->origin + grid_->indexToWorld() * index - gpu_.origin;
-    const glm::vec4 clip = viewProjection * glm::vec4(glm::vec3(p), 1.0f);
-    if (!(clip.w > 0.0f)) return {glm::vec2(-1.0f), glm::vec2(1.0f)};
-    lo = glm::min(lo, glm::vec2(clip) / clip.w);
-    hi = glm::max(hi, glm::vec2(clip) / clip.w);
-  }
-  const glm::vec2 pixel(2.0f / float(ctx.width), 2.0f / float(ctx.height));
-  return {glm::clamp(lo - pixel, glm::vec2(-1.0f), glm::vec2(1.0f)), glm::clamp(hi + pixel, glm::vec2(-1.0f), glm::vec2(1.0f))};
+  return grid_.brickOnScreen(ctx, b, imageViewProjection(ctx), gpu_.origin);
 }
 
-void GpuVolume::bindGridBrick(GLuint program, std::size_t b) {
-  glBindTextureUnit(binding::kGrid, bricks_.resident(b, gridValues_));
-  const GridBrick& brick = bricks_.bricks()[b];
-  glProgramUniform3i(program, glGetUniformLocation(program, "brickFirst"), GLint(brick.first[0]),
-                     GLint(brick.first[1]), GLint(brick.first[2]));
-  glProgramUniform3i(program, glGetUniformLocation(program, "brickPoints"), GLint(brick.points[0]),
-                     GLint(brick.points[1]), GLint(brick.points[2]));
-}
+void GpuVolume::bindGridBrick(GLuint program, std::size_t b) { grid_.bind(program, binding::kGrid, b); }
 
 void GpuVolume::ensureImage(int width, int height) {
   if (image_ && width == imageWidth_ && height == imageHeight_) return;
@@ -401,7 +284,7 @@ void GpuVolume::ensureImage(int width, int height) {
 }
 
 GLuint GpuVolume::program(const std::vector<std::string>& stageFiles) {
-  const int mode = tf2d_ && grid_ ? kTransferFunction2DMode : modeIndex(mode_);
+  const int mode = tf2d_ && grid_.has() ? kTransferFunction2DMode : modeIndex(mode_);
   std::string key = std::to_string(mode);
   for (const std::string& f : stageFiles) key += " " + f;
   gl::Program& p = programs_[key];
@@ -445,23 +328,24 @@ void GpuVolume::setSegmentUniforms(GLuint p, const RenderContext& ctx) const {
   glProgramUniform1i(p, u("clipCount"), int(planes.size()));
   if (!planes.empty()) glProgramUniform4fv(p, u("clipPlanes"), GLsizei(planes.size()), glm::value_ptr(planes[0]));
   glProgramUniform1i(p, u("hasSceneDepth"), ctx.depthTexture != 0);
-  glProgramUniform1i(p, u("shading"), shading_ && grid_);
+  glProgramUniform1i(p, u("shading"), shading_ && grid_.has());
   if (tf2d_) {
     // In the values' frame: gpuValue scales the values, and so their gradient.
     glProgramUniform1f(p, u("tf2dValueLow"), gpu_.gpuValue(tf2d_->valueLow()));
     glProgramUniform1f(p, u("tf2dValueHigh"), gpu_.gpuValue(tf2d_->valueHigh()));
     glProgramUniform1f(p, u("tf2dGradientHigh"), float(tf2d_->gradientHigh() * gpu_.valueScale));
   }
-  if (grid_) {
-    const glm::dmat3 toIndex = glm::inverse(grid_->indexToWorld());
+  if (grid_.has()) {
+    const RegularGrid& grid = grid_.grid();
+    const glm::dmat3 toIndex = glm::inverse(grid.indexToWorld());
     glm::mat4 worldToIndex{glm::mat3(toIndex)};
-    worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (gpu_.origin - grid_->origin)), 1.0f);
+    worldToIndex[3] = glm::vec4(glm::vec3(toIndex * (gpu_.origin - grid.origin)), 1.0f);
     glProgramUniformMatrix4fv(p, u("worldToIndex"), 1, GL_FALSE, glm::value_ptr(worldToIndex));
-    glProgramUniform3i(p, u("gridSize"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
+    glProgramUniform3i(p, u("gridSize"), GLint(grid.dims[0]), GLint(grid.dims[1]), GLint(grid.dims[2]));
     // The whole grid as one brick until bindGridBrick says which.
     glProgramUniform3i(p, u("brickFirst"), 0, 0, 0);
-    glProgramUniform3i(p, u("brickPoints"), GLint(grid_->dims[0]), GLint(grid_->dims[1]), GLint(grid_->dims[2]));
-    glProgramUniform2f(p, u("texelToValue"), gridValues_.scale, gridValues_.offset);
+    glProgramUniform3i(p, u("brickPoints"), GLint(grid.dims[0]), GLint(grid.dims[1]), GLint(grid.dims[2]));
+    glProgramUniform2f(p, u("texelToValue"), grid_.texels().scale, grid_.texels().offset);
   }
 }
 
@@ -504,7 +388,7 @@ void GpuVolume::compositeOver(const RenderContext& ctx, GLuint image) const {
 VolumeStats GpuVolume::stats() const {
   VolumeStats s;
   s.tetrahedra = gpu_.tetCount;
-  s.meshBytes = gpu_.bytes() + bricks_.residentBytes();
+  s.meshBytes = gpu_.bytes() + grid_.residentBytes();
   s.gpuBytes = s.meshBytes + visible_.bytes() + tables_.bytes() + std::size_t(imageWidth_) * imageHeight_ * 16;
   s.lastTransferFunctionMs = tables_.lastChangeMs();
   s.meshUploads = meshUploads_;

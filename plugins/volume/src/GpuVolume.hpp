@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // What every GPU volume renderer of this plugin shares: the volume on the GPU (tetrahedra
-// and their values, TetMeshGpu, or a regular grid's values as a 3D texture), the
+// and their values, TetMeshGpu, or a regular grid's values as 3D textures, GridTexture), the
 // transfer-function tables, clip planes and iso-surfaces, the float image a frame is
 // integrated into, and the GLSL that integrates a ray piece (common/volume_segment.glsl;
 // through one tet: common/tet_segment.glsl). The ray caster walks rays through the tets;
@@ -12,7 +12,7 @@
 // Clip planes, iso-surfaces and the camera are uniforms and cost nothing to change.
 #pragma once
 
-#include "GridBricks.hpp"
+#include "GridTexture.hpp"
 #include "ImageComposite.hpp"
 #include "TetMeshGpu.hpp"
 #include "TransferFunctionTables.hpp"
@@ -54,7 +54,7 @@ class GpuVolume {
   bool hasTransferFunction2D() const { return tf2d_.has_value(); }
   /// Whether what is drawn reads the grid's gradient (shading, a 2D transfer function), which
   /// jumps across cell faces: the grid ray marcher then also cuts its pieces there.
-  bool readsGradient() const { return grid_ && (shading_ || tf2d_); }
+  bool readsGradient() const { return grid_.has() && (shading_ || tf2d_); }
   void setClipPlanes(const std::vector<ClipPlane>& planes);
   void setIsoSurfaces(const std::vector<optics::IsoSurface>& surfaces);
   void setIntegrationMode(IntegrationMode mode);
@@ -104,11 +104,11 @@ class GpuVolume {
   /// Changes whenever the set of tets changes (another mesh, or values that drop tets).
   std::size_t meshRevision() const { return meshRevision_; }
   bool hasTets() const { return gpu_.tetCount > 0; }
-  bool hasGrid() const { return grid_.has_value(); }
-  const RegularGrid& grid() const { return *grid_; }
+  bool hasGrid() const { return grid_.has(); }
+  const RegularGrid& grid() const { return grid_.grid(); }
   /// The grid's bricks (one when the grid fits the GPU memory budget), once prepare() has
   /// laid them out.
-  const GridBricks& gridBricks() const { return bricks_; }
+  const GridBricks& gridBricks() const { return grid_.bricks(); }
   /// The bricks' order for ctx's camera: back to front, or front to back.
   std::vector<std::size_t> gridBricksInOrder(const RenderContext& ctx, bool backToFront) const;
   /// Where brick b can cover the picture: the rectangle round its projected corners in
@@ -159,19 +159,14 @@ class GpuVolume {
  private:
   void uploadMesh();
   void findVisibleTets(const RenderContext& ctx);
-  bool skipsHiddenTets() const { return emptySpaceSkipping_ && !grid_ && !visibleDirty_ && visible_.skipping(); }
+  bool skipsHiddenTets() const { return emptySpaceSkipping_ && !grid_.has() && !visibleDirty_ && visible_.skipping(); }
   void uploadValues();
   void uploadGrid();
-  /// Lays out the grid's bricks for the present budget (nothing changes when it is the same).
-  void layOutBricks();
-  std::size_t textureBudget() const;
-  void makeGridTexels(SampleView values);
   void ensureImage(int width, int height);
 
   // State.
   const Mesh* mesh_ = nullptr;
-  std::optional<RegularGrid> grid_;
-  GridTexels gridValues_;  ///< the points' values as the texture holds them
+  GridTexture grid_;  ///< a regular grid's values, when a grid is drawn instead of tetrahedra
   FieldLocation location_ = FieldLocation::Node;
   TetMeshGpu gpu_;
   bool keepsTetrahedraOnHost_ = false;
@@ -201,7 +196,6 @@ class GpuVolume {
   gl::Buffer nodes_, tets_, neighbors_, cellValues_, bvh_, boundary_;
   gl::Texture image_;
   bool tf2dDirty_ = false;
-  GridBricks bricks_;
   VisibleTetsGpu visible_;
   int imageWidth_ = 0, imageHeight_ = 0;
 };
