@@ -630,8 +630,11 @@ int runRender(const QStringList& args) {
       }
       if (parser.isSet(o.saveState)) {
         const std::string statePath = pathBytes(parser.value(o.saveState));
-        outputs.emplace_back(statePath,
-                             scene.state().toJson(std::filesystem::absolute(statePath).parent_path().string()));
+        SceneState saved = scene.state();
+        // The renderer that drew the picture: the reference draws apart from the scene's GL
+        // renderers, and `render --state` draws with it again.
+        if (chosen.volume) saved.volume.renderer = rendererName.toStdString();
+        outputs.emplace_back(statePath, saved.toJson(std::filesystem::absolute(statePath).parent_path().string()));
       }
       writeFilesTogether(outputs);
       std::printf("%s\n", qPrintable(QFileInfo(out).absoluteFilePath()));

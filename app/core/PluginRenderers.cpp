@@ -48,8 +48,10 @@ VolumeRendererFactory volumeRendererFactory(const PluginManager& plugins) {
   std::vector<std::string> names;
   for (const RendererPlugin* plugin : plugins.rendererPlugins())
     for (const QString& name : plugin->rendererNames()) names.push_back(name.toStdString());
-  return {[&plugins](const std::string& name) { return create(plugins, QString::fromStdString(name)); },
-          std::move(names)};
+  VolumeRendererFactory factory{
+      [&plugins](const std::string& name) { return create(plugins, QString::fromStdString(name)); }, std::move(names)};
+  factory.describeApart(referenceRenderer().name.toStdString(), referenceRenderer().traits);
+  return factory;
 }
 
 QString rendererNamesWhere(const std::vector<RendererEntry>& entries, bool (*has)(const RendererEntry&)) {

@@ -152,6 +152,10 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
   const ScalarView& view = *scene.view();
   const SceneRevisions& now = scene.revisions();
   if (drawn_.renderer != now.renderer || !volume_ || volumeName_ != v.renderer) {
+    if (scene.volumeRenderers().drawsApart(v.renderer))
+      throw std::invalid_argument(
+          "the volume renderer '" + v.renderer + "' makes its pictures apart (volpost render --renderer " + v.renderer +
+          "); choose one that draws here" + inParentheses(scene.volumeRenderers().namesDrawnHere()));
     if (volume_) volume_->release();
     volume_ = scene.volumeRenderers()(v.renderer);
     volumeName_.clear();

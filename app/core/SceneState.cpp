@@ -271,8 +271,10 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
     if (error) absolute = fs::absolute(model).lexically_normal();
     fs::path folder = fs::weakly_canonical(fs::absolute(relativeTo), error);
     if (error) folder = fs::absolute(relativeTo).lexically_normal();
+    // Below the state's folder: relative to it (the two move together); elsewhere: absolute
+    // (a path relative to where the command ran would be read relative to the state).
     const fs::path relative = absolute.lexically_relative(folder);
-    if (!relative.empty() && *relative.begin() != "..") model = relative.string();
+    model = !relative.empty() && *relative.begin() != ".." ? relative.string() : absolute.string();
   }
   out["model"] = model;
   if (!readerOptions.empty()) out["readerOptions"] = readerOptions;

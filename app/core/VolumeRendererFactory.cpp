@@ -5,12 +5,32 @@
 
 namespace volpost::app {
 
+void VolumeRendererFactory::describeApart(const std::string& name, const VolumeRendererTraits& traits) {
+  apart_.emplace_back(name, traits);
+  names_.push_back(name);
+}
+
+bool VolumeRendererFactory::drawsApart(const std::string& name) const {
+  for (const auto& [apart, traits] : apart_)
+    if (apart == name) return true;
+  return false;
+}
+
+std::string VolumeRendererFactory::namesDrawnHere() const {
+  std::string out;
+  for (const std::string& name : names_)
+    if (!drawsApart(name)) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
 std::unique_ptr<VolumeRenderer> VolumeRendererFactory::operator()(const std::string& name) const {
-  return create_ ? create_(name) : nullptr;
+  return create_ && !drawsApart(name) ? create_(name) : nullptr;
 }
 
 // Creating a renderer makes no GL objects (initialize() does), so asking one is cheap.
 std::optional<VolumeRendererTraits> VolumeRendererFactory::traitsOf(const std::string& name) const {
+  for (const auto& [apart, traits] : apart_)
+    if (apart == name) return traits;
   const std::unique_ptr<VolumeRenderer> renderer = (*this)(name);
   if (!renderer) return std::nullopt;
   return renderer->traits();

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // How a scene gets its volume renderer: by name, from whatever offers them (the loaded
 // plugins in the app, a single renderer in a test), with the names it knows for messages
-// that point to another renderer. The renderer itself stays behind a declaration, so the
-// scene's state compiles without GL.
+// that point to another renderer. A renderer may also draw apart from the scene's GL
+// layers (the exact reference: `volpost render` runs it on the CPU): the factory names
+// and describes it, so scenes and state files take it, but does not create it. The
+// renderer itself stays behind a declaration, so the scene's state compiles without GL.
 #pragma once
 
 #include <volpost/render/VolumeRendererTraits.hpp>
@@ -33,7 +35,15 @@ class VolumeRendererFactory {
       F create, std::vector<std::string> names = {})  // NOLINT: converts
       : create_(std::move(create)), names_(std::move(names)) {}
 
-  /// A new renderer (GL objects not yet made), or nullptr for a name it does not know.
+  /// A renderer that draws apart from the scene (its pictures made another way), known by
+  /// name and traits; it comes last in the names.
+  void describeApart(const std::string& name, const VolumeRendererTraits& traits);
+  bool drawsApart(const std::string& name) const;
+  /// "raycast, vicp, cpu": the renderers it creates, in menu order.
+  std::string namesDrawnHere() const;
+
+  /// A new renderer (GL objects not yet made), or nullptr for a name it does not know or
+  /// one that draws apart.
   std::unique_ptr<VolumeRenderer> operator()(const std::string& name) const;
   /// What the renderer of that name says of itself (nullopt: no such renderer).
   std::optional<VolumeRendererTraits> traitsOf(const std::string& name) const;
@@ -44,6 +54,7 @@ class VolumeRendererFactory {
  private:
   Create create_;
   std::vector<std::string> names_;
+  std::vector<std::pair<std::string, VolumeRendererTraits>> apart_;
 };
 
 /// " (raycast, vicp)" after a message's advice, or nothing where no renderer is listed.

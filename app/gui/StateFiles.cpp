@@ -91,7 +91,16 @@ void StateFiles::open(const QString& path) {
   if (!started) emit applied(false, "still loading the previous file");
 }
 
-void StateFiles::apply(const SceneState& state) {
+void StateFiles::apply(const SceneState& given) {
+  // A volume drawn apart (the exact reference of `volpost render`) is drawn here by the
+  // window's renderer, and the status bar says so.
+  SceneState state = given;
+  QString drawnHere;
+  if (state.volume.shown && scene_.volumeRenderers().drawsApart(state.volume.renderer)) {
+    state.volume.renderer = scene_.volume().renderer;
+    drawnHere = QString("; its volume (drawn by the %1 renderer with volpost render) is drawn here by %2")
+                    .arg(QString::fromStdString(given.volume.renderer), QString::fromStdString(state.volume.renderer));
+  }
   try {
     scene_.applyState(state);  // checks everything first: the scene keeps what it had
   } catch (const std::exception& e) {
@@ -101,7 +110,7 @@ void StateFiles::apply(const SceneState& state) {
     return;
   }
   followScene_();
-  window_.statusBar()->showMessage("View restored from the state file");
+  window_.statusBar()->showMessage("View restored from the state file" + drawnHere);
   emit applied(true, {});
 }
 

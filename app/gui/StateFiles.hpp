@@ -38,7 +38,8 @@ class StateFiles : public QObject {
   /// Reads a state file: its model first when another is shown, then its view. Emits
   /// applied(ok, message) when done.
   void open(const QString& path);
-  /// Applies a state to the model shown; emits applied.
+  /// Applies a state to the model shown; emits applied. A volume the state draws apart
+  /// (with the exact reference) is drawn by the window's renderer instead, and said so.
   void apply(const SceneState& state);
 
  signals:

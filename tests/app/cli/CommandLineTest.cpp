@@ -411,8 +411,8 @@ TEST(RenderCommand, APerCellFieldOnAGridIsDrawnByTheCpuRendererAndRefusedByTheTe
   for (const char* renderer : {"texture-raymarch", "texture-slices"}) {
     const auto r = runVolpost(common + " --renderer " + renderer);
     EXPECT_EQ(r.exitCode, 2) << renderer;
-    EXPECT_NE(r.output.find(
-                  "'material' is given per cell: choose a renderer that draws meshes (raycast, vicp, vicp-exact, cpu)"),
+    EXPECT_NE(r.output.find("'material' is given per cell: choose a renderer that draws meshes (raycast, vicp, "
+                            "vicp-exact, cpu, reference)"),
               std::string::npos)
         << r.output;
   }
@@ -727,6 +727,22 @@ TEST(RenderCommand, ExplicitCameraRoundTripsThroughTheStateFile) {
   EXPECT_EQ(runVolpost("render " + model + " --eye 5,0.5,0.5 --target 5,0.5,0.5 -o " + first).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --view-angle 180 -o " + first).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --up 0,0 -o " + first).exitCode, 2);
+}
+
+// A picture drawn by the reference renderer saves a state that draws it again with the
+// reference (it said raycast: `render --state` drew another renderer's picture).
+TEST(RenderCommand, AReferencePicturesStateDrawsItWithTheReferenceAgain) {
+  const std::string dir = ::testing::TempDir(), model = dataFile("bar/bar_tet4.vtu");
+  const std::string first = dir + "/reference.png", again = dir + "/reference_again.png",
+                    state = dir + "/reference.json";
+  const auto r = runVolpost("render " + model + " --field S.mises --renderer reference --size 48x32 -o " + first +
+                            " --save-state " + state);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(state);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"renderer\": \"reference\""), std::string::npos) << text;
+  ASSERT_EQ(runVolpost("render --state " + state + " --size 48x32 -o " + again).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(first)), QImage(QString::fromStdString(again)));
 }
 
 // The orientation axes sit in the lower left corner; --no-triad leaves them out, and the

@@ -94,3 +94,33 @@ TEST(SceneDrawing, ADrawingHandedAnotherSceneDrawsThatScene) {
   fresh.release();
   drawing.release();
 }
+
+// A renderer that draws apart (the exact reference of `volpost render`) is a scene's
+// choice a state file can hold, but a drawing says it cannot draw it here and names those
+// that can.
+TEST(SceneDrawing, ARendererThatDrawsApartIsRefusedNamingThoseThatDrawHere) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(16, 16);
+  VolumeRendererFactory renderers{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+                                    if (name == "raycast") return std::make_unique<volume::RayCaster>();
+                                    return nullptr;
+                                  },
+                                  {"raycast"}};
+  renderers.describeApart("reference", VolumeRendererTraits{});
+  Scene scene(renderers);
+  showVolume(scene, "viridis");
+  scene.setVolumeRenderer("reference");
+  SceneDrawing drawing;
+  drawing.initialize();
+  try {
+    (void)draw(drawing, scene, target);
+    ADD_FAILURE() << "drew a renderer that draws apart";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("makes its pictures apart (volpost render --renderer reference); choose one "
+                                         "that draws here (raycast)"),
+              std::string::npos)
+        << e.what();
+  }
+  drawing.release();
+}

@@ -207,6 +207,13 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   // A model next to the state file is written relative to it, and found again.
   const SceneState moved = SceneState::fromJson(s.toJson("/data"), "/elsewhere/view.json");
   EXPECT_EQ(moved.modelPath, "/elsewhere/model.vtu");
+  // A model given relative to where the command ran, outside the state's folder, is written
+  // in full: read relative to the state's folder it named a file that is not there.
+  SceneState typed = s;
+  typed.modelPath = "models/model.vtu";
+  const std::string expected = (std::filesystem::current_path() / "models/model.vtu").lexically_normal().string();
+  EXPECT_EQ(SceneState::fromJson(typed.toJson("/some/other/folder"), "/some/other/folder/view.json").modelPath,
+            expected);
 }
 
 // A model 6e6 units from the origin (a georeferenced survey): the view restored from a

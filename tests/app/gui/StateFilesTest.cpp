@@ -6,6 +6,8 @@
 
 #include "support/WindowParts.hpp"
 
+#include "RayCaster.hpp"
+
 #include <QApplication>
 #include <QMenu>
 #include <QMenuBar>
@@ -33,7 +35,16 @@ class StateFilesTest : public QObject {
  private slots:
   void init() {
     window_ = std::make_unique<QMainWindow>();
-    scene_ = std::make_unique<Scene>(VolumeRendererFactory{});
+    // The ray caster, and the reference described as drawn apart (as the app's factory does).
+    VolumeRendererFactory renderers{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+                                      if (name == "raycast") return std::make_unique<volume::RayCaster>();
+                                      return nullptr;
+                                    },
+                                    {"raycast"}};
+    VolumeRendererTraits exact;
+    exact.label = "Exact reference";
+    renderers.describeApart("reference", exact);
+    scene_ = std::make_unique<Scene>(renderers);
     QMenu* file = window_->menuBar()->addMenu("File");
     modelsOpened_.clear();
     busy_ = false;
@@ -99,6 +110,25 @@ class StateFilesTest : public QObject {
     QVERIFY(!applied.first().first().toBool());
     QCOMPARE(applied.first().at(1).toString(), QString("still loading the previous file"));
     QCOMPARE(followed_, 0);
+  }
+
+  // A state whose volume the exact reference drew (volpost render --renderer reference
+  // --save-state) opens with the window's renderer, which the status bar names.
+  void aReferenceVolumeIsDrawnByTheWindowsRenderer() {
+    SceneState state = scene_->state();
+    state.volume.shown = true;
+    state.volume.renderer = "reference";
+    const QString path = dir_.filePath("reference.json");
+    state.save(path.toStdString());
+    QSignalSpy applied(files_, &StateFiles::applied);
+    files_->open(path);
+    QCOMPARE(applied.count(), 1);
+    QVERIFY2(applied.first().first().toBool(), qPrintable(applied.first().at(1).toString()));
+    QVERIFY(scene_->volumeShown());
+    QCOMPARE(scene_->volume().renderer, std::string("raycast"));
+    QVERIFY2(window_->statusBar()->currentMessage().contains("drawn by the reference renderer with volpost render) "
+                                                             "is drawn here by raycast"),
+             qPrintable(window_->statusBar()->currentMessage()));
   }
 
   void aStateThatCannotBeWrittenSaysWhyAndLeavesNoFile() {
