@@ -22,6 +22,7 @@
 #include "StepController.hpp"
 #include "StreamlineActions.hpp"
 #include "Viewport.hpp"
+#include "VolumeActions.hpp"
 #include "WorkWithProgress.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
@@ -284,42 +285,21 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
       [this] {
         if (viewport_->scene().volumeShown()) viewport_->repaint();
       });
-  const std::vector<RendererEntry>& renderers = rendererMenu_->renderers();
-  volumeAction_ = view->addAction("&Volume Rendering");
-  volumeAction_->setObjectName("volumeAction");
-  volumeAction_->setCheckable(true);
-  volumeAction_->setShortcut(QKeySequence(Qt::Key_V));
-  volumeAction_->setEnabled(!renderers.empty());
-  if (renderers.empty()) volumeAction_->setToolTip("No volume renderer plugin is loaded");
-  connect(volumeAction_, &QAction::toggled, this, &MainWindow::setVolumeShown);
-
-  QAction* shading = view->addAction("&Shade the Volume by Its Gradient (grids)");
-  shading->setObjectName("shadingAction");
-  shading->setCheckable(true);
-  shading->setShortcut(QKeySequence(Qt::Key_L));
-  shading->setToolTip("Light a regular grid's volume (a seismic cube) with the light at the eye");
-  connect(shading, &QAction::toggled, this, [this, shading](bool on) {
-    if (!changeScene([on](Scene& s) { s.setShading(on); })) {
-      const QSignalBlocker block(shading);
-      shading->setChecked(false);  // a mesh: the message says why
-    }
-  });
-
-  QAction* load2d = view->addAction("Load a 2D Transfer Function (grids)...");
-  load2d->setObjectName("load2dAction");
-  load2d->setToolTip("Color and opacity over the value and its gradient magnitude (volpost-tf2d JSON): boundaries "
-                     "apart from the insides of the same value");
-  connect(load2d, &QAction::triggered, this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, "Load a 2D transfer function", QString(),
-                                                      "2D transfer functions (*.json);;All files (*)");
-    if (!path.isEmpty()) loadTransferFunction2D(path);
-  });
-  QAction* clear2d = view->addAction("Use the 1D Transfer Function");
-  clear2d->setObjectName("clear2dAction");
-  connect(clear2d, &QAction::triggered, this, [this] {
-    if (changeScene([](Scene& s) { s.setTransferFunction2D(std::nullopt); }))
-      statusBar()->showMessage("Volume colors from the 1D transfer function");
-  });
+  VolumeActions::Followers followers;
+  followers.shown = [this] {
+    for (QDockWidget* d : pluginDocks_)
+      if (d->isHidden()) {
+        d->show();
+        d->raise();
+      }
+  };
+  followers.viewChanged = [this] { notifyPanels(); };
+  followers.tablesChanged = [this] {
+    for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
+  };
+  volume_ = new VolumeActions(
+      *this, viewport_->scene(), *view, !rendererMenu_->renderers().empty(),
+      [this](const std::function<void(Scene&)>& c) { return changeScene(c); }, std::move(followers));
 
   clips_ = new ClipActions(
       *this, viewport_->scene(), *results, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
@@ -414,39 +394,6 @@ void MainWindow::chooseSurfaceOpacity() {
   if (!ok) return;
   if (changeScene([&](Scene& s) { s.setSurfaceOpacity(percent / 100.0); }))
     statusBar()->showMessage(QString("Surface opacity %1 %").arg(percent));
-}
-
-void MainWindow::setVolumeShown(bool on) {
-  if (!on || !session_) {
-    changeScene([](Scene& s) { s.setVolumeShown(false); });
-    notifyPanels();  // the color controls follow the view back (the Colors box stayed disabled)
-    return;
-  }
-  if (!viewport_->scene().view()) {
-    statusBar()->showMessage("Choose a result to render as a volume");
-    const QSignalBlocker block(volumeAction_);
-    volumeAction_->setChecked(false);
-    return;
-  }
-  if (!changeScene([](Scene& s) { s.setVolumeShown(true); })) {
-    const QSignalBlocker block(volumeAction_);
-    volumeAction_->setChecked(false);
-    return;
-  }
-  for (QDockWidget* d : pluginDocks_)
-    if (d->isHidden()) {
-      d->show();
-      d->raise();
-    }
-  QString message = QString("Volume rendering of %1: colors and opacity in the Transfer Function panel")
-                        .arg(QString::fromStdString(viewport_->scene().view()->quantity.displayName()));
-  const VolumeLayer& volume = viewport_->scene().volume();
-  if (!volume.isoSurfaces.empty() && !volume.isoQuantity.empty() &&
-      volume.isoQuantity != viewport_->scene().view()->quantity.key())
-    message += QString("; the iso-surfaces of %1 show in the surface view (a volume contours what it renders)")
-                   .arg(QString::fromStdString(volume.isoQuantity));
-  statusBar()->showMessage(message);
-  notifyPanels();
 }
 
 void MainWindow::buildToolbar() {
@@ -595,19 +542,12 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   }
   // What the scene dropped with the old model, the controls drop too (the deformed shape
   // stayed checked; the plot kept the old model's curves).
-  {
-    const QSignalBlocker block(volumeAction_);
-    volumeAction_->setChecked(false);
-  }
+  volume_->syncToScene();
   deformation_->syncToScene();
   streamlines_->syncToScene();
   clips_->syncToScene();
   if (linePlot_) linePlot_->modelChanged();
   if (session_) rendererMenu_->fitToModel(session_->model().grid.has_value());
-  if (auto* shading = findChild<QAction*>("shadingAction")) {
-    const QSignalBlocker block(shading);
-    shading->setChecked(viewport_->scene().volume().shading);
-  }
   fillQuantities();
   showModelInfo();
   std::size_t warnings = 0;
@@ -698,10 +638,7 @@ void MainWindow::refreshScalars() {
                                  .arg(view->range.nanCount));
   }
   if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();  // another step: the lines follow
-  if (!viewport_->scene().view() && volumeAction_ && volumeAction_->isChecked()) {
-    const QSignalBlocker block(volumeAction_);
-    volumeAction_->setChecked(false);
-  }
+  volume_->syncToScene();                                                  // without a result, no volume
   notifyPanels();
 }
 
@@ -714,34 +651,10 @@ std::optional<TransferFunction2D> MainWindow::transferFunction2D() const {
 }
 
 bool MainWindow::setTransferFunction2D(const std::optional<TransferFunction2D>& tf) {
-  if (tf && (!session_ || !session_->model().grid)) {
-    statusBar()->showMessage("2D transfer functions (over the value and its gradient) are drawn on regular grids "
-                             "(SEG-Y, image data); open one first");
-    return false;
-  }
-  const bool wasSet = transferFunction2D().has_value();
-  if (!changeScene([&](Scene& s) { s.setTransferFunction2D(tf); })) return false;
-  // Switched on or off: the 1D editor says whether its function is the one drawn.
-  if (wasSet != tf.has_value())
-    for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();
-  return true;
+  return volume_->setTransferFunction2D(tf);
 }
 
-bool MainWindow::loadTransferFunction2D(const QString& path) {
-  const std::string file = path.toStdString();
-  std::optional<TransferFunction2D> tf;
-  try {
-    tf = TransferFunction2D::fromJson(readTextFile(file, 16u << 20));
-  } catch (const std::exception& e) {
-    QMessageBox::warning(this, "2D transfer function", QString::fromStdString(file + ": " + e.what()));
-    return false;
-  }
-  if (!setTransferFunction2D(tf)) return false;
-  for (PanelPlugin* panel : plugins_.panelPlugins()) panel->hostChanged();  // the editor shows it
-  statusBar()->showMessage("Volume colors from the 2D transfer function " + QFileInfo(path).fileName() +
-                           " (value x gradient magnitude)");
-  return true;
-}
+bool MainWindow::loadTransferFunction2D(const QString& path) { return volume_->loadTransferFunction2D(path); }
 
 void MainWindow::setTransferFunction(const TransferFunction& tf) {
   const auto& view = viewport_->scene().view();
@@ -879,9 +792,8 @@ void MainWindow::syncControlsToScene() {
   check(triadAction_, state.triad);
   deformation_->syncToScene();
   check(orthoAction_, state.camera && state.camera->orthographic);
-  check(volumeAction_, state.volume.shown);
+  volume_->syncToScene();
   streamlines_->syncToScene();
-  check(findChild<QAction*>("shadingAction"), state.volume.shading);
   rendererMenu_->syncToScene();
   clips_->syncToScene();
   probes_->syncToScene();

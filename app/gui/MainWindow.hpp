@@ -40,6 +40,7 @@ class StateFiles;
 class StepController;
 class StreamlineActions;
 class Viewport;
+class VolumeActions;
 
 class MainWindow : public QMainWindow, public PanelHost {
   Q_OBJECT
@@ -119,9 +120,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   void showModelInfo();
   void notifyPanels();
   void buildVolumeMenu(QMenu* volume, QMenu* results);
-  /// Unless the user or a state chose: a renderer that draws the new model's kind (a grid
-  /// renderer for a seismic cube, a mesh renderer for a mesh).
-  void setVolumeShown(bool on);
   void chooseIsoSurfaces();
   void chooseSurfaceOpacity();
 
@@ -135,7 +133,6 @@ class MainWindow : public QMainWindow, public PanelHost {
   QLabel* glLabel_ = nullptr;
   QLabel* refiningLabel_ = nullptr;  ///< shown while the renderer refines a quick frame
   QAction* edgesAction_ = nullptr;
-  QAction* volumeAction_ = nullptr;
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
   QAction* triadAction_ = nullptr;
@@ -151,6 +148,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   DeformationActions* deformation_ = nullptr;
   ModelLoader* loader_ = nullptr;
   StateFiles* stateFiles_ = nullptr;
+  VolumeActions* volume_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   class GridSlicesPanel* gridSlices_ = nullptr;

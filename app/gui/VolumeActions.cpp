@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+#include "VolumeActions.hpp"
+
+#include "../core/Scene.hpp"
+
+#include "host/TextFile.hpp"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSignalBlocker>
+#include <QStatusBar>
+
+namespace volpost::app {
+
+VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, bool renderersLoaded,
+                             ChangeScene changeScene, Followers followers)
+    : QObject(&window),
+      window_(window),
+      scene_(scene),
+      changeScene_(std::move(changeScene)),
+      followers_(std::move(followers)) {
+  volume_ = view.addAction("&Volume Rendering");
+  volume_->setObjectName("volumeAction");
+  volume_->setCheckable(true);
+  volume_->setShortcut(QKeySequence(Qt::Key_V));
+  volume_->setEnabled(renderersLoaded);
+  if (!renderersLoaded) volume_->setToolTip("No volume renderer plugin is loaded");
+  connect(volume_, &QAction::toggled, this, &VolumeActions::show);
+
+  shading_ = view.addAction("&Shade the Volume by Its Gradient (grids)");
+  shading_->setObjectName("shadingAction");
+  shading_->setCheckable(true);
+  shading_->setShortcut(QKeySequence(Qt::Key_L));
+  shading_->setToolTip("Light a regular grid's volume (a seismic cube) with the light at the eye");
+  connect(shading_, &QAction::toggled, this, [this](bool on) {
+    changeScene_([on](Scene& s) { s.setShading(on); });  // a mesh: the message says why
+    syncToScene();
+  });
+
+  QAction* load2d = view.addAction("Load a 2D Transfer Function (grids)...");
+  load2d->setObjectName("load2dAction");
+  load2d->setToolTip(
+      "Color and opacity over the value and its gradient magnitude (volpost-tf2d JSON): boundaries "
+      "apart from the insides of the same value");
+  connect(load2d, &QAction::triggered, this, [this] {
+    const QString path = QFileDialog::getOpenFileName(&window_, "Load a 2D transfer function", QString(),
+                                                      "2D transfer functions (*.json);;All files (*)");
+    if (!path.isEmpty()) loadTransferFunction2D(path);
+  });
+  QAction* clear2d = view.addAction("Use the 1D Transfer Function");
+  clear2d->setObjectName("clear2dAction");
+  connect(clear2d, &QAction::triggered, this, [this] {
+    if (setTransferFunction2D(std::nullopt))
+      window_.statusBar()->showMessage("Volume colors from the 1D transfer function");
+  });
+}
+
+void VolumeActions::syncToScene() {
+  const QSignalBlocker a(volume_), b(shading_);
+  volume_->setChecked(scene_.volumeShown());
+  shading_->setChecked(scene_.volume().shading);
+}
+
+void VolumeActions::show(bool on) {
+  if (!on || !scene_.session()) {
+    changeScene_([](Scene& s) { s.setVolumeShown(false); });
+    syncToScene();
+    followers_.viewChanged();  // the color controls follow the view back
+    return;
+  }
+  if (!scene_.view()) {
+    window_.statusBar()->showMessage("Choose a result to render as a volume");
+    syncToScene();
+    return;
+  }
+  const bool ok = changeScene_([](Scene& s) { s.setVolumeShown(true); });
+  syncToScene();
+  if (!ok) return;
+  followers_.shown();
+  QString message = QString("Volume rendering of %1: colors and opacity in the Transfer Function panel")
+                        .arg(QString::fromStdString(scene_.view()->quantity.displayName()));
+  const VolumeLayer& volume = scene_.volume();
+  if (!volume.isoSurfaces.empty() && !volume.isoQuantity.empty() && volume.isoQuantity != scene_.view()->quantity.key())
+    message += QString("; the iso-surfaces of %1 show in the surface view (a volume contours what it renders)")
+                   .arg(QString::fromStdString(volume.isoQuantity));
+  window_.statusBar()->showMessage(message);
+  followers_.viewChanged();
+}
+
+bool VolumeActions::setTransferFunction2D(const std::optional<TransferFunction2D>& tf) {
+  if (tf && (!scene_.session() || !scene_.session()->model().grid)) {
+    window_.statusBar()->showMessage(
+        "2D transfer functions (over the value and its gradient) are drawn on regular "
+        "grids (SEG-Y, image data); open one first");
+    return false;
+  }
+  const bool wasSet = scene_.volume().transferFunction2D.has_value();
+  if (!changeScene_([&](Scene& s) { s.setTransferFunction2D(tf); })) return false;
+  // Switched on or off: the 1D editor says whether its function is the one drawn.
+  if (wasSet != tf.has_value()) followers_.tablesChanged();
+  return true;
+}
+
+bool VolumeActions::loadTransferFunction2D(const QString& path) {
+  const std::string file = path.toStdString();
+  std::optional<TransferFunction2D> tf;
+  try {
+    tf = TransferFunction2D::fromJson(readTextFile(file, 16u << 20));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(&window_, "2D transfer function", QString::fromStdString(file + ": " + e.what()));
+    return false;
+  }
+  if (!setTransferFunction2D(tf)) return false;
+  followers_.tablesChanged();  // the editor shows the new one
+  window_.statusBar()->showMessage("Volume colors from the 2D transfer function " + QFileInfo(path).fileName() +
+                                   " (value x gradient magnitude)");
+  return true;
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+// The window's volume entries alone (a plain main window and a scene, no OpenGL): they
+// show the scene's volume and shading, refuse what the model cannot take (saying why,
+// the entry left off), and tell the window when the volume or its 2D transfer function
+// comes or goes.
+#include "gui/VolumeActions.hpp"
+
+#include "support/WindowParts.hpp"
+
+#include "RayCaster.hpp"
+
+#include <QAction>
+#include <QApplication>
+#include <QMenu>
+#include <QMenuBar>
+#include <QTest>
+
+#include <memory>
+
+using namespace volpost;
+using namespace volpost::app;
+
+class VolumeActionsTest : public QObject {
+  Q_OBJECT
+
+ private:
+  std::unique_ptr<QMainWindow> window_;
+  std::unique_ptr<Scene> scene_;
+  VolumeActions* actions_ = nullptr;
+  int shown_ = 0, viewChanges_ = 0, tableChanges_ = 0;
+
+  QAction* volume() { return window_->findChild<QAction*>("volumeAction"); }
+  QAction* shading() { return window_->findChild<QAction*>("shadingAction"); }
+  QString status() { return window_->statusBar()->currentMessage(); }
+  static TransferFunction2D boundaries() {
+    return TransferFunction2D::fromJson(R"({"format":"volpost-tf2d","version":1,"widgets":[
+      {"shape":"triangle","value":0.0,"width":0.5,"gradient":[0.0,0.25],"color":[0.95,0.45,0.1],"extinction":0.02}]})");
+  }
+
+ private slots:
+  void init() {
+    window_ = std::make_unique<QMainWindow>();
+    scene_ =
+        std::make_unique<Scene>(VolumeRendererFactory{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+                                                        if (name == "raycast")
+                                                          return std::make_unique<volume::RayCaster>();
+                                                        return nullptr;
+                                                      },
+                                                      {"raycast"}});
+    QMenu* view = window_->menuBar()->addMenu("View");
+    shown_ = viewChanges_ = tableChanges_ = 0;
+    actions_ = new VolumeActions(*window_, *scene_, *view, true, volpost::test::changingScene(*window_, *scene_),
+                                 {[this] { ++shown_; }, [this] { ++viewChanges_; }, [this] { ++tableChanges_; }});
+    scene_->setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));
+  }
+
+  void cleanup() {
+    window_.reset();
+    scene_.reset();
+  }
+
+  void theVolumeNeedsAResultAndTheEntryShowsTheScene() {
+    volume()->setChecked(true);
+    QVERIFY(!scene_->volumeShown());
+    QVERIFY(!volume()->isChecked());
+    QCOMPARE(status(), QString("Choose a result to render as a volume"));
+    scene_->setResult("S.mises", 0);
+    volume()->setChecked(true);
+    QVERIFY(scene_->volumeShown());
+    QVERIFY(volume()->isChecked());
+    QCOMPARE(shown_, 1);
+    QVERIFY(status().startsWith("Volume rendering of S von Mises"));
+    volume()->setChecked(false);
+    QVERIFY(!scene_->volumeShown());
+    QCOMPARE(viewChanges_, 2);
+    scene_->setVolumeShown(true);  // as a state file would
+    actions_->syncToScene();
+    QVERIFY(volume()->isChecked());
+  }
+
+  void aMeshRefusesShadingAndTwoDimensionalTransferFunctions() {
+    shading()->setChecked(true);
+    QVERIFY(!scene_->volume().shading);
+    QVERIFY(!shading()->isChecked());
+    QVERIFY2(status().contains("regular grids"), qPrintable(status()));
+    QVERIFY(!actions_->setTransferFunction2D(boundaries()));
+    QVERIFY(!scene_->volume().transferFunction2D);
+    QCOMPARE(tableChanges_, 0);
+  }
+
+  void aGridTakesThemAndTheEditorsAreTold() {
+    scene_->setSession(volpost::test::loadTestModel("formats/image_points_ascii.vtk"));
+    shading()->setChecked(true);
+    QVERIFY(scene_->volume().shading);
+    QVERIFY(actions_->setTransferFunction2D(boundaries()));
+    QVERIFY(scene_->volume().transferFunction2D);
+    QCOMPARE(tableChanges_, 1);
+    window_->findChild<QAction*>("clear2dAction")->trigger();
+    QVERIFY(!scene_->volume().transferFunction2D);
+    QCOMPARE(tableChanges_, 2);  // the 1D editor draws again
+    QCOMPARE(status(), QString("Volume colors from the 1D transfer function"));
+  }
+
+  void withoutRenderersTheEntrySaysWhy() {
+    QMainWindow bare;
+    QMenu* view = bare.menuBar()->addMenu("View");
+    new VolumeActions(bare, *scene_, *view, false, volpost::test::changingScene(bare, *scene_), {});
+    QAction* entry = bare.findChild<QAction*>("volumeAction");
+    QVERIFY(!entry->isEnabled());
+    QCOMPARE(entry->toolTip(), QString("No volume renderer plugin is loaded"));
+  }
+};
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");  // menus and actions only: no display needed
+  QApplication app(argc, argv);
+  VolumeActionsTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "VolumeActionsTest.moc"
