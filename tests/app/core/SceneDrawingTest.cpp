@@ -3,10 +3,9 @@
 // a second drawing of one scene, or a drawing handed another scene, draws everything.
 #include "support/HeadlessGl.hpp"
 #include "support/QtGuiEnvironment.hpp"
+#include "support/RayCasterScene.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
-
-#include "RayCaster.hpp"
 
 #include "core/SceneDrawing.hpp"
 
@@ -18,12 +17,7 @@ using namespace volpost::app;
 
 namespace {
 
-VolumeRendererFactory rayCasterOnly() {
-  return [](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
-    if (name == "raycast") return std::make_unique<volume::RayCaster>();
-    return nullptr;
-  };
-}
+using volpost::test::rayCasterOnly;
 
 std::shared_ptr<const ModelSession> bar() {
   static const auto session =
@@ -102,11 +96,7 @@ TEST(SceneDrawing, ARendererThatDrawsApartIsRefusedNamingThoseThatDrawHere) {
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
   OffscreenTarget target(16, 16);
-  VolumeRendererFactory renderers{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
-                                    if (name == "raycast") return std::make_unique<volume::RayCaster>();
-                                    return nullptr;
-                                  },
-                                  {"raycast"}};
+  VolumeRendererFactory renderers = rayCasterOnly();
   renderers.describeApart("reference", VolumeRendererTraits{});
   Scene scene(renderers);
   showVolume(scene, "viridis");

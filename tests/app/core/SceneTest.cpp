@@ -2,12 +2,12 @@
 // The Scene: what each change costs the volume renderer (a dragged plane: only the
 // frame), its state as a file and back (the same picture), and what a state file may not
 // say (each refusal names the key).
-#include "support/ReaderSupport.hpp"
 #include "support/QtGuiEnvironment.hpp"
+#include "support/RayCasterScene.hpp"
+#include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
 #include "CpuVolumeRenderer.hpp"
-#include "RayCaster.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
 #include "core/AnimationFrames.hpp"
@@ -31,12 +31,7 @@ using namespace volpost::app;
 
 namespace {
 
-VolumeRendererFactory rayCasterOnly() {
-  return [](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
-    if (name == "raycast") return std::make_unique<volume::RayCaster>();
-    return nullptr;
-  };
-}
+using volpost::test::rayCasterOnly;
 
 std::shared_ptr<const ModelSession> bar() {
   static const auto session =

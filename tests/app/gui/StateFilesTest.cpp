@@ -6,7 +6,7 @@
 
 #include "support/WindowParts.hpp"
 
-#include "RayCaster.hpp"
+#include "support/RayCasterScene.hpp"
 
 #include <QApplication>
 #include <QMenu>
@@ -36,11 +36,7 @@ class StateFilesTest : public QObject {
   void init() {
     window_ = std::make_unique<QMainWindow>();
     // The ray caster, and the reference described as drawn apart (as the app's factory does).
-    VolumeRendererFactory renderers{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
-                                      if (name == "raycast") return std::make_unique<volume::RayCaster>();
-                                      return nullptr;
-                                    },
-                                    {"raycast"}};
+    VolumeRendererFactory renderers = volpost::test::rayCasterOnly();
     VolumeRendererTraits exact;
     exact.label = "Exact reference";
     renderers.describeApart("reference", exact);

@@ -7,7 +7,7 @@
 
 #include "support/WindowParts.hpp"
 
-#include "RayCaster.hpp"
+#include "support/RayCasterScene.hpp"
 
 #include <QAction>
 #include <QApplication>
@@ -40,13 +40,7 @@ class VolumeActionsTest : public QObject {
  private slots:
   void init() {
     window_ = std::make_unique<QMainWindow>();
-    scene_ =
-        std::make_unique<Scene>(VolumeRendererFactory{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
-                                                        if (name == "raycast")
-                                                          return std::make_unique<volume::RayCaster>();
-                                                        return nullptr;
-                                                      },
-                                                      {"raycast"}});
+    scene_ = std::make_unique<Scene>(volpost::test::rayCasterOnly());
     QMenu* view = window_->menuBar()->addMenu("View");
     shown_ = viewChanges_ = tableChanges_ = 0;
     actions_ = new VolumeActions(*window_, *scene_, *view, true, volpost::test::changingScene(*window_, *scene_),
