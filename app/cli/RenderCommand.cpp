@@ -49,6 +49,10 @@ struct Options {
   QCommandLineOption step{"step", "Load case / time step, 1-based (default 1).", "K"};
   QCommandLineOption camera{"camera", "View: iso, +x, -x, +y, -y, +z, -z; then az=DEG, el=DEG, zoom=F, "
                                       "ortho or persp, comma-separated (default iso).", "SPEC"};
+  QCommandLineOption view{"view",
+                          "A view saved in the state file under NAME (the window's View > Saved Views), "
+                          "before --camera and --eye change it.",
+                          "NAME"};
   QCommandLineOption eye{"eye", "Explicit camera: where the eye is (model coordinates; after --camera).", "X,Y,Z"};
   QCommandLineOption target{"target", "Explicit camera: the point looked at (default: the model's centre).", "X,Y,Z"};
   QCommandLineOption up{"up", "Explicit camera: the direction that is up in the picture.", "X,Y,Z"};
@@ -428,6 +432,10 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     scene.setDeformation(d);  // invalid_argument (not a nodal vector field): a usage error
   }
   if (p.isSet(o.flat)) scene.setLighting(false);
+  if (p.isSet(o.view)) {
+    if (p.isSet(o.camera)) throw UsageError("--view and --camera both choose the view: give one");
+    scene.showView(p.value(o.view).toStdString());  // invalid_argument naming the saved views: a usage error
+  }
   if (p.isSet(o.camera)) {
     scene.camera().setView(StandardView::Isometric);
     scene.fitCamera();
@@ -500,10 +508,14 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions({o.field, o.step, o.camera, o.eye, o.target, o.up, o.viewAngle, o.size, o.colormap, o.range, o.noEdges, o.noLegend, o.noTriad, o.deform, o.undeformed, o.flat, o.output,
-                     o.renderer, o.mode, o.tf, o.tf2d, o.clip, o.clipBox, o.iso, o.volumeEdges, o.samplingStep,
-                     o.termination, o.shading, o.floatOut, o.threads, o.state, o.saveState, o.streamlines, o.lineWidth, o.tubes,
-                     o.tubeRadius, o.radiusByValue, o.arrows, o.noSurface, o.surfaceOpacity, o.probe, o.markExtremes, o.allSteps, o.fps, o.readerOption, o.slice});
+  parser.addOptions(
+      {o.field,        o.step,       o.camera,        o.view,         o.eye,         o.target,         o.up,
+       o.viewAngle,    o.size,       o.colormap,      o.range,        o.noEdges,     o.noLegend,       o.noTriad,
+       o.deform,       o.undeformed, o.flat,          o.output,       o.renderer,    o.mode,           o.tf,
+       o.tf2d,         o.clip,       o.clipBox,       o.iso,          o.volumeEdges, o.samplingStep,   o.termination,
+       o.shading,      o.floatOut,   o.threads,       o.state,        o.saveState,   o.streamlines,    o.lineWidth,
+       o.tubes,        o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,   o.surfaceOpacity, o.probe,
+       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

@@ -58,6 +58,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.isoQuantity.clear();
   state_.gridSlices = {};
   state_.plotLine.reset();
+  state_.views.clear();  // cameras placed about the last model
+  viewHistory_.clear();
   state_.surfaceOpacity = 1.0;  // a see-through surface chosen for another model's lines would stay a ghost
   state_.surfaceShown = true;  // hidden for another model's slices, it would leave this one's view empty
   state_.volume.transferFunction.reset();
@@ -261,8 +263,7 @@ void Scene::setVolumeEdges(bool show) { state_.volume.edges = show; }
 
 // ---- the whole state ----
 
-SceneState Scene::state() const {
-  SceneState s = state_;
+CameraState Scene::cameraState() const {
   CameraState c;
   c.eye = camera_.eye();
   c.target = camera_.target();
@@ -271,8 +272,83 @@ SceneState Scene::state() const {
   c.orthographic = camera_.projection() == Camera::Projection::Orthographic;
   c.rotation = camera_.rotation();
   c.distance = camera_.distance();
-  s.camera = c;
+  return c;
+}
+
+SceneState Scene::state() const {
+  SceneState s = state_;
+  s.camera = cameraState();
   return s;
+}
+
+Camera Scene::cameraAt(const CameraState& c) const {
+  Camera camera = camera_;
+  if (session_) camera.fit(session_->model().bounds());
+  camera.setProjection(c.orthographic ? Camera::Projection::Orthographic : Camera::Projection::Perspective);
+  camera.setFieldOfView(c.fieldOfView);
+  camera.lookAt(c.eye, c.target, c.up);  // checks them
+  // The camera as it was held, when that agrees with the eye and up (to their coordinates'
+  // rounding); otherwise the eye and up as typed.
+  if (c.rotation && c.distance) {
+    Camera held = camera;
+    held.place(c.target, *c.rotation, *c.distance);
+    const double scale = glm::length(c.eye) + glm::length(c.target) + *c.distance;
+    if (glm::length(held.eye() - c.eye) <= 1e-12 * scale && glm::length(held.up() - glm::normalize(c.up)) <= 1e-12)
+      camera = held;
+  }
+  return camera;
+}
+
+// ---- saved views and the views before ----
+
+void Scene::saveView(const std::string& name) {
+  if (const std::string why = viewNameProblem(name); !why.empty())
+    throw std::invalid_argument("the view's name " + why);
+  for (NamedView& v : state_.views)
+    if (v.name == name) {
+      v.camera = cameraState();
+      return;
+    }
+  if (state_.views.size() >= kMaxViews)
+    throw std::invalid_argument("at most " + std::to_string(kMaxViews) + " saved views: remove one first");
+  state_.views.push_back({name, cameraState()});
+}
+
+void Scene::showView(const std::string& name) {
+  for (const NamedView& v : state_.views)
+    if (v.name == name) {
+      const Camera camera = cameraAt(v.camera);  // throws before anything changes
+      rememberView();
+      camera_ = camera;
+      return;
+    }
+  std::string names;
+  for (const NamedView& v : state_.views) names += (names.empty() ? "" : ", ") + ("\"" + v.name + "\"");
+  throw std::invalid_argument("no view is saved as \"" + name + "\"" +
+                              (names.empty() ? std::string(": none is saved") : "; the saved views: " + names));
+}
+
+void Scene::removeView(const std::string& name) {
+  std::erase_if(state_.views, [&](const NamedView& v) { return v.name == name; });
+}
+
+void Scene::rememberView() {
+  const CameraState now = cameraState();
+  if (!viewHistory_.empty() && viewHistory_.back() == now) return;
+  viewHistory_.push_back(now);
+  if (viewHistory_.size() > kViewHistory) viewHistory_.erase(viewHistory_.begin());
+}
+
+bool Scene::previousView() {
+  const CameraState now = cameraState();
+  while (!viewHistory_.empty()) {
+    const CameraState before = viewHistory_.back();
+    viewHistory_.pop_back();
+    if (before == now) continue;
+    camera_ = cameraAt(before);
+    return true;
+  }
+  return false;
 }
 
 void Scene::applyState(const SceneState& s) {
@@ -304,25 +380,18 @@ void Scene::applyState(const SceneState& s) {
   checkClipPlanes(s.volume.allClipPlanes());
   checkIsoSurfaces(s.volume.isoSurfaces);
   Camera camera = camera_;
-  camera.fit(session_->model().bounds());
   if (s.camera) {
-    camera.setProjection(s.camera->orthographic ? Camera::Projection::Orthographic : Camera::Projection::Perspective);
-    camera.setFieldOfView(s.camera->fieldOfView);
-    const CameraState& c = *s.camera;
-    camera.lookAt(c.eye, c.target, c.up);  // checks them
-    // The camera as it was held, when that agrees with the eye and up (to their coordinates'
-    // rounding); otherwise the eye and up as typed.
-    if (c.rotation && c.distance) {
-      Camera held = camera;
-      held.place(c.target, *c.rotation, *c.distance);
-      const double scale = glm::length(c.eye) + glm::length(c.target) + *c.distance;
-      if (glm::length(held.eye() - c.eye) <= 1e-12 * scale &&
-          glm::length(held.up() - glm::normalize(c.up)) <= 1e-12)
-        camera = held;
-    }
+    camera = cameraAt(*s.camera);
   } else {
     camera.setView(StandardView::Isometric);
     camera.fit(session_->model().bounds());
+  }
+  if (s.views.size() > kMaxViews)
+    throw std::invalid_argument("the state saves more than " + std::to_string(kMaxViews) + " views");
+  for (std::size_t i = 0; i < s.views.size(); ++i) {
+    if (const std::string why = viewNameProblem(s.views[i].name); !why.empty())
+      throw std::invalid_argument("the state's view " + std::to_string(i + 1) + ": its name " + why);
+    (void)cameraAt(s.views[i].camera);  // checks it
   }
 
   const bool locationChanged = !view_ || !view || view_->location != view->location;

@@ -139,8 +139,9 @@ class Scene {
   /// 0..1; below 1 the surface is see-through. Throws std::invalid_argument otherwise.
   void setSurfaceOpacity(double opacity);
   /// Checks the field, the seeds and the coloring quantity first (std::invalid_argument
-  /// saying what is wrong, nothing changed). Lines are traced on the next render, or by
-  /// the caller with traceStreamlines() (on a worker thread) and setStreamlineResult().
+  /// saying what is wrong, nothing changed). The lines are traced by updateStreamlines()
+  /// (a headless picture does), or by the caller with traceStreamlines() on a worker thread
+  /// and setStreamlineResult() (the window).
   void setStreamlines(StreamlineLayer layer);
   const StreamlineLayer& streamlines() const { return state_.streamlines; }
   /// True when the lines shown do not belong to the current model, step or layer.
@@ -192,6 +193,23 @@ class Scene {
   const Camera& camera() const { return camera_; }
   void fitCamera();
 
+  // ---- saved views, and the views before (View > Saved Views, Previous View) ----
+  /// Saves the camera as it is under `name`, replacing a view of that name. Throws
+  /// std::invalid_argument for a name that cannot be one or past kMaxViews views.
+  void saveView(const std::string& name);
+  /// Turns the camera to the view saved as `name` (remembered first, for previousView).
+  /// Throws std::invalid_argument naming the saved views when there is no such view.
+  void showView(const std::string& name);
+  void removeView(const std::string& name);
+  const std::vector<NamedView>& views() const { return state_.views; }
+  /// Remembers the camera before the user moves it (a drag, a standard view, a saved view),
+  /// for previousView; the last kViewHistory are kept.
+  void rememberView();
+  /// Back to the camera remembered last that differs from the present one; false when
+  /// none is left.
+  bool previousView();
+  static constexpr std::size_t kViewHistory = 50;
+
   /// The whole state (camera included) and back. applyState needs the model of
   /// state.modelPath already set with setSession; it checks everything first (quantity,
   /// step, renderer, color map) and throws std::invalid_argument, changing nothing.
@@ -237,6 +255,10 @@ class Scene {
   void checkStreamlines(const StreamlineLayer& layer) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
   void checkSamplingStep(double step) const;
+  CameraState cameraState() const;
+  /// The camera a saved one describes, fitted to the model first (clipping range).
+  Camera cameraAt(const CameraState& c) const;
+  std::vector<CameraState> viewHistory_;  ///< remembered cameras, the last one newest
   std::size_t stepCountOf(const std::string& quantityKey) const;
   mutable std::optional<ScalarView> isoView_;          ///< another quantity's values, for its iso-surfaces
   mutable std::string isoViewFor_;                     ///< the quantity, step and view version isoView_ is of

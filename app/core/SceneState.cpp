@@ -245,7 +245,67 @@ StreamlineLayer streamlinesFrom(const Reader& r, const json& in) {
   return l;
 }
 
+json jsonOf(const CameraState& camera) {
+  json out = {{"eye", jsonOf(camera.eye)},
+              {"target", jsonOf(camera.target)},
+              {"up", jsonOf(camera.up)},
+              {"fieldOfView", camera.fieldOfView},
+              {"projection", camera.orthographic ? "orthographic" : "perspective"}};
+  if (camera.rotation && camera.distance) {
+    const glm::dquat& q = *camera.rotation;
+    out["rotation"] = json::array({q.w, q.x, q.y, q.z});
+    out["distance"] = *camera.distance;
+  }
+  return out;
+}
+
+// A camera object of the file; `key` names it in messages ("camera", "views[2].camera").
+CameraState cameraFrom(const Reader& r, const json& camera, const std::string& key) {
+  r.object(camera, key);
+  CameraState c;
+  const json* eye = r.find(camera, "eye");
+  const json* target = r.find(camera, "target");
+  const json* up = r.find(camera, "up");
+  if (!eye || !target || !up) r.fail(key, "needs \"eye\", \"target\" and \"up\"");
+  c.eye = r.vec3(*eye, key + ".eye");
+  c.target = r.vec3(*target, key + ".target");
+  c.up = r.vec3(*up, key + ".up");
+  if (const json* f = r.find(camera, "fieldOfView")) c.fieldOfView = r.number(*f, key + ".fieldOfView");
+  if (!(c.fieldOfView > 0.0 && c.fieldOfView < 180.0))
+    r.fail(key + ".fieldOfView", "must lie between 0 and 180 degrees");
+  if (const json* p = r.find(camera, "projection")) {
+    const std::string projection = r.text(*p, key + ".projection");
+    if (projection != "perspective" && projection != "orthographic")
+      r.fail(key + ".projection", "must be \"perspective\" or \"orthographic\"");
+    c.orthographic = projection == "orthographic";
+  }
+  const json* rotation = r.find(camera, "rotation");
+  const json* distance = r.find(camera, "distance");
+  if (bool(rotation) != bool(distance)) r.fail(key, "needs \"rotation\" and \"distance\" together");
+  if (rotation) {
+    if (!rotation->is_array() || rotation->size() != 4) r.fail(key + ".rotation", "must be [w, x, y, z]");
+    double q[4];
+    for (std::size_t i = 0; i < 4; ++i) q[i] = r.number((*rotation)[i], key + ".rotation");
+    c.rotation = glm::dquat(q[0], q[1], q[2], q[3]);
+    c.distance = r.number(*distance, key + ".distance");
+    if (!(glm::length(*c.rotation) > 0.0) || !(*c.distance > 0.0) || !std::isfinite(*c.distance))
+      r.fail(key, "has a zero rotation or a distance that is not positive");
+  }
+  if (!(glm::length(c.eye - c.target) > 0.0)) r.fail(key, "has the eye on the target");
+  if (!(glm::length(glm::cross(c.target - c.eye, c.up)) > 0.0))
+    r.fail(key + ".up", "is parallel to the view direction");
+  return c;
+}
+
 }  // namespace
+
+std::string viewNameProblem(const std::string& name) {
+  if (name.empty() || name.find_first_not_of(" \t") == std::string::npos) return "is empty";
+  if (name.size() > kMaxViewNameBytes) return "is longer than " + std::to_string(kMaxViewNameBytes) + " bytes";
+  for (const unsigned char c : name)
+    if (c < 0x20) return "holds a control character";
+  return {};
+}
 
 std::vector<ClipPlane> clipBoxPlanes(const ClipBox& b) {
   return {{{b[0], 0, 0}, {1, 0, 0}}, {{b[1], 0, 0}, {-1, 0, 0}}, {{0, b[2], 0}, {0, 1, 0}},
@@ -284,19 +344,11 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
     out["gridSlices"] = slices;
   }
   out["result"] = {{"quantity", quantity.empty() ? json(nullptr) : json(quantity)}, {"step", step + 1}};
-  if (camera) {
-    out["camera"] = {{"eye", jsonOf(camera->eye)},
-                     {"target", jsonOf(camera->target)},
-                     {"up", jsonOf(camera->up)},
-                     {"fieldOfView", camera->fieldOfView},
-                     {"projection", camera->orthographic ? "orthographic" : "perspective"}};
-    if (camera->rotation && camera->distance) {
-      const glm::dquat& q = *camera->rotation;
-      out["camera"]["rotation"] = json::array({q.w, q.x, q.y, q.z});
-      out["camera"]["distance"] = *camera->distance;
-    }
-  } else {
-    out["camera"] = nullptr;
+  out["camera"] = camera ? jsonOf(*camera) : json(nullptr);
+  if (!views.empty()) {
+    json named = json::array();
+    for (const NamedView& v : views) named.push_back({{"name", v.name}, {"camera", jsonOf(v.camera)}});
+    out["views"] = named;
   }
   out["colors"] = {{"map", colorMap},
                    {"range", fixedRange       ? json::array({fixedRange->min, fixedRange->max})
@@ -354,39 +406,23 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
       s.step = std::size_t(st->get<long long>() - 1);
     }
   }
-  if (const json* camera = r.find(in, "camera")) {
-    r.object(*camera, "camera");
-    CameraState c;
-    const json* eye = r.find(*camera, "eye");
-    const json* target = r.find(*camera, "target");
-    const json* up = r.find(*camera, "up");
-    if (!eye || !target || !up) r.fail("camera", "needs \"eye\", \"target\" and \"up\"");
-    c.eye = r.vec3(*eye, "camera.eye");
-    c.target = r.vec3(*target, "camera.target");
-    c.up = r.vec3(*up, "camera.up");
-    if (const json* f = r.find(*camera, "fieldOfView")) c.fieldOfView = r.number(*f, "camera.fieldOfView");
-    if (!(c.fieldOfView > 0.0 && c.fieldOfView < 180.0)) r.fail("camera.fieldOfView", "must lie between 0 and 180 degrees");
-    if (const json* p = r.find(*camera, "projection")) {
-      const std::string projection = r.text(*p, "camera.projection");
-      if (projection != "perspective" && projection != "orthographic")
-        r.fail("camera.projection", "must be \"perspective\" or \"orthographic\"");
-      c.orthographic = projection == "orthographic";
+  if (const json* camera = r.find(in, "camera")) s.camera = cameraFrom(r, *camera, "camera");
+  if (const json* views = r.find(in, "views")) {
+    const json& named = r.array(*views, "views");
+    if (named.size() > kMaxViews)
+      r.fail("views", "holds " + std::to_string(named.size()) + " views; at most " + std::to_string(kMaxViews));
+    for (std::size_t i = 0; i < named.size(); ++i) {
+      const std::string key = "views[" + std::to_string(i) + "]";
+      const json& v = r.object(named[i], key);
+      const json* name = r.find(v, "name");
+      const json* camera = r.find(v, "camera");
+      if (!name || !camera) r.fail(key, "needs \"name\" and \"camera\"");
+      NamedView view{r.text(*name, key + ".name"), cameraFrom(r, *camera, key + ".camera")};
+      if (const std::string why = viewNameProblem(view.name); !why.empty()) r.fail(key + ".name", why);
+      for (const NamedView& earlier : s.views)
+        if (earlier.name == view.name) r.fail(key + ".name", "repeats the name \"" + view.name + "\"");
+      s.views.push_back(std::move(view));
     }
-    const json* rotation = r.find(*camera, "rotation");
-    const json* distance = r.find(*camera, "distance");
-    if (bool(rotation) != bool(distance)) r.fail("camera", "needs \"rotation\" and \"distance\" together");
-    if (rotation) {
-      if (!rotation->is_array() || rotation->size() != 4) r.fail("camera.rotation", "must be [w, x, y, z]");
-      double q[4];
-      for (std::size_t i = 0; i < 4; ++i) q[i] = r.number((*rotation)[i], "camera.rotation");
-      c.rotation = glm::dquat(q[0], q[1], q[2], q[3]);
-      c.distance = r.number(*distance, "camera.distance");
-      if (!(glm::length(*c.rotation) > 0.0) || !(*c.distance > 0.0) || !std::isfinite(*c.distance))
-        r.fail("camera", "has a zero rotation or a distance that is not positive");
-    }
-    if (!(glm::length(c.eye - c.target) > 0.0)) r.fail("camera", "has the eye on the target");
-    if (!(glm::length(glm::cross(c.target - c.eye, c.up)) > 0.0)) r.fail("camera.up", "is parallel to the view direction");
-    s.camera = c;
   }
   if (const json* colors = r.find(in, "colors")) {
     r.object(*colors, "colors");

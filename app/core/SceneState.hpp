@@ -46,6 +46,17 @@ struct CameraState {
   bool operator==(const CameraState&) const = default;
 };
 
+/// A view saved under a name (View > Saved Views, `render --view NAME`): the camera as it was.
+struct NamedView {
+  std::string name;
+  CameraState camera;
+  bool operator==(const NamedView&) const = default;
+};
+inline constexpr std::size_t kMaxViews = 100;
+inline constexpr std::size_t kMaxViewNameBytes = 200;
+/// Why `name` cannot name a view (empty, too long, a control character), or empty.
+std::string viewNameProblem(const std::string& name);
+
 /// A box the volume is cut to: xmin, xmax, ymin, ymax, zmin, zmax (model units).
 using ClipBox = std::array<double, 6>;
 /// The six planes that keep the inside of the box.
@@ -112,6 +123,8 @@ struct SceneState {
   std::string quantity;       ///< written form ("S.mises"); empty: the plain surface
   std::size_t step = 0;       ///< 0-based here, 1-based in the file
   std::optional<CameraState> camera;  ///< nullopt: the isometric view fitted to the model
+  /// Views saved under names, in the order saved; "views" in the file.
+  std::vector<NamedView> views;
   std::string colorMap = "cool-warm";
   std::optional<DisplayRange> fixedRange;  ///< nullopt: the values' own range
   /// Without a fixed range: the range over every step (one scale for an animation)

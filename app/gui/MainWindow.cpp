@@ -17,6 +17,7 @@
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "RendererMenu.hpp"
+#include "SavedViews.hpp"
 #include "SeeThroughSurface.hpp"
 #include "StateFiles.hpp"
 #include "StepController.hpp"
@@ -186,6 +187,9 @@ void MainWindow::buildActions() {
   QMenu* view = menuBar()->addMenu("&View");
   viewMenu_ = view;
   view->addAction("&Fit", QKeySequence(Qt::Key_F), viewport_, &Viewport::fit);
+  savedViews_ = new SavedViews(
+      *this, viewport_->scene(), *view, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
+      [this] { viewport_->update(); });
   const std::pair<const char*, StandardView> views[] = {
       {"From +X", StandardView::PlusX}, {"From -X", StandardView::MinusX}, {"From +Y", StandardView::PlusY},
       {"From -Y", StandardView::MinusY}, {"From +Z", StandardView::PlusZ}, {"From -Z", StandardView::MinusZ},
@@ -546,6 +550,7 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   deformation_->syncToScene();
   streamlines_->syncToScene();
   clips_->syncToScene();
+  savedViews_->syncToScene();
   if (linePlot_) linePlot_->modelChanged();
   if (session_) rendererMenu_->fitToModel(session_->model().grid.has_value());
   fillQuantities();
@@ -796,6 +801,7 @@ void MainWindow::syncControlsToScene() {
   streamlines_->syncToScene();
   rendererMenu_->syncToScene();
   clips_->syncToScene();
+  savedViews_->syncToScene();
   probes_->syncToScene();
   steps_->syncToScene();
 }

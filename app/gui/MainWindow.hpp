@@ -36,6 +36,7 @@ class RendererMenu;
 class Scene;
 class LinePlotPanel;
 class ModelLoader;
+class SavedViews;
 class StateFiles;
 class StepController;
 class StreamlineActions;
@@ -149,6 +150,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   ModelLoader* loader_ = nullptr;
   StateFiles* stateFiles_ = nullptr;
   VolumeActions* volume_ = nullptr;
+  SavedViews* savedViews_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   class GridSlicesPanel* gridSlices_ = nullptr;

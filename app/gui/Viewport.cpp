@@ -50,13 +50,16 @@ void Viewport::cleanupGL() {
 }
 
 void Viewport::fit() {
+  scene_.rememberView();
   scene_.fitCamera();
   update();
 }
 
 void Viewport::setStandardView(StandardView view) {
+  scene_.rememberView();
   scene_.camera().setView(view);
-  fit();
+  scene_.fitCamera();
+  update();
 }
 
 void Viewport::setProjection(Camera::Projection projection) {
@@ -197,6 +200,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     if (std::abs(up[k]) > std::abs(up[axis])) axis = k;
   dragUp_ = glm::dvec3(0.0);
   dragUp_[axis] = up[axis] < 0.0 ? -1.0 : 1.0;
+  scene_.rememberView();  // View > Previous View comes back here (a click that moves nothing adds nothing)
   if (rakeMode_ && event->button() == Qt::LeftButton) {
     rakeStart_ = rakeEnd_ = event->position();
     update();
@@ -322,6 +326,9 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
+  // One turn of the wheel, however many steps, is one view to come back to.
+  if (!wheelTurning_.isValid() || wheelTurning_.elapsed() > 800) scene_.rememberView();
+  wheelTurning_.start();
   scene_.camera().zoom(std::pow(1.1, event->angleDelta().y() / 120.0));
   update();
 }

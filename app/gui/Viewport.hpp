@@ -13,6 +13,7 @@
 
 #include "host/render/OverlayRenderer.hpp"
 
+#include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPoint>
 
@@ -113,6 +114,7 @@ class Viewport : public QOpenGLWidget {
   bool probeMode_ = false;
   std::optional<QPointF> pressedAt_;  ///< where the left button went down (a click or a drag)
   QTimer* hoverTimer_ = nullptr;       ///< hover picks wait for the mouse to rest
+  QElapsedTimer wheelTurning_;         ///< since the wheel last turned
   QPoint hoverAt_;
   PlaneWidgetPart planeDrag_ = PlaneWidgetPart::None;  ///< the widget part held by the left button
   QPointF planeDragLast_;

@@ -729,6 +729,28 @@ TEST(RenderCommand, ExplicitCameraRoundTripsThroughTheStateFile) {
   EXPECT_EQ(runVolpost("render " + model + " --up 0,0 -o " + first).exitCode, 2);
 }
 
+// --view NAME draws a view saved in the state file (the window's View > Saved Views) as
+// the same camera given as the state's own would; an unknown name lists the saved ones.
+TEST(RenderCommand, AViewSavedInTheStateFileIsDrawnByName) {
+  const std::string dir = ::testing::TempDir(), model = dataFile("bar/bar_tet4.vtu");
+  const std::string camera = R"({"eye": [5, -20, 0.5], "target": [5, 0.5, 0.5], "up": [0, 0, 1], "fieldOfView": 40})";
+  const std::string head = R"({"format": "volpost-state", "version": 1, "model": ")" + model +
+                           R"(", "result": {"quantity": "S.mises", "step": 1}, )";
+  const std::string own = dir + "/own_camera.json", named = dir + "/named_view.json";
+  std::ofstream(own) << head << R"("camera": )" << camera << "}";
+  std::ofstream(named) << head << R"("views": [{"name": "side", "camera": )" << camera << "}]}";
+  const std::string a = dir + "/own_camera.png", b = dir + "/named_view.png";
+  ASSERT_EQ(runVolpost("render --state " + own + " --size 64x48 -o " + a).exitCode, 0);
+  const auto r = runVolpost("render --state " + named + " --view side --size 64x48 -o " + b);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(QImage(QString::fromStdString(a)), QImage(QString::fromStdString(b)));
+  const auto unknown = runVolpost("render --state " + named + " --view top -o " + b);
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("no view is saved as \"top\"; the saved views: \"side\""), std::string::npos)
+      << unknown.output;
+  EXPECT_EQ(runVolpost("render --state " + named + " --view side --camera +x -o " + b).exitCode, 2);
+}
+
 // A picture drawn by the reference renderer saves a state that draws it again with the
 // reference (it said raycast: `render --state` drew another renderer's picture).
 TEST(RenderCommand, AReferencePicturesStateDrawsItWithTheReferenceAgain) {
