@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Views saved under names and the views before: kept in the scene and its state file,
 // shown again exactly, refused with the names there are, dropped with the model.
+#include "support/BarSession.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -13,11 +14,7 @@ using namespace volpost::app;
 
 namespace {
 
-std::shared_ptr<const ModelSession> bar() {
-  static const auto session =
-      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
-  return session;
-}
+using volpost::test::barSession;
 
 std::string refusal(const std::function<void()>& f) {
   try {
@@ -32,7 +29,7 @@ std::string refusal(const std::function<void()>& f) {
 
 TEST(SavedViews, AViewComesBackExactlyAndThroughTheStateFile) {
   Scene scene{VolumeRendererFactory{}};
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.camera().setView(StandardView::PlusZ);
   scene.camera().orbit(30.0, -20.0);
   scene.camera().setProjection(Camera::Projection::Orthographic);
@@ -49,7 +46,7 @@ TEST(SavedViews, AViewComesBackExactlyAndThroughTheStateFile) {
   ASSERT_EQ(back.views.size(), 1u);
   EXPECT_EQ(back.views[0], scene.views()[0]);
   Scene other{VolumeRendererFactory{}};
-  other.setSession(bar());
+  other.setSession(barSession());
   other.applyState(back);
   other.camera().setView(StandardView::MinusX);
   other.showView("top");
@@ -59,13 +56,13 @@ TEST(SavedViews, AViewComesBackExactlyAndThroughTheStateFile) {
   scene.saveView("top");
   EXPECT_EQ(scene.views().size(), 1u);
   EXPECT_EQ(scene.views()[0].camera.eye, scene.camera().eye());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   EXPECT_TRUE(scene.views().empty());
 }
 
 TEST(SavedViews, RefusalsNameWhatIsWrong) {
   Scene scene{VolumeRendererFactory{}};
-  scene.setSession(bar());
+  scene.setSession(barSession());
   EXPECT_EQ(refusal([&] { scene.showView("front"); }), "no view is saved as \"front\": none is saved");
   scene.saveView("left");
   scene.saveView("right");
@@ -94,7 +91,7 @@ TEST(SavedViews, RefusalsNameWhatIsWrong) {
 // those equal to the present one, and says when there is none left.
 TEST(SavedViews, PreviousViewStepsBackThroughTheRememberedCameras) {
   Scene scene{VolumeRendererFactory{}};
-  scene.setSession(bar());
+  scene.setSession(barSession());
   EXPECT_FALSE(scene.previousView());
   const glm::dvec3 first = scene.camera().eye();
   scene.rememberView();

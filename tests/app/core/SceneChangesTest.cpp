@@ -8,6 +8,7 @@
 #error "Scene.hpp brings in OpenGL: the scene's state must compile without it (SceneDrawing draws it)"
 #endif
 
+#include "support/BarSession.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -16,11 +17,7 @@ using namespace volpost::app;
 
 namespace {
 
-std::shared_ptr<const ModelSession> bar() {
-  static const auto session =
-      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
-  return session;
-}
+using volpost::test::barSession;
 
 // Which counts moved between two snapshots, by name: "planes", "colorMap tables".
 std::string moved(const SceneRevisions& a, const SceneRevisions& b) {
@@ -47,7 +44,7 @@ std::string moved(const SceneRevisions& a, const SceneRevisions& b) {
 // Each setter counts what it changes and nothing else: a dragged plane is a plane.
 TEST(SceneChanges, EachSetterCountsOnlyWhatItChanges) {
   Scene scene{VolumeRendererFactory{}};
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   const auto after = [&](const std::function<void()>& change) {
     const SceneRevisions before = scene.revisions();
@@ -64,7 +61,7 @@ TEST(SceneChanges, EachSetterCountsOnlyWhatItChanges) {
       << "a transfer function of the user's own stays as it is";
   EXPECT_EQ(after([&] { scene.setColorMap("viridis"); }), "colorMap streamlines");
   EXPECT_EQ(after([&] { scene.setShowLegend(false); }), "") << "the legend is painted over the picture";
-  EXPECT_EQ(after([&] { scene.setSession(bar()); }),
+  EXPECT_EQ(after([&] { scene.setSession(barSession()); }),
             "model scalars colorMap renderer geometry values tables planes iso mode streamlines");
 }
 

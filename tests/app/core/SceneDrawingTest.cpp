@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // A drawing holds what it handed its renderers and catches up with the scene's counts:
 // a second drawing of one scene, or a drawing handed another scene, draws everything.
+#include "support/BarSession.hpp"
 #include "support/HeadlessGl.hpp"
 #include "support/QtGuiEnvironment.hpp"
 #include "support/RayCasterScene.hpp"
@@ -19,14 +20,10 @@ namespace {
 
 using volpost::test::rayCasterOnly;
 
-std::shared_ptr<const ModelSession> bar() {
-  static const auto session =
-      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
-  return session;
-}
+using volpost::test::barSession;
 
 void showVolume(Scene& scene, const std::string& colorMap) {
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setColorMap(colorMap);
   scene.setVolumeRenderer("raycast");

@@ -2,6 +2,7 @@
 // The Scene: what each change costs the volume renderer (a dragged plane: only the
 // frame), its state as a file and back (the same picture), and what a state file may not
 // say (each refusal names the key).
+#include "support/BarSession.hpp"
 #include "support/QtGuiEnvironment.hpp"
 #include "support/RayCasterScene.hpp"
 #include "support/ReaderSupport.hpp"
@@ -33,11 +34,7 @@ namespace {
 
 using volpost::test::rayCasterOnly;
 
-std::shared_ptr<const ModelSession> bar() {
-  static const auto session =
-      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu"));
-  return session;
-}
+using volpost::test::barSession;
 
 // A context drawing into `target`, at its size.
 RenderContext contextFor(const OffscreenTarget& target) {
@@ -66,7 +63,7 @@ TEST_F(SceneWithContext, ADraggedPlaneCostsOnlyTheFrame) {
   Scene scene(rayCasterOnly());
   SceneDrawing drawing;
   drawing.setAsynchronousUpdates(true);
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setVolumeRenderer("raycast");
   scene.setVolumeShown(true);
@@ -139,7 +136,7 @@ TEST_F(SceneWithContext, AVolumePictureLeavesTheBoundaryUnextracted) {
 
 TEST_F(SceneWithContext, AStateFileGivesTheSamePicture) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setColorMap("viridis");
   scene.setVolumeRenderer("raycast");
@@ -155,9 +152,9 @@ TEST_F(SceneWithContext, AStateFileGivesTheSamePicture) {
   const std::string path = (std::filesystem::temp_directory_path() / "volpost_scene_state_test.json").string();
   scene.state().save(path);
   const SceneState loaded = SceneState::load(path);
-  EXPECT_EQ(loaded.modelPath, bar()->model().sourcePath);
+  EXPECT_EQ(loaded.modelPath, barSession()->model().sourcePath);
   Scene restored(rayCasterOnly());
-  restored.setSession(bar());
+  restored.setSession(barSession());
   restored.applyState(loaded);
   const SceneImage after = renderSceneImage(restored, 64, 48);
   EXPECT_TRUE(after.picture == before.picture) << "pixel for pixel";
@@ -276,7 +273,7 @@ TEST(SceneState, RefusalsNameTheFileAndTheKey) {
 
 TEST(Scene, TheDefaultTransferFunctionTakesTheColorMapAndRange) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setColorMap("grayscale");
   scene.setFixedRange(DisplayRange{50.0, 150.0});
@@ -368,10 +365,10 @@ TEST(VolumeDefaults, ATransferFunctionMadeForOtherValuesIsNoted) {
 // probing follows the drawn (deformed) geometry; off gives the model as read back.
 TEST(Scene, TheDeformedShapeMovesTheNodesByTheScaledDisplacement) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("U.x", 0);
-  const Bounds read = bar()->model().mesh().bounds();
-  const double uMax = bar()->rangeOverSteps(bar()->findQuantity("U.magnitude")).max;
+  const Bounds read = barSession()->model().mesh().bounds();
+  const double uMax = barSession()->rangeOverSteps(barSession()->findQuantity("U.magnitude")).max;
   DeformationLayer d;
   d.shown = true;
   d.scale = 100.0;
@@ -471,7 +468,7 @@ TEST(Scene, AGridsStoredSamplesAreShownWithoutADoubleCopy) {
 // state file; without a deformation nothing changes.
 TEST(Scene, TheUndeformedOutlineIsDrawnUnderTheDeformedShapeAndSaved) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setShowEdges(false);
   scene.setShowLegend(false);
@@ -517,7 +514,7 @@ TEST(Legend, NiceTicksAreBoundedEvenFarFromZero) {
 // them, with the figure; the budget restored, the same scene renders.
 TEST_F(SceneWithContext, AVolumeRendererOverTheMemoryBudgetIsRefusedWithTheFigure) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setVolumeRenderer("raycast");
   scene.setVolumeShown(true);
@@ -578,7 +575,7 @@ TEST_F(SceneWithContext, TheCpuRendererSwitchesBetweenAGridsPointAndCellFields) 
 // where its colors come from.
 TEST(Scene, TheLegendNamesTheDataExtremesAndKeepsEveryKey) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.xx", 0);
   const ValueRange data = scene.view()->range;
   scene.setFixedRange(DisplayRange{data.min / 2, data.max / 2});
@@ -604,7 +601,7 @@ TEST(Scene, TheLegendNamesTheDataExtremesAndKeepsEveryKey) {
 // picture (they stayed drawn in empty space).
 TEST(Scene, MarkersWhereAClipPlaneRemovedTheModelAreNotDrawn) {
   Scene scene(rayCasterOnly());
-  scene.setSession(bar());
+  scene.setSession(barSession());
   scene.setResult("S.mises", 0);
   scene.setShowLegend(false);
   scene.setShowTriad(false);
