@@ -12,6 +12,22 @@
 namespace volpost::app {
 namespace {
 
+// The written forms a field can be colored, probed or plotted by, wrapped at about 100
+// columns: "quantities: S.mises S.p1 S.p2 ..." (nothing for a field that is one scalar).
+void printQuantities(const Field& field) {
+  const std::vector<Quantity> quantities = quantitiesOf(field);
+  if (quantities.size() < 2) return;
+  std::string line = "      quantities:";
+  for (const Quantity& q : quantities) {
+    if (line.size() + 1 + q.key().size() > 100) {
+      std::printf("%s\n", line.c_str());
+      line = "                 ";
+    }
+    line += " " + q.key();
+  }
+  std::printf("%s\n", line.c_str());
+}
+
 // Returns how many steps could not be read (each said where it is listed).
 std::size_t printFields(const Model& model) {
   std::size_t unreadable = 0;
@@ -21,6 +37,7 @@ std::size_t printFields(const Model& model) {
     std::printf("  %-16s %-4s  %s (%d component%s), %zu step%s\n", f->name().c_str(), toString(f->location()),
                 toString(f->kind()), f->components(), f->components() == 1 ? "" : "s", f->stepCount(),
                 f->stepCount() == 1 ? "" : "s");
+    printQuantities(*f);
     if (f->storesSamples() && f->stepCount() > 0) {
       try {  // what the field holds in memory: the file's own type, not doubles
         const SampleType type = f->samples(0).type();

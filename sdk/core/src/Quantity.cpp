@@ -13,15 +13,43 @@ constexpr const char* kVectorSuffix[] = {"x", "y", "z"};
 constexpr const char* kTensorSuffix[] = {"xx", "yy", "zz", "xy", "yz", "zx"};
 constexpr const char* kTensorLabel[] = {"XX", "YY", "ZZ", "XY", "YZ", "ZX"};
 
+// The written suffix and the words of each operation other than a plain component.
+struct OpNames {
+  ScalarOp op;
+  const char* suffix;
+  const char* words;
+};
+constexpr OpNames kOpNames[] = {
+    {ScalarOp::Magnitude, "magnitude", "magnitude"},
+    {ScalarOp::AngleX, "anglex", "angle to X"},
+    {ScalarOp::AngleY, "angley", "angle to Y"},
+    {ScalarOp::AngleZ, "anglez", "angle to Z"},
+    {ScalarOp::VonMises, "mises", "von Mises"},
+    {ScalarOp::Principal1, "p1", "max principal"},
+    {ScalarOp::Principal2, "p2", "mid principal"},
+    {ScalarOp::Principal3, "p3", "min principal"},
+    {ScalarOp::Tresca, "tresca", "Tresca"},
+    {ScalarOp::MaxShear, "maxshear", "max shear"},
+    {ScalarOp::Pressure, "pressure", "pressure"},
+    {ScalarOp::SignedVonMises, "smises", "signed von Mises"},
+    {ScalarOp::Triaxiality, "triaxiality", "triaxiality"},
+    {ScalarOp::FirstInvariant, "i1", "first invariant"},
+    {ScalarOp::DeviatoricJ2, "j2", "deviatoric J2"},
+    {ScalarOp::DeviatoricJ3, "j3", "deviatoric J3"},
+    {ScalarOp::LodeAngle, "lode", "Lode angle"},
+};
+
+const OpNames* namesOf(ScalarOp op) {
+  for (const OpNames& n : kOpNames)
+    if (n.op == op) return &n;
+  return nullptr;  // a plain component
+}
+
+bool isTensorOp(ScalarOp op) { return op >= ScalarOp::VonMises; }
+bool isAngleOp(ScalarOp op) { return op >= ScalarOp::AngleX && op <= ScalarOp::AngleZ; }
+
 std::string suffixOf(const Quantity& q, FieldKind kind) {
-  switch (q.op) {
-    case ScalarOp::Magnitude: return "magnitude";
-    case ScalarOp::VonMises: return "mises";
-    case ScalarOp::Principal1: return "p1";
-    case ScalarOp::Principal2: return "p2";
-    case ScalarOp::Principal3: return "p3";
-    case ScalarOp::Component: break;
-  }
+  if (const OpNames* n = namesOf(q.op)) return n->suffix;
   if (kind == FieldKind::Vector) return kVectorSuffix[q.component];
   if (kind == FieldKind::SymTensor) return kTensorSuffix[q.component];
   return std::to_string(q.component);
@@ -74,6 +102,78 @@ double vonMises(const double* t) {
                    3.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5]));
 }
 
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+double secondDeviatoricInvariant(const double* t) {
+  const double dxy = t[0] - t[1], dyz = t[1] - t[2], dzx = t[2] - t[0];
+  return (dxy * dxy + dyz * dyz + dzx * dzx) / 6.0 + t[3] * t[3] + t[4] * t[4] + t[5] * t[5];
+}
+
+// The determinant of the deviator s = t - (trace/3) I.
+double thirdDeviatoricInvariant(const double* t) {
+  const double mean = (t[0] + t[1] + t[2]) / 3.0;
+  const double sx = t[0] - mean, sy = t[1] - mean, sz = t[2] - mean;
+  const double xy = t[3], yz = t[4], zx = t[5];
+  return sx * sy * sz + 2.0 * xy * yz * zx - sx * yz * yz - sy * zx * zx - sz * xy * xy;
+}
+
+// The Lode angle in degrees, 0 for uniaxial tension, 30 for pure shear, 60 for uniaxial
+// compression: cos(3 theta) = (3 sqrt(3) / 2) J3 / J2^(3/2).
+double lodeAngle(const double* t) {
+  const double j2 = secondDeviatoricInvariant(t);
+  if (!(j2 > 0.0)) return kNaN;  // no deviatoric part: the angle is undefined
+  const double c = 1.5 * std::sqrt(3.0) * thirdDeviatoricInvariant(t) / std::pow(j2, 1.5);
+  return std::acos(std::clamp(c, -1.0, 1.0)) / 3.0 * kDegrees;
+}
+
+}  // namespace
+
+double tensorScalar(ScalarOp op, const double* t) {
+  for (int c = 0; c < 6; ++c)
+    if (!std::isfinite(t[c])) return kNaN;
+  const double trace = t[0] + t[1] + t[2];
+  switch (op) {
+    case ScalarOp::VonMises:
+      return vonMises(t);
+    case ScalarOp::Principal1:
+      return principalValues(t)[0];
+    case ScalarOp::Principal2:
+      return principalValues(t)[1];
+    case ScalarOp::Principal3:
+      return principalValues(t)[2];
+    case ScalarOp::Tresca: {
+      const auto p = principalValues(t);
+      return p[0] - p[2];
+    }
+    case ScalarOp::MaxShear: {
+      const auto p = principalValues(t);
+      return 0.5 * (p[0] - p[2]);
+    }
+    case ScalarOp::Pressure:
+      return -trace / 3.0;  // positive in compression
+    case ScalarOp::SignedVonMises:
+      return trace < 0.0 ? -vonMises(t) : vonMises(t);
+    case ScalarOp::Triaxiality: {
+      const double mises = vonMises(t);
+      return mises > 0.0 ? trace / 3.0 / mises : kNaN;
+    }
+    case ScalarOp::FirstInvariant:
+      return trace;
+    case ScalarOp::DeviatoricJ2:
+      return secondDeviatoricInvariant(t);
+    case ScalarOp::DeviatoricJ3:
+      return thirdDeviatoricInvariant(t);
+    case ScalarOp::LodeAngle:
+      return lodeAngle(t);
+    default:
+      break;
+  }
+  throw std::invalid_argument("not an operation on a symmetric tensor");
+}
+
 std::vector<Quantity> quantitiesOf(const Field& field) {
   std::vector<Quantity> out;
   const std::string& n = field.name();
@@ -82,13 +182,16 @@ std::vector<Quantity> quantitiesOf(const Field& field) {
     case FieldKind::Vector:
       out.push_back({n, ScalarOp::Magnitude, 0});
       for (int i = 0; i < 3; ++i) out.push_back({n, ScalarOp::Component, i});
+      for (ScalarOp op : {ScalarOp::AngleX, ScalarOp::AngleY, ScalarOp::AngleZ}) out.push_back({n, op, 0});
       break;
     case FieldKind::SymTensor:
-      out.push_back({n, ScalarOp::VonMises, 0});
-      out.push_back({n, ScalarOp::Principal1, 0});
-      out.push_back({n, ScalarOp::Principal2, 0});
-      out.push_back({n, ScalarOp::Principal3, 0});
+      for (ScalarOp op : {ScalarOp::VonMises, ScalarOp::Principal1, ScalarOp::Principal2, ScalarOp::Principal3})
+        out.push_back({n, op, 0});
       for (int i = 0; i < 6; ++i) out.push_back({n, ScalarOp::Component, i});
+      for (ScalarOp op :
+           {ScalarOp::Tresca, ScalarOp::MaxShear, ScalarOp::Pressure, ScalarOp::SignedVonMises, ScalarOp::Triaxiality,
+            ScalarOp::FirstInvariant, ScalarOp::DeviatoricJ2, ScalarOp::DeviatoricJ3, ScalarOp::LodeAngle})
+        out.push_back({n, op, 0});
       break;
     case FieldKind::Array:
       out.push_back({n, ScalarOp::Magnitude, 0});
@@ -108,14 +211,7 @@ std::optional<Quantity> parseQuantity(const std::string& text, const Field& fiel
 }
 
 std::string Quantity::displayName() const {
-  switch (op) {
-    case ScalarOp::Magnitude: return field + " magnitude";
-    case ScalarOp::VonMises: return field + " von Mises";
-    case ScalarOp::Principal1: return field + " max principal";
-    case ScalarOp::Principal2: return field + " mid principal";
-    case ScalarOp::Principal3: return field + " min principal";
-    case ScalarOp::Component: break;
-  }
+  if (const OpNames* n = namesOf(op)) return field + " " + n->words;
   if (fieldKind == FieldKind::Vector) return field + " " + kVectorSuffix[component];
   if (fieldKind == FieldKind::SymTensor) return field + " " + kTensorLabel[component];
   if (fieldKind == FieldKind::Array) return field + " [" + std::to_string(component) + "]";
@@ -127,8 +223,15 @@ namespace {
 void checkQuantityFits(const Quantity& q, const std::string& fieldName, int nc) {
   if (q.op == ScalarOp::Component && (q.component < 0 || q.component >= nc))
     throw std::out_of_range("field " + fieldName + " has no component " + std::to_string(q.component));
-  if ((q.op == ScalarOp::VonMises || q.op >= ScalarOp::Principal1) && nc != 6)
-    throw std::invalid_argument("field " + fieldName + " is not a symmetric tensor");
+  if (isTensorOp(q.op) && nc != 6) throw std::invalid_argument("field " + fieldName + " is not a symmetric tensor");
+  if (isAngleOp(q.op) && nc != 3) throw std::invalid_argument("field " + fieldName + " is not a vector");
+}
+
+// Degrees between the vector and a coordinate axis; NaN for a zero vector (no direction).
+double angleToAxis(const double* v, int axis) {
+  const double length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!(length > 0.0) || !std::isfinite(length)) return kNaN;
+  return std::acos(std::clamp(v[axis] / length, -1.0, 1.0)) * kDegrees;
 }
 
 double scalarOf(const Quantity& q, const double* t, int nc) {
@@ -139,16 +242,15 @@ double scalarOf(const Quantity& q, const double* t, int nc) {
       for (int c = 0; c < nc; ++c) s += t[c] * t[c];
       return std::sqrt(s);
     }
-    case ScalarOp::VonMises: return vonMises(t);
-    case ScalarOp::Principal1:
-    case ScalarOp::Principal2:
-    case ScalarOp::Principal3: {
-      bool finite = true;
-      for (int c = 0; c < 6; ++c) finite = finite && std::isfinite(t[c]);
-      return finite ? principalValues(t)[int(q.op) - int(ScalarOp::Principal1)] : std::numeric_limits<double>::quiet_NaN();
-    }
+    case ScalarOp::AngleX:
+      return angleToAxis(t, 0);
+    case ScalarOp::AngleY:
+      return angleToAxis(t, 1);
+    case ScalarOp::AngleZ:
+      return angleToAxis(t, 2);
+    default:
+      return tensorScalar(q.op, t);
   }
-  return std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace

@@ -25,6 +25,16 @@ TEST(InfoCommand, PrintsCountsFieldsAndRanges) {
     EXPECT_NE(r.output.find(text), std::string::npos) << "missing '" << text << "' in\n" << r.output;
 }
 
+TEST(InfoCommand, ListsTheQuantitiesEachFieldOffersByTheirWrittenForm) {
+  const auto r = runVolpost("info " + dataFile("bar/bar_tet4.vtu"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* text : {"quantities: U.magnitude U.x U.y U.z U.anglex", "quantities: S.mises S.p1 S.p2 S.p3 S.xx",
+                           "S.tresca", "S.pressure", "S.triaxiality", "S.lode"})
+    EXPECT_NE(r.output.find(text), std::string::npos) << "missing '" << text << "' in\n" << r.output;
+  // the per-cell scalar "region" is one quantity: no list
+  EXPECT_EQ(r.output.find("region."), std::string::npos) << r.output;
+}
+
 TEST(InfoCommand, PrintsWhereAGridLiesAtFullPrecision) {
   // A survey's UTM coordinates need 8 and more digits: printed to 6, the northing of a grid
   // at 6073556.25 read 6.07356e+06, 10 m off.

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Scalar quantities derived from fields: components, magnitude, von Mises, principal values.
+// Scalar quantities derived from fields: components, magnitude, angles of vectors; von Mises,
+// principal values, Tresca, pressure, triaxiality and the invariants of symmetric tensors.
 #pragma once
 
 #include <volpost/core/Field.hpp>
@@ -13,11 +14,32 @@
 
 namespace volpost {
 
-enum class ScalarOp { Component, Magnitude, VonMises, Principal1, Principal2, Principal3 };
+enum class ScalarOp {
+  Component,
+  Magnitude,
+  // vectors: the angle to a coordinate axis, in degrees (0 to 180)
+  AngleX,
+  AngleY,
+  AngleZ,
+  // symmetric tensors (docs/user/quantities.md has each formula)
+  VonMises,
+  Principal1,
+  Principal2,
+  Principal3,
+  Tresca,
+  MaxShear,
+  Pressure,
+  SignedVonMises,
+  Triaxiality,
+  FirstInvariant,
+  DeviatoricJ2,
+  DeviatoricJ3,
+  LodeAngle,
+};
 
 /// A scalar the user can color by. Written as "NAME" for a scalar field, "NAME.x",
-/// "NAME.magnitude" for vectors, "NAME.xx", "NAME.mises", "NAME.p1" (largest principal)
-/// for symmetric tensors, "NAME.2" for generic arrays.
+/// "NAME.magnitude", "NAME.anglex" for vectors, "NAME.xx", "NAME.mises", "NAME.p1"
+/// (largest principal), "NAME.tresca" ... for symmetric tensors, "NAME.2" for generic arrays.
 struct Quantity {
   std::string field;
   ScalarOp op = ScalarOp::Component;
@@ -45,6 +67,9 @@ double evaluateComponents(const Quantity& quantity, std::span<const double> comp
 /// Principal values of the symmetric tensor (xx yy zz xy yz zx), sorted descending.
 std::array<double, 3> principalValues(const double* t);
 double vonMises(const double* t);
+/// The tensor's scalar for a tensor operation (VonMises .. LodeAngle); NaN where undefined
+/// (a NaN component; the triaxiality or Lode angle of a tensor without deviatoric part).
+double tensorScalar(ScalarOp op, const double* t);
 
 struct ValueRange {
   double min = 0.0, max = 0.0;
