@@ -13,6 +13,7 @@ packages=(
   libcgal-dev libtet1.5-dev               # exact predicates; tetrahedralization templates
   libboost-dev                            # Gauss-Legendre nodes of the pre-integration table
   libkissfft-dev                          # the Hilbert transform of seismic attributes
+  libmuparser-dev                         # the calculator's formulas
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev  # videos of animations
   libgtest-dev libbenchmark-dev
   xvfb xauth fonts-dejavu-core            # GUI tests on a virtual display; legend text

@@ -49,20 +49,42 @@ std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> mod
   if (boundary == Boundary::Now) {
     Progress stage = progress;
     stage.setStage("extracting the boundary");
-    std::call_once(session->surfaceOnce_, [&] {
-      session->surface_ = std::make_unique<BoundarySurface>(boundaryOf(*session->model_, stage));
-      session->surfaceExtracted_ = true;
+    Geometry& g = *session->geometry_;
+    std::call_once(g.surfaceOnce, [&] {
+      g.surface = std::make_unique<BoundarySurface>(boundaryOf(*session->model_, stage));
+      g.surfaceExtracted = true;
     });
   }
   return session;
 }
 
+std::shared_ptr<ModelSession> ModelSession::withFormulas(const ModelSession& base,
+                                                         const std::vector<FormulaSpec>& formulas) {
+  // The file's own fields: the base may itself carry formulas, which these replace.
+  auto model = std::make_shared<Model>(base.model());  // nodes copied, cells and fields shared
+  model->fields.resize(model->fields.size() - base.formulas_.size());
+  for (const FormulaSpec& f : formulas) {
+    for (const FormulaSpec& earlier : formulas)
+      if (&earlier != &f && earlier.name == f.name) throw FormulaError("two formulas are named '" + f.name + "'");
+    model->fields.push_back(formulaField(*model, f));
+  }
+  auto session = std::make_shared<ModelSession>();
+  session->model_ = std::move(model);
+  session->readerOptions_ = base.readerOptions_;
+  session->origin_ = base.origin_;
+  session->bounds_ = base.bounds_;
+  session->geometry_ = base.geometry_;
+  session->formulas_ = formulas;
+  return session;
+}
+
 const BoundarySurface& ModelSession::surface() const {
-  std::call_once(surfaceOnce_, [this] {
-    surface_ = std::make_unique<BoundarySurface>(boundaryOf(*model_));
-    surfaceExtracted_ = true;
+  Geometry& g = *geometry_;
+  std::call_once(g.surfaceOnce, [&] {
+    g.surface = std::make_unique<BoundarySurface>(boundaryOf(*model_));
+    g.surfaceExtracted = true;
   });
-  return *surface_;
+  return *g.surface;
 }
 
 std::vector<Quantity> ModelSession::quantities() const {
@@ -157,13 +179,15 @@ ValueRange ModelSession::rangeOverSteps(const Quantity& q) const {
 }
 
 const TetMesh& ModelSession::tetrahedra() const {
-  std::call_once(tetOnce_, [this] { tets_ = std::make_unique<TetMesh>(tetrahedralize(model_->mesh())); });
-  return *tets_;
+  Geometry& g = *geometry_;
+  std::call_once(g.tetOnce, [&] { g.tets = std::make_unique<TetMesh>(tetrahedralize(model_->mesh())); });
+  return *g.tets;
 }
 
 const PointLocator& ModelSession::locator() const {
-  std::call_once(locatorOnce_, [this] { locator_ = std::make_unique<PointLocator>(tetrahedra()); });
-  return *locator_;
+  Geometry& g = *geometry_;
+  std::call_once(g.locatorOnce, [&] { g.locator = std::make_unique<PointLocator>(tetrahedra()); });
+  return *g.locator;
 }
 
 std::vector<double> ModelSession::tetValues(const ScalarView& view) const {

@@ -8,6 +8,7 @@
 #include <volpost/core/ReaderRegistry.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
 
+#include "Formula.hpp"
 #include "host/BoundarySurface.hpp"
 #include "host/PointLocator.hpp"
 
@@ -54,13 +55,20 @@ class ModelSession {
   static std::shared_ptr<ModelSession> fromModel(std::shared_ptr<Model> model, const Progress& progress = {},
                                                  Boundary boundary = Boundary::OnFirstUse);
 
+  /// This model with the fields of `formulas` after its own (each formula may read the ones
+  /// before it), sharing the mesh and what is built from it (boundary, tetrahedra, point
+  /// locator). Throws FormulaError naming the formula at fault.
+  static std::shared_ptr<ModelSession> withFormulas(const ModelSession& base, const std::vector<FormulaSpec>& formulas);
+  /// The formulas whose fields this session's model holds after the file's own.
+  const std::vector<FormulaSpec>& formulas() const { return formulas_; }
+
   const Model& model() const { return *model_; }
   /// The reader options the model was read with (for state files and reopening).
   const ReaderOptions& readerOptions() const { return readerOptions_; }
   /// The boundary surface (extracted on first use, kept; any thread).
   const BoundarySurface& surface() const;
   /// Whether surface() has been extracted yet (what a volume picture must not pay for).
-  bool surfaceExtracted() const { return surfaceExtracted_.load(); }
+  bool surfaceExtracted() const { return geometry_->surfaceExtracted.load(); }
   /// The point every float position on the GPU is relative to: the centre of the used
   /// nodes' bounds (the boundary surface's origin too), known without extracting it.
   const glm::dvec3& origin() const { return origin_; }
@@ -91,18 +99,24 @@ class ModelSession {
 
  private:
   ReaderOptions readerOptions_;
-  mutable std::once_flag tetOnce_;
-  mutable std::unique_ptr<TetMesh> tets_;
   mutable std::mutex rangesMutex_;
   mutable std::map<std::string, ValueRange> rangesOverSteps_;  ///< by quantity key
   /// The range of every (quantity key, step) evaluated so far: the range over the steps
   /// then evaluates only the steps not seen (a large field is not evaluated twice at once).
   mutable std::map<std::pair<std::string, std::size_t>, ValueRange> stepRanges_;
-  mutable std::once_flag locatorOnce_;
-  mutable std::unique_ptr<PointLocator> locator_;
-  mutable std::once_flag surfaceOnce_;
-  mutable std::unique_ptr<BoundarySurface> surface_;
-  mutable std::atomic<bool> surfaceExtracted_{false};
+  /// What is worked out from the mesh alone, built on first use and shared with the
+  /// sessions withFormulas() makes from this one (same mesh, more fields).
+  struct Geometry {
+    std::once_flag tetOnce;
+    std::unique_ptr<TetMesh> tets;
+    std::once_flag locatorOnce;
+    std::unique_ptr<PointLocator> locator;
+    std::once_flag surfaceOnce;
+    std::unique_ptr<BoundarySurface> surface;
+    std::atomic<bool> surfaceExtracted{false};
+  };
+  std::shared_ptr<Geometry> geometry_ = std::make_shared<Geometry>();
+  std::vector<FormulaSpec> formulas_;
   std::shared_ptr<Model> model_;
   glm::dvec3 origin_{0.0};
   Bounds bounds_;
