@@ -112,6 +112,43 @@ ReaderOptions readerOptionsFrom(const QCommandLineParser& parser, const QCommand
   return options;
 }
 
+QCommandLineOption formulaOption() {
+  return QCommandLineOption("formula",
+                            "A field computed from the model's quantities, NAME=EXPRESSION (repeatable), e.g. "
+                            "ratio=S.mises/250, then --field ratio; see docs/user/calculator.md.",
+                            "NAME=EXPR");
+}
+
+std::vector<FormulaSpec> formulasFrom(const QCommandLineParser& parser, const QCommandLineOption& option) {
+  std::vector<FormulaSpec> formulas;
+  for (const QString& text : parser.values(option)) {
+    try {
+      formulas.push_back(parseFormulaText(text.toStdString()));
+    } catch (const FormulaError& e) {
+      throw OptionError(std::string("--formula: ") + e.what());
+    }
+  }
+  return formulas;
+}
+
+std::shared_ptr<ModelSession> withFormulas(std::shared_ptr<ModelSession> session,
+                                           const std::vector<FormulaSpec>& formulas) {
+  if (formulas.empty()) return session;
+  try {
+    return ModelSession::withFormulas(*session, formulas);
+  } catch (const FormulaError& e) {
+    throw OptionError(e.what());
+  }
+}
+
+void appendFormulas(Model& model, const std::vector<FormulaSpec>& formulas) {
+  try {
+    appendFormulaFields(model, formulas);
+  } catch (const FormulaError& e) {
+    throw OptionError(e.what());
+  }
+}
+
 std::vector<std::string> quantityKeys(const ModelSession& session, const QStringList& names) {
   std::vector<std::string> keys;
   for (const QString& name : names) {

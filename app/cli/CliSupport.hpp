@@ -56,6 +56,18 @@ QCommandLineOption readerOptionOption();
 /// Its values; OptionError for one that is not NAME=VALUE or names an option twice.
 ReaderOptions readerOptionsFrom(const QCommandLineParser& parser, const QCommandLineOption& option);
 
+/// --formula NAME=EXPRESSION (repeatable): a field the calculator computes from the model's
+/// quantities (docs/user/calculator.md), usable as any other.
+QCommandLineOption formulaOption();
+/// Its formulas, in order; OptionError for one that is not NAME=EXPRESSION.
+std::vector<FormulaSpec> formulasFrom(const QCommandLineParser& parser, const QCommandLineOption& option);
+/// The session with the formulas' fields (the session itself without formulas); OptionError
+/// naming the formula at fault.
+std::shared_ptr<ModelSession> withFormulas(std::shared_ptr<ModelSession> session,
+                                           const std::vector<FormulaSpec>& formulas);
+/// The same on a model read without a session.
+void appendFormulas(Model& model, const std::vector<FormulaSpec>& formulas);
+
 /// "WIDTHxHEIGHT", each 1..16384.
 bool parseSize(const QString& text, int& w, int& h);
 

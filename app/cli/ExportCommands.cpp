@@ -23,7 +23,8 @@ int runConvert(const QStringList& args) {
   parser.addPositionalArgument("MODEL", "mesh or results file");
   parser.addPositionalArgument("OUT.vtu", "file to write");
   const QCommandLineOption readerOption = readerOptionOption();
-  parser.addOption(readerOption);
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({readerOption, formula});
   if (const auto code = parseArguments(parser, "volpost convert", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2 || !files[1].endsWith(".vtu", Qt::CaseInsensitive)) {
@@ -33,8 +34,10 @@ int runConvert(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
     const auto model =
         plugins->readers().load(pathBytes(files[0]), readerOptionsFrom(parser, readerOption), terminalProgress("reading"));
+    appendFormulas(*model, formulas);
     writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"));
     std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->nodeCount(),
                 model->cellCount(), model->fields.size());
@@ -52,7 +55,8 @@ int runSurface(const QStringList& args) {
   const QCommandLineOption iso("iso", "Iso-value (with --field): the surface where Q = VALUE.", "VALUE");
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   const QCommandLineOption readerOption = readerOptionOption();
-  parser.addOptions({field, iso, step, readerOption});
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({field, iso, step, readerOption, formula});
   if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2) {
@@ -81,8 +85,11 @@ int runSurface(const QStringList& args) {
   };
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
-    const auto session = ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"),
-                                            ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption));
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
+    const auto session =
+        withFormulas(ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"),
+                                        ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption)),
+                     formulas);
     if (!parser.isSet(field)) {
       saidHow(writeSurface(session->surface().mesh, session->surface().origin, pathBytes(files[1])));
       std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());

@@ -114,7 +114,8 @@ int runInfo(const QStringList& args) {
   const QCommandLineOption listOptions("reader-options",
                                        "List the settings the readers take (with MODEL: its reader's), for "
                                        "--reader-option.");
-  parser.addOptions({readerOption, listOptions});
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({readerOption, listOptions, formula});
   if (const auto code = parseArguments(parser, "volpost info", args)) return *code;
   if (parser.isSet(listOptions) && parser.positionalArguments().size() <= 1) {
     auto plugins = loadPluginsForCli();
@@ -132,7 +133,9 @@ int runInfo(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   try {
     const ReaderOptions options = readerOptionsFrom(parser, readerOption);
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
     const auto model = plugins->readers().load(path, options, terminalProgress("reading"));
+    appendFormulas(*model, formulas);
     std::printf("file:     %s\nformat:   %s\n", path.c_str(), model->formatName.c_str());
     if (!model->title.empty()) std::printf("title:    %s\n", model->title.c_str());
     std::printf("nodes:    %zu\ncells:    %zu\n", model->nodeCount(), model->cellCount());

@@ -33,7 +33,8 @@ int runPlot(const QStringList& args) {
   const QCommandLineOption output(QStringList{"o", "output"}, "The chart as a picture (.png, .jpg).", "FILE");
   const QCommandLineOption size("size", "The chart's size (default 800x500).", "WxH", "800x500");
   const QCommandLineOption readerOption = readerOptionOption();
-  parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption});
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption, formula});
   if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(from) || !parser.isSet(to) ||
       (!parser.isSet(csv) && !parser.isSet(output))) {
@@ -73,9 +74,12 @@ int runPlot(const QStringList& args) {
   return exitCodeOf([&] {
     if (!csvPath.empty()) checkWritable(csvPath);
     if (parser.isSet(output)) checkWritable(pathBytes(picture));
-    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                            terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
-                                            readerOptionsFrom(parser, readerOption));
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
+    const auto session =
+        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
+                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                        readerOptionsFrom(parser, readerOption)),
+                     formulas);
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) {
       const auto first = session->defaultQuantity();

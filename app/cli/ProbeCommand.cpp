@@ -79,7 +79,8 @@ int runProbe(const QStringList& args) {
   const QCommandLineOption csv("csv", "Write a table (x, y, z, element, element_type, node, the quantities) to this "
                                       "CSV file, or - for the terminal.", "FILE");
   const QCommandLineOption readerOption = readerOptionOption();
-  parser.addOptions({field, at, pointsFile, step, csv, readerOption});
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({field, at, pointsFile, step, csv, readerOption, formula});
   if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
   if (parser.positionalArguments().size() != 1 || (!parser.isSet(at) && !parser.isSet(pointsFile))) {
     printError("probe needs MODEL and --at X,Y,Z or --points FILE (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
@@ -100,11 +101,14 @@ int runProbe(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     if (!csvPath.empty()) checkWritable(csvPath);
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
     if (parser.isSet(pointsFile))
       for (const glm::dvec3& p : readPoints(pathBytes(parser.value(pointsFile)))) points.push_back(p);
-    const auto session = ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                            terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
-                                            readerOptionsFrom(parser, readerOption));
+    const auto session =
+        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
+                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                        readerOptionsFrom(parser, readerOption)),
+                     formulas);
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);

@@ -120,6 +120,7 @@ struct Options {
                                            "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
                                            "step unless --range is given)."};
   QCommandLineOption readerOption = readerOptionOption();
+  QCommandLineOption formula = formulaOption();
   QCommandLineOption slice{"slice", "A regular grid's slice: AXIS=VALUE, e.g. inline=1005, crossline=2003, time=80 "
                                     "(ms), or i/j/k=LABEL for image data (repeatable, one per axis); drawn in the "
                                     "surface view and, opaque, in the volume.", "AXIS=VALUE"};
@@ -388,6 +389,7 @@ void applyExplicitCamera(const QCommandLineParser& p, const Options& o, Camera& 
 
 void applyOptions(const QCommandLineParser& p, const Options& o, const SceneState& base, Scene& scene) {
   if (p.isSet(o.state)) scene.applyState(base);
+  else if (!base.formulas.empty()) scene.setFormulas(base.formulas);
   applyResultOptions(p, o, scene);
   if (p.isSet(o.colormap)) scene.setColorMap(p.value(o.colormap).toStdString());
   if (p.isSet(o.range) && p.value(o.range) == "all-steps") {
@@ -515,7 +517,7 @@ int runRender(const QStringList& args) {
        o.tf2d,         o.clip,       o.clipBox,       o.iso,          o.volumeEdges, o.samplingStep,   o.termination,
        o.shading,      o.floatOut,   o.threads,       o.state,        o.saveState,   o.streamlines,    o.lineWidth,
        o.tubes,        o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,   o.surfaceOpacity, o.probe,
-       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice});
+       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice,       o.formula});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -556,6 +558,16 @@ int runRender(const QStringList& args) {
     if (!positional.isEmpty()) base.modelPath = pathBytes(positional.first());
     try {  // the command line's reader options over the state file's
       for (const auto& [name, value] : readerOptionsFrom(parser, o.readerOption)) base.readerOptions[name] = value;
+    } catch (const OptionError& e) {
+      throw UsageError(e.what());
+    }
+    try {  // the command line's formulas over the state file's of the same name
+      for (const FormulaSpec& f : formulasFrom(parser, o.formula)) {
+        auto same = std::find_if(base.formulas.begin(), base.formulas.end(),
+                                 [&](const FormulaSpec& g) { return g.name == f.name; });
+        if (same != base.formulas.end()) *same = f;
+        else base.formulas.push_back(f);
+      }
     } catch (const OptionError& e) {
       throw UsageError(e.what());
     }

@@ -28,7 +28,8 @@ int runStreamlines(const QStringList& args) {
   const QCommandLineOption output(QStringList{"o", "output"}, "Output: lines.vtp or lines.csv.", "FILE");
   const StreamlineOptions lineOptions;
   const QCommandLineOption readerOption = readerOptionOption();
-  parser.addOptions({field, step, output, readerOption});
+  const QCommandLineOption formula = formulaOption();
+  parser.addOptions({field, step, output, readerOption, formula});
   for (const auto& o : lineOptions.all()) parser.addOption(o);
   if (const auto code = parseArguments(parser, "volpost streamlines", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(lineOptions.seeds) ||
@@ -52,9 +53,12 @@ int runStreamlines(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(out);
+    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
     const auto session =
-        ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()), terminalProgress("reading"),
-                           ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption));
+        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
+                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                        readerOptionsFrom(parser, readerOption)),
+                     formulas);
     Scene scene(volumeRendererFactory(*plugins));
     scene.setSession(session);
     StreamlineLayer layer;

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <regex>
 
@@ -73,9 +74,29 @@ std::string atCharacter(const FormulaSpec& f, std::size_t position) {
 void configure(mu::Parser& parser) { parser.DefineNameChars(kNameChars); }
 
 // muParser's message without its own 0-based "at position N", which atCharacter says 1-based.
-std::string parserMessage(const mu::Parser::exception_type& e) {
-  static const std::regex position(R"( at position \d+)");
-  return std::regex_replace(e.GetMsg(), position, "");
+[[noreturn]] void failToParse(const FormulaSpec& f, const mu::Parser::exception_type& e) {
+  const std::size_t end = f.expression.find_last_not_of(" \t");
+  if (e.GetCode() == mu::ecINTERNAL_ERROR && end != std::string::npos &&
+      std::strchr("+-*/^<>=&|?:,!", f.expression[end]))
+    fail(f, "the expression ends with '" + std::string(1, f.expression[end]) + "', where a value must follow" +
+                atCharacter(f, end));
+  static const std::regex position(R"( at (expression )?position \d+)");
+  fail(f, std::regex_replace(e.GetMsg(), position, "") +
+              atCharacter(f, e.GetPos() < 0 ? std::string::npos : std::size_t(e.GetPos())));
+}
+
+// muParser assigns with =, +=, ...: a formula reads the model, it never writes into it.
+void checkNoAssignment(const FormulaSpec& f) {
+  const std::string& e = f.expression;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    if (e[i] != '=') continue;
+    const bool compares = (i + 1 < e.size() && e[i + 1] == '=') || (i > 0 && std::strchr("=<>!", e[i - 1]));
+    if (compares) {
+      if (i + 1 < e.size() && e[i + 1] == '=') ++i;  // the second sign of ==
+      continue;
+    }
+    fail(f, "'=' would assign" + atCharacter(f, i) + "; compare with ==");
+  }
 }
 
 Pin parsePin(const FormulaSpec& f, const std::string& written, const std::string& text, const Field* field,
@@ -340,14 +361,26 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
                       std::to_string(kMaxExpressionLength));
   auto plan = std::make_shared<Plan>();
   plan->formula = formula;
+  checkNoAssignment(formula);
   try {
+    // Read with a slot made for every name, so that a syntax error is said as such before
+    // the names are looked up.
+    std::deque<double> slots;
     mu::Parser parser;
     configure(parser);
+    parser.SetVarFactory(
+        [](const char*, void* data) {
+          auto* store = static_cast<std::deque<double>*>(data);
+          store->push_back(1.0);
+          return &store->back();
+        },
+        &slots);
     parser.SetExpr(formula.expression);
+    int count = 0;
+    parser.Eval(count);
     for (const auto& [name, unused] : parser.GetUsedVar()) plan->refs.push_back(resolve(model, formula, name));
   } catch (const mu::Parser::exception_type& e) {
-    fail(formula,
-         parserMessage(e) + atCharacter(formula, e.GetPos() < 0 ? std::string::npos : std::size_t(e.GetPos())));
+    failToParse(formula, e);
   }
   bool perCell = false, needsPositions = false;
   for (const Reference& r : plan->refs) {
@@ -367,8 +400,7 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
   try {
     count = resultCount(formula, plan->refs);
   } catch (const mu::Parser::exception_type& e) {
-    fail(formula,
-         parserMessage(e) + atCharacter(formula, e.GetPos() < 0 ? std::string::npos : std::size_t(e.GetPos())));
+    failToParse(formula, e);
   }
   if (plan->componentwise && count != 1)
     fail(formula, "a formula over whole vector or tensor fields gives one value per component, not " +
@@ -385,6 +417,15 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
   std::vector<Step> steps = plan->steps;
   return std::make_shared<Field>(formula.name, plan->location, components, entities, std::move(steps),
                                  [plan](std::size_t step) { return evaluateStep(*plan, step); });
+}
+
+void appendFormulaFields(Model& model, const std::vector<FormulaSpec>& formulas) {
+  for (std::size_t i = 0; i < formulas.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j)
+      if (formulas[j].name == formulas[i].name)
+        throw FormulaError("two formulas are named " + quoted(formulas[i].name));
+    model.fields.push_back(formulaField(model, formulas[i]));
+  }
 }
 
 }  // namespace volpost::app

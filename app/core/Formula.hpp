@@ -47,4 +47,8 @@ std::vector<std::string> formulaNames(const Model& model);
 /// it can before returning (names, steps, the number of values); FormulaError otherwise.
 std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formula);
 
+/// Appends the formulas' fields to the model, in order (each may read the ones before it).
+/// Throws FormulaError naming the formula at fault (the model then holds the ones before it).
+void appendFormulaFields(Model& model, const std::vector<FormulaSpec>& formulas);
+
 }  // namespace volpost::app

@@ -48,6 +48,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.step = 0;
   state_.modelPath = session_ ? session_->model().sourcePath : std::string();
   state_.readerOptions = session_ ? session_->readerOptions() : ReaderOptions{};
+  state_.formulas = session_ ? session_->formulas() : std::vector<FormulaSpec>{};
   state_.volume.shown = false;
   state_.volume.samplingStep = 0.0;  // model units: the last model's step may not suit this one
   if (!session_ || !session_->model().grid) state_.volume.shading = false;  // lighting by the gradient is for grids
@@ -353,30 +354,68 @@ bool Scene::previousView() {
 
 void Scene::applyState(const SceneState& s) {
   if (!session_) throw std::invalid_argument("no model is open to apply the state to");
-  // Check everything before changing anything.
+  if (s.formulas.size() > kMaxFormulas)
+    throw std::invalid_argument("the state has " + std::to_string(s.formulas.size()) + " formulas; at most " +
+                                std::to_string(kMaxFormulas));
+  applyState(s, s.formulas == state_.formulas ? nullptr : ModelSession::withFormulas(*baseSession_, s.formulas));
+}
+
+void Scene::setFormulas(std::vector<FormulaSpec> formulas) {
+  if (!baseSession_) throw std::invalid_argument("no model is open to compute formulas on");
+  if (formulas.size() > kMaxFormulas)
+    throw std::invalid_argument(std::to_string(formulas.size()) + " formulas; at most " + std::to_string(kMaxFormulas));
+  std::shared_ptr<const ModelSession> next = ModelSession::withFormulas(*baseSession_, formulas);  // throws
+  // What showed a formula that is gone (or changed its steps) falls back instead of failing.
+  SceneState s = state();
+  s.formulas = std::move(formulas);
+  const auto offers = [&](const std::string& key, std::size_t step) {
+    try {
+      return step < next->fieldOf(next->findQuantity(key)).stepCount();
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  };
+  if (!s.quantity.empty() && !offers(s.quantity, s.step)) {
+    const std::optional<Quantity> fallback = next->defaultQuantity();
+    s.quantity = fallback ? fallback->key() : std::string();
+    s.step = 0;
+    if (!fallback) s.volume.shown = false;
+  }
+  if (!s.volume.isoQuantity.empty() && !offers(s.volume.isoQuantity, 0)) {
+    s.volume.isoQuantity.clear();
+    s.volume.isoSurfaces.clear();
+  }
+  if (s.deformation.shown && !next->model().findField(s.deformation.field)) s.deformation.shown = false;
+  if (s.streamlines.shown && !next->model().findField(s.streamlines.field)) s.streamlines.shown = false;
+  applyState(s, next);
+}
+
+void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> withFormulas) {
+  // Check everything before changing anything, on the model with the state's formulas.
+  const ModelSession& checked = withFormulas ? *withFormulas : *session_;
   std::optional<ScalarView> view;
   if (!s.quantity.empty()) {
-    const Quantity q = session_->findQuantity(s.quantity);
-    if (const std::size_t steps = session_->fieldOf(q).stepCount(); s.step >= steps)
+    const Quantity q = checked.findQuantity(s.quantity);
+    if (const std::size_t steps = checked.fieldOf(q).stepCount(); s.step >= steps)
       throw std::invalid_argument("the state's result step (\"result\": {\"step\": " + std::to_string(s.step + 1) +
                                   "}) does not exist: " + s.quantity + " has " + std::to_string(steps) + " step" +
                                   (steps == 1 ? "" : "s"));
-    view = session_->evaluate(q, s.step);
+    view = checked.evaluate(q, s.step);
   }
   checkSamplingStep(s.volume.samplingStep);
   if (!s.volume.isoQuantity.empty() &&
-      session_->fieldOf(session_->findQuantity(s.volume.isoQuantity)).location() != FieldLocation::Node)
+      checked.fieldOf(checked.findQuantity(s.volume.isoQuantity)).location() != FieldLocation::Node)
     throw std::invalid_argument("the state's iso-surfaces are of " + s.volume.isoQuantity +
                                 ", which is given per element; iso-surfaces need values at the nodes");
   (void)ColorMap::named(s.colorMap);
   if (s.volume.shown && !view) throw std::invalid_argument("the state shows a volume but names no result");
   if (s.volume.shown && !factory_.traitsOf(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
-  checkStreamlines(s.streamlines);
+  checkStreamlines(s.streamlines, checked);
   checkProbes(s.probes);
-  if (s.deformation.shown) checkDeformationField(*baseSession_, s.deformation.field);
+  if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
-  checkGridSlices(session_->model().grid, s.gridSlices);
+  checkGridSlices(checked.model().grid, s.gridSlices);
   checkClipPlanes(s.volume.allClipPlanes());
   checkIsoSurfaces(s.volume.isoSurfaces);
   Camera camera = camera_;
@@ -384,7 +423,7 @@ void Scene::applyState(const SceneState& s) {
     camera = cameraAt(*s.camera);
   } else {
     camera.setView(StandardView::Isometric);
-    camera.fit(session_->model().bounds());
+    camera.fit(checked.model().bounds());
   }
   if (s.views.size() > kMaxViews)
     throw std::invalid_argument("the state saves more than " + std::to_string(kMaxViews) + " views");
@@ -414,6 +453,12 @@ void Scene::applyState(const SceneState& s) {
     ++*r;
   if (locationChanged) ++revisions_.geometry;
   if (rendererChanged) ++revisions_.renderer;
+  if (withFormulas) {
+    baseSession_ = std::move(withFormulas);
+    session_ = baseSession_;
+    deformedStep_ = state_.step;
+    changeEverything();
+  }
   if (state_.deformation.shown || session_ != baseSession_) rebuildDeformation();
 }
 
@@ -618,9 +663,16 @@ void Scene::setStreamlines(StreamlineLayer layer) {
 }
 
 void Scene::checkStreamlines(const StreamlineLayer& layer) const {
+  if (!session_) {
+    if (layer.shown) throw std::invalid_argument("open a model first");
+    return;
+  }
+  checkStreamlines(layer, *session_);
+}
+
+void Scene::checkStreamlines(const StreamlineLayer& layer, const ModelSession& session) const {
   if (layer.shown) {
-    if (!session_) throw std::invalid_argument("open a model first");
-    const Field* f = session_->model().findField(layer.field);
+    const Field* f = session.model().findField(layer.field);
     if (!f) throw std::invalid_argument("no field named '" + layer.field + "' to trace streamlines in");
     if (f->components() != 3)
       throw std::invalid_argument("streamlines follow a vector field; " + layer.field + " has " +
@@ -629,8 +681,8 @@ void Scene::checkStreamlines(const StreamlineLayer& layer) const {
       throw std::invalid_argument(layer.field + " is given per element: streamlines need it at the nodes (average it "
                                                 "there, an approximation, with --average-cell-vectors)");
     if (layer.seeds.empty()) throw std::invalid_argument("streamlines need seeds (where the lines start)");
-    (void)seedPoints(layer.seeds, *session_);  // throws saying what is wrong with a spec
-    if (!layer.colorBy.empty()) (void)session_->findQuantity(layer.colorBy);
+    (void)seedPoints(layer.seeds, session);  // throws saying what is wrong with a spec
+    if (!layer.colorBy.empty()) (void)session.findQuantity(layer.colorBy);
     if (!(layer.settings.tolerance > 0.0)) throw std::invalid_argument("the streamline tolerance must be positive");
     if (layer.style.tubes && layer.style.tubeRadius < 0.0) throw std::invalid_argument("the tube radius must be >= 0");
   }

@@ -215,6 +215,12 @@ class Scene {
   /// step, renderer, color map) and throws std::invalid_argument, changing nothing.
   SceneState state() const;
   void applyState(const SceneState& state);
+  /// The calculator's formulas (replacing the ones before): their fields join the model's
+  /// for every view, probe, plot and picture. What showed a formula that is gone falls back
+  /// (the result to the default, its iso-surfaces and streamlines off). Throws FormulaError
+  /// (or std::invalid_argument) naming the formula at fault, changing nothing.
+  void setFormulas(std::vector<FormulaSpec> formulas);
+  const std::vector<FormulaSpec>& formulas() const { return state_.formulas; }
 
   // ---- derived ----
   const std::optional<ScalarView>& view() const { return view_; }
@@ -252,7 +258,10 @@ class Scene {
   std::string perCellRefusal(const std::string& renderer) const;
 
  private:
+  /// applyState with the model carrying the state's formulas (nullptr: the formulas shown now).
+  void applyState(const SceneState& state, std::shared_ptr<const ModelSession> withFormulas);
   void checkStreamlines(const StreamlineLayer& layer) const;
+  void checkStreamlines(const StreamlineLayer& layer, const ModelSession& session) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
   void checkSamplingStep(double step) const;
   CameraState cameraState() const;

@@ -343,6 +343,11 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
     for (const auto& s : gridSlices) slices.push_back(s ? json(*s) : json(nullptr));
     out["gridSlices"] = slices;
   }
+  if (!formulas.empty()) {
+    json list = json::array();
+    for (const FormulaSpec& f : formulas) list.push_back({{"name", f.name}, {"expression", f.expression}});
+    out["formulas"] = list;
+  }
   out["result"] = {{"quantity", quantity.empty() ? json(nullptr) : json(quantity)}, {"step", step + 1}};
   out["camera"] = camera ? jsonOf(*camera) : json(nullptr);
   if (!views.empty()) {
@@ -397,6 +402,19 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     r.object(*options, "readerOptions");
     for (const auto& [name, value] : options->items())
       s.readerOptions[name] = r.text(value, "readerOptions." + name);
+  }
+  if (const json* formulas = r.find(in, "formulas")) {
+    const json& list = r.array(*formulas, "formulas");
+    if (list.size() > kMaxFormulas)
+      r.fail("formulas", "holds " + std::to_string(list.size()) + " formulas; at most " + std::to_string(kMaxFormulas));
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const std::string key = "formulas[" + std::to_string(i) + "]";
+      const json& f = r.object(list[i], key);
+      const json* name = r.find(f, "name");
+      const json* expression = r.find(f, "expression");
+      if (!name || !expression) r.fail(key, "needs \"name\" and \"expression\"");
+      s.formulas.push_back({r.text(*name, key + ".name"), r.text(*expression, key + ".expression")});
+    }
   }
   if (const json* result = r.find(in, "result")) {
     r.object(*result, "result");

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "DisplayRange.hpp"
+#include "Formula.hpp"
 
 #include "host/StreamlineStyle.hpp"
 #include "host/Streamlines.hpp"
@@ -53,6 +54,8 @@ struct NamedView {
   bool operator==(const NamedView&) const = default;
 };
 inline constexpr std::size_t kMaxViews = 100;
+/// The most formulas a scene (and its state file) holds.
+inline constexpr std::size_t kMaxFormulas = 100;
 inline constexpr std::size_t kMaxViewNameBytes = 200;
 /// Why `name` cannot name a view (empty, too long, a control character), or empty.
 std::string viewNameProblem(const std::string& name);
@@ -120,6 +123,9 @@ struct SceneState {
   /// "gridSlices" in the file: [inline or null, crossline or null, time or null].
   std::array<std::optional<double>, 3> gridSlices;
   ReaderOptions readerOptions;  ///< what the model was read with (SEG-Y header bytes ...); "readerOptions" in the file
+  /// The calculator's formulas, in order (each may read the ones before it); "formulas"
+  /// in the file as [{"name": ..., "expression": ...}]. Their fields follow the file's own.
+  std::vector<FormulaSpec> formulas;
   std::string quantity;       ///< written form ("S.mises"); empty: the plain surface
   std::size_t step = 0;       ///< 0-based here, 1-based in the file
   std::optional<CameraState> camera;  ///< nullopt: the isometric view fitted to the model

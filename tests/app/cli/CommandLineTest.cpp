@@ -549,6 +549,48 @@ TEST(ProbeCommand, PrintsTheBarStressAtAPointAndFlagsOutsidePoints) {
   EXPECT_EQ(runVolpost("probe " + dataFile("bar/bar_tet4.vtu") + " --field S.xx --at 1,2").exitCode, 2);
 }
 
+// The calculator on every verb: a formula's field is probed, listed, drawn and kept in the
+// state; a bad one is a usage error naming the character at fault, and nothing is written.
+TEST(Formulas, AFormulaWorksOnEveryVerbAndABadOneSaysWhere) {
+  const std::string bar = dataFile("bar/bar_tet4.vtu");
+  const auto probe = runVolpost("probe " + bar + " --formula \"ratio=S.xx/250\" --field ratio --at 5,0.5,0.5");
+  ASSERT_EQ(probe.exitCode, 0) << probe.output;
+  const auto at = probe.output.find("ratio = ");
+  ASSERT_NE(at, std::string::npos) << probe.output;
+  EXPECT_NEAR(std::stod(probe.output.substr(at + 8)), 100.0 / 250.0, 1e-4);
+
+  const auto info = runVolpost("info " + bar + " --formula \"twice=S*2\"");
+  EXPECT_NE(info.output.find("twice            node  symmetric tensor"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("quantities: twice.mises"), std::string::npos) << info.output;
+
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string png = (dir / "volpost_formula.png").string(), state = (dir / "volpost_formula.json").string();
+  std::filesystem::remove(png);
+  const auto render = runVolpost("render " + bar + " --formula \"ux=U.x*1000\" --field ux --size 160x120 -o " + png +
+                                 " --save-state " + state);
+  ASSERT_EQ(render.exitCode, 0) << render.output;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  std::ifstream saved(state);
+  const std::string json((std::istreambuf_iterator<char>(saved)), {});
+  EXPECT_NE(json.find("\"expression\": \"U.x*1000\""), std::string::npos) << json;
+  const std::string png2 = (dir / "volpost_formula_again.png").string();
+  const auto again = runVolpost("render --state " + state + " --size 160x120 -o " + png2);
+  EXPECT_EQ(again.exitCode, 0) << again.output;
+  EXPECT_EQ(QImage(QString::fromStdString(png)), QImage(QString::fromStdString(png2)));
+
+  std::filesystem::remove(png);
+  const auto bad = runVolpost("render " + bar + " --formula \"ux=U.x*+\" --field ux -o " + png);
+  EXPECT_EQ(bad.exitCode, 2) << bad.output;
+  EXPECT_NE(bad.output.find("formula 'ux': the expression ends with '+'"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("at character 5"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(png));
+  const auto unknown = runVolpost("probe " + bar + " --formula \"r=S.mizes\" --at 5,0.5,0.5");
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("no quantity or field named 'S.mizes' at character 1"), std::string::npos)
+      << unknown.output;
+  EXPECT_EQ(runVolpost("info " + bar + " --formula nothing").exitCode, 2);
+}
+
 TEST(ProbeCommand, WritesEveryQuantityAtFullPrecisionAsCsvFromAPointsFile) {
   const auto dir = std::filesystem::temp_directory_path() / "volpost_cli_probe";
   std::filesystem::create_directories(dir);

@@ -182,6 +182,10 @@ TEST(Formula, BadFormulasSayWhatAndWhere) {
   expectHas(errorOf("r", "S.mizes / 2"), "no quantity or field named 'S.mizes' at character 1");
   expectHas(errorOf("r", "T +* 3"), "at character 4 of \"T +* 3\"");
   expectHas(errorOf("r", "sqrt(T"), "formula 'r':");
+  expectHas(errorOf("r", "T *+"), "ends with '+', where a value must follow at character 4");
+  expectHas(errorOf("r", "T *"), "Unexpected end of expression at character");
+  expectHas(errorOf("r", "T = 3"), "'=' would assign at character 3");
+  EXPECT_EQ(errorOf("r", "T == 3 || T >= 1 && T != 2"), "no error");
   expectHas(errorOf("r", "T@5"), "asks for step 5 of T, which has 2 steps");
   expectHas(errorOf("r", "T@x"), "after @ in 'T@x' comes a step number, last, max or min");
   expectHas(errorOf("r", "mode + T"), "has 3 steps and T 2");
