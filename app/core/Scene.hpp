@@ -79,6 +79,7 @@ class Scene {
   std::shared_ptr<const ModelSession> sharedSession() const { return session_; }
   /// The model as read.
   const ModelSession* baseSession() const { return baseSession_.get(); }
+  std::shared_ptr<const ModelSession> sharedBaseSession() const { return baseSession_; }
 
   /// Shows the model deformed (nodes moved by the field at the shown step times the scale)
   /// or not. Throws std::invalid_argument (not a nodal vector field) and changes nothing then.

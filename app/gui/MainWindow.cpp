@@ -7,6 +7,7 @@
 #include "../core/StreamlineSeeds.hpp"
 #include "../core/VolumeDefaults.hpp"
 #include "../core/VolumeSpecs.hpp"
+#include "CalculatorDialog.hpp"
 #include "ClipActions.hpp"
 #include "DeformationActions.hpp"
 #include "GridSlicesPanel.hpp"
@@ -247,6 +248,7 @@ void MainWindow::buildActions() {
         if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();  // the lines follow the shape
         notifyPanels();
       });
+  results->addAction("&Calculator...", this, &MainWindow::openCalculator)->setObjectName("calculatorAction");
   results->addSeparator();
   // Probing follows what is drawn: the deformed model while a deformation is shown.
   probes_ = new ProbeController(*this, *viewport_, *results, [this] { return viewport_->scene().sharedSession(); });
@@ -354,6 +356,29 @@ void MainWindow::showGridSlices() {
   gridSlices_->followScene();
   gridSlicesDock_->show();
   gridSlicesDock_->raise();
+}
+
+void MainWindow::openCalculator() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  CalculatorDialog dialog(
+      scene.formulas(), formulaNames(session_->model()),
+      [this](const std::vector<FormulaSpec>& formulas, const std::string& shown) -> std::string {
+        Scene& s = viewport_->scene();
+        try {
+          s.setFormulas(formulas);
+          if (!shown.empty()) s.setResult(s.session()->findQuantity(shown).key(), 0);
+        } catch (const std::exception& e) {
+          return e.what();
+        }
+        followAppliedState();
+        return {};
+      },
+      this);
+  dialog.exec();
 }
 
 void MainWindow::chooseIsoSurfaces() {
@@ -565,7 +590,7 @@ void MainWindow::installSession(std::shared_ptr<ModelSession> session) {
   notifyPanels();
 }
 
-void MainWindow::fillQuantities() {
+void MainWindow::listQuantities() {
   const QSignalBlocker block(quantityBox_);
   quantityBox_->clear();
   quantityBox_->addItem("(none)", QString());
@@ -575,6 +600,11 @@ void MainWindow::fillQuantities() {
                                               f.location() == FieldLocation::Cell ? " (cell)" : ""),
                           QString::fromStdString(q.key()));
   }
+}
+
+void MainWindow::fillQuantities() {
+  listQuantities();
+  const QSignalBlocker block(quantityBox_);
   const auto preferred = session_->defaultQuantity();
   quantityBox_->setCurrentIndex(preferred ? quantityBox_->findData(QString::fromStdString(preferred->key())) : 0);
   fillSteps();
@@ -780,6 +810,11 @@ void MainWindow::followAppliedState() {
 void MainWindow::syncControlsToScene() {
   const Scene& scene = viewport_->scene();
   const SceneState state = scene.state();
+  if (scene.sharedBaseSession() != session_ && scene.sharedBaseSession()) {  // formulas came or went
+    session_ = scene.sharedBaseSession();
+    listQuantities();
+    showModelInfo();
+  }
   {
     const QSignalBlocker a(quantityBox_), b(stepBox_), c(colorMapBox_);
     quantityBox_->setCurrentIndex(std::max(0, quantityBox_->findData(QString::fromStdString(state.quantity))));

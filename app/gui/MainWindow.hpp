@@ -105,6 +105,9 @@ class MainWindow : public QMainWindow, public PanelHost {
   void saveImage();
   void installSession(std::shared_ptr<ModelSession> session);
   void fillQuantities();
+  /// The quantity box lists the session's quantities (the selection is left to the caller).
+  void listQuantities();
+  void openCalculator();
   void fillSteps();
   void refreshScalars();
   void syncControlsToScene();
@@ -125,7 +128,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void chooseSurfaceOpacity();
 
   PluginManager& plugins_;
-  std::shared_ptr<ModelSession> session_;
+  /// The model as the scene holds it: as read, with the calculator's formulas' fields.
+  std::shared_ptr<const ModelSession> session_;
   Viewport* viewport_ = nullptr;
   QComboBox* quantityBox_ = nullptr;
   QComboBox* stepBox_ = nullptr;

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: MIT
 // The window under a (virtual) X display: open a model, switch the result, take a
 // screenshot, fail to open a bad file without losing the model.
-#include "gui/MainWindow.hpp"
-#include "gui/SettledView.hpp"
-#include "gui/LinePlotPanel.hpp"
-#include "gui/ProbePanel.hpp"
-#include "gui/StepController.hpp"
-#include "gui/Viewport.hpp"
 #include "core/BoxWidget.hpp"
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
+#include "gui/CalculatorDialog.hpp"
+#include "gui/LinePlotPanel.hpp"
+#include "gui/MainWindow.hpp"
+#include "gui/ProbePanel.hpp"
+#include "gui/SettledView.hpp"
+#include "gui/StepController.hpp"
+#include "gui/Viewport.hpp"
 #include "support/VideoFrames.hpp"
 
 #include <volpost/render/GL.hpp>
@@ -304,6 +305,42 @@ class MainWindowTest : public QObject {
     QVERIFY(linear->isEnabled());
     for (QAction* a : window_->findChildren<QAction*>())
       QVERIFY2(!a->text().contains("seed") && !a->text().contains("MPVONC"), qPrintable(a->text()));
+  }
+
+  void theCalculatorsFormulaIsAResultKeptInTheStateFile() {
+    // Results > Calculator...: a formula typed there is shown at once and offered in the
+    // quantity box; a bad one is refused in the dialog; a state file brings it back.
+    QString problem;
+    QTimer::singleShot(0, [&] {
+      auto* dialog = qobject_cast<CalculatorDialog*>(QApplication::activeModalWidget());
+      if (!dialog) return;
+      dialog->findChild<QLineEdit*>("formulaName")->setText("ratio");
+      dialog->findChild<QLineEdit*>("formulaExpression")->setText("S.mises / +* 250");
+      dialog->addFromEditors();
+      problem = dialog->problem();
+      dialog->findChild<QLineEdit*>("formulaExpression")->setText("S.mises / 250");
+      dialog->addFromEditors();
+      dialog->reject();
+    });
+    window_->findChild<QAction*>("calculatorAction")->trigger();
+    QVERIFY2(problem.contains("formula 'ratio'") && problem.contains("at character"), qPrintable(problem));
+    Viewport* view = window_->viewport();
+    QCOMPARE(view->scene().state().quantity, std::string("ratio"));
+    auto* box = window_->findChild<QComboBox*>("quantityBox");
+    QCOMPARE(box->currentData().toString(), QString("ratio"));
+    QVERIFY(std::abs(view->scene().view()->range.max - 102.712 / 250.0) < 1e-4);
+
+    const QString state = QDir::temp().filePath("volpost_gui_formula_test.json");
+    QVERIFY(window_->saveStateFile(state));
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));  // another model: the formulas go
+    QCOMPARE(box->findData("ratio"), -1);
+    QSignalSpy applied(window_.get(), &MainWindow::stateApplied);
+    window_->openStateFile(state);
+    QVERIFY(applied.count() == 1 || applied.wait(30000));
+    QVERIFY(applied.first().first().toBool());
+    QCOMPARE(box->currentData().toString(), QString("ratio"));
+    QCOMPARE(view->scene().formulas().size(), std::size_t(1));
+    QFile::remove(state);
   }
 
   void aSavedStateRendersTheSamePictureHeadless() {
