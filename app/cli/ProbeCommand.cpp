@@ -46,9 +46,26 @@ std::vector<glm::dvec3> readPoints(const std::string& path) {
   return points;
 }
 
+std::string pointText(const glm::dvec3& p) {
+  return exactNumber(p.x) + ", " + exactNumber(p.y) + ", " + exactNumber(p.z);
+}
+
+void printValues(const ProbeResult& r, const std::vector<std::string>& keys, const char* indent) {
+  for (const std::string& key : keys) {
+    const auto v = r.value(key);
+    std::printf("%s%s = %s\n", indent, key.c_str(), v ? exactNumber(*v).c_str() : "not probed");
+  }
+}
+
 void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
-  std::printf("point %s, %s, %s: ", exactNumber(r.point.x).c_str(), exactNumber(r.point.y).c_str(),
-              exactNumber(r.point.z).c_str());
+  if (r.method == ProbeMethod::AtNode && r.nodeId) {
+    std::printf("node %lld at %s: in element %lld (%s), %s\n", static_cast<long long>(*r.nodeId),
+                pointText(r.point).c_str(), static_cast<long long>(r.cellId),
+                std::string(cellTypeName(r.cellType)).c_str(), describe(r.method));
+    printValues(r, keys, "  ");
+    return;
+  }
+  std::printf("point %s: ", pointText(r.point).c_str());
   if (!r.inside()) {
     std::printf("outside the mesh\n");
     return;
@@ -57,9 +74,26 @@ void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
   if (r.nodeId) std::printf(", node %lld", static_cast<long long>(*r.nodeId));
   std::printf(", %s\n", describe(r.method));
   if (!r.gridPosition.empty()) std::printf("  %s\n", r.gridPositionText().c_str());
-  for (const std::string& key : keys) {
-    const auto v = r.value(key);
-    std::printf("  %s = %s\n", key.c_str(), v ? exactNumber(*v).c_str() : "not probed");
+  printValues(r, keys, "  ");
+}
+
+// An element asked for by id: its centre's values, then each of its nodes' own (node
+// results only: an element result is the element's).
+void printElement(const ModelSession& session, const ProbeResult& r, const std::vector<std::string>& keys) {
+  std::printf("element %lld (%s), centre %s: %s\n", static_cast<long long>(r.cellId),
+              std::string(cellTypeName(r.cellType)).c_str(), pointText(r.point).c_str(), describe(r.method));
+  std::string ids;
+  for (std::int64_t id : r.nodeIds) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+  std::printf("  nodes: %s\n", ids.c_str());
+  printValues(r, keys, "  ");
+  std::vector<std::string> nodeKeys;
+  for (const std::string& key : keys)
+    if (session.fieldOf(session.findQuantity(key)).location() == FieldLocation::Node) nodeKeys.push_back(key);
+  if (nodeKeys.empty()) return;
+  for (std::int64_t id : r.nodeIds) {
+    const ProbeResult node = probeNode(session, id, r.step);
+    std::printf("  at node %lld (%s):\n", static_cast<long long>(id), pointText(node.point).c_str());
+    printValues(node, nodeKeys, "    ");
   }
 }
 
@@ -74,18 +108,37 @@ int runProbe(const QStringList& args) {
   const QCommandLineOption field("field", "A quantity: S.xx, S.mises, U.magnitude, T ... (repeatable; default: all).",
                                  "Q");
   const QCommandLineOption at("at", "A point X,Y,Z in model units (repeatable).", "X,Y,Z");
+  const QCommandLineOption node("node", "A node by its id in the file: its own values (repeatable).", "ID");
+  const QCommandLineOption element("element",
+                                   "An element by its id in the file: its results, node results at its centre and at "
+                                   "each of its nodes (repeatable).",
+                                   "ID");
   const QCommandLineOption pointsFile("points", "A text file of points, X Y Z (or X,Y,Z) per line.", "FILE");
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   const QCommandLineOption csv("csv", "Write a table (x, y, z, element, element_type, node, the quantities) to this "
                                       "CSV file, or - for the terminal.", "FILE");
   const QCommandLineOption readerOption = readerOptionOption();
   const QCommandLineOption formula = formulaOption();
-  parser.addOptions({field, at, pointsFile, step, csv, readerOption, formula});
+  parser.addOptions({field, at, pointsFile, node, element, step, csv, readerOption, formula});
   if (const auto code = parseArguments(parser, "volpost probe", args)) return *code;
-  if (parser.positionalArguments().size() != 1 || (!parser.isSet(at) && !parser.isSet(pointsFile))) {
-    printError("probe needs MODEL and --at X,Y,Z or --points FILE (volpost probe MODEL --field S.xx --at 5,0.5,0.5)");
+  if (parser.positionalArguments().size() != 1 ||
+      (!parser.isSet(at) && !parser.isSet(pointsFile) && !parser.isSet(node) && !parser.isSet(element))) {
+    printError(
+        "probe needs MODEL and --at X,Y,Z, --points FILE, --node ID or --element ID (volpost probe MODEL "
+        "--field S.xx --at 5,0.5,0.5)");
     return 2;
   }
+  std::vector<std::int64_t> nodeIds, elementIds;
+  for (const auto& [option, ids] : {std::pair{&node, &nodeIds}, std::pair{&element, &elementIds}})
+    for (const QString& text : parser.values(*option)) {
+      bool ok = false;
+      const qlonglong id = text.toLongLong(&ok);
+      if (!ok) {
+        printError(QString("--%1 %2 is not an id (a whole number)").arg(option->names().first(), text));
+        return 2;
+      }
+      ids->push_back(id);
+    }
   std::vector<glm::dvec3> points;
   for (const QString& text : parser.values(at)) {
     const auto p = parsePoint(text);
@@ -112,6 +165,15 @@ int runProbe(const QStringList& args) {
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);
+    // Nodes and elements by id, all found before anything is written: an id the model does
+    // not have is an option it cannot honour.
+    std::vector<ProbeResult> byId;
+    try {
+      for (std::int64_t id : nodeIds) byId.push_back(probeNode(*session, id, *stepIndex));
+      for (std::int64_t id : elementIds) byId.push_back(probeElement(*session, id, *stepIndex));
+    } catch (const std::invalid_argument& e) {
+      throw OptionError(e.what());
+    }
     // Probed and written a chunk at a time: a result holds every quantity at its point, so a
     // million points kept together took gigabytes.
     std::optional<AtomicFile> file;
@@ -137,6 +199,12 @@ int runProbe(const QStringList& args) {
         for (const ProbeResult& r : results) printResult(r, keys);
       if (points.size() > kChunk) progress.report(double(done) / double(points.size()));
     }
+    if (parser.isSet(csv)) put(probeTableRows(byId, keys));
+    else
+      for (const ProbeResult& r : byId)
+        if (r.method == ProbeMethod::ElementCentre) printElement(*session, r, keys);
+        else printResult(r, keys);
+    done += byId.size();
     if (file) file->commit();
     if (!csvPath.empty())
       std::printf("%s: %zu point%s, %zu quantit%s\n", csvPath.c_str(), done, done == 1 ? "" : "s", keys.size(),

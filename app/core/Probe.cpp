@@ -204,6 +204,10 @@ const char* describe(ProbeMethod method) {
     case ProbeMethod::Outside: return "outside the mesh";
     case ProbeMethod::Isoparametric: return "interpolated with the element's shape functions";
     case ProbeMethod::TetSplit: return "interpolated linearly in the element's tetrahedral split (distorted element)";
+    case ProbeMethod::AtNode:
+      return "the node's own values";
+    case ProbeMethod::ElementCentre:
+      return "at the element's centre, by its shape functions";
   }
   return "?";
 }
@@ -258,6 +262,111 @@ ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::s
   for (const auto& field : session.model().fields)
     if (field->stepCount() > 0) r.fields.push_back(probeField(*field, step, found.cell, weights, atNode));
   return r;
+}
+
+namespace {
+
+std::size_t nodeIndexOf(const Model& model, std::int64_t id) {
+  const std::size_t count = model.nodeCount();
+  if (!model.meshBuilt() || model.mesh().nodeIds.empty()) {  // ids are 1-based indices
+    if (id >= 1 && std::uint64_t(id) <= count) return std::size_t(id - 1);
+  } else {
+    const auto& ids = model.mesh().nodeIds;
+    const auto at = std::find(ids.begin(), ids.end(), id);
+    if (at != ids.end()) return std::size_t(at - ids.begin());
+  }
+  throw std::invalid_argument("the model has no node " + std::to_string(id) + " (its " + std::to_string(count) +
+                              " nodes are numbered as the file numbers them)");
+}
+
+std::size_t cellIndexOf(const Model& model, std::int64_t id) {
+  const std::size_t count = model.cellCount();
+  if (!model.meshBuilt() || model.mesh().cellIds.empty()) {
+    if (id >= 1 && std::uint64_t(id) <= count) return std::size_t(id - 1);
+  } else {
+    const auto& ids = model.mesh().cellIds;
+    const auto at = std::find(ids.begin(), ids.end(), id);
+    if (at != ids.end()) return std::size_t(at - ids.begin());
+  }
+  throw std::invalid_argument("the model has no element " + std::to_string(id) + " (its " + std::to_string(count) +
+                              " elements are numbered as the file numbers them)");
+}
+
+// The element's fields and the report's element part, with node data from `weights`.
+void fillFromCell(ProbeResult& r, const ModelSession& session, std::size_t cell,
+                  const std::vector<std::pair<NodeIndex, double>>& weights, std::optional<NodeIndex> atNode) {
+  const Mesh& mesh = session.model().mesh();
+  r.cell = cell;
+  r.cellId = mesh.cellId(cell);
+  r.cellType = mesh.cellType(cell);
+  for (NodeIndex n : mesh.cellNodes(cell)) r.nodeIds.push_back(mesh.nodeId(n));
+  for (const auto& field : session.model().fields)
+    if (field->stepCount() > 0) r.fields.push_back(probeField(*field, r.step, cell, weights, atNode));
+}
+
+}  // namespace
+
+ProbeResult probeNode(const ModelSession& session, std::int64_t nodeId, std::size_t step) {
+  const Model& model = session.model();
+  const std::size_t node = nodeIndexOf(model, nodeId);
+  if (model.grid && !model.meshBuilt()) {  // a grid's node: probed where it is, no cells built
+    ProbeResult r = probeAt(session, model.nodePosition(node), step);
+    r.method = ProbeMethod::AtNode;
+    return r;
+  }
+  const Mesh& mesh = model.mesh();
+  for (std::size_t cell = 0; cell < mesh.cellCount(); ++cell) {
+    const auto nodes = mesh.cellNodes(cell);
+    if (std::find(nodes.begin(), nodes.end(), NodeIndex(node)) == nodes.end()) continue;
+    ProbeResult r;
+    r.point = mesh.nodes[node];
+    r.step = step;
+    r.method = ProbeMethod::AtNode;
+    r.nodeId = nodeId;
+    r.nearestNode = node;
+    r.nearestNodeId = nodeId;
+    fillFromCell(r, session, cell, {{NodeIndex(node), 1.0}}, NodeIndex(node));
+    return r;
+  }
+  throw std::invalid_argument("node " + std::to_string(nodeId) + " belongs to no element");
+}
+
+ProbeResult probeElement(const ModelSession& session, std::int64_t elementId, std::size_t step) {
+  const Model& model = session.model();
+  const std::size_t cell = cellIndexOf(model, elementId);
+  const Mesh& mesh = model.mesh();
+  const CellType type = mesh.cellType(cell);
+  ProbeResult r;
+  r.step = step;
+  r.method = ProbeMethod::ElementCentre;
+  r.natural = referenceCentre(type);
+  const std::vector<glm::dvec3> positions = positionsOf(mesh, cell);
+  r.point = positionAt(type, positions, r.natural);
+  const auto nodes = mesh.cellNodes(cell);
+  const ShapeValues n = shapeFunctions(type, r.natural);
+  std::vector<std::pair<NodeIndex, double>> weights;
+  double nearest = INFINITY;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    weights.emplace_back(nodes[k], n[k]);
+    const double d = glm::length(positions[k] - r.point);
+    if (d < nearest) nearest = d, r.nearestNode = nodes[k];
+  }
+  r.nearestNodeId = mesh.nodeId(r.nearestNode);
+  fillFromCell(r, session, cell, weights, std::nullopt);
+  return r;
+}
+
+std::optional<ProbeResult> probeById(const ModelSession& session, const std::string& text, std::size_t step) {
+  std::string word;
+  long long id = 0;
+  char rest = 0;
+  char buffer[16] = {};
+  if (std::sscanf(text.c_str(), " %15[A-Za-z] %lld %c", buffer, &id, &rest) != 2) return std::nullopt;
+  word = buffer;
+  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (word == "node" || word == "n") return probeNode(session, id, step);
+  if (word == "element" || word == "elem" || word == "e" || word == "cell") return probeElement(session, id, step);
+  return std::nullopt;
 }
 
 }  // namespace volpost::app

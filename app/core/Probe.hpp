@@ -25,6 +25,8 @@ enum class ProbeMethod {
   Isoparametric,  ///< the element's shape functions at the point's natural coordinates
   TetSplit,       ///< linear in the tetrahedron of the element's split (the shape functions
                   ///< did not converge: a distorted element)
+  AtNode,         ///< a node asked for by its id: its own values
+  ElementCentre,  ///< an element asked for by its id: at its centre, by its shape functions
 };
 const char* describe(ProbeMethod method);
 
@@ -67,5 +69,17 @@ struct ProbeResult {
 /// (builds the session's locator on first use). Throws what a lazy read of a damaged file
 /// throws (ReadError).
 ProbeResult probeAt(const ModelSession& session, const glm::dvec3& point, std::size_t step);
+
+/// The node with this id (as the file numbers it): its position, its own values, an
+/// element it belongs to (whose element results are reported). Throws std::invalid_argument
+/// when the model has no such node, or no element uses it.
+ProbeResult probeNode(const ModelSession& session, std::int64_t nodeId, std::size_t step);
+/// The element with this id: its centre (the point of the reference element's centre),
+/// node results interpolated there by its shape functions, its element results as stored,
+/// its nodes. Throws std::invalid_argument when the model has no such element.
+ProbeResult probeElement(const ModelSession& session, std::int64_t elementId, std::size_t step);
+/// "node 5484" or "element 15600" (also "n 5484", "e 15600", "elem"): what probeNode or
+/// probeElement would report; nullopt for text of another form. Throws as they do.
+std::optional<ProbeResult> probeById(const ModelSession& session, const std::string& text, std::size_t step);
 
 }  // namespace volpost::app

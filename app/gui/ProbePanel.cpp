@@ -50,7 +50,7 @@ ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
   auto* typedRow = new QHBoxLayout;
   typed_ = new QLineEdit(this);
   typed_->setObjectName("probeTyped");
-  typed_->setPlaceholderText("X, Y, Z (or X Y Z)");
+  typed_->setPlaceholderText("X, Y, Z  or  node ID  or  element ID");
   auto* add = new QPushButton("Add", this);
   typedRow->addWidget(typed_);
   typedRow->addWidget(add);
@@ -180,9 +180,17 @@ std::vector<glm::dvec3> ProbePanel::points() const {
 }
 
 void ProbePanel::addTyped() {
-  const auto p = parsePoint(typed_->text());
+  std::optional<glm::dvec3> p = parsePoint(typed_->text());
+  if (!p && session_) {  // "node 5484", "element 15600": the node, the element's centre
+    try {
+      if (const auto found = probeById(*session_, typed_->text().toStdString(), 0)) p = found->point;
+    } catch (const std::invalid_argument& e) {
+      emit message(QString::fromStdString(e.what()));
+      return;
+    }
+  }
   if (!p) {
-    emit message(QString("'%1' is not a point: type X, Y, Z").arg(typed_->text()));
+    emit message(QString("'%1' is not a point: type X, Y, Z, node ID or element ID").arg(typed_->text()));
     return;
   }
   if (results_.size() >= kMaxProbes) {

@@ -591,6 +591,21 @@ TEST(Formulas, AFormulaWorksOnEveryVerbAndABadOneSaysWhere) {
   EXPECT_EQ(runVolpost("info " + bar + " --formula nothing").exitCode, 2);
 }
 
+TEST(ProbeCommand, NodesAndElementsByTheirIds) {
+  const std::string bar = dataFile("bar/bar_tet4.vtu");
+  const auto r = runVolpost("probe " + bar + " --node 5 --element 100 --field S.xx --field region");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* text : {"node 5 at 10, 0, 1: in element", "the node's own values", "element 100 (tet4), centre",
+                           "nodes: 327, 2294, 340, 2844", "at node 327 (", "region = 1"})
+    EXPECT_NE(r.output.find(text), std::string::npos) << "missing '" << text << "' in\n" << r.output;
+  const auto csv = runVolpost("probe " + bar + " --node 3 --field U.x --csv -");
+  EXPECT_NE(csv.output.find("0,1,1,"), std::string::npos) << csv.output;  // node 3 is at (0, 1, 1)
+  const auto missing = runVolpost("probe " + bar + " --node 99999");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("no node 99999"), std::string::npos) << missing.output;
+  EXPECT_EQ(runVolpost("probe " + bar + " --element ten").exitCode, 2);
+}
+
 TEST(ProbeCommand, WritesEveryQuantityAtFullPrecisionAsCsvFromAPointsFile) {
   const auto dir = std::filesystem::temp_directory_path() / "volpost_cli_probe";
   std::filesystem::create_directories(dir);

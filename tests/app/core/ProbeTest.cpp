@@ -7,6 +7,7 @@
 
 #include "core/Probe.hpp"
 #include "core/ScenePick.hpp"
+#include "host/CellShape.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -88,6 +89,44 @@ TEST(Probe, EveryNodeOfACurvedHex20MeshIsFoundWithItsOwnValue) {
   }
   // Used lattice points: corners (all indices even) and edge midpoints (exactly one odd).
   EXPECT_EQ(probed, 3 * (7 * 3 * 2 + 6 * 3 * 2 + 7 * 2 * 2 + 7 * 3 * 1)) << "every used node, three ways";
+}
+
+TEST(Probe, NodesAndElementsByTheFilesIds) {
+  const auto ring = quarterRing(6, 2);
+  const Mesh& mesh = ring->model().mesh();
+  const std::vector<double>& f = ring->model().fields[0]->values(0);
+  // A node: exactly its own value, at its own position, in an element that uses it.
+  const ProbeResult node = probeNode(*ring, 1001 + 32, 0);
+  EXPECT_EQ(node.method, ProbeMethod::AtNode);
+  EXPECT_EQ(node.point, mesh.nodes[32]);
+  EXPECT_EQ(*node.value("f"), f[32]);
+  EXPECT_NE(std::find(node.nodeIds.begin(), node.nodeIds.end(), 1001 + 32), node.nodeIds.end());
+  EXPECT_EQ(*node.value("element"), double(node.cellId - 101));  // that element's result as stored
+  // An element: its centre by its shape functions (on the true arcs of its curved faces),
+  // node data interpolated there, its own result as stored, its 20 nodes.
+  const ProbeResult element = probeElement(*ring, 101 + 4, 0);
+  EXPECT_EQ(element.method, ProbeMethod::ElementCentre);
+  EXPECT_EQ(element.cell, 4u);
+  EXPECT_EQ(element.nodeIds.size(), 20u);
+  EXPECT_EQ(*element.value("element"), 4.0);
+  double expected = 0.0;
+  const ShapeValues n = shapeFunctions(CellType::Hex20, referenceCentre(CellType::Hex20));
+  const auto nodes = mesh.cellNodes(4);
+  for (std::size_t k = 0; k < nodes.size(); ++k) expected += n[k] * f[nodes[k]];
+  EXPECT_NEAR(*element.value("f"), expected, 1e-12);
+  // The centre found by a click there gives the same element and values.
+  const ProbeResult clicked = probeAt(*ring, element.point, 0);
+  EXPECT_EQ(clicked.cellId, element.cellId);
+  EXPECT_NEAR(*clicked.value("f"), expected, 1e-9);
+  // Typed forms, and ids the file does not have.
+  EXPECT_EQ(probeById(*ring, "node 1033", 0)->point, mesh.nodes[32]);
+  EXPECT_EQ(probeById(*ring, "  Element 105", 0)->cell, 4u);
+  EXPECT_EQ(probeById(*ring, "e 105", 0)->cell, 4u);
+  EXPECT_FALSE(probeById(*ring, "1, 2, 3", 0));
+  EXPECT_FALSE(probeById(*ring, "node 1033 x", 0));
+  EXPECT_THROW(probeNode(*ring, 1000, 0), std::invalid_argument);
+  EXPECT_THROW(probeElement(*ring, 1, 0), std::invalid_argument);
+  EXPECT_THROW(probeById(*ring, "element -5", 0), std::invalid_argument);
 }
 
 TEST(Probe, PointsBetweenChordAndArcAreInsideAndInterpolatedByTheShapeFunctions) {

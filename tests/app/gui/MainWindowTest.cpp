@@ -486,6 +486,19 @@ class MainWindowTest : public QObject {
     QCOMPARE(panel->results().size(), std::size_t(2));
     QVERIFY(std::abs(*panel->results()[1].value("S.xx") - 100.0) < 0.05);
     QCOMPARE(window_->findChild<QTableWidget*>("probePicks")->rowCount(), 2);
+    typed->setText("node 5");  // the file's own ids: node 5 is at (10, 0, 1)
+    QTest::keyClick(typed, Qt::Key_Return);
+    QCOMPARE(panel->results().size(), std::size_t(3));
+    QCOMPARE(panel->results()[2].point, glm::dvec3(10.0, 0.0, 1.0));
+    QCOMPARE(panel->results()[2].nodeId.value_or(0), std::int64_t(5));
+    typed->setText("element 999999");  // refused, with the reason in the status bar
+    QTest::keyClick(typed, Qt::Key_Return);
+    QCOMPARE(panel->results().size(), std::size_t(3));
+    QVERIFY(window_->statusBar()->currentMessage().contains("no element 999999"));
+    window_->findChild<QTableWidget*>("probePicks")->selectRow(2);
+    for (QPushButton* b : panel->findChildren<QPushButton*>())
+      if (b->text() == "Remove") b->click();
+    QCOMPARE(panel->results().size(), std::size_t(2));
     QVERIFY(window_->findChild<QTableWidget*>("probeDetails")->rowCount() > 10);  // every quantity
     const std::string table = panel->table(',');
     QVERIFY(table.rfind("x,y,z,element,element_type,node,", 0) == 0);
