@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `volpost plot MODEL --from X,Y,Z --to X,Y,Z [--field Q ...] [--samples N] [--csv F] [-o plot.png]`:
 // plot over line: quantities sampled along a segment, as a table and as a chart.
+// `volpost plot MODEL --history --node ID [--element ID] [--at X,Y,Z] [--field Q ...]`: the
+// quantities against the step or time at those places.
+#include "../core/History.hpp"
 #include "../core/LinePlot.hpp"
 #include "../core/LineSampling.hpp"
 #include "../core/PictureFile.hpp"
@@ -13,9 +16,36 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace volpost::app {
+namespace {
+
+// The places of a history: --node and --element ids, --at points, in that order.
+std::vector<HistoryPlace> historyPlaces(const QCommandLineParser& parser, const QCommandLineOption& node,
+                                        const QCommandLineOption& element, const QCommandLineOption& at) {
+  std::vector<HistoryPlace> places;
+  for (const auto& [option, kind] :
+       {std::pair{&node, HistoryPlace::Kind::Node}, std::pair{&element, HistoryPlace::Kind::Element}})
+    for (const QString& text : parser.values(*option)) {
+      bool ok = false;
+      const qlonglong id = text.toLongLong(&ok);
+      if (!ok)
+        throw OptionError(
+            QString("--%1 %2 is not an id (a whole number)").arg(option->names().first(), text).toStdString());
+      places.push_back({kind, id, {}});
+    }
+  for (const QString& text : parser.values(at)) {
+    const auto p = parsePoint(text);
+    if (!p) throw OptionError(QString("--at %1 is not X,Y,Z").arg(text).toStdString());
+    places.push_back({HistoryPlace::Kind::Point, 0, *p});
+  }
+  return places;
+}
+
+}  // namespace
 
 int runPlot(const QStringList& args) {
   QCommandLineParser parser;
@@ -34,16 +64,46 @@ int runPlot(const QStringList& args) {
   const QCommandLineOption size("size", "The chart's size (default 800x500).", "WxH", "800x500");
   const QCommandLineOption readerOption = readerOptionOption();
   const QCommandLineOption formula = formulaOption();
-  parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption, formula});
+  const QCommandLineOption history("history",
+                                   "Plot the quantities against the step (or the time, where the steps' times "
+                                   "increase) at --node, --element or --at places instead of along a line.");
+  const QCommandLineOption node("node", "With --history: a node by its id in the file (repeatable).", "ID");
+  const QCommandLineOption element("element", "With --history: an element by its id, at its centre (repeatable).",
+                                   "ID");
+  const QCommandLineOption at("at", "With --history: a point X,Y,Z (repeatable).", "X,Y,Z");
+  parser.addOptions(
+      {from, to, field, samples, step, csv, output, size, readerOption, formula, history, node, element, at});
   if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
-  if (parser.positionalArguments().size() != 1 || !parser.isSet(from) || !parser.isSet(to) ||
-      (!parser.isSet(csv) && !parser.isSet(output))) {
+  if (parser.isSet(history)) {
+    for (const QCommandLineOption* o : {&from, &to, &samples, &step})
+      if (parser.isSet(*o)) {
+        printError(QString("--%1 is for a plot over a line; --history plots every step at --node, --element or --at")
+                       .arg(o->names().first()));
+        return 2;
+      }
+    if (parser.positionalArguments().size() != 1 ||
+        (!parser.isSet(node) && !parser.isSet(element) && !parser.isSet(at)) ||
+        (!parser.isSet(csv) && !parser.isSet(output))) {
+      printError(
+          "plot --history needs MODEL, --node ID, --element ID or --at X,Y,Z, and --csv FILE or -o chart.png "
+          "(volpost plot model.frd --history --node 5484 --field S.mises -o history.png)");
+      return 2;
+    }
+  } else {
+    for (const QCommandLineOption* o : {&node, &element, &at})
+      if (parser.isSet(*o)) {
+        printError(QString("--%1 goes with --history (a plot over the steps)").arg(o->names().first()));
+        return 2;
+      }
+  }
+  if (!parser.isSet(history) && (parser.positionalArguments().size() != 1 || !parser.isSet(from) || !parser.isSet(to) ||
+                                 (!parser.isSet(csv) && !parser.isSet(output)))) {
     printError("plot needs MODEL, --from, --to and --csv FILE or -o chart.png "
                "(volpost plot bar.vtu --from 0,0.5,0.5 --to 10,0.5,0.5 --field S.xx -o plot.png)");
     return 2;
   }
   const auto a = parsePoint(parser.value(from)), b = parsePoint(parser.value(to));
-  if (!a || !b) {
+  if (!parser.isSet(history) && (!a || !b)) {
     printError(QString("--from %1 / --to %2: not X,Y,Z").arg(parser.value(from), parser.value(to)));
     return 2;
   }
@@ -85,6 +145,33 @@ int runPlot(const QStringList& args) {
       const auto first = session->defaultQuantity();
       if (!first) throw std::invalid_argument("the model has no result to plot");
       keys.push_back(first->key());
+    }
+    if (parser.isSet(history)) {
+      History h;
+      try {
+        h = sampleHistory(*session, historyPlaces(parser, node, element, at), keys, terminalProgress("sampling"));
+      } catch (const std::invalid_argument& e) {  // an id or place count the model cannot honour
+        throw OptionError(e.what());
+      }
+      std::size_t outside = 0;
+      for (const History::Curve& c : h.curves)
+        outside += std::all_of(c.values.begin(), c.values.end(), [](double v) { return std::isnan(v); });
+      if (outside == h.curves.size()) throw std::runtime_error("no curve has a value: the places lie outside the mesh");
+      if (parser.isSet(csv)) {
+        const std::string table = historyTable(h);
+        if (csvPath.empty()) std::fwrite(table.data(), 1, table.size(), stdout);
+        else writeFileAtomically(csvPath, table);
+      }
+      if (parser.isSet(output)) {
+        savePicture(chartImage(historyChart(h), width, height), picture);
+        std::printf("%s\n", qPrintable(QFileInfo(picture).absoluteFilePath()));
+      }
+      if (!csvPath.empty())
+        std::printf("%s: %zu steps, %zu curves\n", csvPath.c_str(), h.times.size(), h.curves.size());
+      if (outside)
+        std::fprintf(stderr, "volpost: note: %zu of the %zu curves have no value (a point outside the mesh)\n", outside,
+                     h.curves.size());
+      return 0;
     }
     checkStepExists(*session, keys, *stepIndex);
     const LineSamples line = sampleLine(*session, *a, *b, std::size_t(count), keys, *stepIndex, terminalProgress("sampling"));

@@ -1,114 +1,32 @@
 // SPDX-License-Identifier: MIT
 #include "LinePlot.hpp"
 
-#include "Legend.hpp"
-
-#include <QPainterPath>
-
-#include <algorithm>
-#include <cmath>
+#include "Chart.hpp"
 
 namespace volpost::app {
 namespace {
 
-const QColor kCurveColors[] = {QColor(31, 119, 180), QColor(214, 39, 40), QColor(44, 160, 44), QColor(255, 127, 14),
-                               QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(23, 190, 207)};
-
-QString tickText(double v) { return QString::number(v, 'g', 4); }
+Chart chartOf(const LineSamples& s) {
+  Chart chart;
+  chart.xTitle = "distance along the line (model units)";
+  for (std::size_t k = 0; k < s.keys.size(); ++k) {
+    ChartCurve curve;
+    curve.name = s.names[k];
+    curve.x = s.arcLength;
+    for (std::size_t i = 0; i < s.points.size(); ++i) curve.y.push_back(s.value(i, k));
+    chart.curves.push_back(std::move(curve));
+  }
+  return chart;
+}
 
 }  // namespace
 
-void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& s) {
-  painter.save();
-  painter.setRenderHint(QPainter::Antialiasing);
-  QFont font = painter.font();
-  font.setPixelSize(std::clamp(area.height() / 30, 9, 40));
-  painter.setFont(font);
-  const QFontMetrics fm(font);
-  double lo = INFINITY, hi = -INFINITY;
-  for (std::size_t k = 0; k < s.keys.size(); ++k)
-    for (std::size_t i = 0; i < s.points.size(); ++i)
-      if (const double v = s.value(i, k); std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-  const double length = s.arcLength.empty() ? 1.0 : std::max(s.arcLength.back(), 1e-300);
-  if (!(hi >= lo)) lo = 0.0, hi = 1.0;  // nothing on the mesh: empty axes
-  if (hi == lo) lo -= std::max(1.0, std::abs(lo)) * 0.5, hi += std::max(1.0, std::abs(hi)) * 0.5;
-  const auto yTicks = niceTicks(lo, hi, 6);
-  const auto xTicks = niceTicks(0.0, length, 6);
-  int labelWidth = 0;
-  for (double t : yTicks) labelWidth = std::max(labelWidth, fm.horizontalAdvance(tickText(t)));
-  // The key: as many columns (up to 3) as its longest name leaves room for; names are cut
-  // with an ellipsis only when one column cannot hold them.
-  int nameWidth = 0;
-  for (const std::string& name : s.names)
-    nameWidth = std::max(nameWidth, fm.horizontalAdvance(QString::fromStdString(name)));
-  const int keyEntry = nameWidth + 40;
-  const int columns = std::clamp(area.width() / std::max(keyEntry, 1), 1, std::max(1, std::min(3, int(s.keys.size()))));
-  const int keyRows = int((s.keys.size() + std::size_t(columns) - 1) / std::size_t(columns));
-  const int keyHeight = fm.height() * keyRows;
-  // Room at the right for half of the last x label, at the left for the y axis's title.
-  const int rightMargin = std::max(16, fm.horizontalAdvance(tickText(xTicks.empty() ? length : xTicks.back())) / 2 + 6);
-  const QRect plot =
-      area.adjusted(labelWidth + 14 + fm.height(), fm.height() + keyHeight + 8, -rightMargin, -2 * fm.height() - 10);
-  const auto px = [&](double a) { return plot.left() + a / length * plot.width(); };
-  const auto py = [&](double v) { return plot.bottom() - (v - lo) / (hi - lo) * plot.height(); };
-  painter.setPen(QPen(QColor(225, 225, 225), 1.0));
-  for (double t : yTicks) painter.drawLine(QPointF(plot.left(), py(t)), QPointF(plot.right(), py(t)));
-  for (double t : xTicks) painter.drawLine(QPointF(px(t), plot.top()), QPointF(px(t), plot.bottom()));
-  painter.setPen(QPen(QColor(60, 60, 60), 1.0));
-  painter.drawRect(plot);
-  for (double t : yTicks)
-    painter.drawText(QRectF(area.left(), py(t) - fm.height() / 2.0, labelWidth + 8, fm.height()),
-                     Qt::AlignRight | Qt::AlignVCenter, tickText(t));
-  for (double t : xTicks)
-    painter.drawText(QRectF(px(t) - 50, plot.bottom() + 4, 100, fm.height()), Qt::AlignHCenter | Qt::AlignTop, tickText(t));
-  painter.drawText(QRectF(plot.left(), plot.bottom() + 6 + fm.height(), plot.width(), fm.height()), Qt::AlignHCenter,
-                   "distance along the line (model units)");
-  {  // the y axis's title: the quantity, or "value" for several
-    painter.save();
-    painter.translate(area.left() + 2, plot.center().y());
-    painter.rotate(-90.0);
-    const QString title = s.names.size() == 1 ? QString::fromStdString(s.names.front()) : QString("value");
-    painter.drawText(QRectF(-plot.height() / 2.0, 0, plot.height(), fm.height()), Qt::AlignHCenter | Qt::AlignTop,
-                     fm.elidedText(title, Qt::ElideRight, plot.height()));
-    painter.restore();
-  }
-  // One curve per quantity; a sample off the mesh breaks it.
-  for (std::size_t k = 0; k < s.keys.size(); ++k) {
-    const QColor color = kCurveColors[k % std::size(kCurveColors)];
-    QPainterPath path;
-    bool open = false;
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const double v = s.value(i, k);
-      if (!std::isfinite(v)) {
-        open = false;
-        continue;
-      }
-      const QPointF p(px(s.arcLength[i]), py(v));
-      if (open) path.lineTo(p);
-      else path.moveTo(p);
-      open = true;
-    }
-    painter.setPen(QPen(color, std::max(1.5, font.pixelSize() / 7.0)));
-    painter.drawPath(path);
-    const int column = int(k % std::size_t(columns)), row = int(k / std::size_t(columns));
-    const double columnWidth = double(area.width() - 8) / columns;
-    const QRectF key(area.left() + 8 + column * columnWidth, area.top() + 4 + row * fm.height(), columnWidth - 8,
-                     fm.height());
-    painter.drawLine(QPointF(key.left(), key.center().y()), QPointF(key.left() + 18, key.center().y()));
-    painter.setPen(QColor(30, 30, 30));
-    const QRectF text = key.adjusted(24, 0, 0, 0);
-    painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter,
-                     fm.elidedText(QString::fromStdString(s.names[k]), Qt::ElideRight, int(text.width())));
-  }
-  painter.restore();
+void paintLinePlot(QPainter& painter, const QRect& area, const LineSamples& samples) {
+  paintChart(painter, area, chartOf(samples));
 }
 
 QImage linePlotImage(const LineSamples& samples, int width, int height) {
-  QImage image(width, height, QImage::Format_RGB32);
-  image.fill(Qt::white);
-  QPainter painter(&image);
-  paintLinePlot(painter, image.rect(), samples);
-  return image;
+  return chartImage(chartOf(samples), width, height);
 }
 
 }  // namespace volpost::app

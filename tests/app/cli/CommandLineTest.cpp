@@ -886,6 +886,27 @@ TEST(RenderCommand, IsoSurfacesShowInTheSurfaceView) {
 
 // Plot over line: the bar's stress along its axis is F/A = 100 away from the ends; a line
 // that starts outside the mesh has gaps (nan) there; the chart is written.
+TEST(PlotCommand, HistoryAtANodeAnElementAndAPointAsATableAndAChart) {
+  const std::string golden = dataFile("formats/golden.frd");  // T at two steps, t = 1 and 2
+  const auto r = runVolpost("plot " + golden + " --history --node 10 --element 102 --at 1.5,0.5,0.5 --field T --csv -");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("step,label,time,T at node 10,T at element 102,\"T at (1.5, 0.5, 0.5)\""), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("2,\"step 2, t = 2\",2,0,109.33333333333331,113"), std::string::npos) << r.output;
+  const auto png = (std::filesystem::path(::testing::TempDir()) / "volpost_history.png").string();
+  const auto chart =
+      runVolpost("plot " + golden + " --history --node 10 --element 102 --field T -o " + png + " --size 400x300");
+  ASSERT_EQ(chart.exitCode, 0) << chart.output;
+  EXPECT_EQ(QImage(QString::fromStdString(png)).size(), QSize(400, 300));
+  // Refusals: a line's options, an id the file lacks, places outside only.
+  EXPECT_EQ(runVolpost("plot " + golden + " --history --node 10 --from 0,0,0 --csv -").exitCode, 2);
+  EXPECT_EQ(runVolpost("plot " + golden + " --node 10 --from 0,0,0 --to 1,0,0 --csv -").exitCode, 2);
+  const auto missing = runVolpost("plot " + golden + " --history --node 5 --csv -");
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("no node 5 "), std::string::npos) << missing.output;
+  EXPECT_EQ(runVolpost("plot " + golden + " --history --at 50,0,0 --csv -").exitCode, 1);
+}
+
 TEST(PlotCommand, SamplesALineAsATableAndAChart) {
   const std::string model = dataFile("bar/bar_tet4.vtu");
   const std::string csv = ::testing::TempDir() + "/line.csv", png = ::testing::TempDir() + "/line.png";

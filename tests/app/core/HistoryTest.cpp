@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// History plots: values against the step at nodes, elements and points, checked against
+// the stored values; the time axis only for increasing times; steps a field lacks and
+// points outside are gaps, never a repeated value.
+#include "core/History.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace volpost;
+using namespace volpost::app;
+
+namespace {
+
+// One tet; T = (node + 1) * step at three steps (times 0.5, 1, 2), "mode" with two steps,
+// a per-element "E" = 10 * step.
+std::shared_ptr<ModelSession> tetWithSteps(std::vector<double> times) {
+  auto model = std::make_shared<Model>();
+  Mesh& mesh = model->mesh();
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh.nodeIds = {11, 12, 13, 14};
+  const NodeIndex tet[4] = {0, 1, 2, 3};
+  mesh.addCell(CellType::Tet4, tet);
+  mesh.cellIds = {7};
+  std::vector<std::vector<double>> t, e;
+  std::vector<Step> steps;
+  for (std::size_t s = 0; s < times.size(); ++s) {
+    t.push_back({1.0 * double(s + 1), 2.0 * double(s + 1), 3.0 * double(s + 1), 4.0 * double(s + 1)});
+    e.push_back({10.0 * double(s + 1)});
+    steps.push_back({"step " + std::to_string(s + 1), times[s]});
+  }
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, t, steps));
+  model->fields.push_back(Field::fromValues("E", FieldLocation::Cell, 1, e, steps));
+  model->fields.push_back(Field::fromValues("mode", FieldLocation::Node, 1, {t[0], t[0]}, {steps[0], steps[1]}));
+  return ModelSession::fromModel(model);
+}
+
+}  // namespace
+
+TEST(History, ValuesAtANodeAnElementAndAPointAtEveryStep) {
+  const auto session = tetWithSteps({0.5, 1.0, 2.0});
+  const History h = sampleHistory(*session,
+                                  {{HistoryPlace::Kind::Node, 12, {}},
+                                   {HistoryPlace::Kind::Element, 7, {}},
+                                   {HistoryPlace::Kind::Point, 0, {0.25, 0.25, 0.25}},
+                                   {HistoryPlace::Kind::Point, 0, {5, 5, 5}}},
+                                  {"T", "E"});
+  ASSERT_EQ(h.curves.size(), 8u);
+  EXPECT_TRUE(h.byTime);
+  EXPECT_EQ(h.curves[0].name, "T at node 12");
+  EXPECT_EQ(h.curves[0].values, (std::vector<double>{2, 4, 6}));
+  EXPECT_EQ(h.curves[1].values, (std::vector<double>{10, 20, 30}));  // E, as stored, at the node's element
+  EXPECT_NEAR(h.curves[2].values[2], 3.0 * 2.5, 1e-12);              // the centre: the mean of 1..4, times 3
+  EXPECT_NEAR(h.curves[4].values[1], 2.0 * (0.25 * 1 + 0.25 * 2 + 0.25 * 3 + 0.25 * 4), 1e-12);
+  EXPECT_TRUE(std::isnan(h.curves[6].values[0]));  // outside
+  const Chart chart = historyChart(h);
+  EXPECT_EQ(chart.xTitle, "time");
+  EXPECT_EQ(chart.curves[0].x, (std::vector<double>{0.5, 1.0, 2.0}));
+  const std::string table = historyTable(h);
+  EXPECT_EQ(table.substr(0, table.find('\n')),
+            "step,label,time,T at node 12,E at node 12,T at element 7,E at element 7,\"T at (0.25, 0.25, 0.25)\","
+            "\"E at (0.25, 0.25, 0.25)\",\"T at (5, 5, 5)\",\"E at (5, 5, 5)\"");
+  EXPECT_NE(table.find("\n3,step 3,2,6,30,"), std::string::npos) << table;
+}
+
+TEST(History, StepNumbersWithoutIncreasingTimesAndGapsWhereAFieldHasNoStep) {
+  const auto session = tetWithSteps({0.0, 0.0, 0.0});
+  const History h = sampleHistory(*session, {{HistoryPlace::Kind::Node, 14, {}}}, {"mode", "T"});
+  EXPECT_FALSE(h.byTime);
+  EXPECT_EQ(historyChart(h).xTitle, "step");
+  EXPECT_EQ(historyChart(h).curves[0].x, (std::vector<double>{1, 2, 3}));
+  ASSERT_EQ(h.curves[0].values.size(), 3u);
+  EXPECT_EQ(h.curves[0].values[1], 4.0);
+  EXPECT_TRUE(std::isnan(h.curves[0].values[2]));  // "mode" has two steps: no repeat of the last
+}
+
+TEST(History, RefusalsNameWhatIsWrong) {
+  const auto session = tetWithSteps({1, 2});
+  EXPECT_THROW(sampleHistory(*session, {{HistoryPlace::Kind::Node, 99, {}}}, {"T"}), std::invalid_argument);
+  EXPECT_THROW(sampleHistory(*session, {{HistoryPlace::Kind::Element, 8, {}}}, {"T"}), std::invalid_argument);
+  EXPECT_THROW(sampleHistory(*session, {{HistoryPlace::Kind::Node, 11, {}}}, {"nope"}), std::invalid_argument);
+  EXPECT_THROW(sampleHistory(*session, {}, {"T"}), std::invalid_argument);
+  std::vector<HistoryPlace> many(kMaxHistoryCurves + 1, {HistoryPlace::Kind::Node, 11, {}});
+  EXPECT_THROW(sampleHistory(*session, many, {"T"}), std::invalid_argument);
+}
