@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "ProbeController.hpp"
 
+#include "../core/History.hpp"
 #include "../core/Probe.hpp"
 #include "../core/ProbeTable.hpp"
+#include "HistoryPanel.hpp"
 #include "ProbePanel.hpp"
+
 #include "Viewport.hpp"
+#include "host/CellShape.hpp"
 
 #include <QAction>
 #include <QDockWidget>
@@ -52,6 +56,58 @@ ProbeController::ProbeController(QMainWindow& window, Viewport& viewport, QMenu&
   connect(&viewport_, &Viewport::hovered, this, &ProbeController::showHover);
   connect(panel_, &ProbePanel::pointsChanged, this, &ProbeController::setPoints);
   connect(panel_, &ProbePanel::message, this, [this](const QString& text) { window_.statusBar()->showMessage(text); });
+  connect(panel_, &ProbePanel::historyRequested, this, &ProbeController::plotHistory);
+}
+
+// The shown quantity against the steps at probed points. A probe on a node follows that
+// node; one inside an element follows the same material point (its natural coordinates in
+// the undeformed element): the deformed shape moves with the step, the point with it.
+void ProbeController::plotHistory(const std::vector<std::size_t>& rows) {
+  const Scene& scene = viewport_.scene();
+  const ModelSession* base = scene.baseSession();
+  if (!base || !scene.view()) {
+    window_.statusBar()->showMessage("Plot Over Steps: probe points on a model with a result shown first");
+    return;
+  }
+  std::vector<HistoryPlace> places;
+  const auto& results = panel_->results();
+  for (std::size_t row : rows) {
+    if (row >= results.size() || !results[row].inside()) continue;
+    const ProbeResult& r = results[row];
+    if (r.nodeId) {
+      places.push_back({HistoryPlace::Kind::Node, *r.nodeId, {}});
+    } else if (r.method == ProbeMethod::Isoparametric && base->model().meshBuilt()) {
+      const Mesh& mesh = base->model().mesh();
+      std::vector<glm::dvec3> corners;
+      for (NodeIndex n : mesh.cellNodes(r.cell)) corners.push_back(mesh.nodes[n]);
+      places.push_back({HistoryPlace::Kind::Point, 0, positionAt(r.cellType, corners, r.natural)});
+    } else {
+      places.push_back({HistoryPlace::Kind::Point, 0, r.point});
+    }
+  }
+  if (places.empty()) {
+    window_.statusBar()->showMessage("Plot Over Steps: no probed point lies on the model");
+    return;
+  }
+  if (places.size() > kMaxHistoryCurves) places.resize(kMaxHistoryCurves);
+  try {
+    History h = sampleHistory(*base, places, {scene.view()->quantity.key()});
+    if (!historyDock_) {
+      historyDock_ = new QDockWidget("History", &window_);
+      historyDock_->setObjectName("historyDock");
+      history_ = new HistoryPanel(historyDock_);
+      history_->setObjectName("historyPanel");
+      historyDock_->setWidget(history_);
+      window_.addDockWidget(Qt::BottomDockWidgetArea, historyDock_);
+      connect(history_, &HistoryPanel::message, this,
+              [this](const QString& text) { window_.statusBar()->showMessage(text); });
+    }
+    history_->show(std::move(h));
+    historyDock_->show();
+    historyDock_->raise();
+  } catch (const std::exception& e) {
+    window_.statusBar()->showMessage(QString("Plot Over Steps: %1").arg(e.what()));
+  }
 }
 
 void ProbeController::refresh() {

@@ -21,6 +21,7 @@ class QMenu;
 
 namespace volpost::app {
 
+class HistoryPanel;
 class ProbePanel;
 class Viewport;
 
@@ -37,17 +38,21 @@ class ProbeController : public QObject {
   void syncToScene();
   QDockWidget* dock() const { return dock_; }
   ProbePanel* panel() const { return panel_; }
+  HistoryPanel* historyPanel() const { return history_; }
 
  private:
   void addPoint(const glm::dvec3& point);
   void setPoints(const std::vector<glm::dvec3>& points);
   void showHover(QPoint globalPosition, bool hit, const glm::dvec3& point);
+  void plotHistory(const std::vector<std::size_t>& rows);
 
   QMainWindow& window_;
   Viewport& viewport_;
   SessionGetter session_;
   QDockWidget* dock_ = nullptr;
   ProbePanel* panel_ = nullptr;
+  QDockWidget* historyDock_ = nullptr;
+  HistoryPanel* history_ = nullptr;
   QAction* probeAction_ = nullptr;
   QAction* extremesAction_ = nullptr;
 };

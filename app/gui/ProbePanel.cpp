@@ -101,6 +101,17 @@ ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
   button("Copy", &ProbePanel::copyAll);
   button("Export CSV...", &ProbePanel::exportCsv);
   button("Remove", &ProbePanel::removeSelected);
+  // Plot Over Steps: two or more selected probes, else all of them (one is always selected
+  // to show its details).
+  button("Plot Over Steps", [this] {
+    std::vector<std::size_t> rows;
+    for (const QModelIndex& index : picks_->selectionModel()->selectedRows()) rows.push_back(std::size_t(index.row()));
+    if (rows.size() < 2) rows.clear();
+    if (rows.empty())
+      for (std::size_t i = 0; i < results_.size(); ++i) rows.push_back(i);
+    std::sort(rows.begin(), rows.end());
+    emit historyRequested(rows);
+  });
   button("Clear", [this] { emit pointsChanged({}); });
   layout->addLayout(buttons);
 }

@@ -36,6 +36,8 @@ class ProbePanel : public QWidget {
  signals:
   /// The user added, removed or cleared points: the scene should hold these now.
   void pointsChanged(const std::vector<glm::dvec3>& points);
+  /// Plot Over Steps: the shown quantity against the steps at these probes (row numbers).
+  void historyRequested(const std::vector<std::size_t>& rows);
   void message(const QString& text);
 
  private:

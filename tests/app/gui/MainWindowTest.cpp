@@ -5,6 +5,7 @@
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
 #include "gui/CalculatorDialog.hpp"
+#include "gui/HistoryPanel.hpp"
 #include "gui/LinePlotPanel.hpp"
 #include "gui/MainWindow.hpp"
 #include "gui/ProbePanel.hpp"
@@ -305,6 +306,30 @@ class MainWindowTest : public QObject {
     QVERIFY(linear->isEnabled());
     for (QAction* a : window_->findChildren<QAction*>())
       QVERIFY2(!a->text().contains("seed") && !a->text().contains("MPVONC"), qPrintable(a->text()));
+  }
+
+  void plotOverStepsAtProbedPoints() {
+    // Probe panel > Plot Over Steps: the shown quantity at each probe, over every step.
+    QVERIFY(open(VOLPOST_TEST_DATA "/formats/golden.frd"));  // T at two steps
+    QVERIFY(window_->selectQuantity("T"));
+    window_->findChild<QAction*>("probeAction")->setChecked(true);
+    auto* typed = window_->findChild<QLineEdit*>("probeTyped");
+    for (const char* where : {"node 10", "1.5, 0.5, 0.5"}) {
+      typed->setText(where);
+      QTest::keyClick(typed, Qt::Key_Return);
+    }
+    auto* panel = window_->findChild<ProbePanel*>("probePanel");
+    QCOMPARE(panel->results().size(), std::size_t(2));
+    for (QPushButton* b : panel->findChildren<QPushButton*>())
+      if (b->text() == "Plot Over Steps") b->click();
+    auto* history = window_->findChild<HistoryPanel*>("historyPanel");
+    QVERIFY(history && history->history());
+    QVERIFY(window_->findChild<QDockWidget*>("historyDock")->isVisible());
+    const History& h = *history->history();
+    QCOMPARE(h.curves.size(), std::size_t(2));
+    QCOMPARE(h.curves[0].place, std::string("node 10"));
+    QCOMPARE(h.curves[1].values, (std::vector<double>{56.5, 113.0}));  // as `volpost probe` gives them
+    QVERIFY(window_->findChild<QLabel*>("historyTitle")->text().startsWith("T over 2 steps at node 10"));
   }
 
   void theCalculatorsFormulaIsAResultKeptInTheStateFile() {
