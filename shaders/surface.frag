@@ -17,6 +17,7 @@ uniform bool orthographic;
 uniform vec3 noValueColor;
 uniform vec3 plainColor;
 uniform float opacity;
+uniform int colorBands;
 
 out vec4 fragColor;
 
@@ -24,7 +25,7 @@ void main() {
   if (clippedAway(vModelPosition)) discard;
   vec3 base = scalarLocation < 0 ? plainColor
              : vMissing > 0.0    ? noValueColor
-                                 : colorForValue(colorMap, vValue, valueMin, valueMax, noValueColor);
+                                 : colorForValueInBands(colorMap, vValue, valueMin, valueMax, noValueColor, colorBands);
   if (lighting) {
     // Headlight, two-sided: a face seen head-on shows the exact color-map color.
     vec3 toEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);

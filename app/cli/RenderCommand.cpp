@@ -59,8 +59,17 @@ struct Options {
   QCommandLineOption viewAngle{"view-angle", "Angle of view across the picture's narrower side, degrees (default 30).",
                                "DEG"};
   QCommandLineOption size{"size", "Image size (default 800x600).", "WxH", "800x600"};
-  QCommandLineOption colormap{"colormap", "cool-warm (default), viridis, rainbow, grayscale, seismic; also the colors of "
-                                          "the default volume transfer function.", "NAME"};
+  QCommandLineOption colormap{"colormap",
+                              "cool-warm (default), viridis, rainbow, grayscale, seismic, each also "
+                              "NAME-reversed; also the colors of the default volume transfer function.",
+                              "NAME"};
+  QCommandLineOption bands{"bands",
+                           "Discrete contour bands of equal width on the surface, sections and slices (12 "
+                           "is the Abaqus default; 0: continuous colors).",
+                           "N"};
+  QCommandLineOption symmetric{"symmetric",
+                               "Widen the values' own color range to -M..M, M the larger of |min| and "
+                               "|max|: zero in the middle of a diverging map."};
   QCommandLineOption range{"range", "Fixed color range MIN:MAX instead of the step's own, or all-steps: the range "
                                     "over every step (also the default transfer function's range).", "MIN:MAX"};
   QCommandLineOption noEdges{"no-edges", "Hide element edges on the surface."};
@@ -296,6 +305,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     return;
   }
   refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
+  refuse(o.bands, "bands the surface's colors; a volume's colors come from its transfer function");
   refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
   refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
   const RendererEntry& r = *chosen.volume;
@@ -398,6 +408,21 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     const auto r = parseRange(p.value(o.range));
     if (!r) throw UsageError(QString("--range %1 is not MIN:MAX with finite MIN < MAX, nor all-steps").arg(p.value(o.range)).toStdString());
     scene.setFixedRange(*r);
+  }
+  if (p.isSet(o.symmetric)) {
+    if (p.isSet(o.range) && p.value(o.range) != "all-steps")
+      throw UsageError("--symmetric widens the values' own range; a typed --range is used as it is");
+    scene.setSymmetricRange(true);
+  }
+  if (p.isSet(o.bands)) {
+    bool ok = false;
+    const int n = p.value(o.bands).toInt(&ok);
+    if (!ok || n < 0 || n == 1 || n > kMaxColorBands)
+      throw UsageError(QString("--bands %1 is not 0 (continuous) or a count from 2 to %2")
+                           .arg(p.value(o.bands))
+                           .arg(kMaxColorBands)
+                           .toStdString());
+    scene.setColorBands(n);
   }
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
@@ -511,13 +536,14 @@ int runRender(const QStringList& args) {
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
   parser.addOptions(
-      {o.field,        o.step,       o.camera,        o.view,         o.eye,         o.target,         o.up,
-       o.viewAngle,    o.size,       o.colormap,      o.range,        o.noEdges,     o.noLegend,       o.noTriad,
-       o.deform,       o.undeformed, o.flat,          o.output,       o.renderer,    o.mode,           o.tf,
-       o.tf2d,         o.clip,       o.clipBox,       o.iso,          o.volumeEdges, o.samplingStep,   o.termination,
-       o.shading,      o.floatOut,   o.threads,       o.state,        o.saveState,   o.streamlines,    o.lineWidth,
-       o.tubes,        o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,   o.surfaceOpacity, o.probe,
-       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice,       o.formula});
+      {o.field,          o.step,        o.camera,       o.view,       o.eye,           o.target,       o.up,
+       o.viewAngle,      o.size,        o.colormap,     o.range,      o.bands,         o.symmetric,    o.noEdges,
+       o.noLegend,       o.noTriad,     o.deform,       o.undeformed, o.flat,          o.output,       o.renderer,
+       o.mode,           o.tf,          o.tf2d,         o.clip,       o.clipBox,       o.iso,          o.volumeEdges,
+       o.samplingStep,   o.termination, o.shading,      o.floatOut,   o.threads,       o.state,        o.saveState,
+       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,
+       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice,
+       o.formula});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

@@ -30,6 +30,11 @@ class BoundaryRenderer {
   void setSession(std::shared_ptr<const ModelSession> session);
   /// Colors by the view's values; nullptr shows the plain surface.
   void setScalars(const ScalarView* view, DisplayRange range);
+  void setColorBands(int bands) {
+    surface_.setColorBands(bands);
+    sections_.setColorBands(bands);
+    slices_.setColorBands(bands);
+  }
   void setColorMap(const ColorMap& map) {
     surface_.setColorMap(map);
     sections_.setColorMap(map);

@@ -55,6 +55,17 @@ int labelWidthOf(const QFontMetrics& fm, const std::vector<double>& ticks) {
 
 int barWidthOf(const QRect& area) { return std::max(8, area.width() / 40); }
 
+// The bands' bounds, every one when they fit the bar's height (Abaqus labels all 13 of 12
+// bands), else every k-th, the ends always.
+std::vector<double> bandBounds(const LegendContent& c, int barHeight, int lineHeight) {
+  const int fit = std::max(2, barHeight / std::max(1, lineHeight));
+  const int stride = std::max(1, (c.bands + fit - 1) / (fit - 1));
+  std::vector<double> bounds;
+  for (int b = 0; b <= c.bands; b += stride) bounds.push_back(c.min + (c.max - c.min) * b / c.bands);
+  if (c.bands % stride != 0) bounds.push_back(c.max);
+  return bounds;
+}
+
 }  // namespace
 
 int legendWidth(const QRect& area) {
@@ -98,17 +109,27 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     painter.restore();
     return;
   }
-  const auto ticks = niceTicks(c.min, c.max);
+  std::vector<double> ticks = c.bands > 0 ? bandBounds(c, bottom - top, fm.height()) : niceTicks(c.min, c.max);
   const int labelWidth = labelWidthOf(fm, ticks);
   const int barRight = area.right() - labelWidth - 12;
   const QRect bar(barRight - barWidth, top, barWidth, bottom - top);
 
-  QLinearGradient gradient(bar.bottomLeft(), bar.topLeft());
-  for (int i = 0; i <= 32; ++i) {
-    const auto rgb = map.at(i / 32.0);
-    gradient.setColorAt(i / 32.0, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+  if (c.bands > 0) {  // each band in the color of its middle, as the surface draws it
+    for (int b = 0; b < c.bands; ++b) {
+      const auto rgb = map.at((b + 0.5) / c.bands);
+      const int y0 = bar.bottom() - int(std::lround(double(b) / c.bands * bar.height()));
+      const int y1 = bar.bottom() - int(std::lround(double(b + 1) / c.bands * bar.height()));
+      painter.fillRect(QRect(bar.left(), y1, bar.width(), y0 - y1 + 1),
+                       QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+    }
+  } else {
+    QLinearGradient gradient(bar.bottomLeft(), bar.topLeft());
+    for (int i = 0; i <= 32; ++i) {
+      const auto rgb = map.at(i / 32.0);
+      gradient.setColorAt(i / 32.0, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+    }
+    painter.fillRect(bar, gradient);
   }
-  painter.fillRect(bar, gradient);
   painter.setPen(QColor(40, 40, 40));
   painter.drawRect(bar);
 

@@ -23,6 +23,8 @@ struct LegendContent {
   /// No color bar (a 2D transfer function's colors depend on more than the value): this
   /// line says where the colors come from instead.
   QString noBarNote;
+  /// Discrete bands of equal width (0: a continuous bar); ticks then mark their bounds.
+  int bands = 0;
 };
 
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.

@@ -150,6 +150,20 @@ void Scene::setRangeOverSteps(bool on) {
   if (!state_.volume.transferFunction) ++revisions_.tables;
 }
 
+void Scene::setSymmetricRange(bool on) {
+  state_.symmetricRange = on;
+  ++revisions_.scalars;
+  if (!state_.volume.transferFunction) ++revisions_.tables;
+}
+
+void Scene::setColorBands(int bands) {
+  if (bands < 0 || bands == 1 || bands > kMaxColorBands)
+    throw std::invalid_argument(std::to_string(bands) + " color bands: 0 (continuous) or 2 to " +
+                                std::to_string(kMaxColorBands));
+  state_.colorBands = bands;
+  ++revisions_.colorMap;
+}
+
 void Scene::setShowEdges(bool show) { state_.edges = show; }
 
 void Scene::setVolumeShown(bool shown) {
@@ -539,11 +553,16 @@ std::optional<Scene::Extremes> Scene::extremes() const {
 DisplayRange Scene::displayRange() const {
   if (state_.fixedRange) return *state_.fixedRange;
   if (!view_) return DisplayRange{};
+  DisplayRange range = autoRange(*view_);
   if (state_.rangeOverSteps && session_) {
     const ValueRange all = session_->rangeOverSteps(view_->quantity);
-    if (all.valid()) return all.max > all.min ? DisplayRange{all.min, all.max} : autoRange(*view_);
+    if (all.valid() && all.max > all.min) range = {all.min, all.max};
   }
-  return autoRange(*view_);
+  if (state_.symmetricRange) {
+    const double m = std::max(std::abs(range.min), std::abs(range.max));
+    if (m > 0.0 && std::isfinite(m)) range = {-m, m};
+  }
+  return range;
 }
 
 TransferFunction Scene::transferFunction() const {
@@ -585,6 +604,7 @@ std::vector<LegendPicture> Scene::legends() const {
       const DisplayRange range = displayRange();
       content.min = range.min;
       content.max = range.max;
+      content.bands = state_.colorBands;
       out.push_back({ColorMap::named(state_.colorMap), content});
     }
   }

@@ -98,6 +98,10 @@ class Scene {
   /// Colors (and the default transfer function) span the quantity's range over every step
   /// (on) or each step's own (off); either turns a fixed range off.
   void setRangeOverSteps(bool on);
+  /// The values' own range widened to be symmetric about zero (see SceneState).
+  void setSymmetricRange(bool on);
+  /// Discrete contour bands (0: continuous); std::invalid_argument outside 0, 2..kMaxColorBands.
+  void setColorBands(int bands);
   void setShowEdges(bool show);
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }

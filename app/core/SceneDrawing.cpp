@@ -110,7 +110,10 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   const bool scalars = catchUp(drawn_.scalars, now.scalars);
   if (model) boundary_.setSession(scene.sharedSession());
   if (model || scalars) boundary_.setScalars(values.view, scene.displayRange());
-  if (catchUp(drawn_.colorMap, now.colorMap)) boundary_.setColorMap(ColorMap::named(s.colorMap));
+  if (catchUp(drawn_.colorMap, now.colorMap)) {
+    boundary_.setColorMap(ColorMap::named(s.colorMap));
+    boundary_.setColorBands(s.colorBands);
+  }
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   const std::vector<ClipPlane> cuts = s.volume.allClipPlanes();
   boundary_.setCuts(s.volume.shown ? std::vector<ClipPlane>{} : cuts, values.view, values.version,

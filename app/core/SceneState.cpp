@@ -358,7 +358,9 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["colors"] = {{"map", colorMap},
                    {"range", fixedRange       ? json::array({fixedRange->min, fixedRange->max})
                              : rangeOverSteps ? json("all-steps")
-                                              : json("auto")}};
+                                              : json("auto")},
+                   {"symmetric", symmetricRange},
+                   {"bands", colorBands}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
   out["triad"] = triad;
@@ -445,6 +447,15 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* colors = r.find(in, "colors")) {
     r.object(*colors, "colors");
     if (const json* m = r.find(*colors, "map")) s.colorMap = r.text(*m, "colors.map");
+    if (const json* symmetric = r.find(*colors, "symmetric"))
+      s.symmetricRange = r.boolean(*symmetric, "colors.symmetric");
+    if (const json* bands = r.find(*colors, "bands")) {
+      if (!bands->is_number_integer() || bands->get<long long>() < 0 || bands->get<long long>() > kMaxColorBands ||
+          bands->get<long long>() == 1)
+        r.fail("colors.bands",
+               "must be 0 (continuous colors) or a band count from 2 to " + std::to_string(kMaxColorBands));
+      s.colorBands = int(bands->get<long long>());
+    }
     if (const json* range = r.find(*colors, "range")) {
       if (range->is_string() && (range->get<std::string>() == "auto" || range->get<std::string>() == "all-steps")) {
         s.fixedRange.reset();

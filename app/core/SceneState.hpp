@@ -54,6 +54,7 @@ struct NamedView {
   bool operator==(const NamedView&) const = default;
 };
 inline constexpr std::size_t kMaxViews = 100;
+inline constexpr int kMaxColorBands = 256;
 /// The most formulas a scene (and its state file) holds.
 inline constexpr std::size_t kMaxFormulas = 100;
 inline constexpr std::size_t kMaxViewNameBytes = 200;
@@ -136,6 +137,12 @@ struct SceneState {
   /// Without a fixed range: the range over every step (one scale for an animation)
   /// instead of each step's own.
   bool rangeOverSteps = false;
+  /// The values' own range widened to [-m, m], m the larger of |min| and |max|: zero in
+  /// the middle of a diverging map (not with a fixed range). "colors.symmetric" in the file.
+  bool symmetricRange = false;
+  /// Discrete contour bands of equal width (0: continuous colors; kMaxColorBands at most);
+  /// "colors.bands" in the file.
+  int colorBands = 0;
   bool edges = true;          ///< element edges on the surface view
   bool lighting = true;       ///< shading; off: the color map's exact colors
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)

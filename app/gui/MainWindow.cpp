@@ -237,6 +237,7 @@ void MainWindow::buildActions() {
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
   view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)
       ->setObjectName("surfaceOpacityAction");
+  buildColorActions(view);
 
   // What is shown of the results (deformation, probes, cuts, contours, lines) and the
   // volume each have a menu: one View menu held all 34 entries.
@@ -448,7 +449,7 @@ void MainWindow::buildToolbar() {
     colorMapBox_->addItem(QString::fromStdString(ColorMap::label(name)), QString::fromStdString(name));
   colorMapBox_->setCurrentIndex(std::max(
       0, colorMapBox_->findData(QSettings("volpost", "volpost").value("view/colorMap", "cool-warm").toString())));
-  changeScene([this](Scene& s) { s.setColorMap(colorMapBox_->currentData().toString().toStdString()); });
+  changeScene([this](Scene& s) { s.setColorMap(chosenColorMap()); });
   bar->addWidget(colorMapBox_);
   connect(quantityBox_, &QComboBox::currentIndexChanged, this, [this] {
     fillSteps();
@@ -458,10 +459,59 @@ void MainWindow::buildToolbar() {
   connect(stepBox_, &QComboBox::currentIndexChanged, this, &MainWindow::refreshScalars);
   connect(colorMapBox_, &QComboBox::currentIndexChanged, this, [this] {
     const QString name = colorMapBox_->currentData().toString();
-    changeScene([&](Scene& s) { s.setColorMap(name.toStdString()); });
+    changeScene([&](Scene& s) { s.setColorMap(chosenColorMap()); });
     notifyPanels();
     QSettings("volpost", "volpost").setValue("view/colorMap", name);
   });
+}
+
+std::string MainWindow::chosenColorMap() const {
+  const std::string base = colorMapBox_ ? colorMapBox_->currentData().toString().toStdString() : "cool-warm";
+  return reverseColorsAction_ && reverseColorsAction_->isChecked() ? ColorMap::reversedName(base) : base;
+}
+
+// View > Reverse Color Map, Symmetric Color Range, Color Bands...: the colors an analyst
+// sets for a report (Abaqus's contour bands, a diverging map centred on zero).
+void MainWindow::buildColorActions(QMenu* view) {
+  view->addSeparator();
+  reverseColorsAction_ = view->addAction("&Reverse Color Map");
+  reverseColorsAction_->setObjectName("reverseColorsAction");
+  reverseColorsAction_->setCheckable(true);
+  connect(reverseColorsAction_, &QAction::toggled, this, [this] {
+    changeScene([this](Scene& s) { s.setColorMap(chosenColorMap()); });
+    notifyPanels();
+  });
+  symmetricRangeAction_ = view->addAction("S&ymmetric Color Range");
+  symmetricRangeAction_->setObjectName("symmetricRangeAction");
+  symmetricRangeAction_->setCheckable(true);
+  symmetricRangeAction_->setStatusTip("The colors span -M..M, M the larger of |min| and |max|: zero in the middle");
+  connect(symmetricRangeAction_, &QAction::toggled, this, [this](bool on) {
+    changeScene([on](Scene& s) { s.setSymmetricRange(on); });
+    notifyPanels();
+  });
+  colorBandsAction_ = view->addAction("Color &Bands...");
+  colorBandsAction_->setObjectName("colorBandsAction");
+  connect(colorBandsAction_, &QAction::triggered, this, [this] {
+    const int now = viewport_->scene().state().colorBands;
+    bool ok = false;
+    const int bands = QInputDialog::getInt(
+        this, "Color bands", "Discrete bands of equal width (12 as in Abaqus; 0: continuous colors):", now ? now : 12,
+        0, kMaxColorBands, 1, &ok);
+    if (!ok) return;
+    changeScene([bands](Scene& s) { s.setColorBands(bands == 1 ? 2 : bands); });
+    syncColorActions();
+    notifyPanels();
+  });
+}
+
+void MainWindow::syncColorActions() {
+  if (!reverseColorsAction_) return;
+  const SceneState state = viewport_->scene().state();
+  const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_);
+  reverseColorsAction_->setChecked(ColorMap::isReversed(state.colorMap));
+  symmetricRangeAction_->setChecked(state.symmetricRange);
+  colorBandsAction_->setText(state.colorBands ? QString("Color &Bands (%1)...").arg(state.colorBands)
+                                              : QString("Color &Bands (continuous)..."));
 }
 
 void MainWindow::buildPanels() {
@@ -820,7 +870,9 @@ void MainWindow::syncControlsToScene() {
     quantityBox_->setCurrentIndex(std::max(0, quantityBox_->findData(QString::fromStdString(state.quantity))));
     fillSteps();
     stepBox_->setCurrentIndex(int(state.step));
-    colorMapBox_->setCurrentIndex(std::max(0, colorMapBox_->findData(QString::fromStdString(state.colorMap))));
+    const std::string baseMap =
+        ColorMap::isReversed(state.colorMap) ? ColorMap::reversedName(state.colorMap) : state.colorMap;
+    colorMapBox_->setCurrentIndex(std::max(0, colorMapBox_->findData(QString::fromStdString(baseMap))));
   }
   const auto check = [](QAction* action, bool on) {
     if (!action) return;
@@ -829,6 +881,7 @@ void MainWindow::syncControlsToScene() {
   };
   check(edgesAction_, state.edges);
   check(legendAction_, state.legend);
+  syncColorActions();
   check(triadAction_, state.triad);
   deformation_->syncToScene();
   check(orthoAction_, state.camera && state.camera->orthographic);

@@ -140,6 +140,14 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* edgesAction_ = nullptr;
   QAction* orthoAction_ = nullptr;
   QAction* legendAction_ = nullptr;
+  QAction* reverseColorsAction_ = nullptr;
+  QAction* symmetricRangeAction_ = nullptr;
+  QAction* colorBandsAction_ = nullptr;
+  /// The color map the toolbar and View > Reverse Color Map ask for ("viridis-reversed").
+  std::string chosenColorMap() const;
+  void buildColorActions(QMenu* view);
+  /// The color actions show the scene's colors (after a state file or a change).
+  void syncColorActions();
   QAction* triadAction_ = nullptr;
   StepController* steps_ = nullptr;
   QMenu* fileMenu_ = nullptr;

@@ -2,11 +2,18 @@
 // results (NaN in the file) and get the no-value color.
 const float NO_VALUE = 1.0e38;
 
-vec3 colorForValue(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor) {
+// With `bands` > 0 the range is cut into that many bands of equal width, each drawn in the
+// color of its middle (contour bands); 0 gives continuous colors.
+vec3 colorForValueInBands(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor, int bands) {
   if (!(value < NO_VALUE)) return noValueColor;
   float t = vmax > vmin ? (value - vmin) / (vmax - vmin) : 0.5;
   t = clamp(t, 0.0, 1.0);
+  if (bands > 0) t = (min(floor(t * float(bands)), float(bands - 1)) + 0.5) / float(bands);
   // Sample at texel centres so t = 0 and t = 1 hit the map's end colors exactly.
   float n = float(textureSize(colorMap, 0));
   return texture(colorMap, (t * (n - 1.0) + 0.5) / n).rgb;
+}
+
+vec3 colorForValue(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor) {
+  return colorForValueInBands(colorMap, value, vmin, vmax, noValueColor, 0);
 }

@@ -250,6 +250,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glProgramUniform3fv(p, glGetUniformLocation(p, "noValueColor"), 1, glm::value_ptr(noValueColor));
   glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
   glProgramUniform1i(p, glGetUniformLocation(p, "colorMap"), 0);
+  glProgramUniform1i(p, glGetUniformLocation(p, "colorBands"), colorBands_);
   setClipUniforms(p, clipPlanes_, origin_, clipTolerance_);
   glBindTextureUnit(0, colorMap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scalars_.id());

@@ -46,6 +46,8 @@ class SurfaceRenderer : public Renderer {
   /// No result: the surface is drawn in a neutral gray.
   void clearScalars();
   void setColorMap(const ColorMap& map);
+  /// Discrete bands of equal width over [min, max] (0: continuous colors).
+  void setColorBands(int bands) { colorBands_ = bands; }
   /// Each element edge fades out as the distance on screen between it and its neighbours
   /// (the shortest edge at either end, scaled as the edge itself is projected) falls from
   /// kDenseEdgePixels to a third of it: a 256 x 256 face of a seismic cube, or a fine mesh seen whole, would
@@ -71,6 +73,7 @@ class SurfaceRenderer : public Renderer {
   gl::VertexArray surfaceVao_, edgeVao_;
   gl::Buffer surfaceVbo_, edgeVbo_, scalars_;
   gl::Texture colorMap_;
+  int colorBands_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   int location_ = -1;  ///< -1 none, 0 node, 1 cell
   float min_ = 0.f, max_ = 1.f;

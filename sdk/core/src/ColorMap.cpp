@@ -30,7 +30,19 @@ ColorMap::ColorMap(std::string name, std::vector<Point> points)
 
 std::vector<std::string> ColorMap::names() { return {"cool-warm", "viridis", "rainbow", "grayscale", "seismic"}; }
 
+std::string ColorMap::reversedName(const std::string& name) {
+  if (name.size() > kReversed.size() && name.compare(name.size() - kReversed.size(), kReversed.size(), kReversed) == 0)
+    return name.substr(0, name.size() - kReversed.size());
+  return name + std::string(kReversed);
+}
+
+bool ColorMap::isReversed(const std::string& name) {
+  return name.size() > kReversed.size() &&
+         name.compare(name.size() - kReversed.size(), kReversed.size(), kReversed) == 0;
+}
+
 std::string ColorMap::label(const std::string& name) {
+  if (isReversed(name)) return label(reversedName(name)) + ", reversed";
   if (name == "cool-warm") return "Cool to warm (diverging)";
   if (name == "viridis") return "Viridis";
   if (name == "rainbow") return "Rainbow";
@@ -40,6 +52,12 @@ std::string ColorMap::label(const std::string& name) {
 }
 
 ColorMap ColorMap::named(const std::string& name) {
+  if (isReversed(name)) {  // "viridis-reversed": the same colors from the other end
+    const ColorMap forward = named(reversedName(name));
+    std::vector<Point> points;
+    for (auto p = forward.points_.rbegin(); p != forward.points_.rend(); ++p) points.push_back({1.0 - p->t, p->rgb});
+    return ColorMap(name, std::move(points));
+  }
   // Moreland's diverging cool-warm and a viridis approximation, sampled at 9 points.
   if (name == "cool-warm")
     return from8bit(name, {{59, 76, 192}, {98, 130, 234}, {141, 176, 254}, {184, 208, 249},
@@ -55,7 +73,8 @@ ColorMap ColorMap::named(const std::string& name) {
   // Interpreters' red-white-blue: troughs blue, zero white, peaks red (dark at the ends).
   if (name == "seismic")
     return from8bit(name, {{0, 0, 77}, {0, 0, 255}, {255, 255, 255}, {255, 0, 0}, {128, 0, 0}});
-  throw std::invalid_argument("unknown color map '" + name + "' (known: cool-warm, viridis, rainbow, grayscale, seismic)");
+  throw std::invalid_argument("unknown color map '" + name +
+                              "' (known: cool-warm, viridis, rainbow, grayscale, seismic, each also NAME-reversed)");
 }
 
 glm::dvec3 ColorMap::at(double t) const {

@@ -591,6 +591,25 @@ TEST(Formulas, AFormulaWorksOnEveryVerbAndABadOneSaysWhere) {
   EXPECT_EQ(runVolpost("info " + bar + " --formula nothing").exitCode, 2);
 }
 
+TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
+  const std::string bar = dataFile("bar/bar_tet4.vtu");
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string png = (dir / "volpost_bands.png").string(), state = (dir / "volpost_bands.json").string();
+  const auto r = runVolpost("render " + bar +
+                            " --field S.xy --bands 12 --symmetric --colormap viridis-reversed "
+                            "--size 160x120 -o " +
+                            png + " --save-state " + state);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream saved(state);
+  const std::string json((std::istreambuf_iterator<char>(saved)), {});
+  for (const char* text : {"\"bands\": 12", "\"symmetric\": true", "\"map\": \"viridis-reversed\""})
+    EXPECT_NE(json.find(text), std::string::npos) << text << " in " << json;
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --bands 1 -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --symmetric --range 0:1 -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --bands 4 --renderer reference -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --colormap viridis-backwards -o " + png).exitCode, 2);
+}
+
 TEST(ProbeCommand, NodesAndElementsByTheirIds) {
   const std::string bar = dataFile("bar/bar_tet4.vtu");
   const auto r = runVolpost("probe " + bar + " --node 5 --element 100 --field S.xx --field region");

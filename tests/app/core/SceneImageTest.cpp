@@ -49,6 +49,56 @@ TEST(SceneImage, BarMiddleShowsTheAnalyticAxialStress) {
   EXPECT_GT(checked, 200);
 }
 
+// Contour bands: each value drawn in the color of its band's middle. S.xx is 100 in the
+// bar's middle; over 92..112 in 4 bands it lies in the second band (97..102), drawn at
+// t = 1.5 / 4 = 0.375 of the grayscale map; continuous colors give t = 0.4.
+TEST(SceneImage, ColorBandsDrawEachBandInTheColorOfItsMiddle) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setResult("S.xx", 0);
+  scene.setColorMap("grayscale");
+  scene.setFixedRange(DisplayRange{92.0, 112.0});
+  scene.setShowEdges(false);
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  scene.setLighting(false);
+  applyCameraSpec(scene.camera(), "-y,ortho,zoom=4");
+  const auto centre = [&] {
+    const QImage image = renderSceneImage(scene, 64, 32).picture;
+    return qRed(image.pixel(32, 16));
+  };
+  EXPECT_NEAR(centre(), 0.4 * 255.0, 1.5);
+  scene.setColorBands(4);
+  EXPECT_NEAR(centre(), 0.375 * 255.0, 1.5);
+  scene.setColorMap("grayscale-reversed");
+  EXPECT_NEAR(centre(), 0.625 * 255.0, 1.5);
+  EXPECT_THROW(scene.setColorBands(1), std::invalid_argument);
+  EXPECT_THROW(scene.setColorBands(kMaxColorBands + 1), std::invalid_argument);
+  EXPECT_EQ(scene.state().colorBands, 4);
+  // Symmetric about zero: the values' own range widened, a typed one kept.
+  scene.setResult("S.xy", 0);
+  scene.setFixedRange(std::nullopt);
+  scene.setSymmetricRange(true);
+  const ValueRange own = scene.view()->range;
+  const double m = std::max(std::abs(own.min), std::abs(own.max));
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{-m, m}));
+  scene.setShowLegend(true);
+  ASSERT_TRUE(scene.legend());
+  EXPECT_EQ(scene.legend()->content.min, -m);
+  EXPECT_EQ(scene.legend()->content.bands, 4);
+  scene.setFixedRange(DisplayRange{-1.0, 2.0});
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{-1.0, 2.0}));
+  // Through the state file.
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_TRUE(back.symmetricRange);
+  EXPECT_EQ(back.colorBands, 4);
+  EXPECT_EQ(back.colorMap, "grayscale-reversed");
+  std::string text = scene.state().toJson();
+  text.replace(text.find("\"bands\": 4"), 10, "\"bands\": 1");
+  EXPECT_THROW(SceneState::fromJson(text, "/data/view.json"), std::runtime_error);
+}
+
 // A regular grid's slices: nothing drawn without them (surface hidden); a slice draws the
 // grid's values across it, and the bottom slice seen from below is the box's bottom face
 // (the same values on the same plane); refused on a mesh and outside the grid, naming the

@@ -308,6 +308,35 @@ class MainWindowTest : public QObject {
       QVERIFY2(!a->text().contains("seed") && !a->text().contains("MPVONC"), qPrintable(a->text()));
   }
 
+  void reversedMapsSymmetricRangeAndBandsFollowTheScene() {
+    QVERIFY(window_->selectQuantity("S.xy"));
+    Scene& scene = window_->viewport()->scene();
+    window_->findChild<QAction*>("reverseColorsAction")->setChecked(true);
+    QCOMPARE(scene.state().colorMap, std::string("cool-warm-reversed"));
+    auto* colors = window_->findChild<QComboBox*>("colorMapBox");
+    colors->setCurrentIndex(colors->findData("viridis"));  // another map stays reversed
+    QCOMPARE(scene.state().colorMap, std::string("viridis-reversed"));
+    window_->findChild<QAction*>("symmetricRangeAction")->setChecked(true);
+    QVERIFY(scene.state().symmetricRange);
+    QCOMPARE(scene.displayRange().min, -scene.displayRange().max);
+    // A state with other colors: the controls show them.
+    SceneState state = scene.state();
+    state.colorMap = "rainbow";
+    state.symmetricRange = false;
+    state.colorBands = 12;
+    const QString path = QDir::temp().filePath("volpost_gui_colors_test.json");
+    state.save(path.toStdString());
+    QSignalSpy applied(window_.get(), &MainWindow::stateApplied);
+    window_->openStateFile(path);
+    QVERIFY(applied.count() == 1 || applied.wait(30000));
+    QVERIFY(applied.first().first().toBool());
+    QFile::remove(path);
+    QVERIFY(!window_->findChild<QAction*>("reverseColorsAction")->isChecked());
+    QVERIFY(!window_->findChild<QAction*>("symmetricRangeAction")->isChecked());
+    QCOMPARE(colors->currentData().toString(), QString("rainbow"));
+    QVERIFY(window_->findChild<QAction*>("colorBandsAction")->text().contains("12"));
+  }
+
   void plotOverStepsAtProbedPoints() {
     // Probe panel > Plot Over Steps: the shown quantity at each probe, over every step.
     QVERIFY(open(VOLPOST_TEST_DATA "/formats/golden.frd"));  // T at two steps

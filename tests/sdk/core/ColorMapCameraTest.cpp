@@ -149,3 +149,22 @@ TEST(Camera, TurntableKeepsTheModelUprightWhereTheTrackballRolls) {
   EXPECT_LT(std::abs(glm::dot(table.viewDirection(), z)), std::cos(glm::radians(0.99))) << "a degree short of the pole";
   EXPECT_GT(glm::dot(table.up(), z), -1e-9) << "not flipped over the pole";
 }
+
+TEST(ColorMap, EveryMapRunsReversedUnderItsNameWithASuffix) {
+  for (const std::string& name : ColorMap::names()) {
+    const std::string reversed = ColorMap::reversedName(name);
+    EXPECT_EQ(reversed, name + "-reversed");
+    EXPECT_TRUE(ColorMap::isReversed(reversed));
+    EXPECT_EQ(ColorMap::reversedName(reversed), name);
+    EXPECT_EQ(ColorMap::label(reversed), ColorMap::label(name) + ", reversed");
+    const ColorMap forward = ColorMap::named(name), backward = ColorMap::named(reversed);
+    for (double t : {0.0, 0.1, 0.37, 0.5, 0.9, 1.0}) {
+      const glm::dvec3 a = forward.at(1.0 - t), b = backward.at(t);
+      EXPECT_NEAR(a.r, b.r, 1e-12) << name << " at " << t;
+      EXPECT_NEAR(a.g, b.g, 1e-12) << name << " at " << t;
+      EXPECT_NEAR(a.b, b.b, 1e-12) << name << " at " << t;
+    }
+  }
+  EXPECT_THROW(ColorMap::named("-reversed"), std::invalid_argument);
+  EXPECT_THROW(ColorMap::named("nothing-reversed"), std::invalid_argument);
+}

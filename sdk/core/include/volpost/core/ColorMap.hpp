@@ -5,6 +5,7 @@
 #include <glm/vec3.hpp>
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace volpost {
@@ -22,6 +23,11 @@ class ColorMap {
   static std::vector<std::string> names();
   /// What a menu shows for a name of names(), the same everywhere: "Cool to warm (diverging)".
   static std::string label(const std::string& name);
+  /// "NAME-reversed" is every map run from its other end (named() knows it): this gives
+  /// the other of the two names.
+  static std::string reversedName(const std::string& name);
+  static bool isReversed(const std::string& name);
+  static constexpr std::string_view kReversed = "-reversed";
 
   const std::string& name() const { return name_; }
   glm::dvec3 at(double t) const;  ///< t clamped to [0, 1]
