@@ -67,6 +67,18 @@ struct Options {
                            "Discrete contour bands of equal width on the surface, sections and slices (12 "
                            "is the Abaqus default; 0: continuous colors).",
                            "N"};
+  QCommandLineOption units{"units",
+                           "Units of a field, shown after its name in the legend: FIELD=TEXT, e.g. S=MPa "
+                           "(repeatable).",
+                           "FIELD=TEXT"};
+  QCommandLineOption legendTitle{"legend-title", "The legend's title for the shown result, instead of its name.",
+                                 "TEXT"};
+  QCommandLineOption legendNumbers{"legend-numbers",
+                                   "How the legend writes numbers: auto[:DIGITS] (significant, "
+                                   "default auto:4), fixed[:DIGITS] or scientific[:DIGITS].",
+                                   "STYLE"};
+  QCommandLineOption legendLabels{"legend-labels",
+                                  "About how many values a continuous legend labels (2..20, default 6).", "N"};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
                                "|max|: zero in the middle of a diverging map."};
@@ -424,6 +436,25 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
                            .toStdString());
     scene.setColorBands(n);
   }
+  for (const QString& text : p.values(o.units)) {
+    const qsizetype eq = text.indexOf('=');
+    if (eq <= 0) throw UsageError(QString("--units %1 is not FIELD=TEXT (S=MPa)").arg(text).toStdString());
+    const std::string field = text.left(eq).toStdString();
+    if (!scene.session()->model().findField(field))
+      throw UsageError(QString("--units %1: the model has no field named %2").arg(text, text.left(eq)).toStdString());
+    scene.setUnits(field, text.mid(eq + 1).toStdString());
+  }
+  if (p.isSet(o.legendTitle)) {
+    if (!scene.view()) throw UsageError("--legend-title names the shown result's legend; give --field");
+    scene.setLegendTitle(scene.view()->quantity.key(), p.value(o.legendTitle).toStdString());
+  }
+  if (p.isSet(o.legendNumbers)) scene.setLegendNumbers(p.value(o.legendNumbers).toStdString());
+  if (p.isSet(o.legendLabels)) {
+    bool ok = false;
+    const int n = p.value(o.legendLabels).toInt(&ok);
+    if (!ok) throw UsageError(QString("--legend-labels %1 is not a count").arg(p.value(o.legendLabels)).toStdString());
+    scene.setLegendLabels(n);
+  }
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
   if (p.isSet(o.noTriad)) scene.setShowTriad(false);
@@ -536,14 +567,14 @@ int runRender(const QStringList& args) {
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
   parser.addOptions(
-      {o.field,          o.step,        o.camera,       o.view,       o.eye,           o.target,       o.up,
-       o.viewAngle,      o.size,        o.colormap,     o.range,      o.bands,         o.symmetric,    o.noEdges,
-       o.noLegend,       o.noTriad,     o.deform,       o.undeformed, o.flat,          o.output,       o.renderer,
-       o.mode,           o.tf,          o.tf2d,         o.clip,       o.clipBox,       o.iso,          o.volumeEdges,
-       o.samplingStep,   o.termination, o.shading,      o.floatOut,   o.threads,       o.state,        o.saveState,
-       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,
-       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,   o.fps,           o.readerOption, o.slice,
-       o.formula});
+      {o.field,          o.step,        o.camera,       o.view,          o.eye,           o.target,       o.up,
+       o.viewAngle,      o.size,        o.colormap,     o.range,         o.bands,         o.symmetric,    o.noEdges,
+       o.noLegend,       o.noTriad,     o.deform,       o.undeformed,    o.flat,          o.output,       o.renderer,
+       o.mode,           o.tf,          o.tf2d,         o.clip,          o.clipBox,       o.iso,          o.volumeEdges,
+       o.samplingStep,   o.termination, o.shading,      o.floatOut,      o.threads,       o.state,        o.saveState,
+       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius,    o.radiusByValue, o.arrows,       o.noSurface,
+       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,      o.fps,           o.readerOption, o.slice,
+       o.formula,        o.units,       o.legendTitle,  o.legendNumbers, o.legendLabels});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

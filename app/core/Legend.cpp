@@ -40,6 +40,53 @@ std::vector<double> niceTicks(double min, double max, int target) {
   return ticks;
 }
 
+QString LegendNumbers::text(double value) const {
+  switch (style) {
+    case Style::Fixed:
+      return QString::number(value, 'f', digits);
+    case Style::Scientific:
+      return QString::number(value, 'e', digits);
+    case Style::Automatic:
+      break;
+  }
+  return QString::number(value, 'g', digits);
+}
+
+QString LegendNumbers::widest() const {
+  switch (style) {
+    case Style::Fixed:
+      return "-8888888." + QString(digits, '8');
+    case Style::Scientific:
+      return "-8." + QString(digits, '8') + "e+888";
+    case Style::Automatic:
+      break;
+  }
+  return "-8." + QString(std::max(0, digits - 1), '8') + "e+88";
+}
+
+std::optional<LegendNumbers> LegendNumbers::parse(const std::string& text) {
+  const auto colon = text.find(':');
+  const std::string name = text.substr(0, colon);
+  LegendNumbers n;
+  if (name == "auto") n.style = Style::Automatic;
+  else if (name == "fixed") n.style = Style::Fixed, n.digits = 2;
+  else if (name == "scientific") n.style = Style::Scientific, n.digits = 3;
+  else return std::nullopt;
+  if (colon != std::string::npos) {
+    const std::string digits = text.substr(colon + 1);
+    if (digits.empty() || digits.size() > 2 || !std::all_of(digits.begin(), digits.end(), ::isdigit))
+      return std::nullopt;
+    n.digits = std::stoi(digits);
+  }
+  if (n.digits > 12 || (n.style == Style::Automatic && n.digits < 1)) return std::nullopt;
+  return n;
+}
+
+std::string LegendNumbers::written() const {
+  const char* name = style == Style::Fixed ? "fixed" : style == Style::Scientific ? "scientific" : "auto";
+  return std::string(name) + ":" + std::to_string(digits);
+}
+
 namespace {
 
 QFont legendFont(QFont font, const QRect& area) {
@@ -47,10 +94,17 @@ QFont legendFont(QFont font, const QRect& area) {
   return font;
 }
 
-int labelWidthOf(const QFontMetrics& fm, const std::vector<double>& ticks) {
+int labelWidthOf(const QFontMetrics& fm, const std::vector<double>& ticks, const LegendNumbers& numbers) {
   int width = 0;
-  for (double t : ticks) width = std::max(width, fm.horizontalAdvance(QString::number(t, 'g', 4)));
+  for (double t : ticks) width = std::max(width, fm.horizontalAdvance(numbers.text(t)));
   return width;
+}
+
+// The data's extremes get a digit more than the ticks in the automatic style: they are
+// values, not round marks.
+QString footerNumber(const LegendNumbers& numbers, double v) {
+  if (numbers.style != LegendNumbers::Style::Automatic) return numbers.text(v);
+  return QString::number(v, 'g', numbers.digits + 1);
 }
 
 int barWidthOf(const QRect& area) { return std::max(8, area.width() / 40); }
@@ -68,11 +122,11 @@ std::vector<double> bandBounds(const LegendContent& c, int barHeight, int lineHe
 
 }  // namespace
 
-int legendWidth(const QRect& area) {
-  // The widest label four significant digits can give: the strip does not change with the
+int legendWidth(const QRect& area, const LegendNumbers& numbers) {
+  // The widest label the number style can give: the strip does not change with the
   // numbers, so the model keeps its place and size when the quantity or step changes.
   const QFontMetrics fm(legendFont(QFont(), area));
-  return fm.horizontalAdvance(QStringLiteral("-8.888e+88")) + 12 + barWidthOf(area) + 8;
+  return fm.horizontalAdvance(numbers.widest()) + 12 + barWidthOf(area) + 8;
 }
 
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& c) {
@@ -92,7 +146,8 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     const double lo = c.dataMin.value_or(c.min), hi = c.dataMax.value_or(c.max);
     const bool differs = c.dataMin && c.dataMax && (lo != c.min || hi != c.max);
     const QString rangeText =
-        QString("%1min %2  max %3").arg(differs ? "data " : "").arg(lo, 0, 'g', 5).arg(hi, 0, 'g', 5);
+        QString("%1min %2  max %3")
+            .arg(differs ? "data " : "", footerNumber(c.numbers, lo), footerNumber(c.numbers, hi));
     painter.drawText(QRect(area.left(), y, area.right() - 4 - area.left(), fm.height()),
                      Qt::AlignRight | Qt::AlignVCenter, rangeText);
     if (c.noValueCount)
@@ -109,8 +164,9 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     painter.restore();
     return;
   }
-  std::vector<double> ticks = c.bands > 0 ? bandBounds(c, bottom - top, fm.height()) : niceTicks(c.min, c.max);
-  const int labelWidth = labelWidthOf(fm, ticks);
+  std::vector<double> ticks =
+      c.bands > 0 ? bandBounds(c, bottom - top, fm.height()) : niceTicks(c.min, c.max, std::clamp(c.labels, 2, 20));
+  const int labelWidth = labelWidthOf(fm, ticks, c.numbers);
   const int barRight = area.right() - labelWidth - 12;
   const QRect bar(barRight - barWidth, top, barWidth, bottom - top);
 
@@ -137,7 +193,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   for (double t : ticks) {
     const int y = bar.bottom() - int(std::lround((t - c.min) / span * bar.height()));
     painter.drawLine(bar.right(), y, bar.right() + 4, y);
-    painter.drawText(QPoint(bar.right() + 7, y + fm.ascent() / 2 - 1), QString::number(t, 'g', 4));
+    painter.drawText(QPoint(bar.right() + 7, y + fm.ascent() / 2 - 1), c.numbers.text(t));
   }
   const int textRight = area.right() - 4;
   const QRect titleRect(area.left(), area.top() + 4, textRight - area.left(), fm.height());

@@ -13,6 +13,22 @@ class QPainter;
 
 namespace volpost::app {
 
+/// How the legend writes its numbers: "auto" (significant digits, 4 unless given:
+/// "auto:6"), "fixed:N" (N digits after the point), "scientific:N" (N after the point, then
+/// the exponent).
+struct LegendNumbers {
+  enum class Style { Automatic, Fixed, Scientific };
+  Style style = Style::Automatic;
+  int digits = 4;
+  QString text(double value) const;
+  /// The widest text a label can take in this style (the legend strip is sized by it).
+  QString widest() const;
+  /// nullopt when the text is none of the forms above (digits 0..12; automatic 1..12).
+  static std::optional<LegendNumbers> parse(const std::string& text);
+  std::string written() const;
+  bool operator==(const LegendNumbers&) const = default;
+};
+
 struct LegendContent {
   QString title;      ///< quantity, e.g. "S von Mises"
   QString subtitle;   ///< step label and location, e.g. "step 1 · per node"
@@ -25,6 +41,8 @@ struct LegendContent {
   QString noBarNote;
   /// Discrete bands of equal width (0: a continuous bar); ticks then mark their bounds.
   int bands = 0;
+  LegendNumbers numbers;
+  int labels = 6;  ///< about how many values a continuous bar labels
 };
 
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.
@@ -32,7 +50,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
 
 /// The widest the legend paintLegend draws in `area` can be, pixels from its right edge
 /// (the bar and its tick labels; the title lines above it are right-aligned text).
-int legendWidth(const QRect& area);
+int legendWidth(const QRect& area, const LegendNumbers& numbers = {});
 
 /// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
 std::vector<double> niceTicks(double min, double max, int target = 6);

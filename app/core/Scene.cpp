@@ -166,6 +166,36 @@ void Scene::setColorBands(int bands) {
 
 void Scene::setShowEdges(bool show) { state_.edges = show; }
 
+namespace {
+void setOrErase(std::map<std::string, std::string>& map, const std::string& key, const std::string& text,
+                const char* what) {
+  if (text.size() > 200) throw std::invalid_argument(std::string(what) + " longer than 200 bytes");
+  if (text.empty()) map.erase(key);
+  else map[key] = text;
+}
+}  // namespace
+
+void Scene::setLegendTitle(const std::string& quantity, const std::string& title) {
+  setOrErase(state_.legendTitles, quantity, title, "a legend title");
+}
+
+void Scene::setUnits(const std::string& field, const std::string& units) {
+  setOrErase(state_.units, field, units, "units");
+}
+
+void Scene::setLegendNumbers(const std::string& style) {
+  const auto numbers = LegendNumbers::parse(style);
+  if (!numbers)
+    throw std::invalid_argument("legend numbers '" + style +
+                                "': auto[:DIGITS], fixed[:DIGITS] or scientific[:DIGITS] (DIGITS up to 12)");
+  state_.legendNumbers = numbers->written();
+}
+
+void Scene::setLegendLabels(int labels) {
+  if (labels < 2 || labels > 20) throw std::invalid_argument(std::to_string(labels) + " legend labels: 2 to 20");
+  state_.legendLabels = labels;
+}
+
 void Scene::setVolumeShown(bool shown) {
   if (shown && !view_) throw std::invalid_argument("choose a result to render as a volume");
   state_.volume.shown = shown;
@@ -584,7 +614,13 @@ std::vector<LegendPicture> Scene::legends() const {
   if (!state_.legend) return out;
   if (view_) {
     LegendContent content;
-    content.title = QString::fromStdString(view_->quantity.displayName());
+    const auto title = state_.legendTitles.find(view_->quantity.key());
+    content.title =
+        QString::fromStdString(title != state_.legendTitles.end() ? title->second : view_->quantity.displayName());
+    if (const auto units = state_.units.find(view_->quantity.field); units != state_.units.end())
+      content.title += QString(" [%1]").arg(QString::fromStdString(units->second));
+    content.numbers = LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{});
+    content.labels = state_.legendLabels;
     content.subtitle = stepAndLocation(*view_);
     content.noValueCount = view_->range.nanCount;
     if (view_->range.valid()) content.dataMin = view_->range.min, content.dataMax = view_->range.max;
@@ -627,7 +663,8 @@ Camera Scene::pictureCamera(double width, double height) const {
   Camera camera = camera_;
   if (!legend() || !(width > 0.0) || !(height > 0.0)) return camera;
   const QRect area(0, 0, int(std::lround(width)), int(std::lround(height)));
-  camera.setRightMargin(std::min(0.4, legendWidth(area) / width));
+  camera.setRightMargin(
+      std::min(0.4, legendWidth(area, LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{})) / width));
   return camera;
 }
 

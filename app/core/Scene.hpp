@@ -106,6 +106,14 @@ class Scene {
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }
   void setShowLegend(bool show) { state_.legend = show; }
+  /// The legend's title for a quantity (empty: its own name); units of a field, shown after
+  /// the title ("S von Mises [MPa]"); std::invalid_argument for text over 200 bytes.
+  void setLegendTitle(const std::string& quantity, const std::string& title);
+  void setUnits(const std::string& field, const std::string& units);
+  /// "auto[:N]", "fixed[:N]", "scientific[:N]"; std::invalid_argument otherwise.
+  void setLegendNumbers(const std::string& style);
+  /// About how many values a continuous bar labels, 2..20.
+  void setLegendLabels(int labels);
   /// The orientation axes (x red, y green, z blue) in the lower left corner.
   void setShowTriad(bool show) { state_.triad = show; }
   /// Throws std::invalid_argument when there is no result to show as a volume.

@@ -276,7 +276,9 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   for (const Marker& m : markers) drawMarkerShape(painter, m, scale);
   QRect room = area;  // labels stay left of the legend's strip
   const std::vector<LegendPicture> legends = scene.legends();
-  if (!legends.empty()) room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area)));
+  if (!legends.empty())
+    room.setRight(
+        std::max(area.left() + area.width() / 2, area.right() - legendWidth(area, legends.front().content.numbers)));
   for (const Marker& m : markers)
     if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
   if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);

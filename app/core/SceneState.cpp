@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "SceneState.hpp"
 
+#include "Legend.hpp"
+
 #include "host/AtomicFile.hpp"
 #include "host/TextFile.hpp"
 
@@ -363,6 +365,8 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                    {"bands", colorBands}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
+  out["legendText"] = {
+      {"titles", legendTitles}, {"units", units}, {"numbers", legendNumbers}, {"labels", legendLabels}};
   out["triad"] = triad;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
@@ -442,6 +446,28 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
       for (const NamedView& earlier : s.views)
         if (earlier.name == view.name) r.fail(key + ".name", "repeats the name \"" + view.name + "\"");
       s.views.push_back(std::move(view));
+    }
+  }
+  if (const json* words = r.find(in, "legendText")) {
+    r.object(*words, "legendText");
+    for (const char* key : {"titles", "units"})
+      if (const json* map = r.find(*words, key)) {
+        r.object(*map, std::string("legendText.") + key);
+        for (const auto& [name, value] : map->items()) {
+          std::string entry = r.text(value, std::string("legendText.") + key + "." + name);
+          if (entry.size() > 200) r.fail(std::string("legendText.") + key + "." + name, "is longer than 200 bytes");
+          (std::string(key) == "titles" ? s.legendTitles : s.units)[name] = std::move(entry);
+        }
+      }
+    if (const json* numbers = r.find(*words, "numbers")) {
+      s.legendNumbers = r.text(*numbers, "legendText.numbers");
+      if (!LegendNumbers::parse(s.legendNumbers))
+        r.fail("legendText.numbers", "must be auto[:DIGITS], fixed[:DIGITS] or scientific[:DIGITS]");
+    }
+    if (const json* labels = r.find(*words, "labels")) {
+      if (!labels->is_number_integer() || labels->get<long long>() < 2 || labels->get<long long>() > 20)
+        r.fail("legendText.labels", "must be a count from 2 to 20");
+      s.legendLabels = int(labels->get<long long>());
     }
   }
   if (const json* colors = r.find(in, "colors")) {

@@ -25,6 +25,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -148,6 +149,12 @@ struct SceneState {
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)
   double surfaceOpacity = 1.0;  ///< below 1 the surface is see-through (streamlines show)
   bool legend = true;
+  /// The legend's words and numbers; "legendText" in the file: {"titles": {"S.mises":
+  /// "Equivalent stress"}, "units": {"S": "MPa"}, "numbers": "fixed:2", "labels": 6}.
+  std::map<std::string, std::string> legendTitles;  ///< by quantity (written form)
+  std::map<std::string, std::string> units;         ///< by field name
+  std::string legendNumbers = "auto:4";             ///< LegendNumbers::parse
+  int legendLabels = 6;                             ///< about how many values a bar labels (2..20)
   bool triad = true;          ///< the orientation axes in the lower left corner
   VolumeLayer volume;
   StreamlineLayer streamlines;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "MainWindow.hpp"
 
+#include "../core/Legend.hpp"
 #include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
 #include "../core/ProbeTable.hpp"
@@ -49,6 +50,7 @@
 #include <QWidget>
 #include "host/TextFile.hpp"
 
+#include <QDialog>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
@@ -57,6 +59,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTextBrowser>
 #include <QTimer>
@@ -489,6 +492,8 @@ void MainWindow::buildColorActions(QMenu* view) {
     changeScene([on](Scene& s) { s.setSymmetricRange(on); });
     notifyPanels();
   });
+  view->addAction("Legend &Text and Numbers...", this, &MainWindow::chooseLegendText)
+      ->setObjectName("legendTextAction");
   colorBandsAction_ = view->addAction("Color &Bands...");
   colorBandsAction_->setObjectName("colorBandsAction");
   connect(colorBandsAction_, &QAction::triggered, this, [this] {
@@ -501,6 +506,65 @@ void MainWindow::buildColorActions(QMenu* view) {
     changeScene([bands](Scene& s) { s.setColorBands(bands == 1 ? 2 : bands); });
     syncColorActions();
     notifyPanels();
+  });
+}
+
+// View > Legend Text and Numbers...: the shown result's title and its field's units, how
+// numbers are written and about how many are labelled; the fields show what the legend has.
+void MainWindow::chooseLegendText() {
+  Scene& scene = viewport_->scene();
+  if (!scene.view()) {
+    statusBar()->showMessage("Show a result first: the legend belongs to it");
+    return;
+  }
+  const SceneState state = scene.state();
+  const Quantity q = scene.view()->quantity;
+  QDialog dialog(this);
+  dialog.setWindowTitle("Legend text and numbers");
+  dialog.setObjectName("legendTextDialog");
+  auto* form = new QFormLayout(&dialog);
+  auto* title = new QLineEdit(&dialog);
+  title->setObjectName("legendTitle");
+  title->setPlaceholderText(QString::fromStdString(q.displayName()));
+  if (const auto t = state.legendTitles.find(q.key()); t != state.legendTitles.end())
+    title->setText(QString::fromStdString(t->second));
+  form->addRow(QString("Title of %1:").arg(QString::fromStdString(q.key())), title);
+  auto* units = new QLineEdit(&dialog);
+  units->setObjectName("legendUnits");
+  units->setPlaceholderText("MPa, mm, K ...");
+  if (const auto u = state.units.find(q.field); u != state.units.end())
+    units->setText(QString::fromStdString(u->second));
+  form->addRow(QString("Units of %1:").arg(QString::fromStdString(q.field)), units);
+  const LegendNumbers numbers = LegendNumbers::parse(state.legendNumbers).value_or(LegendNumbers{});
+  auto* style = new QComboBox(&dialog);
+  style->setObjectName("legendNumberStyle");
+  style->addItem("Significant digits", "auto");
+  style->addItem("Digits after the point", "fixed");
+  style->addItem("Scientific", "scientific");
+  style->setCurrentIndex(int(numbers.style));
+  auto* digits = new QSpinBox(&dialog);
+  digits->setObjectName("legendDigits");
+  digits->setRange(0, 12);
+  digits->setValue(numbers.digits);
+  form->addRow("Numbers:", style);
+  form->addRow("Digits:", digits);
+  auto* labels = new QSpinBox(&dialog);
+  labels->setObjectName("legendLabels");
+  labels->setRange(2, 20);
+  labels->setValue(state.legendLabels);
+  form->addRow("About how many labels:", labels);
+  auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
+  form->addRow(buttons);
+  connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+  connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+  if (dialog.exec() != QDialog::Accepted) return;
+  const std::string written = style->currentData().toString().toStdString() + ":" +
+                              std::to_string(std::max(style->currentIndex() == 0 ? 1 : 0, digits->value()));
+  changeScene([&](Scene& s) {
+    s.setLegendNumbers(written);  // checked first: nothing changes when it is refused
+    s.setLegendTitle(q.key(), title->text().trimmed().toStdString());
+    s.setUnits(q.field, units->text().trimmed().toStdString());
+    s.setLegendLabels(labels->value());
   });
 }
 

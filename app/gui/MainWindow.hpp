@@ -146,6 +146,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   /// The color map the toolbar and View > Reverse Color Map ask for ("viridis-reversed").
   std::string chosenColorMap() const;
   void buildColorActions(QMenu* view);
+  void chooseLegendText();
   /// The color actions show the scene's colors (after a state file or a change).
   void syncColorActions();
   QAction* triadAction_ = nullptr;

@@ -608,6 +608,19 @@ TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
   EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --symmetric --range 0:1 -o " + png).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --bands 4 --renderer reference -o " + png).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + bar + " --field S.xy --colormap viridis-backwards -o " + png).exitCode, 2);
+  // The legend's words and numbers.
+  const auto legend = runVolpost("render " + bar +
+                                 " --field S.mises --units S=MPa --legend-title Equivalent "
+                                 "--legend-numbers fixed:1 --legend-labels 10 --size 160x120 -o " +
+                                 png + " --save-state " + state);
+  ASSERT_EQ(legend.exitCode, 0) << legend.output;
+  std::ifstream again(state);
+  const std::string saved2((std::istreambuf_iterator<char>(again)), {});
+  EXPECT_NE(saved2.find("\"S\": \"MPa\""), std::string::npos) << saved2;
+  EXPECT_NE(saved2.find("\"numbers\": \"fixed:1\""), std::string::npos) << saved2;
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --units Q=MPa -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --legend-numbers roman -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --legend-labels 50 -o " + png).exitCode, 2);
 }
 
 TEST(ProbeCommand, NodesAndElementsByTheirIds) {

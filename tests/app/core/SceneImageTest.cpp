@@ -99,6 +99,40 @@ TEST(SceneImage, ColorBandsDrawEachBandInTheColorOfItsMiddle) {
   EXPECT_THROW(SceneState::fromJson(text, "/data/view.json"), std::runtime_error);
 }
 
+// The legend's words and numbers: a title per quantity, units per field, the number style
+// and label count; kept in the state file, refused when malformed.
+TEST(SceneLegend, TitlesUnitsAndNumberStyles) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setResult("S.mises", 0);
+  scene.setUnits("S", "MPa");
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "S von Mises [MPa]");
+  scene.setLegendTitle("S.mises", "Equivalent stress");
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "Equivalent stress [MPa]");
+  scene.setResult("S.xx", 0);  // a title belongs to its quantity; units to the field
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "S XX [MPa]");
+  scene.setLegendNumbers("fixed:2");
+  EXPECT_EQ(scene.legend()->content.numbers.text(3.14159).toStdString(), "3.14");
+  scene.setLegendNumbers("scientific");
+  EXPECT_EQ(scene.legend()->content.numbers.text(1234.5).toStdString(), "1.235e+03");
+  scene.setLegendLabels(10);
+  EXPECT_EQ(scene.legend()->content.labels, 10);
+  EXPECT_THROW(scene.setLegendNumbers("fixed:x"), std::invalid_argument);
+  EXPECT_THROW(scene.setLegendNumbers("auto:0"), std::invalid_argument);
+  EXPECT_THROW(scene.setLegendLabels(1), std::invalid_argument);
+  EXPECT_THROW(scene.setUnits("S", std::string(201, 'x')), std::invalid_argument);
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_EQ(back.units.at("S"), "MPa");
+  EXPECT_EQ(back.legendTitles.at("S.mises"), "Equivalent stress");
+  EXPECT_EQ(back.legendNumbers, "scientific:3");
+  EXPECT_EQ(back.legendLabels, 10);
+  std::string text = scene.state().toJson();
+  text.replace(text.find("\"scientific:3\""), 14, "\"roman\"");
+  EXPECT_THROW(SceneState::fromJson(text, "/data/view.json"), std::runtime_error);
+  scene.setUnits("S", "");  // empty: none
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "S XX");
+}
+
 // A regular grid's slices: nothing drawn without them (surface hidden); a slice draws the
 // grid's values across it, and the bottom slice seen from below is the box's bottom face
 // (the same values on the same plane); refused on a mesh and outside the grid, naming the

@@ -16,35 +16,36 @@
 
 #include <volpost/render/GL.hpp>
 
-#include <QApplication>
 #include <QAction>
+#include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenu>
+#include <QMimeData>
+#include <QMouseEvent>
 #include <QProcess>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QDockWidget>
-#include <QLabel>
-#include <QTextBrowser>
-#include <QLineEdit>
-#include <QListWidget>
-#include <QTableWidget>
-#include <QMouseEvent>
-#include <QMenu>
-#include <QMimeData>
-#include <QUrl>
-#include <QDragEnterEvent>
-#include <QDropEvent>
 #include <QSettings>
-#include <QSlider>
-#include <QCheckBox>
 #include <QSignalSpy>
-#include <QStatusBar>
+#include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSurfaceFormat>
+#include <QTableWidget>
 #include <QTest>
+#include <QTextBrowser>
 #include <QTimer>
+#include <QUrl>
 
 #include <cstdlib>
 
@@ -335,6 +336,22 @@ class MainWindowTest : public QObject {
     QVERIFY(!window_->findChild<QAction*>("symmetricRangeAction")->isChecked());
     QCOMPARE(colors->currentData().toString(), QString("rainbow"));
     QVERIFY(window_->findChild<QAction*>("colorBandsAction")->text().contains("12"));
+    // View > Legend Text and Numbers...: the fields show the legend's, OK applies them.
+    QString shownTitle;
+    QTimer::singleShot(0, [&] {
+      auto* dialog = QApplication::activeModalWidget();
+      if (!dialog) return;
+      shownTitle = dialog->findChild<QLineEdit*>("legendTitle")->placeholderText();
+      dialog->findChild<QLineEdit*>("legendUnits")->setText("MPa");
+      dialog->findChild<QComboBox*>("legendNumberStyle")->setCurrentIndex(1);
+      dialog->findChild<QSpinBox*>("legendDigits")->setValue(2);
+      QMetaObject::invokeMethod(dialog, "accept");
+    });
+    window_->findChild<QAction*>("legendTextAction")->trigger();
+    QCOMPARE(shownTitle, QString("S XY"));
+    QCOMPARE(scene.state().units.at("S"), std::string("MPa"));
+    QCOMPARE(scene.state().legendNumbers, std::string("fixed:2"));
+    QCOMPARE(scene.legend()->content.title, QString("S XY [MPa]"));
   }
 
   void plotOverStepsAtProbedPoints() {
