@@ -18,6 +18,10 @@ uniform vec3 noValueColor;
 uniform vec3 plainColor;
 uniform float opacity;
 uniform int colorBands;
+uniform bool useBelowColor;
+uniform vec3 belowColor;
+uniform bool useAboveColor;
+uniform vec3 aboveColor;
 
 out vec4 fragColor;
 
@@ -25,7 +29,8 @@ void main() {
   if (clippedAway(vModelPosition)) discard;
   vec3 base = scalarLocation < 0 ? plainColor
              : vMissing > 0.0    ? noValueColor
-                                 : colorForValueInBands(colorMap, vValue, valueMin, valueMax, noValueColor, colorBands);
+                                 : colorForValueInRange(colorMap, vValue, valueMin, valueMax, noValueColor, colorBands,
+                                                                        useBelowColor, belowColor, useAboveColor, aboveColor);
   if (lighting) {
     // Headlight, two-sided: a face seen head-on shows the exact color-map color.
     vec3 toEye = orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);

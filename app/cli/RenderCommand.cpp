@@ -79,6 +79,12 @@ struct Options {
                                    "STYLE"};
   QCommandLineOption legendLabels{"legend-labels",
                                   "About how many values a continuous legend labels (2..20, default 6).", "N"};
+  QCommandLineOption belowColor{"below-color",
+                                "Values below the color range in this color (R,G,B each 0..1) instead "
+                                "of the map's end color.",
+                                "R,G,B"};
+  QCommandLineOption aboveColor{"above-color", "Values above the color range in this color (R,G,B each 0..1).",
+                                "R,G,B"};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
                                "|max|: zero in the middle of a diverging map."};
@@ -318,6 +324,10 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   }
   refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
   refuse(o.bands, "bands the surface's colors; a volume's colors come from its transfer function");
+  refuse(o.belowColor,
+         "colors the surface's values below the range; a volume's colors come from its transfer function");
+  refuse(o.aboveColor,
+         "colors the surface's values above the range; a volume's colors come from its transfer function");
   refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
   refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
   const RendererEntry& r = *chosen.volume;
@@ -448,6 +458,18 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     if (!scene.view()) throw UsageError("--legend-title names the shown result's legend; give --field");
     scene.setLegendTitle(scene.view()->quantity.key(), p.value(o.legendTitle).toStdString());
   }
+  if (p.isSet(o.belowColor) || p.isSet(o.aboveColor)) {
+    const auto colorOf = [&](const QCommandLineOption& option) -> std::optional<glm::dvec3> {
+      if (!p.isSet(option)) return std::nullopt;
+      const auto c = parsePoint(p.value(option));
+      if (!c || c->r < 0.0 || c->r > 1.0 || c->g < 0.0 || c->g > 1.0 || c->b < 0.0 || c->b > 1.0)
+        throw UsageError(QString("--%1 %2 is not R,G,B with each from 0 to 1")
+                             .arg(option.names().first(), p.value(option))
+                             .toStdString());
+      return c;
+    };
+    scene.setOutOfRangeColors(colorOf(o.belowColor), colorOf(o.aboveColor));
+  }
   if (p.isSet(o.legendNumbers)) scene.setLegendNumbers(p.value(o.legendNumbers).toStdString());
   if (p.isSet(o.legendLabels)) {
     bool ok = false;
@@ -566,15 +588,62 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions(
-      {o.field,          o.step,        o.camera,       o.view,          o.eye,           o.target,       o.up,
-       o.viewAngle,      o.size,        o.colormap,     o.range,         o.bands,         o.symmetric,    o.noEdges,
-       o.noLegend,       o.noTriad,     o.deform,       o.undeformed,    o.flat,          o.output,       o.renderer,
-       o.mode,           o.tf,          o.tf2d,         o.clip,          o.clipBox,       o.iso,          o.volumeEdges,
-       o.samplingStep,   o.termination, o.shading,      o.floatOut,      o.threads,       o.state,        o.saveState,
-       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius,    o.radiusByValue, o.arrows,       o.noSurface,
-       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,      o.fps,           o.readerOption, o.slice,
-       o.formula,        o.units,       o.legendTitle,  o.legendNumbers, o.legendLabels});
+  parser.addOptions({o.field,
+                     o.step,
+                     o.camera,
+                     o.view,
+                     o.eye,
+                     o.target,
+                     o.up,
+                     o.viewAngle,
+                     o.size,
+                     o.colormap,
+                     o.range,
+                     o.bands,
+                     o.symmetric,
+                     o.noEdges,
+                     o.noLegend,
+                     o.noTriad,
+                     o.deform,
+                     o.undeformed,
+                     o.flat,
+                     o.output,
+                     o.renderer,
+                     o.mode,
+                     o.tf,
+                     o.tf2d,
+                     o.clip,
+                     o.clipBox,
+                     o.iso,
+                     o.volumeEdges,
+                     o.samplingStep,
+                     o.termination,
+                     o.shading,
+                     o.floatOut,
+                     o.threads,
+                     o.state,
+                     o.saveState,
+                     o.streamlines,
+                     o.lineWidth,
+                     o.tubes,
+                     o.tubeRadius,
+                     o.radiusByValue,
+                     o.arrows,
+                     o.noSurface,
+                     o.surfaceOpacity,
+                     o.probe,
+                     o.markExtremes,
+                     o.allSteps,
+                     o.fps,
+                     o.readerOption,
+                     o.slice,
+                     o.formula,
+                     o.units,
+                     o.legendTitle,
+                     o.legendNumbers,
+                     o.legendLabels,
+                     o.belowColor,
+                     o.aboveColor});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

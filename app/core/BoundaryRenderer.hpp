@@ -30,6 +30,11 @@ class BoundaryRenderer {
   void setSession(std::shared_ptr<const ModelSession> session);
   /// Colors by the view's values; nullptr shows the plain surface.
   void setScalars(const ScalarView* view, DisplayRange range);
+  void setOutOfRangeColors(std::optional<glm::vec3> below, std::optional<glm::vec3> above) {
+    surface_.setOutOfRangeColors(below, above);
+    sections_.setOutOfRangeColors(below, above);
+    slices_.setOutOfRangeColors(below, above);
+  }
   void setColorBands(int bands) {
     surface_.setColorBands(bands);
     sections_.setColorBands(bands);

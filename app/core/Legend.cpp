@@ -166,9 +166,22 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   }
   std::vector<double> ticks =
       c.bands > 0 ? bandBounds(c, bottom - top, fm.height()) : niceTicks(c.min, c.max, std::clamp(c.labels, 2, 20));
-  const int labelWidth = labelWidthOf(fm, ticks, c.numbers);
+  int labelWidth = labelWidthOf(fm, ticks, c.numbers);
+  if (c.aboveColor || c.belowColor) labelWidth = std::max(labelWidth, fm.horizontalAdvance(QStringLiteral("above")));
   const int barRight = area.right() - labelWidth - 12;
-  const QRect bar(barRight - barWidth, top, barWidth, bottom - top);
+  // A box at each end for the colors outside the range, the bar between them.
+  const int box = fm.height();
+  const QRect bar(barRight - barWidth, top + (c.aboveColor ? box + 3 : 0), barWidth,
+                  bottom - top - (c.aboveColor ? box + 3 : 0) - (c.belowColor ? box + 3 : 0));
+  const auto endBox = [&](const glm::dvec3& rgb, int y, const QString& label) {
+    const QRect r(bar.left(), y, bar.width(), box);
+    painter.fillRect(r, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+    painter.setPen(QColor(40, 40, 40));
+    painter.drawRect(r);
+    painter.drawText(QPoint(bar.right() + 7, r.center().y() + fm.ascent() / 2 - 1), label);
+  };
+  if (c.aboveColor) endBox(*c.aboveColor, top, "above");
+  if (c.belowColor) endBox(*c.belowColor, bar.bottom() + 3, "below");
 
   if (c.bands > 0) {  // each band in the color of its middle, as the surface draws it
     for (int b = 0; b < c.bands; ++b) {
@@ -199,7 +212,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   const QRect titleRect(area.left(), area.top() + 4, textRight - area.left(), fm.height());
   painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
   painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
-  footer(bar.bottom() + 4);
+  footer(bar.bottom() + 4 + (c.belowColor ? box + 3 : 0));
   painter.restore();
 }
 

@@ -4,6 +4,8 @@
 
 #include <volpost/core/ColorMap.hpp>
 
+#include <glm/vec3.hpp>
+
 #include <QRect>
 #include <QString>
 
@@ -42,7 +44,9 @@ struct LegendContent {
   /// Discrete bands of equal width (0: a continuous bar); ticks then mark their bounds.
   int bands = 0;
   LegendNumbers numbers;
-  int labels = 6;  ///< about how many values a continuous bar labels
+  int labels = 6;
+  /// The colors of values below / above the bar's range, drawn as boxes at its ends.
+  std::optional<glm::dvec3> belowColor, aboveColor;  ///< about how many values a continuous bar labels
 };
 
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.

@@ -164,6 +164,15 @@ void Scene::setColorBands(int bands) {
   ++revisions_.colorMap;
 }
 
+void Scene::setOutOfRangeColors(std::optional<glm::dvec3> below, std::optional<glm::dvec3> above) {
+  for (const auto& c : {below, above})
+    if (c && !(c->r >= 0.0 && c->r <= 1.0 && c->g >= 0.0 && c->g <= 1.0 && c->b >= 0.0 && c->b <= 1.0))
+      throw std::invalid_argument("a color outside the range needs r, g, b each from 0 to 1");
+  state_.belowColor = below;
+  state_.aboveColor = above;
+  ++revisions_.colorMap;
+}
+
 void Scene::setShowEdges(bool show) { state_.edges = show; }
 
 namespace {
@@ -641,6 +650,8 @@ std::vector<LegendPicture> Scene::legends() const {
       content.min = range.min;
       content.max = range.max;
       content.bands = state_.colorBands;
+      content.belowColor = state_.belowColor;
+      content.aboveColor = state_.aboveColor;
       out.push_back({ColorMap::named(state_.colorMap), content});
     }
   }

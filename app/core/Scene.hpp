@@ -102,6 +102,9 @@ class Scene {
   void setSymmetricRange(bool on);
   /// Discrete contour bands (0: continuous); std::invalid_argument outside 0, 2..kMaxColorBands.
   void setColorBands(int bands);
+  /// Values below (above) the range in their own color (nullopt: the map's end color);
+  /// std::invalid_argument for a component outside 0..1.
+  void setOutOfRangeColors(std::optional<glm::dvec3> below, std::optional<glm::dvec3> above);
   void setShowEdges(bool show);
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }

@@ -113,6 +113,10 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   if (catchUp(drawn_.colorMap, now.colorMap)) {
     boundary_.setColorMap(ColorMap::named(s.colorMap));
     boundary_.setColorBands(s.colorBands);
+    const auto asFloat = [](const std::optional<glm::dvec3>& c) {
+      return c ? std::optional<glm::vec3>(glm::vec3(*c)) : std::nullopt;
+    };
+    boundary_.setOutOfRangeColors(asFloat(s.belowColor), asFloat(s.aboveColor));
   }
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   const std::vector<ClipPlane> cuts = s.volume.allClipPlanes();

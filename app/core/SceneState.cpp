@@ -362,7 +362,9 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                              : rangeOverSteps ? json("all-steps")
                                               : json("auto")},
                    {"symmetric", symmetricRange},
-                   {"bands", colorBands}};
+                   {"bands", colorBands},
+                   {"below", belowColor ? jsonOf(*belowColor) : json(nullptr)},
+                   {"above", aboveColor ? jsonOf(*aboveColor) : json(nullptr)}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
   out["legendText"] = {
@@ -475,6 +477,17 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     if (const json* m = r.find(*colors, "map")) s.colorMap = r.text(*m, "colors.map");
     if (const json* symmetric = r.find(*colors, "symmetric"))
       s.symmetricRange = r.boolean(*symmetric, "colors.symmetric");
+    for (const char* key : {"below", "above"})
+      if (const json* c = r.find(*colors, key); c && !c->is_null()) {
+        const std::string name = std::string("colors.") + key;
+        if (!c->is_array() || c->size() != 3) r.fail(name, "must be [r, g, b] with each 0..1, or null");
+        glm::dvec3 rgb;
+        for (int i = 0; i < 3; ++i) {
+          rgb[i] = r.number((*c)[std::size_t(i)], name);
+          if (!(rgb[i] >= 0.0 && rgb[i] <= 1.0)) r.fail(name, "must be [r, g, b] with each 0..1, or null");
+        }
+        (std::string(key) == "below" ? s.belowColor : s.aboveColor) = rgb;
+      }
     if (const json* bands = r.find(*colors, "bands")) {
       if (!bands->is_number_integer() || bands->get<long long>() < 0 || bands->get<long long>() > kMaxColorBands ||
           bands->get<long long>() == 1)

@@ -144,6 +144,9 @@ struct SceneState {
   /// Discrete contour bands of equal width (0: continuous colors; kMaxColorBands at most);
   /// "colors.bands" in the file.
   int colorBands = 0;
+  /// Values below (above) the range in this color instead of the map's end color;
+  /// "colors.below" / "colors.above" in the file: [r, g, b] (0..1) or null.
+  std::optional<glm::dvec3> belowColor, aboveColor;
   bool edges = true;          ///< element edges on the surface view
   bool lighting = true;       ///< shading; off: the color map's exact colors
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)

@@ -492,6 +492,17 @@ void MainWindow::buildColorActions(QMenu* view) {
     changeScene([on](Scene& s) { s.setSymmetricRange(on); });
     notifyPanels();
   });
+  outOfRangeAction_ = view->addAction("Colors &Outside the Range");
+  outOfRangeAction_->setObjectName("outOfRangeAction");
+  outOfRangeAction_->setCheckable(true);
+  outOfRangeAction_->setStatusTip("Values below a typed range in black, above it in white (not the map's end colors)");
+  connect(outOfRangeAction_, &QAction::toggled, this, [this](bool on) {
+    changeScene([on](Scene& s) {
+      s.setOutOfRangeColors(on ? std::optional(glm::dvec3(0.0)) : std::nullopt,
+                            on ? std::optional(glm::dvec3(1.0)) : std::nullopt);
+    });
+    notifyPanels();
+  });
   view->addAction("Legend &Text and Numbers...", this, &MainWindow::chooseLegendText)
       ->setObjectName("legendTextAction");
   colorBandsAction_ = view->addAction("Color &Bands...");
@@ -571,7 +582,8 @@ void MainWindow::chooseLegendText() {
 void MainWindow::syncColorActions() {
   if (!reverseColorsAction_) return;
   const SceneState state = viewport_->scene().state();
-  const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_);
+  const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_), c(outOfRangeAction_);
+  outOfRangeAction_->setChecked(state.belowColor || state.aboveColor);
   reverseColorsAction_->setChecked(ColorMap::isReversed(state.colorMap));
   symmetricRangeAction_->setChecked(state.symmetricRange);
   colorBandsAction_->setText(state.colorBands ? QString("Color &Bands (%1)...").arg(state.colorBands)

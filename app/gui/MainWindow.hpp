@@ -143,6 +143,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* reverseColorsAction_ = nullptr;
   QAction* symmetricRangeAction_ = nullptr;
   QAction* colorBandsAction_ = nullptr;
+  QAction* outOfRangeAction_ = nullptr;
   /// The color map the toolbar and View > Reverse Color Map ask for ("viridis-reversed").
   std::string chosenColorMap() const;
   void buildColorActions(QMenu* view);

@@ -14,6 +14,15 @@ vec3 colorForValueInBands(sampler1D colorMap, float value, float vmin, float vma
   return texture(colorMap, (t * (n - 1.0) + 0.5) / n).rgb;
 }
 
+// Values below vmin (above vmax) in their own color when useBelow (useAbove) is set,
+// else in the map's end color.
+vec3 colorForValueInRange(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor, int bands,
+                          bool useBelow, vec3 belowColor, bool useAbove, vec3 aboveColor) {
+  if (value < NO_VALUE && useBelow && value < vmin) return belowColor;
+  if (value < NO_VALUE && useAbove && value > vmax) return aboveColor;
+  return colorForValueInBands(colorMap, value, vmin, vmax, noValueColor, bands);
+}
+
 vec3 colorForValue(sampler1D colorMap, float value, float vmin, float vmax, vec3 noValueColor) {
   return colorForValueInBands(colorMap, value, vmin, vmax, noValueColor, 0);
 }

@@ -251,6 +251,11 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
   glProgramUniform1i(p, glGetUniformLocation(p, "colorMap"), 0);
   glProgramUniform1i(p, glGetUniformLocation(p, "colorBands"), colorBands_);
+  glProgramUniform1i(p, glGetUniformLocation(p, "useBelowColor"), belowColor_ ? 1 : 0);
+  glProgramUniform1i(p, glGetUniformLocation(p, "useAboveColor"), aboveColor_ ? 1 : 0);
+  const glm::vec3 below = belowColor_.value_or(glm::vec3(0.0f)), above = aboveColor_.value_or(glm::vec3(0.0f));
+  glProgramUniform3fv(p, glGetUniformLocation(p, "belowColor"), 1, glm::value_ptr(below));
+  glProgramUniform3fv(p, glGetUniformLocation(p, "aboveColor"), 1, glm::value_ptr(above));
   setClipUniforms(p, clipPlanes_, origin_, clipTolerance_);
   glBindTextureUnit(0, colorMap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scalars_.id());

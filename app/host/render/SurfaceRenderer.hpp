@@ -48,6 +48,11 @@ class SurfaceRenderer : public Renderer {
   void setColorMap(const ColorMap& map);
   /// Discrete bands of equal width over [min, max] (0: continuous colors).
   void setColorBands(int bands) { colorBands_ = bands; }
+  /// Values below min (above max) in this color instead of the map's end color.
+  void setOutOfRangeColors(std::optional<glm::vec3> below, std::optional<glm::vec3> above) {
+    belowColor_ = below;
+    aboveColor_ = above;
+  }
   /// Each element edge fades out as the distance on screen between it and its neighbours
   /// (the shortest edge at either end, scaled as the edge itself is projected) falls from
   /// kDenseEdgePixels to a third of it: a 256 x 256 face of a seismic cube, or a fine mesh seen whole, would
@@ -74,6 +79,7 @@ class SurfaceRenderer : public Renderer {
   gl::Buffer surfaceVbo_, edgeVbo_, scalars_;
   gl::Texture colorMap_;
   int colorBands_ = 0;
+  std::optional<glm::vec3> belowColor_, aboveColor_;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   int location_ = -1;  ///< -1 none, 0 node, 1 cell
   float min_ = 0.f, max_ = 1.f;

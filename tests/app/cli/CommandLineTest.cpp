@@ -621,6 +621,13 @@ TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
   EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --units Q=MPa -o " + png).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --legend-numbers roman -o " + png).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + bar + " --field S.mises --legend-labels 50 -o " + png).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + bar +
+                       " --field S.xx --range 95:105 --below-color 0,0,0 --above-color 1,1,1 "
+                       "--size 160x120 -o " +
+                       png)
+                .exitCode,
+            0);
+  EXPECT_EQ(runVolpost("render " + bar + " --field S.xx --below-color 0,0,2 -o " + png).exitCode, 2);
 }
 
 TEST(ProbeCommand, NodesAndElementsByTheirIds) {

@@ -73,6 +73,20 @@ TEST(SceneImage, ColorBandsDrawEachBandInTheColorOfItsMiddle) {
   EXPECT_NEAR(centre(), 0.375 * 255.0, 1.5);
   scene.setColorMap("grayscale-reversed");
   EXPECT_NEAR(centre(), 0.625 * 255.0, 1.5);
+  // Outside a typed range: the value 100 below 102..112 in the below color, not the end color.
+  scene.setFixedRange(DisplayRange{102.0, 112.0});
+  scene.setColorMap("grayscale");
+  EXPECT_NEAR(centre(), 0.125 * 255.0, 1.5);  // the first band's middle
+  scene.setOutOfRangeColors(glm::dvec3(1.0, 0.0, 0.0), std::nullopt);
+  {
+    const QImage image = renderSceneImage(scene, 64, 32).picture;
+    EXPECT_EQ(image.pixel(32, 16) & 0xffffffu, 0xff0000u);
+  }
+  EXPECT_THROW(scene.setOutOfRangeColors(glm::dvec3(2.0, 0.0, 0.0), std::nullopt), std::invalid_argument);
+  EXPECT_EQ(*SceneState::fromJson(scene.state().toJson(), "/v.json").belowColor, glm::dvec3(1.0, 0.0, 0.0));
+  scene.setOutOfRangeColors(std::nullopt, std::nullopt);
+  scene.setFixedRange(DisplayRange{92.0, 112.0});
+  scene.setColorMap("grayscale-reversed");
   EXPECT_THROW(scene.setColorBands(1), std::invalid_argument);
   EXPECT_THROW(scene.setColorBands(kMaxColorBands + 1), std::invalid_argument);
   EXPECT_EQ(scene.state().colorBands, 4);

@@ -319,6 +319,8 @@ class MainWindowTest : public QObject {
     QCOMPARE(scene.state().colorMap, std::string("viridis-reversed"));
     window_->findChild<QAction*>("symmetricRangeAction")->setChecked(true);
     QVERIFY(scene.state().symmetricRange);
+    window_->findChild<QAction*>("outOfRangeAction")->setChecked(true);
+    QVERIFY(scene.state().belowColor && scene.state().aboveColor);
     QCOMPARE(scene.displayRange().min, -scene.displayRange().max);
     // A state with other colors: the controls show them.
     SceneState state = scene.state();
@@ -334,6 +336,7 @@ class MainWindowTest : public QObject {
     QFile::remove(path);
     QVERIFY(!window_->findChild<QAction*>("reverseColorsAction")->isChecked());
     QVERIFY(!window_->findChild<QAction*>("symmetricRangeAction")->isChecked());
+    QVERIFY(window_->findChild<QAction*>("outOfRangeAction")->isChecked());  // the state kept them
     QCOMPARE(colors->currentData().toString(), QString("rainbow"));
     QVERIFY(window_->findChild<QAction*>("colorBandsAction")->text().contains("12"));
     // View > Legend Text and Numbers...: the fields show the legend's, OK applies them.
