@@ -85,6 +85,7 @@ struct Options {
                                 "R,G,B"};
   QCommandLineOption aboveColor{"above-color", "Values above the color range in this color (R,G,B each 0..1).",
                                 "R,G,B"};
+  QCommandLineOption title{"title", "A line of text at the picture's top left (a report's caption).", "TEXT"};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
                                "|max|: zero in the middle of a diverging map."};
@@ -470,6 +471,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     };
     scene.setOutOfRangeColors(colorOf(o.belowColor), colorOf(o.aboveColor));
   }
+  if (p.isSet(o.title)) scene.setTitle(p.value(o.title).toStdString());
   if (p.isSet(o.legendNumbers)) scene.setLegendNumbers(p.value(o.legendNumbers).toStdString());
   if (p.isSet(o.legendLabels)) {
     bool ok = false;
@@ -588,62 +590,16 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions({o.field,
-                     o.step,
-                     o.camera,
-                     o.view,
-                     o.eye,
-                     o.target,
-                     o.up,
-                     o.viewAngle,
-                     o.size,
-                     o.colormap,
-                     o.range,
-                     o.bands,
-                     o.symmetric,
-                     o.noEdges,
-                     o.noLegend,
-                     o.noTriad,
-                     o.deform,
-                     o.undeformed,
-                     o.flat,
-                     o.output,
-                     o.renderer,
-                     o.mode,
-                     o.tf,
-                     o.tf2d,
-                     o.clip,
-                     o.clipBox,
-                     o.iso,
-                     o.volumeEdges,
-                     o.samplingStep,
-                     o.termination,
-                     o.shading,
-                     o.floatOut,
-                     o.threads,
-                     o.state,
-                     o.saveState,
-                     o.streamlines,
-                     o.lineWidth,
-                     o.tubes,
-                     o.tubeRadius,
-                     o.radiusByValue,
-                     o.arrows,
-                     o.noSurface,
-                     o.surfaceOpacity,
-                     o.probe,
-                     o.markExtremes,
-                     o.allSteps,
-                     o.fps,
-                     o.readerOption,
-                     o.slice,
-                     o.formula,
-                     o.units,
-                     o.legendTitle,
-                     o.legendNumbers,
-                     o.legendLabels,
-                     o.belowColor,
-                     o.aboveColor});
+  parser.addOptions(
+      {o.field,          o.step,        o.camera,       o.view,          o.eye,           o.target,       o.up,
+       o.viewAngle,      o.size,        o.colormap,     o.range,         o.bands,         o.symmetric,    o.noEdges,
+       o.noLegend,       o.noTriad,     o.deform,       o.undeformed,    o.flat,          o.output,       o.renderer,
+       o.mode,           o.tf,          o.tf2d,         o.clip,          o.clipBox,       o.iso,          o.volumeEdges,
+       o.samplingStep,   o.termination, o.shading,      o.floatOut,      o.threads,       o.state,        o.saveState,
+       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius,    o.radiusByValue, o.arrows,       o.noSurface,
+       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,      o.fps,           o.readerOption, o.slice,
+       o.formula,        o.units,       o.legendTitle,  o.legendNumbers, o.legendLabels,  o.belowColor,   o.aboveColor,
+       o.title});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

@@ -184,6 +184,12 @@ void setOrErase(std::map<std::string, std::string>& map, const std::string& key,
 }
 }  // namespace
 
+void Scene::setTitle(const std::string& title) {
+  if (title.size() > 200) throw std::invalid_argument("a picture title longer than 200 bytes");
+  if (title.find_first_of("\r\n") != std::string::npos) throw std::invalid_argument("a picture title is one line");
+  state_.title = title;
+}
+
 void Scene::setLegendTitle(const std::string& quantity, const std::string& title) {
   setOrErase(state_.legendTitles, quantity, title, "a legend title");
 }

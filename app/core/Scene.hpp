@@ -109,6 +109,9 @@ class Scene {
   /// Off: the surface shows the color map's exact colors (no shading).
   void setLighting(bool on) { state_.lighting = on; }
   void setShowLegend(bool show) { state_.legend = show; }
+  /// A line of text at the picture's top left (empty: none); std::invalid_argument over 200
+  /// bytes or with a line break.
+  void setTitle(const std::string& title);
   /// The legend's title for a quantity (empty: its own name); units of a field, shown after
   /// the title ("S von Mises [MPa]"); std::invalid_argument for text over 200 bytes.
   void setLegendTitle(const std::string& quantity, const std::string& title);

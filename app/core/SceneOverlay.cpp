@@ -255,6 +255,35 @@ std::optional<QPointF> PointInArea::operator()(const glm::dvec3& p) const {
   return QPointF(area.left() + q->x, area.top() + q->y);
 }
 
+// The picture's caption at the top left: the state's title, then what a report must say
+// about the picture: the deformation's factor when the shape is drawn deformed.
+void paintCaption(QPainter& painter, const QRect& room, const Scene& scene) {
+  QStringList lines;
+  if (!scene.state().title.empty()) lines << QString::fromStdString(scene.state().title);
+  if (scene.deformation().shown && scene.deformationScale() != 0.0)
+    lines << QString("Deformed shape: %1 x %2")
+                 .arg(QString::fromStdString(scene.deformation().field))
+                 .arg(scene.deformationScale(), 0, 'g', 4);
+  if (lines.isEmpty()) return;
+  painter.save();
+  const QFont font = painter.font();
+  int y = room.top() + 6;
+  for (int i = 0; i < lines.size(); ++i) {
+    QFont lineFont = font;
+    if (i == 0 && !scene.state().title.empty()) {
+      lineFont.setPixelSize(int(font.pixelSize() * 1.4));
+      lineFont.setBold(true);
+    }
+    painter.setFont(lineFont);
+    const QFontMetrics fm(lineFont);
+    painter.setPen(QColor(30, 30, 30));
+    painter.drawText(QRect(room.left() + 8, y, room.width() - 16, fm.height()), Qt::AlignLeft | Qt::AlignVCenter,
+                     fm.elidedText(lines[i], Qt::ElideRight, room.width() - 16));
+    y += fm.height() + 2;
+  }
+  painter.restore();
+}
+
 }  // namespace
 
 void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene) {
@@ -282,6 +311,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   for (const Marker& m : markers)
     if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
   if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);
+  paintCaption(painter, room, scene);
   painter.restore();
   // Several keys share the strip, one above the other.
   for (std::size_t i = 0; i < legends.size(); ++i) {

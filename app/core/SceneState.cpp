@@ -367,6 +367,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                    {"above", aboveColor ? jsonOf(*aboveColor) : json(nullptr)}};
   out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
   out["legend"] = legend;
+  if (!title.empty()) out["title"] = title;
   out["legendText"] = {
       {"titles", legendTitles}, {"units", units}, {"numbers", legendNumbers}, {"labels", legendLabels}};
   out["triad"] = triad;
@@ -449,6 +450,10 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
         if (earlier.name == view.name) r.fail(key + ".name", "repeats the name \"" + view.name + "\"");
       s.views.push_back(std::move(view));
     }
+  }
+  if (const json* t = r.find(in, "title")) {
+    s.title = r.text(*t, "title");
+    if (s.title.size() > 200) r.fail("title", "is longer than 200 bytes");
   }
   if (const json* words = r.find(in, "legendText")) {
     r.object(*words, "legendText");

@@ -152,6 +152,8 @@ struct SceneState {
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)
   double surfaceOpacity = 1.0;  ///< below 1 the surface is see-through (streamlines show)
   bool legend = true;
+  /// A line of text at the picture's top left (a report's caption); "title" in the file.
+  std::string title;
   /// The legend's words and numbers; "legendText" in the file: {"titles": {"S.mises":
   /// "Equivalent stress"}, "units": {"S": "MPa"}, "numbers": "fixed:2", "labels": 6}.
   std::map<std::string, std::string> legendTitles;  ///< by quantity (written form)

@@ -503,6 +503,15 @@ void MainWindow::buildColorActions(QMenu* view) {
     });
     notifyPanels();
   });
+  view->addAction("Picture &Title...", this,
+                  [this] {
+                    bool ok = false;
+                    const QString text = QInputDialog::getText(
+                        this, "Picture title", "A line at the picture's top left (empty: none):", QLineEdit::Normal,
+                        QString::fromStdString(viewport_->scene().state().title), &ok);
+                    if (ok) changeScene([&](Scene& s) { s.setTitle(text.trimmed().toStdString()); });
+                  })
+      ->setObjectName("pictureTitleAction");
   view->addAction("Legend &Text and Numbers...", this, &MainWindow::chooseLegendText)
       ->setObjectName("legendTextAction");
   colorBandsAction_ = view->addAction("Color &Bands...");

@@ -628,6 +628,8 @@ TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
                 .exitCode,
             0);
   EXPECT_EQ(runVolpost("render " + bar + " --field S.xx --below-color 0,0,2 -o " + png).exitCode, 2);
+  EXPECT_EQ(
+      runVolpost("render " + bar + " --field S.xx --title \"Bar, axial stress\" --size 160x120 -o " + png).exitCode, 0);
 }
 
 TEST(ProbeCommand, NodesAndElementsByTheirIds) {

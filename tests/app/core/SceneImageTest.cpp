@@ -147,6 +147,29 @@ TEST(SceneLegend, TitlesUnitsAndNumberStyles) {
   EXPECT_EQ(scene.legend()->content.title.toStdString(), "S XX");
 }
 
+// The picture's caption: the title at the top left, kept in the state; one line only.
+TEST(SceneLegend, ATitleIsPaintedAtTheTopLeftAndKept) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  const auto darkAtTopLeft = [&] {
+    QImage image(400, 200, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    paintSceneOverlay(image, scene);
+    int dark = 0;
+    for (int y = 0; y < 40; ++y)
+      for (int x = 0; x < 200; ++x) dark += qGray(image.pixel(x, y)) < 128;
+    return dark;
+  };
+  EXPECT_EQ(darkAtTopLeft(), 0);
+  scene.setTitle("Bar: axial stress");
+  EXPECT_GT(darkAtTopLeft(), 50);
+  EXPECT_EQ(SceneState::fromJson(scene.state().toJson(), "/v.json").title, "Bar: axial stress");
+  EXPECT_THROW(scene.setTitle("two\nlines"), std::invalid_argument);
+  EXPECT_THROW(scene.setTitle(std::string(201, 'x')), std::invalid_argument);
+}
+
 // A regular grid's slices: nothing drawn without them (surface hidden); a slice draws the
 // grid's values across it, and the bottom slice seen from below is the box's bottom face
 // (the same values on the same plane); refused on a mesh and outside the grid, naming the
