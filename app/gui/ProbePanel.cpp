@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ProbePanel.hpp"
 
+#include "../core/Measure.hpp"
 #include "../core/ProbeTable.hpp"
 #include "../core/SceneState.hpp"
 #include "../core/VolumeSpecs.hpp"
@@ -75,6 +76,12 @@ ProbePanel::ProbePanel(QWidget* parent) : QWidget(parent) {
   details_->setHorizontalHeaderLabels({"quantity", "value"});
   details_->verticalHeader()->setVisible(false);
   details_->horizontalHeader()->setStretchLastSection(true);
+  measure_ = new QLabel(lower);
+  measure_->setObjectName("probeMeasure");
+  measure_->setWordWrap(true);
+  measure_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  measure_->setToolTip("Select two probed points for their distance, three for the angle at the second");
+  lowerLayout->addWidget(measure_);
   lowerLayout->addWidget(where_);
   lowerLayout->addWidget(details_);
   layout->addWidget(split, 1);
@@ -150,8 +157,37 @@ void ProbePanel::fillPicks() {
   fillDetails();
 }
 
+// Two selected points: their distance; three: also the angle at the second.
+void ProbePanel::showMeasure() {
+  std::vector<int> rows;
+  for (const QModelIndex& index : picks_->selectionModel()->selectedRows())
+    if (index.row() < int(results_.size())) rows.push_back(index.row());
+  std::sort(rows.begin(), rows.end());
+  if (rows.size() < 2 || rows.size() > 3) {
+    measure_->clear();
+    return;
+  }
+  const auto point = [&](std::size_t i) { return results_[std::size_t(rows[i])].point; };
+  const auto number = [](double v) { return QString::fromStdString(displayNumber(v)); };
+  const glm::dvec3 d = point(1) - point(0);
+  QString text = QString("Distance %1 to %2: %3 (dx %4, dy %5, dz %6)")
+                     .arg(rows[0] + 1)
+                     .arg(rows[1] + 1)
+                     .arg(number(distanceBetween(point(0), point(1))), number(d.x), number(d.y), number(d.z));
+  if (rows.size() == 3) {
+    text +=
+        QString("; %1 to %2: %3").arg(rows[1] + 1).arg(rows[2] + 1).arg(number(distanceBetween(point(1), point(2))));
+    const auto angle = angleAt(point(0), point(1), point(2));
+    text += angle ? QString("; angle at %1: %2 degrees").arg(rows[1] + 1).arg(number(*angle))
+                  : QString("; no angle: two points coincide");
+  }
+  if (deformed_) text += " (deformed coordinates, as drawn)";
+  measure_->setText(text);
+}
+
 // The selected pick: where it is, and every quantity at full precision.
 void ProbePanel::fillDetails() {
+  showMeasure();
   const int row = picks_->currentRow();
   details_->setRowCount(0);
   if (row < 0 || row >= int(results_.size())) {

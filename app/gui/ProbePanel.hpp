@@ -27,6 +27,8 @@ class ProbePanel : public QWidget {
   explicit ProbePanel(QWidget* parent = nullptr);
 
   /// What to probe: the model, the points, the step and the quantity shown (its column).
+  /// The points are on the deformed shape (measures say so).
+  void setDeformed(bool deformed) { deformed_ = deformed; }
   void showProbes(std::shared_ptr<const ModelSession> session, const std::vector<glm::dvec3>& points, std::size_t step,
                   const std::string& quantityKey);
   const std::vector<ProbeResult>& results() const { return results_; }
@@ -44,12 +46,15 @@ class ProbePanel : public QWidget {
   void addTyped();
   void fillPicks();
   void fillDetails();
+  void showMeasure();
   void removeSelected();
   void copyAll();
   void exportCsv();
   std::vector<glm::dvec3> points() const;
 
   std::shared_ptr<const ModelSession> session_;
+  QLabel* measure_ = nullptr;
+  bool deformed_ = false;
   std::vector<ProbeResult> results_;
   std::string quantityKey_;
   QSpinBox* digits_ = nullptr;

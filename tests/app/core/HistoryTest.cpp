@@ -3,6 +3,7 @@
 // the stored values; the time axis only for increasing times; steps a field lacks and
 // points outside are gaps, never a repeated value.
 #include "core/History.hpp"
+#include "core/Measure.hpp"
 
 #include <gtest/gtest.h>
 
@@ -83,4 +84,13 @@ TEST(History, RefusalsNameWhatIsWrong) {
   EXPECT_THROW(sampleHistory(*session, {}, {"T"}), std::invalid_argument);
   std::vector<HistoryPlace> many(kMaxHistoryCurves + 1, {HistoryPlace::Kind::Node, 11, {}});
   EXPECT_THROW(sampleHistory(*session, many, {"T"}), std::invalid_argument);
+}
+
+TEST(Measure, DistancesAndAnglesBetweenPoints) {
+  EXPECT_DOUBLE_EQ(distanceBetween({0, 0, 0}, {3, 4, 12}), 13.0);
+  EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {0, 2, 0}), 90.0, 1e-12);
+  EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {1, 1, 0}), 45.0, 1e-12);
+  EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {-1, 1e-9, 0}), 180.0, 1e-6);  // nearly straight: no acos rounding
+  EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {1, 1e-9, 0}), 0.0, 1e-6);
+  EXPECT_FALSE(angleAt({0, 0, 0}, {0, 0, 0}, {1, 0, 0}));
 }

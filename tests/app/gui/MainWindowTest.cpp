@@ -379,6 +379,11 @@ class MainWindowTest : public QObject {
     QCOMPARE(h.curves[0].place, std::string("node 10"));
     QCOMPARE(h.curves[1].values, (std::vector<double>{56.5, 113.0}));  // as `volpost probe` gives them
     QVERIFY(window_->findChild<QLabel*>("historyTitle")->text().startsWith("T over 2 steps at node 10"));
+    // Two probes selected: their distance in the panel (node 10 is at the origin).
+    auto* picks = window_->findChild<QTableWidget*>("probePicks");
+    picks->selectAll();
+    const QString measure = window_->findChild<QLabel*>("probeMeasure")->text();
+    QVERIFY2(measure.startsWith("Distance 1 to 2: 1.65831"), qPrintable(measure));
   }
 
   void theCalculatorsFormulaIsAResultKeptInTheStateFile() {
