@@ -54,8 +54,12 @@ std::size_t printFields(const Model& model) {
       try {
         const ValueRange r = isStoredSamples(*f, headline) ? rangeOf(f->samples(s)) : rangeOf(evaluate(*f, headline, s));
         const std::string& label = f->steps()[s].label;
-        std::printf("      %-14s %s [%.6g, %.6g]", label.empty() ? "" : label.c_str(),
-                    headline.displayName().c_str(), r.min, r.max);
+        if (r.valid())
+          std::printf("      %-14s %s [%.6g, %.6g]", label.empty() ? "" : label.c_str(), headline.displayName().c_str(),
+                      r.min, r.max);
+        else  // every value NaN or infinite: there is no range to print
+          std::printf("      %-14s %s: no finite value", label.empty() ? "" : label.c_str(),
+                      headline.displayName().c_str());
         if (r.nanCount) std::printf("  (%zu NaN/inf values)", r.nanCount);
         std::printf("\n");
       } catch (const std::exception& e) {

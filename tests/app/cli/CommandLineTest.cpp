@@ -589,6 +589,9 @@ TEST(Formulas, AFormulaWorksOnEveryVerbAndABadOneSaysWhere) {
   EXPECT_NE(unknown.output.find("no quantity or field named 'S.mizes' at character 1"), std::string::npos)
       << unknown.output;
   EXPECT_EQ(runVolpost("info " + bar + " --formula nothing").exitCode, 2);
+  const auto undefined = runVolpost("info " + bar + " --formula \"nan=0/0\"");
+  EXPECT_NE(undefined.output.find("nan: no finite value  (3091 NaN/inf values)"), std::string::npos)
+      << undefined.output;
 }
 
 TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
