@@ -131,8 +131,12 @@ std::vector<FormulaSpec> formulasFrom(const QCommandLineParser& parser, const QC
   return formulas;
 }
 
-std::shared_ptr<ModelSession> withFormulas(std::shared_ptr<ModelSession> session,
-                                           const std::vector<FormulaSpec>& formulas) {
+std::shared_ptr<ModelSession> loadWithFormulas(const ReaderRegistry& readers, const std::string& path,
+                                               const QCommandLineParser& parser, const QCommandLineOption& readerOption,
+                                               const QCommandLineOption& formulaOption) {
+  const std::vector<FormulaSpec> formulas = formulasFrom(parser, formulaOption);
+  auto session = ModelSession::load(readers, path, terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
+                                    readerOptionsFrom(parser, readerOption));
   if (formulas.empty()) return session;
   try {
     return ModelSession::withFormulas(*session, formulas);

@@ -61,10 +61,12 @@ ReaderOptions readerOptionsFrom(const QCommandLineParser& parser, const QCommand
 QCommandLineOption formulaOption();
 /// Its formulas, in order; OptionError for one that is not NAME=EXPRESSION.
 std::vector<FormulaSpec> formulasFrom(const QCommandLineParser& parser, const QCommandLineOption& option);
-/// The session with the formulas' fields (the session itself without formulas); OptionError
-/// naming the formula at fault.
-std::shared_ptr<ModelSession> withFormulas(std::shared_ptr<ModelSession> session,
-                                           const std::vector<FormulaSpec>& formulas);
+/// Reads MODEL (`path`) with the verb's --reader-option and --formula values (the formulas
+/// read first, so a malformed one is said before the reading), the boundary left for first
+/// use; OptionError naming a reader option or formula at fault.
+std::shared_ptr<ModelSession> loadWithFormulas(const ReaderRegistry& readers, const std::string& path,
+                                               const QCommandLineParser& parser, const QCommandLineOption& readerOption,
+                                               const QCommandLineOption& formulaOption);
 /// The same on a model read without a session.
 void appendFormulas(Model& model, const std::vector<FormulaSpec>& formulas);
 

@@ -85,11 +85,7 @@ int runSurface(const QStringList& args) {
   };
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
-    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
-    const auto session =
-        withFormulas(ModelSession::load(plugins->readers(), pathBytes(files[0]), terminalProgress("reading"),
-                                        ModelSession::Boundary::OnFirstUse, readerOptionsFrom(parser, readerOption)),
-                     formulas);
+    const auto session = loadWithFormulas(plugins->readers(), pathBytes(files[0]), parser, readerOption, formula);
     if (!parser.isSet(field)) {
       saidHow(writeSurface(session->surface().mesh, session->surface().origin, pathBytes(files[1])));
       std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());

@@ -134,12 +134,8 @@ int runPlot(const QStringList& args) {
   return exitCodeOf([&] {
     if (!csvPath.empty()) checkWritable(csvPath);
     if (parser.isSet(output)) checkWritable(pathBytes(picture));
-    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
-    const auto session =
-        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
-                                        readerOptionsFrom(parser, readerOption)),
-                     formulas);
+    const auto session = loadWithFormulas(plugins->readers(), pathBytes(parser.positionalArguments().first()), parser,
+                                          readerOption, formula);
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) {
       const auto first = session->defaultQuantity();

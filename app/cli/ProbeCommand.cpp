@@ -154,14 +154,10 @@ int runProbe(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     if (!csvPath.empty()) checkWritable(csvPath);
-    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
     if (parser.isSet(pointsFile))
       for (const glm::dvec3& p : readPoints(pathBytes(parser.value(pointsFile)))) points.push_back(p);
-    const auto session =
-        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
-                                        readerOptionsFrom(parser, readerOption)),
-                     formulas);
+    const auto session = loadWithFormulas(plugins->readers(), pathBytes(parser.positionalArguments().first()), parser,
+                                          readerOption, formula);
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) keys = allQuantityKeys(*session);
     checkStepExists(*session, keys, *stepIndex);

@@ -53,12 +53,8 @@ int runStreamlines(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(out);
-    const std::vector<FormulaSpec> formulas = formulasFrom(parser, formula);
-    const auto session =
-        withFormulas(ModelSession::load(plugins->readers(), pathBytes(parser.positionalArguments().first()),
-                                        terminalProgress("reading"), ModelSession::Boundary::OnFirstUse,
-                                        readerOptionsFrom(parser, readerOption)),
-                     formulas);
+    const auto session = loadWithFormulas(plugins->readers(), pathBytes(parser.positionalArguments().first()), parser,
+                                          readerOption, formula);
     Scene scene(volumeRendererFactory(*plugins));
     scene.setSession(session);
     StreamlineLayer layer;

@@ -308,18 +308,6 @@ std::vector<double> evaluateStep(const Plan& plan, std::size_t step) {
   return out;
 }
 
-// How many values the expression gives per evaluation (commas separate them).
-int resultCount(const FormulaSpec& f, std::vector<Reference>& refs) {
-  std::vector<double> ones(refs.size(), 1.0);
-  mu::Parser parser;
-  configure(parser);
-  for (std::size_t i = 0; i < refs.size(); ++i) parser.DefineVar(refs[i].written, &ones[i]);
-  parser.SetExpr(f.expression);
-  int count = 0;
-  parser.Eval(count);
-  return count;
-}
-
 }  // namespace
 
 FormulaSpec parseFormulaText(const std::string& text) {
@@ -362,6 +350,7 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
   auto plan = std::make_shared<Plan>();
   plan->formula = formula;
   checkNoAssignment(formula);
+  int count = 0;  // values per evaluation: commas separate them
   try {
     // Read with a slot made for every name, so that a syntax error is said as such before
     // the names are looked up.
@@ -376,7 +365,6 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
         },
         &slots);
     parser.SetExpr(formula.expression);
-    int count = 0;
     parser.Eval(count);
     for (const auto& [name, unused] : parser.GetUsedVar()) plan->refs.push_back(resolve(model, formula, name));
   } catch (const mu::Parser::exception_type& e) {
@@ -396,12 +384,6 @@ std::shared_ptr<Field> formulaField(const Model& model, const FormulaSpec& formu
   plan->location = perCell ? FieldLocation::Cell : FieldLocation::Node;
   plan->entityCount = perCell ? model.cellCount() : model.nodeCount();
   plan->steps = resultSteps(formula, plan->refs);
-  int count = 0;
-  try {
-    count = resultCount(formula, plan->refs);
-  } catch (const mu::Parser::exception_type& e) {
-    failToParse(formula, e);
-  }
   if (plan->componentwise && count != 1)
     fail(formula, "a formula over whole vector or tensor fields gives one value per component, not " +
                       std::to_string(count) + "; build a vector from quantities instead (U.x*2, U.y, 0)");

@@ -2,17 +2,16 @@
 #include "HistoryPanel.hpp"
 
 #include "../core/PictureFile.hpp"
+#include "ExportToFile.hpp"
 
 #include "host/AtomicFile.hpp"
 
 #include <QApplication>
 #include <QClipboard>
-#include <QFileDialog>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
 #include <QPushButton>
-#include <QSettings>
 #include <QVBoxLayout>
 
 namespace volpost::app {
@@ -85,15 +84,7 @@ void HistoryPanel::show(History history) {
 void HistoryPanel::exportTo(const QString& title, const QString& filter,
                             const std::function<void(const QString&)>& write) {
   if (!history_) return;
-  QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getSaveFileName(this, title, settings.value("files/lastDir").toString(), filter);
-  if (path.isEmpty()) return;
-  try {
-    write(path);
-    emit message("Wrote " + path);
-  } catch (const std::exception& e) {
-    emit message(QString("Could not write %1: %2").arg(path, e.what()));
-  }
+  if (const auto said = exportToChosenFile(this, title, filter, write)) emit message(*said);
 }
 
 }  // namespace volpost::app

@@ -6,17 +6,16 @@
 #include "../core/ProbeTable.hpp"
 #include "../core/Scene.hpp"
 #include "../core/VolumeSpecs.hpp"
+#include "ExportToFile.hpp"
 
 #include "host/AtomicFile.hpp"
 
-#include <QFileDialog>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPainter>
 #include <QPushButton>
-#include <QSettings>
 #include <QSpinBox>
 #include <QVBoxLayout>
 
@@ -201,15 +200,7 @@ void LinePlotPanel::exportPicture() {
 
 void LinePlotPanel::exportTo(const QString& title, const QString& filter, const std::function<void(const QString&)>& write) {
   if (!samples_ && !plot()) return;
-  QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getSaveFileName(this, title, settings.value("files/lastDir").toString(), filter);
-  if (path.isEmpty()) return;
-  try {
-    write(path);
-    emit message("Wrote " + path);
-  } catch (const std::exception& e) {
-    emit message(QString("Could not write %1: %2").arg(path, e.what()));
-  }
+  if (const auto said = exportToChosenFile(this, title, filter, write)) emit message(*said);
 }
 
 }  // namespace volpost::app
