@@ -149,9 +149,21 @@ struct Options {
                                            "step unless --range is given)."};
   QCommandLineOption readerOption = readerOptionOption();
   QCommandLineOption formula = formulaOption();
-  QCommandLineOption slice{"slice", "A regular grid's slice: AXIS=VALUE, e.g. inline=1005, crossline=2003, time=80 "
-                                    "(ms), or i/j/k=LABEL for image data (repeatable, one per axis); drawn in the "
-                                    "surface view and, opaque, in the volume.", "AXIS=VALUE"};
+  QCommandLineOption slice{"slice",
+                           "A slice drawn in the result's colors without cutting the model away: a plane "
+                           "px,py,pz,nx,ny,nz on any model, or a regular grid's AXIS=VALUE, e.g. inline=1005, "
+                           "crossline=2003, time=80 (ms), or i/j/k=LABEL for image data (repeatable); drawn in the "
+                           "surface view and, opaque, in the volume.",
+                           "PLANE|AXIS=VALUE"};
+  QCommandLineOption representation{"representation",
+                                    "How the model's boundary is drawn: surface (default), wireframe (element "
+                                    "edges), points (nodes, in the result's colors), feature-edges (creases and "
+                                    "borders) or outline (the bounding box).",
+                                    "NAME"};
+  QCommandLineOption pointSize{"point-size", "Points' size in pixels with --representation points (default 4).", "PX"};
+  QCommandLineOption volumeOutline{"volume-outline",
+                                   "Volume rendering: draw the model's feature edges (creases and borders) over the "
+                                   "volume."};
   QCommandLineOption fps{"fps", "Frames (steps) per second of an --all-steps video (default 4).", "N"};
   StreamlineOptions lineOptions;
 };
@@ -179,6 +191,40 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
   const QString video = output.finish();
   if (output.isVideo()) printPath(video);
   return 0;
+}
+
+// --slice: AXIS=VALUE on a regular grid's axis, or a free plane px,py,pz,nx,ny,nz on any model.
+void applySliceOptions(const QStringList& values, Scene& scene) {
+  const auto& grid = scene.session()->model().grid;
+  std::array<std::optional<double>, 3> labels = scene.state().gridSlices;
+  std::vector<ClipPlane> planes = scene.state().slicePlanes;
+  for (const QString& text : values) {
+    if (!text.contains('=')) {
+      const auto plane = parseClipPlane(text);
+      if (!plane)
+        throw UsageError(QString("--slice %1 is not a plane px,py,pz,nx,ny,nz with a non-zero normal%2")
+                             .arg(text, grid ? " nor AXIS=VALUE" : "")
+                             .toStdString());
+      planes.push_back(*plane);
+      continue;
+    }
+    if (!grid)
+      throw UsageError(QString("--slice %1: AXIS=VALUE slices a regular grid (SEG-Y, image data, NRRD); this model is "
+                               "a mesh: give the plane as px,py,pz,nx,ny,nz")
+                           .arg(text)
+                           .toStdString());
+    const int a = gridAxisNamed(*grid, text.section('=', 0, 0).trimmed().toStdString());
+    bool ok = false;
+    const double value = text.section('=', 1).toDouble(&ok);
+    if (a < 0 || !ok || !std::isfinite(value))
+      throw UsageError(QString("--slice %1 is not AXIS=VALUE with AXIS one of %2, %3, %4 (or i, j, k)")
+                           .arg(text, QString::fromStdString(grid->axisNames[0]),
+                                QString::fromStdString(grid->axisNames[1]), QString::fromStdString(grid->axisNames[2]))
+                           .toStdString());
+    labels[std::size_t(a)] = value;
+  }
+  if (grid) scene.setGridSlices(labels);  // invalid_argument (outside the grid): a usage error
+  scene.setSlicePlanes(planes);
 }
 
 // The state the options describe: a state file's, or the defaults, changed by every option
@@ -248,6 +294,7 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
     scene.setIsoSurfaces(surfaces);
   }
   if (p.isSet(o.volumeEdges)) scene.setVolumeEdges(true);
+  if (p.isSet(o.volumeOutline)) scene.setVolumeOutline(true);
   const auto number = [&](const QCommandLineOption& option, const char* name) {
     bool ok = false;
     const double v = p.value(option).toDouble(&ok);
@@ -318,8 +365,8 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   if (!chosen.volume) {
     const QString why =
         "works with volume renderers (--renderer " + chosen.namesWhere([](const RendererEntry&) { return true; }) + ")";
-    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges,
-                                             &o.samplingStep, &o.termination, &o.shading, &o.floatOut, &o.threads})
+    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep,
+                                             &o.termination, &o.shading, &o.floatOut, &o.threads})
       refuse(*option, why);
     return;
   }
@@ -330,6 +377,10 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   refuse(o.aboveColor,
          "colors the surface's values above the range; a volume's colors come from its transfer function");
   refuse(o.flat, "turns the surface's shading off; volume pictures have no surface");
+  refuse(o.representation,
+         "chooses how the surface is drawn; volume pictures have no surface (--volume-outline "
+         "draws the model's feature edges over a volume)");
+  refuse(o.pointSize, "sizes the surface's points; volume pictures have no surface");
   refuse(o.undeformed, "is drawn in surface pictures only, not with a volume renderer");
   const RendererEntry& r = *chosen.volume;
   const VolumeRendererTraits& t = r.traits;
@@ -353,6 +404,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
         mode && std::find(t.modes.begin(), t.modes.end(), *mode) == t.modes.end())
       refuse(o.mode, p.value(o.mode) + " is not a mode of " + name);
   if (!r.drawsSceneLayers) refuse(o.volumeEdges, "is not drawn by " + name + ", which draws the volume alone");
+  if (!r.drawsSceneLayers) refuse(o.volumeOutline, "is not drawn by " + name + ", which draws the volume alone");
   if (!t.samplingStepOnMeshes && !t.samplingStepOnGrids)
     refuse(o.samplingStep, "is not used by " + name + " (it integrates exactly)");
   if (!t.earlyTermination) refuse(o.termination, "is not used by " + name + " (it never stops early)");
@@ -373,6 +425,17 @@ void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRend
   const QString name = chosen.volume->name;
   const bool slices =
       std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
+  if (!state.slicePlanes.empty())
+    throw UsageError(("slices (--slice, or \"slicePlanes\" in a state file) are not drawn by " + name +
+                      ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
+                        return e.drawsSceneLayers;
+                      })).toStdString());
+  if (state.volume.outline)
+    throw UsageError(("the model's outline over the volume (--volume-outline, or \"volume.outline\" in a state "
+                      "file) is not drawn by " +
+                      name + ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
+                        return e.drawsSceneLayers;
+                      })).toStdString());
   if (slices)
     throw UsageError(("grid slices (--slice, or \"gridSlices\" in a state file) are not drawn by " + name +
                       ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
@@ -482,24 +545,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.noEdges)) scene.setShowEdges(false);
   if (p.isSet(o.noLegend)) scene.setShowLegend(false);
   if (p.isSet(o.noTriad)) scene.setShowTriad(false);
-  if (p.isSet(o.slice)) {
-    const auto& grid = scene.session()->model().grid;
-    if (!grid)
-      throw UsageError("--slice needs a regular grid (SEG-Y, image data, NRRD); this model is a mesh: use --clip");
-    std::array<std::optional<double>, 3> labels = scene.state().gridSlices;
-    for (const QString& text : p.values(o.slice)) {
-      const int a = gridAxisNamed(*grid, text.section('=', 0, 0).trimmed().toStdString());
-      bool ok = false;
-      const double value = text.section('=', 1).toDouble(&ok);
-      if (a < 0 || !text.contains('=') || !ok || !std::isfinite(value))
-        throw UsageError(QString("--slice %1 is not AXIS=VALUE with AXIS one of %2, %3, %4 (or i, j, k)")
-                             .arg(text, QString::fromStdString(grid->axisNames[0]), QString::fromStdString(grid->axisNames[1]),
-                                  QString::fromStdString(grid->axisNames[2]))
-                             .toStdString());
-      labels[std::size_t(a)] = value;
-    }
-    scene.setGridSlices(labels);  // invalid_argument (outside the grid): a usage error
-  }
+  if (p.isSet(o.slice)) applySliceOptions(p.values(o.slice), scene);
   if (p.isSet(o.deform)) {
     const QString text = p.value(o.deform);
     DeformationLayer d;
@@ -532,6 +578,24 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     scene.setDeformation(d);
   }
   if (p.isSet(o.noSurface)) scene.setSurfaceShown(false);
+  if (p.isSet(o.representation)) {
+    const auto r = surfaceRepresentationFromString(p.value(o.representation).toStdString());
+    if (!r)
+      throw UsageError(QString("--representation %1 is not one of: %2")
+                           .arg(p.value(o.representation), QString::fromStdString(surfaceRepresentationChoices()))
+                           .toStdString());
+    scene.setRepresentation(*r);
+  }
+  if (p.isSet(o.pointSize)) {
+    bool ok = false;
+    const double px = p.value(o.pointSize).toDouble(&ok);
+    if (!ok || !(px >= 1.0 && px <= kMaxPointSize))
+      throw UsageError(
+          QString("--point-size %1 is not a size from 1 to 64 pixels").arg(p.value(o.pointSize)).toStdString());
+    if (scene.shown().representation != SurfaceRepresentation::Points)
+      throw UsageError("--point-size sizes the points of --representation points");
+    scene.setPointSize(px);
+  }
   if (p.isSet(o.surfaceOpacity)) {
     bool ok = false;
     const double a = p.value(o.surfaceOpacity).toDouble(&ok);
@@ -591,15 +655,15 @@ int runRender(const QStringList& args) {
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
   parser.addOptions(
-      {o.field,          o.step,        o.camera,       o.view,          o.eye,           o.target,       o.up,
-       o.viewAngle,      o.size,        o.colormap,     o.range,         o.bands,         o.symmetric,    o.noEdges,
-       o.noLegend,       o.noTriad,     o.deform,       o.undeformed,    o.flat,          o.output,       o.renderer,
-       o.mode,           o.tf,          o.tf2d,         o.clip,          o.clipBox,       o.iso,          o.volumeEdges,
-       o.samplingStep,   o.termination, o.shading,      o.floatOut,      o.threads,       o.state,        o.saveState,
-       o.streamlines,    o.lineWidth,   o.tubes,        o.tubeRadius,    o.radiusByValue, o.arrows,       o.noSurface,
-       o.surfaceOpacity, o.probe,       o.markExtremes, o.allSteps,      o.fps,           o.readerOption, o.slice,
-       o.formula,        o.units,       o.legendTitle,  o.legendNumbers, o.legendLabels,  o.belowColor,   o.aboveColor,
-       o.title});
+      {o.field,          o.step,        o.camera,        o.view,       o.eye,           o.target,       o.up,
+       o.viewAngle,      o.size,        o.colormap,      o.range,      o.bands,         o.symmetric,    o.noEdges,
+       o.noLegend,       o.noTriad,     o.deform,        o.undeformed, o.flat,          o.output,       o.renderer,
+       o.mode,           o.tf,          o.tf2d,          o.clip,       o.clipBox,       o.iso,          o.volumeEdges,
+       o.samplingStep,   o.termination, o.shading,       o.floatOut,   o.threads,       o.state,        o.saveState,
+       o.streamlines,    o.lineWidth,   o.tubes,         o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,
+       o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,   o.fps,           o.readerOption, o.slice,
+       o.representation, o.pointSize,   o.volumeOutline, o.formula,    o.units,         o.legendTitle,  o.legendNumbers,
+       o.legendLabels,   o.belowColor,  o.aboveColor,    o.title});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

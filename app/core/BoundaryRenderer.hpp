@@ -73,6 +73,9 @@ class BoundaryRenderer {
   bool showEdges() const { return surface_.showEdges(); }
   /// Faces off: render() draws only the element edges (the opaque geometry over a volume).
   void setShowFaces(bool show) { surface_.setShowFaces(show); }
+  /// The surface's nodes as points (device pixels) instead of its faces.
+  void setShowPoints(bool show, float pixels) { surface_.setShowPoints(show, pixels); }
+  void setFadeDenseEdges(bool on) { surface_.setFadeDenseEdges(on); }
   void setLighting(bool on) {
     surface_.setLighting(on);
     sections_.setLighting(on);

@@ -6,6 +6,8 @@
 #include "StreamlineSeeds.hpp"
 #include "VolumeDefaults.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -58,6 +60,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.isoSurfaces.clear();
   state_.volume.isoQuantity.clear();
   state_.gridSlices = {};
+  state_.slicePlanes.clear();
   state_.plotLine.reset();
   state_.views.clear();  // cameras placed about the last model
   viewHistory_.clear();
@@ -284,6 +287,38 @@ std::vector<ClipPlane> Scene::gridSlicePlanes() const {
   return gridSlicePlanesAt(*session_->model().grid, state_.gridSlices);
 }
 
+namespace {
+
+void checkSlicePlanes(const std::vector<ClipPlane>& planes) {
+  if (planes.size() > kMaxSlicePlanes)
+    throw std::invalid_argument(std::to_string(planes.size()) + " slice planes; at most " +
+                                std::to_string(kMaxSlicePlanes));
+  for (const ClipPlane& p : planes) {
+    const double n = glm::length(p.normal);
+    if (!std::isfinite(p.point.x + p.point.y + p.point.z) || !std::isfinite(n) || !(n > 0.0))
+      throw std::invalid_argument("a slice plane needs a finite point and a finite, non-zero normal");
+  }
+}
+
+}  // namespace
+
+void Scene::setSlicePlanes(std::vector<ClipPlane> planes) {
+  checkSlicePlanes(planes);
+  state_.slicePlanes = std::move(planes);
+}
+
+std::vector<ClipPlane> Scene::slicePlanes() const {
+  std::vector<ClipPlane> planes = gridSlicePlanes();
+  planes.insert(planes.end(), state_.slicePlanes.begin(), state_.slicePlanes.end());
+  return planes;
+}
+
+void Scene::setPointSize(double pixels) {
+  if (!(pixels >= 1.0 && pixels <= kMaxPointSize))
+    throw std::invalid_argument("the point size must lie in 1.." + std::to_string(int(kMaxPointSize)) + " pixels");
+  state_.pointSize = pixels;
+}
+
 // A step so short that a ray would take millions of samples would hold the picture for
 // hours: at most kMaxSamplesAcross along the model's diagonal.
 void Scene::checkSamplingStep(double step) const {
@@ -475,6 +510,9 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   checkGridSlices(checked.model().grid, s.gridSlices);
+  checkSlicePlanes(s.slicePlanes);
+  if (!(s.pointSize >= 1.0 && s.pointSize <= kMaxPointSize))
+    throw std::invalid_argument("the state's point size lies outside 1.." + std::to_string(int(kMaxPointSize)));
   checkClipPlanes(s.volume.allClipPlanes());
   checkIsoSurfaces(s.volume.isoSurfaces);
   Camera camera = camera_;

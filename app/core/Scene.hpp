@@ -148,12 +148,24 @@ class Scene {
   void setGridSlices(const std::array<std::optional<double>, 3>& labels);
   /// The planes of the slices now set, in model coordinates.
   std::vector<ClipPlane> gridSlicePlanes() const;
+  /// Free slices: each plane's cross-section drawn in the result's colors without cutting
+  /// the model away (the clip planes and box cut them). Throws std::invalid_argument over
+  /// kMaxSlicePlanes or for a plane that is not finite with a non-zero normal.
+  void setSlicePlanes(std::vector<ClipPlane> planes);
+  /// Every slice drawn: the grid's, then the free ones.
+  std::vector<ClipPlane> slicePlanes() const;
   void setSamplingStep(double step);
   void setTermination(double transmittance);
   /// Regular grids: the volume's emission lit by the trilinear gradient (light at the eye).
   /// Throws std::invalid_argument, changing nothing, to turn it on for a mesh.
   void setShading(bool on);
   void setVolumeEdges(bool show);
+  /// The model's feature edges (creases and borders) over the volume, opaque.
+  void setVolumeOutline(bool show) { state_.volume.outline = show; }
+  /// How the boundary is drawn (surface, wireframe, points, feature edges, outline).
+  void setRepresentation(SurfaceRepresentation r) { state_.representation = r; }
+  /// Node points' size in logical pixels, 1..kMaxPointSize; std::invalid_argument otherwise.
+  void setPointSize(double pixels);
   void setSurfaceShown(bool shown) { state_.surfaceShown = shown; }
   /// 0..1; below 1 the surface is see-through. Throws std::invalid_argument otherwise.
   void setSurfaceOpacity(double opacity);

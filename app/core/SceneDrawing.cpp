@@ -70,6 +70,8 @@ void SceneDrawing::initialize() {
   boundary_.initialize();
   undeformedEdges_.initialize();
   undeformedUploaded_ = nullptr;
+  modelLines_.initialize();
+  modelLinesFor_.first = nullptr;
   streamlineRenderer_.initialize();
   initialized_ = true;
   forgetAll();  // a fresh context holds nothing
@@ -86,6 +88,8 @@ void SceneDrawing::release() {
   boundary_.release();
   undeformedEdges_.release();
   undeformedUploaded_ = nullptr;
+  modelLines_.release();
+  modelLinesFor_.first = nullptr;
   initialized_ = false;
   forgetAll();
 }
@@ -125,7 +129,7 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   const VersionedView iso = scene.isoSurfaceValues();
   boundary_.setIsoSurfaces(s.volume.shown ? std::vector<optics::IsoSurface>{} : s.volume.isoSurfaces, iso.view,
                            iso.version);
-  boundary_.setSlices(scene.gridSlicePlanes(), cuts, values.view, values.version, scene.displayRange());
+  boundary_.setSlices(scene.slicePlanes(), cuts, values.view, values.version, scene.displayRange());
 }
 
 // Uploads the lines with the current style (a style change re-uploads, never re-traces).
@@ -285,11 +289,22 @@ void SceneDrawing::renderSurface(const Scene& scene, const RenderContext& ctx) {
   // it is blended over them.
   boundary_.renderBackground(ctx);
   if (scene.streamlinesDrawn()) streamlineRenderer_.render(ctx);
-  boundary_.setShowEdges(s.edges && s.surfaceOpacity >= 1.0);  // edges would cage what shows through
+  const SurfaceRepresentation r = s.representation;
+  const bool lines = r == SurfaceRepresentation::FeatureEdges || r == SurfaceRepresentation::Outline;
+  // Edges would cage what shows through a see-through surface; a wireframe is its edges.
+  boundary_.setShowEdges(r == SurfaceRepresentation::Wireframe ||
+                         (r == SurfaceRepresentation::Surface && s.edges && s.surfaceOpacity >= 1.0));
+  boundary_.setShowFaces(r == SurfaceRepresentation::Surface);
+  boundary_.setShowPoints(r == SurfaceRepresentation::Points, float(s.pointSize * scene.devicePixelRatio()));
+  boundary_.setFadeDenseEdges(r != SurfaceRepresentation::Wireframe);
   boundary_.setLighting(s.lighting);
   boundary_.setOpacity(float(s.surfaceOpacity));
-  boundary_.setSurfaceShown(s.surfaceShown);  // hidden, the sections and iso-surfaces still show
+  // Hidden, the sections, slices and iso-surfaces still show.
+  boundary_.setSurfaceShown(s.surfaceShown && !lines);
   boundary_.renderOver(ctx);
+  boundary_.setShowFaces(true);
+  boundary_.setShowPoints(false, 1.0f);
+  if (s.surfaceShown && lines) drawModelLines(scene, ctx, r);
   if (s.deformation.shown && s.deformation.undeformedOutline && scene.baseSession() &&
       scene.session() != scene.baseSession())
     drawUndeformedOutline(scene, ctx);
@@ -318,6 +333,40 @@ void SceneDrawing::drawUndeformedOutline(const Scene& scene, const RenderContext
   glDisable(GL_DEPTH_TEST);
 }
 
+// The model's feature edges (creases and borders) or its bounding box's twelve edges, in
+// the edge color, hidden behind what is nearer, cut by the clip planes.
+void SceneDrawing::drawModelLines(const Scene& scene, const RenderContext& ctx, SurfaceRepresentation lines) {
+  const ModelSession& session = *scene.session();
+  if (modelLinesFor_ != std::pair(&session, lines)) {
+    if (lines == SurfaceRepresentation::Outline) {
+      const Bounds b = session.bounds();
+      std::vector<glm::dvec3> ends;
+      const auto corner = [&](int i) {
+        return glm::dvec3(i & 1 ? b.max.x : b.min.x, i & 2 ? b.max.y : b.min.y, i & 4 ? b.max.z : b.min.z);
+      };
+      for (int i = 0; i < 8; ++i)
+        for (int axis = 1; axis < 8; axis <<= 1)
+          if (!(i & axis)) ends.insert(ends.end(), {corner(i), corner(i | axis)});
+      modelLines_.setLines(ends, session.origin());
+    } else {
+      modelLines_.setLines(featureEdges(session.surface()), session.origin());
+    }
+    modelLinesFor_ = {&session, lines};
+  }
+  modelLines_.setShowFaces(false);
+  modelLines_.setShowEdges(true);
+  const double tolerance = 1e-5 * std::max(session.bounds().diagonal(), 1e-300);
+  modelLines_.setClipPlanes(scene.shown().volume.allClipPlanes(), tolerance);
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  RenderContext local = ctx;
+  local.origin = session.origin();
+  modelLines_.render(local);
+  glDisable(GL_DEPTH_TEST);
+}
+
 // The element edges stay visible over the volume and end its rays: they are drawn into
 // the target and, depth only, into a texture the volume renderer reads.
 void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
@@ -326,12 +375,14 @@ void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
   RenderContext volumeCtx = ctx;
   const bool lines = scene.streamlinesDrawn();
   const bool slices = boundary_.sliceTriangles() > 0;
-  if (v.edges || lines || slices) {
+  if (v.edges || v.outline || lines || slices) {
     // The opaque things (edges, streamlines) drawn into the target and, depth only, into a
     // texture the volume renderer reads: its rays end at them.
     if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
       depthTarget_ = std::make_unique<OffscreenTarget>(ctx.width, ctx.height);
     boundary_.setShowFaces(false);
+    boundary_.setShowPoints(false, 1.0f);
+    boundary_.setFadeDenseEdges(true);
     boundary_.setSurfaceShown(true);  // its edges, that is
     boundary_.setShowEdges(v.edges);
     boundary_.setOpacity(1.0f);
@@ -342,6 +393,7 @@ void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
       if (slices) boundary_.renderSlices(pass);
       if (lines) streamlineRenderer_.render(pass);
       if (v.edges) boundary_.renderOver(pass);
+      if (v.outline) drawModelLines(scene, pass, SurfaceRepresentation::FeatureEdges);
     }
     boundary_.setShowFaces(true);
     volumeCtx.depthTexture = depthTarget_->depthTexture();

@@ -83,6 +83,10 @@ class SceneDrawing {
   BoundaryRenderer boundary_;
   SurfaceRenderer undeformedEdges_;  ///< the undeformed model's element edges (deformation's outline)
   const ModelSession* undeformedUploaded_ = nullptr;
+  SurfaceRenderer modelLines_;  ///< the model's feature edges or bounding box (representations, volume outline)
+  std::pair<const ModelSession*, SurfaceRepresentation> modelLinesFor_{nullptr, SurfaceRepresentation::Surface};
+  /// Draws the model's feature edges or its bounding box, depth-tested, cut by the planes.
+  void drawModelLines(const Scene& scene, const RenderContext& ctx, SurfaceRepresentation lines);
   StreamlineRenderer streamlineRenderer_;
   const StreamlineResult* linesUploaded_ = nullptr;    ///< the lines streamlineRenderer_ holds
   std::shared_ptr<const StreamlineResult> linesHeld_;  ///< kept alive while uploaded

@@ -70,7 +70,7 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
                                          std::span<const glm::dvec3> isoSurfaceCorners) {
   const ModelSession* session = scene.session();
   if (!session) return std::nullopt;
-  const std::vector<ClipPlane> slices = scene.gridSlicePlanes();
+  const std::vector<ClipPlane> slices = scene.slicePlanes();
   std::optional<glm::dvec3> best;
   double nearest = std::numeric_limits<double>::infinity();
   // What the clip planes and box cut away cannot be clicked; the faces they cut can.

@@ -66,15 +66,19 @@ class Reader {
 
 json jsonOf(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
+json jsonOf(const std::vector<ClipPlane>& planes) {
+  json out = json::array();
+  for (const ClipPlane& p : planes) out.push_back({{"point", jsonOf(p.point)}, {"normal", jsonOf(p.normal)}});
+  return out;
+}
+
 json jsonOf(const VolumeLayer& v) {
   json out;
   out["shown"] = v.shown;
   out["renderer"] = v.renderer;
   out["mode"] = std::string(toString(v.mode));
   out["transferFunction"] = v.transferFunction ? json::parse(v.transferFunction->toJson()) : json(nullptr);
-  json planes = json::array();
-  for (const ClipPlane& p : v.clipPlanes) planes.push_back({{"point", jsonOf(p.point)}, {"normal", jsonOf(p.normal)}});
-  out["clipPlanes"] = planes;
+  out["clipPlanes"] = jsonOf(v.clipPlanes);
   out["clipBox"] = v.clipBox ? json(*v.clipBox) : json(nullptr);
   json isos = json::array();
   for (const optics::IsoSurface& s : v.isoSurfaces)
@@ -86,6 +90,25 @@ json jsonOf(const VolumeLayer& v) {
   out["shading"] = v.shading;
   if (v.transferFunction2D) out["transferFunction2D"] = json::parse(v.transferFunction2D->toJson());
   out["edges"] = v.edges;
+  out["outline"] = v.outline;
+  return out;
+}
+
+// Planes as [{"point": [x, y, z], "normal": [x, y, z]}, ...] under `name`.
+std::vector<ClipPlane> planesFrom(const Reader& r, const json& in, const std::string& name) {
+  std::vector<ClipPlane> out;
+  const json& planes = r.array(in, name);
+  for (std::size_t i = 0; i < planes.size(); ++i) {
+    const std::string key = name + "[" + std::to_string(i) + "]";
+    const json& p = r.object(planes[i], key);
+    const json* point = r.find(p, "point");
+    const json* normal = r.find(p, "normal");
+    if (!point || !normal) r.fail(key, "needs \"point\" and \"normal\"");
+    ClipPlane plane{r.vec3(*point, key + ".point"), r.vec3(*normal, key + ".normal")};
+    if (!(glm::length(plane.normal) > 0.0) || !std::isfinite(glm::length(plane.normal)))
+      r.fail(key + ".normal", "must be a finite, non-zero direction");
+    out.push_back(plane);
+  }
   return out;
 }
 
@@ -113,20 +136,7 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
       throw std::runtime_error(fileName + ": \"volume.transferFunction2D\": " + e.what());
     }
   }
-  if (const json* x = r.find(in, "clipPlanes")) {
-    const json& planes = r.array(*x, "volume.clipPlanes");
-    for (std::size_t i = 0; i < planes.size(); ++i) {
-      const std::string key = "volume.clipPlanes[" + std::to_string(i) + "]";
-      const json& p = r.object(planes[i], key);
-      const json* point = r.find(p, "point");
-      const json* normal = r.find(p, "normal");
-      if (!point || !normal) r.fail(key, "needs \"point\" and \"normal\"");
-      ClipPlane plane{r.vec3(*point, key + ".point"), r.vec3(*normal, key + ".normal")};
-      if (!(glm::length(plane.normal) > 0.0) || !std::isfinite(glm::length(plane.normal)))
-        r.fail(key + ".normal", "must be a finite, non-zero direction");
-      v.clipPlanes.push_back(plane);
-    }
-  }
+  if (const json* x = r.find(in, "clipPlanes")) v.clipPlanes = planesFrom(r, *x, "volume.clipPlanes");
   if (const json* x = r.find(in, "clipBox")) {
     const json& box = r.array(*x, "volume.clipBox");
     if (box.size() != 6) r.fail("volume.clipBox", "must be six numbers [xmin, xmax, ymin, ymax, zmin, zmax]");
@@ -168,6 +178,7 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
     if (v.termination < 0.0 || v.termination >= 1.0) r.fail("volume.termination", "must lie in [0, 1)");
   }
   if (const json* x = r.find(in, "edges")) v.edges = r.boolean(*x, "volume.edges");
+  if (const json* x = r.find(in, "outline")) v.outline = r.boolean(*x, "volume.outline");
   if (const json* x = r.find(in, "shading")) v.shading = r.boolean(*x, "volume.shading");
   return v;
 }
@@ -365,7 +376,10 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                    {"bands", colorBands},
                    {"below", belowColor ? jsonOf(*belowColor) : json(nullptr)},
                    {"above", aboveColor ? jsonOf(*aboveColor) : json(nullptr)}};
-  out["surface"] = {{"shown", surfaceShown}, {"edges", edges}, {"lighting", lighting}, {"opacity", surfaceOpacity}};
+  out["surface"] = {{"shown", surfaceShown},  {"representation", toString(representation)},
+                    {"pointSize", pointSize}, {"edges", edges},
+                    {"lighting", lighting},   {"opacity", surfaceOpacity}};
+  if (!slicePlanes.empty()) out["slicePlanes"] = jsonOf(slicePlanes);
   out["legend"] = legend;
   if (!title.empty()) out["title"] = title;
   out["legendText"] = {
@@ -401,6 +415,12 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   s.modelPath = r.text(*model, "model");
   if (!s.modelPath.empty() && fs::path(s.modelPath).is_relative())
     s.modelPath = (fs::absolute(fileName).parent_path() / s.modelPath).lexically_normal().string();
+  if (const json* x = r.find(in, "slicePlanes")) {
+    s.slicePlanes = planesFrom(r, *x, "slicePlanes");
+    if (s.slicePlanes.size() > kMaxSlicePlanes)
+      r.fail("slicePlanes",
+             "has " + std::to_string(s.slicePlanes.size()) + " planes; at most " + std::to_string(kMaxSlicePlanes));
+  }
   if (const json* slices = r.find(in, "gridSlices")) {
     if (!slices->is_array() || slices->size() != 3)
       r.fail("gridSlices", "must be [inline, crossline, time]: a number or null for each grid axis");
@@ -518,6 +538,15 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
     if (const json* e = r.find(*surface, "edges")) s.edges = r.boolean(*e, "surface.edges");
     if (const json* l = r.find(*surface, "lighting")) s.lighting = r.boolean(*l, "surface.lighting");
     if (const json* v = r.find(*surface, "shown")) s.surfaceShown = r.boolean(*v, "surface.shown");
+    if (const json* x = r.find(*surface, "representation")) {
+      const auto representation = surfaceRepresentationFromString(r.text(*x, "surface.representation"));
+      if (!representation) r.fail("surface.representation", "must be one of: " + surfaceRepresentationChoices());
+      s.representation = *representation;
+    }
+    if (const json* x = r.find(*surface, "pointSize")) {
+      s.pointSize = r.number(*x, "surface.pointSize");
+      if (!(s.pointSize >= 1.0 && s.pointSize <= kMaxPointSize)) r.fail("surface.pointSize", "must lie in 1..64");
+    }
     if (const json* o = r.find(*surface, "opacity")) {
       s.surfaceOpacity = r.number(*o, "surface.opacity");
       if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) r.fail("surface.opacity", "must lie in 0..1");

@@ -9,6 +9,7 @@
 
 #include "DisplayRange.hpp"
 #include "Formula.hpp"
+#include "SurfaceRepresentation.hpp"
 
 #include "host/StreamlineStyle.hpp"
 #include "host/Streamlines.hpp"
@@ -56,6 +57,9 @@ struct NamedView {
 };
 inline constexpr std::size_t kMaxViews = 100;
 inline constexpr int kMaxColorBands = 256;
+/// The most slice planes a scene holds; the largest point size (logical pixels).
+inline constexpr std::size_t kMaxSlicePlanes = 16;
+inline constexpr double kMaxPointSize = 64.0;
 /// The most formulas a scene (and its state file) holds.
 inline constexpr std::size_t kMaxFormulas = 100;
 inline constexpr std::size_t kMaxViewNameBytes = 200;
@@ -84,6 +88,7 @@ struct VolumeLayer {
   double termination = 0.002;   ///< rays stop below this transmittance
   bool shading = false;         ///< regular grids: the emission lit by the gradient (headlight)
   bool edges = false;           ///< element edges over the volume (they end the rays)
+  bool outline = false;         ///< the model's feature edges over the volume (they end the rays)
   /// All the planes the renderer cuts with: the box's six, then the free ones.
   std::vector<ClipPlane> allClipPlanes() const;
 };
@@ -150,6 +155,13 @@ struct SceneState {
   bool edges = true;          ///< element edges on the surface view
   bool lighting = true;       ///< shading; off: the color map's exact colors
   bool surfaceShown = true;   ///< the boundary surface (off: only what is inside shows)
+  /// How the boundary is drawn; "surface.representation" in the file.
+  SurfaceRepresentation representation = SurfaceRepresentation::Surface;
+  /// Node points' size in the points representation, logical pixels; "surface.pointSize".
+  double pointSize = 4.0;
+  /// Planes through a mesh whose cross-sections are drawn without cutting anything away
+  /// (a section beside the model; clip planes cut it); "slicePlanes" in the file.
+  std::vector<ClipPlane> slicePlanes;
   double surfaceOpacity = 1.0;  ///< below 1 the surface is see-through (streamlines show)
   bool legend = true;
   /// A line of text at the picture's top left (a report's caption); "title" in the file.

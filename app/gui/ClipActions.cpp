@@ -66,8 +66,77 @@ ClipActions::ClipActions(QMainWindow& window, Scene& scene, QMenu& results, Chan
     scene_.setBoxWidgetShown(on);
     redraw_();
   });
+  menu_->addAction("&Invert Plane", this, &ClipActions::invertPlane)->setObjectName("invertClipPlane");
   menu_->addSeparator();
   menu_->addAction("Clip &Box...", this, &ClipActions::typeBox)->setObjectName("clipBoxAction");
+  menu_->addSeparator();
+  QAction* toSlice = menu_->addAction("&Slice Here", this, &ClipActions::planeToSlice);
+  toSlice->setObjectName("planeToSlice");
+  toSlice->setToolTip("The clip plane becomes a slice: its section is drawn and nothing is cut away");
+  menu_->addAction("S&lices...", this, &ClipActions::typeSlices)->setObjectName("typeSlices");
+}
+
+void ClipActions::invertPlane() {
+  std::vector<ClipPlane> planes = scene_.volume().clipPlanes;
+  if (planes.empty()) {
+    window_.statusBar()->showMessage("No clip plane to invert: choose one in View > Clip Plane first");
+    return;
+  }
+  planes.front().normal = -planes.front().normal;
+  changeScene_([&](Scene& s) { s.setClipPlanes(planes); });
+  syncToScene();
+}
+
+void ClipActions::planeToSlice() {
+  std::vector<ClipPlane> planes = scene_.volume().clipPlanes;
+  if (planes.empty()) {
+    window_.statusBar()->showMessage("No clip plane to slice at: choose one in View > Clip Plane first");
+    return;
+  }
+  std::vector<ClipPlane> slices = scene_.shown().slicePlanes;
+  slices.push_back(planes.front());
+  planes.erase(planes.begin());
+  if (!changeScene_([&](Scene& s) {
+        s.setSlicePlanes(slices);  // first: over the limit it throws, nothing changed
+        s.setClipPlanes(planes);
+      }))
+    return;
+  syncToScene();
+  window_.statusBar()->showMessage(QString("%1 slice%2 (View > Clip Plane > Slices to type or remove them); "
+                                           "View > Surface Opacity or Representation shows them inside")
+                                       .arg(slices.size())
+                                       .arg(slices.size() == 1 ? "" : "s"));
+}
+
+void ClipActions::typeSlices() {
+  if (!scene_.session()) return;
+  QStringList lines;
+  for (const ClipPlane& p : scene_.shown().slicePlanes) lines << clipPlaneText(p);
+  QString text = lines.join('\n');
+  for (;;) {
+    bool ok = false;
+    text = QInputDialog::getMultiLineText(&window_, "Slices",
+                                          QString("One plane per line, a point and the normal px,py,pz,nx,ny,nz "
+                                                  "(at most %1; empty: none):")
+                                              .arg(kMaxSlicePlanes),
+                                          text, &ok);
+    if (!ok) return;
+    std::vector<ClipPlane> planes;
+    QString bad;
+    for (const QString& line : text.split('\n', Qt::SkipEmptyParts)) {
+      if (line.trimmed().isEmpty()) continue;
+      if (const auto plane = parseClipPlane(line.trimmed())) planes.push_back(*plane);
+      else if (bad.isEmpty()) bad = line.trimmed();
+    }
+    if (bad.isEmpty() && planes.size() <= kMaxSlicePlanes) {
+      changeScene_([&](Scene& s) { s.setSlicePlanes(planes); });
+      return;
+    }
+    QMessageBox::warning(&window_, "Slices",
+                         bad.isEmpty()
+                             ? QString("%1 planes; at most %2").arg(planes.size()).arg(kMaxSlicePlanes)
+                             : QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(bad));
+  }
 }
 
 void ClipActions::setAxis(int axis) {

@@ -41,6 +41,13 @@ class ClipActions : public QObject {
   void typeBox();
   /// A box from the dialog or the viewport's face handles (on release).
   void applyBox(const ClipBox& box);
+  /// Clip Plane > Invert Plane: the first plane keeps the other side.
+  void invertPlane();
+  /// Clip Plane > Slice Here: the first plane becomes a slice (its section drawn, nothing
+  /// cut away).
+  void planeToSlice();
+  /// Clip Plane > Slices...: the slices typed, one plane per line; empty: none.
+  void typeSlices();
   /// The viewport's plane handle moved the first plane: the menu and the status bar say where.
   void planeDragged(const ClipPlane& plane);
   /// The menu shows the scene's first plane (a state file's, another model's none).

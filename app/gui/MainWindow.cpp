@@ -11,6 +11,7 @@
 #include "CalculatorDialog.hpp"
 #include "ClipActions.hpp"
 #include "DeformationActions.hpp"
+#include "DisplayActions.hpp"
 #include "GridSlicesPanel.hpp"
 #include "IsoSurfaceDialog.hpp"
 #include "LinePlotPanel.hpp"
@@ -240,6 +241,8 @@ void MainWindow::buildActions() {
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
   view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)
       ->setObjectName("surfaceOpacityAction");
+  display_ = new DisplayActions(*this, viewport_->scene(), *view,
+                                [this](const std::function<void(Scene&)>& c) { return changeScene(c); });
   buildColorActions(view);
 
   // What is shown of the results (deformation, probes, cuts, contours, lines) and the
@@ -351,7 +354,12 @@ void MainWindow::showGridSlices() {
     gridSlicesDock_ = new QDockWidget("Grid Slices", this);
     gridSlicesDock_->setObjectName("gridSlicesDock");
     gridSlices_ = new GridSlicesPanel(
-        scene, [this] { viewport_->update(); }, gridSlicesDock_);
+        scene,
+        [this] {
+          display_->syncToScene();  // Show the Model follows the panel's check box
+          viewport_->update();
+        },
+        gridSlicesDock_);
     gridSlices_->setObjectName("gridSlicesPanel");
     gridSlicesDock_->setWidget(gridSlices_);
     addDockWidget(Qt::BottomDockWidgetArea, gridSlicesDock_);
@@ -971,6 +979,7 @@ void MainWindow::syncControlsToScene() {
   deformation_->syncToScene();
   check(orthoAction_, state.camera && state.camera->orthographic);
   volume_->syncToScene();
+  display_->syncToScene();
   streamlines_->syncToScene();
   rendererMenu_->syncToScene();
   clips_->syncToScene();

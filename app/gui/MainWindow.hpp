@@ -42,6 +42,7 @@ class StepController;
 class StreamlineActions;
 class Viewport;
 class VolumeActions;
+class DisplayActions;
 
 class MainWindow : public QMainWindow, public PanelHost {
   Q_OBJECT
@@ -164,6 +165,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   ModelLoader* loader_ = nullptr;
   StateFiles* stateFiles_ = nullptr;
   VolumeActions* volume_ = nullptr;
+  DisplayActions* display_ = nullptr;
   SavedViews* savedViews_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key

@@ -41,6 +41,18 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
     syncToScene();
   });
 
+  edges_ = view.addAction("Element &Edges over the Volume");
+  edges_->setObjectName("volumeEdgesAction");
+  edges_->setCheckable(true);
+  edges_->setToolTip("The boundary's element edges drawn over the volume; they hide what lies behind them");
+  connect(edges_, &QAction::toggled, this, [this](bool on) { changeScene_([on](Scene& s) { s.setVolumeEdges(on); }); });
+  outline_ = view.addAction("Model &Outline over the Volume");
+  outline_->setObjectName("volumeOutlineAction");
+  outline_->setCheckable(true);
+  outline_->setToolTip("The model's creases and borders (its feature edges) drawn over the volume");
+  connect(outline_, &QAction::toggled, this,
+          [this](bool on) { changeScene_([on](Scene& s) { s.setVolumeOutline(on); }); });
+
   QAction* load2d = view.addAction("Load a 2D Transfer Function (grids)...");
   load2d->setObjectName("load2dAction");
   load2d->setToolTip(
@@ -60,9 +72,11 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
 }
 
 void VolumeActions::syncToScene() {
-  const QSignalBlocker a(volume_), b(shading_);
+  const QSignalBlocker a(volume_), b(shading_), c(edges_), d(outline_);
   volume_->setChecked(scene_.volumeShown());
   shading_->setChecked(scene_.volume().shading);
+  edges_->setChecked(scene_.volume().edges);
+  outline_->setChecked(scene_.volume().outline);
 }
 
 void VolumeActions::show(bool on) {

@@ -57,6 +57,8 @@ class VolumeActions : public QObject {
   Followers followers_;
   QAction* volume_ = nullptr;
   QAction* shading_ = nullptr;
+  QAction* edges_ = nullptr;    ///< element edges over the volume
+  QAction* outline_ = nullptr;  ///< the model's feature edges over the volume
 };
 
 }  // namespace volpost::app

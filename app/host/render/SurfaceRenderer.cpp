@@ -263,7 +263,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   // Push the faces back a little so element edges drawn on them are not z-fighting.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  if (showFaces_ && opacity_ < 1.0f) {
+  if (showFaces_ && !showPoints_ && opacity_ < 1.0f) {
     // See-through: blended over what is drawn, hiding nothing behind it (no depth write).
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -271,6 +271,11 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
     glDepthMask(GL_TRUE);
     glDisable(GL_BLEND);
+  } else if (showPoints_) {
+    // Each node once per triangle it belongs to, all in the node's color: the same pixels.
+    glProgramUniform1i(p, glGetUniformLocation(p, "lighting"), 0);
+    glPointSize(pointPixels_);
+    glDrawArrays(GL_POINTS, 0, triangleVertices_);
   } else if (showFaces_) {
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   }
@@ -280,7 +285,8 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
     const GLuint e = edgeProgram_.id();
     glUseProgram(e);
     glProgramUniform2f(e, glGetUniformLocation(e, "viewportSize"), float(ctx.width), float(ctx.height));
-    glProgramUniform1f(e, glGetUniformLocation(e, "densePixels"), fadeDenseEdges_ ? kDenseEdgePixels : 0.0f);
+    glProgramUniform1f(e, glGetUniformLocation(e, "densePixels"),
+                       fadeDenseEdges_ && allowFading_ ? kDenseEdgePixels : 0.0f);
     glEnable(GL_BLEND);  // a fading edge blends over the face under it
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "modelView"), 1, GL_FALSE, glm::value_ptr(view));

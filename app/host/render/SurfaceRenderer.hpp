@@ -62,6 +62,14 @@ class SurfaceRenderer : public Renderer {
   static constexpr float kDenseEdgePixels = 6.0f;
   /// Faces off: only the element edges are drawn (over a volume).
   void setShowFaces(bool show) { showFaces_ = show; }
+  /// Points on: the surface's nodes are drawn as square points of this size (device
+  /// pixels) in their result colors, unlit, instead of its faces.
+  void setShowPoints(bool show, float pixels = 4.0f) {
+    showPoints_ = show;
+    pointPixels_ = pixels;
+  }
+  /// Off: dense element edges are drawn in full (a wireframe, with no faces to crowd).
+  void setFadeDenseEdges(bool on) { allowFading_ = on; }
   bool showEdges() const { return showEdges_; }
   /// Shading off draws exact color-map colors (used by the image tests).
   void setLighting(bool on) { lighting_ = on; }
@@ -83,7 +91,8 @@ class SurfaceRenderer : public Renderer {
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   int location_ = -1;  ///< -1 none, 0 node, 1 cell
   float min_ = 0.f, max_ = 1.f;
-  bool showEdges_ = true, showFaces_ = true, lighting_ = true;
+  bool showEdges_ = true, showFaces_ = true, lighting_ = true, showPoints_ = false, allowFading_ = true;
+  float pointPixels_ = 4.0f;
   float opacity_ = 1.0f;
   static std::vector<float> withOtherEnds(const std::vector<float>& segments, const std::vector<float>& spacing);
   bool fadeDenseEdges_ = true;  ///< element edges fade where they crowd; outlines do not

@@ -635,6 +635,38 @@ TEST(RenderCommand, ContourBandsSymmetricRangeAndReversedMaps) {
       runVolpost("render " + bar + " --field S.xx --title \"Bar, axial stress\" --size 160x120 -o " + png).exitCode, 0);
 }
 
+TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
+  const std::string bar = dataFile("bar/bar_tet4.vtu");
+  const auto dir = std::filesystem::path(::testing::TempDir());
+  const std::string png = (dir / "volpost_representation.png").string(),
+                    state = (dir / "volpost_representation.json").string();
+  const auto r = runVolpost("render " + bar +
+                            " --field S.xx --representation points --point-size 6 --slice 5,0.5,0.5,0,1,0 "
+                            "--size 160x120 -o " +
+                            png + " --save-state " + state);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream saved(state);
+  const std::string json((std::istreambuf_iterator<char>(saved)), {});
+  for (const char* text : {"\"representation\": \"points\"", "\"pointSize\": 6.0", "\"slicePlanes\""})
+    EXPECT_NE(json.find(text), std::string::npos) << text << " in " << json;
+  const auto refused = [&](const std::string& options, const std::string& says) {
+    const auto out = runVolpost("render " + bar + " " + options + " -o " + png);
+    EXPECT_EQ(out.exitCode, 2) << options;
+    EXPECT_NE(out.output.find(says), std::string::npos) << options << ": " << out.output;
+  };
+  refused("--field S.xx --representation mesh", "--representation mesh is not one of: surface, wireframe");
+  refused("--field S.xx --point-size 4", "--point-size sizes the points of --representation points");
+  refused("--field S.xx --representation points --point-size 100", "--point-size 100 is not a size");
+  refused("--field S.xx --slice 1,2,3", "--slice 1,2,3 is not a plane px,py,pz,nx,ny,nz");
+  refused("--field S.xx --slice inline=5", "this model is a mesh");
+  refused("--field S.xx --renderer cpu --representation wireframe", "--representation chooses how the surface");
+  refused("--field S.xx --volume-outline", "--volume-outline works with volume renderers");
+  refused("--field S.xx --renderer reference --volume-outline", "--volume-outline is not drawn by reference");
+  const auto outline =
+      runVolpost("render " + bar + " --field S.xx --renderer cpu --volume-outline --size 96x64 -o " + png);
+  EXPECT_EQ(outline.exitCode, 0) << outline.output;
+}
+
 TEST(ProbeCommand, NodesAndElementsByTheirIds) {
   const std::string bar = dataFile("bar/bar_tet4.vtu");
   const auto r = runVolpost("probe " + bar + " --node 5 --element 100 --field S.xx --field region");

@@ -9,6 +9,8 @@
 #include "gui/MainWindow.hpp"
 #include "gui/Viewport.hpp"
 
+#include "core/Scene.hpp"
+
 #include <volpost/render/GL.hpp>
 
 #include <QAction>
@@ -114,6 +116,57 @@ class WindowControlsTest : public QObject {
     QVERIFY2(colors->isEnabled(), "the Colors box stayed disabled after leaving the volume");
     // Named as the transfer-function editor names the maps.
     QCOMPARE(colors->currentText(), QString("Cool to warm (diverging)"));
+  }
+
+  void representationSlicesAndTheVolumeOutlineFollowTheMenus() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    QVERIFY(action("representation:surface")->isChecked());
+    action("representation:wireframe")->trigger();
+    QVERIFY(scene().shown().representation == SurfaceRepresentation::Wireframe);
+    whenADialogOpens([](QWidget* dialog) {
+      auto* input = qobject_cast<QInputDialog*>(dialog);
+      input->setDoubleValue(7.0);
+      input->accept();
+    });
+    action("pointSizeAction")->trigger();
+    QCOMPARE(scene().shown().pointSize, 7.0);
+    QVERIFY(scene().shown().representation == SurfaceRepresentation::Points);
+    QVERIFY2(action("representation:points")->isChecked(), "the menu shows the points asked for by their size");
+    action("modelShownAction")->setChecked(false);
+    QVERIFY(!scene().shown().surfaceShown);
+    // A clip plane, inverted, then made a slice: nothing cut away, its section drawn.
+    action("clip:0")->trigger();
+    QCOMPARE(scene().volume().clipPlanes.size(), std::size_t(1));
+    action("invertClipPlane")->trigger();
+    QCOMPARE(scene().volume().clipPlanes.front().normal, glm::dvec3(-1.0, 0.0, 0.0));
+    action("planeToSlice")->trigger();
+    QVERIFY(scene().volume().clipPlanes.empty());
+    QCOMPARE(scene().shown().slicePlanes.size(), std::size_t(1));
+    QVERIFY2(action("clip:-1")->isChecked(), "the clip menu shows no plane once it became a slice");
+    whenADialogOpens([](QWidget* dialog) {
+      auto* input = qobject_cast<QInputDialog*>(dialog);
+      input->setTextValue("5,0.5,0.5,0,1,0\n5,0.5,0.5,0,0,1");
+      input->accept();
+    });
+    action("typeSlices")->trigger();
+    QCOMPARE(scene().shown().slicePlanes.size(), std::size_t(2));
+    action("volumeOutlineAction")->setChecked(true);
+    QVERIFY(scene().volume().outline);
+    // A state applied: the menus show it.
+    SceneState state = scene().state();
+    state.representation = SurfaceRepresentation::Outline;
+    state.surfaceShown = true;
+    state.volume.outline = false;
+    const QString path = QDir(QStandardPaths::writableLocation(QStandardPaths::TempLocation)).filePath("rep.json");
+    state.save(path.toStdString());
+    QSignalSpy applied(window_.get(), &MainWindow::stateApplied);
+    window_->openStateFile(path);
+    QVERIFY(applied.count() == 1 || applied.wait(30000));
+    QVERIFY(applied.first().first().toBool());
+    QFile::remove(path);
+    QVERIFY(action("representation:outline")->isChecked());
+    QVERIFY(action("modelShownAction")->isChecked());
+    QVERIFY(!action("volumeOutlineAction")->isChecked());
   }
 
   void aNewModelDropsWhatTheOldOneShowed() {
