@@ -85,6 +85,17 @@ struct Options {
                                 "R,G,B"};
   QCommandLineOption aboveColor{"above-color", "Values above the color range in this color (R,G,B each 0..1).",
                                 "R,G,B"};
+  QCommandLineOption background{"background",
+                                "Behind the model: R,G,B (each 0..1), #RRGGBB or a name such as white or black "
+                                "(default a light gray); the words over the picture turn light on a dark one.",
+                                "COLOR"};
+  QCommandLineOption textScale{"text-scale",
+                               "Words and numbers over the picture (legend, title, labels) this many times their "
+                               "usual size, which follows the picture's height (0.25..8; default 1).",
+                               "F"};
+  QCommandLineOption transparent{"transparent",
+                                 "A transparent background (a .png, .tif or .webp picture): the model over nothing, "
+                                 "for a report's page; edges and see-through parts keep their partial cover."};
   QCommandLineOption title{"title", "A line of text at the picture's top left (a report's caption).", "TEXT"};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
@@ -525,9 +536,9 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.belowColor) || p.isSet(o.aboveColor)) {
     const auto colorOf = [&](const QCommandLineOption& option) -> std::optional<glm::dvec3> {
       if (!p.isSet(option)) return std::nullopt;
-      const auto c = parsePoint(p.value(option));
-      if (!c || c->r < 0.0 || c->r > 1.0 || c->g < 0.0 || c->g > 1.0 || c->b < 0.0 || c->b > 1.0)
-        throw UsageError(QString("--%1 %2 is not R,G,B with each from 0 to 1")
+      const auto c = parseColor(p.value(option));
+      if (!c)
+        throw UsageError(QString("--%1 %2 is not a color: R,G,B with each from 0 to 1, #RRGGBB or a name")
                              .arg(option.names().first(), p.value(option))
                              .toStdString());
       return c;
@@ -535,6 +546,22 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     scene.setOutOfRangeColors(colorOf(o.belowColor), colorOf(o.aboveColor));
   }
   if (p.isSet(o.title)) scene.setTitle(p.value(o.title).toStdString());
+  if (p.isSet(o.background)) {
+    const auto c = parseColor(p.value(o.background));
+    if (!c)
+      throw UsageError(QString("--background %1 is not a color: R,G,B with each from 0 to 1, #RRGGBB or a name")
+                           .arg(p.value(o.background))
+                           .toStdString());
+    scene.setBackground(*c);
+  }
+  if (p.isSet(o.textScale)) {
+    bool ok = false;
+    const double scale = p.value(o.textScale).toDouble(&ok);
+    if (!ok || !(scale >= kMinTextScale && scale <= kMaxTextScale))
+      throw UsageError(
+          QString("--text-scale %1 is not a factor from 0.25 to 8").arg(p.value(o.textScale)).toStdString());
+    scene.setTextScale(scale);
+  }
   if (p.isSet(o.legendNumbers)) scene.setLegendNumbers(p.value(o.legendNumbers).toStdString());
   if (p.isSet(o.legendLabels)) {
     bool ok = false;
@@ -655,15 +682,15 @@ int runRender(const QStringList& args) {
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
   parser.addOptions(
-      {o.field,          o.step,        o.camera,        o.view,       o.eye,           o.target,       o.up,
-       o.viewAngle,      o.size,        o.colormap,      o.range,      o.bands,         o.symmetric,    o.noEdges,
-       o.noLegend,       o.noTriad,     o.deform,        o.undeformed, o.flat,          o.output,       o.renderer,
-       o.mode,           o.tf,          o.tf2d,          o.clip,       o.clipBox,       o.iso,          o.volumeEdges,
-       o.samplingStep,   o.termination, o.shading,       o.floatOut,   o.threads,       o.state,        o.saveState,
-       o.streamlines,    o.lineWidth,   o.tubes,         o.tubeRadius, o.radiusByValue, o.arrows,       o.noSurface,
-       o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,   o.fps,           o.readerOption, o.slice,
-       o.representation, o.pointSize,   o.volumeOutline, o.formula,    o.units,         o.legendTitle,  o.legendNumbers,
-       o.legendLabels,   o.belowColor,  o.aboveColor,    o.title});
+      {o.field,          o.step,        o.camera,        o.view,         o.eye,           o.target,       o.up,
+       o.viewAngle,      o.size,        o.colormap,      o.range,        o.bands,         o.symmetric,    o.noEdges,
+       o.noLegend,       o.noTriad,     o.deform,        o.undeformed,   o.flat,          o.output,       o.renderer,
+       o.mode,           o.tf,          o.tf2d,          o.clip,         o.clipBox,       o.iso,          o.volumeEdges,
+       o.samplingStep,   o.termination, o.shading,       o.floatOut,     o.threads,       o.state,        o.saveState,
+       o.streamlines,    o.lineWidth,   o.tubes,         o.tubeRadius,   o.radiusByValue, o.arrows,       o.noSurface,
+       o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,     o.fps,           o.readerOption, o.slice,
+       o.representation, o.pointSize,   o.volumeOutline, o.background,   o.textScale,     o.transparent,  o.formula,
+       o.units,          o.legendTitle, o.legendNumbers, o.legendLabels, o.belowColor,    o.aboveColor,   o.title});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -685,6 +712,11 @@ int runRender(const QStringList& args) {
         throw UsageError(QString("-o %1 (or a video: .%2 with --all-steps)")
                              .arg(e.what(), VideoFile::extensions().join(", .")).toStdString());
       }
+    if (parser.isSet(o.transparent) && (video || !formatKeepsTransparency(out)))
+      throw UsageError(QString("--transparent needs a picture that keeps transparency (.png, .tif, .webp); -o %1 "
+                               "has none")
+                           .arg(out)
+                           .toStdString());
     double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond;
     if (parser.isSet(o.fps)) {
       if (!video) throw UsageError("--fps is the rate of a video: -o must be .mp4, .mkv, .webm or .avi with --all-steps");
@@ -760,10 +792,14 @@ int runRender(const QStringList& args) {
         throw UsageError(e.what());
       }
       scene.setVolumeShown(chosen.volume.has_value());
-      const auto draw = [&] {
+      const bool transparent = parser.isSet(o.transparent);
+      const auto drawOnce = [&](bool overlay) {
         return chosen.volume && !glVolume
-                   ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"))
-                   : renderSceneImage(scene, width, height);
+                   ? renderReferenceSceneImage(scene, width, height, threads, terminalProgress("rendering"), overlay)
+                   : renderSceneImage(scene, width, height, overlay);
+      };
+      const auto draw = [&] {
+        return transparent ? renderTransparent(scene, [&] { return drawOnce(false); }) : drawOnce(true);
       };
       if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), draw);
       const SceneImage image = draw();

@@ -89,8 +89,10 @@ std::string LegendNumbers::written() const {
 
 namespace {
 
-QFont legendFont(QFont font, const QRect& area) {
-  font.setPixelSize(std::clamp(area.height() / 48, 9, 96));  // in proportion to the picture, readable when small
+QFont legendFont(QFont font, const QRect& area, double textScale) {
+  // In proportion to the picture, readable when small; then as much larger as asked.
+  const int size = std::clamp(area.height() / 48, 9, 96);
+  font.setPixelSize(std::max(6, int(std::lround(size * textScale))));
   return font;
 }
 
@@ -122,18 +124,23 @@ std::vector<double> bandBounds(const LegendContent& c, int barHeight, int lineHe
 
 }  // namespace
 
-int legendWidth(const QRect& area, const LegendNumbers& numbers) {
+QColor textColorOver(bool dark) { return dark ? QColor(235, 235, 235) : QColor(40, 40, 40); }
+
+bool isDarkBackground(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b < 0.5; }
+
+int legendWidth(const QRect& area, const LegendNumbers& numbers, double textScale) {
   // The widest label the number style can give: the strip does not change with the
   // numbers, so the model keeps its place and size when the quantity or step changes.
-  const QFontMetrics fm(legendFont(QFont(), area));
+  const QFontMetrics fm(legendFont(QFont(), area, textScale));
   return fm.horizontalAdvance(numbers.widest()) + 12 + barWidthOf(area) + 8;
 }
 
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& c) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing, true);
-  const QFont font = legendFont(painter.font(), area);
+  const QFont font = legendFont(painter.font(), area, c.textScale);
   painter.setFont(font);
+  painter.setPen(textColorOver(c.onDark));
   const QFontMetrics fm(font);
   const int barWidth = barWidthOf(area);
   const int top = area.top() + fm.height() * 3, bottom = area.bottom() - fm.height() * 2;
@@ -156,7 +163,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   };
   if (!c.noBarNote.isEmpty()) {
     const QRect titleRect(area.left(), area.top() + 4, area.right() - 4 - area.left(), fm.height());
-    painter.setPen(QColor(40, 40, 40));
+    painter.setPen(textColorOver(c.onDark));
     painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
     painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
     painter.drawText(titleRect.translated(0, 2 * fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.noBarNote);
@@ -176,7 +183,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   const auto endBox = [&](const glm::dvec3& rgb, int y, const QString& label) {
     const QRect r(bar.left(), y, bar.width(), box);
     painter.fillRect(r, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
-    painter.setPen(QColor(40, 40, 40));
+    painter.setPen(textColorOver(c.onDark));
     painter.drawRect(r);
     painter.drawText(QPoint(bar.right() + 7, r.center().y() + fm.ascent() / 2 - 1), label);
   };
@@ -199,7 +206,7 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     }
     painter.fillRect(bar, gradient);
   }
-  painter.setPen(QColor(40, 40, 40));
+  painter.setPen(textColorOver(c.onDark));
   painter.drawRect(bar);
 
   const double span = c.max > c.min ? c.max - c.min : 1.0;

@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <QColor>
 #include <QRect>
 #include <QString>
 
@@ -47,14 +48,23 @@ struct LegendContent {
   int labels = 6;
   /// The colors of values below / above the bar's range, drawn as boxes at its ends.
   std::optional<glm::dvec3> belowColor, aboveColor;  ///< about how many values a continuous bar labels
+  /// The words and numbers' size, times the size in proportion to the picture.
+  double textScale = 1.0;
+  /// Light words for a dark background.
+  bool onDark = false;
 };
+
+/// The words' color over a background: near-black, or near-white over a dark one.
+QColor textColorOver(bool dark);
+/// Whether a background color is dark enough for light words (luminance below one half).
+bool isDarkBackground(const glm::dvec3& rgb);
 
 /// Draws a vertical bar with ticks at "nice" values along the right edge of `area`.
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& content);
 
 /// The widest the legend paintLegend draws in `area` can be, pixels from its right edge
 /// (the bar and its tick labels; the title lines above it are right-aligned text).
-int legendWidth(const QRect& area, const LegendNumbers& numbers = {});
+int legendWidth(const QRect& area, const LegendNumbers& numbers = {}, double textScale = 1.0);
 
 /// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
 std::vector<double> niceTicks(double min, double max, int target = 6);

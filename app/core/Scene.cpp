@@ -313,6 +313,18 @@ std::vector<ClipPlane> Scene::slicePlanes() const {
   return planes;
 }
 
+void Scene::setBackground(const glm::dvec3& rgb) {
+  for (int k = 0; k < 3; ++k)
+    if (!(rgb[k] >= 0.0 && rgb[k] <= 1.0)) throw std::invalid_argument("a background color's components lie in 0..1");
+  state_.background = rgb;
+}
+
+void Scene::setTextScale(double scale) {
+  if (!(scale >= kMinTextScale && scale <= kMaxTextScale))
+    throw std::invalid_argument("the text scale must lie in 0.25..8");
+  state_.textScale = scale;
+}
+
 void Scene::setPointSize(double pixels) {
   if (!(pixels >= 1.0 && pixels <= kMaxPointSize))
     throw std::invalid_argument("the point size must lie in 1.." + std::to_string(int(kMaxPointSize)) + " pixels");
@@ -511,6 +523,11 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   checkGridSlices(checked.model().grid, s.gridSlices);
   checkSlicePlanes(s.slicePlanes);
+  for (int k = 0; k < 3; ++k)
+    if (!(s.background[k] >= 0.0 && s.background[k] <= 1.0))
+      throw std::invalid_argument("the state's background color lies outside 0..1");
+  if (!(s.textScale >= kMinTextScale && s.textScale <= kMaxTextScale))
+    throw std::invalid_argument("the state's text scale lies outside 0.25..8");
   if (!(s.pointSize >= 1.0 && s.pointSize <= kMaxPointSize))
     throw std::invalid_argument("the state's point size lies outside 1.." + std::to_string(int(kMaxPointSize)));
   checkClipPlanes(s.volume.allClipPlanes());
@@ -711,6 +728,10 @@ std::vector<LegendPicture> Scene::legends() const {
     lines.dataMax = r.max;
     out.push_back({ColorMap::named(state_.colorMap), lines});
   }
+  for (LegendPicture& legend : out) {
+    legend.content.textScale = state_.textScale;
+    legend.content.onDark = isDarkBackground(state_.background);
+  }
   return out;
 }
 
@@ -718,8 +739,9 @@ Camera Scene::pictureCamera(double width, double height) const {
   Camera camera = camera_;
   if (!legend() || !(width > 0.0) || !(height > 0.0)) return camera;
   const QRect area(0, 0, int(std::lround(width)), int(std::lround(height)));
-  camera.setRightMargin(
-      std::min(0.4, legendWidth(area, LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{})) / width));
+  camera.setRightMargin(std::min(
+      0.4, legendWidth(area, LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{}), state_.textScale) /
+               width));
   return camera;
 }
 

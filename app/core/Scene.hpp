@@ -272,7 +272,11 @@ class Scene {
   /// Device pixels per logical pixel of the pictures drawn (the window's HiDPI
   /// factor; 1 headless): the legend strip is measured in logical pixels.
   void setDevicePixelRatio(double ratio) { devicePixelRatio_ = ratio > 0.0 ? ratio : 1.0; }
-  glm::vec3 background() const { return kSceneBackground; }
+  glm::vec3 background() const { return glm::vec3(state_.background); }
+  /// Behind the model (0..1 each); std::invalid_argument otherwise.
+  void setBackground(const glm::dvec3& rgb);
+  /// The words' size over the picture, kMinTextScale..kMaxTextScale; std::invalid_argument otherwise.
+  void setTextScale(double scale);
   double devicePixelRatio() const { return devicePixelRatio_; }
 
   // ---- for a drawing ----

@@ -272,6 +272,7 @@ void SceneDrawing::render(const Scene& scene, const RenderContext& target) {
     forgetAll();
     drawn_.scene = scene.revisions().scene;
   }
+  boundary_.background = scene.background();
   RenderContext ctx = target;
   const double ratio = scene.devicePixelRatio();
   ctx.camera = scene.pictureCamera(ctx.width / ratio, ctx.height / ratio);

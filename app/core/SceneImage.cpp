@@ -9,6 +9,7 @@
 #include <volpost/render/OffscreenTarget.hpp>
 #include <volpost/render/ScopedInitialization.hpp>
 
+#include <QFileInfo>
 #include <QPainter>
 
 #include <algorithm>
@@ -22,7 +23,7 @@ void paintSceneOverlay(QImage& image, const Scene& scene) {
   paintSceneOverlay(painter, image.rect(), scene);
 }
 
-SceneImage renderSceneImage(Scene& scene, int width, int height) {
+SceneImage renderSceneImage(Scene& scene, int width, int height, bool overlay) {
   HeadlessContext context;
   OffscreenTarget target(width, height);
   std::vector<std::uint8_t> pixels;
@@ -47,11 +48,12 @@ SceneImage renderSceneImage(Scene& scene, int width, int height) {
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   for (int y = 0; y < height; ++y)
     std::memcpy(out.picture.scanLine(y), pixels.data() + std::size_t(y) * std::size_t(width) * 4, std::size_t(width) * 4);
-  paintSceneOverlay(out.picture, scene);
+  if (overlay) paintSceneOverlay(out.picture, scene);
   return out;
 }
 
-SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, int threads, const Progress& progress) {
+SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, int threads, const Progress& progress,
+                                     bool overlay) {
   const optics::ReferenceImage reference = renderVolumeReference(scene, width, height, threads, progress);
   SceneImage out;
   out.width = width;
@@ -72,8 +74,46 @@ SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, 
       line[4 * x + 3] = 255;
     }
   }
+  if (overlay) paintSceneOverlay(out.picture, scene);
+  return out;
+}
+
+SceneImage renderTransparent(Scene& scene, const std::function<SceneImage()>& draw) {
+  const glm::dvec3 own(scene.shown().background);
+  struct Restore {
+    Scene& scene;
+    glm::dvec3 background;
+    ~Restore() { scene.setBackground(background); }
+  } restore{scene, own};
+  scene.setBackground(glm::dvec3(0.0));
+  SceneImage out = draw();
+  scene.setBackground(glm::dvec3(1.0));
+  const SceneImage overWhite = draw();
+  scene.setBackground(own);
+  QImage picture(out.width, out.height, QImage::Format_RGBA8888);
+  const QImage black = out.picture.convertToFormat(QImage::Format_RGBA8888);
+  const QImage white = overWhite.picture.convertToFormat(QImage::Format_RGBA8888);
+  for (int y = 0; y < out.height; ++y) {
+    const uchar* b = black.constScanLine(y);
+    const uchar* w = white.constScanLine(y);
+    uchar* o = picture.scanLine(y);
+    for (int x = 0; x < out.width; ++x, b += 4, w += 4, o += 4) {
+      // Over black a pixel is C*a; over white C*a + (1 - a): their difference is 1 - a.
+      const double difference = ((w[0] - b[0]) + (w[1] - b[1]) + (w[2] - b[2])) / (3.0 * 255.0);
+      const double alpha = std::clamp(1.0 - difference, 0.0, 1.0);
+      for (int k = 0; k < 3; ++k)
+        o[k] = alpha > 0.0 ? uchar(std::lround(std::clamp(b[k] / 255.0 / alpha, 0.0, 1.0) * 255.0)) : 0;
+      o[3] = uchar(std::lround(alpha * 255.0));
+    }
+  }
+  out.picture = picture;
   paintSceneOverlay(out.picture, scene);
   return out;
+}
+
+bool formatKeepsTransparency(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  return suffix == "png" || suffix == "tif" || suffix == "tiff" || suffix == "webp";
 }
 
 }  // namespace volpost::app

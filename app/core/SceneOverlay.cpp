@@ -276,7 +276,7 @@ void paintCaption(QPainter& painter, const QRect& room, const Scene& scene) {
     }
     painter.setFont(lineFont);
     const QFontMetrics fm(lineFont);
-    painter.setPen(QColor(30, 30, 30));
+    painter.setPen(textColorOver(isDarkBackground(scene.shown().background)));
     painter.drawText(QRect(room.left() + 8, y, room.width() - 16, fm.height()), Qt::AlignLeft | Qt::AlignVCenter,
                      fm.elidedText(lines[i], Qt::ElideRight, room.width() - 16));
     y += fm.height() + 2;
@@ -290,7 +290,8 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing);
   QFont font = painter.font();
-  font.setPixelSize(std::clamp(area.height() / 54, 9, 84));  // a little smaller than the legend
+  // A little smaller than the legend, as much larger as the state's text scale asks.
+  font.setPixelSize(std::max(6, int(std::lround(std::clamp(area.height() / 54, 9, 84) * scene.shown().textScale))));
   painter.setFont(font);
   const double scale = std::max(1.0, font.pixelSize() / 12.0);
   if (scene.showsPlaneWidget()) paintPlaneWidget(painter, area, scene, scale);
@@ -307,7 +308,8 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   const std::vector<LegendPicture> legends = scene.legends();
   if (!legends.empty())
     room.setRight(
-        std::max(area.left() + area.width() / 2, area.right() - legendWidth(area, legends.front().content.numbers)));
+        std::max(area.left() + area.width() / 2,
+                 area.right() - legendWidth(area, legends.front().content.numbers, legends.front().content.textScale)));
   for (const Marker& m : markers)
     if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
   if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);

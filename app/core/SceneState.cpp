@@ -385,6 +385,8 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["legendText"] = {
       {"titles", legendTitles}, {"units", units}, {"numbers", legendNumbers}, {"labels", legendLabels}};
   out["triad"] = triad;
+  out["background"] = jsonOf(background);
+  out["textScale"] = textScale;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
   out["deformation"] = {{"shown", deformation.shown},
@@ -554,6 +556,15 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   }
   if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
   if (const json* triad = r.find(in, "triad")) s.triad = r.boolean(*triad, "triad");
+  if (const json* x = r.find(in, "background")) {
+    s.background = r.vec3(*x, "background");
+    for (int k = 0; k < 3; ++k)
+      if (!(s.background[k] >= 0.0 && s.background[k] <= 1.0)) r.fail("background", "components must lie in 0..1");
+  }
+  if (const json* x = r.find(in, "textScale")) {
+    s.textScale = r.number(*x, "textScale");
+    if (!(s.textScale >= kMinTextScale && s.textScale <= kMaxTextScale)) r.fail("textScale", "must lie in 0.25..8");
+  }
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
   if (const json* d = r.find(in, "deformation")) {

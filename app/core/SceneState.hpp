@@ -60,6 +60,7 @@ inline constexpr int kMaxColorBands = 256;
 /// The most slice planes a scene holds; the largest point size (logical pixels).
 inline constexpr std::size_t kMaxSlicePlanes = 16;
 inline constexpr double kMaxPointSize = 64.0;
+inline constexpr double kMinTextScale = 0.25, kMaxTextScale = 8.0;
 /// The most formulas a scene (and its state file) holds.
 inline constexpr std::size_t kMaxFormulas = 100;
 inline constexpr std::size_t kMaxViewNameBytes = 200;
@@ -173,6 +174,11 @@ struct SceneState {
   std::string legendNumbers = "auto:4";             ///< LegendNumbers::parse
   int legendLabels = 6;                             ///< about how many values a bar labels (2..20)
   bool triad = true;          ///< the orientation axes in the lower left corner
+  /// Behind the model, 0..1 each; "background" in the file.
+  glm::dvec3 background{0.96, 0.96, 0.97};
+  /// The size of the words and numbers painted over the picture (legend, title, labels),
+  /// times their size in proportion to the picture; "textScale" in the file.
+  double textScale = 1.0;
   VolumeLayer volume;
   StreamlineLayer streamlines;
   /// Points probed (the window's Probe panel), marked and numbered in the view.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "VolumeSpecs.hpp"
 
+#include <QColor>
 #include <QRegularExpression>
 #include <QStringList>
 
@@ -25,6 +26,19 @@ std::optional<std::vector<double>> numbers(const QString& text, int count) {
 }
 
 }  // namespace
+
+std::optional<glm::dvec3> parseColor(const QString& text) {
+  if (text.contains(',')) {
+    const auto c = parsePoint(text);
+    if (!c) return std::nullopt;
+    for (int k = 0; k < 3; ++k)
+      if (!((*c)[k] >= 0.0 && (*c)[k] <= 1.0)) return std::nullopt;
+    return c;
+  }
+  if (!QColor::isValidColorName(text.trimmed())) return std::nullopt;
+  const QColor named = QColor::fromString(text.trimmed());
+  return glm::dvec3(named.redF(), named.greenF(), named.blueF());
+}
 
 std::optional<glm::dvec3> parsePoint(const QString& text) {
   const auto v = numbers(text, 3);

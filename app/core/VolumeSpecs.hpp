@@ -17,6 +17,8 @@ namespace volpost::app {
 
 /// "x,y,z": a point (model units).
 std::optional<glm::dvec3> parsePoint(const QString& text);
+/// A color: "r,g,b" (each 0..1), "#rrggbb" or a name ("white", "black", "navy").
+std::optional<glm::dvec3> parseColor(const QString& text);
 /// "px,py,pz,nx,ny,nz": a point on the plane and the normal toward the kept side.
 std::optional<ClipPlane> parseClipPlane(const QString& text);
 /// The written form parseClipPlane reads back (full precision).

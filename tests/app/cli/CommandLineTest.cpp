@@ -662,6 +662,22 @@ TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
   refused("--field S.xx --renderer cpu --representation wireframe", "--representation chooses how the surface");
   refused("--field S.xx --volume-outline", "--volume-outline works with volume renderers");
   refused("--field S.xx --renderer reference --volume-outline", "--volume-outline is not drawn by reference");
+  refused("--field S.xx --background 2,0,0", "--background 2,0,0 is not a color");
+  refused("--field S.xx --text-scale 50", "--text-scale 50 is not a factor from 0.25 to 8");
+  const auto jpg = runVolpost("render " + bar + " --field S.xx --transparent -o " + (dir / "t.jpg").string());
+  EXPECT_EQ(jpg.exitCode, 2);
+  EXPECT_NE(jpg.output.find("--transparent needs a picture that keeps transparency"), std::string::npos) << jpg.output;
+  const auto report =
+      runVolpost("render " + bar + " --field S.xx --transparent --background navy --text-scale 2 --size 96x64 -o " +
+                 png + " --save-state " + state);
+  ASSERT_EQ(report.exitCode, 0) << report.output;
+  const QImage written(QString::fromStdString(png));
+  ASSERT_FALSE(written.isNull());
+  EXPECT_TRUE(written.hasAlphaChannel());
+  EXPECT_EQ(qAlpha(written.pixel(0, 0)), 0);
+  std::ifstream again(state);
+  const std::string saved2((std::istreambuf_iterator<char>(again)), {});
+  EXPECT_NE(saved2.find("\"textScale\": 2.0"), std::string::npos) << saved2;
   const auto outline =
       runVolpost("render " + bar + " --field S.xx --renderer cpu --volume-outline --size 96x64 -o " + png);
   EXPECT_EQ(outline.exitCode, 0) << outline.output;
