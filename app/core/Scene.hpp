@@ -197,6 +197,16 @@ class Scene {
   /// The window's handle on the first clip plane (outline and normal handle, PlaneWidget);
   /// pictures never show it.
   void setPlaneWidgetShown(bool on) { planeWidgetShown_ = on; }
+  /// The window's handles as set (whether or not there is a plane, box or rake to show).
+  struct Handles {
+    bool plane = false, box = false, rakes = false;
+  };
+  Handles handles() const { return {planeWidgetShown_, boxWidgetShown_, rakesShown_}; }
+  void setHandles(const Handles& h) {
+    planeWidgetShown_ = h.plane;
+    boxWidgetShown_ = h.box;
+    rakesShown_ = h.rakes;
+  }
   bool showsPlaneWidget() const { return planeWidgetShown_ && session_ && !state_.volume.clipPlanes.empty(); }
   /// The window's handles on the clip box (BoxWidget); pictures never show them.
   void setBoxWidgetShown(bool on) { boxWidgetShown_ = on; }

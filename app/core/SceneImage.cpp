@@ -25,6 +25,10 @@ void paintSceneOverlay(QImage& image, const Scene& scene) {
 
 SceneImage renderSceneImage(Scene& scene, int width, int height, bool overlay) {
   HeadlessContext context;
+  return drawSceneImage(scene, width, height, overlay);
+}
+
+SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay) {
   OffscreenTarget target(width, height);
   std::vector<std::uint8_t> pixels;
   SceneImage out;

@@ -27,6 +27,8 @@ struct SceneImage {
 /// std::exception subclasses with a message for the user (no GL 4.5, a renderer error).
 /// `overlay` off: no legend, title or markers painted over it.
 SceneImage renderSceneImage(Scene& scene, int width, int height, bool overlay = true);
+/// The same in the GL context current now (the window's), with a drawing of its own.
+SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay = true);
 
 /// The scene's volume by the exact CPU reference renderer, over the same background and
 /// with the same legend as renderSceneImage. Cancelled on request.

@@ -5,6 +5,7 @@
 
 #include <QAction>
 #include <QActionGroup>
+#include <QColorDialog>
 #include <QInputDialog>
 #include <QMenu>
 #include <QSignalBlocker>
@@ -44,7 +45,16 @@ DisplayActions::DisplayActions(QWidget& window, Scene& scene, QMenu& view, Chang
   shown_->setToolTip("Off: only what is inside shows (sections, slices, iso-surfaces, streamlines)");
   connect(shown_, &QAction::toggled, this,
           [this](bool on) { changeScene_([on](Scene& s) { s.setSurfaceShown(on); }); });
+  view.addAction("Bac&kground Color...", this, &DisplayActions::chooseBackground)->setObjectName("backgroundAction");
   syncToScene();
+}
+
+void DisplayActions::chooseBackground() {
+  const glm::dvec3 now = scene_.shown().background;
+  const QColor chosen =
+      QColorDialog::getColor(QColor::fromRgbF(float(now.r), float(now.g), float(now.b)), &window_, "Background color");
+  if (!chosen.isValid()) return;  // cancelled
+  changeScene_([&](Scene& s) { s.setBackground({chosen.redF(), chosen.greenF(), chosen.blueF()}); });
 }
 
 void DisplayActions::syncToScene() {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // View > Representation: how the model's boundary is drawn (surface, wireframe, points,
-// feature edges, outline), whether it is drawn at all, and the points' size. The entries
+// feature edges, outline), whether it is drawn at all, and the points' size; View >
+// Background Color. The entries
 // show the scene's state (a state file's included); the scene is the one record.
 #pragma once
 
@@ -30,6 +31,8 @@ class DisplayActions : public QObject {
 
  private:
   void choosePointSize();
+  /// View > Background Color: behind the model, in the window and its pictures.
+  void chooseBackground();
 
   QWidget& window_;
   Scene& scene_;

@@ -20,6 +20,7 @@
 #include "ProbeController.hpp"
 #include "RecentFiles.hpp"
 #include "RendererMenu.hpp"
+#include "SaveImageDialog.hpp"
 #include "SavedViews.hpp"
 #include "SeeThroughSurface.hpp"
 #include "StateFiles.hpp"
@@ -177,7 +178,7 @@ void MainWindow::buildActions() {
   readerOptions->setObjectName("readerOptionsAction");
   readerOptions->setToolTip("Settings of the file's reader (for example where a SEG-Y file keeps its inline "
                             "numbers, or which offset of a pre-stack file to load), then the file read again");
-  file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage);
+  file->addAction("Save &Image...", QKeySequence::Save, this, &MainWindow::saveImage)->setObjectName("saveImageAction");
   file->addSeparator();
   stateFiles_ = new StateFiles(
       *this, viewport_->scene(), *file,
@@ -990,17 +991,29 @@ void MainWindow::syncControlsToScene() {
 
 void MainWindow::saveImage() {
   QSettings settings("volpost", "volpost");
-  const QString path = QFileDialog::getSaveFileName(this, "Save image", settings.value("files/lastImage", "volpost.png").toString(),
-                                                    "PNG image (*.png)");
-  if (path.isEmpty()) return;
-  settings.setValue("files/lastImage", path);
+  const qreal ratio = viewport_->devicePixelRatioF();
+  PictureRequest request{settings.value("files/lastImage", "volpost.png").toString(),
+                         int(std::lround(viewport_->width() * ratio)), int(std::lround(viewport_->height() * ratio)),
+                         viewport_->scene().shown().textScale,
+                         settings.value("files/transparentImage", false).toBool()};
+  SaveImageDialog dialog(request, this);
+  if (dialog.exec() != QDialog::Accepted) return;
+  request = dialog.request();
+  settings.setValue("files/lastImage", request.path);
+  settings.setValue("files/transparentImage", request.transparent);
   try {
-    savePicture(viewport_->grabFramebuffer(), path);
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    struct Restore {
+      ~Restore() { QApplication::restoreOverrideCursor(); }
+    } restore;
+    savePicture(viewport_->renderPicture(request.width, request.height, request.textScale, request.transparent),
+                request.path);
   } catch (const std::exception& e) {
     QMessageBox::critical(this, "Save image", e.what());  // the previous file, if any, is as it was
     return;
   }
-  statusBar()->showMessage("Saved " + path);
+  viewport_->update();
+  statusBar()->showMessage(QString("Saved %1 (%2 x %3)").arg(request.path).arg(request.width).arg(request.height));
 }
 
 // Asks for a size (512M, 8G) for the setting `key`, applies it with `apply` and keeps it;

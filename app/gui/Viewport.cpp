@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "Viewport.hpp"
 
+#include "core/SceneImage.hpp"
 #include "core/SceneOverlay.hpp"
 #include "core/ScenePick.hpp"
 
@@ -111,6 +112,31 @@ void Viewport::paintGL() {
   if (pending != refining_) emit refining(refining_ = pending);
   if (overlayReady_) drawLegend(ctx.width, ctx.height);
   ++paintedFrames_;
+}
+
+QImage Viewport::renderPicture(int width, int height, double textScale, bool transparent) {
+  if (!drawing_.initialized()) throw std::runtime_error("the view has no OpenGL context yet");
+  // What the window shows that a picture does not: restored whatever happens.
+  struct Restore {
+    Scene& scene;
+    double ratio, textScale;
+    Scene::Handles handles;
+    ~Restore() {
+      scene.setDevicePixelRatio(ratio);
+      scene.setTextScale(textScale);
+      scene.setHandles(handles);
+    }
+  } restore{scene_, scene_.devicePixelRatio(), scene_.shown().textScale, scene_.handles()};
+  scene_.setDevicePixelRatio(1.0);
+  scene_.setTextScale(textScale);  // throws outside its range, nothing changed yet
+  scene_.setHandles({});
+  makeCurrent();
+  struct Done {
+    Viewport& v;
+    ~Done() { v.doneCurrent(); }
+  } done{*this};
+  const auto draw = [&] { return drawSceneImage(scene_, width, height, !transparent); };
+  return transparent ? renderTransparent(scene_, draw).picture : draw().picture;
 }
 
 // The legend is painted on the CPU (same code as the headless picture) and drawn as a

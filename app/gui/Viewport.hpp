@@ -64,6 +64,11 @@ class Viewport : public QOpenGLWidget {
   std::optional<glm::dvec3> surfacePointAt(const QPointF& pixel) const;
 
   VolumeStats volumeStats() const { return drawing_.volumeStats(); }
+  /// The scene as a picture of its own size (any, not the widget's), drawn in full in this
+  /// widget's context as `volpost render` draws it: no handles, the words sized for the
+  /// picture times `textScale`, the background transparent on request. Throws
+  /// std::exception with a message (a renderer error, no GL context yet).
+  QImage renderPicture(int width, int height, double textScale, bool transparent);
   /// The picture shown is a quick one while the full one is computed (as last painted).
   bool isRefining() const { return refining_; }
   /// Frames painted so far: a picture taken after a change waits for one more.

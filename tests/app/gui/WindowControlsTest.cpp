@@ -15,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -29,6 +30,7 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QSurfaceFormat>
@@ -167,6 +169,34 @@ class WindowControlsTest : public QObject {
     QVERIFY(action("representation:outline")->isChecked());
     QVERIFY(action("modelShownAction")->isChecked());
     QVERIFY(!action("volumeOutlineAction")->isChecked());
+  }
+
+  void saveImageWritesAnySizeWithATransparentBackground() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::TempLocation);
+    const QString jpg = QDir(dir).filePath("volpost_save.jpg"), png = QDir(dir).filePath("volpost_save.png");
+    QFile::remove(png);
+    action("clip:0")->trigger();  // its handles show in the window, never in a picture
+    bool refusedJpeg = false;
+    whenADialogOpens([&](QWidget* dialog) {
+      dialog->findChild<QLineEdit*>("imagePath")->setText(jpg);
+      dialog->findChild<QSpinBox*>("imageWidth")->setValue(1000);
+      dialog->findChild<QSpinBox*>("imageHeight")->setValue(300);
+      dialog->findChild<QCheckBox*>("imageTransparent")->setChecked(true);
+      static_cast<QDialog*>(dialog)->accept();
+      refusedJpeg = dialog->isVisible() && !dialog->findChild<QLabel*>("imageProblem")->text().isEmpty();
+      dialog->findChild<QLineEdit*>("imagePath")->setText(png);
+      static_cast<QDialog*>(dialog)->accept();
+    });
+    action("saveImageAction")->trigger();
+    QVERIFY2(refusedJpeg, "a JPEG cannot keep a transparent background: the dialog says so and stays");
+    const QImage saved(png);
+    QCOMPARE(saved.size(), QSize(1000, 300));
+    QCOMPARE(qAlpha(saved.pixel(1, 1)), 0);
+    QCOMPARE(qAlpha(saved.pixel(450, 150)), 255);  // the bar, seen whole, across the middle
+    QVERIFY(scene().showsPlaneWidget());
+    QCOMPARE(scene().devicePixelRatio(), window_->viewport()->devicePixelRatioF());
+    QFile::remove(png);
   }
 
   void aNewModelDropsWhatTheOldOneShowed() {
