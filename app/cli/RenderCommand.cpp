@@ -96,6 +96,23 @@ struct Options {
   QCommandLineOption transparent{"transparent",
                                  "A transparent background (a .png, .tif or .webp picture): the model over nothing, "
                                  "for a report's page; edges and see-through parts keep their partial cover."};
+  QCommandLineOption glyphs{"glyphs",
+                            "Glyphs at the nodes: arrows of a nodal vector field (U, velocity) or, for a "
+                            "symmetric tensor field (S), three bars along its principal directions colored by "
+                            "the principal values (tension and compression on either side of the map's middle).",
+                            "FIELD"};
+  QCommandLineOption glyphColor{"glyph-color", "Color the glyphs by this nodal quantity (default: their length).", "Q"};
+  QCommandLineOption glyphScale{"glyph-scale",
+                                "Model units per unit of the glyphs' field (with --glyph-fixed: the arrows' "
+                                "length); default: the longest is 6% of the model's size.",
+                                "F"};
+  QCommandLineOption glyphFixed{"glyph-fixed", "Arrows all the same length: the direction only."};
+  QCommandLineOption glyphEvery{"glyph-every",
+                                "Glyphs at every K-th node (default: as many as keep them under 20,000).", "K"};
+  QCommandLineOption glyphNodes{"glyph-nodes",
+                                "surface (default: the nodes an opaque model shows) or all (inside too, for a "
+                                "see-through surface or a clip).",
+                                "WHICH"};
   QCommandLineOption title{"title", "A line of text at the picture's top left (a report's caption).", "TEXT"};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
@@ -202,6 +219,41 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
   const QString video = output.finish();
   if (output.isVideo()) printPath(video);
   return 0;
+}
+
+// --glyphs FIELD and how they look, over the state file's glyphs.
+void applyGlyphOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
+  GlyphLayer g = scene.glyphLayer();
+  if (p.isSet(o.glyphs)) {
+    g.shown = true;
+    g.field = p.value(o.glyphs).toStdString();
+  }
+  const bool styled = p.isSet(o.glyphColor) || p.isSet(o.glyphScale) || p.isSet(o.glyphFixed) ||
+                      p.isSet(o.glyphEvery) || p.isSet(o.glyphNodes);
+  if (!styled && !p.isSet(o.glyphs)) return;
+  if (!g.shown) throw UsageError("glyph options need --glyphs FIELD (the vector or tensor field to draw)");
+  if (p.isSet(o.glyphColor)) g.colorBy = p.value(o.glyphColor).toStdString();
+  if (p.isSet(o.glyphFixed)) g.fixedLength = true;
+  if (p.isSet(o.glyphScale)) {
+    bool ok = false;
+    g.scale = p.value(o.glyphScale).toDouble(&ok);
+    if (!ok || !(*g.scale > 0.0) || !std::isfinite(*g.scale))
+      throw UsageError(QString("--glyph-scale %1 is not a positive number").arg(p.value(o.glyphScale)).toStdString());
+  }
+  if (p.isSet(o.glyphEvery)) {
+    bool ok = false;
+    g.every = p.value(o.glyphEvery).toInt(&ok);
+    if (!ok || g.every < 1)
+      throw UsageError(
+          QString("--glyph-every %1 is not a count of 1 or more").arg(p.value(o.glyphEvery)).toStdString());
+  }
+  if (p.isSet(o.glyphNodes)) {
+    const QString which = p.value(o.glyphNodes);
+    if (which != "surface" && which != "all")
+      throw UsageError(QString("--glyph-nodes %1 is not surface or all").arg(which).toStdString());
+    g.allNodes = which == "all";
+  }
+  scene.setGlyphs(g);  // invalid_argument (not a vector or tensor field, too many): a usage error
 }
 
 // --slice: AXIS=VALUE on a regular grid's axis, or a free plane px,py,pz,nx,ny,nz on any model.
@@ -416,6 +468,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
       refuse(o.mode, p.value(o.mode) + " is not a mode of " + name);
   if (!r.drawsSceneLayers) refuse(o.volumeEdges, "is not drawn by " + name + ", which draws the volume alone");
   if (!r.drawsSceneLayers) refuse(o.volumeOutline, "is not drawn by " + name + ", which draws the volume alone");
+  if (!r.drawsSceneLayers) refuse(o.glyphs, "are not drawn by " + name + ", which draws the volume alone");
   if (!t.samplingStepOnMeshes && !t.samplingStepOnGrids)
     refuse(o.samplingStep, "is not used by " + name + " (it integrates exactly)");
   if (!t.earlyTermination) refuse(o.termination, "is not used by " + name + " (it never stops early)");
@@ -438,6 +491,11 @@ void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRend
       std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
   if (!state.slicePlanes.empty())
     throw UsageError(("slices (--slice, or \"slicePlanes\" in a state file) are not drawn by " + name +
+                      ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
+                        return e.drawsSceneLayers;
+                      })).toStdString());
+  if (state.glyphs.shown)
+    throw UsageError(("glyphs (--glyphs, or \"glyphs\" in a state file) are not drawn by " + name +
                       ", which draws the volume alone: choose " + chosen.namesWhere([](const RendererEntry& e) {
                         return e.drawsSceneLayers;
                       })).toStdString());
@@ -657,6 +715,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
   if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
   scene.setStreamlines(lines);
+  applyGlyphOptions(p, o, scene);
   if (p.isSet(o.probe)) {
     std::vector<glm::dvec3> points;
     for (const QString& text : p.values(o.probe)) {
@@ -690,7 +749,8 @@ int runRender(const QStringList& args) {
        o.streamlines,    o.lineWidth,   o.tubes,         o.tubeRadius,   o.radiusByValue, o.arrows,       o.noSurface,
        o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,     o.fps,           o.readerOption, o.slice,
        o.representation, o.pointSize,   o.volumeOutline, o.background,   o.textScale,     o.transparent,  o.formula,
-       o.units,          o.legendTitle, o.legendNumbers, o.legendLabels, o.belowColor,    o.aboveColor,   o.title});
+       o.units,          o.legendTitle, o.legendNumbers, o.legendLabels, o.belowColor,    o.aboveColor,   o.title,
+       o.glyphs,         o.glyphColor,  o.glyphScale,    o.glyphFixed,   o.glyphEvery,    o.glyphNodes});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

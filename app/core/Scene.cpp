@@ -69,6 +69,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.transferFunction.reset();
   state_.volume.transferFunction2D.reset();  // its values and gradients were the last model's
   state_.streamlines = StreamlineLayer{};
+  state_.glyphs = GlyphLayer{};  // the last model's field
+  glyphs_.reset();
   streamlineResult_.reset();
   ++revisions_.streamlines;
   changeEverything();
@@ -313,6 +315,29 @@ std::vector<ClipPlane> Scene::slicePlanes() const {
   return planes;
 }
 
+void Scene::setGlyphs(GlyphLayer layer) {
+  if (layer.shown) {
+    if (!session_) throw std::invalid_argument("no model is open to draw glyphs on");
+    checkGlyphLayer(*session_, layer);
+    // Built now: too many glyphs is said here, not by the next frame.
+    auto built = std::make_shared<const GlyphGeometry>(buildGlyphs(*session_, layer, state_.step));
+    glyphs_ = std::move(built);
+    glyphsFor_ = std::make_tuple(session_.get(), state_.step, layer);
+  }
+  state_.glyphs = std::move(layer);
+}
+
+std::shared_ptr<const GlyphGeometry> Scene::glyphs() const {
+  if (!session_ || !state_.glyphs.shown) return nullptr;
+  const auto key = std::make_tuple(session_.get(), state_.step, state_.glyphs);
+  if (!glyphs_ || glyphsFor_ != key) {
+    glyphs_.reset();
+    glyphs_ = std::make_shared<const GlyphGeometry>(buildGlyphs(*session_, state_.glyphs, state_.step));
+    glyphsFor_ = key;
+  }
+  return glyphs_;
+}
+
 void Scene::setBackground(const glm::dvec3& rgb) {
   for (int k = 0; k < 3; ++k)
     if (!(rgb[k] >= 0.0 && rgb[k] <= 1.0)) throw std::invalid_argument("a background color's components lie in 0..1");
@@ -493,6 +518,11 @@ void Scene::setFormulas(std::vector<FormulaSpec> formulas) {
   }
   if (s.deformation.shown && !next->model().findField(s.deformation.field)) s.deformation.shown = false;
   if (s.streamlines.shown && !next->model().findField(s.streamlines.field)) s.streamlines.shown = false;
+  if (s.glyphs.shown) try {
+      checkGlyphLayer(*next, s.glyphs);
+    } catch (const std::invalid_argument&) {
+      s.glyphs.shown = false;  // a formula they showed is gone
+    }
   applyState(s, next);
 }
 
@@ -518,6 +548,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   if (s.volume.shown && !factory_.traitsOf(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   checkStreamlines(s.streamlines, checked);
+  checkGlyphLayer(checked, s.glyphs);
   checkProbes(s.probes);
   if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
@@ -727,6 +758,23 @@ std::vector<LegendPicture> Scene::legends() const {
     lines.dataMin = r.min;
     lines.dataMax = r.max;
     out.push_back({ColorMap::named(state_.colorMap), lines});
+  }
+  if (state_.glyphs.shown) {
+    try {
+      if (const auto g = glyphs(); g && g->glyphs > 0) {
+        LegendContent key;
+        key.title = QString::fromStdString(g->valueName);
+        key.subtitle = QString("%1 glyphs").arg(g->glyphs);
+        if (g->every > 1) key.subtitle += QString(", one node in %1").arg(g->every);
+        key.min = g->min;
+        key.dataMin = g->dataMin;
+        key.max = g->max;
+        key.dataMax = g->dataMax;
+        out.push_back({ColorMap::named(state_.colorMap), key});
+      }
+    } catch (const std::invalid_argument&) {
+      // too many glyphs: the drawing says why; no key for what is not drawn
+    }
   }
   for (LegendPicture& legend : out) {
     legend.content.textScale = state_.textScale;

@@ -28,6 +28,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 
 namespace volpost::app {
 
@@ -187,6 +188,15 @@ class Scene {
   void updateStreamlines();
   /// Lines are shown and the ones held belong to the current model, step and layer.
   bool streamlinesDrawn() const;
+  /// Arrows (vector field) or principal bars (tensor field) at the nodes. Checks the field,
+  /// the coloring quantity, the scale and the count first (std::invalid_argument, nothing
+  /// changed).
+  void setGlyphs(GlyphLayer layer);
+  const GlyphLayer& glyphLayer() const { return state_.glyphs; }
+  /// The glyphs at the shown step on the drawn (perhaps deformed) model, built once per
+  /// change of the layer, step or model; nullptr when none are shown. Throws
+  /// std::invalid_argument when there would be too many.
+  std::shared_ptr<const GlyphGeometry> glyphs() const;
   // ---- probed points and min/max markers (painted over the picture: paintSceneOverlay) ----
   /// Throws std::invalid_argument for more than kMaxProbes points or one not finite.
   void setProbes(std::vector<glm::dvec3> points);
@@ -345,6 +355,8 @@ class Scene {
   SceneRevisions revisions_;
 
   std::shared_ptr<const StreamlineResult> streamlineResult_;
+  mutable std::shared_ptr<const GlyphGeometry> glyphs_;
+  mutable std::tuple<const ModelSession*, std::size_t, GlyphLayer> glyphsFor_;
 };
 
 }  // namespace volpost::app

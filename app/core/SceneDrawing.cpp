@@ -72,6 +72,8 @@ void SceneDrawing::initialize() {
   undeformedUploaded_ = nullptr;
   modelLines_.initialize();
   modelLinesFor_.first = nullptr;
+  glyphRenderer_.initialize();
+  glyphsUploaded_.reset();
   streamlineRenderer_.initialize();
   initialized_ = true;
   forgetAll();  // a fresh context holds nothing
@@ -90,6 +92,8 @@ void SceneDrawing::release() {
   undeformedUploaded_ = nullptr;
   modelLines_.release();
   modelLinesFor_.first = nullptr;
+  glyphRenderer_.release();
+  glyphsUploaded_.reset();
   initialized_ = false;
   forgetAll();
 }
@@ -290,6 +294,7 @@ void SceneDrawing::renderSurface(const Scene& scene, const RenderContext& ctx) {
   // it is blended over them.
   boundary_.renderBackground(ctx);
   if (scene.streamlinesDrawn()) streamlineRenderer_.render(ctx);
+  if (applyToGlyphs(scene)) drawGlyphs(scene, ctx);
   const SurfaceRepresentation r = s.representation;
   const bool lines = r == SurfaceRepresentation::FeatureEdges || r == SurfaceRepresentation::Outline;
   // Edges would cage what shows through a see-through surface; a wireframe is its edges.
@@ -331,6 +336,33 @@ void SceneDrawing::drawUndeformedOutline(const Scene& scene, const RenderContext
   RenderContext local = ctx;
   local.origin = base.origin();
   undeformedEdges_.render(local);
+  glDisable(GL_DEPTH_TEST);
+}
+
+bool SceneDrawing::applyToGlyphs(const Scene& scene) {
+  const std::shared_ptr<const GlyphGeometry> glyphs = scene.glyphs();  // throws: too many
+  if (!glyphs || glyphs->glyphs == 0) return false;
+  if (glyphs != glyphsUploaded_) {
+    glyphRenderer_.setTriangles(glyphs->corners, scene.session()->origin());
+    glyphRenderer_.setScalars(FieldLocation::Node, SampleView(glyphs->values), glyphs->min, glyphs->max);
+    glyphsUploaded_ = glyphs;
+  }
+  return true;
+}
+
+// Lit, in the color map's colors, hidden behind what is nearer, cut by the clip planes.
+void SceneDrawing::drawGlyphs(const Scene& scene, const RenderContext& ctx) {
+  glyphRenderer_.setColorMap(ColorMap::named(scene.shown().colorMap));
+  glyphRenderer_.setShowEdges(false);
+  glyphRenderer_.setLighting(true);
+  glyphRenderer_.setClipPlanes(scene.shown().volume.allClipPlanes());
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  RenderContext local = ctx;
+  local.origin = scene.session()->origin();
+  glyphRenderer_.render(local);
   glDisable(GL_DEPTH_TEST);
 }
 
@@ -376,7 +408,8 @@ void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
   RenderContext volumeCtx = ctx;
   const bool lines = scene.streamlinesDrawn();
   const bool slices = boundary_.sliceTriangles() > 0;
-  if (v.edges || v.outline || lines || slices) {
+  const bool glyphs = applyToGlyphs(scene);
+  if (v.edges || v.outline || lines || slices || glyphs) {
     // The opaque things (edges, streamlines) drawn into the target and, depth only, into a
     // texture the volume renderer reads: its rays end at them.
     if (!depthTarget_ || depthTarget_->width() != ctx.width || depthTarget_->height() != ctx.height)
@@ -393,6 +426,7 @@ void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
       boundary_.renderBackground(pass);
       if (slices) boundary_.renderSlices(pass);
       if (lines) streamlineRenderer_.render(pass);
+      if (glyphs) drawGlyphs(scene, pass);
       if (v.edges) boundary_.renderOver(pass);
       if (v.outline) drawModelLines(scene, pass, SurfaceRepresentation::FeatureEdges);
     }

@@ -83,6 +83,11 @@ class SceneDrawing {
   BoundaryRenderer boundary_;
   SurfaceRenderer undeformedEdges_;  ///< the undeformed model's element edges (deformation's outline)
   const ModelSession* undeformedUploaded_ = nullptr;
+  SurfaceRenderer glyphRenderer_;  ///< arrows or principal bars at the nodes
+  std::shared_ptr<const GlyphGeometry> glyphsUploaded_;
+  /// Uploads the scene's glyphs when they changed; false when none are shown.
+  bool applyToGlyphs(const Scene& scene);
+  void drawGlyphs(const Scene& scene, const RenderContext& ctx);
   SurfaceRenderer modelLines_;  ///< the model's feature edges or bounding box (representations, volume outline)
   std::pair<const ModelSession*, SurfaceRepresentation> modelLinesFor_{nullptr, SurfaceRepresentation::Surface};
   /// Draws the model's feature edges or its bounding box, depth-tested, cut by the planes.

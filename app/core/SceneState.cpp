@@ -258,6 +258,37 @@ StreamlineLayer streamlinesFrom(const Reader& r, const json& in) {
   return l;
 }
 
+json jsonOf(const GlyphLayer& g) {
+  return {{"shown", g.shown},
+          {"field", g.field},
+          {"colorBy", g.colorBy},
+          {"fixedLength", g.fixedLength},
+          {"scale", g.scale ? json(*g.scale) : json("auto")},
+          {"every", g.every},
+          {"allNodes", g.allNodes}};
+}
+
+GlyphLayer glyphsFrom(const Reader& r, const json& in) {
+  GlyphLayer g;
+  if (const json* x = r.find(in, "shown")) g.shown = r.boolean(*x, "glyphs.shown");
+  if (const json* x = r.find(in, "field")) g.field = r.text(*x, "glyphs.field");
+  if (const json* x = r.find(in, "colorBy")) g.colorBy = r.text(*x, "glyphs.colorBy");
+  if (const json* x = r.find(in, "fixedLength")) g.fixedLength = r.boolean(*x, "glyphs.fixedLength");
+  if (const json* x = r.find(in, "allNodes")) g.allNodes = r.boolean(*x, "glyphs.allNodes");
+  if (const json* x = r.find(in, "scale"); x && !(x->is_string() && x->get<std::string>() == "auto")) {
+    g.scale = r.number(*x, "glyphs.scale");
+    if (!(*g.scale > 0.0)) r.fail("glyphs.scale", "must be a positive number or \"auto\"");
+  }
+  if (const json* x = r.find(in, "every")) {
+    const double every = r.number(*x, "glyphs.every");
+    if (!(every >= 0.0 && every <= 1e9) || every != std::floor(every))
+      r.fail("glyphs.every", "must be a whole number >= 0 (0: automatic)");
+    g.every = int(every);
+  }
+  if (g.shown && g.field.empty()) r.fail("glyphs", "are shown but name no field");
+  return g;
+}
+
 json jsonOf(const CameraState& camera) {
   json out = {{"eye", jsonOf(camera.eye)},
               {"target", jsonOf(camera.target)},
@@ -389,6 +420,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["textScale"] = textScale;
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
+  if (glyphs != GlyphLayer{}) out["glyphs"] = jsonOf(glyphs);
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
                         {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},
@@ -567,6 +599,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   }
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
+  if (const json* g = r.find(in, "glyphs")) s.glyphs = glyphsFrom(r, r.object(*g, "glyphs"));
   if (const json* d = r.find(in, "deformation")) {
     r.object(*d, "deformation");
     if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");

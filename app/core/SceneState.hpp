@@ -9,6 +9,7 @@
 
 #include "DisplayRange.hpp"
 #include "Formula.hpp"
+#include "Glyphs.hpp"
 #include "SurfaceRepresentation.hpp"
 
 #include "host/StreamlineStyle.hpp"
@@ -181,6 +182,7 @@ struct SceneState {
   double textScale = 1.0;
   VolumeLayer volume;
   StreamlineLayer streamlines;
+  GlyphLayer glyphs;  ///< arrows or principal bars at the nodes; "glyphs" in the file
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
   /// The line the Plot Over Line panel samples, drawn over the picture; "plotLine" in the file.

@@ -56,7 +56,9 @@ std::string suffixOf(const Quantity& q, FieldKind kind) {
 }
 
 // Cyclic Jacobi rotations: robust for every symmetric 3x3 (repeated eigenvalues too).
-std::array<double, 3> symmetricEigenvalues(double a[3][3]) {
+// `v` (when given, the identity on entry) gathers the rotations: its columns end as the
+// unit eigenvectors of a's diagonal, in a's diagonal order.
+void jacobiDiagonalize(double a[3][3], double (*v)[3]) {
   for (int sweep = 0; sweep < 50; ++sweep) {
     const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
     const double diag = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
@@ -77,8 +79,18 @@ std::array<double, 3> symmetricEigenvalues(double a[3][3]) {
           a[p][k] = c * apk - s * aqk;
           a[q][k] = s * apk + c * aqk;
         }
+        if (v)
+          for (int k = 0; k < 3; ++k) {  // V <- V J
+            const double vkp = v[k][p], vkq = v[k][q];
+            v[k][p] = c * vkp - s * vkq;
+            v[k][q] = s * vkp + c * vkq;
+          }
       }
   }
+}
+
+std::array<double, 3> symmetricEigenvalues(double a[3][3]) {
+  jacobiDiagonalize(a, nullptr);
   std::array<double, 3> ev = {a[0][0], a[1][1], a[2][2]};
   std::sort(ev.begin(), ev.end(), std::greater<>());
   return ev;
@@ -94,6 +106,20 @@ std::string Quantity::key() const {
 std::array<double, 3> principalValues(const double* t) {
   double a[3][3] = {{t[0], t[3], t[5]}, {t[3], t[1], t[4]}, {t[5], t[4], t[2]}};
   return symmetricEigenvalues(a);
+}
+
+PrincipalAxes principalAxes(const double* t) {
+  double a[3][3] = {{t[0], t[3], t[5]}, {t[3], t[1], t[4]}, {t[5], t[4], t[2]}};
+  double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  jacobiDiagonalize(a, v);
+  std::array<int, 3> order{0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int i, int j) { return a[i][i] > a[j][j]; });
+  PrincipalAxes out;
+  for (int k = 0; k < 3; ++k) {
+    out.values[std::size_t(k)] = a[order[std::size_t(k)]][order[std::size_t(k)]];
+    for (int r = 0; r < 3; ++r) out.directions[std::size_t(k)][std::size_t(r)] = v[r][order[std::size_t(k)]];
+  }
+  return out;
 }
 
 double vonMises(const double* t) {

@@ -662,6 +662,18 @@ TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
   refused("--field S.xx --renderer cpu --representation wireframe", "--representation chooses how the surface");
   refused("--field S.xx --volume-outline", "--volume-outline works with volume renderers");
   refused("--field S.xx --renderer reference --volume-outline", "--volume-outline is not drawn by reference");
+  refused("--field S.xx --glyphs S11", "glyphs need a nodal vector or symmetric tensor field; 'S11' is not one");
+  refused("--field S.xx --glyph-color S.mises", "glyph options need --glyphs FIELD");
+  refused("--field S.xx --glyphs U --glyph-every 0", "--glyph-every 0 is not a count");
+  refused("--field S.xx --glyphs U --glyph-nodes some", "--glyph-nodes some is not surface or all");
+  refused("--field S.xx --glyphs U --renderer reference", "--glyphs are not drawn by reference");
+  const auto glyphs =
+      runVolpost("render " + bar + " --field S.xx --glyphs S --glyph-nodes all --glyph-every 50 --size 96x64 -o " +
+                 png + " --save-state " + state);
+  ASSERT_EQ(glyphs.exitCode, 0) << glyphs.output;
+  std::ifstream withGlyphs(state);
+  const std::string saved3((std::istreambuf_iterator<char>(withGlyphs)), {});
+  EXPECT_NE(saved3.find("\"every\": 50"), std::string::npos) << saved3;
   refused("--field S.xx --background 2,0,0", "--background 2,0,0 is not a color");
   refused("--field S.xx --text-scale 50", "--text-scale 50 is not a factor from 0.25 to 8");
   const auto jpg = runVolpost("render " + bar + " --field S.xx --transparent -o " + (dir / "t.jpg").string());

@@ -37,6 +37,30 @@ TEST(PrincipalValues, RecoverEigenvaluesOfARotatedDiagonalTensor) {
   EXPECT_NEAR(p[2], -20.0, 1e-10);
 }
 
+// The directions are the rotation's columns (up to sign), each with its value: S d = s d.
+TEST(PrincipalAxes, DirectionsOfARotatedDiagonalTensor) {
+  const glm::dmat3 r = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(1, 2, 3))));
+  const glm::dmat3 d(glm::dvec3(30, 0, 0), glm::dvec3(0, -20, 0), glm::dvec3(0, 0, 5));
+  const glm::dmat3 s = r * d * glm::transpose(r);
+  const double t[6] = {s[0][0], s[1][1], s[2][2], s[0][1], s[1][2], s[0][2]};
+  const PrincipalAxes a = principalAxes(t);
+  EXPECT_NEAR(a.values[0], 30.0, 1e-10);
+  EXPECT_NEAR(a.values[1], 5.0, 1e-10);
+  EXPECT_NEAR(a.values[2], -20.0, 1e-10);
+  const glm::dvec3 expected[3] = {r[0], r[2], r[1]};  // the columns of 30, 5, -20
+  for (int k = 0; k < 3; ++k) {
+    const glm::dvec3 v(a.directions[k][0], a.directions[k][1], a.directions[k][2]);
+    EXPECT_NEAR(glm::length(v), 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(glm::dot(v, expected[k])), 1.0, 1e-10) << k;
+    const glm::dvec3 sv = s * v;
+    EXPECT_NEAR(glm::length(sv - a.values[k] * v), 0.0, 1e-9) << k;
+  }
+  // Equal values: any orthonormal pair in their plane, still eigenvectors.
+  const double uniaxial[6] = {0, 7, 7, 0, 0, 0};
+  const PrincipalAxes u = principalAxes(uniaxial);
+  EXPECT_NEAR(std::abs(u.directions[2][0]), 1.0, 1e-12) << "the zero value's direction is x";
+}
+
 TEST(PrincipalValues, RepeatedAndZeroEigenvalues) {
   const double iso[6] = {2, 2, 2, 0, 0, 0};
   for (double v : principalValues(iso)) EXPECT_DOUBLE_EQ(v, 2.0);

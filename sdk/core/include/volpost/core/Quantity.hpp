@@ -66,6 +66,13 @@ double evaluateComponents(const Quantity& quantity, std::span<const double> comp
 
 /// Principal values of the symmetric tensor (xx yy zz xy yz zx), sorted descending.
 std::array<double, 3> principalValues(const double* t);
+/// The principal values (descending) and their unit directions (one per value; for equal
+/// values any orthonormal choice in their plane).
+struct PrincipalAxes {
+  std::array<double, 3> values{};
+  std::array<std::array<double, 3>, 3> directions{};
+};
+PrincipalAxes principalAxes(const double* t);
 double vonMises(const double* t);
 /// The tensor's scalar for a tensor operation (VonMises .. LodeAngle); NaN where undefined
 /// (a NaN component; the triaxiality or Lode angle of a tensor without deviatoric part).
