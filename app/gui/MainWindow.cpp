@@ -12,6 +12,7 @@
 #include "ClipActions.hpp"
 #include "DeformationActions.hpp"
 #include "DisplayActions.hpp"
+#include "GlyphDialog.hpp"
 #include "GridSlicesPanel.hpp"
 #include "IsoSurfaceDialog.hpp"
 #include "LinePlotPanel.hpp"
@@ -325,6 +326,7 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
   connect(viewport_, &Viewport::clipBoxDragged, clips_, &ClipActions::applyBox);
   connect(viewport_, &Viewport::clipPlaneDragged, clips_, &ClipActions::planeDragged);
   results->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces)->setObjectName("isoSurfacesAction");
+  results->addAction("Gl&yphs...", this, &MainWindow::chooseGlyphs)->setObjectName("glyphsAction");
   results->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
       ->setObjectName("gridSlicesAction");
   streamlines_ = new StreamlineActions(
@@ -392,6 +394,31 @@ void MainWindow::openCalculator() {
       },
       this);
   dialog.exec();
+}
+
+void MainWindow::chooseGlyphs() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  GlyphDialog dialog(*scene.session(), scene.glyphLayer(), this);
+  while (dialog.exec() == QDialog::Accepted) {
+    QString bad;
+    const auto layer = dialog.layer(&bad);
+    if (!layer) {
+      QMessageBox::warning(this, "Glyphs", bad);
+      continue;
+    }
+    if (changeScene([&](Scene& s) { s.setGlyphs(*layer); })) {
+      if (const auto g = scene.glyphs())
+        statusBar()->showMessage(QString("%1 glyphs (%2 of %3 nodes)")
+                                     .arg(g->glyphs)
+                                     .arg(g->every == 1 ? QString("all") : QString("one in %1").arg(g->every))
+                                     .arg(g->candidates));
+      return;
+    }
+  }
 }
 
 void MainWindow::chooseIsoSurfaces() {

@@ -126,6 +126,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void notifyPanels();
   void buildVolumeMenu(QMenu* volume, QMenu* results);
   void chooseIsoSurfaces();
+  /// Results > Glyphs...: until the layer is accepted or the dialog cancelled.
+  void chooseGlyphs();
   void chooseSurfaceOpacity();
 
   PluginManager& plugins_;

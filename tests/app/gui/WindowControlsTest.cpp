@@ -199,6 +199,28 @@ class WindowControlsTest : public QObject {
     QFile::remove(png);
   }
 
+  void theGlyphsDialogSetsAndTurnsOffTheGlyphs() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    whenADialogOpens([](QWidget* dialog) {
+      auto* field = dialog->findChild<QComboBox*>("glyphField");
+      field->setCurrentIndex(field->findData(QString("S")));
+      dialog->findChild<QSpinBox*>("glyphEvery")->setValue(25);
+      static_cast<QDialog*>(dialog)->accept();
+    });
+    action("glyphsAction")->trigger();
+    QVERIFY(scene().glyphLayer().shown);
+    QCOMPARE(scene().glyphLayer().field, std::string("S"));
+    QCOMPARE(scene().glyphLayer().every, 25);
+    QVERIFY(window_->statusBar()->currentMessage().contains("glyphs"));
+    whenADialogOpens([](QWidget* dialog) {
+      QCOMPARE(dialog->findChild<QSpinBox*>("glyphEvery")->value(), 25);  // it shows what is set
+      dialog->findChild<QComboBox*>("glyphField")->setCurrentIndex(0);    // None
+      static_cast<QDialog*>(dialog)->accept();
+    });
+    action("glyphsAction")->trigger();
+    QVERIFY(!scene().glyphLayer().shown);
+  }
+
   void aNewModelDropsWhatTheOldOneShowed() {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     action("deformAction")->setChecked(true);
