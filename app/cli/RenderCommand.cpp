@@ -172,6 +172,10 @@ struct Options {
   QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
   QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
   QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
+  QCommandLineOption sweep{"deformation-sweep",
+                           "N pictures (or one video, as --all-steps) of the deformed shape growing from the "
+                           "undeformed model to the scale shown (--deform), for how a part moves.",
+                           "N"};
   QCommandLineOption allSteps{"all-steps", "One picture per step of the result: OUT_001.png, OUT_002.png, ... "
                                            "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
                                            "step unless --range is given)."};
@@ -288,6 +292,27 @@ void applySliceOptions(const QStringList& values, Scene& scene) {
   }
   if (grid) scene.setGridSlices(labels);  // invalid_argument (outside the grid): a usage error
   scene.setSlicePlanes(planes);
+}
+
+// --deformation-sweep: the deformed shape from scale 0 to the scale shown, in `count`
+// frames (pictures or one video); the caption names each frame's factor.
+int renderDeformationSweep(Scene& scene, const QString& out, double framesPerSecond, std::size_t count,
+                           const std::function<SceneImage()>& draw) {
+  if (!scene.deformation().shown)
+    throw UsageError("--deformation-sweep grows the deformed shape: add --deform FIELD[:SCALE]");
+  const double full = scene.deformationScale();
+  AnimationOutput output(out, count, framesPerSecond);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::fprintf(stderr, "volpost: frame %zu of %zu\n", i + 1, count);
+    DeformationLayer d = scene.deformation();
+    d.scale = full * double(i) / double(count - 1);
+    scene.setDeformation(d);
+    const QString path = output.add(draw().picture);
+    if (!output.isVideo()) std::printf("%s\n", qPrintable(QFileInfo(path).absoluteFilePath()));
+  }
+  const QString video = output.finish();
+  if (output.isVideo()) std::printf("%s\n", qPrintable(QFileInfo(video).absoluteFilePath()));
+  return 0;
 }
 
 // The state the options describe: a state file's, or the defaults, changed by every option
@@ -750,7 +775,7 @@ int runRender(const QStringList& args) {
        o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,     o.fps,           o.readerOption, o.slice,
        o.representation, o.pointSize,   o.volumeOutline, o.background,   o.textScale,     o.transparent,  o.formula,
        o.units,          o.legendTitle, o.legendNumbers, o.legendLabels, o.belowColor,    o.aboveColor,   o.title,
-       o.glyphs,         o.glyphColor,  o.glyphScale,    o.glyphFixed,   o.glyphEvery,    o.glyphNodes});
+       o.glyphs,         o.glyphColor,  o.glyphScale,    o.glyphFixed,   o.glyphEvery,    o.glyphNodes,   o.sweep});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -763,9 +788,23 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("--size %1 is not WIDTHxHEIGHT within 1..16384").arg(parser.value(o.size)).toStdString());
     const QString out = parser.value(o.output);
     const bool video = VideoFile::isVideoPath(out);
-    if (video && !parser.isSet(o.allSteps))
-      throw UsageError(QString("-o %1 is a video: it needs --all-steps (one frame per step); a single picture is "
-                               ".png or .jpg").arg(out).toStdString());
+    const bool animated = parser.isSet(o.allSteps) || parser.isSet(o.sweep);
+    if (parser.isSet(o.allSteps) && parser.isSet(o.sweep))
+      throw UsageError("--all-steps and --deformation-sweep each make an animation: give one");
+    if (video && !animated)
+      throw UsageError(QString("-o %1 is a video: it needs --all-steps (one frame per step) or --deformation-sweep N; "
+                               "a single picture is .png or .jpg")
+                           .arg(out)
+                           .toStdString());
+    int sweepFrames = 0;
+    if (parser.isSet(o.sweep)) {
+      bool ok = false;
+      sweepFrames = parser.value(o.sweep).toInt(&ok);
+      if (!ok || sweepFrames < 2 || sweepFrames > 10000)
+        throw UsageError(QString("--deformation-sweep %1 is not a frame count of 2 to 10000")
+                             .arg(parser.value(o.sweep))
+                             .toStdString());
+    }
     if (!video) try {
         pictureFormatOf(out);
       } catch (const std::invalid_argument& e) {
@@ -779,7 +818,10 @@ int runRender(const QStringList& args) {
                            .toStdString());
     double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond;
     if (parser.isSet(o.fps)) {
-      if (!video) throw UsageError("--fps is the rate of a video: -o must be .mp4, .mkv, .webm or .avi with --all-steps");
+      if (!video)
+        throw UsageError(
+            "--fps is the rate of a video: -o must be .mp4, .mkv, .webm or .avi with --all-steps or "
+            "--deformation-sweep");
       bool ok = false;
       framesPerSecond = parser.value(o.fps).toDouble(&ok);
       if (!ok || !std::isfinite(framesPerSecond) || framesPerSecond < 0.1 || framesPerSecond > 120)
@@ -790,6 +832,12 @@ int runRender(const QStringList& args) {
       for (const auto* option : {&o.step, &o.floatOut, &o.saveState})
         if (parser.isSet(*option))
           throw UsageError(QString("--%1 is for one picture; --all-steps writes one per step").arg(option->names().first()).toStdString());
+    if (parser.isSet(o.sweep))
+      for (const auto* option : {&o.floatOut, &o.saveState})
+        if (parser.isSet(*option))
+          throw UsageError(QString("--%1 is for one picture; --deformation-sweep writes one per frame")
+                               .arg(option->names().first())
+                               .toStdString());
 
     SceneState base;
     if (parser.isSet(o.state)) base = SceneState::load(pathBytes(parser.value(o.state)));
@@ -820,7 +868,7 @@ int runRender(const QStringList& args) {
       throw UsageError(QString("--threads %1 is not a thread count (1..1024, 0: all cores)").arg(parser.value(o.threads)).toStdString());
 
     // Outputs are checked before the work: a missing folder is said at once, not after it.
-    checkWritable(pathBytes(parser.isSet(o.allSteps) && !video ? framePath(out, 0, 1) : out));
+    checkWritable(pathBytes(animated && !video ? framePath(out, 0, 1) : out));
     if (parser.isSet(o.floatOut)) checkWritable(pathBytes(parser.value(o.floatOut)));
     if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
     // The plugins' renderers draw with the scene's GL layers; the reference draws alone.
@@ -862,6 +910,7 @@ int runRender(const QStringList& args) {
         return transparent ? renderTransparent(scene, [&] { return drawOnce(false); }) : drawOnce(true);
       };
       if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), draw);
+      if (sweepFrames > 0) return renderDeformationSweep(scene, out, framesPerSecond, std::size_t(sweepFrames), draw);
       const SceneImage image = draw();
       if (const auto lines = scene.streamlineResult()) {
         if (lines->outside)

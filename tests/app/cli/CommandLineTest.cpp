@@ -674,6 +674,18 @@ TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
   std::ifstream withGlyphs(state);
   const std::string saved3((std::istreambuf_iterator<char>(withGlyphs)), {});
   EXPECT_NE(saved3.find("\"every\": 50"), std::string::npos) << saved3;
+  refused("--field S.xx --deformation-sweep 3", "add --deform FIELD");
+  refused("--field S.xx --deform U --deformation-sweep 1", "--deformation-sweep 1 is not a frame count");
+  refused("--field S.xx --deform U --deformation-sweep 3 --all-steps", "give one");
+  const std::string frames = (dir / "volpost_sweep.png").string();
+  const auto sweep =
+      runVolpost("render " + bar + " --field S.xx --deform U:200 --deformation-sweep 3 --size 96x64 -o " + frames);
+  ASSERT_EQ(sweep.exitCode, 0) << sweep.output;
+  const QImage first(QString::fromStdString((dir / "volpost_sweep_001.png").string()));
+  const QImage last(QString::fromStdString((dir / "volpost_sweep_003.png").string()));
+  ASSERT_FALSE(first.isNull());
+  ASSERT_FALSE(last.isNull());
+  EXPECT_NE(first, last) << "the shape grows from the first frame to the last";
   refused("--field S.xx --background 2,0,0", "--background 2,0,0 is not a color");
   refused("--field S.xx --text-scale 50", "--text-scale 50 is not a factor from 0.25 to 8");
   const auto jpg = runVolpost("render " + bar + " --field S.xx --transparent -o " + (dir / "t.jpg").string());
