@@ -172,6 +172,13 @@ struct Options {
   QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
   QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
   QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
+  QCommandLineOption threshold{"threshold",
+                               "Draw only the cells whose Q lies in MIN..MAX (an element result by its own value, "
+                               "a nodal one by all of the cell's nodes; see --threshold-nodes), in the surface, "
+                               "the sections and the volume.",
+                               "Q:MIN:MAX"};
+  QCommandLineOption thresholdNodes{
+      "threshold-nodes", "all (default: every node of a cell in the range) or any (one is enough).", "WHICH"};
   QCommandLineOption sweep{"deformation-sweep",
                            "N pictures (or one video, as --all-steps) of the deformed shape growing from the "
                            "undeformed model to the scale shown (--deform), for how a part moves.",
@@ -223,6 +230,34 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
   const QString video = output.finish();
   if (output.isVideo()) printPath(video);
   return 0;
+}
+
+// --threshold Q:MIN:MAX, over the state file's.
+void applyThresholdOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
+  if (!p.isSet(o.threshold) && !p.isSet(o.thresholdNodes)) return;
+  ThresholdLayer t = scene.threshold();
+  if (p.isSet(o.threshold)) {
+    const QString text = p.value(o.threshold);
+    const QStringList parts = text.split(':');
+    bool okMin = false, okMax = false;
+    if (parts.size() == 3) {
+      t.quantity = parts[0].trimmed().toStdString();
+      t.min = parts[1].toDouble(&okMin);
+      t.max = parts[2].toDouble(&okMax);
+    }
+    if (parts.size() != 3 || t.quantity.empty() || !okMin || !okMax)
+      throw UsageError(
+          QString("--threshold %1 is not Q:MIN:MAX (for example S.mises:100:250)").arg(text).toStdString());
+    t.shown = true;
+  }
+  if (!t.shown) throw UsageError("--threshold-nodes needs --threshold Q:MIN:MAX");
+  if (p.isSet(o.thresholdNodes)) {
+    const QString which = p.value(o.thresholdNodes);
+    if (which != "all" && which != "any")
+      throw UsageError(QString("--threshold-nodes %1 is not all or any").arg(which).toStdString());
+    t.allNodes = which == "all";
+  }
+  scene.setThreshold(t);  // invalid_argument (unknown quantity, no cell kept): a usage error
 }
 
 // --glyphs FIELD and how they look, over the state file's glyphs.
@@ -740,6 +775,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
   if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
   scene.setStreamlines(lines);
+  applyThresholdOptions(p, o, scene);
   applyGlyphOptions(p, o, scene);
   if (p.isSet(o.probe)) {
     std::vector<glm::dvec3> points;
@@ -765,17 +801,78 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions(
-      {o.field,          o.step,        o.camera,        o.view,         o.eye,           o.target,       o.up,
-       o.viewAngle,      o.size,        o.colormap,      o.range,        o.bands,         o.symmetric,    o.noEdges,
-       o.noLegend,       o.noTriad,     o.deform,        o.undeformed,   o.flat,          o.output,       o.renderer,
-       o.mode,           o.tf,          o.tf2d,          o.clip,         o.clipBox,       o.iso,          o.volumeEdges,
-       o.samplingStep,   o.termination, o.shading,       o.floatOut,     o.threads,       o.state,        o.saveState,
-       o.streamlines,    o.lineWidth,   o.tubes,         o.tubeRadius,   o.radiusByValue, o.arrows,       o.noSurface,
-       o.surfaceOpacity, o.probe,       o.markExtremes,  o.allSteps,     o.fps,           o.readerOption, o.slice,
-       o.representation, o.pointSize,   o.volumeOutline, o.background,   o.textScale,     o.transparent,  o.formula,
-       o.units,          o.legendTitle, o.legendNumbers, o.legendLabels, o.belowColor,    o.aboveColor,   o.title,
-       o.glyphs,         o.glyphColor,  o.glyphScale,    o.glyphFixed,   o.glyphEvery,    o.glyphNodes,   o.sweep});
+  parser.addOptions({o.field,
+                     o.step,
+                     o.camera,
+                     o.view,
+                     o.eye,
+                     o.target,
+                     o.up,
+                     o.viewAngle,
+                     o.size,
+                     o.colormap,
+                     o.range,
+                     o.bands,
+                     o.symmetric,
+                     o.noEdges,
+                     o.noLegend,
+                     o.noTriad,
+                     o.deform,
+                     o.undeformed,
+                     o.flat,
+                     o.output,
+                     o.renderer,
+                     o.mode,
+                     o.tf,
+                     o.tf2d,
+                     o.clip,
+                     o.clipBox,
+                     o.iso,
+                     o.volumeEdges,
+                     o.samplingStep,
+                     o.termination,
+                     o.shading,
+                     o.floatOut,
+                     o.threads,
+                     o.state,
+                     o.saveState,
+                     o.streamlines,
+                     o.lineWidth,
+                     o.tubes,
+                     o.tubeRadius,
+                     o.radiusByValue,
+                     o.arrows,
+                     o.noSurface,
+                     o.surfaceOpacity,
+                     o.probe,
+                     o.markExtremes,
+                     o.allSteps,
+                     o.fps,
+                     o.readerOption,
+                     o.slice,
+                     o.representation,
+                     o.pointSize,
+                     o.volumeOutline,
+                     o.background,
+                     o.textScale,
+                     o.transparent,
+                     o.formula,
+                     o.units,
+                     o.legendTitle,
+                     o.legendNumbers,
+                     o.legendLabels,
+                     o.belowColor,
+                     o.aboveColor,
+                     o.title,
+                     o.glyphs,
+                     o.glyphColor,
+                     o.glyphScale,
+                     o.glyphFixed,
+                     o.glyphEvery,
+                     o.glyphNodes,
+                     o.sweep,
+                     o.threshold,
+                     o.thresholdNodes});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -923,6 +1020,10 @@ int runRender(const QStringList& args) {
           std::fprintf(stderr, "volpost: note: %zu streamline%s %s\n", std::size_t(spent), spent == 1 ? "" : "s",
                        describe(StreamlineStop::PointBudget));
       }
+      if (scene.threshold().shown)
+        std::fprintf(stderr, "volpost: note: the threshold keeps %zu of the %zu cells (%s within %g .. %g)\n",
+                     scene.session()->model().cellCount(), scene.baseSession()->model().cellCount(),
+                     scene.threshold().quantity.c_str(), scene.threshold().min, scene.threshold().max);
       if (scene.deformation().shown)
         std::fprintf(stderr, "volpost: note: drawn deformed: %s x %.6g%s\n", scene.deformation().field.c_str(),
                      scene.deformationScale(),

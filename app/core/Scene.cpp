@@ -4,9 +4,12 @@
 #include "Deformation.hpp"
 #include "Probe.hpp"
 #include "StreamlineSeeds.hpp"
+#include "Threshold.hpp"
 #include "VolumeDefaults.hpp"
 
 #include <glm/geometric.hpp>
+
+#include <QString>
 
 #include <algorithm>
 #include <atomic>
@@ -70,6 +73,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.volume.transferFunction2D.reset();  // its values and gradients were the last model's
   state_.streamlines = StreamlineLayer{};
   state_.glyphs = GlyphLayer{};  // the last model's field
+  state_.threshold = ThresholdLayer{};
   glyphs_.reset();
   streamlineResult_.reset();
   ++revisions_.streamlines;
@@ -90,14 +94,19 @@ void Scene::setDeformation(const DeformationLayer& layer) {
 void Scene::rebuildDeformation() {
   if (!baseSession_) return;
   const DeformationLayer& d = state_.deformation;
+  std::shared_ptr<const ModelSession> next = baseSession_;
   if (d.shown) {
     deformationScale_ = d.scale ? *d.scale : automaticDeformationScale(*baseSession_, d.field, state_.step);
-    session_ = deformedSession(*baseSession_, d.field, state_.step, deformationScale_);
+    next = deformedSession(*baseSession_, d.field, state_.step, deformationScale_);
   } else {
     deformationScale_ = 0.0;
-    if (session_ == baseSession_) return;
-    session_ = baseSession_;
   }
+  // The threshold keeps the cells of the (deformed) model whose values lie in its range.
+  if (state_.threshold.shown) next = thresholdedSession(*next, state_.threshold, state_.step);
+  if (next == session_) return;
+  session_ = std::move(next);
+  // Per-element values are the kept cells' now: the shown values are taken again.
+  if (view_) view_ = session_->evaluate(view_->quantity, state_.step);
   deformedStep_ = state_.step;
   ++viewVersion_;
   streamlineResult_.reset();
@@ -124,7 +133,8 @@ void Scene::setResult(const std::string& quantity, std::size_t step) {
     view_ = std::move(view);
     state_.quantity = quantity;
     state_.step = step;
-    if (state_.deformation.shown && step != deformedStep_) rebuildDeformation();  // the step's displacement
+    // The step's displacement, the step's cells within the threshold.
+    if ((state_.deformation.shown || state_.threshold.shown) && step != deformedStep_) rebuildDeformation();
   }
   ++revisions_.scalars;
   ++revisions_.values;
@@ -518,6 +528,11 @@ void Scene::setFormulas(std::vector<FormulaSpec> formulas) {
   }
   if (s.deformation.shown && !next->model().findField(s.deformation.field)) s.deformation.shown = false;
   if (s.streamlines.shown && !next->model().findField(s.streamlines.field)) s.streamlines.shown = false;
+  if (s.threshold.shown) try {
+      checkThreshold(*next, s.threshold);
+    } catch (const std::invalid_argument&) {
+      s.threshold.shown = false;  // a formula it used is gone
+    }
   if (s.glyphs.shown) try {
       checkGlyphLayer(*next, s.glyphs);
     } catch (const std::invalid_argument&) {
@@ -549,6 +564,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   checkStreamlines(s.streamlines, checked);
   checkGlyphLayer(checked, s.glyphs);
+  checkThreshold(checked, s.threshold);
   checkProbes(s.probes);
   if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
@@ -604,7 +620,25 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
     deformedStep_ = state_.step;
     changeEverything();
   }
-  if (state_.deformation.shown || session_ != baseSession_) rebuildDeformation();
+  if (state_.deformation.shown || state_.threshold.shown || session_ != baseSession_) rebuildDeformation();
+}
+
+void Scene::setThreshold(const ThresholdLayer& layer) {
+  if (layer.shown) {
+    if (!baseSession_) throw std::invalid_argument("no model is open to threshold");
+    checkThreshold(*baseSession_, layer);
+    const auto kept = thresholdedSession(*baseSession_, layer, state_.step);
+    if (kept->model().mesh().cellCount() == 0) {
+      const Quantity q = baseSession_->findQuantity(layer.quantity);
+      const ScalarView v = baseSession_->evaluate(q, std::min(state_.step, baseSession_->fieldOf(q).stepCount() - 1));
+      const auto number = [](double x) { return QString::number(x, 'g', 6).toStdString(); };
+      throw std::invalid_argument("no cell has " + layer.quantity + " within " + number(layer.min) + " .. " +
+                                  number(layer.max) + " at this step (its values: " + number(v.range.min) + " .. " +
+                                  number(v.range.max) + ")");
+    }
+  }
+  state_.threshold = layer;
+  rebuildDeformation();
 }
 
 // ---- probed points and markers ----

@@ -86,6 +86,11 @@ class Scene {
   /// or not. Throws std::invalid_argument (not a nodal vector field) and changes nothing then.
   void setDeformation(const DeformationLayer& layer);
   const DeformationLayer& deformation() const { return state_.deformation; }
+  /// Shows only the cells whose value lies in a range (see Threshold.hpp); the drawn,
+  /// probed and picked model is then theirs. Throws std::invalid_argument (unknown
+  /// quantity, bad range, no cell kept at this step) and changes nothing then.
+  void setThreshold(const ThresholdLayer& layer);
+  const ThresholdLayer& threshold() const { return state_.threshold; }
   /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
   double deformationScale() const { return deformationScale_; }
 

@@ -289,6 +289,32 @@ GlyphLayer glyphsFrom(const Reader& r, const json& in) {
   return g;
 }
 
+json jsonOf(const ThresholdLayer& t) {
+  return {{"shown", t.shown},
+          {"quantity", t.quantity},
+          {"range", json::array({t.min, t.max})},
+          {"nodes", t.allNodes ? "all" : "any"}};
+}
+
+ThresholdLayer thresholdFrom(const Reader& r, const json& in) {
+  ThresholdLayer t;
+  if (const json* x = r.find(in, "shown")) t.shown = r.boolean(*x, "threshold.shown");
+  if (const json* x = r.find(in, "quantity")) t.quantity = r.text(*x, "threshold.quantity");
+  if (const json* x = r.find(in, "range")) {
+    if (!x->is_array() || x->size() != 2) r.fail("threshold.range", "must be [min, max]");
+    t.min = r.number((*x)[0], "threshold.range[0]");
+    t.max = r.number((*x)[1], "threshold.range[1]");
+    if (!(t.min <= t.max)) r.fail("threshold.range", "needs min <= max");
+  }
+  if (const json* x = r.find(in, "nodes")) {
+    const std::string nodes = r.text(*x, "threshold.nodes");
+    if (nodes != "all" && nodes != "any") r.fail("threshold.nodes", "must be \"all\" or \"any\"");
+    t.allNodes = nodes == "all";
+  }
+  if (t.shown && t.quantity.empty()) r.fail("threshold", "is shown but names no quantity");
+  return t;
+}
+
 json jsonOf(const CameraState& camera) {
   json out = {{"eye", jsonOf(camera.eye)},
               {"target", jsonOf(camera.target)},
@@ -421,6 +447,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["volume"] = jsonOf(volume);
   out["streamlines"] = jsonOf(streamlines);
   if (glyphs != GlyphLayer{}) out["glyphs"] = jsonOf(glyphs);
+  if (threshold != ThresholdLayer{}) out["threshold"] = jsonOf(threshold);
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
                         {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},
@@ -600,6 +627,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* volume = r.find(in, "volume")) s.volume = volumeFrom(r, r.object(*volume, "volume"), fileName);
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
   if (const json* g = r.find(in, "glyphs")) s.glyphs = glyphsFrom(r, r.object(*g, "glyphs"));
+  if (const json* t = r.find(in, "threshold")) s.threshold = thresholdFrom(r, r.object(*t, "threshold"));
   if (const json* d = r.find(in, "deformation")) {
     r.object(*d, "deformation");
     if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");

@@ -11,6 +11,7 @@
 #include "Formula.hpp"
 #include "Glyphs.hpp"
 #include "SurfaceRepresentation.hpp"
+#include "Threshold.hpp"
 
 #include "host/StreamlineStyle.hpp"
 #include "host/Streamlines.hpp"
@@ -183,6 +184,9 @@ struct SceneState {
   VolumeLayer volume;
   StreamlineLayer streamlines;
   GlyphLayer glyphs;  ///< arrows or principal bars at the nodes; "glyphs" in the file
+  /// Only the cells whose value lies in a range; "threshold" in the file:
+  /// {"shown": true, "quantity": "S.mises", "range": [100, 200], "nodes": "all"}.
+  ThresholdLayer threshold;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
   /// The line the Plot Over Line panel samples, drawn over the picture; "plotLine" in the file.

@@ -27,6 +27,7 @@
 #include "StateFiles.hpp"
 #include "StepController.hpp"
 #include "StreamlineActions.hpp"
+#include "ThresholdDialog.hpp"
 #include "Viewport.hpp"
 #include "VolumeActions.hpp"
 #include "WorkWithProgress.hpp"
@@ -327,6 +328,8 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
   connect(viewport_, &Viewport::clipPlaneDragged, clips_, &ClipActions::planeDragged);
   results->addAction("&Iso-surfaces...", this, &MainWindow::chooseIsoSurfaces)->setObjectName("isoSurfacesAction");
   results->addAction("Gl&yphs...", this, &MainWindow::chooseGlyphs)->setObjectName("glyphsAction");
+  results->addAction("&Threshold...", QKeySequence(Qt::Key_T), this, &MainWindow::chooseThreshold)
+      ->setObjectName("thresholdAction");
   results->addAction("&Grid Slices...", QKeySequence(Qt::Key_G), this, &MainWindow::showGridSlices)
       ->setObjectName("gridSlicesAction");
   streamlines_ = new StreamlineActions(
@@ -338,7 +341,8 @@ void MainWindow::buildVolumeMenu(QMenu* view, QMenu* results) {
 
 void MainWindow::showGridSlices() {
   if (!session_ || !session_->model().grid) {
-    statusBar()->showMessage("Grid slices are for regular grids (SEG-Y, image data, NRRD); for meshes use View > Clip Plane");
+    statusBar()->showMessage(
+        "Grid slices are for regular grids (SEG-Y, image data, NRRD); for meshes use View > Clip Plane");
     return;
   }
   Scene& scene = viewport_->scene();
@@ -347,7 +351,8 @@ void MainWindow::showGridSlices() {
     // First use: the three middle slices, the surface out of their way.
     const RegularGrid& g = *session_->model().grid;
     std::array<std::optional<double>, 3> middle;
-    for (int a = 0; a < 3; ++a) middle[std::size_t(a)] = g.label(a, std::round(double(g.dims[std::size_t(a)] - 1) / 2.0));
+    for (int a = 0; a < 3; ++a)
+      middle[std::size_t(a)] = g.label(a, std::round(double(g.dims[std::size_t(a)] - 1) / 2.0));
     changeScene([&](Scene& s) {
       s.setGridSlices(middle);
       s.setSurfaceShown(false);
@@ -394,6 +399,31 @@ void MainWindow::openCalculator() {
       },
       this);
   dialog.exec();
+}
+
+void MainWindow::chooseThreshold() {
+  if (!session_) {
+    statusBar()->showMessage("Open a model first");
+    return;
+  }
+  Scene& scene = viewport_->scene();
+  ThresholdDialog dialog(*scene.baseSession(), scene.threshold(), scene.state().quantity, scene.step(), this);
+  while (dialog.exec() == QDialog::Accepted) {
+    QString bad;
+    const auto layer = dialog.layer(&bad);
+    if (!layer) {
+      QMessageBox::warning(this, "Threshold", bad);
+      continue;
+    }
+    if (changeScene([&](Scene& s) { s.setThreshold(*layer); })) {
+      notifyPanels();
+      if (layer->shown)
+        statusBar()->showMessage(QString("Showing %1 of %2 cells (Results > Threshold > Off shows them all)")
+                                     .arg(scene.session()->model().cellCount())
+                                     .arg(scene.baseSession()->model().cellCount()));
+      return;
+    }
+  }
 }
 
 void MainWindow::chooseGlyphs() {

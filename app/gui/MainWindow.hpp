@@ -128,6 +128,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   void chooseIsoSurfaces();
   /// Results > Glyphs...: until the layer is accepted or the dialog cancelled.
   void chooseGlyphs();
+  /// Results > Threshold...: until a range is accepted, turned off or the dialog cancelled.
+  void chooseThreshold();
   void chooseSurfaceOpacity();
 
   PluginManager& plugins_;

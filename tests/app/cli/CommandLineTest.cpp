@@ -686,6 +686,17 @@ TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
   ASSERT_FALSE(first.isNull());
   ASSERT_FALSE(last.isNull());
   EXPECT_NE(first, last) << "the shape grows from the first frame to the last";
+  refused("--field S.xx --threshold S11:200:300", "no cell has S11 within 200 .. 300 at this step");
+  refused("--field S.xx --threshold S11:200", "--threshold S11:200 is not Q:MIN:MAX");
+  refused("--field S.xx --threshold-nodes any", "--threshold-nodes needs --threshold");
+  const auto kept =
+      runVolpost("render " + bar + " --field S.xx --threshold S11:99:101 --threshold-nodes any --size 96x64 -o " + png +
+                 " --save-state " + state);
+  ASSERT_EQ(kept.exitCode, 0) << kept.output;
+  EXPECT_NE(kept.output.find("the threshold keeps"), std::string::npos) << kept.output;
+  std::ifstream withThreshold(state);
+  const std::string saved4((std::istreambuf_iterator<char>(withThreshold)), {});
+  EXPECT_NE(saved4.find("\"nodes\": \"any\""), std::string::npos) << saved4;
   refused("--field S.xx --background 2,0,0", "--background 2,0,0 is not a color");
   refused("--field S.xx --text-scale 50", "--text-scale 50 is not a factor from 0.25 to 8");
   const auto jpg = runVolpost("render " + bar + " --field S.xx --transparent -o " + (dir / "t.jpg").string());

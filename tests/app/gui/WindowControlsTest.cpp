@@ -221,6 +221,30 @@ class WindowControlsTest : public QObject {
     QVERIFY(!scene().glyphLayer().shown);
   }
 
+  void theThresholdDialogKeepsARangeAndTurnsOff() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    const std::size_t cells = scene().session()->model().cellCount();
+    whenADialogOpens([](QWidget* dialog) {
+      auto* quantity = dialog->findChild<QComboBox*>("thresholdQuantity");
+      quantity->setCurrentIndex(quantity->findData(QString("S11")));
+      dialog->findChild<QLineEdit*>("thresholdMin")->setText("99");
+      dialog->findChild<QLineEdit*>("thresholdMax")->setText("101");
+      static_cast<QDialog*>(dialog)->accept();
+    });
+    action("thresholdAction")->trigger();
+    QVERIFY(scene().threshold().shown);
+    QCOMPARE(scene().threshold().quantity, std::string("S11"));
+    QVERIFY(scene().session()->model().cellCount() < cells);
+    QVERIFY(window_->statusBar()->currentMessage().contains(QString("of %1 cells").arg(cells)));
+    whenADialogOpens([](QWidget* dialog) {
+      QCOMPARE(dialog->findChild<QLineEdit*>("thresholdMin")->text(), QString("99"));  // shows what is set
+      dialog->findChild<QPushButton*>("thresholdOff")->click();
+    });
+    action("thresholdAction")->trigger();
+    QVERIFY(!scene().threshold().shown);
+    QCOMPARE(scene().session()->model().cellCount(), cells);
+  }
+
   void aNewModelDropsWhatTheOldOneShowed() {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     action("deformAction")->setChecked(true);
