@@ -22,14 +22,18 @@ uniform bool useBelowColor;
 uniform vec3 belowColor;
 uniform bool useAboveColor;
 uniform vec3 aboveColor;
+uniform bool logScale;  // colors by log10 of the value over log10 of the range (min > 0)
 
 out vec4 fragColor;
 
 void main() {
   if (clippedAway(vModelPosition)) discard;
+  // On a log scale a value of 0 or below lies below any positive range.
+  float value = logScale ? (vValue > 0.0 ? log(vValue) : -3.0e38) : vValue;
+  float lo = logScale ? log(valueMin) : valueMin, hi = logScale ? log(valueMax) : valueMax;
   vec3 base = scalarLocation < 0 ? plainColor
              : vMissing > 0.0    ? noValueColor
-                                 : colorForValueInRange(colorMap, vValue, valueMin, valueMax, noValueColor, colorBands,
+                                 : colorForValueInRange(colorMap, value, lo, hi, noValueColor, colorBands,
                                                                         useBelowColor, belowColor, useAboveColor, aboveColor);
   if (lighting) {
     // Headlight, two-sided: a face seen head-on shows the exact color-map color.

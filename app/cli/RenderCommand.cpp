@@ -114,6 +114,9 @@ struct Options {
                                 "see-through surface or a clip).",
                                 "WHICH"};
   QCommandLineOption title{"title", "A line of text at the picture's top left (a report's caption).", "TEXT"};
+  QCommandLineOption logScale{"log-scale",
+                              "Colors by the value's logarithm, the legend in powers of ten (values of 0 and below "
+                              "lie below the range, which then starts at the smallest positive value)."};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
                                "|max|: zero in the middle of a diverging map."};
@@ -495,6 +498,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   }
   refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
   refuse(o.bands, "bands the surface's colors; a volume's colors come from its transfer function");
+  refuse(o.logScale, "colors the surface by the logarithm; a volume's colors come from its transfer function");
   refuse(o.belowColor,
          "colors the surface's values below the range; a volume's colors come from its transfer function");
   refuse(o.aboveColor,
@@ -623,6 +627,10 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     const auto r = parseRange(p.value(o.range));
     if (!r) throw UsageError(QString("--range %1 is not MIN:MAX with finite MIN < MAX, nor all-steps").arg(p.value(o.range)).toStdString());
     scene.setFixedRange(*r);
+  }
+  if (p.isSet(o.logScale)) {
+    if (p.isSet(o.symmetric)) throw UsageError("--log-scale and --symmetric: a log scale has no zero to center");
+    scene.setLogScale(true);  // invalid_argument (a typed range not above 0): a usage error
   }
   if (p.isSet(o.symmetric)) {
     if (p.isSet(o.range) && p.value(o.range) != "all-steps")
@@ -872,7 +880,8 @@ int runRender(const QStringList& args) {
                      o.glyphNodes,
                      o.sweep,
                      o.threshold,
-                     o.thresholdNodes});
+                     o.thresholdNodes,
+                     o.logScale});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

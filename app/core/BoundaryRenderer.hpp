@@ -40,6 +40,11 @@ class BoundaryRenderer {
     sections_.setColorBands(bands);
     slices_.setColorBands(bands);
   }
+  void setLogScale(bool on) {
+    surface_.setLogScale(on);
+    sections_.setLogScale(on);
+    slices_.setLogScale(on);
+  }
   void setColorMap(const ColorMap& map) {
     surface_.setColorMap(map);
     sections_.setColorMap(map);

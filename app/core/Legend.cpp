@@ -40,6 +40,27 @@ std::vector<double> niceTicks(double min, double max, int target) {
   return ticks;
 }
 
+std::vector<double> logTicks(double min, double max, int target) {
+  if (!(min > 0.0) || !(max > min)) return {min, max};
+  const int first = int(std::ceil(std::log10(min) - 1e-9)), last = int(std::floor(std::log10(max) + 1e-9));
+  std::vector<double> ticks;
+  const int decades = last - first + 1;
+  // Every power while there are at most twice as many as asked for, else every k-th.
+  const int stride = decades <= 2 * target ? 1 : (decades + target - 1) / std::max(1, target);
+  for (int k = first; k <= last; k += stride) ticks.push_back(std::pow(10.0, k));
+  if (stride == 1 && int(ticks.size()) < target) {  // few decades: 2 and 5 times each power too
+    std::vector<double> more;
+    for (int k = first - 1; k <= last; ++k)
+      for (const double m : {1.0, 2.0, 5.0}) {
+        const double v = m * std::pow(10.0, k);
+        if (v >= min * (1.0 - 1e-9) && v <= max * (1.0 + 1e-9)) more.push_back(v);
+      }
+    if (more.size() >= ticks.size()) ticks = more;
+  }
+  if (ticks.size() < 2) ticks = {min, max};
+  return ticks;
+}
+
 QString LegendNumbers::text(double value) const {
   switch (style) {
     case Style::Fixed:
@@ -111,13 +132,26 @@ QString footerNumber(const LegendNumbers& numbers, double v) {
 
 int barWidthOf(const QRect& area) { return std::max(8, area.width() / 40); }
 
+// Where a value sits along the bar, 0 at its bottom and 1 at its top.
+double barFraction(const LegendContent& c, double v) {
+  if (c.logScale && c.min > 0.0 && c.max > c.min)
+    return (std::log(v) - std::log(c.min)) / (std::log(c.max) - std::log(c.min));
+  return c.max > c.min ? (v - c.min) / (c.max - c.min) : 0.0;
+}
+
+// The value at a fraction of the bar (the inverse of barFraction).
+double valueAtFraction(const LegendContent& c, double f) {
+  if (c.logScale && c.min > 0.0 && c.max > c.min) return c.min * std::pow(c.max / c.min, f);
+  return c.min + (c.max - c.min) * f;
+}
+
 // The bands' bounds, every one when they fit the bar's height (Abaqus labels all 13 of 12
 // bands), else every k-th, the ends always.
 std::vector<double> bandBounds(const LegendContent& c, int barHeight, int lineHeight) {
   const int fit = std::max(2, barHeight / std::max(1, lineHeight));
   const int stride = std::max(1, (c.bands + fit - 1) / (fit - 1));
   std::vector<double> bounds;
-  for (int b = 0; b <= c.bands; b += stride) bounds.push_back(c.min + (c.max - c.min) * b / c.bands);
+  for (int b = 0; b <= c.bands; b += stride) bounds.push_back(valueAtFraction(c, double(b) / c.bands));
   if (c.bands % stride != 0) bounds.push_back(c.max);
   return bounds;
 }
@@ -171,8 +205,10 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
     painter.restore();
     return;
   }
-  std::vector<double> ticks =
-      c.bands > 0 ? bandBounds(c, bottom - top, fm.height()) : niceTicks(c.min, c.max, std::clamp(c.labels, 2, 20));
+  std::vector<double> ticks = c.bands > 0 ? bandBounds(c, bottom - top, fm.height())
+                              : c.logScale && c.min > 0.0 && c.max > c.min
+                                  ? logTicks(c.min, c.max, std::clamp(c.labels, 2, 20))
+                                  : niceTicks(c.min, c.max, std::clamp(c.labels, 2, 20));
   int labelWidth = labelWidthOf(fm, ticks, c.numbers);
   if (c.aboveColor || c.belowColor) labelWidth = std::max(labelWidth, fm.horizontalAdvance(QStringLiteral("above")));
   const int barRight = area.right() - labelWidth - 12;
@@ -209,9 +245,8 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   painter.setPen(textColorOver(c.onDark));
   painter.drawRect(bar);
 
-  const double span = c.max > c.min ? c.max - c.min : 1.0;
   for (double t : ticks) {
-    const int y = bar.bottom() - int(std::lround((t - c.min) / span * bar.height()));
+    const int y = bar.bottom() - int(std::lround(barFraction(c, t) * bar.height()));
     painter.drawLine(bar.right(), y, bar.right() + 4, y);
     painter.drawText(QPoint(bar.right() + 7, y + fm.ascent() / 2 - 1), c.numbers.text(t));
   }

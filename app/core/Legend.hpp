@@ -52,6 +52,8 @@ struct LegendContent {
   double textScale = 1.0;
   /// Light words for a dark background.
   bool onDark = false;
+  /// The bar is logarithmic: a value's height is its log's share of the range's (min > 0).
+  bool logScale = false;
 };
 
 /// The words' color over a background: near-black, or near-white over a dark one.
@@ -68,5 +70,9 @@ int legendWidth(const QRect& area, const LegendNumbers& numbers = {}, double tex
 
 /// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
 std::vector<double> niceTicks(double min, double max, int target = 6);
+/// Tick values for a logarithmic [min, max] (0 < min < max): the powers of ten inside it,
+/// with 2 and 5 times them while there are fewer than `target`, every k-th power when there
+/// are many more; the ends when none falls inside.
+std::vector<double> logTicks(double min, double max, int target = 6);
 
 }  // namespace volpost::app

@@ -152,6 +152,9 @@ void Scene::setColorMap(const std::string& name) {
 void Scene::setFixedRange(std::optional<DisplayRange> range) {
   if (range && !(range->max > range->min && std::isfinite(range->min) && std::isfinite(range->max)))
     throw std::invalid_argument("a color range needs finite min < max");
+  if (range && state_.logScale && !(range->min > 0.0))
+    throw std::invalid_argument("a log scale needs a positive color range: " +
+                                QString::number(range->min, 'g', 6).toStdString() + " is not above 0");
   state_.fixedRange = range;
   if (range) state_.rangeOverSteps = false;
   ++revisions_.scalars;
@@ -176,6 +179,15 @@ void Scene::setColorBands(int bands) {
     throw std::invalid_argument(std::to_string(bands) + " color bands: 0 (continuous) or 2 to " +
                                 std::to_string(kMaxColorBands));
   state_.colorBands = bands;
+  ++revisions_.colorMap;
+}
+
+void Scene::setLogScale(bool on) {
+  if (on && state_.fixedRange && !(state_.fixedRange->min > 0.0))
+    throw std::invalid_argument("a log scale needs a positive color range; the typed one starts at " +
+                                QString::number(state_.fixedRange->min, 'g', 6).toStdString());
+  state_.logScale = on;
+  ++revisions_.scalars;  // the range may change
   ++revisions_.colorMap;
 }
 
@@ -570,6 +582,8 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   checkGridSlices(checked.model().grid, s.gridSlices);
   checkSlicePlanes(s.slicePlanes);
+  if (s.logScale && s.fixedRange && !(s.fixedRange->min > 0.0))
+    throw std::invalid_argument("the state's log scale needs a positive color range (colors.range)");
   for (int k = 0; k < 3; ++k)
     if (!(s.background[k] >= 0.0 && s.background[k] <= 1.0))
       throw std::invalid_argument("the state's background color lies outside 0..1");
@@ -723,6 +737,20 @@ DisplayRange Scene::displayRange() const {
     const ValueRange all = session_->rangeOverSteps(view_->quantity);
     if (all.valid() && all.max > all.min) range = {all.min, all.max};
   }
+  if (state_.logScale) {
+    if (!(range.min > 0.0)) {
+      // The values reach 0 or below: the range starts at the smallest positive one.
+      if (smallestPositiveVersion_ != viewVersion_) {
+        smallestPositiveVersion_ = viewVersion_;
+        double smallest = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < view_->values.size(); ++i)
+          if (const double v = view_->values[i]; v > 0.0 && v < smallest) smallest = v;
+        smallestPositive_ = std::isfinite(smallest) ? std::optional(smallest) : std::nullopt;
+      }
+      if (smallestPositive_ && *smallestPositive_ < range.max) range.min = *smallestPositive_;
+    }
+    return range;  // no symmetric range on a log scale
+  }
   if (state_.symmetricRange) {
     const double m = std::max(std::abs(range.min), std::abs(range.max));
     if (m > 0.0 && std::isfinite(m)) range = {-m, m};
@@ -776,6 +804,7 @@ std::vector<LegendPicture> Scene::legends() const {
       content.min = range.min;
       content.max = range.max;
       content.bands = state_.colorBands;
+      content.logScale = state_.logScale && range.min > 0.0;
       content.belowColor = state_.belowColor;
       content.aboveColor = state_.aboveColor;
       out.push_back({ColorMap::named(state_.colorMap), content});

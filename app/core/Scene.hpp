@@ -108,6 +108,11 @@ class Scene {
   void setSymmetricRange(bool on);
   /// Discrete contour bands (0: continuous); std::invalid_argument outside 0, 2..kMaxColorBands.
   void setColorBands(int bands);
+  /// Colors by the value's logarithm: the range's lower end is the smallest positive value
+  /// when the values reach 0 or below (those are then below the range); a typed range must
+  /// be positive (std::invalid_argument otherwise, nothing changed). Overrides the
+  /// symmetric range.
+  void setLogScale(bool on);
   /// Values below (above) the range in their own color (nullopt: the map's end color);
   /// std::invalid_argument for a component outside 0..1.
   void setOutOfRangeColors(std::optional<glm::dvec3> below, std::optional<glm::dvec3> above);
@@ -353,6 +358,8 @@ class Scene {
   std::optional<ScalarView> view_;
   std::uint64_t viewVersion_ = 0;  ///< counts changes of view_ (what extremes_ was found for)
   mutable std::optional<Extremes> extremes_;
+  mutable std::optional<double> smallestPositive_;  ///< of view_, for a log scale
+  mutable std::uint64_t smallestPositiveVersion_ = ~std::uint64_t(0);
   mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
   mutable std::vector<std::optional<double>> probedValues_;
   mutable std::uint64_t probedVersion_ = ~std::uint64_t(0);  ///< viewVersion_ probedValues_ is for

@@ -121,6 +121,7 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   if (catchUp(drawn_.colorMap, now.colorMap)) {
     boundary_.setColorMap(ColorMap::named(s.colorMap));
     boundary_.setColorBands(s.colorBands);
+    boundary_.setLogScale(s.logScale);
     const auto asFloat = [](const std::optional<glm::dvec3>& c) {
       return c ? std::optional<glm::vec3>(glm::vec3(*c)) : std::nullopt;
     };

@@ -431,6 +431,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                                               : json("auto")},
                    {"symmetric", symmetricRange},
                    {"bands", colorBands},
+                   {"log", logScale},
                    {"below", belowColor ? jsonOf(*belowColor) : json(nullptr)},
                    {"above", aboveColor ? jsonOf(*aboveColor) : json(nullptr)}};
   out["surface"] = {{"shown", surfaceShown},  {"representation", toString(representation)},
@@ -574,6 +575,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
         }
         (std::string(key) == "below" ? s.belowColor : s.aboveColor) = rgb;
       }
+    if (const json* log = r.find(*colors, "log")) s.logScale = r.boolean(*log, "colors.log");
     if (const json* bands = r.find(*colors, "bands")) {
       if (!bands->is_number_integer() || bands->get<long long>() < 0 || bands->get<long long>() > kMaxColorBands ||
           bands->get<long long>() == 1)

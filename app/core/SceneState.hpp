@@ -152,6 +152,8 @@ struct SceneState {
   /// Discrete contour bands of equal width (0: continuous colors; kMaxColorBands at most);
   /// "colors.bands" in the file.
   int colorBands = 0;
+  /// Colors by the value's logarithm (the range must be positive); "colors.log" in the file.
+  bool logScale = false;
   /// Values below (above) the range in this color instead of the map's end color;
   /// "colors.below" / "colors.above" in the file: [r, g, b] (0..1) or null.
   std::optional<glm::dvec3> belowColor, aboveColor;

@@ -558,6 +558,15 @@ void MainWindow::buildColorActions(QMenu* view) {
     changeScene([on](Scene& s) { s.setSymmetricRange(on); });
     notifyPanels();
   });
+  logScaleAction_ = view->addAction("Lo&g Color Scale");
+  logScaleAction_->setObjectName("logScaleAction");
+  logScaleAction_->setCheckable(true);
+  logScaleAction_->setStatusTip("Colors by the value's logarithm; 0 and below lie below the range");
+  connect(logScaleAction_, &QAction::toggled, this, [this](bool on) {
+    changeScene([on](Scene& s) { s.setLogScale(on); });  // a typed range not above 0: the status bar says so
+    syncColorActions();
+    notifyPanels();
+  });
   outOfRangeAction_ = view->addAction("Colors &Outside the Range");
   outOfRangeAction_->setObjectName("outOfRangeAction");
   outOfRangeAction_->setCheckable(true);
@@ -657,7 +666,8 @@ void MainWindow::chooseLegendText() {
 void MainWindow::syncColorActions() {
   if (!reverseColorsAction_) return;
   const SceneState state = viewport_->scene().state();
-  const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_), c(outOfRangeAction_);
+  const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_), c(outOfRangeAction_), d(logScaleAction_);
+  logScaleAction_->setChecked(state.logScale);
   outOfRangeAction_->setChecked(state.belowColor || state.aboveColor);
   reverseColorsAction_->setChecked(ColorMap::isReversed(state.colorMap));
   symmetricRangeAction_->setChecked(state.symmetricRange);

@@ -251,6 +251,7 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glProgramUniform3fv(p, glGetUniformLocation(p, "plainColor"), 1, glm::value_ptr(plainColor));
   glProgramUniform1i(p, glGetUniformLocation(p, "colorMap"), 0);
   glProgramUniform1i(p, glGetUniformLocation(p, "colorBands"), colorBands_);
+  glProgramUniform1i(p, glGetUniformLocation(p, "logScale"), logScale_ && min_ > 0.0f ? 1 : 0);
   glProgramUniform1i(p, glGetUniformLocation(p, "useBelowColor"), belowColor_ ? 1 : 0);
   glProgramUniform1i(p, glGetUniformLocation(p, "useAboveColor"), aboveColor_ ? 1 : 0);
   const glm::vec3 below = belowColor_.value_or(glm::vec3(0.0f)), above = aboveColor_.value_or(glm::vec3(0.0f));

@@ -48,6 +48,9 @@ class SurfaceRenderer : public Renderer {
   void setColorMap(const ColorMap& map);
   /// Discrete bands of equal width over [min, max] (0: continuous colors).
   void setColorBands(int bands) { colorBands_ = bands; }
+  /// Colors by the value's logarithm over the range's (which must be positive; values of
+  /// 0 and below are below it).
+  void setLogScale(bool on) { logScale_ = on; }
   /// Values below min (above max) in this color instead of the map's end color.
   void setOutOfRangeColors(std::optional<glm::vec3> below, std::optional<glm::vec3> above) {
     belowColor_ = below;
@@ -87,6 +90,7 @@ class SurfaceRenderer : public Renderer {
   gl::Buffer surfaceVbo_, edgeVbo_, scalars_;
   gl::Texture colorMap_;
   int colorBands_ = 0;
+  bool logScale_ = false;
   std::optional<glm::vec3> belowColor_, aboveColor_;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   int location_ = -1;  ///< -1 none, 0 node, 1 cell

@@ -177,7 +177,8 @@ TEST(SceneLegend, ATitleIsPaintedAtTheTopLeftAndKept) {
 TEST(SceneImage, GridSlicesShowTheValuesAcrossTheGrid) {
   VOLPOST_SKIP_WITHOUT_GL();
   Scene scene([](const std::string&) { return nullptr; });
-  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/image_ascii.vti")));
+  scene.setSession(
+      ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/image_ascii.vti")));
   scene.setResult("temperature", 0);
   scene.setShowEdges(false);
   scene.setShowLegend(false);
@@ -295,4 +296,52 @@ TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
       EXPECT_NEAR(r.value("U.x").value(), iso, 1e-5 * std::abs(iso)) << "pixel " << x << ", " << y;
     }
   EXPECT_GT(hits, 20) << "clicks land on the iso-surface";
+}
+
+// A log scale: S.xx = 100 in the bar's middle sits halfway between 10 and 1000 in log
+// terms (mid-gray on the gray map); linearly it would be at 0.09 of the way.
+TEST(SceneImage, ALogScaleColorsByTheLogarithm) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setResult("S.xx", 0);
+  scene.setColorMap("grayscale");
+  scene.setFixedRange(DisplayRange{10.0, 1000.0});
+  scene.setShowEdges(false);
+  scene.setShowLegend(false);
+  scene.setShowTriad(false);
+  scene.setLighting(false);
+  applyCameraSpec(scene.camera(), "-y,ortho,zoom=4");
+  const auto centre = [&] { return qRed(renderSceneImage(scene, 64, 32).picture.pixel(32, 16)); };
+  EXPECT_NEAR(centre(), 90.0 / 990.0 * 255.0, 1.5);
+  scene.setLogScale(true);
+  EXPECT_NEAR(centre(), 0.5 * 255.0, 1.5);
+  scene.setColorBands(4);  // log bands: 10..31.6..100..316..1000, 100 at the third's start
+  EXPECT_NEAR(centre(), 2.5 / 4.0 * 255.0, 1.5);
+  EXPECT_THROW(scene.setFixedRange(DisplayRange{0.0, 10.0}), std::invalid_argument);
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{10.0, 1000.0})) << "a refused range changes nothing";
+  // The values' own range reaching 0 starts at the smallest positive value.
+  scene.setFixedRange(std::nullopt);
+  scene.setResult("U.magnitude", 0);
+  EXPECT_GT(scene.displayRange().min, 0.0);
+  EXPECT_EQ(scene.view()->range.min, 0.0);
+  scene.setShowLegend(true);
+  ASSERT_TRUE(scene.legend());
+  EXPECT_TRUE(scene.legend()->content.logScale);
+  EXPECT_TRUE(SceneState::fromJson(scene.state().toJson(), "/data/view.json").logScale);
+  scene.setLogScale(false);
+  scene.setFixedRange(DisplayRange{-1.0, 1.0});
+  EXPECT_THROW(scene.setLogScale(true), std::invalid_argument);
+}
+
+TEST(SceneLegend, LogTicksArePowersOfTenAndTheirMultiples) {
+  EXPECT_EQ(logTicks(1.0, 1000.0, 3), (std::vector<double>{1.0, 10.0, 100.0, 1000.0}));
+  const std::vector<double> fine = logTicks(0.03, 200.0, 6);
+  EXPECT_EQ(fine.front(), 0.05);
+  EXPECT_EQ(fine.back(), 200.0);
+  EXPECT_GE(fine.size(), 6u);
+  const std::vector<double> wide = logTicks(1.0, 1e12, 6);  // every other power
+  EXPECT_LE(wide.size(), 7u);
+  EXPECT_EQ(wide.front(), 1.0);
+  EXPECT_EQ(logTicks(2.0, 3.0, 6), (std::vector<double>{2.0, 3.0})) << "none inside: the ends";
 }
