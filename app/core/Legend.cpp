@@ -158,6 +158,24 @@ std::vector<double> bandBounds(const LegendContent& c, int barHeight, int lineHe
 
 }  // namespace
 
+QString quantityUnits(const Quantity& q, const QString& fieldUnits) {
+  switch (q.op) {
+    case ScalarOp::AngleX:
+    case ScalarOp::AngleY:
+    case ScalarOp::AngleZ:
+    case ScalarOp::LodeAngle:
+      return "deg";
+    case ScalarOp::Triaxiality:
+      return {};
+    case ScalarOp::DeviatoricJ2:
+      return fieldUnits.isEmpty() ? QString() : "(" + fieldUnits + ")^2";
+    case ScalarOp::DeviatoricJ3:
+      return fieldUnits.isEmpty() ? QString() : "(" + fieldUnits + ")^3";
+    default:
+      return fieldUnits;
+  }
+}
+
 QColor textColorOver(bool dark) { return dark ? QColor(235, 235, 235) : QColor(40, 40, 40); }
 
 bool isDarkBackground(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b < 0.5; }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <volpost/core/ColorMap.hpp>
+#include <volpost/core/Quantity.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -55,6 +56,11 @@ struct LegendContent {
   /// The bar is logarithmic: a value's height is its log's share of the range's (min > 0).
   bool logScale = false;
 };
+
+/// The units of a quantity of a field whose units are `fieldUnits`: the field's for its
+/// components, magnitudes, stresses and invariants of the first order; squared and cubed
+/// for J2 and J3; "deg" for angles and the Lode angle; none for the triaxiality (a ratio).
+QString quantityUnits(const Quantity& quantity, const QString& fieldUnits);
 
 /// The words' color over a background: near-black, or near-white over a dark one.
 QColor textColorOver(bool dark);

@@ -780,8 +780,10 @@ std::vector<LegendPicture> Scene::legends() const {
     const auto title = state_.legendTitles.find(view_->quantity.key());
     content.title =
         QString::fromStdString(title != state_.legendTitles.end() ? title->second : view_->quantity.displayName());
-    if (const auto units = state_.units.find(view_->quantity.field); units != state_.units.end())
-      content.title += QString(" [%1]").arg(QString::fromStdString(units->second));
+    const auto units = state_.units.find(view_->quantity.field);
+    const QString written =
+        quantityUnits(view_->quantity, units != state_.units.end() ? QString::fromStdString(units->second) : QString());
+    if (!written.isEmpty()) content.title += QString(" [%1]").arg(written);
     content.numbers = LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{});
     content.labels = state_.legendLabels;
     content.subtitle = stepAndLocation(*view_);

@@ -113,6 +113,7 @@ void ProbeController::plotHistory(const std::vector<std::size_t>& rows) {
 void ProbeController::refresh() {
   const Scene& scene = viewport_.scene();
   panel_->setDeformed(scene.deformation().shown);
+  panel_->setUnits(scene.shown().units);
   panel_->showProbes(session_(), scene.probes(), scene.state().step, scene.view() ? scene.view()->quantity.key() : "");
   if (!scene.probes().empty() && !dock_->isVisible()) dock_->show();
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "ProbePanel.hpp"
 
+#include "../core/Legend.hpp"
 #include "../core/Measure.hpp"
 #include "../core/ProbeTable.hpp"
 #include "../core/SceneState.hpp"
@@ -138,12 +139,23 @@ void ProbePanel::showProbes(std::shared_ptr<const ModelSession> session, const s
   fillPicks();
 }
 
+QString ProbePanel::withUnits(const Quantity& q) const {
+  const auto units = units_.find(q.field);
+  const QString written = quantityUnits(q, units != units_.end() ? QString::fromStdString(units->second) : QString());
+  return QString::fromStdString(q.key()) + (written.isEmpty() ? QString() : " [" + written + "]");
+}
+
 void ProbePanel::fillPicks() {
   const int selected = picks_->currentRow();
   const QSignalBlocker block(picks_);
   picks_->setRowCount(int(results_.size()));
-  picks_->setHorizontalHeaderLabels(
-      {"#", "x", "y", "z", "element", quantityKey_.empty() ? QString("value") : QString::fromStdString(quantityKey_)});
+  QString valueHeader = quantityKey_.empty() ? QString("value") : QString::fromStdString(quantityKey_);
+  if (session_ && !quantityKey_.empty()) try {
+      valueHeader = withUnits(session_->findQuantity(quantityKey_));
+    } catch (const std::exception&) {
+      // a quantity of another model: its key as it is
+    }
+  picks_->setHorizontalHeaderLabels({"#", "x", "y", "z", "element", valueHeader});
   for (int row = 0; row < int(results_.size()); ++row) {
     const ProbeResult& r = results_[std::size_t(row)];
     const auto value = r.inside() && !quantityKey_.empty() ? r.value(quantityKey_) : std::nullopt;
@@ -213,8 +225,8 @@ void ProbePanel::fillDetails() {
     for (const ProbedQuantity& q : f.quantities) {
       const int at = details_->rowCount();
       details_->insertRow(at);
-      details_->setItem(at, 0, readOnly(QString::fromStdString(q.quantity.key()) +
-                                        (f.location == FieldLocation::Cell ? " (element)" : "")));
+      details_->setItem(at, 0,
+                        readOnly(withUnits(q.quantity) + (f.location == FieldLocation::Cell ? " (element)" : "")));
       details_->setItem(at, 1, readOnlyNumber(q.value));
     }
   details_->resizeColumnsToContents();

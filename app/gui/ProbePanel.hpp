@@ -9,6 +9,7 @@
 
 #include <QWidget>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -29,6 +30,8 @@ class ProbePanel : public QWidget {
   /// What to probe: the model, the points, the step and the quantity shown (its column).
   /// The points are on the deformed shape (measures say so).
   void setDeformed(bool deformed) { deformed_ = deformed; }
+  /// Units by field name (View > Legend Text and Numbers), written after each quantity.
+  void setUnits(std::map<std::string, std::string> units) { units_ = std::move(units); }
   void showProbes(std::shared_ptr<const ModelSession> session, const std::vector<glm::dvec3>& points, std::size_t step,
                   const std::string& quantityKey);
   const std::vector<ProbeResult>& results() const { return results_; }
@@ -57,6 +60,9 @@ class ProbePanel : public QWidget {
   bool deformed_ = false;
   std::vector<ProbeResult> results_;
   std::string quantityKey_;
+  std::map<std::string, std::string> units_;
+  /// "S.mises [MPa]": the quantity and its units, when the field has some.
+  QString withUnits(const Quantity& q) const;
   QSpinBox* digits_ = nullptr;
   QLineEdit* typed_ = nullptr;
   QTableWidget* picks_ = nullptr;

@@ -334,6 +334,24 @@ TEST(SceneImage, ALogScaleColorsByTheLogarithm) {
   EXPECT_THROW(scene.setLogScale(true), std::invalid_argument);
 }
 
+TEST(SceneLegend, QuantitiesTakeTheirOwnUnits) {
+  Quantity q;
+  q.field = "S";
+  q.fieldKind = FieldKind::SymTensor;
+  q.op = ScalarOp::VonMises;
+  EXPECT_EQ(quantityUnits(q, "MPa"), QString("MPa"));
+  q.op = ScalarOp::DeviatoricJ2;
+  EXPECT_EQ(quantityUnits(q, "MPa"), QString("(MPa)^2"));
+  q.op = ScalarOp::DeviatoricJ3;
+  EXPECT_EQ(quantityUnits(q, "MPa"), QString("(MPa)^3"));
+  q.op = ScalarOp::Triaxiality;
+  EXPECT_EQ(quantityUnits(q, "MPa"), QString());
+  q.op = ScalarOp::LodeAngle;
+  EXPECT_EQ(quantityUnits(q, ""), QString("deg"));
+  q.op = ScalarOp::DeviatoricJ2;
+  EXPECT_EQ(quantityUnits(q, ""), QString()) << "no units typed: none squared";
+}
+
 TEST(SceneLegend, LogTicksArePowersOfTenAndTheirMultiples) {
   EXPECT_EQ(logTicks(1.0, 1000.0, 3), (std::vector<double>{1.0, 10.0, 100.0, 1000.0}));
   const std::vector<double> fine = logTicks(0.03, 200.0, 6);

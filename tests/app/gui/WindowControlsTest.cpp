@@ -340,6 +340,7 @@ class WindowControlsTest : public QObject {
 
   void probedNumbersAreReadableAndTypedPointsTakeSpaces() {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    scene().setUnits("S", "MPa");  // written after each of S's quantities, as the legend does
     auto* typed = window_->findChild<QLineEdit*>("probeTyped");
     QVERIFY(typed);
     typed->setFocus();
@@ -357,6 +358,10 @@ class WindowControlsTest : public QObject {
       QVERIFY2(digits.size() <= 6, qPrintable(shown));       // 16-17 digits before
       QVERIFY(!details->item(row, 1)->toolTip().isEmpty());  // every digit on hover
     }
+    const auto listed = details->findItems("S.mises [MPa]", Qt::MatchExactly);
+    QVERIFY(!listed.isEmpty());
+    QVERIFY(!details->findItems("S.j2 [(MPa)^2]", Qt::MatchExactly).isEmpty());
+    QVERIFY(!details->findItems("S.triaxiality", Qt::MatchExactly).isEmpty());  // a ratio: no units
   }
 
   void theSampledLineIsDrawnAndKeptInTheState() {
