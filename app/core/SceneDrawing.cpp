@@ -24,6 +24,19 @@ void requireVolumeMemory(const Model& model, const Mesh& tets) {
                     " tetrahedra (about 96 bytes per tet)");
 }
 
+// Draws `renderer` (positions relative to `origin`) into ctx's target, hidden behind what
+// is nearer there.
+void drawDepthTested(SurfaceRenderer& renderer, const RenderContext& ctx, const glm::dvec3& origin) {
+  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
+  glViewport(0, 0, ctx.width, ctx.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  RenderContext local = ctx;
+  local.origin = origin;
+  renderer.render(local);
+  glDisable(GL_DEPTH_TEST);
+}
+
 constexpr SceneRevisions never() {
   constexpr std::uint64_t n = ~std::uint64_t(0);
   return {n, n, n, n, n, n, n, n, n, n, n, n};
@@ -330,14 +343,7 @@ void SceneDrawing::drawUndeformedOutline(const Scene& scene, const RenderContext
   undeformedEdges_.edgeColor = {0.55f, 0.57f, 0.62f};
   const double tolerance = 1e-5 * std::max(base.bounds().diagonal(), 1e-300);
   undeformedEdges_.setClipPlanes(scene.shown().volume.allClipPlanes(), tolerance);
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  RenderContext local = ctx;
-  local.origin = base.origin();
-  undeformedEdges_.render(local);
-  glDisable(GL_DEPTH_TEST);
+  drawDepthTested(undeformedEdges_, ctx, base.origin());
 }
 
 bool SceneDrawing::applyToGlyphs(const Scene& scene) {
@@ -357,14 +363,7 @@ void SceneDrawing::drawGlyphs(const Scene& scene, const RenderContext& ctx) {
   glyphRenderer_.setShowEdges(false);
   glyphRenderer_.setLighting(true);
   glyphRenderer_.setClipPlanes(scene.shown().volume.allClipPlanes());
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  RenderContext local = ctx;
-  local.origin = scene.session()->origin();
-  glyphRenderer_.render(local);
-  glDisable(GL_DEPTH_TEST);
+  drawDepthTested(glyphRenderer_, ctx, scene.session()->origin());
 }
 
 // The model's feature edges (creases and borders) or its bounding box's twelve edges, in
@@ -391,14 +390,7 @@ void SceneDrawing::drawModelLines(const Scene& scene, const RenderContext& ctx, 
   modelLines_.setShowEdges(true);
   const double tolerance = 1e-5 * std::max(session.bounds().diagonal(), 1e-300);
   modelLines_.setClipPlanes(scene.shown().volume.allClipPlanes(), tolerance);
-  glBindFramebuffer(GL_FRAMEBUFFER, ctx.framebuffer);
-  glViewport(0, 0, ctx.width, ctx.height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  RenderContext local = ctx;
-  local.origin = session.origin();
-  modelLines_.render(local);
-  glDisable(GL_DEPTH_TEST);
+  drawDepthTested(modelLines_, ctx, session.origin());
 }
 
 // The element edges stay visible over the volume and end its rays: they are drawn into

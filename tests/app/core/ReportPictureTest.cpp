@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Report pictures: a transparent background recovered from pictures over black and white,
 // a background color of one's own with words that stay readable, and the words' size.
+#include "support/BarPicture.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -16,19 +17,7 @@ using namespace volpost::app;
 
 namespace {
 
-std::unique_ptr<Scene> barScene() {
-  auto scene = std::make_unique<Scene>([](const std::string&) { return nullptr; });
-  scene->setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
-  scene->setResult("S.xx", 0);
-  scene->setColorMap("viridis");
-  scene->setFixedRange(DisplayRange{90.0, 110.0});
-  scene->setShowEdges(false);
-  scene->setShowLegend(false);
-  scene->setShowTriad(false);
-  scene->setLighting(false);
-  applyCameraSpec(scene->camera(), "-y,ortho,zoom=2");
-  return scene;
-}
+std::unique_ptr<Scene> barScene() { return volpost::test::flatBarScene("viridis"); }
 
 }  // namespace
 

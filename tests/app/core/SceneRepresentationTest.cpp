@@ -2,6 +2,7 @@
 // How the boundary is drawn (surface, wireframe, points, feature edges, outline) and free
 // slices, on the bar pulled by 100 MPa: S.xx = 100 in its middle, mid-gray over 90..110 on
 // the gray map, seen square-on from -y.
+#include "support/BarPicture.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -17,19 +18,7 @@ using namespace volpost::app;
 
 namespace {
 
-std::unique_ptr<Scene> barScene() {
-  auto scene = std::make_unique<Scene>([](const std::string&) { return nullptr; });
-  scene->setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
-  scene->setResult("S.xx", 0);
-  scene->setColorMap("grayscale");
-  scene->setFixedRange(DisplayRange{90.0, 110.0});
-  scene->setShowEdges(false);
-  scene->setShowLegend(false);
-  scene->setShowTriad(false);
-  scene->setLighting(false);
-  applyCameraSpec(scene->camera(), "-y,ortho,zoom=2");
-  return scene;
-}
+std::unique_ptr<Scene> barScene() { return volpost::test::flatBarScene("grayscale"); }
 
 bool midGray(QRgb p) { return std::abs(qRed(p) - 128) <= 3 && qRed(p) == qGreen(p) && qGreen(p) == qBlue(p); }
 // The map's colors (viridis has no gray) and the edges' dark gray.
