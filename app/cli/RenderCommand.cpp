@@ -117,6 +117,9 @@ struct Options {
   QCommandLineOption logScale{"log-scale",
                               "Colors by the value's logarithm, the legend in powers of ten (values of 0 and below "
                               "lie below the range, which then starts at the smallest positive value)."};
+  QCommandLineOption ownRange{"no-symmetric",
+                              "The values' own range even on a diverging map (by default a diverging map such as "
+                              "cool-warm spans -M..M for values of both signs)."};
   QCommandLineOption symmetric{"symmetric",
                                "Widen the values' own color range to -M..M, M the larger of |min| and "
                                "|max|: zero in the middle of a diverging map."};
@@ -632,6 +635,10 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     if (p.isSet(o.symmetric)) throw UsageError("--log-scale and --symmetric: a log scale has no zero to center");
     scene.setLogScale(true);  // invalid_argument (a typed range not above 0): a usage error
   }
+  if (p.isSet(o.ownRange)) {
+    if (p.isSet(o.symmetric)) throw UsageError("--symmetric and --no-symmetric: give one");
+    scene.setSymmetricRange(false);
+  }
   if (p.isSet(o.symmetric)) {
     if (p.isSet(o.range) && p.value(o.range) != "all-steps")
       throw UsageError("--symmetric widens the values' own range; a typed --range is used as it is");
@@ -822,6 +829,7 @@ int runRender(const QStringList& args) {
                      o.range,
                      o.bands,
                      o.symmetric,
+                     o.ownRange,
                      o.noEdges,
                      o.noLegend,
                      o.noTriad,

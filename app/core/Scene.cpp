@@ -143,8 +143,10 @@ void Scene::setResult(const std::string& quantity, std::size_t step) {
 
 void Scene::setColorMap(const std::string& name) {
   (void)ColorMap::named(name);  // throws for an unknown name
+  const DisplayRange before = displayRange();
   state_.colorMap = name;
   ++revisions_.colorMap;
+  if (displayRange() != before) ++revisions_.scalars;  // an automatic symmetric range follows the map
   ++revisions_.streamlines;
   if (!state_.volume.transferFunction) ++revisions_.tables;  // the default takes the map's colors
 }
@@ -170,8 +172,28 @@ void Scene::setRangeOverSteps(bool on) {
 
 void Scene::setSymmetricRange(bool on) {
   state_.symmetricRange = on;
+  state_.symmetricAuto = false;
   ++revisions_.scalars;
   if (!state_.volume.transferFunction) ++revisions_.tables;
+}
+
+void Scene::setSymmetricRangeAutomatic() {
+  state_.symmetricAuto = true;
+  ++revisions_.scalars;
+  if (!state_.volume.transferFunction) ++revisions_.tables;
+}
+
+bool Scene::symmetricRangeShown() const {
+  if (state_.fixedRange || state_.logScale) return false;
+  if (!state_.symmetricAuto) return state_.symmetricRange;
+  if (!divergingMap() || !view_ || !view_->range.valid()) return false;
+  return view_->range.min < 0.0 && view_->range.max > 0.0;  // signed values: zero in the middle
+}
+
+bool Scene::divergingMap() const {
+  const std::string base =
+      ColorMap::isReversed(state_.colorMap) ? ColorMap::reversedName(state_.colorMap) : state_.colorMap;
+  return base == "cool-warm" || base == "seismic";
 }
 
 void Scene::setColorBands(int bands) {
@@ -751,7 +773,7 @@ DisplayRange Scene::displayRange() const {
     }
     return range;  // no symmetric range on a log scale
   }
-  if (state_.symmetricRange) {
+  if (state_.symmetricAuto ? divergingMap() && range.min < 0.0 && range.max > 0.0 : state_.symmetricRange) {
     const double m = std::max(std::abs(range.min), std::abs(range.max));
     if (m > 0.0 && std::isfinite(m)) range = {-m, m};
   }

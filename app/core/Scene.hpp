@@ -106,6 +106,12 @@ class Scene {
   void setRangeOverSteps(bool on);
   /// The values' own range widened to be symmetric about zero (see SceneState).
   void setSymmetricRange(bool on);
+  /// Back to the automatic choice: symmetric on a diverging map for values of both signs.
+  void setSymmetricRangeAutomatic();
+  /// Whether the range shown is widened to be symmetric now (chosen, or automatic).
+  bool symmetricRangeShown() const;
+  /// The color map is a diverging one (cool-warm, seismic, either way round).
+  bool divergingMap() const;
   /// Discrete contour bands (0: continuous); std::invalid_argument outside 0, 2..kMaxColorBands.
   void setColorBands(int bands);
   /// Colors by the value's logarithm: the range's lower end is the smallest positive value

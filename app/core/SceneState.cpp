@@ -429,7 +429,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
                    {"range", fixedRange       ? json::array({fixedRange->min, fixedRange->max})
                              : rangeOverSteps ? json("all-steps")
                                               : json("auto")},
-                   {"symmetric", symmetricRange},
+                   {"symmetric", symmetricAuto ? json("auto") : json(symmetricRange)},
                    {"bands", colorBands},
                    {"log", logScale},
                    {"below", belowColor ? jsonOf(*belowColor) : json(nullptr)},
@@ -562,8 +562,10 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* colors = r.find(in, "colors")) {
     r.object(*colors, "colors");
     if (const json* m = r.find(*colors, "map")) s.colorMap = r.text(*m, "colors.map");
-    if (const json* symmetric = r.find(*colors, "symmetric"))
-      s.symmetricRange = r.boolean(*symmetric, "colors.symmetric");
+    if (const json* symmetric = r.find(*colors, "symmetric")) {
+      s.symmetricAuto = symmetric->is_string() && symmetric->get<std::string>() == "auto";
+      if (!s.symmetricAuto) s.symmetricRange = r.boolean(*symmetric, "colors.symmetric");
+    }
     for (const char* key : {"below", "above"})
       if (const json* c = r.find(*colors, key); c && !c->is_null()) {
         const std::string name = std::string("colors.") + key;

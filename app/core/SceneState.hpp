@@ -149,6 +149,9 @@ struct SceneState {
   /// The values' own range widened to [-m, m], m the larger of |min| and |max|: zero in
   /// the middle of a diverging map (not with a fixed range). "colors.symmetric" in the file.
   bool symmetricRange = false;
+  /// Automatic (until the user chooses): symmetric on a diverging map (cool-warm, seismic)
+  /// for values of both signs, the values' own range otherwise. "colors.symmetric": "auto".
+  bool symmetricAuto = true;
   /// Discrete contour bands of equal width (0: continuous colors; kMaxColorBands at most);
   /// "colors.bands" in the file.
   int colorBands = 0;

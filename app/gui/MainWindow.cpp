@@ -670,7 +670,7 @@ void MainWindow::syncColorActions() {
   logScaleAction_->setChecked(state.logScale);
   outOfRangeAction_->setChecked(state.belowColor || state.aboveColor);
   reverseColorsAction_->setChecked(ColorMap::isReversed(state.colorMap));
-  symmetricRangeAction_->setChecked(state.symmetricRange);
+  symmetricRangeAction_->setChecked(viewport_->scene().symmetricRangeShown());
   colorBandsAction_->setText(state.colorBands ? QString("Color &Bands (%1)...").arg(state.colorBands)
                                               : QString("Color &Bands (continuous)..."));
 }

@@ -363,3 +363,33 @@ TEST(SceneLegend, LogTicksArePowersOfTenAndTheirMultiples) {
   EXPECT_EQ(wide.front(), 1.0);
   EXPECT_EQ(logTicks(2.0, 3.0, 6), (std::vector<double>{2.0, 3.0})) << "none inside: the ends";
 }
+
+// A diverging map centres zero by default for values of both signs; another map, one-signed
+// values or the user's own choice keep the values' own range.
+TEST(SceneLegend, ADivergingMapIsSymmetricForSignedValuesUnlessChosenOtherwise) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("bar/bar_tet4.vtu")));
+  scene.setResult("S.xy", 0);
+  const ValueRange own = scene.view()->range;
+  ASSERT_LT(own.min, 0.0);
+  ASSERT_GT(own.max, 0.0);
+  const double m = std::max(-own.min, own.max);
+  EXPECT_EQ(scene.state().colorMap, "cool-warm");
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{-m, m}));
+  EXPECT_TRUE(scene.symmetricRangeShown());
+  scene.setColorMap("viridis");
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{own.min, own.max}));
+  scene.setColorMap("seismic-reversed");
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{-m, m}));
+  scene.setResult("S.mises", 0);  // one sign: its own range
+  EXPECT_EQ(scene.displayRange().min, scene.view()->range.min);
+  scene.setResult("S.xy", 0);
+  EXPECT_EQ(SceneState::fromJson(scene.state().toJson(), "/v.json").symmetricAuto, true);
+  scene.setSymmetricRange(false);  // chosen: kept, in the file too
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{own.min, own.max}));
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/v.json");
+  EXPECT_FALSE(back.symmetricAuto);
+  EXPECT_FALSE(back.symmetricRange);
+  scene.setSymmetricRangeAutomatic();
+  EXPECT_EQ(scene.displayRange(), (DisplayRange{-m, m}));
+}
