@@ -113,6 +113,9 @@ struct Options {
                                 "surface (default: the nodes an opaque model shows) or all (inside too, for a "
                                 "see-through surface or a clip).",
                                 "WHICH"};
+  QCommandLineOption stepText{"step-text",
+                              "Write the shown result and its step (or time) under the title: each frame of "
+                              "--all-steps says which step it is."};
   QCommandLineOption title{"title", "A line of text at the picture's top left (a report's caption).", "TEXT"};
   QCommandLineOption logScale{"log-scale",
                               "Colors by the value's logarithm, the legend in powers of ten (values of 0 and below "
@@ -679,6 +682,10 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     scene.setOutOfRangeColors(colorOf(o.belowColor), colorOf(o.aboveColor));
   }
   if (p.isSet(o.title)) scene.setTitle(p.value(o.title).toStdString());
+  if (p.isSet(o.stepText)) {
+    if (!scene.view()) throw UsageError("--step-text writes the shown result's step: add --field Q");
+    scene.setStepText(true);
+  }
   if (p.isSet(o.background)) {
     const auto c = parseColor(p.value(o.background));
     if (!c)
@@ -889,7 +896,8 @@ int runRender(const QStringList& args) {
                      o.sweep,
                      o.threshold,
                      o.thresholdNodes,
-                     o.logScale});
+                     o.logScale,
+                     o.stepText});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {

@@ -129,6 +129,9 @@ class Scene {
   /// A line of text at the picture's top left (empty: none); std::invalid_argument over 200
   /// bytes or with a line break.
   void setTitle(const std::string& title);
+  /// The shown result and its step (or time) written under the title: an animation's frames
+  /// say which step each is.
+  void setStepText(bool on) { state_.stepText = on; }
   /// The legend's title for a quantity (empty: its own name); units of a field, shown after
   /// the title ("S von Mises [MPa]"); std::invalid_argument for text over 200 bytes.
   void setLegendTitle(const std::string& quantity, const std::string& title);

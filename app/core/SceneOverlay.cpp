@@ -259,7 +259,10 @@ std::optional<QPointF> PointInArea::operator()(const glm::dvec3& p) const {
 // about the picture: the deformation's factor when the shape is drawn deformed.
 void paintCaption(QPainter& painter, const QRect& room, const Scene& scene) {
   QStringList lines;
-  if (!scene.state().title.empty()) lines << QString::fromStdString(scene.state().title);
+  if (!scene.shown().title.empty()) lines << QString::fromStdString(scene.shown().title);
+  if (scene.shown().stepText && scene.view())
+    lines << QString("%1, %2").arg(QString::fromStdString(scene.view()->quantity.displayName()),
+                                   QString::fromStdString(scene.view()->stepLabel));
   if (scene.deformation().shown && scene.deformationScale() != 0.0)
     lines << QString("Deformed shape: %1 x %2")
                  .arg(QString::fromStdString(scene.deformation().field))
@@ -270,7 +273,7 @@ void paintCaption(QPainter& painter, const QRect& room, const Scene& scene) {
   int y = room.top() + 6;
   for (int i = 0; i < lines.size(); ++i) {
     QFont lineFont = font;
-    if (i == 0 && !scene.state().title.empty()) {
+    if (i == 0 && !scene.shown().title.empty()) {
       lineFont.setPixelSize(int(font.pixelSize() * 1.4));
       lineFont.setBold(true);
     }

@@ -440,6 +440,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   if (!slicePlanes.empty()) out["slicePlanes"] = jsonOf(slicePlanes);
   out["legend"] = legend;
   if (!title.empty()) out["title"] = title;
+  if (stepText) out["stepText"] = true;
   out["legendText"] = {
       {"titles", legendTitles}, {"units", units}, {"numbers", legendNumbers}, {"labels", legendLabels}};
   out["triad"] = triad;
@@ -619,6 +620,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   }
   if (const json* legend = r.find(in, "legend")) s.legend = r.boolean(*legend, "legend");
   if (const json* triad = r.find(in, "triad")) s.triad = r.boolean(*triad, "triad");
+  if (const json* x = r.find(in, "stepText")) s.stepText = r.boolean(*x, "stepText");
   if (const json* x = r.find(in, "background")) {
     s.background = r.vec3(*x, "background");
     for (int k = 0; k < 3; ++k)

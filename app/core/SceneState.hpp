@@ -174,6 +174,8 @@ struct SceneState {
   bool legend = true;
   /// A line of text at the picture's top left (a report's caption); "title" in the file.
   std::string title;
+  /// The shown result's name and step (or time) written under the title; "stepText".
+  bool stepText = false;
   /// The legend's words and numbers; "legendText" in the file: {"titles": {"S.mises":
   /// "Equivalent stress"}, "units": {"S": "MPa"}, "numbers": "fixed:2", "labels": 6}.
   std::map<std::string, std::string> legendTitles;  ///< by quantity (written form)

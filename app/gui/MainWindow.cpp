@@ -587,6 +587,12 @@ void MainWindow::buildColorActions(QMenu* view) {
                     if (ok) changeScene([&](Scene& s) { s.setTitle(text.trimmed().toStdString()); });
                   })
       ->setObjectName("pictureTitleAction");
+  stepTextAction_ = view->addAction("&Step in the Picture");
+  stepTextAction_->setObjectName("stepTextAction");
+  stepTextAction_->setCheckable(true);
+  stepTextAction_->setStatusTip("The shown result and its step or time written under the title (pictures and videos)");
+  connect(stepTextAction_, &QAction::toggled, this,
+          [this](bool on) { changeScene([on](Scene& s) { s.setStepText(on); }); });
   view->addAction("Legend &Text and Numbers...", this, &MainWindow::chooseLegendText)
       ->setObjectName("legendTextAction");
   colorBandsAction_ = view->addAction("Color &Bands...");
@@ -668,6 +674,10 @@ void MainWindow::syncColorActions() {
   const SceneState state = viewport_->scene().state();
   const QSignalBlocker a(reverseColorsAction_), b(symmetricRangeAction_), c(outOfRangeAction_), d(logScaleAction_);
   logScaleAction_->setChecked(state.logScale);
+  if (stepTextAction_) {
+    const QSignalBlocker e(stepTextAction_);
+    stepTextAction_->setChecked(state.stepText);
+  }
   outOfRangeAction_->setChecked(state.belowColor || state.aboveColor);
   reverseColorsAction_->setChecked(ColorMap::isReversed(state.colorMap));
   symmetricRangeAction_->setChecked(viewport_->scene().symmetricRangeShown());

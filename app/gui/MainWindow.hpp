@@ -148,6 +148,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   QAction* reverseColorsAction_ = nullptr;
   QAction* symmetricRangeAction_ = nullptr;
   QAction* logScaleAction_ = nullptr;
+  QAction* stepTextAction_ = nullptr;
   QAction* colorBandsAction_ = nullptr;
   QAction* outOfRangeAction_ = nullptr;
   /// The color map the toolbar and View > Reverse Color Map ask for ("viridis-reversed").

@@ -699,6 +699,10 @@ TEST(RenderCommand, RepresentationsSlicesAndTheVolumeOutline) {
   EXPECT_NE(saved4.find("\"nodes\": \"any\""), std::string::npos) << saved4;
   refused("--field S.xx --log-scale --symmetric", "a log scale has no zero to center");
   refused("--field S.xy --symmetric --no-symmetric", "--symmetric and --no-symmetric: give one");
+  const auto noField = runVolpost("render " + bar + " --step-text -o " + png);
+  EXPECT_EQ(noField.exitCode, 2);
+  EXPECT_NE(noField.output.find("--step-text writes the shown result's step: add --field Q"), std::string::npos)
+      << noField.output;
   refused("--field S.xx --log-scale --range -1:1", "a log scale needs a positive color range");
   refused("--field S.xx --log-scale --renderer cpu", "--log-scale colors the surface by the logarithm");
   refused("--field S.xx --background 2,0,0", "--background 2,0,0 is not a color");

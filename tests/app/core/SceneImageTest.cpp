@@ -168,6 +168,13 @@ TEST(SceneLegend, ATitleIsPaintedAtTheTopLeftAndKept) {
   EXPECT_EQ(SceneState::fromJson(scene.state().toJson(), "/v.json").title, "Bar: axial stress");
   EXPECT_THROW(scene.setTitle("two\nlines"), std::invalid_argument);
   EXPECT_THROW(scene.setTitle(std::string(201, 'x')), std::invalid_argument);
+  // The step written under it: more words, kept in the file; nothing without a result.
+  const int titleOnly = darkAtTopLeft();
+  scene.setStepText(true);
+  EXPECT_EQ(darkAtTopLeft(), titleOnly) << "no result shown: no step to write";
+  scene.setResult("S.mises", 0);
+  EXPECT_GT(darkAtTopLeft(), titleOnly + 30);
+  EXPECT_TRUE(SceneState::fromJson(scene.state().toJson(), "/v.json").stepText);
 }
 
 // A regular grid's slices: nothing drawn without them (surface hidden); a slice draws the
