@@ -244,8 +244,11 @@ void MainWindow::buildActions() {
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
   view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)
       ->setObjectName("surfaceOpacityAction");
-  display_ = new DisplayActions(*this, viewport_->scene(), *view,
-                                [this](const std::function<void(Scene&)>& c) { return changeScene(c); });
+  display_ = new DisplayActions(*this, viewport_->scene(), *view, [this](const std::function<void(Scene&)>& c) {
+    const bool changed = changeScene(c);
+    if (gridSlices_) gridSlices_->followScene();  // its Show the Model's Surface box too
+    return changed;
+  });
   buildColorActions(view);
 
   // What is shown of the results (deformation, probes, cuts, contours, lines) and the
