@@ -87,6 +87,7 @@ void SceneDrawing::initialize() {
   modelLinesFor_.first = nullptr;
   glyphRenderer_.initialize();
   glyphsUploaded_.reset();
+  glyphColorMap_.clear();
   streamlineRenderer_.initialize();
   initialized_ = true;
   forgetAll();  // a fresh context holds nothing
@@ -107,6 +108,7 @@ void SceneDrawing::release() {
   modelLinesFor_.first = nullptr;
   glyphRenderer_.release();
   glyphsUploaded_.reset();
+  glyphColorMap_.clear();
   initialized_ = false;
   forgetAll();
 }
@@ -359,7 +361,10 @@ bool SceneDrawing::applyToGlyphs(const Scene& scene) {
 
 // Lit, in the color map's colors, hidden behind what is nearer, cut by the clip planes.
 void SceneDrawing::drawGlyphs(const Scene& scene, const RenderContext& ctx) {
-  glyphRenderer_.setColorMap(ColorMap::named(scene.shown().colorMap));
+  if (glyphColorMap_ != scene.shown().colorMap) {
+    glyphRenderer_.setColorMap(ColorMap::named(scene.shown().colorMap));
+    glyphColorMap_ = scene.shown().colorMap;
+  }
   glyphRenderer_.setShowEdges(false);
   glyphRenderer_.setLighting(true);
   glyphRenderer_.setClipPlanes(scene.shown().volume.allClipPlanes());

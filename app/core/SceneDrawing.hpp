@@ -85,6 +85,7 @@ class SceneDrawing {
   const ModelSession* undeformedUploaded_ = nullptr;
   SurfaceRenderer glyphRenderer_;  ///< arrows or principal bars at the nodes
   std::shared_ptr<const GlyphGeometry> glyphsUploaded_;
+  std::string glyphColorMap_;  ///< the map the glyphs' texture holds (uploaded when it changes, not per frame)
   /// Uploads the scene's glyphs when they changed; false when none are shown.
   bool applyToGlyphs(const Scene& scene);
   void drawGlyphs(const Scene& scene, const RenderContext& ctx);
