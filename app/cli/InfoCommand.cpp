@@ -71,6 +71,19 @@ std::size_t printFields(const Model& model) {
   return unreadable;
 }
 
+// "sets:     3", then one line per set: its name, what it holds, how many, how the file
+// defines it. Names with spaces are quoted, as --show-set takes them.
+void printSets(const Model& model) {
+  const std::vector<EntitySet> sets = modelSets(model);
+  if (sets.empty()) return;
+  std::printf("sets:     %zu\n", sets.size());
+  for (const EntitySet& s : sets) {
+    const bool quote = s.name.find(' ') != std::string::npos;
+    const std::string name = quote ? "\"" + s.name + "\"" : s.name;
+    std::printf("  %-24s %9zu %-8s (%s)\n", name.c_str(), s.members.size(), setKindName(s.kind), s.origin.c_str());
+  }
+}
+
 std::string exactPoint(const glm::dvec3& p) {
   return "(" + exactNumber(p.x) + ", " + exactNumber(p.y) + ", " + exactNumber(p.z) + ")";
 }
@@ -154,6 +167,7 @@ int runInfo(const QStringList& args) {
       std::printf("bounds:   (empty model)\n");
     if (model->grid) printGrid(*model->grid);
     const std::size_t unreadable = printFields(*model);
+    printSets(*model);
     std::printf("defects:  %s\n", model->diagnostics.empty() ? "none found" : "");
     for (const Diagnostic& d : model->diagnostics)
       std::printf("  %-7s %-22s %s\n", d.severity == Severity::Warning ? "warning" : "info", d.code.c_str(),

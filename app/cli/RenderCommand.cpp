@@ -186,6 +186,11 @@ struct Options {
                                "a nodal one by all of the cell's nodes; see --threshold-nodes), in the surface, "
                                "the sections and the volume.",
                                "Q:MIN:MAX"};
+  QCommandLineOption showSet{"show-set",
+                             "Draw only this element set (an ELSET, a physical group, an element block; "
+                             "repeatable; `volpost info` lists the sets).",
+                             "NAME"};
+  QCommandLineOption hideSet{"hide-set", "Do not draw this element set (repeatable).", "NAME"};
   QCommandLineOption thresholdNodes{
       "threshold-nodes", "all (default: every node of a cell in the range) or any (one is enough).", "WHICH"};
   QCommandLineOption sweep{"deformation-sweep",
@@ -239,6 +244,20 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
   const QString video = output.finish();
   if (output.isVideo()) printPath(video);
   return 0;
+}
+
+// --show-set / --hide-set, over the state file's choice.
+void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
+  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet)) return;
+  SetVisibility v = scene.setVisibility();
+  const auto names = [&](const QCommandLineOption& option) {
+    std::vector<std::string> out;
+    for (const QString& name : p.values(option)) out.push_back(name.toStdString());
+    return out;
+  };
+  if (p.isSet(o.showSet)) v.shown = names(o.showSet);
+  if (p.isSet(o.hideSet)) v.hidden = names(o.hideSet);
+  scene.setSetVisibility(v);  // invalid_argument (unknown set, a node set, nothing left): a usage error
 }
 
 // --threshold Q:MIN:MAX, over the state file's.
@@ -797,6 +816,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
   if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
   scene.setStreamlines(lines);
+  applySetOptions(p, o, scene);
   applyThresholdOptions(p, o, scene);
   applyGlyphOptions(p, o, scene);
   if (p.isSet(o.probe)) {
@@ -896,6 +916,8 @@ int runRender(const QStringList& args) {
                      o.sweep,
                      o.threshold,
                      o.thresholdNodes,
+                     o.showSet,
+                     o.hideSet,
                      o.logScale,
                      o.stepText});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
@@ -1045,6 +1067,9 @@ int runRender(const QStringList& args) {
           std::fprintf(stderr, "volpost: note: %zu streamline%s %s\n", std::size_t(spent), spent == 1 ? "" : "s",
                        describe(StreamlineStop::PointBudget));
       }
+      if (scene.setVisibility().active() && !scene.threshold().shown)
+        std::fprintf(stderr, "volpost: note: the chosen sets hold %zu of the %zu cells\n",
+                     scene.session()->model().cellCount(), scene.baseSession()->model().cellCount());
       if (scene.threshold().shown)
         std::fprintf(stderr, "volpost: note: the threshold keeps %zu of the %zu cells (%s within %g .. %g)\n",
                      scene.session()->model().cellCount(), scene.baseSession()->model().cellCount(),

@@ -74,6 +74,7 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.streamlines = StreamlineLayer{};
   state_.glyphs = GlyphLayer{};  // the last model's field
   state_.threshold = ThresholdLayer{};
+  state_.sets = SetVisibility{};  // the last model's set names
   glyphs_.reset();
   streamlineResult_.reset();
   ++revisions_.streamlines;
@@ -101,7 +102,8 @@ void Scene::rebuildDeformation() {
   } else {
     deformationScale_ = 0.0;
   }
-  // The threshold keeps the cells of the (deformed) model whose values lie in its range.
+  // The shown sets' cells, and of those the ones whose values lie in the threshold's range.
+  next = setVisibleSession(next, state_.sets);
   if (state_.threshold.shown) next = thresholdedSession(*next, state_.threshold, state_.step);
   if (next == session_) return;
   session_ = std::move(next);
@@ -135,6 +137,7 @@ void Scene::setResult(const std::string& quantity, std::size_t step) {
     state_.step = step;
     // The step's displacement, the step's cells within the threshold.
     if ((state_.deformation.shown || state_.threshold.shown) && step != deformedStep_) rebuildDeformation();
+    // (the shown sets do not change with the step)
   }
   ++revisions_.scalars;
   ++revisions_.values;
@@ -567,6 +570,11 @@ void Scene::setFormulas(std::vector<FormulaSpec> formulas) {
     } catch (const std::invalid_argument&) {
       s.threshold.shown = false;  // a formula it used is gone
     }
+  try {
+    checkSetVisibility(*next, s.sets);
+  } catch (const std::invalid_argument&) {
+    s.sets = SetVisibility{};  // the other model's sets
+  }
   if (s.glyphs.shown) try {
       checkGlyphLayer(*next, s.glyphs);
     } catch (const std::invalid_argument&) {
@@ -599,6 +607,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   checkStreamlines(s.streamlines, checked);
   checkGlyphLayer(checked, s.glyphs);
   checkThreshold(checked, s.threshold);
+  checkSetVisibility(checked, s.sets);
   checkProbes(s.probes);
   if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
@@ -656,7 +665,17 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
     deformedStep_ = state_.step;
     changeEverything();
   }
-  if (state_.deformation.shown || state_.threshold.shown || session_ != baseSession_) rebuildDeformation();
+  if (state_.deformation.shown || state_.threshold.shown || state_.sets.active() || session_ != baseSession_)
+    rebuildDeformation();
+}
+
+void Scene::setSetVisibility(const SetVisibility& sets) {
+  if (sets.active()) {
+    if (!baseSession_) throw std::invalid_argument("no model is open to show sets of");
+    checkSetVisibility(*baseSession_, sets);
+  }
+  state_.sets = sets;
+  rebuildDeformation();
 }
 
 void Scene::setThreshold(const ThresholdLayer& layer) {

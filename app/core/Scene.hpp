@@ -91,6 +91,10 @@ class Scene {
   /// quantity, bad range, no cell kept at this step) and changes nothing then.
   void setThreshold(const ThresholdLayer& layer);
   const ThresholdLayer& threshold() const { return state_.threshold; }
+  /// Draws only some element sets, or hides some (see SetVisibility.hpp); throws
+  /// std::invalid_argument, changing nothing, for unknown names, node sets, or no cell left.
+  void setSetVisibility(const SetVisibility& sets);
+  const SetVisibility& setVisibility() const { return state_.sets; }
   /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
   double deformationScale() const { return deformationScale_; }
 

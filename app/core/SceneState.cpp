@@ -315,6 +315,22 @@ ThresholdLayer thresholdFrom(const Reader& r, const json& in) {
   return t;
 }
 
+json jsonOf(const SetVisibility& v) { return {{"shown", v.shown}, {"hidden", v.hidden}}; }
+
+SetVisibility setsFrom(const Reader& r, const json& in) {
+  SetVisibility v;
+  const auto names = [&](const char* key, std::vector<std::string>& out) {
+    const json* x = r.find(in, key);
+    if (!x) return;
+    const std::string where = std::string("sets.") + key;
+    for (std::size_t i = 0; i < r.array(*x, where).size(); ++i)
+      out.push_back(r.text((*x)[i], where + "[" + std::to_string(i) + "]"));
+  };
+  names("shown", v.shown);
+  names("hidden", v.hidden);
+  return v;
+}
+
 json jsonOf(const CameraState& camera) {
   json out = {{"eye", jsonOf(camera.eye)},
               {"target", jsonOf(camera.target)},
@@ -450,6 +466,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["streamlines"] = jsonOf(streamlines);
   if (glyphs != GlyphLayer{}) out["glyphs"] = jsonOf(glyphs);
   if (threshold != ThresholdLayer{}) out["threshold"] = jsonOf(threshold);
+  if (sets.active()) out["sets"] = jsonOf(sets);
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
                         {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},
@@ -634,6 +651,7 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* lines = r.find(in, "streamlines")) s.streamlines = streamlinesFrom(r, r.object(*lines, "streamlines"));
   if (const json* g = r.find(in, "glyphs")) s.glyphs = glyphsFrom(r, r.object(*g, "glyphs"));
   if (const json* t = r.find(in, "threshold")) s.threshold = thresholdFrom(r, r.object(*t, "threshold"));
+  if (const json* v = r.find(in, "sets")) s.sets = setsFrom(r, r.object(*v, "sets"));
   if (const json* d = r.find(in, "deformation")) {
     r.object(*d, "deformation");
     if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");

@@ -10,6 +10,7 @@
 #include "DisplayRange.hpp"
 #include "Formula.hpp"
 #include "Glyphs.hpp"
+#include "SetVisibility.hpp"
 #include "SurfaceRepresentation.hpp"
 #include "Threshold.hpp"
 
@@ -194,6 +195,8 @@ struct SceneState {
   /// Only the cells whose value lies in a range; "threshold" in the file:
   /// {"shown": true, "quantity": "S.mises", "range": [100, 200], "nodes": "all"}.
   ThresholdLayer threshold;
+  /// Element sets drawn alone or hidden; "sets" in the file: {"shown": ["EALL"], "hidden": []}.
+  SetVisibility sets;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
   /// The line the Plot Over Line panel samples, drawn over the picture; "plotLine" in the file.

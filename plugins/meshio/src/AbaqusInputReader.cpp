@@ -2,6 +2,7 @@
 #include "AbaqusInputReader.hpp"
 
 #include "CalculixElements.hpp"
+#include "DeckSets.hpp"
 #include "FileBytes.hpp"
 #include "NodeTable.hpp"
 #include "TextScanner.hpp"
@@ -81,7 +82,7 @@ class DeckParser {
     TextScanner s(std::move(bytes), path);
     if (s.bytes().find('\0') != std::string::npos || !looksLikeText(s.bytes()))
       throw ReadError(path, "binary data, not an Abaqus/CalculiX input deck (which is text)");
-    enum class Block { None, Node, Element, Heading } block = Block::None;
+    enum class Block { None, Node, Element, Heading, Set } block = Block::None;
     std::optional<SolidElement> element;
     std::string elset;
     std::vector<std::string_view> pending;  // fields of an element record spread over lines
@@ -99,8 +100,17 @@ class DeckParser {
         sawKeyword = true;
         const Keyword k = parseKeyword(line);
         block = Block::None;
-        if (k.name == "NODE") block = Block::Node;
-        else if (k.name == "HEADING") block = Block::Heading;
+        if (k.name == "NODE") {
+          block = Block::Node;
+          const auto set = k.params.find("NSET");
+          nodeSet_ = set == k.params.end() ? "" : toUpper(set->second);
+        } else if (k.name == "ELSET" || k.name == "NSET") {
+          const auto set = k.params.find(k.name);
+          if (set == k.params.end() || trim(set->second).empty()) s.fail("*" + k.name + " without " + k.name + "=");
+          block = Block::Set;
+          sets_.begin(k.name == "ELSET" ? SetKind::Cells : SetKind::Nodes, toUpper(trim(set->second)),
+                      k.params.count("GENERATE") > 0);
+        } else if (k.name == "HEADING") block = Block::Heading;
         else if (k.name == "ELEMENT") {
           block = Block::Element;
           const auto type = k.params.find("TYPE");
@@ -130,6 +140,9 @@ class DeckParser {
       if (!sawKeyword) s.fail("an input deck starts with a *KEYWORD line, found '" + std::string(line.substr(0, 40)) + "'");
       switch (block) {
         case Block::Node: readNode(s, line); break;
+        case Block::Set:
+          sets_.readLine(s, line);
+          break;
         case Block::Heading:
           if (model_->title.empty()) model_->title = std::string(line);
           break;
@@ -175,12 +188,14 @@ class DeckParser {
     }
     model_->mesh().nodes.push_back(p);
     model_->mesh().nodeIds.push_back(id);
+    sets_.addId(SetKind::Nodes, nodeSet_, id);
   }
 
   void readElement(TextScanner& s, const std::vector<std::string_view>& f, const std::optional<SolidElement>& element,
                    const std::string& elset) {
     const std::int64_t id = parseInteger(s, f[0], "an element id");
     if (!element) {
+      sets_.noteSkippedElement(id);
       ++skipped_;
       return;
     }
@@ -207,12 +222,15 @@ class DeckParser {
     }
     model_->mesh().addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
     model_->mesh().cellIds.push_back(id);
+    elementIndex_.add(id, std::uint32_t(model_->mesh().cellCount() - 1));  // a repeated id: sets mean the first
+    sets_.addId(SetKind::Cells, elset, id);
     auto [it, added] = elsetIndex_.emplace(elset, elsetIndex_.size() + 1);
     if (added) elsetNames_.push_back(elset.empty() ? "(no ELSET)" : elset);
     elsets_.push_back(double(it->second));
   }
 
   void finish() {
+    sets_.moveInto(*model_, nodeIndex_, elementIndex_);
     if (elsetNames_.size() > 1) {
       model_->fields.push_back(Field::fromValues("element set", FieldLocation::Cell, 1, {elsets_}));
       std::string names;
@@ -235,7 +253,9 @@ class DeckParser {
 
   const Progress& progress_;
   std::unique_ptr<Model> model_;
-  IdIndex nodeIndex_;
+  IdIndex nodeIndex_, elementIndex_;
+  DeckSets sets_;
+  std::string nodeSet_;
   std::map<std::string, std::size_t> elsetIndex_;
   std::vector<std::string> elsetNames_;
   std::vector<double> elsets_;

@@ -252,6 +252,7 @@ class ExodusParser {
     readNodes(*nodes);
     progress_.report(0.3);
     readBlocks(*blocks);
+    readNodeSets();
     progress_.report(0.5);
     readTimes();
     readNodalVariables();
@@ -332,9 +333,50 @@ class ExodusParser {
       }
     }
     if (blocks > 1) model_->fields.push_back(Field::fromValues("element block", FieldLocation::Cell, 1, {blockOfCell_}));
+    addBlockSets(blockIds);
     if (skipped_ > 0)
       model_->diagnostics.push_back({Severity::Info, "skipped-non-solid-elements",
                                      std::to_string(skipped_) + " elements of non-solid blocks (" + skippedTypes_ + ") were not loaded", {}});
+  }
+
+  // Each loaded block is an element set, named as the file names it (eb_names) or by its id.
+  void addBlockSets(const std::vector<long long>& blockIds) {
+    const std::vector<std::string> names = nc_.names("eb_names");
+    for (std::size_t b = 0; b < blockCells_.size(); ++b) {
+      if (blockCells_[b].empty()) continue;
+      const long long id = b < blockIds.size() ? blockIds[b] : (long long)(b + 1);
+      EntitySet set{b < names.size() && !names[b].empty() ? names[b] : "block " + std::to_string(id),
+                    SetKind::Cells,
+                    "element block",
+                    {}};
+      set.members.assign(blockCells_[b].begin(), blockCells_[b].end());
+      model_->sets.push_back(std::move(set));
+    }
+  }
+
+  // Node sets: node_ns<k> (1-based node numbers), named by ns_names or their id (ns_prop1).
+  void readNodeSets() {
+    const std::size_t count = nc_.dimension("num_node_sets").value_or(0);
+    if (count == 0) return;
+    const std::vector<std::string> names = nc_.names("ns_names");
+    const std::vector<long long> ids = nc_.variable("ns_prop1") ? nc_.integers("ns_prop1") : std::vector<long long>{};
+    for (std::size_t k = 0; k < count && k < std::size_t(nc_.variableCount()); ++k) {
+      const std::string variable = "node_ns" + std::to_string(k + 1);
+      if (!nc_.variable(variable)) continue;
+      const long long id = k < ids.size() ? ids[k] : (long long)(k + 1);
+      EntitySet set{k < names.size() && !names[k].empty() ? names[k] : "node set " + std::to_string(id),
+                    SetKind::Nodes,
+                    "node set",
+                    {}};
+      for (const long long node : nc_.integers(variable)) {
+        if (node < 1 || std::size_t(node) > model_->mesh().nodeCount())
+          nc_.fail(variable + " (" + set.name + ") names node " + std::to_string(node) + " of " +
+                   std::to_string(model_->mesh().nodeCount()));
+        set.members.push_back(std::uint32_t(node - 1));
+      }
+      normalizeMembers(set.members);
+      if (!set.members.empty()) model_->sets.push_back(std::move(set));
+    }
   }
 
   void readTimes() {

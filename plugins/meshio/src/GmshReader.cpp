@@ -201,7 +201,14 @@ class GmshParser {
     const auto n = parseInteger(s_, s_.nextLine(), "the number of physical names");
     for (std::int64_t i = 0; i < n; ++i) {
       if (s_.atEnd()) s_.fail("file ends inside $PhysicalNames (truncated)");
-      s_.nextLine();
+      // dim tag "name": the name may hold spaces; a malformed line leaves the group unnamed.
+      const auto line = trim(s_.nextLine());
+      const auto f = splitFields(line);
+      const auto open = line.find('"'), close = line.rfind('"');
+      if (f.size() < 3 || open == std::string_view::npos || close <= open) continue;
+      const std::int64_t dim = parseInteger(s_, f[0], "a physical group dimension");
+      const std::int64_t tag = parseInteger(s_, f[1], "a physical tag");
+      physicalNames_[{dim, tag}] = std::string(line.substr(open + 1, close - open - 1));
     }
     const bool b = binary_;
     binary_ = false;
@@ -218,12 +225,10 @@ class GmshParser {
         const std::int64_t entity = binary_ ? binaryCursor().integer("an entity tag") : integer("an entity tag");
         for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) real("an entity bounding box");
         const std::int64_t nPhysical = count("a physical tag count", true);
-        std::int64_t physical = 0;
-        for (std::int64_t p = 0; p < nPhysical; ++p) {
-          const std::int64_t t = binary_ ? binaryCursor().integer("a physical tag") : integer("a physical tag");
-          if (p == 0) physical = t;
-        }
-        if (dim == 3 && nPhysical > 0) volumePhysical_[entity] = physical;
+        std::vector<std::int64_t> physical;
+        for (std::int64_t p = 0; p < nPhysical; ++p)
+          physical.push_back(binary_ ? binaryCursor().integer("a physical tag") : integer("a physical tag"));
+        if (!physical.empty()) entityPhysical_[{dim, entity}] = std::move(physical);
         if (dim > 0) {
           const std::int64_t nBounding = count("a bounding entity count", true);
           for (std::int64_t k = 0; k < nBounding; ++k)
@@ -298,9 +303,15 @@ class GmshParser {
     return it->second;
   }
 
-  void addElement(std::int64_t id, const GmshType& type, std::span<const std::int64_t> fileNodes, std::int64_t region) {
+  // `region` is the element's first physical tag (0: none); version 4 gives all of them in
+  // `groups` (version 2.2 only the first, as `region`).
+  void addElement(std::int64_t id, const GmshType& type, std::span<const std::int64_t> fileNodes, std::int64_t region,
+                  int dim, std::span<const std::int64_t> groups) {
+    const std::int64_t first = region;
+    if (groups.empty() && first != 0) groups = std::span<const std::int64_t>(&first, 1);
     if (!type.cell) {
       ++skippedLower_;
+      addToNodeGroups(id, fileNodes, dim, groups);
       return;
     }
     if (type.dropsNodes) ++droppedHighOrder_[int(fileNodes.size())];
@@ -317,6 +328,36 @@ class GmshParser {
     model_->mesh().cellIds.push_back(id);
     regions_.push_back(double(region));
     elementIndex_.add(id, NodeIndex(model_->mesh().cellCount() - 1));
+    for (const std::int64_t g : groups) groupMembers_[{3, g}].push_back(std::uint32_t(model_->mesh().cellCount() - 1));
+  }
+
+  // A point, line or surface element of a physical group (a boundary, a load face) is not
+  // loaded, but its nodes make the group's node set.
+  void addToNodeGroups(std::int64_t id, std::span<const std::int64_t> fileNodes, int dim,
+                       std::span<const std::int64_t> groups) {
+    for (const std::int64_t g : groups) {
+      auto& members = groupMembers_[{dim, g}];
+      for (const std::int64_t n : fileNodes) {
+        const auto index = nodeIndex_.find(n);
+        if (!index)
+          s_.fail("element " + std::to_string(id) + " of physical group " + std::to_string(g) + " uses node " +
+                  std::to_string(n) + ", which $Nodes does not define");
+        members.push_back(*index);
+      }
+    }
+  }
+
+  // Physical groups become the model's sets: volumes as element sets, lower dimensions as
+  // the node sets of their elements' nodes.
+  void addGroups() {
+    for (auto& [key, members] : groupMembers_) {
+      const auto [dim, tag] = key;
+      const auto named = physicalNames_.find(key);
+      EntitySet set{named != physicalNames_.end() ? named->second : "physical group " + std::to_string(tag),
+                    dim == 3 ? SetKind::Cells : SetKind::Nodes, "physical group", std::move(members)};
+      normalizeMembers(set.members);
+      model_->sets.push_back(std::move(set));
+    }
   }
 
   void readElements() {
@@ -342,7 +383,7 @@ class GmshParser {
           const std::int64_t region = ntags > 0 ? parseInteger(s_, f[3], "a physical tag") : 0;
           nodes.resize(std::size_t(type.nodes));
           for (int k = 0; k < type.nodes; ++k) nodes[std::size_t(k)] = parseInteger(s_, f[std::size_t(3 + ntags + k)], "a node tag");
-          addElement(id, type, nodes, region);
+          addElement(id, type, nodes, region, type.dimension, {});
         }
       } else {
         for (std::int64_t done = 0; done < n;) {
@@ -359,7 +400,7 @@ class GmshParser {
             }
             nodes.resize(std::size_t(type.nodes));
             for (auto& node : nodes) node = tag("a node tag", false);
-            addElement(id, type, nodes, region);
+            addElement(id, type, nodes, region, type.dimension, {});
           }
           done += follow;
         }
@@ -379,8 +420,10 @@ class GmshParser {
       const std::int64_t n = count("the element count of a block", true);
       if (seen + n > total)
         s_.fail("the element blocks hold more elements than the $Elements header says (" + std::to_string(total) + ")");
-      const auto physical = volumePhysical_.find(entity);
-      const std::int64_t region = dim == 3 && physical != volumePhysical_.end() ? physical->second : 0;
+      const auto found = entityPhysical_.find({dim, entity});
+      static const std::vector<std::int64_t> kNone;
+      const std::vector<std::int64_t>& physical = found == entityPhysical_.end() ? kNone : found->second;
+      const std::int64_t region = dim == 3 && !physical.empty() ? physical.front() : 0;
       nodes.resize(std::size_t(type.nodes));
       for (std::int64_t i = 0; i < n; ++i) {
         const std::int64_t id = tag("an element tag", true);
@@ -390,7 +433,7 @@ class GmshParser {
           if (!rest.empty())
             s_.fail("element " + std::to_string(id) + " has more nodes than its type " + std::to_string(type.nodes));
         }
-        addElement(id, type, nodes, region);
+        addElement(id, type, nodes, region, int(dim), physical);
         if ((i & 0xffff) == 0) s_.report(progress_, 0.2, 0.95);
       }
       seen += n;
@@ -505,6 +548,7 @@ class GmshParser {
   }
 
   void finish() {
+    addGroups();
     bool anyRegion = false;
     for (double r : regions_) anyRegion = anyRegion || r != 0.0;
     if (anyRegion) model_->fields.push_back(Field::fromValues("region", FieldLocation::Cell, 1, {regions_}));
@@ -531,7 +575,9 @@ class GmshParser {
   int version_ = 4;
   bool binary_ = false, swap_ = false, sawNodes_ = false, sawElements_ = false;
   IdIndex nodeIndex_, elementIndex_;
-  std::map<std::int64_t, std::int64_t> volumePhysical_;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::int64_t>> entityPhysical_;  // (dim, entity)
+  std::map<std::pair<std::int64_t, std::int64_t>, std::string> physicalNames_;                 // (dim, tag)
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::uint32_t>> groupMembers_;   // (dim, tag)
   std::vector<double> regions_;
   std::size_t skippedLower_ = 0;
   std::map<int, std::size_t> droppedHighOrder_;

@@ -13,7 +13,8 @@ Model::Model(const Model& other)
       title(other.title),
       grid(other.grid),
       fields(other.fields),
-      diagnostics(other.diagnostics) {
+      diagnostics(other.diagnostics),
+      sets(other.sets) {
   if (other.meshBuilt()) setMesh(other.mesh());  // cells shared copy-on-write, nodes copied
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <volpost/core/Diagnostics.hpp>
+#include <volpost/core/EntitySet.hpp>
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/RegularGrid.hpp>
@@ -27,6 +28,9 @@ class Model {
   std::optional<RegularGrid> grid;
   std::vector<std::shared_ptr<Field>> fields;
   std::vector<Diagnostic> diagnostics;
+  /// Element and node sets the file defines (see EntitySet.hpp; modelSets adds the groups
+  /// that region fields offer).
+  std::vector<EntitySet> sets;
 
   /// The cells and nodes. A grid model read without them (readers of grids leave the mesh
   /// alone) gets its hexahedra here on the first call, once, thread-safe: a grid drawn only

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Which of the model's element sets are drawn: only the shown ones (none named: every
+// cell), less the hidden ones. The kept cells make a part of the model (CellSubset), so
+// the surface, sections, the volume, probing, plots and the extremes are those of the part.
+#pragma once
+
+#include "ModelSession.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+struct SetVisibility {
+  std::vector<std::string> shown;   ///< element sets drawn alone (empty: every cell)
+  std::vector<std::string> hidden;  ///< element sets not drawn
+  bool active() const { return !shown.empty() || !hidden.empty(); }
+  bool operator==(const SetVisibility&) const = default;
+};
+
+/// Throws std::invalid_argument for a name no element set has (naming the sets there are),
+/// a node set (which has no cells to show), or a choice that leaves no cell.
+void checkSetVisibility(const ModelSession& session, const SetVisibility& v);
+/// Per cell of the model: drawn or not.
+std::vector<char> cellsOfSets(const ModelSession& session, const SetVisibility& v);
+/// The part of the model the sets leave (the session itself when nothing is chosen).
+std::shared_ptr<const ModelSession> setVisibleSession(std::shared_ptr<const ModelSession> session,
+                                                      const SetVisibility& v);
+
+}  // namespace volpost::app
