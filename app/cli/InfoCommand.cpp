@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 
 #include <cstdio>
+#include <cstring>
 
 namespace volpost::app {
 namespace {
@@ -80,7 +81,10 @@ void printSets(const Model& model) {
   for (const EntitySet& s : sets) {
     const bool quote = s.name.find(' ') != std::string::npos;
     const std::string name = quote ? "\"" + s.name + "\"" : s.name;
-    std::printf("  %-24s %9zu %-8s (%s)\n", name.c_str(), s.members.size(), setKindName(s.kind), s.origin.c_str());
+    const std::string kind = s.members.size() == 1
+                                 ? std::string(setKindName(s.kind)).substr(0, std::strlen(setKindName(s.kind)) - 1)
+                                 : setKindName(s.kind);
+    std::printf("  %-24s %9zu %-8s (%s)\n", name.c_str(), s.members.size(), kind.c_str(), s.origin.c_str());
   }
 }
 

@@ -673,6 +673,12 @@ void Scene::setSetVisibility(const SetVisibility& sets) {
   if (sets.active()) {
     if (!baseSession_) throw std::invalid_argument("no model is open to show sets of");
     checkSetVisibility(*baseSession_, sets);
+    if (state_.threshold.shown &&
+        thresholdedSession(*setVisibleSession(baseSession_, sets), state_.threshold, state_.step)
+                ->model()
+                .cellCount() == 0)
+      throw std::invalid_argument("no cell of these sets has " + state_.threshold.quantity +
+                                  " within the threshold's range at this step");
   }
   state_.sets = sets;
   rebuildDeformation();
@@ -682,7 +688,7 @@ void Scene::setThreshold(const ThresholdLayer& layer) {
   if (layer.shown) {
     if (!baseSession_) throw std::invalid_argument("no model is open to threshold");
     checkThreshold(*baseSession_, layer);
-    const auto kept = thresholdedSession(*baseSession_, layer, state_.step);
+    const auto kept = thresholdedSession(*setVisibleSession(baseSession_, state_.sets), layer, state_.step);
     if (kept->model().mesh().cellCount() == 0) {
       const Quantity q = baseSession_->findQuantity(layer.quantity);
       const ScalarView v = baseSession_->evaluate(q, std::min(state_.step, baseSession_->fieldOf(q).stepCount() - 1));

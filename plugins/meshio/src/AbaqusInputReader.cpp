@@ -196,6 +196,7 @@ class DeckParser {
     const std::int64_t id = parseInteger(s, f[0], "an element id");
     if (!element) {
       sets_.noteSkippedElement(id);
+      sets_.addId(SetKind::Cells, elset, id);  // its set is then reported as empty, not silently absent
       ++skipped_;
       return;
     }

@@ -44,9 +44,12 @@ void DeckSets::readLine(TextScanner& s, std::string_view line) {
     const std::int64_t first = parseInteger(s, fields[0], what), last = parseInteger(s, fields[1], what);
     const std::int64_t step = fields.size() == 3 ? parseInteger(s, fields[2], "a GENERATE step") : 1;
     if (step <= 0 || last < first) s.fail("a GENERATE line needs first <= last and a positive step");
-    if ((last - first) / step >= kMaxGenerated)
+    // Counted in floating point and stepped by index: ids near the integer limits must
+    // neither overflow the count nor the last step.
+    const double count = (double(last) - double(first)) / double(step);
+    if (count >= double(kMaxGenerated))
       s.fail("this GENERATE line makes more than " + std::to_string(kMaxGenerated) + " ids");
-    for (std::int64_t id = first; id <= last; id += step) target.ids.push_back(id);
+    for (std::int64_t k = 0; k <= std::int64_t(count); ++k) target.ids.push_back(first + k * step);
     return;
   }
   for (const auto f : fields) {

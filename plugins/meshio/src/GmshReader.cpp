@@ -20,6 +20,13 @@
 namespace volpost::meshio {
 namespace {
 
+// A physical group without a $PhysicalNames entry, named as gmsh's own GUI shows it: its
+// tag alone would be ambiguous, as a surface and a volume may share one.
+std::string unnamedGroupName(std::int64_t dim, std::int64_t tag) {
+  static const char* const kinds[] = {"point", "curve", "surface", "volume"};
+  return std::string("physical ") + (dim >= 0 && dim <= 3 ? kinds[dim] : "group") + " " + std::to_string(tag);
+}
+
 struct GmshType {
   int nodes = 0;                     // nodes per element in the file
   int dimension = 0;
@@ -353,7 +360,7 @@ class GmshParser {
     for (auto& [key, members] : groupMembers_) {
       const auto [dim, tag] = key;
       const auto named = physicalNames_.find(key);
-      EntitySet set{named != physicalNames_.end() ? named->second : "physical group " + std::to_string(tag),
+      EntitySet set{named != physicalNames_.end() ? named->second : unnamedGroupName(dim, tag),
                     dim == 3 ? SetKind::Cells : SetKind::Nodes, "physical group", std::move(members)};
       normalizeMembers(set.members);
       model_->sets.push_back(std::move(set));

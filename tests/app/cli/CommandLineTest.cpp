@@ -1143,3 +1143,39 @@ TEST(SeismicCommands, DamagedSegyFilesAreRefusedNamingTheByte) {
   EXPECT_NE(r.output.find(truncated + ": byte "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("ends inside trace 120"), std::string::npos) << r.output;
 }
+
+TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
+  const std::string deck = dataFile("formats/golden.inp");
+  const auto info = runVolpost("info " + deck);
+  ASSERT_EQ(info.exitCode, 0) << info.output;
+  EXPECT_NE(info.output.find("sets:     4"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("E_WEDGE                          1 element  (ELSET)"), std::string::npos) << info.output;
+  EXPECT_NE(info.output.find("NALL                            37 nodes    (NSET)"), std::string::npos) << info.output;
+
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "volpost_sets_cli";
+  std::filesystem::create_directories(dir);
+  const std::string all = (dir / "all.png").string(), wedge = (dir / "wedge.png").string();
+  const std::string again = (dir / "again.png").string(), state = (dir / "sets.json").string();
+  const std::string common = "render " + deck + " --field 'element set' --size 96x64 ";
+  ASSERT_EQ(runVolpost(common + "-o " + all).exitCode, 0);
+  const auto shown = runVolpost(common + "--show-set e_wedge --show-set E_TET --hide-set E_TET -o " + wedge +
+                                " --save-state " + state);
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  EXPECT_NE(shown.output.find("the chosen sets hold 1 of the 3 cells"), std::string::npos) << shown.output;
+  EXPECT_NE(QImage(QString::fromStdString(all)), QImage(QString::fromStdString(wedge)));
+  std::ifstream saved(state);
+  const std::string text((std::istreambuf_iterator<char>(saved)), {});
+  EXPECT_NE(text.find("\"hidden\""), std::string::npos) << text;
+  ASSERT_EQ(runVolpost("render --state " + state + " --size 96x64 -o " + again).exitCode, 0);
+  EXPECT_EQ(QImage(QString::fromStdString(again)), QImage(QString::fromStdString(wedge)))
+      << "the state draws the same part";
+
+  const auto refused = [&](const std::string& options, const std::string& message) {
+    const auto r = runVolpost(common + options + " -o " + (dir / "refused.png").string());
+    EXPECT_EQ(r.exitCode, 2) << options;
+    EXPECT_NE(r.output.find(message), std::string::npos) << options << "\n" << r.output;
+  };
+  refused("--show-set E_BEAM", "no set is named 'E_BEAM' (its element sets: E_HEX, E_WEDGE, E_TET)");
+  refused("--hide-set NALL", "'NALL' is a set of 37 nodes");
+  refused("--hide-set E_HEX --hide-set E_WEDGE --hide-set E_TET", "leaves no element to draw");
+}

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// Showing and hiding element sets: the kept cells are exactly the chosen sets' members,
+// keep their file numbers and their sets, and the choice is refused (changing nothing)
+// where it names no element set or leaves nothing to draw; it lives in the saved state.
+#include "support/ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+
+#include <volpost/render/VolumeRenderer.hpp>
+
+#include "core/PluginRenderers.hpp"
+#include "core/Scene.hpp"
+#include "core/SetVisibility.hpp"
+
+using namespace volpost;
+using namespace volpost::app;
+
+namespace {
+
+// Three quadratic cells, one per ELSET: E_HEX (element 101), E_WEDGE (102), E_TET (103).
+std::shared_ptr<ModelSession> golden() {
+  return ModelSession::load(volpost::test::meshioReaders(), volpost::test::dataFile("formats/golden.inp"));
+}
+
+std::vector<std::int64_t> idsOf(const ModelSession& part) {
+  std::vector<std::int64_t> ids;
+  for (std::size_t c = 0; c < part.model().mesh().cellCount(); ++c) ids.push_back(part.model().mesh().cellId(c));
+  return ids;
+}
+
+std::string refusal(const ModelSession& session, const SetVisibility& v) {
+  try {
+    checkSetVisibility(session, v);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+TEST(SetVisibility, KeepsTheShownSetsLessTheHiddenOnes) {
+  const auto whole = golden();
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"E_HEX"}, {}})), (std::vector<std::int64_t>{101}));
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{}, {"E_HEX"}})), (std::vector<std::int64_t>{102, 103}));
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"e_hex", "E_TET"}, {"E_TET"}})), (std::vector<std::int64_t>{101}))
+      << "names are matched regardless of case, hidden wins";
+  EXPECT_EQ(setVisibleSession(whole, {}), whole) << "no choice: the model itself";
+  // The part keeps its sets, renumbered to its own cells.
+  const auto part = setVisibleSession(whole, {{"E_WEDGE", "E_TET"}, {}});
+  const EntitySet* tet = findSet(part->model().sets, "E_TET");
+  ASSERT_NE(tet, nullptr);
+  ASSERT_EQ(tet->members.size(), 1u);
+  EXPECT_EQ(part->model().mesh().cellId(tet->members[0]), 103);
+  EXPECT_EQ(part->model().mesh().cellType(tet->members[0]), CellType::Tet10);
+}
+
+TEST(SetVisibility, RefusesNamesThatAreNoElementSetAndEmptyChoices) {
+  const auto whole = golden();
+  const std::string unknown = refusal(*whole, {{"E_BEAM"}, {}});
+  EXPECT_NE(unknown.find("no set is named 'E_BEAM'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("E_HEX, E_WEDGE, E_TET"), std::string::npos) << unknown;
+  const std::string nodes = refusal(*whole, {{"NALL"}, {}});
+  EXPECT_NE(nodes.find("'NALL' is a set of 37 nodes"), std::string::npos) << nodes;
+  const std::string nothing = refusal(*whole, {{}, {"E_HEX", "E_WEDGE", "E_TET"}});
+  EXPECT_NE(nothing.find("leaves no element"), std::string::npos) << nothing;
+  EXPECT_EQ(refusal(*whole, {{"E_HEX"}, {"E_TET"}}), "accepted");
+}
+
+TEST(SetVisibility, TheSceneDrawsThePartAndSavesTheChoice) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(golden());
+  scene.setResult("element set", 0);
+  scene.setSetVisibility({{"E_WEDGE"}, {}});
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
+  ASSERT_TRUE(scene.view());
+  ASSERT_EQ(scene.view()->values.size(), 1u);
+  EXPECT_EQ(scene.view()->values[0], 2.0) << "the shown element result is the part's";
+  EXPECT_THROW(scene.setSetVisibility({{"NOSUCH"}, {}}), std::invalid_argument);
+  EXPECT_EQ(scene.setVisibility().shown, (std::vector<std::string>{"E_WEDGE"})) << "a refused choice changes nothing";
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
+
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_EQ(back.sets, scene.setVisibility());
+  scene.setSetVisibility({});
+  EXPECT_EQ(scene.session(), scene.baseSession());
+  scene.applyState(back);
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
+
+  // A threshold applies to the part the sets leave.
+  scene.setThreshold(ThresholdLayer{true, "element set", 1.5, 3.5, true});
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
+  scene.setSetVisibility({{}, {"E_WEDGE"}});
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{103}));
+  // Together they must leave a cell; a refused change keeps what was drawn.
+  EXPECT_THROW(scene.setThreshold(ThresholdLayer{true, "element set", 1.5, 2.5, true}), std::invalid_argument);
+  EXPECT_THROW(scene.setSetVisibility({{"E_HEX"}, {}}), std::invalid_argument);
+  EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{103}));
+
+  // Another model starts with every cell drawn.
+  scene.setSession(golden());
+  EXPECT_FALSE(scene.setVisibility().active());
+  EXPECT_EQ(scene.session()->model().cellCount(), 3u);
+}

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// The sets a file names (Abaqus/CalculiX ELSET and NSET, Gmsh physical groups, Exodus
+// element blocks and node sets) become the model's sets of cell and node indices, the same
+// members whichever format the model was written in.
+#include "support/ReaderSupport.hpp"
+#include "support/TestSupport.hpp"
+
+#include <volpost/core/EntitySet.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+
+using namespace volpost;
+using volpost::test::dataFile;
+using volpost::test::meshioReaders;
+
+namespace {
+
+std::shared_ptr<Model> loadText(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return meshioReaders().load(path);
+}
+
+const EntitySet& setNamed(const Model& m, const std::string& name, SetKind kind) {
+  for (const EntitySet& s : m.sets)
+    if (s.name == name && s.kind == kind) return s;
+  ADD_FAILURE() << "no " << setKindName(kind) << " set " << name;
+  static const EntitySet none;
+  return none;
+}
+
+// The file ids of a set's members.
+std::set<std::int64_t> idsOf(const Model& m, const EntitySet& s) {
+  std::set<std::int64_t> ids;
+  const auto& fileIds = s.kind == SetKind::Nodes ? m.mesh().nodeIds : m.mesh().cellIds;
+  for (const std::uint32_t i : s.members) ids.insert(fileIds.empty() ? std::int64_t(i + 1) : fileIds.at(i));
+  return ids;
+}
+
+const Diagnostic* diagnostic(const Model& m, const std::string& code) {
+  const auto it =
+      std::find_if(m.diagnostics.begin(), m.diagnostics.end(), [&](const Diagnostic& d) { return d.code == code; });
+  return it == m.diagnostics.end() ? nullptr : &*it;
+}
+
+// Two unit cubes of tets side by side (nodes 1..12), a shell on top (element 100).
+const char* const kTwoBlocks =
+    "*NODE, NSET=ALLNODES\n"
+    "1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+    "9,2,0,0\n10,2,1,0\n11,2,0,1\n12,2,1,1\n"
+    "*ELEMENT, TYPE=C3D4, ELSET=LEFT\n"
+    "1,1,2,4,5\n2,2,3,4,7\n3,2,4,5,7\n"
+    "*ELEMENT, TYPE=C3D4, ELSET=right\n"
+    "11,2,9,3,6\n12,9,10,3,12\n"
+    "*ELEMENT, TYPE=S3, ELSET=SKIN\n"
+    "100,5,6,7\n";
+
+}  // namespace
+
+TEST(DeckSets, ElementAndNodeSetsByIdsRangesAndNames) {
+  const auto model = loadText("sets.inp", std::string(kTwoBlocks) +
+                                              "*ELSET, ELSET=Both\nLEFT, RIGHT\n"
+                                              "*ELSET, ELSET=ODD, GENERATE\n1, 11, 2\n"
+                                              "*NSET, NSET=BASE\n1, 2, 3,\n4, 9, 10\n"
+                                              "*NSET, NSET=EDGE, GENERATE\n9, 12\n");
+  ASSERT_EQ(model->mesh().cellCount(), 5u);
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "LEFT", SetKind::Cells)), (std::set<std::int64_t>{1, 2, 3}));
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "RIGHT", SetKind::Cells)), (std::set<std::int64_t>{11, 12}));
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "BOTH", SetKind::Cells)), (std::set<std::int64_t>{1, 2, 3, 11, 12}));
+  // 1, 3, 5, 7, 9, 11: the ids no solid has (5, 7, 9) are reported, not guessed.
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "ODD", SetKind::Cells)), (std::set<std::int64_t>{1, 3, 11}));
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "BASE", SetKind::Nodes)), (std::set<std::int64_t>{1, 2, 3, 4, 9, 10}));
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "EDGE", SetKind::Nodes)), (std::set<std::int64_t>{9, 10, 11, 12}));
+  EXPECT_EQ(setNamed(*model, "ALLNODES", SetKind::Nodes).members.size(), 12u);
+  const Diagnostic* unknown = diagnostic(*model, "set-unknown-ids");
+  ASSERT_NE(unknown, nullptr);
+  EXPECT_NE(unknown->message.find("ODD"), std::string::npos) << unknown->message;
+  // The shell's set is known to be empty for a reason the user is told.
+  const Diagnostic* empty = diagnostic(*model, "set-empty");
+  ASSERT_NE(empty, nullptr);
+  EXPECT_NE(empty->message.find("SKIN"), std::string::npos) << empty->message;
+  EXPECT_EQ(findSet(model->sets, "both"), &setNamed(*model, "BOTH", SetKind::Cells));
+}
+
+TEST(DeckSets, UnknownSetNamesAreReported) {
+  const auto model = loadText("unknown_names.inp", std::string(kTwoBlocks) + "*ELSET, ELSET=MORE\nLEFT, NOSUCH\n");
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "MORE", SetKind::Cells)), (std::set<std::int64_t>{1, 2, 3}));
+  const Diagnostic* d = diagnostic(*model, "set-unknown-names");
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("NOSUCH"), std::string::npos) << d->message;
+}
+
+TEST(DeckSets, BadSetLinesNameTheLine) {
+  const auto error = [](const std::string& name, const std::string& tail) {
+    try {
+      loadText(name, std::string(kTwoBlocks) + tail);
+    } catch (const ReadError& e) {
+      return std::string(e.what());
+    }
+    return std::string("loaded");
+  };
+  EXPECT_NE(error("g1.inp", "*ELSET, ELSET=G, GENERATE\n5, 1\n").find("g1.inp:24: a GENERATE line needs first <= last"),
+            std::string::npos);
+  EXPECT_NE(error("g2.inp", "*ELSET, ELSET=G, GENERATE\n1, 2000000000\n").find("more than 100000000 ids"),
+            std::string::npos);
+  EXPECT_NE(error("g3.inp", "*NSET, NSET=N, GENERATE\n1\n").find("'first, last[, step]'"), std::string::npos);
+  EXPECT_NE(error("g4.inp", "*ELSET\n1\n").find("g4.inp:23: *ELSET without ELSET="), std::string::npos);
+  EXPECT_NE(error("g5.inp", "*NSET, NSET=N\n1, 2x\n").find("g5.inp:24"), std::string::npos);
+  // Ids at the integer limits give a clear error, not an overflow.
+  EXPECT_NE(error("g6.inp", "*NSET, NSET=N, GENERATE\n-9223372036854775807, 9223372036854775807, 1\n")
+                .find("more than 100000000 ids"),
+            std::string::npos);
+  EXPECT_EQ(error("g7.inp", "*NSET, NSET=N, GENERATE\n9223372036854775806, 9223372036854775807, 5\n"), "loaded");
+}
+
+TEST(GmshSets, PhysicalGroupsByNameOrByDimensionAndTag) {
+  const auto named = meshioReaders().load(dataFile("bad/ref_small_tets.msh"));
+  EXPECT_EQ(setNamed(*named, "box", SetKind::Cells).members.size(), named->mesh().cellCount());
+  // golden_22: group 5 holds a triangle and the three tets; a surface and a volume share the tag.
+  const auto unnamed = meshioReaders().load(dataFile("formats/golden_22.msh"));
+  EXPECT_EQ(setNamed(*unnamed, "physical volume 5", SetKind::Cells).members.size(), 3u);
+  EXPECT_EQ(setNamed(*unnamed, "physical surface 5", SetKind::Nodes).members.size(), 3u);
+}
+
+TEST(ExodusSets, BlocksAndNodeSetsMatchTheDeck) {
+  const auto exo = meshioReaders().load(dataFile("bad/ref_small_tets.exo"));
+  const auto inp = meshioReaders().load(dataFile("bad/ref_small_tets.inp"));
+  EXPECT_EQ(setNamed(*exo, "tetra", SetKind::Cells).members.size(), exo->mesh().cellCount());
+  const std::set<std::int64_t> fixed = idsOf(*inp, setNamed(*inp, "FIXED", SetKind::Nodes));
+  EXPECT_EQ(fixed.size(), 20u);
+  EXPECT_EQ(idsOf(*exo, setNamed(*exo, "FIXED", SetKind::Nodes)), fixed);
+}
+
+TEST(ModelSets, AnIntegerCellFieldOffersGroupsWhereTheFileHasNoSets) {
+  const auto model = loadText("regions.vtk",
+                              "# vtk DataFile Version 3.0\nregions\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                              "POINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+                              "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n"
+                              "CELL_DATA 2\nSCALARS region int 1\nLOOKUP_TABLE default\n7\n9\n"
+                              "SCALARS stress double 1\nLOOKUP_TABLE default\n0.5\n1.5\n");
+  const std::vector<EntitySet> sets = modelSets(*model);
+  ASSERT_EQ(sets.size(), 2u);
+  EXPECT_EQ(sets[0].name, "region 7");
+  EXPECT_EQ(sets[0].members, std::vector<std::uint32_t>{0});
+  EXPECT_EQ(sets[1].name, "region 9");
+  EXPECT_EQ(sets[1].origin, "cell field");
+  // A deck's own sets come first and stop the offer.
+  const auto deck = loadText("deck_sets.inp", kTwoBlocks);
+  for (const EntitySet& s : modelSets(*deck)) EXPECT_NE(s.origin, "cell field") << s.name;
+}
