@@ -24,6 +24,7 @@
 #include "SaveImageDialog.hpp"
 #include "SavedViews.hpp"
 #include "SeeThroughSurface.hpp"
+#include "SetsPanel.hpp"
 #include "StateFiles.hpp"
 #include "StepController.hpp"
 #include "StreamlineActions.hpp"
@@ -696,6 +697,14 @@ void MainWindow::buildPanels() {
   dock->setWidget(modelInfo_);
   addDockWidget(Qt::LeftDockWidgetArea, dock);
   resizeDocks({dock}, {220}, Qt::Horizontal);
+  // The file's sets, below the model's description.
+  auto* setsDock = new QDockWidget("Sets", this);
+  setsDock->setObjectName("setsDock");
+  sets_ = new SetsPanel(
+      viewport_->scene(), [this](const std::function<void(Scene&)>& c) { return changeScene(c); }, setsDock);
+  sets_->setObjectName("setsPanel");
+  setsDock->setWidget(sets_);
+  splitDockWidget(dock, setsDock, Qt::Vertical);
   bool tabifiedProbes = false;
   for (PanelPlugin* panel : plugins_.panelPlugins()) {
     auto* d = new QDockWidget(panel->panelTitle(), this);
@@ -933,6 +942,7 @@ double MainWindow::modelSize() const { return session_ ? session_->model().bound
 double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStats().lastTransferFunctionMs; }
 
 void MainWindow::notifyPanels() {
+  if (sets_) sets_->followScene();
   if (probes_) probes_->refresh();
   if (steps_) steps_->refresh();
   // One color control at a time: the volume's colors are its transfer function's.
@@ -1025,6 +1035,7 @@ void MainWindow::followAppliedState() {
   syncControlsToScene();
   if (gridSlices_) gridSlices_->followScene();
   if (linePlot_) linePlot_->followScene();
+  if (sets_) sets_->followScene();
   viewport_->update();
   notifyPanels();
   if (viewport_->scene().streamlinesNeedTracing()) streamlines_->trace();

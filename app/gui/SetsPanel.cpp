@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+#include "SetsPanel.hpp"
+
+#include "../core/Scene.hpp"
+
+#include <volpost/core/EntitySet.hpp>
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cctype>
+
+namespace volpost::app {
+namespace {
+
+constexpr int kNameRole = Qt::UserRole;
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void erase(std::vector<std::string>& names, const std::string& name) {
+  names.erase(std::remove(names.begin(), names.end(), name), names.end());
+}
+
+// A set's name as the scene's choice spells it: the choice matches names regardless of
+// case, the boxes compare them as written.
+bool drawnByChoice(const SetVisibility& v, const std::string& name) {
+  const auto has = [&](const std::vector<std::string>& names) {
+    return std::any_of(names.begin(), names.end(), [&](const std::string& n) {
+      return std::equal(n.begin(), n.end(), name.begin(), name.end(), [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+      });
+    });
+  };
+  return (v.shown.empty() || has(v.shown)) && !has(v.hidden);
+}
+
+QString count(std::size_t n) { return QLocale().toString(qulonglong(n)); }
+
+}  // namespace
+
+SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
+    : QWidget(parent), scene_(scene), change_(std::move(change)) {
+  auto* layout = new QVBoxLayout(this);
+  tree_ = new QTreeWidget(this);
+  tree_->setObjectName("setsTree");
+  tree_->setColumnCount(3);
+  tree_->setHeaderLabels({"Set", "Count", "Defined by"});
+  tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  tree_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+  tree_->header()->setStretchLastSection(false);
+  tree_->setRootIsDecorated(true);
+  layout->addWidget(tree_);
+  auto* buttons = new QHBoxLayout;
+  showOnly_ = new QPushButton("Show &Only", this);
+  showOnly_->setObjectName("setsShowOnly");
+  showOnly_->setToolTip("Draw the selected element sets alone (a double click: that set alone)");
+  showAll_ = new QPushButton("Show &All", this);
+  showAll_->setObjectName("setsShowAll");
+  showAll_->setToolTip("Draw every element again");
+  buttons->addWidget(showOnly_);
+  buttons->addWidget(showAll_);
+  buttons->addStretch();
+  layout->addLayout(buttons);
+  drawn_ = new QLabel(this);
+  drawn_->setObjectName("setsDrawn");
+  drawn_->setWordWrap(true);
+  layout->addWidget(drawn_);
+
+  connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+    if (column == 0) boxToggled(item);
+  });
+  connect(tree_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+    if (item->flags() & Qt::ItemIsUserCheckable) apply({{item->data(0, kNameRole).toString().toStdString()}, {}});
+  });
+  connect(showOnly_, &QPushButton::clicked, this, [this] { showOnlySelected(); });
+  connect(showAll_, &QPushButton::clicked, this, [this] { apply({}); });
+  followScene();
+}
+
+void SetsPanel::listSets() {
+  const QSignalBlocker block(tree_);
+  tree_->clear();
+  const ModelSession* base = scene_.baseSession();
+  listed_ = base;
+  listedPath_ = base ? base->model().sourcePath : std::string();
+  if (!base) return;
+  const std::vector<EntitySet> sets = modelSets(base->model());
+  if (sets.empty()) {
+    auto* none = new QTreeWidgetItem(tree_, {"This model defines no sets"});
+    none->setFlags(Qt::ItemIsEnabled);
+    return;
+  }
+  QTreeWidgetItem* groups[2] = {nullptr, nullptr};
+  for (const EntitySet& s : sets) {
+    const int g = s.kind == SetKind::Cells ? 0 : 1;
+    if (!groups[g]) {
+      groups[g] = new QTreeWidgetItem(tree_, {g == 0 ? "Element sets" : "Node sets"});
+      groups[g]->setFlags(Qt::ItemIsEnabled);
+      groups[g]->setExpanded(true);
+    }
+    auto* item = new QTreeWidgetItem(
+        groups[g], {QString::fromStdString(s.name), count(s.members.size()), QString::fromStdString(s.origin)});
+    item->setData(0, kNameRole, QString::fromStdString(s.name));
+    item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
+    if (g == 0) {
+      item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable);
+      item->setToolTip(0, "Its box draws or hides its " + count(s.members.size()) + " elements");
+    } else {
+      item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+      item->setToolTip(
+          0,
+          QString("A set of %1 nodes (the Probe panel takes \"node ID\" to query one)").arg(count(s.members.size())));
+    }
+  }
+  for (QTreeWidgetItem* g : groups)
+    if (g) g->setText(1, count(std::size_t(g->childCount())));
+  tree_->resizeColumnToContents(1);
+  tree_->resizeColumnToContents(2);
+}
+
+void SetsPanel::followScene() {
+  // Another model (compared by its file too: a new session may take a freed one's address).
+  const ModelSession* base = scene_.baseSession();
+  if (base != listed_ || (base && base->model().sourcePath != listedPath_)) listSets();
+  const SetVisibility& v = scene_.setVisibility();
+  {
+    const QSignalBlocker block(tree_);
+    for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
+      QTreeWidgetItem* item = *it;
+      if (!(item->flags() & Qt::ItemIsUserCheckable)) continue;
+      const bool drawn = drawnByChoice(v, item->data(0, kNameRole).toString().toStdString());
+      item->setCheckState(0, drawn ? Qt::Checked : Qt::Unchecked);
+    }
+  }
+  const auto session = scene_.session();
+  const bool hasElementSets = !tree_->findItems("Element sets", Qt::MatchExactly, 0).isEmpty();
+  showOnly_->setEnabled(hasElementSets);
+  showAll_->setEnabled(v.active());
+  if (!base || !session) drawn_->clear();
+  else if (!v.active()) drawn_->setText(QString("Every element drawn (%1)").arg(count(base->model().cellCount())));
+  else
+    drawn_->setText(QString("Drawn: %1 of the %2 elements")
+                        .arg(count(session->model().cellCount()), count(base->model().cellCount())));
+}
+
+void SetsPanel::boxToggled(QTreeWidgetItem* item) {
+  if (!(item->flags() & Qt::ItemIsUserCheckable)) return;
+  const std::string name = item->data(0, kNameRole).toString().toStdString();
+  SetVisibility v = scene_.setVisibility();
+  const bool on = item->checkState(0) == Qt::Checked;
+  erase(v.hidden, name);
+  if (v.shown.empty()) {  // every element but the hidden sets'
+    if (!on) v.hidden.push_back(name);
+  } else if (on) {  // the shown sets alone: one more
+    v.shown.push_back(name);
+  } else if (v.shown.size() > 1 || !contains(v.shown, name)) {
+    erase(v.shown, name);
+  } else {
+    v.hidden.push_back(name);  // the last shown set: refused, as nothing would be left
+  }
+  apply(v);
+}
+
+void SetsPanel::showOnlySelected() {
+  SetVisibility v;
+  for (QTreeWidgetItem* item : tree_->selectedItems())
+    if (item->flags() & Qt::ItemIsUserCheckable) v.shown.push_back(item->data(0, kNameRole).toString().toStdString());
+  if (v.shown.empty()) {
+    drawn_->setText("Select one or more element sets to show them alone");
+    return;
+  }
+  apply(v);
+}
+
+void SetsPanel::apply(const SetVisibility& v) {
+  change_([&v](Scene& s) { s.setSetVisibility(v); });
+  followScene();  // refused or not, the boxes show what the scene holds
+}
+
+}  // namespace volpost::app

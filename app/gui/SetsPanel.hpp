@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// View > Panels > Sets (a dock beside the model's description): the element and node sets
+// the file defines (ELSET/NSET, physical groups, element blocks, groups of a region field)
+// with their counts. An element set's box draws or hides its elements; Show Only draws the
+// selected sets alone (a double click: that set alone), Show All every element. The boxes
+// always show the scene's choice, after a state file or a refused change too.
+#pragma once
+
+#include "ChangeScene.hpp"
+
+#include <QWidget>
+
+#include <string>
+
+class QLabel;
+class QPushButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace volpost::app {
+
+class ModelSession;
+class Scene;
+struct SetVisibility;
+
+class SetsPanel : public QWidget {
+  Q_OBJECT
+
+ public:
+  SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent = nullptr);
+  /// The list follows the scene's model, the boxes its choice, the count what is drawn.
+  void followScene();
+
+ private:
+  void listSets();
+  void boxToggled(QTreeWidgetItem* item);
+  void showOnlySelected();
+  void apply(const SetVisibility& v);
+
+  const Scene& scene_;
+  ChangeScene change_;
+  QTreeWidget* tree_ = nullptr;
+  QPushButton* showOnly_ = nullptr;
+  QPushButton* showAll_ = nullptr;
+  QLabel* drawn_ = nullptr;
+  const ModelSession* listed_ = nullptr;  // whose sets the tree lists
+  std::string listedPath_;
+  bool following_ = false;
+};
+
+}  // namespace volpost::app

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// The Sets panel alone (a plain main window and a scene, no OpenGL): it lists the file's
+// sets with their counts, its boxes and buttons set the scene's choice of drawn sets, a
+// refused choice leaves boxes and scene as they were, and the boxes follow a state file
+// and another model.
+#include "gui/SetsPanel.hpp"
+
+#include "support/WindowParts.hpp"
+
+#include <QApplication>
+#include <QLabel>
+#include <QMainWindow>
+#include <QPushButton>
+#include <QStatusBar>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <memory>
+
+using namespace volpost;
+using namespace volpost::app;
+
+class SetsPanelTest : public QObject {
+  Q_OBJECT
+
+ private:
+  std::unique_ptr<QMainWindow> window_;
+  std::unique_ptr<Scene> scene_;
+  SetsPanel* panel_ = nullptr;
+
+  QTreeWidget* tree() { return panel_->findChild<QTreeWidget*>("setsTree"); }
+  QTreeWidgetItem* item(const QString& name) {
+    const auto found = tree()->findItems(name, Qt::MatchExactly | Qt::MatchRecursive, 0);
+    return found.isEmpty() ? nullptr : found.front();
+  }
+  // The element sets whose boxes are checked.
+  QStringList checked() {
+    QStringList out;
+    for (QTreeWidgetItemIterator it(tree()); *it; ++it)
+      if (((*it)->flags() & Qt::ItemIsUserCheckable) && (*it)->checkState(0) == Qt::Checked) out << (*it)->text(0);
+    return out;
+  }
+  std::size_t drawnCells() { return scene_->session()->model().cellCount(); }
+  QString drawnText() { return panel_->findChild<QLabel*>("setsDrawn")->text(); }
+
+ private slots:
+  void init() {
+    window_ = std::make_unique<QMainWindow>();
+    scene_ = std::make_unique<Scene>(VolumeRendererFactory{});
+    scene_->setSession(volpost::test::loadTestModel("formats/golden.inp"));
+    panel_ = new SetsPanel(*scene_, volpost::test::changingScene(*window_, *scene_), window_.get());
+    window_->setCentralWidget(panel_);
+  }
+
+  void cleanup() {
+    window_.reset();
+    scene_.reset();
+  }
+
+  void listsTheSetsWithTheirCounts() {
+    QVERIFY(item("Element sets"));
+    QCOMPARE(item("Element sets")->childCount(), 3);
+    QCOMPARE(item("E_HEX")->text(1), QString("1"));
+    QCOMPARE(item("E_HEX")->text(2), QString("ELSET"));
+    QCOMPARE(item("NALL")->text(1), QString("37"));
+    QVERIFY(!(item("NALL")->flags() & Qt::ItemIsUserCheckable));  // nodes have nothing to hide
+    QCOMPARE(checked(), (QStringList{"E_HEX", "E_WEDGE", "E_TET"}));
+    QCOMPARE(drawnText(), QString("Every element drawn (3)"));
+  }
+
+  void aBoxHidesAndDrawsItsSet() {
+    item("E_HEX")->setCheckState(0, Qt::Unchecked);
+    QCOMPARE(scene_->setVisibility().hidden, std::vector<std::string>{"E_HEX"});
+    QCOMPARE(drawnCells(), std::size_t(2));
+    QCOMPARE(drawnText(), QString("Drawn: 2 of the 3 elements"));
+    item("E_HEX")->setCheckState(0, Qt::Checked);
+    QVERIFY(!scene_->setVisibility().active());
+    QCOMPARE(drawnCells(), std::size_t(3));
+  }
+
+  void showOnlyAndShowAll() {
+    emit tree()->itemDoubleClicked(item("E_TET"), 0);
+    QCOMPARE(scene_->setVisibility().shown, std::vector<std::string>{"E_TET"});
+    QCOMPARE(checked(), QStringList{"E_TET"});
+    QCOMPARE(drawnCells(), std::size_t(1));
+    item("E_WEDGE")->setCheckState(0, Qt::Checked);  // one more set drawn
+    QCOMPARE(checked(), (QStringList{"E_WEDGE", "E_TET"}));
+    QCOMPARE(drawnCells(), std::size_t(2));
+    tree()->clearSelection();
+    item("E_HEX")->setSelected(true);
+    item("NALL")->setSelected(true);  // a node set is left out of Show Only
+    panel_->findChild<QPushButton*>("setsShowOnly")->click();
+    QCOMPARE(checked(), QStringList{"E_HEX"});
+    panel_->findChild<QPushButton*>("setsShowAll")->click();
+    QCOMPARE(checked(), (QStringList{"E_HEX", "E_WEDGE", "E_TET"}));
+    QCOMPARE(drawnCells(), std::size_t(3));
+  }
+
+  void aRefusedChoiceChangesNothing() {
+    emit tree()->itemDoubleClicked(item("E_TET"), 0);
+    item("E_TET")->setCheckState(0, Qt::Unchecked);  // nothing would be left
+    QVERIFY(window_->statusBar()->currentMessage().contains("leave no element"));
+    QCOMPARE(checked(), QStringList{"E_TET"});
+    QCOMPARE(drawnCells(), std::size_t(1));
+  }
+
+  void theBoxesFollowAStateAndAnotherModel() {
+    SceneState state = scene_->state();
+    state.sets.hidden = {"E_WEDGE"};
+    scene_->applyState(state);
+    panel_->followScene();
+    QCOMPARE(checked(), (QStringList{"E_HEX", "E_TET"}));
+    scene_->setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));
+    panel_->followScene();
+    QVERIFY(item("This model defines no sets"));
+    QVERIFY(!panel_->findChild<QPushButton*>("setsShowOnly")->isEnabled());
+  }
+};
+
+int main(int argc, char** argv) {
+  qputenv("QT_QPA_PLATFORM", "offscreen");  // a tree and buttons only: no display needed
+  QApplication app(argc, argv);
+  SetsPanelTest test;
+  return QTest::qExec(&test, argc, argv);
+}
+
+#include "SetsPanelTest.moc"
