@@ -52,10 +52,12 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   tree_ = new QTreeWidget(this);
   tree_->setObjectName("setsTree");
-  tree_->setColumnCount(3);
-  tree_->setHeaderLabels({"Set", "Count", "Defined by"});
+  tree_->setColumnCount(2);
+  tree_->setHeaderLabels({"Set", "Count"});
   tree_->setSelectionMode(QAbstractItemView::ExtendedSelection);
+  // The name takes the room the count leaves (a narrow dock cut names to "N...").
   tree_->header()->setSectionResizeMode(0, QHeaderView::Stretch);
+  tree_->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
   tree_->header()->setStretchLastSection(false);
   tree_->setRootIsDecorated(true);
   layout->addWidget(tree_);
@@ -99,32 +101,32 @@ void SetsPanel::listSets() {
     none->setFlags(Qt::ItemIsEnabled);
     return;
   }
-  QTreeWidgetItem* groups[2] = {nullptr, nullptr};
-  for (const EntitySet& s : sets) {
-    const int g = s.kind == SetKind::Cells ? 0 : 1;
-    if (!groups[g]) {
-      groups[g] = new QTreeWidgetItem(tree_, {g == 0 ? "Element sets" : "Node sets"});
-      groups[g]->setFlags(Qt::ItemIsEnabled);
-      groups[g]->setExpanded(true);
-    }
-    auto* item = new QTreeWidgetItem(
-        groups[g], {QString::fromStdString(s.name), count(s.members.size()), QString::fromStdString(s.origin)});
-    item->setData(0, kNameRole, QString::fromStdString(s.name));
-    item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
-    if (g == 0) {
-      item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable);
-      item->setToolTip(0, "Its box draws or hides its " + count(s.members.size()) + " elements");
-    } else {
-      item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
-      item->setToolTip(
-          0,
-          QString("A set of %1 nodes (the Probe panel takes \"node ID\" to query one)").arg(count(s.members.size())));
-    }
-  }
+  QTreeWidgetItem* groups[2] = {nullptr, nullptr};  // element sets first: they have boxes
+  for (const SetKind kind : {SetKind::Cells, SetKind::Nodes})
+    for (const EntitySet& s : sets)
+      if (s.kind == kind) addSet(groups, s);
   for (QTreeWidgetItem* g : groups)
     if (g) g->setText(1, count(std::size_t(g->childCount())));
-  tree_->resizeColumnToContents(1);
-  tree_->resizeColumnToContents(2);
+}
+
+void SetsPanel::addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s) {
+  const int g = s.kind == SetKind::Cells ? 0 : 1;
+  if (!groups[g]) {
+    groups[g] = new QTreeWidgetItem(tree_, {g == 0 ? "Element sets" : "Node sets"});
+    groups[g]->setFlags(Qt::ItemIsEnabled);
+    groups[g]->setExpanded(true);
+  }
+  auto* item = new QTreeWidgetItem(groups[g], {QString::fromStdString(s.name), count(s.members.size())});
+  item->setData(0, kNameRole, QString::fromStdString(s.name));
+  item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
+  const QString what = QString("%1 (%2): ").arg(QString::fromStdString(s.name), QString::fromStdString(s.origin));
+  if (g == 0) {
+    item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsUserCheckable);
+    item->setToolTip(0, what + "its box draws or hides its " + count(s.members.size()) + " elements");
+  } else {
+    item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+    item->setToolTip(0, what + count(s.members.size()) + " nodes (the Probe panel takes \"node ID\" to query one)");
+  }
 }
 
 void SetsPanel::followScene() {

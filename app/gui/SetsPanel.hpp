@@ -17,6 +17,10 @@ class QPushButton;
 class QTreeWidget;
 class QTreeWidgetItem;
 
+namespace volpost {
+struct EntitySet;
+}
+
 namespace volpost::app {
 
 class ModelSession;
@@ -33,6 +37,7 @@ class SetsPanel : public QWidget {
 
  private:
   void listSets();
+  void addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s);
   void boxToggled(QTreeWidgetItem* item);
   void showOnlySelected();
   void apply(const SetVisibility& v);
