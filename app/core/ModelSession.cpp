@@ -6,10 +6,44 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace volpost::app {
 namespace {
+
+// Which nodes the cells use, where some are not: a part of a model (a threshold, element
+// sets) shares the whole model's nodes, and its color range, like its bounds and its
+// extremes, is that of the nodes it draws. Empty where every node is used (no cost then).
+std::shared_ptr<const std::vector<char>> usedNodesIfNotAll(const Model& model) {
+  if (!model.meshBuilt()) return nullptr;
+  const Mesh& mesh = model.mesh();
+  auto used = std::make_shared<std::vector<char>>(mesh.nodeCount(), 0);
+  for (const NodeIndex n : mesh.connectivity())
+    if (n < used->size()) (*used)[n] = 1;
+  if (std::find(used->begin(), used->end(), 0) == used->end()) return nullptr;
+  return used;
+}
+
+ValueRange rangeOfUsed(const SampleView& values, const std::vector<char>& used) {
+  ValueRange r;
+  r.min = std::numeric_limits<double>::infinity();
+  r.max = -r.min;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i < used.size() && !used[i]) continue;
+    const double x = values[i];
+    if (!std::isfinite(x)) {
+      ++r.nanCount;
+      continue;
+    }
+    ++r.finiteCount;
+    r.min = std::min(r.min, x);
+    r.max = std::max(r.max, x);
+  }
+  if (!r.valid()) r.min = r.max = 0.0;  // as rangeOf gives it
+  return r;
+}
 
 // A grid's boundary comes from its index ranges while its hexahedra are not built.
 BoundarySurface boundaryOf(const Model& model, const Progress& progress = {}) {
@@ -46,6 +80,7 @@ std::shared_ptr<ModelSession> ModelSession::fromModel(std::shared_ptr<Model> mod
   const Bounds b = session->model_->bounds();
   session->origin_ = b.valid ? b.center() : glm::dvec3(0.0);
   session->bounds_ = b;
+  session->usedNodes_ = usedNodesIfNotAll(*session->model_);
   if (boundary == Boundary::Now) {
     Progress stage = progress;
     stage.setStage("extracting the boundary");
@@ -73,6 +108,7 @@ std::shared_ptr<ModelSession> ModelSession::withFormulas(const ModelSession& bas
   session->readerOptions_ = base.readerOptions_;
   session->origin_ = base.origin_;
   session->bounds_ = base.bounds_;
+  session->usedNodes_ = base.usedNodes_;
   session->geometry_ = base.geometry_;
   session->formulas_ = formulas;
   return session;
@@ -136,7 +172,8 @@ ScalarView ModelSession::evaluate(const Quantity& q, std::size_t step) const {
     throw ReadError(model_->sourcePath, "ran out of memory reading field " + f.name() + " (memory budget " +
                                             byteSizeText(double(memoryBudget())) + ")");
   }
-  view.range = rangeOf(view.values);
+  view.range =
+      view.location == FieldLocation::Node && usedNodes_ ? rangeOfUsed(view.values, *usedNodes_) : rangeOf(view.values);
   // Colors, transfer functions and legends divide by the range: a range whose width is
   // beyond a double (values near -1.7e308 and 1.7e308) cannot be drawn.
   if (!std::isfinite(view.range.max - view.range.min)) {

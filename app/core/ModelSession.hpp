@@ -120,6 +120,8 @@ class ModelSession {
   std::shared_ptr<Model> model_;
   glm::dvec3 origin_{0.0};
   Bounds bounds_;
+  /// Per node, whether a cell uses it; null where all are (ranges then cross every node).
+  std::shared_ptr<const std::vector<char>> usedNodes_;
 };
 
 }  // namespace volpost::app

@@ -64,6 +64,18 @@ TEST(Threshold, KeepsTheCellsWhoseNodesLieInTheRange) {
   const auto byRegion = thresholdedSession(*whole, ThresholdLayer{true, "region", 0.5, 1.5, true}, 0);
   EXPECT_EQ(byRegion->model().cellCount(), whole->model().cellCount());
   EXPECT_EQ(thresholdedSession(*whole, ThresholdLayer{true, "region", 2.0, 3.0, true}, 0)->model().cellCount(), 0u);
+  // The part's color range is that of the nodes its cells use, not of every node it shares.
+  const ScalarView partView = all->evaluate(all->findQuantity("S11"), 0);
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::size_t c = 0; c < all->model().cellCount(); ++c)
+    for (const NodeIndex n : all->model().mesh().cellNodes(c)) {
+      lo = std::min(lo, partView.values[n]);
+      hi = std::max(hi, partView.values[n]);
+    }
+  EXPECT_EQ(partView.range.min, lo);
+  EXPECT_EQ(partView.range.max, hi);
+  EXPECT_LT(hi - lo, whole->evaluate(whole->findQuantity("S11"), 0).range.max -
+                         whole->evaluate(whole->findQuantity("S11"), 0).range.min);
   EXPECT_THROW(checkThreshold(*whole, ThresholdLayer{true, "S11", 2.0, 1.0, true}), std::invalid_argument);
   EXPECT_THROW(checkThreshold(*whole, ThresholdLayer{true, "nothing", 0.0, 1.0, true}), std::invalid_argument);
 }
