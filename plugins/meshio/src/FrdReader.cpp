@@ -5,6 +5,8 @@
 // spaces.
 #include "FrdReader.hpp"
 
+#include "SetsFromDeck.hpp"
+
 #include "CalculixElements.hpp"
 #include "FileBytes.hpp"
 #include "NodeTable.hpp"
@@ -243,6 +245,7 @@ std::unique_ptr<Model> FrdReader::read(const std::string& path, const Progress& 
   FrdParser parser(readFileBytes(path, progress), path, progress);
   auto model = parser.parse();
   model->formatName = formatName();
+  addSetsFromDeckBeside(path, *model);
   return model;
 }
 

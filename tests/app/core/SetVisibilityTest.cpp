@@ -11,6 +11,8 @@
 #include "core/Scene.hpp"
 #include "core/SetVisibility.hpp"
 
+#include <fstream>
+
 using namespace volpost;
 using namespace volpost::app;
 
@@ -100,4 +102,29 @@ TEST(SetVisibility, TheSceneDrawsThePartAndSavesTheChoice) {
   scene.setSession(golden());
   EXPECT_FALSE(scene.setVisibility().active());
   EXPECT_EQ(scene.session()->model().cellCount(), 3u);
+}
+
+TEST(SetVisibility, TheColorRangeAndExtremesAreThoseOfTheDrawnSets) {
+  // Two tets, region 7 and region 9 (groups offered by the integer field), sharing three
+  // nodes; T is 100 at the node only region 9 uses.
+  const std::string path = ::testing::TempDir() + "/two_regions.vtk";
+  std::ofstream(path) << "# vtk DataFile Version 3.0\nregions\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                         "POINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+                         "CELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n"
+                         "CELL_DATA 2\nSCALARS region int 1\nLOOKUP_TABLE default\n7\n9\n"
+                         "POINT_DATA 5\nSCALARS T double 1\nLOOKUP_TABLE default\n1\n2\n3\n4\n100\n";
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), path));
+  scene.setResult("T", 0);
+  EXPECT_EQ(scene.view()->range.max, 100.0);
+  scene.setSetVisibility({{"region 7"}, {}});
+  ASSERT_TRUE(scene.view());
+  EXPECT_EQ(scene.view()->range.min, 1.0);
+  EXPECT_EQ(scene.view()->range.max, 4.0) << "the node only the hidden set uses is not in the range";
+  const auto extremes = scene.extremes();
+  ASSERT_TRUE(extremes);
+  EXPECT_EQ(extremes->maxId, 4);
+  scene.setSetVisibility({{}, {"region 7"}});
+  EXPECT_EQ(scene.view()->range.min, 2.0);
+  EXPECT_EQ(scene.view()->range.max, 100.0);
 }

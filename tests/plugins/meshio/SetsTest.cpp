@@ -8,6 +8,7 @@
 #include <volpost/core/EntitySet.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -149,4 +150,40 @@ TEST(ModelSets, AnIntegerCellFieldOffersGroupsWhereTheFileHasNoSets) {
   // A deck's own sets come first and stop the offer.
   const auto deck = loadText("deck_sets.inp", kTwoBlocks);
   for (const EntitySet& s : modelSets(*deck)) EXPECT_NE(s.origin, "cell field") << s.name;
+}
+
+TEST(FrdSets, TheDeckBesideTheResultsGivesItsSets) {
+  const auto frd = meshioReaders().load(dataFile("bad/ref_small_tets.frd"));
+  const auto inp = meshioReaders().load(dataFile("bad/ref_small_tets.inp"));
+  const EntitySet& fixed = setNamed(*frd, "FIXED", SetKind::Nodes);
+  EXPECT_EQ(idsOf(*frd, fixed), idsOf(*inp, setNamed(*inp, "FIXED", SetKind::Nodes)));
+  EXPECT_EQ(fixed.origin, "NSET of ref_small_tets.inp");
+  EXPECT_EQ(setNamed(*frd, "EALL", SetKind::Cells).members.size(), frd->mesh().cellCount());
+  EXPECT_NE(diagnostic(*frd, "deck-sets"), nullptr);
+}
+
+TEST(FrdSets, ADeckOfAnotherMeshOrAnUnreadableOneIsSaid) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "frd_beside";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(dataFile("bad/ref_small_tets.frd"), dir / "model.frd",
+                             std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(dir / "model.inp") << std::string(kTwoBlocks) +
+                                          "*NODE\n9999, 5, 5, 5\n*NSET, NSET=FAR\n1, 2, 9999, 5000\n";
+  const auto other = meshioReaders().load((dir / "model.frd").string());
+  EXPECT_EQ(other->mesh().cellCount(), 266u) << "the results are loaded all the same";
+  const Diagnostic* mismatch = diagnostic(*other, "deck-sets-mismatch");
+  ASSERT_NE(mismatch, nullptr);
+  EXPECT_NE(mismatch->message.find("model.inp"), std::string::npos) << mismatch->message;
+  EXPECT_EQ(idsOf(*other, setNamed(*other, "FAR", SetKind::Nodes)), (std::set<std::int64_t>{1, 2}));
+  const Diagnostic* unknown = diagnostic(*other, "set-unknown-ids");  // the deck's own word on its sets
+  ASSERT_NE(unknown, nullptr);
+  EXPECT_NE(unknown->message.find("model.inp: *NSET FAR names 1 node id"), std::string::npos) << unknown->message;
+
+  std::ofstream(dir / "model.inp") << "*NODE\n1, 0, zero, 0\n";
+  const auto unreadable = meshioReaders().load((dir / "model.frd").string());
+  EXPECT_EQ(unreadable->mesh().cellCount(), 266u);
+  const Diagnostic* notRead = diagnostic(*unreadable, "deck-sets-not-read");
+  ASSERT_NE(notRead, nullptr);
+  EXPECT_NE(notRead->message.find("model.inp:2: expected a node coordinate"), std::string::npos) << notRead->message;
+  EXPECT_TRUE(unreadable->sets.empty());
 }
