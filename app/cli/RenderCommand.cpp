@@ -191,6 +191,10 @@ struct Options {
                              "repeatable; `volpost info` lists the sets).",
                              "NAME"};
   QCommandLineOption hideSet{"hide-set", "Do not draw this element set (repeatable).", "NAME"};
+  QCommandLineOption markSet{"mark-set",
+                             "Mark this set's nodes in the picture (a node set, or the nodes of an element "
+                             "set's drawn elements).",
+                             "NAME"};
   QCommandLineOption thresholdNodes{
       "threshold-nodes", "all (default: every node of a cell in the range) or any (one is enough).", "WHICH"};
   QCommandLineOption sweep{"deformation-sweep",
@@ -248,7 +252,7 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
 
 // --show-set / --hide-set, over the state file's choice.
 void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
-  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet)) return;
+  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet) && !p.isSet(o.markSet)) return;
   SetVisibility v = scene.setVisibility();
   const auto names = [&](const QCommandLineOption& option) {
     std::vector<std::string> out;
@@ -257,6 +261,7 @@ void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene
   };
   if (p.isSet(o.showSet)) v.shown = names(o.showSet);
   if (p.isSet(o.hideSet)) v.hidden = names(o.hideSet);
+  if (p.isSet(o.markSet)) v.marked = p.value(o.markSet).toStdString();
   scene.setSetVisibility(v);  // invalid_argument (unknown set, a node set, nothing left): a usage error
 }
 
@@ -917,6 +922,7 @@ int runRender(const QStringList& args) {
                      o.threshold,
                      o.thresholdNodes,
                      o.showSet,
+                     o.markSet,
                      o.hideSet,
                      o.logScale,
                      o.stepText});
@@ -1067,6 +1073,9 @@ int runRender(const QStringList& args) {
           std::fprintf(stderr, "volpost: note: %zu streamline%s %s\n", std::size_t(spent), spent == 1 ? "" : "s",
                        describe(StreamlineStop::PointBudget));
       }
+      if (!scene.setVisibility().marked.empty())
+        std::fprintf(stderr, "volpost: note: %zu nodes of %s are marked\n", scene.markedSetPoints().size(),
+                     scene.setVisibility().marked.c_str());
       if (scene.setVisibility().active() && !scene.threshold().shown)
         std::fprintf(stderr, "volpost: note: the chosen sets hold %zu of the %zu cells\n",
                      scene.session()->model().cellCount(), scene.baseSession()->model().cellCount());

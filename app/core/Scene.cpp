@@ -670,18 +670,38 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
 }
 
 void Scene::setSetVisibility(const SetVisibility& sets) {
-  if (sets.active()) {
+  if (sets.active() || !sets.marked.empty()) {
     if (!baseSession_) throw std::invalid_argument("no model is open to show sets of");
     checkSetVisibility(*baseSession_, sets);
-    if (state_.threshold.shown &&
+    if (sets.active() && !sets.drawsTheSame(state_.sets) && state_.threshold.shown &&
         thresholdedSession(*setVisibleSession(baseSession_, sets), state_.threshold, state_.step)
                 ->model()
                 .cellCount() == 0)
       throw std::invalid_argument("no cell of these sets has " + state_.threshold.quantity +
                                   " within the threshold's range at this step");
   }
+  const bool sameCells = sets.drawsTheSame(state_.sets);
   state_.sets = sets;
-  rebuildDeformation();
+  if (!sameCells) rebuildDeformation();  // marking another set draws the same cells
+}
+
+const std::vector<glm::dvec3>& Scene::markedSetPoints() const {
+  const std::string& name = state_.sets.marked;
+  if (!markedFor_.expired() && markedFor_.lock() == session_ && markedName_ == name) return markedPoints_;
+  markedFor_ = session_;
+  markedName_ = name;
+  markedPoints_.clear();
+  if (name.empty() || !session_) return markedPoints_;
+  std::vector<std::uint32_t> nodes;
+  try {
+    nodes = markedNodes(*session_, name);
+  } catch (const std::invalid_argument&) {
+    return markedPoints_;  // checked when it was set: a part made since may lack it
+  }
+  const std::size_t stride = nodes.size() / kMaxMarkedNodes + 1;
+  for (std::size_t i = 0; i < nodes.size(); i += stride)
+    markedPoints_.push_back(session_->model().nodePosition(nodes[i]));
+  return markedPoints_;
 }
 
 void Scene::setThreshold(const ThresholdLayer& layer) {

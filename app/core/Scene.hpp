@@ -95,6 +95,10 @@ class Scene {
   /// std::invalid_argument, changing nothing, for unknown names, node sets, or no cell left.
   void setSetVisibility(const SetVisibility& sets);
   const SetVisibility& setVisibility() const { return state_.sets; }
+  /// Where the marked set's nodes are now (deformed when the shape is), at most
+  /// kMaxMarkedNodes of them (evenly taken from a larger set); empty without a marked set.
+  const std::vector<glm::dvec3>& markedSetPoints() const;
+  static constexpr std::size_t kMaxMarkedNodes = 50000;
   /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
   double deformationScale() const { return deformationScale_; }
 
@@ -374,6 +378,10 @@ class Scene {
   mutable std::optional<double> smallestPositive_;  ///< of view_, for a log scale
   mutable std::uint64_t smallestPositiveVersion_ = ~std::uint64_t(0);
   mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
+  /// The marked set's points, and for which model part and name they were found.
+  mutable std::vector<glm::dvec3> markedPoints_;
+  mutable std::weak_ptr<const ModelSession> markedFor_;  // weak: a freed part's address may be reused
+  mutable std::string markedName_;
   mutable std::vector<std::optional<double>> probedValues_;
   mutable std::uint64_t probedVersion_ = ~std::uint64_t(0);  ///< viewVersion_ probedValues_ is for
   mutable std::vector<glm::dvec3> probedPoints_;              ///< and the points

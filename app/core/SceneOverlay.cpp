@@ -46,7 +46,7 @@ void drawLabel(QPainter& painter, const QRect& area, QPointF at, const QString& 
   painter.drawText(box, Qt::AlignCenter, text);
 }
 
-enum class MarkerShape { Dot, Up, Down };
+enum class MarkerShape { Dot, Up, Down, Node };
 
 struct Marker {
   QPointF at;
@@ -59,6 +59,11 @@ struct Marker {
 void drawMarkerShape(QPainter& painter, const Marker& m, double scale) {
   painter.setPen(QPen(Qt::white, 1.5 * scale));
   painter.setBrush(m.color);
+  if (m.shape == MarkerShape::Node) {  // many of them: small, no outline
+    painter.setPen(Qt::NoPen);
+    painter.drawRect(QRectF(m.at - QPointF(2.5, 2.5) * scale, QSizeF(5, 5) * scale));
+    return;
+  }
   if (m.shape == MarkerShape::Dot) {
     painter.drawEllipse(m.at, 4.5 * scale, 4.5 * scale);
     return;
@@ -101,6 +106,24 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
       }
     }
     markers.push_back(m);
+  }
+}
+
+// The marked set's nodes, small magenta squares (a color no result map uses), the set's
+// name beside the first.
+void addMarkedSet(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
+  const std::vector<glm::dvec3>& points = scene.markedSetPoints();
+  if (points.empty()) return;
+  const Camera camera = scene.pictureCamera(area.width(), area.height());
+  bool named = false;
+  for (const glm::dvec3& p : points) {
+    if (!keptByClipPlanes(scene, p)) continue;
+    const auto at = camera.projectToPicture(p, area.width(), area.height());
+    if (!at) continue;
+    markers.push_back({QPointF(area.left() + at->x, area.top() + at->y),
+                       named ? QString() : QString::fromStdString(scene.setVisibility().marked), QColor(220, 0, 200),
+                       MarkerShape::Node});
+    named = true;
   }
 }
 
@@ -302,6 +325,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   if (const auto& line = scene.plotLine()) paintPlotLine(painter, area, scene, *line, scale);
   if (scene.showsRakes()) paintRakes(painter, area, scene, scale);
   std::vector<Marker> markers;
+  addMarkedSet(markers, area, scene);  // first: the extremes and probes are drawn over them
   addExtremes(markers, area, scene);
   addProbes(markers, area, scene);
   PlacedLabels placed;  // the markers first: no label covers one

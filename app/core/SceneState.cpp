@@ -315,7 +315,11 @@ ThresholdLayer thresholdFrom(const Reader& r, const json& in) {
   return t;
 }
 
-json jsonOf(const SetVisibility& v) { return {{"shown", v.shown}, {"hidden", v.hidden}}; }
+json jsonOf(const SetVisibility& v) {
+  json out = {{"shown", v.shown}, {"hidden", v.hidden}};
+  if (!v.marked.empty()) out["marked"] = v.marked;
+  return out;
+}
 
 SetVisibility setsFrom(const Reader& r, const json& in) {
   SetVisibility v;
@@ -328,6 +332,7 @@ SetVisibility setsFrom(const Reader& r, const json& in) {
   };
   names("shown", v.shown);
   names("hidden", v.hidden);
+  if (const json* x = r.find(in, "marked")) v.marked = r.text(*x, "sets.marked");
   return v;
 }
 
@@ -466,7 +471,7 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["streamlines"] = jsonOf(streamlines);
   if (glyphs != GlyphLayer{}) out["glyphs"] = jsonOf(glyphs);
   if (threshold != ThresholdLayer{}) out["threshold"] = jsonOf(threshold);
-  if (sets.active()) out["sets"] = jsonOf(sets);
+  if (sets.active() || !sets.marked.empty()) out["sets"] = jsonOf(sets);
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
                         {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},

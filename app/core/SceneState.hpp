@@ -195,7 +195,8 @@ struct SceneState {
   /// Only the cells whose value lies in a range; "threshold" in the file:
   /// {"shown": true, "quantity": "S.mises", "range": [100, 200], "nodes": "all"}.
   ThresholdLayer threshold;
-  /// Element sets drawn alone or hidden; "sets" in the file: {"shown": ["EALL"], "hidden": []}.
+  /// Element sets drawn alone or hidden, and the set marked; "sets" in the file:
+  /// {"shown": ["EALL"], "hidden": [], "marked": "FIXED"}.
   SetVisibility sets;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;

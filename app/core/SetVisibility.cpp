@@ -25,6 +25,17 @@ const EntitySet& elementSet(const std::vector<EntitySet>& sets, const std::strin
   return *s;
 }
 
+// The set to mark, of either kind (a copy: the sets are made on each call); throws naming
+// the sets there are.
+EntitySet markedSet(const ModelSession& session, const std::string& name) {
+  const std::vector<EntitySet> sets = modelSets(session.model());
+  if (const EntitySet* s = findSet(sets, name)) return *s;
+  std::string all;
+  for (const EntitySet& e : sets) all += (all.empty() ? "" : ", ") + e.name;
+  throw std::invalid_argument("no set is named '" + name + "' (" +
+                              (all.empty() ? std::string("this model has no sets") : "its sets: " + all) + ")");
+}
+
 }  // namespace
 
 std::vector<char> cellsOfSets(const ModelSession& session, const SetVisibility& v) {
@@ -40,7 +51,31 @@ std::vector<char> cellsOfSets(const ModelSession& session, const SetVisibility& 
   return kept;
 }
 
+std::vector<std::uint32_t> markedNodes(const ModelSession& session, const std::string& name) {
+  const EntitySet set = markedSet(session, name);
+  const EntitySet* s = &set;
+  const Model& model = session.model();
+  if (!model.meshBuilt()) return {};
+  const Mesh& mesh = model.mesh();
+  std::vector<char> marked(mesh.nodeCount(), 0);
+  if (s->kind == SetKind::Cells) {
+    for (const std::uint32_t c : s->members)
+      if (c < mesh.cellCount())
+        for (const NodeIndex n : mesh.cellNodes(c)) marked[n] = 1;
+  } else {
+    std::vector<char> used(mesh.nodeCount(), 0);  // a node of a hidden part is not there to mark
+    for (const NodeIndex n : mesh.connectivity()) used[n] = 1;
+    for (const std::uint32_t n : s->members)
+      if (n < used.size() && used[n]) marked[n] = 1;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::size_t n = 0; n < marked.size(); ++n)
+    if (marked[n]) out.push_back(std::uint32_t(n));
+  return out;
+}
+
 void checkSetVisibility(const ModelSession& session, const SetVisibility& v) {
+  if (!v.marked.empty()) (void)markedSet(session, v.marked);
   if (!v.active()) return;
   const std::vector<char> kept = cellsOfSets(session, v);  // throws for unknown names
   if (std::find(kept.begin(), kept.end(), 1) == kept.end())

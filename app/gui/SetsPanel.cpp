@@ -68,8 +68,15 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
   showAll_ = new QPushButton("Show &All", this);
   showAll_->setObjectName("setsShowAll");
   showAll_->setToolTip("Draw every element again");
+  mark_ = new QPushButton("&Mark", this);
+  mark_->setObjectName("setsMark");
+  mark_->setCheckable(true);
+  mark_->setToolTip(
+      "Mark the chosen set's nodes in the picture (an element set: its elements' nodes); "
+      "while on, the mark follows the set you choose");
   buttons->addWidget(showOnly_);
   buttons->addWidget(showAll_);
+  buttons->addWidget(mark_);
   buttons->addStretch();
   layout->addLayout(buttons);
   drawn_ = new QLabel(this);
@@ -81,10 +88,23 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
     if (column == 0) boxToggled(item);
   });
   connect(tree_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
-    if (item->flags() & Qt::ItemIsUserCheckable) apply({{item->data(0, kNameRole).toString().toStdString()}, {}});
+    if (!(item->flags() & Qt::ItemIsUserCheckable)) return;
+    SetVisibility v = scene_.setVisibility();
+    v.shown = {item->data(0, kNameRole).toString().toStdString()};
+    v.hidden.clear();
+    apply(v);
   });
   connect(showOnly_, &QPushButton::clicked, this, [this] { showOnlySelected(); });
-  connect(showAll_, &QPushButton::clicked, this, [this] { apply({}); });
+  connect(showAll_, &QPushButton::clicked, this, [this] {
+    SetVisibility v = scene_.setVisibility();
+    v.shown.clear();
+    v.hidden.clear();
+    apply(v);
+  });
+  connect(mark_, &QPushButton::clicked, this, [this](bool on) { markCurrent(on); });
+  connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
+    if (!following_ && mark_->isChecked()) markCurrent(true);  // the mark follows the chosen set
+  });
   followScene();
 }
 
@@ -130,6 +150,7 @@ void SetsPanel::addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s) {
 }
 
 void SetsPanel::followScene() {
+  following_ = true;
   // Another model (compared by its file too: a new session may take a freed one's address).
   const ModelSession* base = scene_.baseSession();
   if (base != listed_ || (base && base->model().sourcePath != listedPath_)) listSets();
@@ -147,11 +168,19 @@ void SetsPanel::followScene() {
   const bool hasElementSets = !tree_->findItems("Element sets", Qt::MatchExactly, 0).isEmpty();
   showOnly_->setEnabled(hasElementSets);
   showAll_->setEnabled(v.active());
+  mark_->setEnabled(listed_ && tree_->topLevelItemCount() > 0 && tree_->topLevelItem(0)->childCount() > 0);
+  mark_->setChecked(!v.marked.empty());
   if (!base || !session) drawn_->clear();
-  else if (!v.active()) drawn_->setText(QString("Every element drawn (%1)").arg(count(base->model().cellCount())));
-  else
-    drawn_->setText(QString("Drawn: %1 of the %2 elements")
-                        .arg(count(session->model().cellCount()), count(base->model().cellCount())));
+  else {
+    QString text = !v.active() ? QString("Every element drawn (%1)").arg(count(base->model().cellCount()))
+                               : QString("Drawn: %1 of the %2 elements")
+                                     .arg(count(session->model().cellCount()), count(base->model().cellCount()));
+    if (!v.marked.empty())
+      text += QString("; %1 marked (%2 nodes)")
+                  .arg(QString::fromStdString(v.marked), count(scene_.markedSetPoints().size()));
+    drawn_->setText(text);
+  }
+  following_ = false;
 }
 
 void SetsPanel::boxToggled(QTreeWidgetItem* item) {
@@ -172,8 +201,23 @@ void SetsPanel::boxToggled(QTreeWidgetItem* item) {
   apply(v);
 }
 
+void SetsPanel::markCurrent(bool on) {
+  SetVisibility v = scene_.setVisibility();
+  QTreeWidgetItem* item = tree_->currentItem();
+  const QVariant name = item ? item->data(0, kNameRole) : QVariant();
+  if (on && !name.isValid()) {
+    drawn_->setText("Choose a set to mark it");
+    mark_->setChecked(false);
+    return;
+  }
+  v.marked = on ? name.toString().toStdString() : std::string();
+  apply(v);
+}
+
 void SetsPanel::showOnlySelected() {
-  SetVisibility v;
+  SetVisibility v = scene_.setVisibility();
+  v.shown.clear();
+  v.hidden.clear();
   for (QTreeWidgetItem* item : tree_->selectedItems())
     if (item->flags() & Qt::ItemIsUserCheckable) v.shown.push_back(item->data(0, kNameRole).toString().toStdString());
   if (v.shown.empty()) {

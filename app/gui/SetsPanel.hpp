@@ -3,7 +3,8 @@
 // the file defines (ELSET/NSET, physical groups, element blocks, groups of a region field)
 // with their counts. An element set's box draws or hides its elements; Show Only draws the
 // selected sets alone (a double click: that set alone), Show All every element. The boxes
-// always show the scene's choice, after a state file or a refused change too.
+// always show the scene's choice, after a state file or a refused change too. Mark draws
+// the chosen set's nodes in the picture.
 #pragma once
 
 #include "ChangeScene.hpp"
@@ -40,6 +41,7 @@ class SetsPanel : public QWidget {
   void addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s);
   void boxToggled(QTreeWidgetItem* item);
   void showOnlySelected();
+  void markCurrent(bool on);
   void apply(const SetVisibility& v);
 
   const Scene& scene_;
@@ -47,6 +49,7 @@ class SetsPanel : public QWidget {
   QTreeWidget* tree_ = nullptr;
   QPushButton* showOnly_ = nullptr;
   QPushButton* showAll_ = nullptr;
+  QPushButton* mark_ = nullptr;
   QLabel* drawn_ = nullptr;
   const ModelSession* listed_ = nullptr;  // whose sets the tree lists
   std::string listedPath_;

@@ -1175,6 +1175,12 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
     EXPECT_EQ(r.exitCode, 2) << options;
     EXPECT_NE(r.output.find(message), std::string::npos) << options << "\n" << r.output;
   };
+  const std::string marked = (dir / "marked.png").string();
+  const auto mark = runVolpost(common + "--mark-set NALL -o " + marked);
+  ASSERT_EQ(mark.exitCode, 0) << mark.output;
+  EXPECT_NE(mark.output.find("37 nodes of NALL are marked"), std::string::npos) << mark.output;
+  EXPECT_NE(QImage(QString::fromStdString(all)), QImage(QString::fromStdString(marked)));
+  refused("--mark-set NOSUCH", "no set is named 'NOSUCH' (its sets: NALL, E_HEX, E_WEDGE, E_TET)");
   refused("--show-set E_BEAM", "no set is named 'E_BEAM' (its element sets: E_HEX, E_WEDGE, E_TET)");
   refused("--hide-set NALL", "'NALL' is a set of 37 nodes");
   refused("--hide-set E_HEX --hide-set E_WEDGE --hide-set E_TET", "leaves no element to draw");

@@ -42,13 +42,13 @@ std::string refusal(const ModelSession& session, const SetVisibility& v) {
 
 TEST(SetVisibility, KeepsTheShownSetsLessTheHiddenOnes) {
   const auto whole = golden();
-  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"E_HEX"}, {}})), (std::vector<std::int64_t>{101}));
-  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{}, {"E_HEX"}})), (std::vector<std::int64_t>{102, 103}));
-  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"e_hex", "E_TET"}, {"E_TET"}})), (std::vector<std::int64_t>{101}))
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"E_HEX"}, {}, {}})), (std::vector<std::int64_t>{101}));
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{}, {"E_HEX"}, {}})), (std::vector<std::int64_t>{102, 103}));
+  EXPECT_EQ(idsOf(*setVisibleSession(whole, {{"e_hex", "E_TET"}, {"E_TET"}, {}})), (std::vector<std::int64_t>{101}))
       << "names are matched regardless of case, hidden wins";
   EXPECT_EQ(setVisibleSession(whole, {}), whole) << "no choice: the model itself";
   // The part keeps its sets, renumbered to its own cells.
-  const auto part = setVisibleSession(whole, {{"E_WEDGE", "E_TET"}, {}});
+  const auto part = setVisibleSession(whole, {{"E_WEDGE", "E_TET"}, {}, {}});
   const EntitySet* tet = findSet(part->model().sets, "E_TET");
   ASSERT_NE(tet, nullptr);
   ASSERT_EQ(tet->members.size(), 1u);
@@ -58,26 +58,26 @@ TEST(SetVisibility, KeepsTheShownSetsLessTheHiddenOnes) {
 
 TEST(SetVisibility, RefusesNamesThatAreNoElementSetAndEmptyChoices) {
   const auto whole = golden();
-  const std::string unknown = refusal(*whole, {{"E_BEAM"}, {}});
+  const std::string unknown = refusal(*whole, {{"E_BEAM"}, {}, {}});
   EXPECT_NE(unknown.find("no set is named 'E_BEAM'"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("E_HEX, E_WEDGE, E_TET"), std::string::npos) << unknown;
-  const std::string nodes = refusal(*whole, {{"NALL"}, {}});
+  const std::string nodes = refusal(*whole, {{"NALL"}, {}, {}});
   EXPECT_NE(nodes.find("'NALL' is a set of 37 nodes"), std::string::npos) << nodes;
-  const std::string nothing = refusal(*whole, {{}, {"E_HEX", "E_WEDGE", "E_TET"}});
+  const std::string nothing = refusal(*whole, {{}, {"E_HEX", "E_WEDGE", "E_TET"}, {}});
   EXPECT_NE(nothing.find("leaves no element"), std::string::npos) << nothing;
-  EXPECT_EQ(refusal(*whole, {{"E_HEX"}, {"E_TET"}}), "accepted");
+  EXPECT_EQ(refusal(*whole, {{"E_HEX"}, {"E_TET"}, {}}), "accepted");
 }
 
 TEST(SetVisibility, TheSceneDrawsThePartAndSavesTheChoice) {
   Scene scene([](const std::string&) { return nullptr; });
   scene.setSession(golden());
   scene.setResult("element set", 0);
-  scene.setSetVisibility({{"E_WEDGE"}, {}});
+  scene.setSetVisibility({{"E_WEDGE"}, {}, {}});
   EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
   ASSERT_TRUE(scene.view());
   ASSERT_EQ(scene.view()->values.size(), 1u);
   EXPECT_EQ(scene.view()->values[0], 2.0) << "the shown element result is the part's";
-  EXPECT_THROW(scene.setSetVisibility({{"NOSUCH"}, {}}), std::invalid_argument);
+  EXPECT_THROW(scene.setSetVisibility({{"NOSUCH"}, {}, {}}), std::invalid_argument);
   EXPECT_EQ(scene.setVisibility().shown, (std::vector<std::string>{"E_WEDGE"})) << "a refused choice changes nothing";
   EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
 
@@ -91,11 +91,11 @@ TEST(SetVisibility, TheSceneDrawsThePartAndSavesTheChoice) {
   // A threshold applies to the part the sets leave.
   scene.setThreshold(ThresholdLayer{true, "element set", 1.5, 3.5, true});
   EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{102}));
-  scene.setSetVisibility({{}, {"E_WEDGE"}});
+  scene.setSetVisibility({{}, {"E_WEDGE"}, {}});
   EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{103}));
   // Together they must leave a cell; a refused change keeps what was drawn.
   EXPECT_THROW(scene.setThreshold(ThresholdLayer{true, "element set", 1.5, 2.5, true}), std::invalid_argument);
-  EXPECT_THROW(scene.setSetVisibility({{"E_HEX"}, {}}), std::invalid_argument);
+  EXPECT_THROW(scene.setSetVisibility({{"E_HEX"}, {}, {}}), std::invalid_argument);
   EXPECT_EQ(idsOf(*scene.session()), (std::vector<std::int64_t>{103}));
 
   // Another model starts with every cell drawn.
@@ -117,14 +117,38 @@ TEST(SetVisibility, TheColorRangeAndExtremesAreThoseOfTheDrawnSets) {
   scene.setSession(ModelSession::load(volpost::test::meshioReaders(), path));
   scene.setResult("T", 0);
   EXPECT_EQ(scene.view()->range.max, 100.0);
-  scene.setSetVisibility({{"region 7"}, {}});
+  scene.setSetVisibility({{"region 7"}, {}, {}});
   ASSERT_TRUE(scene.view());
   EXPECT_EQ(scene.view()->range.min, 1.0);
   EXPECT_EQ(scene.view()->range.max, 4.0) << "the node only the hidden set uses is not in the range";
   const auto extremes = scene.extremes();
   ASSERT_TRUE(extremes);
   EXPECT_EQ(extremes->maxId, 4);
-  scene.setSetVisibility({{}, {"region 7"}});
+  scene.setSetVisibility({{}, {"region 7"}, {}});
   EXPECT_EQ(scene.view()->range.min, 2.0);
   EXPECT_EQ(scene.view()->range.max, 100.0);
+}
+
+TEST(SetVisibility, AMarkedSetGivesTheNodesOfWhatIsDrawn) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(golden());
+  scene.setSetVisibility({{"E_TET"}, {}, {}});
+  const auto part = scene.session();
+  SetVisibility marked = scene.setVisibility();
+  marked.marked = "nall";  // a node set: its nodes the drawn tet10 uses
+  scene.setSetVisibility(marked);
+  EXPECT_EQ(scene.session(), part) << "marking draws the same cells";
+  EXPECT_EQ(scene.markedSetPoints().size(), 10u);
+  marked.shown.clear();
+  marked.marked = "E_WEDGE";  // an element set: its wedge15's nodes
+  scene.setSetVisibility(marked);
+  EXPECT_EQ(scene.markedSetPoints().size(), 15u);
+  for (const glm::dvec3& p : scene.markedSetPoints()) EXPECT_GE(p.x, 0.0);
+  marked.marked = "NOSUCH";
+  EXPECT_THROW(scene.setSetVisibility(marked), std::invalid_argument);
+  EXPECT_EQ(scene.setVisibility().marked, "E_WEDGE");
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_EQ(back.sets.marked, "E_WEDGE");
+  scene.setSession(golden());
+  EXPECT_TRUE(scene.markedSetPoints().empty()) << "another model marks nothing";
 }

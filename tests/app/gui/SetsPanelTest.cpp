@@ -96,6 +96,25 @@ class SetsPanelTest : public QObject {
     QCOMPARE(drawnCells(), std::size_t(3));
   }
 
+  void markDrawsTheChosenSetsNodesAndFollowsTheChoice() {
+    QPushButton* mark = panel_->findChild<QPushButton*>("setsMark");
+    QVERIFY(mark->isEnabled());
+    tree()->setCurrentItem(item("NALL"));
+    mark->click();
+    QVERIFY(mark->isChecked());
+    QCOMPARE(scene_->setVisibility().marked, std::string("NALL"));
+    QCOMPARE(scene_->markedSetPoints().size(), std::size_t(37));
+    QVERIFY(drawnText().contains("NALL marked (37 nodes)"));
+    tree()->setCurrentItem(item("E_TET"));  // the mark follows
+    QCOMPARE(scene_->setVisibility().marked, std::string("E_TET"));
+    QCOMPARE(scene_->markedSetPoints().size(), std::size_t(10));
+    mark->click();
+    QVERIFY(!mark->isChecked());
+    QVERIFY(scene_->setVisibility().marked.empty());
+    tree()->setCurrentItem(item("E_HEX"));
+    QVERIFY2(scene_->setVisibility().marked.empty(), "off, choosing a set marks nothing");
+  }
+
   void aRefusedChoiceChangesNothing() {
     emit tree()->itemDoubleClicked(item("E_TET"), 0);
     item("E_TET")->setCheckState(0, Qt::Unchecked);  // nothing would be left
