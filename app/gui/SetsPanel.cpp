@@ -159,8 +159,12 @@ void SetsPanel::followScene() {
     const QSignalBlocker block(tree_);
     for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
       QTreeWidgetItem* item = *it;
+      const QVariant name = item->data(0, kNameRole);
+      if (!v.marked.empty() && name.isValid() &&
+          name.toString().compare(QString::fromStdString(v.marked), Qt::CaseInsensitive) == 0)
+        tree_->setCurrentItem(item);  // the marked set is the chosen one
       if (!(item->flags() & Qt::ItemIsUserCheckable)) continue;
-      const bool drawn = drawnByChoice(v, item->data(0, kNameRole).toString().toStdString());
+      const bool drawn = drawnByChoice(v, name.toString().toStdString());
       item->setCheckState(0, drawn ? Qt::Checked : Qt::Unchecked);
     }
   }
