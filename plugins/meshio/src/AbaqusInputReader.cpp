@@ -3,6 +3,7 @@
 
 #include "CalculixElements.hpp"
 #include "DeckSets.hpp"
+#include "DeckSurfaces.hpp"
 #include "FileBytes.hpp"
 #include "NodeTable.hpp"
 #include "TextScanner.hpp"
@@ -82,7 +83,7 @@ class DeckParser {
     TextScanner s(std::move(bytes), path);
     if (s.bytes().find('\0') != std::string::npos || !looksLikeText(s.bytes()))
       throw ReadError(path, "binary data, not an Abaqus/CalculiX input deck (which is text)");
-    enum class Block { None, Node, Element, Heading, Set } block = Block::None;
+    enum class Block { None, Node, Element, Heading, Set, Surface } block = Block::None;
     std::optional<SolidElement> element;
     std::string elset;
     std::vector<std::string_view> pending;  // fields of an element record spread over lines
@@ -110,6 +111,15 @@ class DeckParser {
           block = Block::Set;
           sets_.begin(k.name == "ELSET" ? SetKind::Cells : SetKind::Nodes, toUpper(trim(set->second)),
                       k.params.count("GENERATE") > 0);
+        } else if (k.name == "SURFACE") {
+          const auto name = k.params.find("NAME");
+          if (name == k.params.end() || trim(name->second).empty()) s.fail("*SURFACE without NAME=");
+          const auto type = k.params.find("TYPE");
+          const std::string kind = type == k.params.end() ? "ELEMENT" : toUpper(trim(type->second));
+          if (kind == "ELEMENT" || kind == "NODE") {  // analytical and cutting surfaces have no nodes to list
+            block = Block::Surface;
+            surfaces_.begin(toUpper(trim(name->second)), kind == "NODE");
+          }
         } else if (k.name == "HEADING") block = Block::Heading;
         else if (k.name == "ELEMENT") {
           block = Block::Element;
@@ -142,6 +152,9 @@ class DeckParser {
         case Block::Node: readNode(s, line); break;
         case Block::Set:
           sets_.readLine(s, line);
+          break;
+        case Block::Surface:
+          surfaces_.readLine(s, line);
           break;
         case Block::Heading:
           if (model_->title.empty()) model_->title = std::string(line);
@@ -219,7 +232,10 @@ class DeckParser {
     int count = int(element->vtkOrder.size());
     if (type == CellType::Hex8) {
       type = collapseDegenerateHex(std::span<std::uint32_t>(cell.data(), 8), count);
-      if (type != CellType::Hex8) ++collapsed_[type];
+      if (type != CellType::Hex8) {
+        ++collapsed_[type];
+        surfaces_.noteCollapsed(id);
+      }
     }
     model_->mesh().addCell(type, std::span<const NodeIndex>(cell.data(), std::size_t(count)));
     model_->mesh().cellIds.push_back(id);
@@ -232,6 +248,7 @@ class DeckParser {
 
   void finish() {
     sets_.moveInto(*model_, nodeIndex_, elementIndex_);
+    surfaces_.moveInto(*model_, nodeIndex_, elementIndex_, sets_.skippedElements());
     if (elsetNames_.size() > 1) {
       model_->fields.push_back(Field::fromValues("element set", FieldLocation::Cell, 1, {elsets_}));
       std::string names;
@@ -256,6 +273,7 @@ class DeckParser {
   std::unique_ptr<Model> model_;
   IdIndex nodeIndex_, elementIndex_;
   DeckSets sets_;
+  DeckSurfaces surfaces_;
   std::string nodeSet_;
   std::map<std::string, std::size_t> elsetIndex_;
   std::vector<std::string> elsetNames_;

@@ -29,6 +29,7 @@ class DeckSets {
   void addId(SetKind kind, const std::string& name, std::int64_t id);
   /// An element the reader did not load (a shell, a beam): sets may name it.
   void noteSkippedElement(std::int64_t id) { skippedElements_.insert(id); }
+  const std::unordered_set<std::int64_t>& skippedElements() const { return skippedElements_; }
   /// The sets as cell and node indices; ids no element or node has and names of unknown
   /// sets are reported in one warning each, sets left empty (of shells, say) in an info.
   void moveInto(Model& model, const IdIndex& nodes, const IdIndex& elements) const;

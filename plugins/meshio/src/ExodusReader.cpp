@@ -8,6 +8,7 @@
 // first triangle faces the second); its hex20/wedge15 list vertical edges before the top.
 #include "ExodusReader.hpp"
 
+#include "FaceNodes.hpp"
 #include "NetcdfClassicLayout.hpp"
 #include "NodeOrder.hpp"
 #include "ResultCollector.hpp"
@@ -60,6 +61,28 @@ std::optional<ExodusType> exodusType(std::string name, int nodesPerElement) {
     if (nodesPerElement >= 5) return ExodusType{CellType::Pyramid5, vtkOrderFrom(CellType::Pyramid5, pyramid, {})};
   }
   return std::nullopt;
+}
+
+// Exodus's side numbering (the manual's element side tables) as the element's corners,
+// 0-based in the file's node order; VTK's corners are the file's except the wedge's, whose
+// triangles run the other way (its own inverse).
+std::vector<int> exodusSide(CellType type, long long side) {
+  static const std::vector<std::vector<int>> tet{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
+  static const std::vector<std::vector<int>> hex{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
+                                                 {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const std::vector<std::vector<int>> wedge{{0, 1, 4, 3}, {1, 2, 5, 4}, {0, 3, 5, 2}, {0, 2, 1}, {3, 4, 5}};
+  static const std::vector<std::vector<int>> pyramid{{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 4, 3}, {0, 3, 2, 1}};
+  constexpr int kWedgeToVtk[6] = {0, 2, 1, 3, 5, 4};
+  const bool isWedge = type == CellType::Wedge6 || type == CellType::Wedge15;
+  const std::vector<std::vector<int>>& sides = type == CellType::Tet4 || type == CellType::Tet10   ? tet
+                                               : type == CellType::Hex8 || type == CellType::Hex20 ? hex
+                                               : isWedge                                           ? wedge
+                                                                                                   : pyramid;
+  if (side < 1 || std::size_t(side) > sides.size()) return {};
+  std::vector<int> corners = sides[std::size_t(side - 1)];
+  if (isWedge)
+    for (int& c : corners) c = kWedgeToVtk[c];
+  return corners;
 }
 
 // A read-only netCDF file; every call checked, errors name the file and the variable.
@@ -253,6 +276,7 @@ class ExodusParser {
     progress_.report(0.3);
     readBlocks(*blocks);
     readNodeSets();
+    readSideSets();
     progress_.report(0.5);
     readTimes();
     readNodalVariables();
@@ -294,6 +318,7 @@ class ExodusParser {
     const std::vector<long long> elementIds = nc_.variable("elem_num_map") ? nc_.integers("elem_num_map") : std::vector<long long>{};
     std::size_t fileElement = 0;
     blockCells_.resize(blocks);
+    cellOfFileElement_.assign(nc_.dimension("num_elem").value_or(0), kNoCell);
     for (std::size_t b = 0; b < blocks; ++b) {
       const std::string suffix = std::to_string(b + 1);
       const std::size_t count = nc_.dimension("num_el_in_blk" + suffix).value_or(0);
@@ -327,6 +352,8 @@ class ExodusParser {
           cell[k] = NodeIndex(node - 1);
         }
         blockCells_[b].push_back(model_->mesh().cellCount());
+        if (fileElement >= cellOfFileElement_.size()) cellOfFileElement_.resize(fileElement + 1, kNoCell);
+        cellOfFileElement_[fileElement] = std::uint32_t(model_->mesh().cellCount());
         model_->mesh().addCell(type->cell, std::span<const NodeIndex>(cell.data(), type->vtkOrder.size()));
         model_->mesh().cellIds.push_back(fileElement < elementIds.size() ? elementIds[fileElement] : (long long)(fileElement + 1));
         blockOfCell_.push_back(double(blockId));
@@ -373,6 +400,44 @@ class ExodusParser {
           nc_.fail(variable + " (" + set.name + ") names node " + std::to_string(node) + " of " +
                    std::to_string(model_->mesh().nodeCount()));
         set.members.push_back(std::uint32_t(node - 1));
+      }
+      normalizeMembers(set.members);
+      if (!set.members.empty()) model_->sets.push_back(std::move(set));
+    }
+  }
+
+  // Side sets: elem_ss<k> (the file's element numbers, 1-based) and side_ss<k> (each
+  // element's side), kept as the node set of those sides' nodes, named by ss_names or
+  // their id (ss_prop1).
+  void readSideSets() {
+    const std::size_t count = nc_.dimension("num_side_sets").value_or(0);
+    if (count == 0) return;
+    const std::vector<std::string> names = nc_.names("ss_names");
+    const std::vector<long long> ids = nc_.variable("ss_prop1") ? nc_.integers("ss_prop1") : std::vector<long long>{};
+    for (std::size_t k = 0; k < count && k < std::size_t(nc_.variableCount()); ++k) {
+      const std::string suffix = std::to_string(k + 1);
+      if (!nc_.variable("elem_ss" + suffix) || !nc_.variable("side_ss" + suffix)) continue;
+      const long long id = k < ids.size() ? ids[k] : (long long)(k + 1);
+      EntitySet set{k < names.size() && !names[k].empty() ? names[k] : "side set " + std::to_string(id),
+                    SetKind::Nodes,
+                    "side set",
+                    {}};
+      const std::vector<long long> elements = nc_.integers("elem_ss" + suffix);
+      const std::vector<long long> sides = nc_.integers("side_ss" + suffix);
+      if (elements.size() != sides.size())
+        nc_.fail("elem_ss" + suffix + " and side_ss" + suffix + " (" + set.name + ") differ in length");
+      for (std::size_t i = 0; i < elements.size(); ++i) {
+        const long long e = elements[i];
+        if (e < 1 || std::size_t(e) > cellOfFileElement_.size())
+          nc_.fail("elem_ss" + suffix + " (" + set.name + ") names element " + std::to_string(e) + " of " +
+                   std::to_string(cellOfFileElement_.size()));
+        const std::uint32_t cell = cellOfFileElement_[std::size_t(e - 1)];
+        if (cell == kNoCell) continue;  // a side of an element not loaded (a shell's)
+        const std::vector<int> corners = exodusSide(model_->mesh().cellType(cell), sides[i]);
+        if (corners.empty())
+          nc_.fail("side_ss" + suffix + " (" + set.name + ") names side " + std::to_string(sides[i]) + " of a " +
+                   std::string(cellTypeName(model_->mesh().cellType(cell))));
+        appendFaceNodes(model_->mesh(), cell, corners, set.members);
       }
       normalizeMembers(set.members);
       if (!set.members.empty()) model_->sets.push_back(std::move(set));
@@ -444,6 +509,8 @@ class ExodusParser {
   std::unique_ptr<Model> model_;
   std::vector<double> times_;
   std::vector<std::vector<std::size_t>> blockCells_;
+  static constexpr std::uint32_t kNoCell = 0xffffffffu;
+  std::vector<std::uint32_t> cellOfFileElement_;  ///< by the file's element number - 1; kNoCell: not loaded
   std::vector<double> blockOfCell_;
   std::size_t skipped_ = 0;
   std::string skippedTypes_;

@@ -187,3 +187,46 @@ TEST(FrdSets, ADeckOfAnotherMeshOrAnUnreadableOneIsSaid) {
   EXPECT_NE(notRead->message.find("model.inp:2: expected a node coordinate"), std::string::npos) << notRead->message;
   EXPECT_TRUE(unreadable->sets.empty());
 }
+
+TEST(DeckSurfaces, FacesBecomeTheNodeSetsOfTheirNodes) {
+  const auto model = loadText("surfaces.inp", std::string(kTwoBlocks) +
+                                                  "*SURFACE, NAME=BOTTOM\n1, S1\n"
+                                                  "*SURFACE, NAME=Side, TYPE=ELEMENT\n1, S2\n"
+                                                  "*SURFACE, NAME=OUTSIDE\nRIGHT\n"
+                                                  "*SURFACE, NAME=BYNODES, TYPE=NODE\nALLNODES\n"
+                                                  "*SURFACE, NAME=SHELL\nSKIN, SPOS\n"
+                                                  "*SURFACE, NAME=ODD\n1, S1\n77, S2\n");
+  const auto origin = [&](const char* name) { return setNamed(*model, name, SetKind::Nodes).origin; };
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "BOTTOM", SetKind::Nodes)), (std::set<std::int64_t>{1, 2, 4}));
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "SIDE", SetKind::Nodes)), (std::set<std::int64_t>{1, 2, 5}));
+  EXPECT_EQ(origin("BOTTOM"), "SURFACE");
+  // Without a face: the faces of RIGHT's two tets that they do not share, every node here.
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "OUTSIDE", SetKind::Nodes)), (std::set<std::int64_t>{2, 3, 6, 9, 10, 12}));
+  EXPECT_EQ(setNamed(*model, "BYNODES", SetKind::Nodes).members.size(), 12u);
+  EXPECT_EQ(findSet(model->sets, "SHELL"), nullptr) << "a shell's side is not loaded";
+  const Diagnostic* unknown = diagnostic(*model, "set-unknown-ids");
+  ASSERT_NE(unknown, nullptr);
+  EXPECT_NE(unknown->message.find("*SURFACE ODD names 1 id"), std::string::npos) << unknown->message;
+}
+
+TEST(DeckSurfaces, FaceNumbersOfWedgesHexahedraAndQuadraticTets) {
+  const auto model = loadText("faces.inp",
+                              "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,0,1\n6,0,1,1\n"
+                              "11,2,0,0\n12,3,0,0\n13,3,1,0\n14,2,1,0\n15,2,0,1\n16,3,0,1\n17,3,1,1\n18,2,1,1\n"
+                              "21,5,0,0\n22,6,0,0\n23,5,1,0\n24,5,0,1\n25,5.5,0,0\n26,5.5,0.5,0\n27,5,0.5,0\n"
+                              "28,5,0,0.5\n29,5.5,0,0.5\n30,5,0.5,0.5\n"
+                              "*ELEMENT, TYPE=C3D6\n1, 1,2,3,4,5,6\n"
+                              "*ELEMENT, TYPE=C3D8\n2, 11,12,13,14,15,16,17,18\n"
+                              "*ELEMENT, TYPE=C3D10\n3, 21,22,23,24,25,26,27,28,29,30\n"
+                              "*SURFACE, NAME=W1\n1, S1\n*SURFACE, NAME=W2\n1, S2\n*SURFACE, NAME=W3\n1, S3\n"
+                              "*SURFACE, NAME=H2\n2, S2\n*SURFACE, NAME=H6\n2, S6\n"
+                              "*SURFACE, NAME=T1\n3, S1\n*SURFACE, NAME=T3\n3, S3\n");
+  const auto ids = [&](const char* name) { return idsOf(*model, setNamed(*model, name, SetKind::Nodes)); };
+  EXPECT_EQ(ids("W1"), (std::set<std::int64_t>{1, 2, 3}));
+  EXPECT_EQ(ids("W2"), (std::set<std::int64_t>{4, 5, 6}));
+  EXPECT_EQ(ids("W3"), (std::set<std::int64_t>{1, 2, 4, 5}));
+  EXPECT_EQ(ids("H2"), (std::set<std::int64_t>{15, 16, 17, 18}));
+  EXPECT_EQ(ids("H6"), (std::set<std::int64_t>{11, 14, 15, 18}));
+  EXPECT_EQ(ids("T1"), (std::set<std::int64_t>{21, 22, 23, 25, 26, 27}));
+  EXPECT_EQ(ids("T3"), (std::set<std::int64_t>{22, 23, 24, 26, 29, 30}));
+}
