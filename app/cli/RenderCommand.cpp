@@ -195,6 +195,9 @@ struct Options {
                              "Mark this set's nodes in the picture (a node set, or the nodes of an element "
                              "set's drawn elements).",
                              "NAME"};
+  QCommandLineOption setNumbers{"set-numbers",
+                                "Write the marked set's numbers beside it: node ids, or element ids at the "
+                                "elements' centres (at most 300)."};
   QCommandLineOption thresholdNodes{
       "threshold-nodes", "all (default: every node of a cell in the range) or any (one is enough).", "WHICH"};
   QCommandLineOption sweep{"deformation-sweep",
@@ -252,7 +255,7 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
 
 // --show-set / --hide-set, over the state file's choice.
 void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
-  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet) && !p.isSet(o.markSet)) return;
+  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet) && !p.isSet(o.markSet) && !p.isSet(o.setNumbers)) return;
   SetVisibility v = scene.setVisibility();
   const auto names = [&](const QCommandLineOption& option) {
     std::vector<std::string> out;
@@ -262,7 +265,15 @@ void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene
   if (p.isSet(o.showSet)) v.shown = names(o.showSet);
   if (p.isSet(o.hideSet)) v.hidden = names(o.hideSet);
   if (p.isSet(o.markSet)) v.marked = p.value(o.markSet).toStdString();
+  if (p.isSet(o.setNumbers)) {
+    if (v.marked.empty())
+      throw std::invalid_argument("--set-numbers writes the marked set's numbers: add --mark-set NAME");
+    v.numbers = true;
+  }
   scene.setSetVisibility(v);  // invalid_argument (unknown set, a node set, nothing left): a usage error
+  // Without a camera of the state's, the picture frames the sets drawn (a small part of a
+  // large model was a speck in the whole model's frame).
+  if ((p.isSet(o.showSet) || p.isSet(o.hideSet)) && !p.isSet(o.state)) scene.fitCamera();
 }
 
 // --threshold Q:MIN:MAX, over the state file's.
@@ -650,6 +661,7 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
   if (p.isSet(o.state)) scene.applyState(base);
   else if (!base.formulas.empty()) scene.setFormulas(base.formulas);
   applyResultOptions(p, o, scene);
+  applySetOptions(p, o, scene);  // before the camera options: they frame what is drawn
   if (p.isSet(o.colormap)) scene.setColorMap(p.value(o.colormap).toStdString());
   if (p.isSet(o.range) && p.value(o.range) == "all-steps") {
     scene.setRangeOverSteps(true);
@@ -821,7 +833,6 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     throw UsageError("streamline options need --streamlines FIELD (the vector field to follow)");
   if (lines.shown && lines.seeds.empty()) throw UsageError("--streamlines needs --seeds (where the lines start)");
   scene.setStreamlines(lines);
-  applySetOptions(p, o, scene);
   applyThresholdOptions(p, o, scene);
   applyGlyphOptions(p, o, scene);
   if (p.isSet(o.probe)) {
@@ -923,6 +934,7 @@ int runRender(const QStringList& args) {
                      o.thresholdNodes,
                      o.showSet,
                      o.markSet,
+                     o.setNumbers,
                      o.hideSet,
                      o.logScale,
                      o.stepText});
@@ -1074,8 +1086,13 @@ int runRender(const QStringList& args) {
                        describe(StreamlineStop::PointBudget));
       }
       if (!scene.setVisibility().marked.empty())
-        std::fprintf(stderr, "volpost: note: %zu nodes of %s are marked\n", scene.markedSetPoints().size(),
-                     scene.setVisibility().marked.c_str());
+        std::fprintf(stderr, "volpost: note: %zu nodes of %s are marked%s\n", scene.markedSet().nodeCount,
+                     scene.setVisibility().marked.c_str(),
+                     scene.setVisibility().numbers && scene.markedSet().numbers.empty()
+                         ? (", too many to number (" + std::to_string(scene.markedSet().numbered) + "; at most " +
+                            std::to_string(Scene::kMaxNumbers) + ")")
+                               .c_str()
+                         : "");
       if (scene.setVisibility().active() && !scene.threshold().shown)
         std::fprintf(stderr, "volpost: note: the chosen sets hold %zu of the %zu cells\n",
                      scene.session()->model().cellCount(), scene.baseSession()->model().cellCount());

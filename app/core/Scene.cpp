@@ -685,23 +685,45 @@ void Scene::setSetVisibility(const SetVisibility& sets) {
   if (!sameCells) rebuildDeformation();  // marking another set draws the same cells
 }
 
-const std::vector<glm::dvec3>& Scene::markedSetPoints() const {
+const Scene::MarkedSet& Scene::markedSet() const {
   const std::string& name = state_.sets.marked;
-  if (!markedFor_.expired() && markedFor_.lock() == session_ && markedName_ == name) return markedPoints_;
+  const bool numbers = state_.sets.numbers;
+  if (!markedFor_.expired() && markedFor_.lock() == session_ && markedName_ == name && markedNumbers_ == numbers)
+    return marked_;
   markedFor_ = session_;
   markedName_ = name;
-  markedPoints_.clear();
-  if (name.empty() || !session_) return markedPoints_;
-  std::vector<std::uint32_t> nodes;
+  markedNumbers_ = numbers;
+  marked_ = MarkedSet{};
+  if (name.empty() || !session_) return marked_;
+  MarkedMembers members;
   try {
-    nodes = markedNodes(*session_, name);
+    members = markedMembers(*session_, name);
   } catch (const std::invalid_argument&) {
-    return markedPoints_;  // checked when it was set: a part made since may lack it
+    return marked_;  // checked when it was set: a part made since may lack it
   }
-  const std::size_t stride = nodes.size() / kMaxMarkedNodes + 1;
-  for (std::size_t i = 0; i < nodes.size(); i += stride)
-    markedPoints_.push_back(session_->model().nodePosition(nodes[i]));
-  return markedPoints_;
+  const Model& model = session_->model();
+  marked_.nodeCount = members.nodes.size();
+  const std::size_t stride = members.nodes.size() / kMaxMarkedNodes + 1;
+  for (std::size_t i = 0; i < members.nodes.size(); i += stride)
+    marked_.nodes.push_back(model.nodePosition(members.nodes[i]));
+  if (!numbers) return marked_;
+  const bool ofCells = members.kind == SetKind::Cells;
+  marked_.numbered = ofCells ? members.cells.size() : members.nodes.size();
+  if (marked_.numbered > kMaxNumbers) return marked_;
+  if (ofCells) {
+    const Mesh& mesh = model.mesh();
+    for (const std::uint32_t c : members.cells) {
+      const auto nodes = mesh.cellNodes(c);
+      const int corners = topology(mesh.cellType(c)).cornerCount;
+      glm::dvec3 centre(0.0);
+      for (int k = 0; k < corners; ++k) centre += model.nodePosition(nodes[std::size_t(k)]);
+      marked_.numbers.push_back({centre / double(corners), mesh.cellId(c)});
+    }
+  } else {
+    for (const std::uint32_t n : members.nodes)
+      marked_.numbers.push_back({model.nodePosition(n), model.mesh().nodeId(n)});
+  }
+  return marked_;
 }
 
 void Scene::setThreshold(const ThresholdLayer& layer) {

@@ -95,10 +95,22 @@ class Scene {
   /// std::invalid_argument, changing nothing, for unknown names, node sets, or no cell left.
   void setSetVisibility(const SetVisibility& sets);
   const SetVisibility& setVisibility() const { return state_.sets; }
-  /// Where the marked set's nodes are now (deformed when the shape is), at most
-  /// kMaxMarkedNodes of them (evenly taken from a larger set); empty without a marked set.
-  const std::vector<glm::dvec3>& markedSetPoints() const;
+  /// The marked set as drawn now (deformed when the shape is); empty without one.
+  struct MarkedSet {
+    std::vector<glm::dvec3> nodes;  ///< at most kMaxMarkedNodes, evenly taken from a larger set
+    std::size_t nodeCount = 0;      ///< all of its drawn nodes
+    struct Number {
+      glm::dvec3 at;
+      std::int64_t id = 0;
+    };
+    /// With the numbers on: a node set's node ids, an element set's element ids at their
+    /// centres; none when more than kMaxNumbers would cover the picture (`numbered` says how many).
+    std::vector<Number> numbers;
+    std::size_t numbered = 0;
+  };
+  const MarkedSet& markedSet() const;
   static constexpr std::size_t kMaxMarkedNodes = 50000;
+  static constexpr std::size_t kMaxNumbers = 300;
   /// The factor the nodes are moved by now (the automatic one worked out), 0 when undeformed.
   double deformationScale() const { return deformationScale_; }
 
@@ -379,7 +391,8 @@ class Scene {
   mutable std::uint64_t smallestPositiveVersion_ = ~std::uint64_t(0);
   mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
   /// The marked set's points, and for which model part and name they were found.
-  mutable std::vector<glm::dvec3> markedPoints_;
+  mutable MarkedSet marked_;
+  mutable bool markedNumbers_ = false;
   mutable std::weak_ptr<const ModelSession> markedFor_;  // weak: a freed part's address may be reused
   mutable std::string markedName_;
   mutable std::vector<std::optional<double>> probedValues_;

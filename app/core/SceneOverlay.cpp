@@ -46,7 +46,7 @@ void drawLabel(QPainter& painter, const QRect& area, QPointF at, const QString& 
   painter.drawText(box, Qt::AlignCenter, text);
 }
 
-enum class MarkerShape { Dot, Up, Down, Node };
+enum class MarkerShape { Dot, Up, Down, Node, Label };  // Label: its text only
 
 struct Marker {
   QPointF at;
@@ -56,9 +56,25 @@ struct Marker {
 };
 
 // `scale`: 1 for text of 12 px; markers grow with the text in large pictures.
+// A node's or an element's number right beside it, dark on a light halo: hundreds of them
+// stay where they belong (a boxed label would be pushed away from its point).
+void drawNumber(QPainter& painter, const Marker& m) {
+  QPainterPath path;
+  path.addText(m.at + QPointF(3, -3), painter.font(), m.text);
+  painter.save();
+  painter.setBrush(Qt::NoBrush);
+  painter.setPen(QPen(QColor(255, 255, 255, 220), 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+  painter.drawPath(path);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(m.color.darker(160));
+  painter.drawPath(path);
+  painter.restore();
+}
+
 void drawMarkerShape(QPainter& painter, const Marker& m, double scale) {
   painter.setPen(QPen(Qt::white, 1.5 * scale));
   painter.setBrush(m.color);
+  if (m.shape == MarkerShape::Label) return;
   if (m.shape == MarkerShape::Node) {  // many of them: small, no outline
     painter.setPen(Qt::NoPen);
     painter.drawRect(QRectF(m.at - QPointF(2.5, 2.5) * scale, QSizeF(5, 5) * scale));
@@ -112,19 +128,23 @@ void addProbes(std::vector<Marker>& markers, const QRect& area, const Scene& sce
 // The marked set's nodes, small magenta squares (a color no result map uses), the set's
 // name beside the first.
 void addMarkedSet(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
-  const std::vector<glm::dvec3>& points = scene.markedSetPoints();
-  if (points.empty()) return;
+  const Scene::MarkedSet& set = scene.markedSet();
+  if (set.nodes.empty()) return;
   const Camera camera = scene.pictureCamera(area.width(), area.height());
-  bool named = false;
-  for (const glm::dvec3& p : points) {
-    if (!keptByClipPlanes(scene, p)) continue;
+  const QColor magenta(220, 0, 200);
+  const auto place = [&](const glm::dvec3& p, const QString& text, MarkerShape shape) {
+    if (!keptByClipPlanes(scene, p)) return false;
     const auto at = camera.projectToPicture(p, area.width(), area.height());
-    if (!at) continue;
-    markers.push_back({QPointF(area.left() + at->x, area.top() + at->y),
-                       named ? QString() : QString::fromStdString(scene.setVisibility().marked), QColor(220, 0, 200),
-                       MarkerShape::Node});
-    named = true;
-  }
+    if (!at) return false;
+    markers.push_back({QPointF(area.left() + at->x, area.top() + at->y), text, magenta, shape});
+    return true;
+  };
+  // The set's name beside its first node, unless numbers are written (they say more).
+  bool named = !set.numbers.empty();
+  for (const glm::dvec3& p : set.nodes)
+    if (place(p, named ? QString() : QString::fromStdString(scene.setVisibility().marked), MarkerShape::Node))
+      named = true;
+  for (const Scene::MarkedSet::Number& n : set.numbers) place(n.at, QString::number(n.id), MarkerShape::Label);
 }
 
 void addExtremes(std::vector<Marker>& markers, const QRect& area, const Scene& scene) {
@@ -337,8 +357,11 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
     room.setRight(
         std::max(area.left() + area.width() / 2,
                  area.right() - legendWidth(area, legends.front().content.numbers, legends.front().content.textScale)));
-  for (const Marker& m : markers)
-    if (!m.text.isEmpty()) drawLabel(painter, room, m.at, m.text, m.color, placed);
+  for (const Marker& m : markers) {
+    if (m.text.isEmpty()) continue;
+    if (m.shape == MarkerShape::Label) drawNumber(painter, m);
+    else drawLabel(painter, room, m.at, m.text, m.color, placed);
+  }
   if (scene.showsTriad()) paintTriad(painter, area, scene.camera(), scale);
   paintCaption(painter, room, scene);
   painter.restore();

@@ -318,6 +318,7 @@ ThresholdLayer thresholdFrom(const Reader& r, const json& in) {
 json jsonOf(const SetVisibility& v) {
   json out = {{"shown", v.shown}, {"hidden", v.hidden}};
   if (!v.marked.empty()) out["marked"] = v.marked;
+  if (v.numbers) out["numbers"] = true;
   return out;
 }
 
@@ -333,6 +334,8 @@ SetVisibility setsFrom(const Reader& r, const json& in) {
   names("shown", v.shown);
   names("hidden", v.hidden);
   if (const json* x = r.find(in, "marked")) v.marked = r.text(*x, "sets.marked");
+  if (const json* x = r.find(in, "numbers")) v.numbers = r.boolean(*x, "sets.numbers");
+  if (v.numbers && v.marked.empty()) r.fail("sets.numbers", "writes the marked set's numbers: name one in sets.marked");
   return v;
 }
 

@@ -51,26 +51,29 @@ std::vector<char> cellsOfSets(const ModelSession& session, const SetVisibility& 
   return kept;
 }
 
-std::vector<std::uint32_t> markedNodes(const ModelSession& session, const std::string& name) {
+MarkedMembers markedMembers(const ModelSession& session, const std::string& name) {
   const EntitySet set = markedSet(session, name);
   const EntitySet* s = &set;
+  MarkedMembers out;
+  out.kind = s->kind;
   const Model& model = session.model();
-  if (!model.meshBuilt()) return {};
+  if (!model.meshBuilt()) return out;
   const Mesh& mesh = model.mesh();
   std::vector<char> marked(mesh.nodeCount(), 0);
   if (s->kind == SetKind::Cells) {
     for (const std::uint32_t c : s->members)
-      if (c < mesh.cellCount())
+      if (c < mesh.cellCount()) {
+        out.cells.push_back(c);
         for (const NodeIndex n : mesh.cellNodes(c)) marked[n] = 1;
+      }
   } else {
     std::vector<char> used(mesh.nodeCount(), 0);  // a node of a hidden part is not there to mark
     for (const NodeIndex n : mesh.connectivity()) used[n] = 1;
     for (const std::uint32_t n : s->members)
       if (n < used.size() && used[n]) marked[n] = 1;
   }
-  std::vector<std::uint32_t> out;
   for (std::size_t n = 0; n < marked.size(); ++n)
-    if (marked[n]) out.push_back(std::uint32_t(n));
+    if (marked[n]) out.nodes.push_back(std::uint32_t(n));
   return out;
 }
 

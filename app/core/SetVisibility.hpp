@@ -18,6 +18,9 @@ struct SetVisibility {
   /// A set whose nodes (a node set's, or those of an element set's drawn elements) are
   /// marked in the picture; empty: none. Marking draws no other cells.
   std::string marked;
+  /// The marked set's numbers written beside it: its nodes' (a node set) or its elements'
+  /// at their centres (an element set), the file's own ids.
+  bool numbers = false;
   bool active() const { return !shown.empty() || !hidden.empty(); }
   bool drawsTheSame(const SetVisibility& o) const { return shown == o.shown && hidden == o.hidden; }
   bool operator==(const SetVisibility&) const = default;
@@ -26,9 +29,14 @@ struct SetVisibility {
 /// Throws std::invalid_argument for a name no element set has (naming the sets there are),
 /// a node set (which has no cells to show), or a choice that leaves no cell.
 void checkSetVisibility(const ModelSession& session, const SetVisibility& v);
-/// The nodes of `name` among those the session's cells use, sorted (a node set's members,
-/// or the nodes of an element set's elements); throws std::invalid_argument for an unknown name.
-std::vector<std::uint32_t> markedNodes(const ModelSession& session, const std::string& name);
+struct MarkedMembers {
+  SetKind kind = SetKind::Nodes;
+  std::vector<std::uint32_t> nodes;  ///< among those the session's cells use, sorted
+  std::vector<std::uint32_t> cells;  ///< an element set's cells in the session
+};
+/// What of set `name` the session draws: a node set's nodes that its cells use, or an
+/// element set's cells and their nodes; throws std::invalid_argument for an unknown name.
+MarkedMembers markedMembers(const ModelSession& session, const std::string& name);
 /// Per cell of the model: drawn or not.
 std::vector<char> cellsOfSets(const ModelSession& session, const SetVisibility& v);
 /// The part of the model the sets leave (the session itself when nothing is chosen).

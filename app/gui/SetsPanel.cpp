@@ -5,6 +5,7 @@
 
 #include <volpost/core/EntitySet.hpp>
 
+#include <QCheckBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -77,6 +78,12 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
   buttons->addWidget(showOnly_);
   buttons->addWidget(showAll_);
   buttons->addWidget(mark_);
+  numbers_ = new QCheckBox("&Numbers", this);
+  numbers_->setObjectName("setsNumbers");
+  numbers_->setToolTip(
+      "Write the marked set's numbers in the picture: its node ids, or an element set's "
+      "element ids at their centres (at most 300)");
+  buttons->addWidget(numbers_);
   buttons->addStretch();
   layout->addLayout(buttons);
   drawn_ = new QLabel(this);
@@ -102,6 +109,12 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
     apply(v);
   });
   connect(mark_, &QPushButton::clicked, this, [this](bool on) { markCurrent(on); });
+  connect(numbers_, &QCheckBox::toggled, this, [this](bool on) {
+    if (following_) return;
+    SetVisibility v = scene_.setVisibility();
+    v.numbers = on && !v.marked.empty();
+    apply(v);
+  });
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
     if (!following_ && mark_->isChecked()) markCurrent(true);  // the mark follows the chosen set
   });
@@ -174,14 +187,19 @@ void SetsPanel::followScene() {
   showAll_->setEnabled(v.active());
   mark_->setEnabled(listed_ && tree_->topLevelItemCount() > 0 && tree_->topLevelItem(0)->childCount() > 0);
   mark_->setChecked(!v.marked.empty());
+  numbers_->setEnabled(!v.marked.empty());
+  numbers_->setChecked(v.numbers);
   if (!base || !session) drawn_->clear();
   else {
     QString text = !v.active() ? QString("Every element drawn (%1)").arg(count(base->model().cellCount()))
                                : QString("Drawn: %1 of the %2 elements")
                                      .arg(count(session->model().cellCount()), count(base->model().cellCount()));
-    if (!v.marked.empty())
-      text += QString("; %1 marked (%2 nodes)")
-                  .arg(QString::fromStdString(v.marked), count(scene_.markedSetPoints().size()));
+    if (!v.marked.empty()) {
+      const Scene::MarkedSet& m = scene_.markedSet();
+      text += QString("; %1 marked (%2 nodes)").arg(QString::fromStdString(v.marked), count(m.nodeCount));
+      if (v.numbers && m.numbers.empty() && m.numbered > 0)
+        text += QString(", too many to number (%1; at most %2)").arg(count(m.numbered)).arg(Scene::kMaxNumbers);
+    }
     drawn_->setText(text);
   }
   following_ = false;
@@ -215,6 +233,7 @@ void SetsPanel::markCurrent(bool on) {
     return;
   }
   v.marked = on ? name.toString().toStdString() : std::string();
+  if (!on) v.numbers = false;
   apply(v);
 }
 

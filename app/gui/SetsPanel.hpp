@@ -13,6 +13,7 @@
 
 #include <string>
 
+class QCheckBox;
 class QLabel;
 class QPushButton;
 class QTreeWidget;
@@ -50,6 +51,7 @@ class SetsPanel : public QWidget {
   QPushButton* showOnly_ = nullptr;
   QPushButton* showAll_ = nullptr;
   QPushButton* mark_ = nullptr;
+  QCheckBox* numbers_ = nullptr;
   QLabel* drawn_ = nullptr;
   const ModelSession* listed_ = nullptr;  // whose sets the tree lists
   std::string listedPath_;

@@ -1180,6 +1180,10 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   ASSERT_EQ(mark.exitCode, 0) << mark.output;
   EXPECT_NE(mark.output.find("37 nodes of NALL are marked"), std::string::npos) << mark.output;
   EXPECT_NE(QImage(QString::fromStdString(all)), QImage(QString::fromStdString(marked)));
+  const std::string numbered = (dir / "numbered.png").string();
+  ASSERT_EQ(runVolpost(common + "--mark-set NALL --set-numbers -o " + numbered).exitCode, 0);
+  EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(numbered)));
+  refused("--set-numbers", "--set-numbers writes the marked set's numbers: add --mark-set NAME");
   refused("--mark-set NOSUCH", "no set is named 'NOSUCH' (its sets: NALL, E_HEX, E_WEDGE, E_TET)");
   refused("--show-set E_BEAM", "no set is named 'E_BEAM' (its element sets: E_HEX, E_WEDGE, E_TET)");
   refused("--hide-set NALL", "'NALL' is a set of 37 nodes");

@@ -12,6 +12,7 @@
 #include "core/SetVisibility.hpp"
 
 #include <fstream>
+#include <set>
 
 using namespace volpost;
 using namespace volpost::app;
@@ -138,17 +139,37 @@ TEST(SetVisibility, AMarkedSetGivesTheNodesOfWhatIsDrawn) {
   marked.marked = "nall";  // a node set: its nodes the drawn tet10 uses
   scene.setSetVisibility(marked);
   EXPECT_EQ(scene.session(), part) << "marking draws the same cells";
-  EXPECT_EQ(scene.markedSetPoints().size(), 10u);
+  EXPECT_EQ(scene.markedSet().nodeCount, 10u);
   marked.shown.clear();
   marked.marked = "E_WEDGE";  // an element set: its wedge15's nodes
   scene.setSetVisibility(marked);
-  EXPECT_EQ(scene.markedSetPoints().size(), 15u);
-  for (const glm::dvec3& p : scene.markedSetPoints()) EXPECT_GE(p.x, 0.0);
+  EXPECT_EQ(scene.markedSet().nodeCount, 15u);
+  for (const glm::dvec3& p : scene.markedSet().nodes) EXPECT_GE(p.x, 0.0);
+  EXPECT_TRUE(scene.markedSet().numbers.empty()) << "numbers only when asked";
+  marked.numbers = true;  // an element set's numbers: its element's, at its centre
+  scene.setSetVisibility(marked);
+  ASSERT_EQ(scene.markedSet().numbers.size(), 1u);
+  EXPECT_EQ(scene.markedSet().numbers[0].id, 102);
+  glm::dvec3 centre(0.0);
+  const auto wedge = scene.session()->model().mesh().cellNodes(1);
+  for (int k = 0; k < 6; ++k) centre += scene.session()->model().nodePosition(wedge[std::size_t(k)]) / 6.0;
+  EXPECT_LT(glm::length(scene.markedSet().numbers[0].at - centre), 1e-12);
+  marked.marked = "NALL";  // a node set's numbers: the file's node ids
+  scene.setSetVisibility(marked);
+  ASSERT_EQ(scene.markedSet().numbers.size(), 37u);
+  std::set<std::int64_t> ids;
+  for (const auto& n : scene.markedSet().numbers) ids.insert(n.id);
+  std::set<std::int64_t> expected;
+  for (std::size_t n = 0; n < 37; ++n) expected.insert(scene.session()->model().mesh().nodeId(n));
+  EXPECT_EQ(ids, expected);
+  marked.marked = "E_WEDGE";
+  marked.numbers = false;
+  scene.setSetVisibility(marked);
   marked.marked = "NOSUCH";
   EXPECT_THROW(scene.setSetVisibility(marked), std::invalid_argument);
   EXPECT_EQ(scene.setVisibility().marked, "E_WEDGE");
   const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
   EXPECT_EQ(back.sets.marked, "E_WEDGE");
   scene.setSession(golden());
-  EXPECT_TRUE(scene.markedSetPoints().empty()) << "another model marks nothing";
+  EXPECT_TRUE(scene.markedSet().nodes.empty()) << "another model marks nothing";
 }

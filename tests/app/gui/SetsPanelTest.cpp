@@ -8,6 +8,7 @@
 #include "support/WindowParts.hpp"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QLabel>
 #include <QMainWindow>
 #include <QPushButton>
@@ -103,13 +104,21 @@ class SetsPanelTest : public QObject {
     mark->click();
     QVERIFY(mark->isChecked());
     QCOMPARE(scene_->setVisibility().marked, std::string("NALL"));
-    QCOMPARE(scene_->markedSetPoints().size(), std::size_t(37));
+    QCOMPARE(scene_->markedSet().nodeCount, std::size_t(37));
     QVERIFY(drawnText().contains("NALL marked (37 nodes)"));
     tree()->setCurrentItem(item("E_TET"));  // the mark follows
     QCOMPARE(scene_->setVisibility().marked, std::string("E_TET"));
-    QCOMPARE(scene_->markedSetPoints().size(), std::size_t(10));
+    QCOMPARE(scene_->markedSet().nodeCount, std::size_t(10));
+    QCheckBox* numbers = panel_->findChild<QCheckBox*>("setsNumbers");
+    QVERIFY(numbers->isEnabled());
+    numbers->setChecked(true);
+    QVERIFY(scene_->setVisibility().numbers);
+    QCOMPARE(scene_->markedSet().numbers.size(), std::size_t(1));  // E_TET's element number
+    QCOMPARE(scene_->markedSet().numbers[0].id, std::int64_t(103));
     mark->click();
     QVERIFY(!mark->isChecked());
+    QVERIFY(!scene_->setVisibility().numbers);
+    QVERIFY(!numbers->isChecked() && !numbers->isEnabled());
     QVERIFY(scene_->setVisibility().marked.empty());
     tree()->setCurrentItem(item("E_HEX"));
     QVERIFY2(scene_->setVisibility().marked.empty(), "off, choosing a set marks nothing");
