@@ -181,6 +181,10 @@ struct Options {
   QCommandLineOption surfaceOpacity{"surface-opacity", "See-through surface, 0..1 (streamlines show inside).", "A"};
   QCommandLineOption probe{"probe", "Mark a probed point, numbered, with the shown value there (repeatable).", "X,Y,Z"};
   QCommandLineOption markExtremes{"mark-extremes", "Mark where the shown quantity is smallest and largest."};
+  QCommandLineOption measure{"measure",
+                             "Draw the distance between two probes (their numbers, as --probe gives them in "
+                             "order), and with three the angle at the second: --measure 1,2,3.",
+                             "I,J[,K]"};
   QCommandLineOption threshold{"threshold",
                                "Draw only the cells whose Q lies in MIN..MAX (an element result by its own value, "
                                "a nodal one by all of the cell's nodes; see --threshold-nodes), in the surface, "
@@ -844,6 +848,17 @@ void applyOptions(const QCommandLineParser& p, const Options& o, const SceneStat
     }
     scene.setProbes(points);
   }
+  if (p.isSet(o.measure)) {
+    std::vector<std::size_t> numbers;
+    for (const QString& part : p.value(o.measure).split(',')) {
+      bool ok = false;
+      const int n = part.trimmed().toInt(&ok);
+      if (!ok || n < 1)
+        throw UsageError(QString("--measure %1 is not probe numbers I,J[,K]").arg(p.value(o.measure)).toStdString());
+      numbers.push_back(std::size_t(n - 1));
+    }
+    scene.setMeasure(numbers);  // invalid_argument (a count other than 2 or 3, a missing probe): a usage error
+  }
   if (p.isSet(o.markExtremes)) {
     if (!scene.view()) throw UsageError("--mark-extremes needs --field (the quantity whose min and max to mark)");
     scene.setMarkExtremes(true);
@@ -934,6 +949,7 @@ int runRender(const QStringList& args) {
                      o.thresholdNodes,
                      o.showSet,
                      o.markSet,
+                     o.measure,
                      o.setNumbers,
                      o.hideSet,
                      o.logScale,

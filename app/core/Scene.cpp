@@ -609,6 +609,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   checkThreshold(checked, s.threshold);
   checkSetVisibility(checked, s.sets);
   checkProbes(s.probes);
+  checkMeasure(s.measure, s.probes.size());
   if (s.deformation.shown) checkDeformationField(withFormulas ? *withFormulas : *baseSession_, s.deformation.field);
   if (!(s.surfaceOpacity >= 0.0 && s.surfaceOpacity <= 1.0)) throw std::invalid_argument("surface opacity outside 0..1");
   checkGridSlices(checked.model().grid, s.gridSlices);
@@ -756,6 +757,28 @@ void Scene::checkProbes(const std::vector<glm::dvec3>& points) const {
 void Scene::setProbes(std::vector<glm::dvec3> points) {
   checkProbes(points);
   state_.probes = std::move(points);
+  for (const std::size_t i : state_.measure)
+    if (i >= state_.probes.size()) state_.measure.clear();  // a measured probe is gone
+}
+
+void Scene::checkMeasure(const std::vector<std::size_t>& measure, std::size_t probes) {
+  if (measure.empty()) return;
+  if (measure.size() != 2 && measure.size() != 3)
+    throw std::invalid_argument("a measure names two probes, or three for an angle (" + std::to_string(measure.size()) +
+                                " given)");
+  for (std::size_t i = 0; i < measure.size(); ++i) {
+    if (measure[i] >= probes)
+      throw std::invalid_argument("probe " + std::to_string(measure[i] + 1) + " is not there to measure (" +
+                                  std::to_string(probes) + " probes)");
+    for (std::size_t j = 0; j < i; ++j)
+      if (measure[j] == measure[i])
+        throw std::invalid_argument("probe " + std::to_string(measure[i] + 1) + " is named twice in the measure");
+  }
+}
+
+void Scene::setMeasure(std::vector<std::size_t> probes) {
+  checkMeasure(probes, state_.probes.size());
+  state_.measure = std::move(probes);
 }
 
 const std::vector<std::optional<double>>& Scene::probedValues() const {

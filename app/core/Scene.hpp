@@ -240,6 +240,12 @@ class Scene {
   /// Throws std::invalid_argument for more than kMaxProbes points or one not finite.
   void setProbes(std::vector<glm::dvec3> points);
   const std::vector<glm::dvec3>& probes() const { return state_.probes; }
+  /// Measures between probes in the picture (indices into probes(): two for a distance,
+  /// three for the angle at the second too; none: off). Throws std::invalid_argument,
+  /// changing nothing, for another count, a repeated or a missing probe. New probes that
+  /// lack one of them turn the measure off.
+  void setMeasure(std::vector<std::size_t> probes);
+  const std::vector<std::size_t>& measure() const { return state_.measure; }
   void setMarkExtremes(bool on) { state_.markExtremes = on; }
   bool marksExtremes() const { return state_.markExtremes; }
   bool showsTriad() const { return state_.triad; }
@@ -357,6 +363,7 @@ class Scene {
   void checkStreamlines(const StreamlineLayer& layer) const;
   void checkStreamlines(const StreamlineLayer& layer, const ModelSession& session) const;
   void checkProbes(const std::vector<glm::dvec3>& points) const;
+  static void checkMeasure(const std::vector<std::size_t>& measure, std::size_t probes);
   void checkSamplingStep(double step) const;
   CameraState cameraState() const;
   /// The camera a saved one describes, fitted to the model first (clipping range).

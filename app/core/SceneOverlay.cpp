@@ -2,7 +2,9 @@
 #include "SceneOverlay.hpp"
 
 #include "BoxWidget.hpp"
+#include "Measure.hpp"
 #include "PlaneWidget.hpp"
+#include "ProbeTable.hpp"
 #include "StreamlineSeeds.hpp"
 
 #include <QFontMetrics>
@@ -257,6 +259,37 @@ void paintPlotLine(QPainter& painter, const QRect& area, const Scene& scene, con
   }
 }
 
+// A measure between probes: the segments drawn, each distance written at its middle, and
+// with three probes the angle at the second written at its corner.
+void paintMeasure(QPainter& painter, const QRect& area, const Scene& scene, double scale, PlacedLabels& placed) {
+  const auto& measure = scene.measure();
+  const auto& probes = scene.probes();
+  if (measure.size() < 2) return;
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
+  std::vector<glm::dvec3> points;
+  std::vector<std::optional<QPointF>> drawn;
+  for (const std::size_t i : measure) {
+    if (i >= probes.size()) return;
+    points.push_back(probes[i]);
+    drawn.push_back(at(probes[i]));
+  }
+  const QColor color(20, 20, 20);
+  for (std::size_t k = 0; k + 1 < points.size(); ++k) {
+    if (!drawn[k] || !drawn[k + 1]) continue;
+    painter.setPen(QPen(Qt::white, 4.0 * scale, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(*drawn[k], *drawn[k + 1]);
+    painter.setPen(QPen(color, 1.6 * scale, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(*drawn[k], *drawn[k + 1]);
+    drawLabel(painter, area, (*drawn[k] + *drawn[k + 1]) / 2.0,
+              QString::fromStdString(displayNumber(distanceBetween(points[k], points[k + 1]))), color, placed);
+  }
+  if (points.size() == 3 && drawn[1]) {
+    const auto angle = angleAt(points[0], points[1], points[2]);
+    if (angle)
+      drawLabel(painter, area, *drawn[1], QString::fromStdString(displayNumber(*angle)) + QChar(0x00B0), color, placed);
+  }
+}
+
 // The streamlines' seeds where they are (a placed rake's points, line seeds), so they can be
 // seen, edited in the Streamlines dialog and placed anew.
 void paintRakes(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
@@ -357,6 +390,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
     room.setRight(
         std::max(area.left() + area.width() / 2,
                  area.right() - legendWidth(area, legends.front().content.numbers, legends.front().content.textScale)));
+  paintMeasure(painter, area, scene, scale, placed);
   for (const Marker& m : markers) {
     if (m.text.isEmpty()) continue;
     if (m.shape == MarkerShape::Label) drawNumber(painter, m);

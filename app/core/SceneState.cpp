@@ -482,6 +482,11 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   json points = json::array();
   for (const glm::dvec3& p : probes) points.push_back(jsonOf(p));
   out["markers"] = {{"probes", points}, {"extremes", markExtremes}};
+  if (!measure.empty()) {
+    json numbers = json::array();
+    for (const std::size_t i : measure) numbers.push_back(i + 1);
+    out["markers"]["measure"] = numbers;
+  }
   if (plotLine) out["plotLine"] = {{"from", jsonOf((*plotLine)[0])}, {"to", jsonOf((*plotLine)[1])}};
   return out.dump(2) + "\n";
 }
@@ -686,6 +691,17 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
       if (list.size() > kMaxProbes) r.fail("markers.probes", "has more than " + std::to_string(kMaxProbes) + " points");
       for (std::size_t i = 0; i < list.size(); ++i)
         s.probes.push_back(r.vec3(list[i], "markers.probes[" + std::to_string(i) + "]"));
+    }
+    if (const json* measure = r.find(*markers, "measure")) {
+      const json& list = r.array(*measure, "markers.measure");
+      for (std::size_t i = 0; i < list.size() && i < 3; ++i) {
+        const double n = r.number(list[i], "markers.measure[" + std::to_string(i) + "]");
+        if (!(n >= 1.0 && n <= double(s.probes.size()) && n == std::floor(n)))
+          r.fail("markers.measure[" + std::to_string(i) + "]",
+                 "is no probe's number (1 to " + std::to_string(s.probes.size()) + ")");
+        s.measure.push_back(std::size_t(n) - 1);
+      }
+      if (list.size() != 2 && list.size() != 3) r.fail("markers.measure", "names two probes, or three for an angle");
     }
   }
   return s;

@@ -200,6 +200,9 @@ struct SceneState {
   SetVisibility sets;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
+  /// Probes measured in the picture (their indices in `probes`): two give their distance,
+  /// three also the angle at the second; "markers": {"measure": [1, 2, 3]} counts from 1.
+  std::vector<std::size_t> measure;
   /// The line the Plot Over Line panel samples, drawn over the picture; "plotLine" in the file.
   std::optional<std::array<glm::dvec3, 2>> plotLine;
   bool markExtremes = false;

@@ -57,6 +57,16 @@ ProbeController::ProbeController(QMainWindow& window, Viewport& viewport, QMenu&
   connect(panel_, &ProbePanel::pointsChanged, this, &ProbeController::setPoints);
   connect(panel_, &ProbePanel::message, this, [this](const QString& text) { window_.statusBar()->showMessage(text); });
   connect(panel_, &ProbePanel::historyRequested, this, &ProbeController::plotHistory);
+  connect(panel_, &ProbePanel::measured, this, [this](const std::vector<std::size_t>& rows) {
+    if (rows == viewport_.scene().measure()) return;
+    try {
+      viewport_.scene().setMeasure(rows);  // drawn in the picture too
+    } catch (const std::exception& e) {
+      window_.statusBar()->showMessage(e.what());
+      return;
+    }
+    viewport_.update();
+  });
 }
 
 // The shown quantity against the steps at probed points. A probe on a node follows that

@@ -177,8 +177,10 @@ void ProbePanel::showMeasure() {
   std::sort(rows.begin(), rows.end());
   if (rows.size() < 2 || rows.size() > 3) {
     measure_->clear();
+    emit measured({});
     return;
   }
+  emit measured(std::vector<std::size_t>(rows.begin(), rows.end()));
   const auto point = [&](std::size_t i) { return results_[std::size_t(rows[i])].point; };
   const auto number = [](double v) { return QString::fromStdString(displayNumber(v)); };
   const glm::dvec3 d = point(1) - point(0);

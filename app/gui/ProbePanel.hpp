@@ -43,6 +43,9 @@ class ProbePanel : public QWidget {
   void pointsChanged(const std::vector<glm::dvec3>& points);
   /// Plot Over Steps: the shown quantity against the steps at these probes (row numbers).
   void historyRequested(const std::vector<std::size_t>& rows);
+  /// The selected probes measured (two or three rows; none when fewer or more are selected):
+  /// the scene draws the measure in the picture.
+  void measured(const std::vector<std::size_t>& rows);
   void message(const QString& text);
 
  private:

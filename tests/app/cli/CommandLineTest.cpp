@@ -1184,6 +1184,14 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   ASSERT_EQ(runVolpost(common + "--mark-set NALL --set-numbers -o " + numbered).exitCode, 0);
   EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(numbered)));
   refused("--set-numbers", "--set-numbers writes the marked set's numbers: add --mark-set NAME");
+  const std::string measured = (dir / "measured.png").string();
+  const std::string probes = "--probe 0.5,0.5,0.5 --probe 2.5,0.5,0.5 --probe 3.5,0.5,0.5 ";
+  ASSERT_EQ(runVolpost(common + probes + "-o " + marked).exitCode, 0);
+  const auto measure = runVolpost(common + probes + "--measure 1,2,3 -o " + measured);
+  ASSERT_EQ(measure.exitCode, 0) << measure.output;
+  EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(measured)));
+  refused(probes + "--measure 1,4", "probe 4 is not there to measure (3 probes)");
+  refused(probes + "--measure one,two", "--measure one,two is not probe numbers I,J[,K]");
   refused("--mark-set NOSUCH", "no set is named 'NOSUCH' (its sets: NALL, E_HEX, E_WEDGE, E_TET)");
   refused("--show-set E_BEAM", "no set is named 'E_BEAM' (its element sets: E_HEX, E_WEDGE, E_TET)");
   refused("--hide-set NALL", "'NALL' is a set of 37 nodes");

@@ -4,6 +4,9 @@
 // points outside are gaps, never a repeated value.
 #include "core/History.hpp"
 #include "core/Measure.hpp"
+#include "core/Scene.hpp"
+
+#include <volpost/render/VolumeRenderer.hpp>
 
 #include <gtest/gtest.h>
 
@@ -93,4 +96,30 @@ TEST(Measure, DistancesAndAnglesBetweenPoints) {
   EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {-1, 1e-9, 0}), 180.0, 1e-6);  // nearly straight: no acos rounding
   EXPECT_NEAR(*angleAt({1, 0, 0}, {0, 0, 0}, {1, 1e-9, 0}), 0.0, 1e-6);
   EXPECT_FALSE(angleAt({0, 0, 0}, {0, 0, 0}, {1, 0, 0}));
+}
+
+TEST(Measure, TheSceneMeasuresProbesAndTheStateKeepsIt) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setProbes({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}});
+  scene.setMeasure({0, 1, 2});
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_EQ(back.measure, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_NE(scene.state().toJson().find("\"measure\": [\n      1,\n      2,\n      3"), std::string::npos)
+      << "probes are counted from 1 in the file, as the picture numbers them";
+  const auto refused = [&](std::vector<std::size_t> m) {
+    try {
+      scene.setMeasure(std::move(m));
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refused({0}).find("names two probes, or three"), std::string::npos);
+  EXPECT_NE(refused({0, 3}).find("probe 4 is not there to measure (3 probes)"), std::string::npos);
+  EXPECT_NE(refused({1, 1}).find("probe 2 is named twice"), std::string::npos);
+  EXPECT_EQ(scene.measure(), (std::vector<std::size_t>{0, 1, 2})) << "a refused measure changes nothing";
+  scene.setProbes({{0, 0, 0}, {1, 0, 0}});  // the third probe removed: no angle to draw
+  EXPECT_TRUE(scene.measure().empty());
+  EXPECT_THROW(SceneState::fromJson(R"({"markers": {"probes": [[0,0,0],[1,0,0]], "measure": [1, 5]}})", "v.json"),
+               std::exception);
 }

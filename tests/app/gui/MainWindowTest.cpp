@@ -384,6 +384,11 @@ class MainWindowTest : public QObject {
     picks->selectAll();
     const QString measure = window_->findChild<QLabel*>("probeMeasure")->text();
     QVERIFY2(measure.startsWith("Distance 1 to 2: 1.65831"), qPrintable(measure));
+    // ... and in the picture: the scene measures them, and a state file keeps it.
+    QCOMPARE(window_->findChild<Viewport*>()->scene().measure(), (std::vector<std::size_t>{0, 1}));
+    picks->clearSelection();
+    picks->selectRow(0);
+    QVERIFY(window_->findChild<Viewport*>()->scene().measure().empty());
   }
 
   void theCalculatorsFormulaIsAResultKeptInTheStateFile() {
