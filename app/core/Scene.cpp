@@ -776,6 +776,19 @@ void Scene::checkMeasure(const std::vector<std::size_t>& measure, std::size_t pr
   }
 }
 
+void Scene::setHighlight(std::optional<Highlight> h) {
+  if (h &&
+      (!session_ || h->cell >= session_->model().cellCount() || (h->node && *h->node >= session_->model().nodeCount())))
+    h.reset();
+  highlight_ = h;
+  highlightOn_ = session_;
+}
+
+std::optional<Scene::Highlight> Scene::highlight() const {
+  if (!highlight_ || highlightOn_.expired() || highlightOn_.lock() != session_) return std::nullopt;
+  return highlight_;
+}
+
 void Scene::setMeasure(std::vector<std::size_t> probes) {
   checkMeasure(probes, state_.probes.size());
   state_.measure = std::move(probes);

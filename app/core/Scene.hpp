@@ -245,6 +245,14 @@ class Scene {
   /// changing nothing, for another count, a repeated or a missing probe. New probes that
   /// lack one of them turn the measure off.
   void setMeasure(std::vector<std::size_t> probes);
+  /// An element of the drawn model outlined in the picture, and one of its nodes ringed
+  /// (what the hover names); not saved, and gone when the drawn model changes.
+  struct Highlight {
+    std::size_t cell = 0;
+    std::optional<std::size_t> node;
+  };
+  void setHighlight(std::optional<Highlight> h);
+  std::optional<Highlight> highlight() const;
   const std::vector<std::size_t>& measure() const { return state_.measure; }
   void setMarkExtremes(bool on) { state_.markExtremes = on; }
   bool marksExtremes() const { return state_.markExtremes; }
@@ -399,6 +407,8 @@ class Scene {
   mutable std::uint64_t extremesVersion_ = ~std::uint64_t(0);
   /// The marked set's points, and for which model part and name they were found.
   mutable MarkedSet marked_;
+  std::optional<Highlight> highlight_;
+  std::weak_ptr<const ModelSession> highlightOn_;  ///< the drawn model the highlight names cells of
   mutable bool markedNumbers_ = false;
   mutable std::weak_ptr<const ModelSession> markedFor_;  // weak: a freed part's address may be reused
   mutable std::string markedName_;

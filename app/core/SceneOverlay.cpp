@@ -259,6 +259,36 @@ void paintPlotLine(QPainter& painter, const QRect& area, const Scene& scene, con
   }
 }
 
+// The element the hover names, its edges drawn over the picture (through the midside
+// nodes of a quadratic one), and its node ringed.
+void paintHighlight(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
+  const auto h = scene.highlight();
+  if (!h || !scene.session()) return;
+  const Model& model = scene.session()->model();
+  const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
+  const auto nodes = model.mesh().cellNodes(h->cell);
+  const CellTopology& t = topology(model.mesh().cellType(h->cell));
+  const QColor color(255, 200, 0);
+  for (const int pass : {0, 1}) {  // a dark edge under a light one: seen on any color
+    painter.setPen(pass == 0 ? QPen(QColor(40, 40, 40), 4.0 * scale, Qt::SolidLine, Qt::RoundCap)
+                             : QPen(color, 2.0 * scale, Qt::SolidLine, Qt::RoundCap));
+    for (const CellEdge& e : t.edges) {
+      QPolygonF edge;
+      for (const int local : {int(e.a), int(e.mid), int(e.b)}) {
+        if (local < 0) continue;
+        if (const auto p = at(model.nodePosition(nodes[std::size_t(local)]))) edge << *p;
+      }
+      if (edge.size() >= 2) painter.drawPolyline(edge);
+    }
+  }
+  if (h->node)
+    if (const auto p = at(model.nodePosition(*h->node))) {
+      painter.setPen(QPen(QColor(40, 40, 40), 2.0 * scale));
+      painter.setBrush(color);
+      painter.drawEllipse(*p, 4.0 * scale, 4.0 * scale);
+    }
+}
+
 // A measure between probes: the segments drawn, each distance written at its middle, and
 // with three probes the angle at the second written at its corner.
 void paintMeasure(QPainter& painter, const QRect& area, const Scene& scene, double scale, PlacedLabels& placed) {
@@ -390,6 +420,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
     room.setRight(
         std::max(area.left() + area.width() / 2,
                  area.right() - legendWidth(area, legends.front().content.numbers, legends.front().content.textScale)));
+  paintHighlight(painter, area, scene, scale);
   paintMeasure(painter, area, scene, scale, placed);
   for (const Marker& m : markers) {
     if (m.text.isEmpty()) continue;

@@ -157,14 +157,26 @@ void ProbeController::addPoint(const glm::dvec3& point) {
 // The tooltip of a resting mouse: the element, the nearest node and the shown value.
 void ProbeController::showHover(QPoint globalPosition, bool hit, const glm::dvec3& point) {
   const auto session = session_();
+  Scene& scene = viewport_.scene();
+  const auto unhighlight = [&] {
+    if (!scene.highlight()) return;
+    scene.setHighlight(std::nullopt);
+    viewport_.update();
+  };
   if (!hit || !session) {
     QToolTip::hideText();
+    unhighlight();
     return;
   }
-  const Scene& scene = viewport_.scene();
   try {
     const ProbeResult r = probeAt(*session, point, scene.state().step);
-    if (!r.inside()) return;
+    if (!r.inside()) {
+      unhighlight();
+      return;
+    }
+    // What the tooltip names is outlined in the picture.
+    scene.setHighlight(Scene::Highlight{r.cell, r.nearestNode});
+    viewport_.update();
     QString text = QString("element %1 (%2), nearest node %3")
                        .arg(r.cellId)
                        .arg(QString::fromStdString(std::string(cellTypeName(r.cellType))))
@@ -183,6 +195,7 @@ void ProbeController::showHover(QPoint globalPosition, bool hit, const glm::dvec
     QToolTip::showText(globalPosition, text, &viewport_);
   } catch (const std::exception&) {
     QToolTip::hideText();
+    unhighlight();
   }
 }
 

@@ -133,3 +133,31 @@ TEST(Threshold, OnlyTheKeptCellsAreDrawn) {
   EXPECT_GT(part, 0);
   EXPECT_LT(part, whole * 9 / 10);
 }
+
+// The element the hover names is outlined over the picture in yellow; the outline is of
+// the drawn model and goes when that changes.
+TEST(Highlight, TheHoveredElementIsOutlinedUntilTheDrawnModelChanges) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(bar());
+  scene.setResult("S11", 0);
+  const auto yellow = [&] {
+    const QImage image = renderSceneImage(scene, 160, 120).picture;
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+      for (int x = 0; x < image.width(); ++x) {
+        const QColor c = image.pixelColor(x, y);
+        n += c.red() > 200 && c.green() > 150 && c.blue() < 80 ? 1 : 0;
+      }
+    return n;
+  };
+  const int before = yellow();
+  scene.setHighlight(Scene::Highlight{0, scene.session()->model().mesh().cellNodes(0)[0]});
+  ASSERT_TRUE(scene.highlight());
+  EXPECT_GT(yellow(), before + 10);
+  scene.setHighlight(Scene::Highlight{scene.session()->model().cellCount(), std::nullopt});
+  EXPECT_FALSE(scene.highlight()) << "no such element: nothing outlined";
+  scene.setHighlight(Scene::Highlight{0, std::nullopt});
+  scene.setThreshold(ThresholdLayer{true, "S11", 110.0, 200.0, false});
+  EXPECT_FALSE(scene.highlight()) << "cell 0 of the whole model is not cell 0 of the part";
+}
