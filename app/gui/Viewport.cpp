@@ -300,6 +300,15 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
   QOpenGLWidget::keyPressEvent(event);
 }
 
+// The mouse left the view: nothing is under it (the hover's tooltip and outline go).
+void Viewport::leaveEvent(QEvent* event) {
+  if (hoverTimer_) {
+    hoverTimer_->stop();
+    emit hovered(QPoint(), false, glm::dvec3(0.0));
+  }
+  QOpenGLWidget::leaveEvent(event);
+}
+
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
   if (probeMode_ && event->buttons() == Qt::NoButton) {  // hovering: pick when the mouse rests
     hoverAt_ = event->position().toPoint();
