@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "DeckSets.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <limits>
 
 namespace volpost::meshio {
 namespace {
@@ -9,6 +11,9 @@ namespace {
 // A GENERATE line may not produce more ids than this (a typo such as "1, 2000000000, 1"
 // would otherwise ask for gigabytes).
 constexpr std::int64_t kMaxGenerated = 100'000'000;
+
+// b - a for a <= b, exact over the whole range of the ids.
+std::uint64_t distance(std::int64_t a, std::int64_t b) { return std::uint64_t(b) - std::uint64_t(a); }
 
 bool isNumber(std::string_view f) {
   return !f.empty() && (std::isdigit(static_cast<unsigned char>(f.front())) || f.front() == '-' || f.front() == '+');
@@ -18,7 +23,7 @@ bool isNumber(std::string_view f) {
 
 DeckSets::Written& DeckSets::set(SetKind kind, const std::string& name) {
   const auto [it, added] = index_.emplace(std::make_pair(kind, name), sets_.size());
-  if (added) sets_.push_back({name, kind, {}, {}});
+  if (added) sets_.push_back({name, kind, {}, {}, {}});
   return sets_[it->second];
 }
 
@@ -49,7 +54,7 @@ void DeckSets::readLine(TextScanner& s, std::string_view line) {
     const double count = (double(last) - double(first)) / double(step);
     if (count >= double(kMaxGenerated))
       s.fail("this GENERATE line makes more than " + std::to_string(kMaxGenerated) + " ids");
-    for (std::int64_t k = 0; k <= std::int64_t(count); ++k) target.ids.push_back(first + k * step);
+    target.ranges.push_back({first, last, step});
     return;
   }
   for (const auto f : fields) {
@@ -60,15 +65,51 @@ void DeckSets::readLine(TextScanner& s, std::string_view line) {
 
 void DeckSets::moveInto(Model& model, const IdIndex& nodes, const IdIndex& elements) const {
   std::map<std::pair<SetKind, std::string>, std::size_t> resolved;  // into model.sets
+  // The smallest and largest id of the elements (loaded or not) and of the nodes.
+  const auto span = [](const std::vector<std::int64_t>& ids, std::size_t count) {
+    std::pair<std::int64_t, std::int64_t> s{std::numeric_limits<std::int64_t>::max(),
+                                            std::numeric_limits<std::int64_t>::min()};
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::int64_t id = ids.empty() ? std::int64_t(i) + 1 : ids[i];
+      s = {std::min(s.first, id), std::max(s.second, id)};
+    }
+    return s;
+  };
+  auto elementSpan = span(model.mesh().cellIds, model.mesh().cellCount());
+  for (const std::int64_t id : skippedElements_)
+    elementSpan = {std::min(elementSpan.first, id), std::max(elementSpan.second, id)};
+  const auto nodeSpan = span(model.mesh().nodeIds, model.mesh().nodeCount());
   for (const Written& w : sets_) {
     const IdIndex& index = w.kind == SetKind::Cells ? elements : nodes;
     EntitySet out{w.name, w.kind, w.kind == SetKind::Cells ? "ELSET" : "NSET", {}};
     std::size_t unknown = 0;
     std::int64_t firstUnknown = 0;
-    for (const std::int64_t id : w.ids) {
+    const auto look = [&](std::int64_t id) {
       if (const auto i = index.find(id)) out.members.push_back(*i);
-      else if (w.kind == SetKind::Cells && skippedElements_.count(id)) continue;
+      else if (w.kind == SetKind::Cells && skippedElements_.count(id)) return;
       else if (unknown++ == 0) firstUnknown = id;
+    };
+    for (const std::int64_t id : w.ids) look(id);
+    const auto [low, high] = w.kind == SetKind::Cells ? elementSpan : nodeSpan;
+    for (const Written::Range& r : w.ranges) {
+      // Only the ids within the deck's span are looked up; the others are counted.
+      const std::uint64_t total = distance(r.first, r.last) / std::uint64_t(r.step) + 1;
+      std::uint64_t looked = 0;
+      if (low <= high && r.last >= low && r.first <= high) {
+        const std::uint64_t step = std::uint64_t(r.step);
+        std::uint64_t skip = 0;  // steps before the span
+        if (r.first < low) skip = distance(r.first, low) / step + (distance(r.first, low) % step != 0 ? 1 : 0);
+        const std::int64_t top = std::min(r.last, high);
+        if (skip <= distance(r.first, top) / step) {
+          const std::int64_t from = std::int64_t(std::uint64_t(r.first) + skip * step);
+          const std::uint64_t n = distance(from, top) / step;
+          for (std::uint64_t k = 0; k <= n; ++k, ++looked) look(std::int64_t(std::uint64_t(from) + k * step));
+        }
+      }
+      if (total > looked) {
+        if (unknown == 0) firstUnknown = r.first < low ? r.first : r.last;
+        unknown += std::size_t(total - looked);
+      }
     }
     std::vector<std::string> missingSets;
     for (const std::string& r : w.references) {

@@ -39,6 +39,12 @@ class DeckSets {
     std::string name;
     SetKind kind = SetKind::Cells;
     std::vector<std::int64_t> ids;
+    /// GENERATE lines as written: expanded at the end only over the ids the deck has, so
+    /// "1, 99999999" costs what the model's ids cost, not 800 MB.
+    struct Range {
+      std::int64_t first = 0, last = 0, step = 1;
+    };
+    std::vector<Range> ranges;
     std::vector<std::string> references;  ///< earlier sets named on a data line
   };
   Written& set(SetKind kind, const std::string& name);

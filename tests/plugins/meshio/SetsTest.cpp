@@ -230,3 +230,17 @@ TEST(DeckSurfaces, FaceNumbersOfWedgesHexahedraAndQuadraticTets) {
   EXPECT_EQ(ids("T1"), (std::set<std::int64_t>{21, 22, 23, 25, 26, 27}));
   EXPECT_EQ(ids("T3"), (std::set<std::int64_t>{22, 23, 24, 26, 29, 30}));
 }
+
+TEST(DeckSets, LongGenerateRangesCostWhatTheModelsIdsCost) {
+  std::string lines;
+  for (int k = 0; k < 100; ++k) lines += "1, 99999999\n";  // 1e10 ids written, 5 elements to look up
+  const auto model = loadText("ranges.inp", std::string(kTwoBlocks) + "*ELSET, ELSET=ALL, GENERATE\n" + lines +
+                                                "*NSET, NSET=WIDE, GENERATE\n"
+                                                "-9223372036854775807, 9223372036854775807, 9223372036854775807\n");
+  EXPECT_EQ(idsOf(*model, setNamed(*model, "ALL", SetKind::Cells)), (std::set<std::int64_t>{1, 2, 3, 11, 12}));
+  const Diagnostic* unknown = diagnostic(*model, "set-unknown-ids");
+  ASSERT_NE(unknown, nullptr);
+  // 100 lines of 99999999 ids, less the 5 elements and the shell 100 on each.
+  EXPECT_NE(unknown->message.find("*ELSET ALL names 9999999300 element ids"), std::string::npos) << unknown->message;
+  EXPECT_EQ(findSet(model->sets, "WIDE"), nullptr) << "-max, 0 and max: no node has those ids";
+}
