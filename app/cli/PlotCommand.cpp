@@ -7,6 +7,7 @@
 #include "../core/LinePlot.hpp"
 #include "../core/LineSampling.hpp"
 #include "../core/PictureFile.hpp"
+#include "../core/SetVisibility.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
@@ -71,11 +72,16 @@ int runPlot(const QStringList& args) {
   const QCommandLineOption element("element", "With --history: an element by its id, at its centre (repeatable).",
                                    "ID");
   const QCommandLineOption at("at", "With --history: a point X,Y,Z (repeatable).", "X,Y,Z");
-  parser.addOptions(
-      {from, to, field, samples, step, csv, output, size, readerOption, formula, history, node, element, at});
+  const QCommandLineOption showSet("show-set",
+                                   "Sample only this element set's elements (repeatable; `volpost info` lists "
+                                   "the sets); the line is off the model elsewhere.",
+                                   "NAME");
+  const QCommandLineOption hideSet("hide-set", "Leave this element set's elements out (repeatable).", "NAME");
+  parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption, formula, history, node, element,
+                     at, showSet, hideSet});
   if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
   if (parser.isSet(history)) {
-    for (const QCommandLineOption* o : {&from, &to, &samples, &step})
+    for (const QCommandLineOption* o : {&from, &to, &samples, &step, &showSet, &hideSet})
       if (parser.isSet(*o)) {
         printError(QString("--%1 is for a plot over a line; --history plots every step at --node, --element or --at")
                        .arg(o->names().first()));
@@ -134,8 +140,19 @@ int runPlot(const QStringList& args) {
   return exitCodeOf([&] {
     if (!csvPath.empty()) checkWritable(csvPath);
     if (parser.isSet(output)) checkWritable(pathBytes(picture));
-    const auto session = loadWithFormulas(plugins->readers(), pathBytes(parser.positionalArguments().first()), parser,
-                                          readerOption, formula);
+    std::shared_ptr<const ModelSession> session = loadWithFormulas(
+        plugins->readers(), pathBytes(parser.positionalArguments().first()), parser, readerOption, formula);
+    if (parser.isSet(showSet) || parser.isSet(hideSet)) {  // the line crosses the chosen sets only
+      SetVisibility v;
+      for (const QString& name : parser.values(showSet)) v.shown.push_back(name.toStdString());
+      for (const QString& name : parser.values(hideSet)) v.hidden.push_back(name.toStdString());
+      try {
+        checkSetVisibility(*session, v);
+      } catch (const std::invalid_argument& e) {
+        throw OptionError(e.what());  // a set the model does not have: a usage error
+      }
+      session = setVisibleSession(session, v);
+    }
     std::vector<std::string> keys = quantityKeys(*session, parser.values(field));
     if (keys.empty()) {
       const auto first = session->defaultQuantity();

@@ -1192,6 +1192,19 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(measured)));
   refused(probes + "--measure 1,4", "probe 4 is not there to measure (3 probes)");
   refused(probes + "--measure one,two", "--measure one,two is not probe numbers I,J[,K]");
+  // A plot over a line crosses the chosen sets only.
+  const std::string line =
+      "plot " + deck + " --from 0.01,0.3,0.3 --to 1.5025,0.3,0.3 --field 'element set' --samples 4 --csv - ";
+  const auto plotAll = runVolpost(line);
+  ASSERT_EQ(plotAll.exitCode, 0) << plotAll.output;
+  EXPECT_NE(plotAll.output.find(",102,2\n"), std::string::npos) << plotAll.output;
+  const auto plotHex = runVolpost(line + "--show-set E_HEX");
+  ASSERT_EQ(plotHex.exitCode, 0) << plotHex.output;
+  EXPECT_EQ(plotHex.output.find(",102,2"), std::string::npos) << plotHex.output;
+  EXPECT_NE(plotHex.output.find(",101,1\n"), std::string::npos) << plotHex.output;
+  const auto plotBad = runVolpost(line + "--show-set NOPE");
+  EXPECT_EQ(plotBad.exitCode, 2);
+  EXPECT_NE(plotBad.output.find("no set is named 'NOPE'"), std::string::npos) << plotBad.output;
   refused("--mark-set NOSUCH", "no set is named 'NOSUCH' (its sets: NALL, E_HEX, E_WEDGE, E_TET)");
   refused("--show-set E_BEAM", "no set is named 'E_BEAM' (its element sets: E_HEX, E_WEDGE, E_TET)");
   refused("--hide-set NALL", "'NALL' is a set of 37 nodes");
