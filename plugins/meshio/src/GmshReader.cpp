@@ -491,7 +491,8 @@ class GmshParser {
     binary_ = wasBinary;  // the records: binary right after the last tag's line
     const std::size_t nc = std::size_t(components);
     char label[64];
-    std::snprintf(label, sizeof label, nReals > 0 ? "step %lld, t = %g" : "step %lld", static_cast<long long>(ints[0] + 1), time);
+    // The file's step index counted from 1, as a double: any 64-bit index plus one is written.
+    std::snprintf(label, sizeof label, nReals > 0 ? "step %.0f, t = %g" : "step %.0f", double(ints[0]) + 1.0, time);
     const Step step{label, time};
     if (section == "NodeData") {
       std::vector<double> values(model_->mesh().nodeCount() * nc, std::numeric_limits<double>::quiet_NaN());
