@@ -281,6 +281,8 @@ class GmshParser {
     for (std::int64_t b = 0; b < blocks; ++b) {
       for (int k = 0; k < 2; ++k) tag("a node block header", false);
       const std::int64_t parametric = tag("a node block header", false);
+      if (parametric != 0 && parametric != 1)
+        s_.fail("a node block's parametric flag is " + std::to_string(parametric) + ", not 0 or 1");
       const std::int64_t n = count("the node count of a block", true);
       if (n > total - seen)
         s_.fail("the node blocks hold more nodes than the $Nodes header says (" + std::to_string(total) + ")");
