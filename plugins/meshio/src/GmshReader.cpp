@@ -386,7 +386,7 @@ class GmshParser {
           const std::int64_t id = parseInteger(s_, f[0], "an element tag");
           const GmshType& type = typeOf(parseInteger(s_, f[1], "an element type"));
           const std::int64_t ntags = parseInteger(s_, f[2], "the tag count");
-          if (ntags < 0 || std::size_t(3 + ntags + type.nodes) != f.size())
+          if (ntags < 0 || ntags > std::int64_t(f.size()) || std::size_t(3 + ntags + type.nodes) != f.size())
             s_.fail("element " + std::to_string(id) + " should have " + std::to_string(type.nodes) + " nodes after " +
                     std::to_string(ntags) + " tags; the line has " + std::to_string(f.size()) + " fields");
           const std::int64_t region = ntags > 0 ? parseInteger(s_, f[3], "a physical tag") : 0;
