@@ -4,6 +4,7 @@
 // interpolated with the element's shape functions, at full precision.
 #include "../core/Probe.hpp"
 #include "../core/ProbeTable.hpp"
+#include "../core/SetMembership.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
@@ -57,11 +58,18 @@ void printValues(const ProbeResult& r, const std::vector<std::string>& keys, con
   }
 }
 
-void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
+// "  sets: E_HEXAHEDRON, EALL" where the model's sets hold the element (or the node).
+void printSets(const char* what, const std::vector<std::string>& names) {
+  if (!names.empty()) std::printf("  %s sets: %s\n", what, setNameList(names).c_str());
+}
+
+void printResult(const std::vector<EntitySet>& sets, const ProbeResult& r, const std::vector<std::string>& keys) {
   if (r.method == ProbeMethod::AtNode && r.nodeId) {
     std::printf("node %lld at %s: in element %lld (%s), %s\n", static_cast<long long>(*r.nodeId),
                 pointText(r.point).c_str(), static_cast<long long>(r.cellId),
                 std::string(cellTypeName(r.cellType)).c_str(), describe(r.method));
+    printSets("node", setsHolding(sets, SetKind::Nodes, r.nearestNode));
+    printSets("element", setsHolding(sets, SetKind::Cells, r.cell));
     printValues(r, keys, "  ");
     return;
   }
@@ -74,17 +82,20 @@ void printResult(const ProbeResult& r, const std::vector<std::string>& keys) {
   if (r.nodeId) std::printf(", node %lld", static_cast<long long>(*r.nodeId));
   std::printf(", %s\n", describe(r.method));
   if (!r.gridPosition.empty()) std::printf("  %s\n", r.gridPositionText().c_str());
+  printSets("element", setsHolding(sets, SetKind::Cells, r.cell));
   printValues(r, keys, "  ");
 }
 
 // An element asked for by id: its centre's values, then each of its nodes' own (node
 // results only: an element result is the element's).
-void printElement(const ModelSession& session, const ProbeResult& r, const std::vector<std::string>& keys) {
+void printElement(const ModelSession& session, const std::vector<EntitySet>& sets, const ProbeResult& r,
+                  const std::vector<std::string>& keys) {
   std::printf("element %lld (%s), centre %s: %s\n", static_cast<long long>(r.cellId),
               std::string(cellTypeName(r.cellType)).c_str(), pointText(r.point).c_str(), describe(r.method));
   std::string ids;
   for (std::int64_t id : r.nodeIds) ids += (ids.empty() ? "" : ", ") + std::to_string(id);
   std::printf("  nodes: %s\n", ids.c_str());
+  printSets("element", setsHolding(sets, SetKind::Cells, r.cell));
   printValues(r, keys, "  ");
   std::vector<std::string> nodeKeys;
   for (const std::string& key : keys)
@@ -164,6 +175,8 @@ int runProbe(const QStringList& args) {
     // Nodes and elements by id, all found before anything is written: an id the model does
     // not have is an option it cannot honour.
     std::vector<ProbeResult> byId;
+    // The sets each printed element or node is in (made once: a region field's groups scan it).
+    const std::vector<EntitySet> sets = parser.isSet(csv) ? std::vector<EntitySet>{} : modelSets(session->model());
     try {
       for (std::int64_t id : nodeIds) byId.push_back(probeNode(*session, id, *stepIndex));
       for (std::int64_t id : elementIds) byId.push_back(probeElement(*session, id, *stepIndex));
@@ -192,14 +205,14 @@ int runProbe(const QStringList& args) {
       done += results.size();
       if (parser.isSet(csv)) put(probeTableRows(results, keys));
       else
-        for (const ProbeResult& r : results) printResult(r, keys);
+        for (const ProbeResult& r : results) printResult(sets, r, keys);
       if (points.size() > kChunk) progress.report(double(done) / double(points.size()));
     }
     if (parser.isSet(csv)) put(probeTableRows(byId, keys));
     else
       for (const ProbeResult& r : byId)
-        if (r.method == ProbeMethod::ElementCentre) printElement(*session, r, keys);
-        else printResult(r, keys);
+        if (r.method == ProbeMethod::ElementCentre) printElement(*session, sets, r, keys);
+        else printResult(sets, r, keys);
     done += byId.size();
     if (file) file->commit();
     if (!csvPath.empty())

@@ -5,6 +5,7 @@
 #include "../core/Measure.hpp"
 #include "../core/ProbeTable.hpp"
 #include "../core/SceneState.hpp"
+#include "../core/SetMembership.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "host/AtomicFile.hpp"
 
@@ -223,6 +224,20 @@ void ProbePanel::fillDetails() {
                       .arg(nodes.join(' '))
                       .arg(describe(r.method))
                       .arg(r.gridPosition.empty() ? QString() : QString::fromStdString(r.gridPositionText()) + "; "));
+  // The sets holding the element (and the node it sits on): what Abaqus's Query says too.
+  if (session_) {
+    if (setsOf_.expired() || setsOf_.lock() != session_) {
+      setsOf_ = session_;
+      sets_ = modelSets(session_->model());
+    }
+    const std::string cellSets = setNameList(setsHolding(sets_, SetKind::Cells, r.cell));
+    const std::string nodeSets =
+        r.nodeId ? setNameList(setsHolding(sets_, SetKind::Nodes, r.nearestNode)) : std::string();
+    if (!cellSets.empty())
+      where_->setText(where_->text() + QString(" Element sets: %1.").arg(QString::fromStdString(cellSets)));
+    if (!nodeSets.empty())
+      where_->setText(where_->text() + QString(" Node sets: %1.").arg(QString::fromStdString(nodeSets)));
+  }
   for (const ProbedField& f : r.fields)
     for (const ProbedQuantity& q : f.quantities) {
       const int at = details_->rowCount();

@@ -7,6 +7,8 @@
 
 #include "../core/Probe.hpp"
 
+#include <volpost/core/EntitySet.hpp>
+
 #include <QWidget>
 
 #include <map>
@@ -59,6 +61,9 @@ class ProbePanel : public QWidget {
   std::vector<glm::dvec3> points() const;
 
   std::shared_ptr<const ModelSession> session_;
+  /// The model's sets, made once per session (a region field's groups scan the field).
+  std::weak_ptr<const ModelSession> setsOf_;  // weak: a freed session's address may come again
+  std::vector<EntitySet> sets_;
   QLabel* measure_ = nullptr;
   bool deformed_ = false;
   std::vector<ProbeResult> results_;

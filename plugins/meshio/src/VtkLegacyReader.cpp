@@ -404,7 +404,8 @@ class LegacyReading {
     const std::size_t a = p_.count("the number of cells"), b = p_.count("the CELLS size");
     // Offsets (8 bytes a cell) and 32-bit node indices (4 bytes a value) before a value is
     // read: a damaged count must not ask for tens of gigabytes.
-    requireMemory(double(a) * 8.0 + double(b) * 4.0, path_, std::to_string(a) + " cells of " + std::to_string(b) + " values");
+    requireMemory(double(a) * 8.0 + double(b) * 4.0, path_,
+                  std::to_string(a) + " cells of " + std::to_string(b) + " values");
     if (p_.peekToken() == "OFFSETS") {  // format 5.x: OFFSETS and CONNECTIVITY arrays
       p_.token();
       cells.offsets = p_.integers(a, p_.type(), "OFFSETS");

@@ -1192,6 +1192,9 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(measured)));
   refused(probes + "--measure 1,4", "probe 4 is not there to measure (3 probes)");
   refused(probes + "--measure one,two", "--measure one,two is not probe numbers I,J[,K]");
+  const auto probed = runVolpost("probe " + deck + " --element 103");
+  ASSERT_EQ(probed.exitCode, 0) << probed.output;
+  EXPECT_NE(probed.output.find("  element sets: E_TET\n"), std::string::npos) << probed.output;
   // A plot over a line crosses the chosen sets only.
   const std::string line =
       "plot " + deck + " --from 0.01,0.3,0.3 --to 1.5025,0.3,0.3 --field 'element set' --samples 4 --csv - ";

@@ -9,6 +9,7 @@
 
 #include "core/PluginRenderers.hpp"
 #include "core/Scene.hpp"
+#include "core/SetMembership.hpp"
 #include "core/SetVisibility.hpp"
 
 #include <fstream>
@@ -172,4 +173,13 @@ TEST(SetVisibility, AMarkedSetGivesTheNodesOfWhatIsDrawn) {
   EXPECT_EQ(back.sets.marked, "E_WEDGE");
   scene.setSession(golden());
   EXPECT_TRUE(scene.markedSet().nodes.empty()) << "another model marks nothing";
+}
+
+TEST(SetMembership, TheSetsHoldingAnElementOrANode) {
+  const auto whole = golden();
+  const std::vector<EntitySet> sets = modelSets(whole->model());
+  EXPECT_EQ(setsHolding(sets, SetKind::Cells, 2), (std::vector<std::string>{"E_TET"}));
+  EXPECT_EQ(setsHolding(sets, SetKind::Nodes, 0), (std::vector<std::string>{"NALL"}));
+  EXPECT_TRUE(setsHolding(sets, SetKind::Cells, 99).empty());
+  EXPECT_EQ(setNameList({"EALL", "region 7"}), "EALL, \"region 7\"");
 }
