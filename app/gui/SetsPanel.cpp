@@ -22,6 +22,7 @@ namespace volpost::app {
 namespace {
 
 constexpr int kNameRole = Qt::UserRole;
+constexpr int kCountRole = Qt::UserRole + 1;  // the set's size in the whole model
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -151,6 +152,7 @@ void SetsPanel::addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s) {
   }
   auto* item = new QTreeWidgetItem(groups[g], {QString::fromStdString(s.name), count(s.members.size())});
   item->setData(0, kNameRole, QString::fromStdString(s.name));
+  item->setData(0, kCountRole, qulonglong(s.members.size()));
   item->setTextAlignment(1, Qt::AlignRight | Qt::AlignVCenter);
   const QString what = QString("%1 (%2): ").arg(QString::fromStdString(s.name), QString::fromStdString(s.origin));
   if (g == 0) {
@@ -181,6 +183,7 @@ void SetsPanel::followScene() {
       item->setCheckState(0, drawn ? Qt::Checked : Qt::Unchecked);
     }
   }
+  showDrawnCounts();
   const auto session = scene_.session();
   const bool hasElementSets = !tree_->findItems("Element sets", Qt::MatchExactly, 0).isEmpty();
   showOnly_->setEnabled(hasElementSets);
@@ -203,6 +206,28 @@ void SetsPanel::followScene() {
     drawn_->setText(text);
   }
   following_ = false;
+}
+
+// An element set partly drawn (another set hidden, a threshold) says how much: "6,622 / 32,482".
+void SetsPanel::showDrawnCounts() {
+  const auto part = scene_.sharedSession();
+  if (!part) return;
+  if (drawnOf_.expired() || drawnOf_.lock() != part) {  // counted once per drawn part
+    drawnOf_ = part;
+    drawnCounts_.clear();
+    if (part.get() != scene_.baseSession())
+      for (const EntitySet& s : modelSets(part->model()))
+        if (s.kind == SetKind::Cells) drawnCounts_[s.name] = s.members.size();
+  }
+  const bool whole = part.get() == scene_.baseSession();
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
+    QTreeWidgetItem* item = *it;
+    if (!(item->flags() & Qt::ItemIsUserCheckable)) continue;
+    const std::size_t total = item->data(0, kCountRole).toULongLong();
+    const auto drawn = drawnCounts_.find(item->data(0, kNameRole).toString().toStdString());
+    const std::size_t shown = whole ? total : drawn == drawnCounts_.end() ? 0 : drawn->second;
+    item->setText(1, shown == total ? count(total) : count(shown) + " / " + count(total));
+  }
 }
 
 void SetsPanel::boxToggled(QTreeWidgetItem* item) {

@@ -11,6 +11,8 @@
 
 #include <QWidget>
 
+#include <map>
+#include <memory>
 #include <string>
 
 class QCheckBox;
@@ -43,6 +45,7 @@ class SetsPanel : public QWidget {
   void boxToggled(QTreeWidgetItem* item);
   void showOnlySelected();
   void markCurrent(bool on);
+  void showDrawnCounts();
   void apply(const SetVisibility& v);
 
   const Scene& scene_;
@@ -55,6 +58,8 @@ class SetsPanel : public QWidget {
   QLabel* drawn_ = nullptr;
   const ModelSession* listed_ = nullptr;  // whose sets the tree lists
   std::string listedPath_;
+  std::weak_ptr<const ModelSession> drawnOf_;  ///< the drawn part drawnCounts_ counts
+  std::map<std::string, std::size_t> drawnCounts_;
   bool following_ = false;
 };
 

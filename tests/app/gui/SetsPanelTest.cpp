@@ -74,6 +74,8 @@ class SetsPanelTest : public QObject {
     QCOMPARE(scene_->setVisibility().hidden, std::vector<std::string>{"E_HEX"});
     QCOMPARE(drawnCells(), std::size_t(2));
     QCOMPARE(drawnText(), QString("Drawn: 2 of the 3 elements"));
+    QCOMPARE(item("E_HEX")->text(1), QString("0 / 1"));  // the count says what is drawn of it
+    QCOMPARE(item("E_TET")->text(1), QString("1"));
     item("E_HEX")->setCheckState(0, Qt::Checked);
     QVERIFY(!scene_->setVisibility().active());
     QCOMPARE(drawnCells(), std::size_t(3));
