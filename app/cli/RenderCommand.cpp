@@ -202,6 +202,17 @@ struct Options {
   QCommandLineOption setNumbers{"set-numbers",
                                 "Write the marked set's numbers beside it: node ids, or element ids at the "
                                 "elements' centres (at most 300)."};
+  QCommandLineOption selectElements{"select-elements",
+                                    "Select these elements (the file's ids: 101,105-110): they become the set "
+                                    "\"selected elements\", marked in the picture unless --mark-set names another.",
+                                    "IDS"};
+  QCommandLineOption selectNodes{"select-nodes",
+                                 "Select these nodes (ids: 7,12-20): the set \"selected nodes\", marked as "
+                                 "--select-elements is.",
+                                 "IDS"};
+  QCommandLineOption colorBySet{"color-by-set",
+                                "Color each drawn element set plainly in a color of its own (the legend names "
+                                "them) instead of by the result: the surface, sections and slices."};
   QCommandLineOption thresholdNodes{
       "threshold-nodes", "all (default: every node of a cell in the range) or any (one is enough).", "WHICH"};
   QCommandLineOption sweep{"deformation-sweep",
@@ -259,7 +270,29 @@ int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bo
 
 // --show-set / --hide-set, over the state file's choice.
 void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene) {
-  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet) && !p.isSet(o.markSet) && !p.isSet(o.setNumbers)) return;
+  if (p.isSet(o.selectElements) || p.isSet(o.selectNodes)) {
+    Selection selection = scene.selection();
+    const auto ids = [&](const QCommandLineOption& option, SetKind kind, std::vector<std::int64_t>& out) {
+      if (!p.isSet(option)) return;
+      try {
+        out = idsInModel(p.value(option).toStdString(), *scene.baseSession(), kind);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("--" + option.names().front().toStdString() + " " + p.value(option).toStdString() +
+                                    ": " + e.what());
+      }
+    };
+    ids(o.selectElements, SetKind::Cells, selection.elements);
+    ids(o.selectNodes, SetKind::Nodes, selection.nodes);
+    scene.setSelection(selection);  // invalid_argument (an id the model lacks): a usage error
+    if (!p.isSet(o.markSet)) {      // what was selected shows
+      SetVisibility v = scene.setVisibility();
+      v.marked = p.isSet(o.selectElements) ? kSelectedElements : kSelectedNodes;
+      scene.setSetVisibility(v);
+    }
+  }
+  if (!p.isSet(o.showSet) && !p.isSet(o.hideSet) && !p.isSet(o.markSet) && !p.isSet(o.setNumbers) &&
+      !p.isSet(o.colorBySet))
+    return;
   SetVisibility v = scene.setVisibility();
   const auto names = [&](const QCommandLineOption& option) {
     std::vector<std::string> out;
@@ -274,6 +307,7 @@ void applySetOptions(const QCommandLineParser& p, const Options& o, Scene& scene
       throw std::invalid_argument("--set-numbers writes the marked set's numbers: add --mark-set NAME");
     v.numbers = true;
   }
+  if (p.isSet(o.colorBySet)) v.colors = true;
   scene.setSetVisibility(v);  // invalid_argument (unknown set, a node set, nothing left): a usage error
   // Without a camera of the state's, the picture frames the sets drawn (a small part of a
   // large model was a speck in the whole model's frame).
@@ -951,6 +985,9 @@ int runRender(const QStringList& args) {
                      o.markSet,
                      o.measure,
                      o.setNumbers,
+                     o.colorBySet,
+                     o.selectElements,
+                     o.selectNodes,
                      o.hideSet,
                      o.logScale,
                      o.stepText});
@@ -1051,6 +1088,11 @@ int runRender(const QStringList& args) {
     if (parser.isSet(o.saveState)) checkWritable(pathBytes(parser.value(o.saveState)));
     // The plugins' renderers draw with the scene's GL layers; the reference draws alone.
     const bool glVolume = chosen.volume && chosen.volume->drawsSceneLayers;
+    if (chosen.volume && parser.isSet(o.colorBySet))
+      throw UsageError(QString("--color-by-set colors the surface, sections and slices; the volume renderer %1 "
+                               "colors by the transfer function (leave out --renderer for the surface)")
+                           .arg(rendererName)
+                           .toStdString());
     {
       Scene scene(volumeRendererFactory(*plugins));
       // A volume picture never draws the boundary surface: it is left unextracted.
@@ -1109,6 +1151,11 @@ int runRender(const QStringList& args) {
                             std::to_string(Scene::kMaxNumbers) + ")")
                                .c_str()
                          : "");
+      if (const SetColoring* c = scene.volumeShown() ? nullptr : scene.setColoring())
+        std::fprintf(
+            stderr, "volpost: note: colored by %zu element set%s%s\n", c->entries.size(),
+            c->entries.size() == 1 ? "" : "s",
+            c->cellsInNoSet ? (", " + std::to_string(c->cellsInNoSet) + " cells in no set (gray)").c_str() : "");
       if (scene.setVisibility().active() && !scene.threshold().shown)
         std::fprintf(stderr, "volpost: note: the chosen sets hold %zu of the %zu cells\n",
                      scene.session()->model().cellCount(), scene.baseSession()->model().cellCount());

@@ -187,6 +187,52 @@ int legendWidth(const QRect& area, const LegendNumbers& numbers, double textScal
   return fm.horizontalAdvance(numbers.widest()) + 12 + barWidthOf(area) + 8;
 }
 
+namespace {
+
+constexpr int kLongestSwatchName = 40;  ///< characters; longer names are cut with an ellipsis
+
+QString swatchName(const QString& name) {
+  return name.size() > kLongestSwatchName ? name.left(kLongestSwatchName - 1) + QChar(0x2026) : name;
+}
+
+// A key of named colors: the title lines, then one row per color (a box and its name, the
+// boxes in a column at the strip's right), as many as fit and a last row saying how many
+// more there are.
+void paintSwatches(QPainter& painter, const QRect& area, const LegendContent& c, const QFontMetrics& fm) {
+  const int textRight = area.right() - 4;
+  const QRect titleRect(area.left(), area.top() + 4, textRight - area.left(), fm.height());
+  painter.drawText(titleRect, Qt::AlignRight | Qt::AlignVCenter, c.title);
+  painter.drawText(titleRect.translated(0, fm.height()), Qt::AlignRight | Qt::AlignVCenter, c.subtitle);
+  const int row = fm.height() + 4, box = fm.height();
+  const int top = area.top() + 4 + 2 * fm.height() + 8;
+  const int fit = std::max(1, (area.bottom() - top) / row);
+  const std::size_t shown = c.swatches.size() <= std::size_t(fit) ? c.swatches.size() : std::size_t(fit - 1);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const int y = top + int(i) * row;
+    const QRect r(textRight - box, y, box, box);
+    const glm::dvec3& rgb = c.swatches[i].rgb;
+    painter.fillRect(r, QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+    painter.drawRect(r);
+    painter.drawText(QRect(area.left(), y, r.left() - 6 - area.left(), box), Qt::AlignRight | Qt::AlignVCenter,
+                     swatchName(c.swatches[i].name));
+  }
+  if (shown < c.swatches.size())
+    painter.drawText(QRect(area.left(), top + int(shown) * row, textRight - area.left(), box),
+                     Qt::AlignRight | Qt::AlignVCenter, QString("and %1 more").arg(c.swatches.size() - shown));
+}
+
+}  // namespace
+
+int legendWidth(const QRect& area, const LegendContent& content) {
+  const int bar = legendWidth(area, content.numbers, content.textScale);
+  if (content.swatches.empty()) return bar;
+  const QFontMetrics fm(legendFont(QFont(), area, content.textScale));
+  int widest = 0;
+  for (const LegendContent::Swatch& s : content.swatches)
+    widest = std::max(widest, fm.horizontalAdvance(swatchName(s.name)));
+  return std::max(bar, widest + fm.height() + 6 + 4 + 8);
+}
+
 void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, const LegendContent& c) {
   painter.save();
   painter.setRenderHint(QPainter::Antialiasing, true);
@@ -197,6 +243,11 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
   const int barWidth = barWidthOf(area);
   const int top = area.top() + fm.height() * 3, bottom = area.bottom() - fm.height() * 2;
   if (bottom - top < 20) {
+    painter.restore();
+    return;
+  }
+  if (!c.swatches.empty()) {
+    paintSwatches(painter, area, c, fm);
     painter.restore();
     return;
   }

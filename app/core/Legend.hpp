@@ -12,6 +12,7 @@
 #include <QString>
 
 #include <optional>
+#include <vector>
 
 class QPainter;
 
@@ -55,6 +56,13 @@ struct LegendContent {
   bool onDark = false;
   /// The bar is logarithmic: a value's height is its log's share of the range's (min > 0).
   bool logScale = false;
+  /// A key of named colors instead of a bar (the model colored by its sets): a box of each
+  /// color beside its name, top to bottom.
+  struct Swatch {
+    QString name;
+    glm::dvec3 rgb{0.0};
+  };
+  std::vector<Swatch> swatches;
 };
 
 /// The units of a quantity of a field whose units are `fieldUnits`: the field's for its
@@ -73,6 +81,8 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
 /// The widest the legend paintLegend draws in `area` can be, pixels from its right edge
 /// (the bar and its tick labels; the title lines above it are right-aligned text).
 int legendWidth(const QRect& area, const LegendNumbers& numbers = {}, double textScale = 1.0);
+/// The same for this content: a key of named colors is as wide as its longest name.
+int legendWidth(const QRect& area, const LegendContent& content);
 
 /// Tick values for [min, max]: multiples of 1, 2 or 5 x 10^k, about `target` of them.
 std::vector<double> niceTicks(double min, double max, int target = 6);

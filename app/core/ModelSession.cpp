@@ -114,6 +114,25 @@ std::shared_ptr<ModelSession> ModelSession::withFormulas(const ModelSession& bas
   return session;
 }
 
+std::shared_ptr<ModelSession> ModelSession::withSets(const ModelSession& base, const std::string& origin,
+                                                     std::vector<EntitySet> sets) {
+  auto model = std::make_shared<Model>(base.model());  // nodes copied, cells and fields shared
+  std::erase_if(model->sets, [&](const EntitySet& s) { return s.origin == origin; });
+  for (EntitySet& s : sets) {
+    s.origin = origin;
+    model->sets.push_back(std::move(s));
+  }
+  auto session = std::make_shared<ModelSession>();
+  session->model_ = std::move(model);
+  session->readerOptions_ = base.readerOptions_;
+  session->origin_ = base.origin_;
+  session->bounds_ = base.bounds_;
+  session->usedNodes_ = base.usedNodes_;
+  session->geometry_ = base.geometry_;
+  session->formulas_ = base.formulas_;
+  return session;
+}
+
 const BoundarySurface& ModelSession::surface() const {
   Geometry& g = *geometry_;
   std::call_once(g.surfaceOnce, [&] {

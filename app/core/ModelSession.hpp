@@ -61,6 +61,10 @@ class ModelSession {
   static std::shared_ptr<ModelSession> withFormulas(const ModelSession& base, const std::vector<FormulaSpec>& formulas);
   /// The formulas whose fields this session's model holds after the file's own.
   const std::vector<FormulaSpec>& formulas() const { return formulas_; }
+  /// This model with `sets` in place of the sets of origin `origin` it held (the user's
+  /// selection: see Selection.hpp), sharing the mesh and what is built from it.
+  static std::shared_ptr<ModelSession> withSets(const ModelSession& base, const std::string& origin,
+                                                std::vector<EntitySet> sets);
 
   const Model& model() const { return *model_; }
   /// The reader options the model was read with (for state files and reopening).

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -74,7 +75,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.streamlines = StreamlineLayer{};
   state_.glyphs = GlyphLayer{};  // the last model's field
   state_.threshold = ThresholdLayer{};
-  state_.sets = SetVisibility{};  // the last model's set names
+  state_.sets = SetVisibility{};   // the last model's set names
+  state_.selection = Selection{};  // and its ids
   glyphs_.reset();
   streamlineResult_.reset();
   ++revisions_.streamlines;
@@ -584,6 +586,11 @@ void Scene::setFormulas(std::vector<FormulaSpec> formulas) {
 }
 
 void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> withFormulas) {
+  // The state's selection joins the model's sets before the choices naming them are checked.
+  if (baseSession_ && (withFormulas || s.selection != state_.selection)) {
+    const ModelSession& from = withFormulas ? *withFormulas : *baseSession_;
+    withFormulas = ModelSession::withSets(from, kSelectionOrigin, selectionSets(from, s.selection));  // throws
+  }
   // Check everything before changing anything, on the model with the state's formulas.
   const ModelSession& checked = withFormulas ? *withFormulas : *session_;
   std::optional<ScalarView> view;
@@ -671,7 +678,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
 }
 
 void Scene::setSetVisibility(const SetVisibility& sets) {
-  if (sets.active() || !sets.marked.empty()) {
+  if (sets.active() || !sets.marked.empty() || sets.colors) {
     if (!baseSession_) throw std::invalid_argument("no model is open to show sets of");
     checkSetVisibility(*baseSession_, sets);
     if (sets.active() && !sets.drawsTheSame(state_.sets) && state_.threshold.shown &&
@@ -682,8 +689,71 @@ void Scene::setSetVisibility(const SetVisibility& sets) {
                                   " within the threshold's range at this step");
   }
   const bool sameCells = sets.drawsTheSame(state_.sets);
+  const bool recolored = sets.colors != state_.sets.colors;
   state_.sets = sets;
+  if (recolored) {  // the surface's values and colors are the sets' or the result's again
+    ++viewVersion_;
+    ++revisions_.scalars;
+    ++revisions_.colorMap;
+  }
   if (!sameCells) rebuildDeformation();  // marking another set draws the same cells
+}
+
+namespace {
+
+// Forgets the names of the selection's sets that `selection` no longer makes.
+void forgetSelectionSets(SetVisibility& v, const Selection& selection) {
+  const auto gone = [&](const std::string& name) {
+    const auto is = [&](const char* set) {
+      return name.size() == std::string_view(set).size() &&
+             std::equal(name.begin(), name.end(), set, [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+             });
+    };
+    return (is(kSelectedElements) && selection.elements.empty()) || (is(kSelectedNodes) && selection.nodes.empty());
+  };
+  std::erase_if(v.shown, gone);
+  std::erase_if(v.hidden, gone);
+  if (gone(v.marked)) {
+    v.marked.clear();
+    v.numbers = false;
+  }
+}
+
+}  // namespace
+
+void Scene::setSelection(Selection selection) {
+  if (!baseSession_) throw std::invalid_argument("no model is open to select in");
+  normalizeIds(selection.elements);
+  normalizeIds(selection.nodes);
+  std::shared_ptr<const ModelSession> next =
+      ModelSession::withSets(*baseSession_, kSelectionOrigin, selectionSets(*baseSession_, selection));  // throws
+  SetVisibility sets = state_.sets;
+  forgetSelectionSets(sets, selection);
+  checkSetVisibility(*next, sets);  // throws (hiding what is left of the sets leaves nothing): nothing changed
+  baseSession_ = std::move(next);
+  state_.selection = std::move(selection);
+  state_.sets = sets;
+  rebuildDeformation();
+}
+
+const SetColoring* Scene::setColoring() const {
+  if (!state_.sets.colors || !session_ || !baseSession_) return nullptr;
+  if (coloring_ && !coloringFor_.expired() && coloringFor_.lock() == session_) return &*coloring_;
+  coloring_ = volpost::app::setColoring(*session_, *baseSession_);
+  coloringFor_ = session_;
+  return &*coloring_;
+}
+
+VersionedView Scene::surfaceValues() const {
+  // viewVersion_ counts the coloring's changes too (turning it on or off, a new part).
+  if (const SetColoring* c = setColoring()) return {&c->view, viewVersion_};
+  return shownValues();
+}
+
+DisplayRange Scene::surfaceRange() const {
+  if (setColoring()) return {0.0, double(kSetPaletteSize)};
+  return displayRange();
 }
 
 const Scene::MarkedSet& Scene::markedSet() const {
@@ -900,7 +970,16 @@ std::optional<LegendPicture> Scene::legend() const {
 std::vector<LegendPicture> Scene::legends() const {
   std::vector<LegendPicture> out;
   if (!state_.legend) return out;
-  if (view_) {
+  if (const SetColoring* coloring = state_.volume.shown ? nullptr : setColoring()) {
+    LegendContent key;  // the surface's colors name sets: their key replaces the result's bar
+    key.title = "Element sets";
+    key.subtitle = coloring->entries.size() == 1 ? QString("1 set") : QString("%1 sets").arg(coloring->entries.size());
+    for (const SetColoring::Entry& e : coloring->entries)
+      key.swatches.push_back({QString::fromStdString(e.name), e.rgb});
+    if (coloring->cellsInNoSet > 0)
+      key.swatches.push_back({QString("in no set (%1)").arg(coloring->cellsInNoSet), glm::dvec3(0.55)});
+    out.push_back({setPaletteMap(), key});
+  } else if (view_) {
     LegendContent content;
     const auto title = state_.legendTitles.find(view_->quantity.key());
     content.title =
@@ -977,9 +1056,10 @@ Camera Scene::pictureCamera(double width, double height) const {
   Camera camera = camera_;
   if (!legend() || !(width > 0.0) || !(height > 0.0)) return camera;
   const QRect area(0, 0, int(std::lround(width)), int(std::lround(height)));
-  camera.setRightMargin(std::min(
-      0.4, legendWidth(area, LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{}), state_.textScale) /
-               width));
+  LegendContent content = legend()->content;  // the strip as wide as its numbers' style, or its names
+  content.numbers = LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{});
+  content.textScale = state_.textScale;
+  camera.setRightMargin(std::min(0.4, legendWidth(area, content) / width));
   return camera;
 }
 

@@ -15,6 +15,7 @@
 #include "Legend.hpp"
 #include "ModelSession.hpp"
 #include "SceneState.hpp"
+#include "SetColors.hpp"
 #include "StreamlineTracing.hpp"
 #include "VolumeRendererFactory.hpp"
 
@@ -95,6 +96,12 @@ class Scene {
   /// std::invalid_argument, changing nothing, for unknown names, node sets, or no cell left.
   void setSetVisibility(const SetVisibility& sets);
   const SetVisibility& setVisibility() const { return state_.sets; }
+  /// The elements and nodes picked (Selection.hpp): they become the model's sets "selected
+  /// elements" and "selected nodes" (an empty list: no such set; the choices that named a
+  /// set that is gone forget it). Throws std::invalid_argument for an id the model lacks,
+  /// changing nothing.
+  void setSelection(Selection selection);
+  const Selection& selection() const { return state_.selection; }
   /// The marked set as drawn now (deformed when the shape is); empty without one.
   struct MarkedSet {
     std::vector<glm::dvec3> nodes;  ///< at most kMaxMarkedNodes, evenly taken from a larger set
@@ -359,6 +366,14 @@ class Scene {
   const VolumeRendererFactory& volumeRenderers() const { return factory_; }
   /// The shown values and the count of their changes.
   VersionedView shownValues() const { return {view_ ? &*view_ : nullptr, viewVersion_}; }
+  /// The drawn model colored by its element sets (SetVisibility::colors; built once per
+  /// drawn model); nullptr when the sets do not color it.
+  const SetColoring* setColoring() const;
+  /// What the surface, the sections and the slices are colored by: the sets' colors when
+  /// they color the model, else the shown values.
+  VersionedView surfaceValues() const;
+  /// Their range: the sets' palette, or displayRange().
+  DisplayRange surfaceRange() const;
   /// The values the iso-surfaces are of: the shown result's, or another quantity's at the
   /// shown step (evaluated once per quantity, step and model).
   VersionedView isoSurfaceValues() const;
@@ -412,6 +427,8 @@ class Scene {
   mutable bool markedNumbers_ = false;
   mutable std::weak_ptr<const ModelSession> markedFor_;  // weak: a freed part's address may be reused
   mutable std::string markedName_;
+  mutable std::optional<SetColoring> coloring_;
+  mutable std::weak_ptr<const ModelSession> coloringFor_;  ///< the drawn model coloring_ is of
   mutable std::vector<std::optional<double>> probedValues_;
   mutable std::uint64_t probedVersion_ = ~std::uint64_t(0);  ///< viewVersion_ probedValues_ is for
   mutable std::vector<glm::dvec3> probedPoints_;              ///< and the points

@@ -127,29 +127,36 @@ std::vector<float> SceneDrawing::readVolumeImage() const {
 void SceneDrawing::applyToBoundary(const Scene& scene) {
   const SceneRevisions& now = scene.revisions();
   const SceneState& s = scene.shown();
-  const VersionedView values = scene.shownValues();
+  const VersionedView values = scene.surfaceValues();  // the result's, or the sets' colors
+  const DisplayRange range = scene.surfaceRange();
   // The surface's uploads do not throw: the counts can follow at once.
   const bool model = catchUp(drawn_.model, now.model);
   const bool scalars = catchUp(drawn_.scalars, now.scalars);
   if (model) boundary_.setSession(scene.sharedSession());
-  if (model || scalars) boundary_.setScalars(values.view, scene.displayRange());
+  if (model || scalars) boundary_.setScalars(values.view, range);
   if (catchUp(drawn_.colorMap, now.colorMap)) {
-    boundary_.setColorMap(ColorMap::named(s.colorMap));
-    boundary_.setColorBands(s.colorBands);
-    boundary_.setLogScale(s.logScale);
     const auto asFloat = [](const std::optional<glm::dvec3>& c) {
       return c ? std::optional<glm::vec3>(glm::vec3(*c)) : std::nullopt;
     };
-    boundary_.setOutOfRangeColors(asFloat(s.belowColor), asFloat(s.aboveColor));
+    if (s.sets.colors) {  // each set's color flat over its band of the palette
+      boundary_.setColorMap(setPaletteMap());
+      boundary_.setColorBands(kSetPaletteSize);
+      boundary_.setLogScale(false);
+      boundary_.setOutOfRangeColors(std::nullopt, std::nullopt);
+    } else {
+      boundary_.setColorMap(ColorMap::named(s.colorMap));
+      boundary_.setColorBands(s.colorBands);
+      boundary_.setLogScale(s.logScale);
+      boundary_.setOutOfRangeColors(asFloat(s.belowColor), asFloat(s.aboveColor));
+    }
   }
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   const std::vector<ClipPlane> cuts = s.volume.allClipPlanes();
-  boundary_.setCuts(s.volume.shown ? std::vector<ClipPlane>{} : cuts, values.view, values.version,
-                    scene.displayRange());
+  boundary_.setCuts(s.volume.shown ? std::vector<ClipPlane>{} : cuts, values.view, values.version, range);
   const VersionedView iso = scene.isoSurfaceValues();
   boundary_.setIsoSurfaces(s.volume.shown ? std::vector<optics::IsoSurface>{} : s.volume.isoSurfaces, iso.view,
                            iso.version);
-  boundary_.setSlices(scene.slicePlanes(), cuts, values.view, values.version, scene.displayRange());
+  boundary_.setSlices(scene.slicePlanes(), cuts, values.view, values.version, range);
 }
 
 // Uploads the lines with the current style (a style change re-uploads, never re-traces).

@@ -417,9 +417,7 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   QRect room = area;  // labels stay left of the legend's strip
   const std::vector<LegendPicture> legends = scene.legends();
   if (!legends.empty())
-    room.setRight(
-        std::max(area.left() + area.width() / 2,
-                 area.right() - legendWidth(area, legends.front().content.numbers, legends.front().content.textScale)));
+    room.setRight(std::max(area.left() + area.width() / 2, area.right() - legendWidth(area, legends.front().content)));
   paintHighlight(painter, area, scene, scale);
   paintMeasure(painter, area, scene, scale, placed);
   for (const Marker& m : markers) {

@@ -319,6 +319,7 @@ json jsonOf(const SetVisibility& v) {
   json out = {{"shown", v.shown}, {"hidden", v.hidden}};
   if (!v.marked.empty()) out["marked"] = v.marked;
   if (v.numbers) out["numbers"] = true;
+  if (v.colors) out["colors"] = true;
   return out;
 }
 
@@ -335,6 +336,7 @@ SetVisibility setsFrom(const Reader& r, const json& in) {
   names("hidden", v.hidden);
   if (const json* x = r.find(in, "marked")) v.marked = r.text(*x, "sets.marked");
   if (const json* x = r.find(in, "numbers")) v.numbers = r.boolean(*x, "sets.numbers");
+  if (const json* x = r.find(in, "colors")) v.colors = r.boolean(*x, "sets.colors");
   if (v.numbers && v.marked.empty()) r.fail("sets.numbers", "writes the marked set's numbers: name one in sets.marked");
   return v;
 }
@@ -474,7 +476,13 @@ std::string SceneState::toJson(const std::string& relativeTo) const {
   out["streamlines"] = jsonOf(streamlines);
   if (glyphs != GlyphLayer{}) out["glyphs"] = jsonOf(glyphs);
   if (threshold != ThresholdLayer{}) out["threshold"] = jsonOf(threshold);
-  if (sets.active() || !sets.marked.empty()) out["sets"] = jsonOf(sets);
+  if (sets.active() || !sets.marked.empty() || sets.colors) out["sets"] = jsonOf(sets);
+  if (!selection.empty()) {
+    json picked = json::object();
+    if (!selection.elements.empty()) picked["elements"] = idListText(selection.elements);
+    if (!selection.nodes.empty()) picked["nodes"] = idListText(selection.nodes);
+    out["selection"] = picked;
+  }
   out["deformation"] = {{"shown", deformation.shown},
                         {"field", deformation.field},
                         {"scale", deformation.scale ? json(*deformation.scale) : json("auto")},
@@ -665,6 +673,20 @@ SceneState SceneState::fromJson(const std::string& text, const std::string& file
   if (const json* g = r.find(in, "glyphs")) s.glyphs = glyphsFrom(r, r.object(*g, "glyphs"));
   if (const json* t = r.find(in, "threshold")) s.threshold = thresholdFrom(r, r.object(*t, "threshold"));
   if (const json* v = r.find(in, "sets")) s.sets = setsFrom(r, r.object(*v, "sets"));
+  if (const json* v = r.find(in, "selection")) {
+    const auto ids = [&](const char* key) {
+      const json* x = r.find(r.object(*v, "selection"), key);
+      if (!x) return std::vector<std::int64_t>{};
+      const std::string where = std::string("selection.") + key;
+      try {
+        return parseIdList(r.text(*x, where));
+      } catch (const std::invalid_argument& e) {
+        r.fail(where, e.what());
+      }
+    };
+    s.selection.elements = ids("elements");
+    s.selection.nodes = ids("nodes");
+  }
   if (const json* d = r.find(in, "deformation")) {
     r.object(*d, "deformation");
     if (const json* x = r.find(*d, "shown")) s.deformation.shown = r.boolean(*x, "deformation.shown");

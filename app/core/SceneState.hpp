@@ -10,6 +10,7 @@
 #include "DisplayRange.hpp"
 #include "Formula.hpp"
 #include "Glyphs.hpp"
+#include "Selection.hpp"
 #include "SetVisibility.hpp"
 #include "SurfaceRepresentation.hpp"
 #include "Threshold.hpp"
@@ -198,6 +199,9 @@ struct SceneState {
   /// Element sets drawn alone or hidden, and the set marked; "sets" in the file:
   /// {"shown": ["EALL"], "hidden": [], "marked": "FIXED"}.
   SetVisibility sets;
+  /// The elements and nodes picked (file ids), the model's sets "selected elements" and
+  /// "selected nodes"; "selection" in the file: {"elements": "101,105-110", "nodes": "7"}.
+  Selection selection;
   /// Points probed (the window's Probe panel), marked and numbered in the view.
   std::vector<glm::dvec3> probes;
   /// Probes measured in the picture (their indices in `probes`): two give their distance,

@@ -79,6 +79,11 @@ MarkedMembers markedMembers(const ModelSession& session, const std::string& name
 
 void checkSetVisibility(const ModelSession& session, const SetVisibility& v) {
   if (!v.marked.empty()) (void)markedSet(session, v.marked);
+  if (v.colors) {
+    const std::vector<EntitySet> sets = modelSets(session.model());
+    if (std::none_of(sets.begin(), sets.end(), [](const EntitySet& s) { return s.kind == SetKind::Cells; }))
+      throw std::invalid_argument("this model has no element sets to color by (volpost info lists its sets)");
+  }
   if (!v.active()) return;
   const std::vector<char> kept = cellsOfSets(session, v);  // throws for unknown names
   if (std::find(kept.begin(), kept.end(), 1) == kept.end())

@@ -21,6 +21,9 @@ struct SetVisibility {
   /// The marked set's numbers written beside it: its nodes' (a node set) or its elements'
   /// at their centres (an element set), the file's own ids.
   bool numbers = false;
+  /// Each drawn element set in a plain color of its own (SetColors.hpp) instead of the
+  /// result's colors on the surface, the sections and the slices.
+  bool colors = false;
   bool active() const { return !shown.empty() || !hidden.empty(); }
   bool drawsTheSame(const SetVisibility& o) const { return shown == o.shown && hidden == o.hidden; }
   bool operator==(const SetVisibility&) const = default;

@@ -24,6 +24,7 @@
 #include "SaveImageDialog.hpp"
 #include "SavedViews.hpp"
 #include "SeeThroughSurface.hpp"
+#include "SelectionActions.hpp"
 #include "SetsPanel.hpp"
 #include "StateFiles.hpp"
 #include "StepController.hpp"
@@ -266,6 +267,9 @@ void MainWindow::buildActions() {
   results->addSeparator();
   // Probing follows what is drawn: the deformed model while a deformation is shown.
   probes_ = new ProbeController(*this, *viewport_, *results, [this] { return viewport_->scene().sharedSession(); });
+  selection_ = new SelectionActions(
+      *this, *viewport_, *results, [this](const std::function<void(Scene&)>& c) { return changeScene(c); },
+      [this] { notifyPanels(); });
   results->addSeparator();
   QMenu* volume = menuBar()->addMenu("V&olume");
   volumeMenu_ = volume;
@@ -943,6 +947,7 @@ double MainWindow::lastTransferFunctionMs() const { return viewport_->volumeStat
 
 void MainWindow::notifyPanels() {
   if (sets_) sets_->followScene();
+  if (selection_) selection_->syncToScene();
   if (probes_) probes_->refresh();
   if (steps_) steps_->refresh();
   // One color control at a time: the volume's colors are its transfer function's.

@@ -35,6 +35,7 @@ class ProbeController;
 class RendererMenu;
 class Scene;
 class LinePlotPanel;
+class SelectionActions;
 class SetsPanel;
 class ModelLoader;
 class SavedViews;
@@ -177,7 +178,8 @@ class MainWindow : public QMainWindow, public PanelHost {
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key
   class GridSlicesPanel* gridSlices_ = nullptr;
-  SetsPanel* sets_ = nullptr;  // View > Panels > Sets
+  SelectionActions* selection_ = nullptr;  // Results > Select
+  SetsPanel* sets_ = nullptr;              // View > Panels > Sets
   class QDockWidget* gridSlicesDock_ = nullptr;
   std::vector<class QDockWidget*> pluginDocks_;  ///< the plugins' panels, opened with the volume
   QString pendingStatePath_;

@@ -2,14 +2,17 @@
 #include "SetsPanel.hpp"
 
 #include "../core/Scene.hpp"
+#include "../core/SetColors.hpp"
 
 #include <volpost/core/EntitySet.hpp>
 
 #include <QCheckBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLabel>
 #include <QLocale>
+#include <QPixmap>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QTreeWidget>
@@ -23,6 +26,7 @@ namespace {
 
 constexpr int kNameRole = Qt::UserRole;
 constexpr int kCountRole = Qt::UserRole + 1;  // the set's size in the whole model
+constexpr int kPlaceRole = Qt::UserRole + 2;  // an element set's place among them (its color)
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
@@ -85,6 +89,12 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
       "Write the marked set's numbers in the picture: its node ids, or an element set's "
       "element ids at their centres (at most 300)");
   buttons->addWidget(numbers_);
+  colors_ = new QCheckBox("&Colors", this);
+  colors_->setObjectName("setsColors");
+  colors_->setToolTip(
+      "Color each element set plainly in a color of its own (shown beside its name) instead of "
+      "by the result; an element in several sets takes the smallest one's color");
+  buttons->addWidget(colors_);
   buttons->addStretch();
   layout->addLayout(buttons);
   drawn_ = new QLabel(this);
@@ -116,6 +126,12 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
     v.numbers = on && !v.marked.empty();
     apply(v);
   });
+  connect(colors_, &QCheckBox::toggled, this, [this](bool on) {
+    if (following_) return;
+    SetVisibility v = scene_.setVisibility();
+    v.colors = on;
+    apply(v);
+  });
   connect(tree_, &QTreeWidget::currentItemChanged, this, [this] {
     if (!following_ && mark_->isChecked()) markCurrent(true);  // the mark follows the chosen set
   });
@@ -139,6 +155,8 @@ void SetsPanel::listSets() {
   for (const SetKind kind : {SetKind::Cells, SetKind::Nodes})
     for (const EntitySet& s : sets)
       if (s.kind == kind) addSet(groups, s);
+  if (groups[0])
+    for (int i = 0; i < groups[0]->childCount(); ++i) groups[0]->child(i)->setData(0, kPlaceRole, i);
   for (QTreeWidgetItem* g : groups)
     if (g) g->setText(1, count(std::size_t(g->childCount())));
 }
@@ -192,6 +210,9 @@ void SetsPanel::followScene() {
   mark_->setChecked(!v.marked.empty());
   numbers_->setEnabled(!v.marked.empty());
   numbers_->setChecked(v.numbers);
+  colors_->setEnabled(hasElementSets);
+  colors_->setChecked(v.colors);
+  showSetColors(v.colors);
   if (!base || !session) drawn_->clear();
   else {
     QString text = !v.active() ? QString("Every element drawn (%1)").arg(count(base->model().cellCount()))
@@ -227,6 +248,25 @@ void SetsPanel::showDrawnCounts() {
     const auto drawn = drawnCounts_.find(item->data(0, kNameRole).toString().toStdString());
     const std::size_t shown = whole ? total : drawn == drawnCounts_.end() ? 0 : drawn->second;
     item->setText(1, shown == total ? count(total) : count(shown) + " / " + count(total));
+  }
+}
+
+// Each element set's color beside its name while the sets color the model (SetColors.hpp).
+void SetsPanel::showSetColors(bool on) {
+  const QSignalBlocker block(tree_);
+  const int side = tree_->fontMetrics().height() * 3 / 4;
+  for (QTreeWidgetItemIterator it(tree_); *it; ++it) {
+    QTreeWidgetItem* item = *it;
+    const QVariant place = item->data(0, kPlaceRole);
+    if (!place.isValid()) continue;
+    if (!on) {
+      item->setIcon(0, QIcon());
+      continue;
+    }
+    const glm::dvec3 rgb = setPaletteColor(std::size_t(place.toInt()));
+    QPixmap swatch(side, side);
+    swatch.fill(QColor::fromRgbF(float(rgb.r), float(rgb.g), float(rgb.b)));
+    item->setIcon(0, QIcon(swatch));
   }
 }
 

@@ -4,7 +4,8 @@
 // with their counts. An element set's box draws or hides its elements; Show Only draws the
 // selected sets alone (a double click: that set alone), Show All every element. The boxes
 // always show the scene's choice, after a state file or a refused change too. Mark draws
-// the chosen set's nodes in the picture.
+// the chosen set's nodes in the picture. Colors draws each element set in a plain color
+// of its own, shown beside its name.
 #pragma once
 
 #include "ChangeScene.hpp"
@@ -46,6 +47,7 @@ class SetsPanel : public QWidget {
   void showOnlySelected();
   void markCurrent(bool on);
   void showDrawnCounts();
+  void showSetColors(bool on);
   void apply(const SetVisibility& v);
 
   const Scene& scene_;
@@ -55,6 +57,7 @@ class SetsPanel : public QWidget {
   QPushButton* showAll_ = nullptr;
   QPushButton* mark_ = nullptr;
   QCheckBox* numbers_ = nullptr;
+  QCheckBox* colors_ = nullptr;
   QLabel* drawn_ = nullptr;
   const ModelSession* listed_ = nullptr;  // whose sets the tree lists
   std::string listedPath_;

@@ -143,8 +143,10 @@ QImage Viewport::renderPicture(int width, int height, double textScale, bool tra
 // texture: no QPainter on the GL context, so the core-profile state stays ours.
 void Viewport::drawLegend(int w, int h) {
   const bool rake = rakeMode_ && rakeStart_ && rakeEnd_;
-  if (!scene_.legend() && !rake && scene_.probes().empty() && !scene_.marksExtremes() && !scene_.showsTriad() &&
-      !scene_.showsPlaneWidget() && !scene_.showsBoxWidget() && !scene_.plotLine() && !scene_.showsRakes())
+  const bool selecting = selectMode_ && selectStart_ && selectEnd_;
+  if (!scene_.legend() && !rake && !selecting && scene_.probes().empty() && !scene_.marksExtremes() &&
+      !scene_.showsTriad() && !scene_.showsPlaneWidget() && !scene_.showsBoxWidget() && !scene_.plotLine() &&
+      !scene_.showsRakes() && scene_.setVisibility().marked.empty() && !scene_.highlight())
     return;
   QImage image(w, h, QImage::Format_RGBA8888_Premultiplied);
   image.setDevicePixelRatio(devicePixelRatioF());
@@ -160,11 +162,25 @@ void Viewport::drawLegend(int w, int h) {
       painter.drawEllipse(*rakeStart_, 4.0, 4.0);
       painter.drawEllipse(*rakeEnd_, 4.0, 4.0);
     }
+    if (selecting) {  // the box being dragged: a dashed frame over a light veil
+      painter.setPen(QPen(QColor(255, 200, 40), 1.5, Qt::DashLine));
+      painter.setBrush(QColor(255, 200, 40, 40));
+      painter.drawRect(QRectF(*selectStart_, *selectEnd_).normalized());
+    }
   }
   overlay_.setImage(w, h, {image.constBits(), std::size_t(image.sizeInBytes())});
   glBindFramebuffer(GL_FRAMEBUFFER, defaultFramebufferObject());
   glViewport(0, 0, w, h);
   overlay_.render();
+}
+
+void Viewport::setSelectMode(bool on) {
+  selectMode_ = on;
+  selectStart_.reset();
+  selectEnd_.reset();
+  if (on && rakeMode_) setRakeMode(false);
+  setCursor(on ? Qt::CrossCursor : probeMode_ ? Qt::PointingHandCursor : Qt::ArrowCursor);
+  update();
 }
 
 void Viewport::setRakeMode(bool on) {
@@ -227,6 +243,11 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
   dragUp_ = glm::dvec3(0.0);
   dragUp_[axis] = up[axis] < 0.0 ? -1.0 : 1.0;
   scene_.rememberView();  // View > Previous View comes back here (a click that moves nothing adds nothing)
+  if (selectMode_ && event->button() == Qt::LeftButton) {
+    selectStart_ = selectEnd_ = event->position();
+    update();
+    return;
+  }
   if (rakeMode_ && event->button() == Qt::LeftButton) {
     rakeStart_ = rakeEnd_ = event->position();
     update();
@@ -252,6 +273,18 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+  if (selectMode_ && selectStart_ && event->button() == Qt::LeftButton) {
+    const QPointF a = *selectStart_, b = event->position();
+    selectStart_.reset();
+    selectEnd_.reset();
+    pressedAt_.reset();
+    update();
+    const bool add = event->modifiers() & (Qt::ControlModifier | Qt::ShiftModifier);
+    if ((b - a).manhattanLength() < 4.0)  // a click: the pixel under it
+      emit boxSelected(PictureBox{b.x(), b.y(), b.x(), b.y()}, add);
+    else emit boxSelected(PictureBox{a.x(), a.y(), b.x(), b.y()}, add);
+    return;
+  }
   const bool click = event->button() == Qt::LeftButton && pressedAt_ &&
                      (event->position() - *pressedAt_).manhattanLength() < 4.0;
   if (event->button() == Qt::LeftButton && boxDragFace_) {
@@ -297,6 +330,11 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
     setRakeMode(false);
     return;
   }
+  if (selectMode_ && event->key() == Qt::Key_Escape) {
+    setSelectMode(false);
+    emit selectModeLeft();
+    return;
+  }
   QOpenGLWidget::keyPressEvent(event);
 }
 
@@ -322,6 +360,11 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
       });
     }
     hoverTimer_->start(120);
+    return;
+  }
+  if (selectMode_ && selectStart_ && (event->buttons() & Qt::LeftButton)) {
+    selectEnd_ = event->position();
+    update();
     return;
   }
   if (rakeMode_ && rakeStart_) {

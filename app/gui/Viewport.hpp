@@ -7,6 +7,7 @@
 // changes the scene calls update().
 #pragma once
 
+#include "../core/BoxSelection.hpp"
 #include "../core/BoxWidget.hpp"
 #include "../core/PlaneWidget.hpp"
 #include "../core/SceneDrawing.hpp"  // brings in epoxy before any Qt GL header
@@ -56,6 +57,12 @@ class Viewport : public QOpenGLWidget {
   glm::dvec3 pointInTargetPlane(const QPointF& pixel) const;
   std::optional<glm::dvec3> rakePointAt(const QPointF& pixel) const;
 
+  /// Select mode: a left drag draws a box and on release boxSelected() gives it (a click: the
+  /// pixel under it); Ctrl or Shift held adds to the selection. The right button still pans
+  /// and the wheel zooms. Stays on until set off; Escape sets it off (selectModeLeft()).
+  void setSelectMode(bool on);
+  bool selectMode() const { return selectMode_; }
+
   /// Probe mode: a left click (no drag) on the model emits picked() with the surface point
   /// under it; resting the mouse emits hovered(). Drags still orbit.
   void setProbeMode(bool on);
@@ -84,6 +91,11 @@ class Viewport : public QOpenGLWidget {
   /// The seeds of a rake dragged across the view (model coordinates, in order).
   void rakePlaced(std::vector<glm::dvec3> seeds);
   void picked(glm::dvec3 point);
+  /// A box dragged (or a pixel clicked) in select mode, in the widget's pixels; `add`: to
+  /// the selection, not in its place.
+  void boxSelected(volpost::app::PictureBox box, bool add);
+  /// Escape left select mode.
+  void selectModeLeft();
   /// The mouse rests over the model at `point` (hit) or off it (not hit).
   void hovered(QPoint globalPosition, bool hit, glm::dvec3 point);
   /// The plane widget moved the first clip plane (during the drag, each move).
@@ -118,6 +130,8 @@ class Viewport : public QOpenGLWidget {
   glm::dvec3 dragUp_{0.0, 0.0, 1.0};  ///< the turntable's axis for the drag in progress
   std::optional<QPointF> rakeStart_, rakeEnd_;  ///< the rake being drawn, widget pixels
   bool probeMode_ = false;
+  bool selectMode_ = false;
+  std::optional<QPointF> selectStart_, selectEnd_;  ///< the box being dragged, widget pixels
   std::optional<QPointF> pressedAt_;  ///< where the left button went down (a click or a drag)
   QTimer* hoverTimer_ = nullptr;       ///< hover picks wait for the mouse to rest
   QElapsedTimer wheelTurning_;         ///< since the wheel last turned

@@ -55,12 +55,17 @@ void normalizeMembers(std::vector<std::uint32_t>& members) {
 }
 
 std::vector<EntitySet> modelSets(const Model& model) {
-  std::vector<EntitySet> out = model.sets;
+  // The user's selection (sets of origin "selection", which the window and `render
+  // --select-elements` add) is no set of the file's: it comes last and leaves the groups
+  // a region field offers where the file defines no element set.
+  std::vector<EntitySet> out, selected;
+  for (const EntitySet& s : model.sets) (s.origin == "selection" ? selected : out).push_back(s);
   const bool fileHasElementSets =
       std::any_of(out.begin(), out.end(), [](const EntitySet& s) { return s.kind == SetKind::Cells; });
-  if (fileHasElementSets || model.grid) return out;
-  for (const auto& f : model.fields)
-    for (EntitySet& g : groupsOfField(*f)) out.push_back(std::move(g));
+  if (!fileHasElementSets && !model.grid)
+    for (const auto& f : model.fields)
+      for (EntitySet& g : groupsOfField(*f)) out.push_back(std::move(g));
+  out.insert(out.end(), std::make_move_iterator(selected.begin()), std::make_move_iterator(selected.end()));
   return out;
 }
 

@@ -1184,6 +1184,23 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   ASSERT_EQ(runVolpost(common + "--mark-set NALL --set-numbers -o " + numbered).exitCode, 0);
   EXPECT_NE(QImage(QString::fromStdString(marked)), QImage(QString::fromStdString(numbered)));
   refused("--set-numbers", "--set-numbers writes the marked set's numbers: add --mark-set NAME");
+  const std::string colored = (dir / "colored.png").string();
+  const auto colors = runVolpost(common + "--color-by-set -o " + colored);
+  ASSERT_EQ(colors.exitCode, 0) << colors.output;
+  EXPECT_NE(colors.output.find("colored by 3 element sets"), std::string::npos) << colors.output;
+  EXPECT_NE(QImage(QString::fromStdString(all)), QImage(QString::fromStdString(colored)));
+  refused("--color-by-set --renderer cpu", "--color-by-set colors the surface, sections and slices");
+  const std::string selected = (dir / "selected.png").string(), selectedState = (dir / "selected.json").string();
+  const auto selection = runVolpost(common + "--select-elements 1-102 --show-set 'selected elements' -o " + selected +
+                                    " --save-state " + selectedState);
+  ASSERT_EQ(selection.exitCode, 0) << selection.output;
+  EXPECT_NE(selection.output.find("the chosen sets hold 2 of the 3 cells"), std::string::npos) << selection.output;
+  EXPECT_NE(selection.output.find("of selected elements are marked"), std::string::npos) << selection.output;
+  std::ifstream selectedSaved(selectedState);
+  const std::string selectedText((std::istreambuf_iterator<char>(selectedSaved)), {});
+  EXPECT_NE(selectedText.find("\"elements\": \"101-102\""), std::string::npos) << selectedText;
+  refused("--select-elements 104", "--select-elements 104: the model has no element 104");
+  refused("--select-nodes 1,x", "--select-nodes 1,x: 'x' in '1,x' is not an id");
   const std::string measured = (dir / "measured.png").string();
   const std::string probes = "--probe 0.5,0.5,0.5 --probe 2.5,0.5,0.5 --probe 3.5,0.5,0.5 ";
   ASSERT_EQ(runVolpost(common + probes + "-o " + marked).exitCode, 0);

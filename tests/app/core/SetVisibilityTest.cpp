@@ -2,6 +2,7 @@
 // Showing and hiding element sets: the kept cells are exactly the chosen sets' members,
 // keep their file numbers and their sets, and the choice is refused (changing nothing)
 // where it names no element set or leaves nothing to draw; it lives in the saved state.
+#include "support/HeadlessGl.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -9,9 +10,14 @@
 
 #include "core/PluginRenderers.hpp"
 #include "core/Scene.hpp"
+#include "core/SceneImage.hpp"
+#include "core/SetColors.hpp"
 #include "core/SetMembership.hpp"
 #include "core/SetVisibility.hpp"
 
+#include <QImage>
+
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -182,4 +188,140 @@ TEST(SetMembership, TheSetsHoldingAnElementOrANode) {
   EXPECT_EQ(setsHolding(sets, SetKind::Nodes, 0), (std::vector<std::string>{"NALL"}));
   EXPECT_TRUE(setsHolding(sets, SetKind::Cells, 99).empty());
   EXPECT_EQ(setNameList({"EALL", "region 7"}), "EALL, \"region 7\"");
+}
+
+namespace {
+
+// Pixels within 3/255 per channel of `rgb`.
+int pixelsOf(const QImage& image, const glm::dvec3& rgb) {
+  int n = 0;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x) {
+      const QColor c = image.pixelColor(x, y);
+      n += std::abs(c.red() - int(std::lround(rgb.r * 255))) <= 3 &&
+                   std::abs(c.green() - int(std::lround(rgb.g * 255))) <= 3 &&
+                   std::abs(c.blue() - int(std::lround(rgb.b * 255))) <= 3
+               ? 1
+               : 0;
+    }
+  return n;
+}
+
+// Three tets: ALL holds the first two, SMALL the second, the third is in no set.
+std::shared_ptr<ModelSession> overlappingSets() {
+  const std::string path = ::testing::TempDir() + "/overlapping_sets.inp";
+  std::ofstream(path) << "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,2,1,1\n"
+                         "*ELEMENT, TYPE=C3D4, ELSET=ALL\n1,1,2,3,4\n2,2,3,4,5\n"
+                         "*ELEMENT, TYPE=C3D4\n3,2,3,5,6\n"
+                         "*ELSET, ELSET=SMALL\n2\n";
+  return ModelSession::load(volpost::test::meshioReaders(), path);
+}
+
+}  // namespace
+
+TEST(SetColors, EachCellTakesTheSmallestSetHoldingItAndASetKeepsItsColor) {
+  const auto whole = overlappingSets();
+  const SetColoring c = setColoring(*whole, *whole);
+  ASSERT_EQ(c.view.values.size(), 3u);
+  EXPECT_EQ(c.view.location, FieldLocation::Cell);
+  EXPECT_EQ(c.view.values[0], 0.5) << "ALL, the first element set: the palette's first color";
+  EXPECT_EQ(c.view.values[1], 1.5) << "SMALL inside ALL: the smaller set's color";
+  EXPECT_TRUE(std::isnan(c.view.values[2])) << "in no set: drawn gray";
+  ASSERT_EQ(c.entries.size(), 2u);
+  EXPECT_EQ(c.entries[0].name, "ALL");
+  EXPECT_EQ(c.entries[0].cells, 1u);
+  EXPECT_EQ(c.entries[1].name, "SMALL");
+  EXPECT_EQ(c.entries[1].rgb, setPaletteColor(1));
+  EXPECT_EQ(c.cellsInNoSet, 1u);
+  EXPECT_EQ(c.view.range.nanCount, 1u);
+
+  // Hiding a set leaves the others their colors; a set that colors no drawn cell is not keyed.
+  const auto golden3 = golden();
+  const auto part = setVisibleSession(golden3, {{}, {"E_HEX"}, {}});
+  const SetColoring p = setColoring(*part, *golden3);
+  ASSERT_EQ(p.view.values.size(), 2u);
+  EXPECT_EQ(p.view.values[0], 1.5) << "E_WEDGE keeps the second color";
+  EXPECT_EQ(p.view.values[1], 2.5) << "E_TET the third";
+  ASSERT_EQ(p.entries.size(), 2u);
+  EXPECT_EQ(p.entries[0].name, "E_WEDGE");
+  EXPECT_EQ(p.cellsInNoSet, 0u);
+  // The palette map is flat over each band: its middle is the set's color.
+  const ColorMap map = setPaletteMap();
+  for (int i = 0; i < kSetPaletteSize; ++i) {
+    EXPECT_EQ(map.at((i + 0.5) / kSetPaletteSize), setPaletteColor(std::size_t(i))) << i;
+    EXPECT_EQ(map.at((i + 0.02) / kSetPaletteSize), setPaletteColor(std::size_t(i))) << i;
+  }
+  EXPECT_EQ(setPaletteColor(kSetPaletteSize + 3), setPaletteColor(3)) << "more sets than colors: they cycle";
+}
+
+TEST(SetColors, TheSceneColorsBySetsKeysThemAndSavesTheChoice) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(golden());
+  scene.setResult("element set", 0);
+  EXPECT_EQ(scene.setColoring(), nullptr) << "off until asked";
+  EXPECT_EQ(scene.surfaceValues().view, scene.shownValues().view);
+  const std::uint64_t before = scene.surfaceValues().version;
+  SetVisibility v;
+  v.colors = true;
+  scene.setSetVisibility(v);
+  ASSERT_NE(scene.setColoring(), nullptr);
+  EXPECT_EQ(scene.surfaceValues().view, &scene.setColoring()->view);
+  EXPECT_NE(scene.surfaceValues().version, before) << "cached sections are cut again";
+  EXPECT_EQ(scene.surfaceRange().max, double(kSetPaletteSize));
+  EXPECT_EQ(scene.view()->quantity.key(), "element set") << "the result stays for probing and the volume";
+  const auto key = scene.legends();
+  ASSERT_FALSE(key.empty());
+  EXPECT_EQ(key.front().content.title, "Element sets");
+  ASSERT_EQ(key.front().content.swatches.size(), 3u);
+  EXPECT_EQ(key.front().content.swatches[2].name, "E_TET");
+  EXPECT_EQ(key.front().content.swatches[2].rgb, setPaletteColor(2));
+
+  const SceneState back = SceneState::fromJson(scene.state().toJson(), "/data/view.json");
+  EXPECT_TRUE(back.sets.colors);
+  v.colors = false;
+  scene.setSetVisibility(v);
+  EXPECT_EQ(scene.setColoring(), nullptr);
+  EXPECT_TRUE(scene.legends().front().content.swatches.empty()) << "the result's bar again";
+  scene.applyState(back);
+  EXPECT_NE(scene.setColoring(), nullptr);
+
+  // A model with no element set has nothing to color by: refused, nothing changed.
+  const std::string path = ::testing::TempDir() + "/no_sets.vtk";
+  std::ofstream(path) << "# vtk DataFile Version 3.0\nno sets\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                         "POINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  scene.setSession(ModelSession::load(volpost::test::meshioReaders(), path));
+  SetVisibility colors;
+  colors.colors = true;
+  try {
+    scene.setSetVisibility(colors);
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("no element sets to color by"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(scene.setVisibility().colors);
+}
+
+TEST(SetColors, ThePictureShowsEachSetInItsColor) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(golden());
+  scene.setResult("element set", 0);
+  scene.setShowEdges(false);
+  scene.setLighting(false);  // the colors as they are
+  scene.setShowTriad(false);
+  SetVisibility v;
+  v.colors = true;
+  scene.setSetVisibility(v);
+  const QImage all = renderSceneImage(scene, 200, 120).picture;
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_GT(pixelsOf(all, setPaletteColor(i)), 60) << "set " << i;
+  v.hidden = {"E_HEX"};
+  scene.setSetVisibility(v);
+  const QImage part = renderSceneImage(scene, 200, 120).picture;
+  EXPECT_LT(pixelsOf(part, setPaletteColor(0)), 8) << "the hidden set's color is gone (but in the key)";
+  EXPECT_GT(pixelsOf(part, setPaletteColor(1)), 60) << "the others keep theirs";
+  EXPECT_GT(pixelsOf(part, setPaletteColor(2)), 60);
+  v = {};
+  scene.setSetVisibility(v);
+  const QImage result = renderSceneImage(scene, 200, 120).picture;
+  EXPECT_LT(pixelsOf(result, setPaletteColor(1)), 8) << "the result's colors again";
 }

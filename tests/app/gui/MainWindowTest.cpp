@@ -546,6 +546,49 @@ class MainWindowTest : public QObject {
     window_->viewport()->setStandardView(StandardView::Isometric);
   }
 
+  void aDraggedBoxSelectsElementsAndNodes() {
+    // Results > Select Elements, then a box over the middle of the bar seen from +y: the
+    // elements seen there are selected, marked, and listed as a set; Through takes more
+    // (the ones behind too); Select Nodes takes nodes; Escape ends; Clear forgets.
+    Viewport* view = window_->viewport();
+    view->setStandardView(StandardView::PlusY);
+    const QPoint c = view->rect().center();
+    const auto drag = [&](QPoint a, QPoint b, Qt::KeyboardModifiers modifiers = {}) {
+      QTest::mousePress(view, Qt::LeftButton, modifiers, a);
+      QMouseEvent move(QEvent::MouseMove, QPointF(b), view->mapToGlobal(QPointF(b)), Qt::NoButton, Qt::LeftButton,
+                       modifiers);
+      QApplication::sendEvent(view, &move);
+      QTest::mouseRelease(view, Qt::LeftButton, modifiers, b);
+    };
+    window_->findChild<QAction*>("selectElements")->trigger();
+    QVERIFY(view->selectMode());
+    drag(c - QPoint(30, 20), c + QPoint(30, 20));
+    const std::size_t seen = view->scene().selection().elements.size();
+    QVERIFY2(seen > 0, qPrintable(window_->statusBar()->currentMessage()));
+    QVERIFY(window_->statusBar()->currentMessage().contains("elements selected"));
+    QCOMPARE(view->scene().setVisibility().marked, std::string("selected elements"));
+    QVERIFY(view->selectMode());  // stays on for the next box
+    window_->findChild<QAction*>("selectElementsThrough")->trigger();
+    drag(c - QPoint(30, 20), c + QPoint(30, 20));
+    QVERIFY2(view->scene().selection().elements.size() > seen, "through the depth: the hidden ones too");
+    const std::size_t through = view->scene().selection().elements.size();
+    drag(c + QPoint(60, -20), c + QPoint(90, 20), Qt::ControlModifier);  // Ctrl adds
+    QVERIFY(view->scene().selection().elements.size() > through);
+    window_->findChild<QAction*>("selectNodes")->trigger();
+    QTest::mouseClick(view, Qt::LeftButton, {}, c);  // a click: the node nearest it
+    QCOMPARE(view->scene().selection().nodes.size(), std::size_t(1));
+    QVERIFY(!view->scene().selection().elements.empty());  // the other kind stays
+    QTest::keyClick(view, Qt::Key_Escape);
+    QVERIFY(!view->selectMode());
+    QVERIFY(!window_->findChild<QAction*>("selectNodes")->isChecked());
+    const SceneState saved = view->scene().state();
+    QCOMPARE(saved.selection, view->scene().selection());
+    window_->findChild<QAction*>("clearSelectionAction")->trigger();
+    QVERIFY(view->scene().selection().empty());
+    QVERIFY(view->scene().setVisibility().marked.empty());
+    view->setStandardView(StandardView::Isometric);
+  }
+
   void probingByClickAndByTypingListsTheValues() {
     // View > Probe, then a click on the middle of the bar seen from +y: one probed point
     // on its side face, listed with its element; a typed point adds a second.

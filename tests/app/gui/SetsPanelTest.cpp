@@ -5,6 +5,8 @@
 // and another model.
 #include "gui/SetsPanel.hpp"
 
+#include "core/SetColors.hpp"
+
 #include "support/WindowParts.hpp"
 
 #include <QApplication>
@@ -16,6 +18,7 @@
 #include <QTest>
 #include <QTreeWidget>
 
+#include <cmath>
 #include <memory>
 
 using namespace volpost;
@@ -132,6 +135,38 @@ class SetsPanelTest : public QObject {
     QVERIFY(window_->statusBar()->currentMessage().contains("leave no element"));
     QCOMPARE(checked(), QStringList{"E_TET"});
     QCOMPARE(drawnCells(), std::size_t(1));
+  }
+
+  void colorsDrawEachSetInItsOwnColorShownBesideIt() {
+    QCheckBox* colors = panel_->findChild<QCheckBox*>("setsColors");
+    QVERIFY(colors->isEnabled() && !colors->isChecked());
+    QVERIFY(item("E_HEX")->icon(0).isNull());
+    colors->setChecked(true);
+    QVERIFY(scene_->setVisibility().colors);
+    QVERIFY(!item("E_WEDGE")->icon(0).isNull());
+    const QColor swatch = item("E_WEDGE")->icon(0).pixmap(8, 8).toImage().pixelColor(4, 4);
+    const glm::dvec3 rgb = setPaletteColor(1);  // the second element set's color, as drawn
+    QVERIFY(std::abs(swatch.redF() - rgb.r) < 0.01 && std::abs(swatch.greenF() - rgb.g) < 0.01);
+    QVERIFY(item("NALL")->icon(0).isNull());  // a node set colors nothing
+    SceneState state = scene_->state();
+    state.sets.colors = false;
+    scene_->applyState(state);
+    panel_->followScene();
+    QVERIFY(!colors->isChecked());  // the box shows the scene's choice
+    QVERIFY(item("E_WEDGE")->icon(0).isNull());
+  }
+
+  void theSelectionIsListedAsSets() {
+    scene_->setSelection({{101, 103}, {}});
+    panel_->followScene();
+    QVERIFY(item("selected elements"));
+    QCOMPARE(item("selected elements")->text(1), QString("2"));
+    item("selected elements")->setCheckState(0, Qt::Unchecked);  // hidden like any set
+    QCOMPARE(drawnCells(), std::size_t(1));
+    scene_->setSelection({});
+    panel_->followScene();
+    QVERIFY(!item("selected elements"));
+    QCOMPARE(drawnCells(), std::size_t(3));  // the choice that named it forgot it
   }
 
   void theBoxesFollowAStateAndAnotherModel() {
