@@ -24,9 +24,11 @@
 namespace volpost::app {
 namespace {
 
-// The places of a history: --node and --element ids, --at points, in that order.
+// The places of a history: --node and --element ids, --at points, the sets' extremes, in
+// that order.
 std::vector<HistoryPlace> historyPlaces(const QCommandLineParser& parser, const QCommandLineOption& node,
-                                        const QCommandLineOption& element, const QCommandLineOption& at) {
+                                        const QCommandLineOption& element, const QCommandLineOption& at,
+                                        const QCommandLineOption& maxOf, const QCommandLineOption& minOf) {
   std::vector<HistoryPlace> places;
   for (const auto& [option, kind] :
        {std::pair{&node, HistoryPlace::Kind::Node}, std::pair{&element, HistoryPlace::Kind::Element}})
@@ -36,13 +38,16 @@ std::vector<HistoryPlace> historyPlaces(const QCommandLineParser& parser, const 
       if (!ok)
         throw OptionError(
             QString("--%1 %2 is not an id (a whole number)").arg(option->names().first(), text).toStdString());
-      places.push_back({kind, id, {}});
+      places.push_back({kind, id, {}, {}});
     }
   for (const QString& text : parser.values(at)) {
     const auto p = parsePoint(text);
     if (!p) throw OptionError(QString("--at %1 is not X,Y,Z").arg(text).toStdString());
-    places.push_back({HistoryPlace::Kind::Point, 0, *p});
+    places.push_back({HistoryPlace::Kind::Point, 0, *p, {}});
   }
+  for (const auto& [option, kind] :
+       {std::pair{&maxOf, HistoryPlace::Kind::SetMax}, std::pair{&minOf, HistoryPlace::Kind::SetMin}})
+    for (const QString& name : parser.values(*option)) places.push_back({kind, 0, {}, name.toStdString()});
   return places;
 }
 
@@ -72,31 +77,39 @@ int runPlot(const QStringList& args) {
   const QCommandLineOption element("element", "With --history: an element by its id, at its centre (repeatable).",
                                    "ID");
   const QCommandLineOption at("at", "With --history: a point X,Y,Z (repeatable).", "X,Y,Z");
+  const QCommandLineOption maxOf("max-of",
+                                 "With --history: the largest value over this set at each step (a node set's "
+                                 "nodes, an element set's elements; repeatable).",
+                                 "SET");
+  const QCommandLineOption minOf("min-of", "With --history: the smallest value over this set (repeatable).", "SET");
   const QCommandLineOption showSet("show-set",
                                    "Sample only this element set's elements (repeatable; `volpost info` lists "
                                    "the sets); the line is off the model elsewhere.",
                                    "NAME");
   const QCommandLineOption hideSet("hide-set", "Leave this element set's elements out (repeatable).", "NAME");
   parser.addOptions({from, to, field, samples, step, csv, output, size, readerOption, formula, history, node, element,
-                     at, showSet, hideSet});
+                     at, maxOf, minOf, showSet, hideSet});
   if (const auto code = parseArguments(parser, "volpost plot", args)) return *code;
   if (parser.isSet(history)) {
     for (const QCommandLineOption* o : {&from, &to, &samples, &step, &showSet, &hideSet})
       if (parser.isSet(*o)) {
-        printError(QString("--%1 is for a plot over a line; --history plots every step at --node, --element or --at")
+        printError(QString("--%1 is for a plot over a line; --history plots every step at --node, --element, --at, "
+                           "--max-of or --min-of")
                        .arg(o->names().first()));
         return 2;
       }
     if (parser.positionalArguments().size() != 1 ||
-        (!parser.isSet(node) && !parser.isSet(element) && !parser.isSet(at)) ||
+        (!parser.isSet(node) && !parser.isSet(element) && !parser.isSet(at) && !parser.isSet(maxOf) &&
+         !parser.isSet(minOf)) ||
         (!parser.isSet(csv) && !parser.isSet(output))) {
       printError(
-          "plot --history needs MODEL, --node ID, --element ID or --at X,Y,Z, and --csv FILE or -o chart.png "
+          "plot --history needs MODEL, --node ID, --element ID, --at X,Y,Z or --max-of/--min-of SET, and --csv "
+          "FILE or -o chart.png "
           "(volpost plot model.frd --history --node 5484 --field S.mises -o history.png)");
       return 2;
     }
   } else {
-    for (const QCommandLineOption* o : {&node, &element, &at})
+    for (const QCommandLineOption* o : {&node, &element, &at, &maxOf, &minOf})
       if (parser.isSet(*o)) {
         printError(QString("--%1 goes with --history (a plot over the steps)").arg(o->names().first()));
         return 2;
@@ -162,7 +175,8 @@ int runPlot(const QStringList& args) {
     if (parser.isSet(history)) {
       History h;
       try {
-        h = sampleHistory(*session, historyPlaces(parser, node, element, at), keys, terminalProgress("sampling"));
+        h = sampleHistory(*session, historyPlaces(parser, node, element, at, maxOf, minOf), keys,
+                          terminalProgress("sampling"));
       } catch (const std::invalid_argument& e) {  // an id or place count the model cannot honour
         throw OptionError(e.what());
       }

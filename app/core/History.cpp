@@ -17,6 +17,8 @@ ProbeResult probePlace(const ModelSession& session, const HistoryPlace& place, s
     case HistoryPlace::Kind::Element:
       return probeElement(session, place.id, step);
     case HistoryPlace::Kind::Point:
+    case HistoryPlace::Kind::SetMax:
+    case HistoryPlace::Kind::SetMin:
       break;
   }
   return probeAt(session, place.point, step);
@@ -28,6 +30,50 @@ std::string csvField(const std::string& text) {
   std::string out = "\"";
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
+}
+
+bool isSetExtreme(const HistoryPlace& place) {
+  return place.kind == HistoryPlace::Kind::SetMax || place.kind == HistoryPlace::Kind::SetMin;
+}
+
+// Which values of a quantity the set holds: per node (a node set's nodes, an element set's
+// elements' nodes) or per element (an element set's elements). Throws std::invalid_argument
+// for an unknown set (naming the sets there are) or a node set of a per-element quantity.
+std::vector<std::uint32_t> setValueIndices(const ModelSession& session, const std::string& name, FieldLocation location,
+                                           const std::string& key) {
+  const std::vector<EntitySet> sets = modelSets(session.model());
+  const EntitySet* s = findSet(sets, name);
+  if (!s) {
+    std::string all;
+    for (const EntitySet& e : sets) all += (all.empty() ? "" : ", ") + e.name;
+    throw std::invalid_argument("no set is named '" + name + "' (" +
+                                (all.empty() ? std::string("this model has no sets") : "its sets: " + all) + ")");
+  }
+  if (location == FieldLocation::Cell) {
+    if (s->kind == SetKind::Nodes)
+      throw std::invalid_argument(key + " is given per element; its extreme over the node set " + s->name +
+                                  " needs an element set");
+    return s->members;
+  }
+  if (s->kind == SetKind::Nodes) return s->members;
+  const Mesh& mesh = session.model().mesh();
+  std::vector<std::uint32_t> nodes;
+  for (const std::uint32_t c : s->members)
+    if (c < mesh.cellCount())
+      for (const NodeIndex n : mesh.cellNodes(c)) nodes.push_back(n);
+  normalizeMembers(nodes);
+  return nodes;
+}
+
+// The set's largest (smallest) finite value of `view`; NaN when it has none.
+double extremeOver(const ScalarView& view, const std::vector<std::uint32_t>& indices, bool largest) {
+  double best = std::numeric_limits<double>::quiet_NaN();
+  for (const std::uint32_t i : indices) {
+    if (i >= view.values.size()) continue;
+    const double v = view.values[i];
+    if (std::isfinite(v) && (std::isnan(best) || (largest ? v > best : v < best))) best = v;
+  }
+  return best;
 }
 
 bool increasing(const std::vector<double>& v) {
@@ -44,6 +90,10 @@ std::string HistoryPlace::label() const {
       return "node " + std::to_string(id);
     case Kind::Element:
       return "element " + std::to_string(id);
+    case Kind::SetMax:
+      return "max over " + set;
+    case Kind::SetMin:
+      return "min over " + set;
     case Kind::Point:
       break;
   }
@@ -52,7 +102,7 @@ std::string HistoryPlace::label() const {
 
 History sampleHistory(const ModelSession& session, const std::vector<HistoryPlace>& places,
                       const std::vector<std::string>& keys, const Progress& progress) {
-  if (places.empty()) throw std::invalid_argument("a history needs a node, an element or a point");
+  if (places.empty()) throw std::invalid_argument("a history needs a node, an element, a point or a set");
   if (keys.empty()) throw std::invalid_argument("a history needs a quantity");
   if (places.size() * keys.size() > kMaxHistoryCurves)
     throw std::invalid_argument(std::to_string(places.size() * keys.size()) +
@@ -76,7 +126,26 @@ History sampleHistory(const ModelSession& session, const std::vector<HistoryPlac
       h.curves.push_back({q.key(), place.label(), q.displayName(), q.displayName() + " at " + place.label(), {}});
     }
   const std::size_t steps = h.times.size();
+  // The sets' members first: an unknown set throws before the long part.
+  std::vector<std::vector<std::vector<std::uint32_t>>> members(places.size());
+  for (std::size_t p = 0; p < places.size(); ++p)
+    if (isSetExtreme(places[p]))
+      for (std::size_t k = 0; k < keys.size(); ++k)
+        members[p].push_back(setValueIndices(session, places[p].set, fields[k]->location(), keys[k]));
   for (std::size_t p = 0; p < places.size(); ++p) {
+    if (isSetExtreme(places[p])) {
+      for (std::size_t s = 0; s < steps; ++s) {
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+          History::Curve& curve = h.curves[p * keys.size() + k];
+          curve.values.push_back(s < fields[k]->stepCount()
+                                     ? extremeOver(session.evaluate(session.findQuantity(keys[k]), s), members[p][k],
+                                                   places[p].kind == HistoryPlace::Kind::SetMax)
+                                     : std::numeric_limits<double>::quiet_NaN());
+        }
+        progress.report(double(p * steps + s + 1) / double(places.size() * steps));
+      }
+      continue;
+    }
     (void)probePlace(session, places[p], 0);  // an unknown id throws before the long part
     for (std::size_t s = 0; s < steps; ++s) {
       const ProbeResult r = probePlace(session, places[p], s);

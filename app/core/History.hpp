@@ -15,13 +15,17 @@
 
 namespace volpost::app {
 
-/// Where a history is taken: a node or an element by the file's id, or a point.
+/// Where a history is taken: a node or an element by the file's id, a point, or the
+/// largest (smallest) value over a set at each step: over a node set's nodes or an element
+/// set's elements (a nodal quantity: their nodes).
 struct HistoryPlace {
-  enum class Kind { Node, Element, Point };
+  enum class Kind { Node, Element, Point, SetMax, SetMin };
   Kind kind = Kind::Point;
   std::int64_t id = 0;
   glm::dvec3 point{0.0};
-  std::string label() const;  ///< "node 5484", "element 15600", "(5, 0.5, 0.5)"
+  std::string set{};  ///< SetMax, SetMin: the set's name
+  /// "node 5484", "element 15600", "(5, 0.5, 0.5)", "max over E_TET", "min over FIXED"
+  std::string label() const;
 };
 
 struct History {

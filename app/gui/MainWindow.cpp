@@ -707,6 +707,8 @@ void MainWindow::buildPanels() {
   sets_ = new SetsPanel(
       viewport_->scene(), [this](const std::function<void(Scene&)>& c) { return changeScene(c); }, setsDock);
   sets_->setObjectName("setsPanel");
+  connect(sets_, &SetsPanel::historyRequested, this,
+          [this](const QString& set) { probes_->plotSetHistory(set.toStdString()); });
   setsDock->setWidget(sets_);
   splitDockWidget(dock, setsDock, Qt::Vertical);
   bool tabifiedProbes = false;

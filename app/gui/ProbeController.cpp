@@ -85,14 +85,14 @@ void ProbeController::plotHistory(const std::vector<std::size_t>& rows) {
     if (row >= results.size() || !results[row].inside()) continue;
     const ProbeResult& r = results[row];
     if (r.nodeId) {
-      places.push_back({HistoryPlace::Kind::Node, *r.nodeId, {}});
+      places.push_back({HistoryPlace::Kind::Node, *r.nodeId, {}, {}});
     } else if (r.method == ProbeMethod::Isoparametric && base->model().meshBuilt()) {
       const Mesh& mesh = base->model().mesh();
       std::vector<glm::dvec3> corners;
       for (NodeIndex n : mesh.cellNodes(r.cell)) corners.push_back(mesh.nodes[n]);
-      places.push_back({HistoryPlace::Kind::Point, 0, positionAt(r.cellType, corners, r.natural)});
+      places.push_back({HistoryPlace::Kind::Point, 0, positionAt(r.cellType, corners, r.natural), {}});
     } else {
-      places.push_back({HistoryPlace::Kind::Point, 0, r.point});
+      places.push_back({HistoryPlace::Kind::Point, 0, r.point, {}});
     }
   }
   if (places.empty()) {
@@ -100,8 +100,22 @@ void ProbeController::plotHistory(const std::vector<std::size_t>& rows) {
     return;
   }
   if (places.size() > kMaxHistoryCurves) places.resize(kMaxHistoryCurves);
+  showHistory(places);
+}
+
+void ProbeController::plotSetHistory(const std::string& set) {
+  const Scene& scene = viewport_.scene();
+  if (!scene.baseSession() || !scene.view()) {
+    window_.statusBar()->showMessage("Plot Over Steps: show a result first");
+    return;
+  }
+  showHistory({{HistoryPlace::Kind::SetMax, 0, {}, set}, {HistoryPlace::Kind::SetMin, 0, {}, set}});
+}
+
+void ProbeController::showHistory(const std::vector<HistoryPlace>& places) {
+  const Scene& scene = viewport_.scene();
   try {
-    History h = sampleHistory(*base, places, {scene.view()->quantity.key()});
+    History h = sampleHistory(*scene.baseSession(), places, {scene.view()->quantity.key()});
     if (!historyDock_) {
       historyDock_ = new QDockWidget("History", &window_);
       historyDock_->setObjectName("historyDock");

@@ -5,6 +5,7 @@
 // quantity is smallest and largest.
 #pragma once
 
+#include "../core/History.hpp"
 #include "../core/ModelSession.hpp"
 
 #include <QObject>
@@ -39,12 +40,16 @@ class ProbeController : public QObject {
   QDockWidget* dock() const { return dock_; }
   ProbePanel* panel() const { return panel_; }
   HistoryPanel* historyPanel() const { return history_; }
+  /// The shown result's largest and smallest values over a set against the steps, in the
+  /// History panel (the Sets panel's Plot Over Steps).
+  void plotSetHistory(const std::string& set);
 
  private:
   void addPoint(const glm::dvec3& point);
   void setPoints(const std::vector<glm::dvec3>& points);
   void showHover(QPoint globalPosition, bool hit, const glm::dvec3& point);
   void plotHistory(const std::vector<std::size_t>& rows);
+  void showHistory(const std::vector<HistoryPlace>& places);
 
   QMainWindow& window_;
   Viewport& viewport_;

@@ -97,6 +97,15 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
   buttons->addWidget(colors_);
   buttons->addStretch();
   layout->addLayout(buttons);
+  auto* more = new QHBoxLayout;
+  history_ = new QPushButton("Plot Over &Steps", this);
+  history_->setObjectName("setsHistory");
+  history_->setToolTip(
+      "The shown result's largest and smallest values over the chosen set against the steps (a node set: "
+      "its nodes; an element set: its elements, or their nodes for a result at the nodes)");
+  more->addWidget(history_);
+  more->addStretch();
+  layout->addLayout(more);
   drawn_ = new QLabel(this);
   drawn_->setObjectName("setsDrawn");
   drawn_->setWordWrap(true);
@@ -120,6 +129,15 @@ SetsPanel::SetsPanel(const Scene& scene, ChangeScene change, QWidget* parent)
     apply(v);
   });
   connect(mark_, &QPushButton::clicked, this, [this](bool on) { markCurrent(on); });
+  connect(history_, &QPushButton::clicked, this, [this] {
+    QTreeWidgetItem* item = tree_->currentItem();
+    const QVariant name = item ? item->data(0, kNameRole) : QVariant();
+    if (!name.isValid()) {
+      drawn_->setText("Choose a set to plot its extremes over the steps");
+      return;
+    }
+    emit historyRequested(name.toString());
+  });
   connect(numbers_, &QCheckBox::toggled, this, [this](bool on) {
     if (following_) return;
     SetVisibility v = scene_.setVisibility();
@@ -211,6 +229,8 @@ void SetsPanel::followScene() {
   numbers_->setEnabled(!v.marked.empty());
   numbers_->setChecked(v.numbers);
   colors_->setEnabled(hasElementSets);
+  history_->setEnabled(listed_ && scene_.view().has_value() && tree_->topLevelItemCount() > 0 &&
+                       tree_->topLevelItem(0)->childCount() > 0);
   colors_->setChecked(v.colors);
   showSetColors(v.colors);
   if (!base || !session) drawn_->clear();

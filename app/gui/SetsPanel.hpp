@@ -40,6 +40,11 @@ class SetsPanel : public QWidget {
   /// The list follows the scene's model, the boxes its choice, the count what is drawn.
   void followScene();
 
+ signals:
+  /// Plot Over Steps: the shown result's extremes over this set against the steps.
+  void historyRequested(const QString& set);
+
+ public:
  private:
   void listSets();
   void addSet(QTreeWidgetItem* (&groups)[2], const EntitySet& s);
@@ -58,6 +63,7 @@ class SetsPanel : public QWidget {
   QPushButton* mark_ = nullptr;
   QCheckBox* numbers_ = nullptr;
   QCheckBox* colors_ = nullptr;
+  QPushButton* history_ = nullptr;
   QLabel* drawn_ = nullptr;
   const ModelSession* listed_ = nullptr;  // whose sets the tree lists
   std::string listedPath_;

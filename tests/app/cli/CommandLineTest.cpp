@@ -1222,6 +1222,16 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   ASSERT_EQ(plotHex.exitCode, 0) << plotHex.output;
   EXPECT_EQ(plotHex.output.find(",102,2"), std::string::npos) << plotHex.output;
   EXPECT_NE(plotHex.output.find(",101,1\n"), std::string::npos) << plotHex.output;
+  const auto extremes = runVolpost("plot " + deck +
+                                   " --history --max-of E_TET --min-of e_tet --field 'element set' "
+                                   "--csv -");
+  ASSERT_EQ(extremes.exitCode, 0) << extremes.output;
+  EXPECT_NE(extremes.output.find("element set at max over E_TET,element set at min over e_tet\n"), std::string::npos)
+      << extremes.output;
+  EXPECT_NE(extremes.output.find(",3,3\n"), std::string::npos) << extremes.output;
+  const auto extremesBad = runVolpost("plot " + deck + " --history --max-of NOPE --csv -");
+  EXPECT_EQ(extremesBad.exitCode, 2) << extremesBad.output;
+  EXPECT_NE(extremesBad.output.find("no set is named 'NOPE'"), std::string::npos) << extremesBad.output;
   const auto plotBad = runVolpost(line + "--show-set NOPE");
   EXPECT_EQ(plotBad.exitCode, 2);
   EXPECT_NE(plotBad.output.find("no set is named 'NOPE'"), std::string::npos) << plotBad.output;

@@ -68,6 +68,39 @@ TEST(History, ValuesAtANodeAnElementAndAPointAtEveryStep) {
   EXPECT_NE(table.find("\n3,step 3,2,6,30,"), std::string::npos) << table;
 }
 
+TEST(History, TheExtremesOverASetAtEveryStep) {
+  auto session = tetWithSteps({0.5, 1.0, 2.0});
+  // A node set of nodes 11 and 13 and an element set of the tet (indices, as readers keep them).
+  auto model = std::make_shared<Model>(session->model());
+  model->sets.push_back({"CORNERS", SetKind::Nodes, "NSET", {0, 2}});
+  model->sets.push_back({"SOLID", SetKind::Cells, "ELSET", {0}});
+  session = ModelSession::fromModel(model);
+  const History h = sampleHistory(*session,
+                                  {{HistoryPlace::Kind::SetMax, 0, {}, "corners"},
+                                   {HistoryPlace::Kind::SetMin, 0, {}, "CORNERS"},
+                                   {HistoryPlace::Kind::SetMax, 0, {}, "SOLID"}},
+                                  {"T"});
+  ASSERT_EQ(h.curves.size(), 3u);
+  EXPECT_EQ(h.curves[0].name, "T at max over corners");
+  EXPECT_EQ(h.curves[0].values, (std::vector<double>{3, 6, 9})) << "node 13's T = 3 x step";
+  EXPECT_EQ(h.curves[1].values, (std::vector<double>{1, 2, 3})) << "node 11's";
+  EXPECT_EQ(h.curves[2].values, (std::vector<double>{4, 8, 12})) << "an element set: its elements' nodes";
+  const History e = sampleHistory(*session, {{HistoryPlace::Kind::SetMin, 0, {}, "SOLID"}}, {"E"});
+  EXPECT_EQ(e.curves[0].values, (std::vector<double>{10, 20, 30})) << "per element: the elements' own values";
+  try {
+    (void)sampleHistory(*session, {{HistoryPlace::Kind::SetMax, 0, {}, "CORNERS"}}, {"E"});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& x) {
+    EXPECT_NE(std::string(x.what()).find("needs an element set"), std::string::npos) << x.what();
+  }
+  try {
+    (void)sampleHistory(*session, {{HistoryPlace::Kind::SetMax, 0, {}, "NOPE"}}, {"T"});
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& x) {
+    EXPECT_NE(std::string(x.what()).find("its sets: CORNERS, SOLID"), std::string::npos) << x.what();
+  }
+}
+
 TEST(History, StepNumbersWithoutIncreasingTimesAndGapsWhereAFieldHasNoStep) {
   const auto session = tetWithSteps({0.0, 0.0, 0.0});
   const History h = sampleHistory(*session, {{HistoryPlace::Kind::Node, 14, {}}}, {"mode", "T"});

@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QStatusBar>
 #include <QTest>
 #include <QTreeWidget>
@@ -154,6 +155,19 @@ class SetsPanelTest : public QObject {
     panel_->followScene();
     QVERIFY(!colors->isChecked());  // the box shows the scene's choice
     QVERIFY(item("E_WEDGE")->icon(0).isNull());
+  }
+
+  void plotOverStepsAsksForTheChosenSetsExtremes() {
+    QPushButton* history = panel_->findChild<QPushButton*>("setsHistory");
+    QVERIFY(!history->isEnabled());  // no result shown: nothing to plot
+    scene_->setResult("element set", 0);
+    panel_->followScene();
+    QVERIFY(history->isEnabled());
+    QSignalSpy asked(panel_, &SetsPanel::historyRequested);
+    tree()->setCurrentItem(item("E_TET"));
+    history->click();
+    QCOMPARE(asked.count(), 1);
+    QCOMPARE(asked.first().first().toString(), QString("E_TET"));
   }
 
   void theSelectionIsListedAsSets() {
