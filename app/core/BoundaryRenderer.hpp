@@ -81,6 +81,8 @@ class BoundaryRenderer {
   /// The surface's nodes as points (device pixels) instead of its faces.
   void setShowPoints(bool show, float pixels) { surface_.setShowPoints(show, pixels); }
   void setFadeDenseEdges(bool on) { surface_.setFadeDenseEdges(on); }
+  /// The surface's element edges in the result's colors (a wireframe).
+  void setColorEdgesByValue(bool on) { surface_.setColorEdgesByValue(on); }
   void setLighting(bool on) {
     surface_.setLighting(on);
     sections_.setLighting(on);

@@ -326,6 +326,7 @@ void SceneDrawing::renderSurface(const Scene& scene, const RenderContext& ctx) {
   boundary_.setShowFaces(r == SurfaceRepresentation::Surface);
   boundary_.setShowPoints(r == SurfaceRepresentation::Points, float(s.pointSize * scene.devicePixelRatio()));
   boundary_.setFadeDenseEdges(r != SurfaceRepresentation::Wireframe);
+  boundary_.setColorEdgesByValue(r == SurfaceRepresentation::Wireframe);
   boundary_.setLighting(s.lighting);
   boundary_.setOpacity(float(s.surfaceOpacity));
   // Hidden, the sections, slices and iso-surfaces still show.
@@ -422,7 +423,8 @@ void SceneDrawing::renderVolume(const Scene& scene, const RenderContext& ctx) {
     boundary_.setShowFaces(false);
     boundary_.setShowPoints(false, 1.0f);
     boundary_.setFadeDenseEdges(true);
-    boundary_.setSurfaceShown(true);  // its edges, that is
+    boundary_.setColorEdgesByValue(false);  // over a volume: the volume's colors are its own
+    boundary_.setSurfaceShown(true);        // its edges, that is
     boundary_.setShowEdges(v.edges);
     boundary_.setOpacity(1.0f);
     for (const GLuint target : {depthTarget_->framebuffer(), ctx.framebuffer}) {

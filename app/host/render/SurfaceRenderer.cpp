@@ -31,6 +31,7 @@ static_assert(sizeof(SurfaceVertex) == 32);
 // (A sentinel rather than NaN: interpolation and comparisons of NaN are not portable.)
 constexpr float kNoValue = 3.0e38f;
 constexpr int kColorMapTexels = 256;
+constexpr std::uint32_t kNoId = 0xffffffffu;  ///< an edge end with no surface vertex or face to take a value of
 
 }  // namespace
 
@@ -42,6 +43,7 @@ void SurfaceRenderer::initialize() {
   edgeVao_ = gl::createVertexArray();
   surfaceVbo_ = gl::createBuffer();
   edgeVbo_ = gl::createBuffer();
+  edgeIds_ = gl::createBuffer();
   scalars_ = gl::createBuffer();
   colorMap_ = gl::createTexture(GL_TEXTURE_1D);
   glTextureStorage1D(colorMap_.id(), 1, GL_RGBA8, kColorMapTexels);
@@ -67,6 +69,13 @@ void SurfaceRenderer::initialize() {
     glVertexArrayAttribFormat(edgeVao_.id(), a, a < 2 ? 3 : 1, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
     glVertexArrayAttribBinding(edgeVao_.id(), a, 0);
   }
+  // And, from a buffer of their own, the surface vertex and face it takes values from.
+  for (GLuint a = 3; a < 5; ++a) {
+    glEnableVertexArrayAttrib(edgeVao_.id(), a);
+    glVertexArrayAttribIFormat(edgeVao_.id(), a, 1, GL_UNSIGNED_INT, (a - 3) * sizeof(std::uint32_t));
+    glVertexArrayAttribBinding(edgeVao_.id(), a, 1);
+  }
+  uploadEdgeIds({});
   // An empty buffer still needs storage to be bound as an SSBO.
   const float none = kNoValue;
   glNamedBufferData(scalars_.id(), sizeof none, &none, GL_DYNAMIC_DRAW);
@@ -80,6 +89,7 @@ void SurfaceRenderer::release() {
   edgeVao_.reset();
   surfaceVbo_.reset();
   edgeVbo_.reset();
+  edgeIds_.reset();
   scalars_.reset();
   colorMap_.reset();
   triangleVertices_ = edgeVertices_ = 0;
@@ -113,12 +123,16 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
   // Edge endpoints come from the mesh nodes through the vertex property.
   std::vector<glm::vec3> positionOfNode;
   std::vector<float> edgeData;
+  std::vector<std::uint32_t> edgeIds;  // per edge vertex: its surface vertex, a face on the edge
   edgeData.reserve(surface.edges.size() * 6);
   std::unordered_map<NodeIndex, glm::vec3> nodePos;
+  std::unordered_map<NodeIndex, SurfaceMesh::VertexHandle> vertexOf;
   nodePos.reserve(m.n_vertices());
+  vertexOf.reserve(m.n_vertices());
   for (const auto v : m.vertices()) {
     const auto p = m.point(v);
     nodePos[m.property(surface.nodeOfVertex, v)] = glm::vec3(p[0], p[1], p[2]);
+    vertexOf[m.property(surface.nodeOfVertex, v)] = v;
   }
   // How far apart the edges are near each node: its shortest edge. A long edge between
   // nodes whose other edges are short (the 25 m lines on a 4 ms time side) crowds its
@@ -142,10 +156,20 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
     edgeData.insert(edgeData.end(), {a->second.x, a->second.y, a->second.z, b->second.x, b->second.y, b->second.z});
     const float length = lengthOf(e);
     spacing.push_back(length > 0.0f ? std::min(shortestAt[e[0]], shortestAt[e[1]]) / length : 1.0f);
+    // A face on the edge gives its element's value; none found (an edge the triangles do
+    // not follow): no value per element.
+    const auto va = vertexOf.at(e[0]), vb = vertexOf.at(e[1]);
+    auto h = m.find_halfedge(va, vb);
+    if (h.is_valid() && !m.face_handle(h).is_valid()) h = m.opposite_halfedge_handle(h);
+    const std::uint32_t face =
+        h.is_valid() && m.face_handle(h).is_valid() ? std::uint32_t(m.face_handle(h).idx()) : kNoId;
+    edgeIds.insert(edgeIds.end(), {std::uint32_t(va.idx()), face, std::uint32_t(vb.idx()), face});
   }
   edgeVertices_ = GLsizei(edgeData.size() / 3);
   edgeData = withOtherEnds(edgeData, spacing);
   fadeDenseEdges_ = true;
+  edgesHaveValues_ = true;
+  uploadEdgeIds(edgeIds);
   glNamedBufferData(edgeVbo_.id(), GLsizeiptr(edgeData.size() * sizeof(float)), edgeData.data(), GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 7 * sizeof(float));
   gl::check("SurfaceRenderer::setSurface");
@@ -169,6 +193,7 @@ void SurfaceRenderer::setTriangles(const std::vector<glm::dvec3>& corners, const
                     vertices.empty() ? nullptr : vertices.data(), GL_DYNAMIC_DRAW);
   glVertexArrayVertexBuffer(surfaceVao_.id(), 0, surfaceVbo_.id(), 0, sizeof(SurfaceVertex));
   edgeVertices_ = 0;
+  edgesHaveValues_ = false;
   gl::check("SurfaceRenderer::setTriangles");
 }
 
@@ -185,6 +210,8 @@ void SurfaceRenderer::setLines(const std::vector<glm::dvec3>& endpoints, const g
   edgeVertices_ = GLsizei(endpoints.size() / 2 * 2);
   edgeData = withOtherEnds(edgeData, {});
   fadeDenseEdges_ = false;  // an outline: always drawn
+  edgesHaveValues_ = false;  // and in its own color
+  uploadEdgeIds(std::vector<std::uint32_t>(std::size_t(edgeVertices_) * 2, kNoId));
   glNamedBufferData(edgeVbo_.id(), GLsizeiptr(std::max<std::size_t>(edgeData.size(), 7) * sizeof(float)),
                     edgeData.empty() ? nullptr : edgeData.data(), GL_STATIC_DRAW);
   glVertexArrayVertexBuffer(edgeVao_.id(), 0, edgeVbo_.id(), 0, 7 * sizeof(float));
@@ -211,6 +238,13 @@ void SurfaceRenderer::setScalars(FieldLocation location, SampleView values, doub
 }
 
 void SurfaceRenderer::clearScalars() { location_ = -1; }
+
+void SurfaceRenderer::uploadEdgeIds(const std::vector<std::uint32_t>& ids) {
+  const std::uint32_t none[2] = {kNoId, kNoId};  // a buffer still needs storage to be bound
+  glNamedBufferData(edgeIds_.id(), GLsizeiptr(std::max<std::size_t>(ids.size(), 2) * sizeof(std::uint32_t)),
+                    ids.empty() ? none : ids.data(), GL_STATIC_DRAW);
+  glVertexArrayVertexBuffer(edgeVao_.id(), 1, edgeIds_.id(), 0, 2 * sizeof(std::uint32_t));
+}
 
 void SurfaceRenderer::setColorMap(const ColorMap& map) {
   const auto texels = map.rgba8(kColorMapTexels);
@@ -293,6 +327,19 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "modelView"), 1, GL_FALSE, glm::value_ptr(view));
     glProgramUniformMatrix4fv(e, glGetUniformLocation(e, "projection"), 1, GL_FALSE, glm::value_ptr(proj));
     glProgramUniform3fv(e, glGetUniformLocation(e, "color"), 1, glm::value_ptr(edgeColor));
+    // A wireframe in the result's colors: the surface's scalars and map, bound above.
+    const int edgeValues = colorEdges_ && edgesHaveValues_ ? location_ : -1;
+    glProgramUniform1i(e, glGetUniformLocation(e, "scalarLocation"), edgeValues);
+    glProgramUniform1i(e, glGetUniformLocation(e, "colorMap"), 0);
+    glProgramUniform1f(e, glGetUniformLocation(e, "valueMin"), min_);
+    glProgramUniform1f(e, glGetUniformLocation(e, "valueMax"), max_);
+    glProgramUniform3fv(e, glGetUniformLocation(e, "noValueColor"), 1, glm::value_ptr(noValueColor));
+    glProgramUniform1i(e, glGetUniformLocation(e, "colorBands"), colorBands_);
+    glProgramUniform1i(e, glGetUniformLocation(e, "logScale"), logScale_ && min_ > 0.0f ? 1 : 0);
+    glProgramUniform1i(e, glGetUniformLocation(e, "useBelowColor"), belowColor_ ? 1 : 0);
+    glProgramUniform1i(e, glGetUniformLocation(e, "useAboveColor"), aboveColor_ ? 1 : 0);
+    glProgramUniform3fv(e, glGetUniformLocation(e, "belowColor"), 1, glm::value_ptr(below));
+    glProgramUniform3fv(e, glGetUniformLocation(e, "aboveColor"), 1, glm::value_ptr(above));
     setClipUniforms(e, clipPlanes_, origin_, clipTolerance_);
     glBindVertexArray(edgeVao_.id());
     glDrawArrays(GL_LINES, 0, edgeVertices_);

@@ -73,6 +73,10 @@ class SurfaceRenderer : public Renderer {
   }
   /// Off: dense element edges are drawn in full (a wireframe, with no faces to crowd).
   void setFadeDenseEdges(bool on) { allowFading_ = on; }
+  /// On: the surface's element edges are drawn in the result's colors (a wireframe colored
+  /// as ParaView colors one: by the value at each end for a result per node, by a face's
+  /// element for one per element); off, or without a result: in edgeColor.
+  void setColorEdgesByValue(bool on) { colorEdges_ = on; }
   bool showEdges() const { return showEdges_; }
   /// Shading off draws exact color-map colors (used by the image tests).
   void setLighting(bool on) { lighting_ = on; }
@@ -87,7 +91,7 @@ class SurfaceRenderer : public Renderer {
  private:
   gl::Program surfaceProgram_, edgeProgram_;
   gl::VertexArray surfaceVao_, edgeVao_;
-  gl::Buffer surfaceVbo_, edgeVbo_, scalars_;
+  gl::Buffer surfaceVbo_, edgeVbo_, edgeIds_, scalars_;
   gl::Texture colorMap_;
   int colorBands_ = 0;
   bool logScale_ = false;
@@ -100,6 +104,10 @@ class SurfaceRenderer : public Renderer {
   float opacity_ = 1.0f;
   static std::vector<float> withOtherEnds(const std::vector<float>& segments, const std::vector<float>& spacing);
   bool fadeDenseEdges_ = true;  ///< element edges fade where they crowd; outlines do not
+  bool colorEdges_ = false;
+  bool edgesHaveValues_ = false;  ///< the edges are the surface's (setSurface), not an outline's
+  /// Each edge vertex's surface vertex and a face holding the edge (binding 1 of the edges).
+  void uploadEdgeIds(const std::vector<std::uint32_t>& ids);
   glm::dvec3 origin_{0.0};  ///< what the uploaded positions are relative to
   /// The model's node of each surface vertex and cell of each face, in the order of their
   /// scalars on the GPU (setSurface); empty after setTriangles, whose scalars are one per
