@@ -222,6 +222,10 @@ struct Options {
   QCommandLineOption allSteps{"all-steps", "One picture per step of the result: OUT_001.png, OUT_002.png, ... "
                                            "or one video when OUT is .mp4, .mkv, .webm or .avi (colors span every "
                                            "step unless --range is given)."};
+  QCommandLineOption framesBetween{"frames-between",
+                                   "With --all-steps: N frames between each step and the next, the values and "
+                                   "the deformed shape interpolated linearly (a smoother video).",
+                                   "N"};
   QCommandLineOption readerOption = readerOptionOption();
   QCommandLineOption formula = formulaOption();
   QCommandLineOption slice{"slice",
@@ -246,22 +250,28 @@ struct Options {
 // --all-steps: the scene at each step of its result, one numbered picture each or one
 // video, the colors over every step unless a range was given. Each path is printed when it
 // is written (a video's once, at the end).
-int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bool rangeGiven,
+int renderEveryStep(Scene& scene, const QString& out, double framesPerSecond, bool rangeGiven, std::size_t between,
                     const std::function<SceneImage()>& draw) {
   if (!scene.view()) throw UsageError("--all-steps needs --field (the result whose steps to show)");
   const std::string quantity = scene.state().quantity;
   const std::size_t count = scene.session()->fieldOf(scene.view()->quantity).stepCount();
   if (!rangeGiven && !scene.state().fixedRange) scene.setRangeOverSteps(true);
-  AnimationOutput output(out, count, framesPerSecond);
+  const std::size_t frames = count + (count - 1) * between;  // each step, and `between` after all but the last
+  AnimationOutput output(out, frames, framesPerSecond);
   const auto printPath = [](const QString& path) {
     std::printf("%s\n", qPrintable(QFileInfo(path).absoluteFilePath()));
     std::fflush(stdout);
   };
+  std::size_t frame = 0;
   for (std::size_t step = 0; step < count; ++step) {
-    std::fprintf(stderr, "volpost: step %zu of %zu\n", step + 1, count);
     scene.setResult(quantity, step);
-    const QString path = output.add(draw().picture);
-    if (!output.isVideo()) printPath(path);
+    for (std::size_t k = 0; k <= (step + 1 < count ? between : 0); ++k) {
+      scene.setStepBlend(double(k) / double(between + 1));
+      if (between == 0) std::fprintf(stderr, "volpost: step %zu of %zu\n", step + 1, count);
+      else std::fprintf(stderr, "volpost: frame %zu of %zu (step %zu)\n", ++frame, frames, step + 1);
+      const QString path = output.add(draw().picture);
+      if (!output.isVideo()) printPath(path);
+    }
   }
   const QString video = output.finish();
   if (output.isVideo()) printPath(video);
@@ -908,89 +918,27 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions({o.field,
-                     o.step,
-                     o.camera,
-                     o.view,
-                     o.eye,
-                     o.target,
-                     o.up,
-                     o.viewAngle,
-                     o.size,
-                     o.colormap,
-                     o.range,
-                     o.bands,
-                     o.symmetric,
-                     o.ownRange,
-                     o.noEdges,
-                     o.noLegend,
-                     o.noTriad,
-                     o.deform,
-                     o.undeformed,
-                     o.flat,
-                     o.output,
-                     o.renderer,
-                     o.mode,
-                     o.tf,
-                     o.tf2d,
-                     o.clip,
-                     o.clipBox,
-                     o.iso,
-                     o.volumeEdges,
-                     o.samplingStep,
-                     o.termination,
-                     o.shading,
-                     o.floatOut,
-                     o.threads,
-                     o.state,
-                     o.saveState,
-                     o.streamlines,
-                     o.lineWidth,
-                     o.tubes,
-                     o.tubeRadius,
-                     o.radiusByValue,
-                     o.arrows,
-                     o.noSurface,
-                     o.surfaceOpacity,
-                     o.probe,
-                     o.markExtremes,
-                     o.allSteps,
-                     o.fps,
-                     o.readerOption,
-                     o.slice,
-                     o.representation,
-                     o.pointSize,
-                     o.volumeOutline,
-                     o.background,
-                     o.textScale,
-                     o.transparent,
-                     o.formula,
-                     o.units,
-                     o.legendTitle,
-                     o.legendNumbers,
-                     o.legendLabels,
-                     o.belowColor,
-                     o.aboveColor,
-                     o.title,
-                     o.glyphs,
-                     o.glyphColor,
-                     o.glyphScale,
-                     o.glyphFixed,
-                     o.glyphEvery,
-                     o.glyphNodes,
-                     o.sweep,
-                     o.threshold,
-                     o.thresholdNodes,
-                     o.showSet,
-                     o.markSet,
-                     o.measure,
-                     o.setNumbers,
-                     o.colorBySet,
-                     o.selectElements,
-                     o.selectNodes,
-                     o.hideSet,
-                     o.logScale,
-                     o.stepText});
+  parser.addOptions({o.field,         o.step,           o.camera,      o.view,
+                     o.eye,           o.target,         o.up,          o.viewAngle,
+                     o.size,          o.colormap,       o.range,       o.bands,
+                     o.symmetric,     o.ownRange,       o.noEdges,     o.noLegend,
+                     o.noTriad,       o.deform,         o.undeformed,  o.flat,
+                     o.output,        o.renderer,       o.mode,        o.tf,
+                     o.tf2d,          o.clip,           o.clipBox,     o.iso,
+                     o.volumeEdges,   o.samplingStep,   o.termination, o.shading,
+                     o.floatOut,      o.threads,        o.state,       o.saveState,
+                     o.streamlines,   o.lineWidth,      o.tubes,       o.tubeRadius,
+                     o.radiusByValue, o.arrows,         o.noSurface,   o.surfaceOpacity,
+                     o.probe,         o.markExtremes,   o.allSteps,    o.framesBetween,
+                     o.fps,           o.readerOption,   o.slice,       o.representation,
+                     o.pointSize,     o.volumeOutline,  o.background,  o.textScale,
+                     o.transparent,   o.formula,        o.units,       o.legendTitle,
+                     o.legendNumbers, o.legendLabels,   o.belowColor,  o.aboveColor,
+                     o.title,         o.glyphs,         o.glyphColor,  o.glyphScale,
+                     o.glyphFixed,    o.glyphEvery,     o.glyphNodes,  o.sweep,
+                     o.threshold,     o.thresholdNodes, o.showSet,     o.markSet,
+                     o.measure,       o.setNumbers,     o.colorBySet,  o.selectElements,
+                     o.selectNodes,   o.hideSet,        o.logScale,    o.stepText});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -1047,6 +995,17 @@ int runRender(const QStringList& args) {
       for (const auto* option : {&o.step, &o.floatOut, &o.saveState})
         if (parser.isSet(*option))
           throw UsageError(QString("--%1 is for one picture; --all-steps writes one per step").arg(option->names().first()).toStdString());
+    std::size_t framesBetween = 0;
+    if (parser.isSet(o.framesBetween)) {
+      if (!parser.isSet(o.allSteps))
+        throw UsageError("--frames-between goes between the steps of an animation: add --all-steps");
+      bool ok = false;
+      const int n = parser.value(o.framesBetween).toInt(&ok);
+      if (!ok || n < 0 || n > 100)
+        throw UsageError(
+            QString("--frames-between %1 is not a count of 0 to 100").arg(parser.value(o.framesBetween)).toStdString());
+      framesBetween = std::size_t(n);
+    }
     if (parser.isSet(o.sweep))
       for (const auto* option : {&o.floatOut, &o.saveState})
         if (parser.isSet(*option))
@@ -1129,7 +1088,8 @@ int runRender(const QStringList& args) {
       const auto draw = [&] {
         return transparent ? renderTransparent(scene, [&] { return drawOnce(false); }) : drawOnce(true);
       };
-      if (parser.isSet(o.allSteps)) return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), draw);
+      if (parser.isSet(o.allSteps))
+        return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), framesBetween, draw);
       if (sweepFrames > 0) return renderDeformationSweep(scene, out, framesPerSecond, std::size_t(sweepFrames), draw);
       const SceneImage image = draw();
       if (const auto lines = scene.streamlineResult()) {

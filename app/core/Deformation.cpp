@@ -43,10 +43,18 @@ double automaticDeformationScale(const ModelSession& base, const std::string& na
 }
 
 std::shared_ptr<ModelSession> deformedSession(const ModelSession& base, const std::string& name, std::size_t step,
-                                              double scale) {
+                                              double scale, double blend) {
   const Field& f = displacementField(base, name);
   if (!std::isfinite(scale)) throw std::invalid_argument("the deformation scale must be a finite number");
-  const std::vector<double>& u = f.values(clampedStep(f, step));
+  const std::size_t at = clampedStep(f, step);
+  std::vector<double> between;
+  if (blend > 0.0 && at + 1 < f.stepCount()) {  // an in-between frame: that far toward the next step
+    const std::vector<double>& a = f.values(at);
+    const std::vector<double>& b = f.values(at + 1);
+    between.resize(std::min(a.size(), b.size()));
+    for (std::size_t i = 0; i < between.size(); ++i) between[i] = (1.0 - blend) * a[i] + blend * b[i];
+  }
+  const std::vector<double>& u = between.empty() ? f.values(at) : between;
   auto model = std::make_shared<Model>(base.model());  // the mesh is copied; fields are shared
   std::vector<glm::dvec3>& nodes = model->mesh().nodes;  // a grid's hexahedra are built here
   model->grid.reset();  // moved points are no regular grid: grid renderers must not draw it as one

@@ -20,8 +20,9 @@ double automaticDeformationScale(const ModelSession& base, const std::string& fi
 void checkDeformationField(const ModelSession& base, const std::string& field);
 
 /// The base model with node n moved by scale * field(step)[n] (the step clamped to the
-/// field's steps); fields are shared with the base, not copied.
+/// field's steps); fields are shared with the base, not copied. `blend` (0..1) takes the
+/// displacement that far toward the next step's (an animation's in-between frame).
 std::shared_ptr<ModelSession> deformedSession(const ModelSession& base, const std::string& field, std::size_t step,
-                                              double scale);
+                                              double scale, double blend = 0.0);
 
 }  // namespace volpost::app

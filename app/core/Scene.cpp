@@ -75,7 +75,8 @@ void Scene::setSession(std::shared_ptr<const ModelSession> session) {
   state_.streamlines = StreamlineLayer{};
   state_.glyphs = GlyphLayer{};  // the last model's field
   state_.threshold = ThresholdLayer{};
-  state_.sets = SetVisibility{};   // the last model's set names
+  state_.sets = SetVisibility{};  // the last model's set names
+  stepBlend_ = 0.0;
   state_.selection = Selection{};  // and its ids
   glyphs_.reset();
   streamlineResult_.reset();
@@ -100,7 +101,7 @@ void Scene::rebuildDeformation() {
   std::shared_ptr<const ModelSession> next = baseSession_;
   if (d.shown) {
     deformationScale_ = d.scale ? *d.scale : automaticDeformationScale(*baseSession_, d.field, state_.step);
-    next = deformedSession(*baseSession_, d.field, state_.step, deformationScale_);
+    next = deformedSession(*baseSession_, d.field, state_.step, deformationScale_, stepBlend_);
   } else {
     deformationScale_ = 0.0;
   }
@@ -110,7 +111,7 @@ void Scene::rebuildDeformation() {
   if (next == session_) return;
   session_ = std::move(next);
   // Per-element values are the kept cells' now: the shown values are taken again.
-  if (view_) view_ = session_->evaluate(view_->quantity, state_.step);
+  if (view_) view_ = evaluateShown(*session_, view_->quantity, state_.step);
   deformedStep_ = state_.step;
   ++viewVersion_;
   streamlineResult_.reset();
@@ -124,15 +125,49 @@ void Scene::fitCamera() {
 
 // ---- what is shown ----
 
+ScalarView Scene::evaluateShown(const ModelSession& session, const Quantity& q, std::size_t step) const {
+  ScalarView a = session.evaluate(q, step);
+  if (!(stepBlend_ > 0.0) || step + 1 >= session.fieldOf(q).stepCount()) return a;
+  const ScalarView b = session.evaluate(q, step + 1);
+  std::vector<double> values(std::min(a.values.size(), b.values.size()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = (1.0 - stepBlend_) * a.values[i] + stepBlend_ * b.values[i];
+  ScalarView out = a;
+  out.setValues(std::move(values));
+  out.range = rangeOf(out.values);
+  out.stepLabel =
+      a.stepLabel + " to " + b.stepLabel + " (" + std::to_string(int(std::lround(100.0 * stepBlend_))) + " %)";
+  return out;
+}
+
+void Scene::setStepBlend(double t) {
+  if (!(t >= 0.0 && t < 1.0)) throw std::invalid_argument("an in-between frame lies from 0 to below 1 of the way");
+  if (t == stepBlend_) return;
+  stepBlend_ = t;
+  if (state_.deformation.shown) {
+    deformedStep_ = ~std::size_t(0);  // the shape moves with the blend
+    rebuildDeformation();
+    return;
+  }
+  if (view_ && session_) view_ = evaluateShown(*session_, view_->quantity, state_.step);
+  ++viewVersion_;
+  ++revisions_.scalars;
+  ++revisions_.values;
+  if (!state_.volume.transferFunction) ++revisions_.tables;
+}
+
 void Scene::setResult(const std::string& quantity, std::size_t step) {
   ++viewVersion_;
   if (quantity.empty() || !session_) {
+    stepBlend_ = 0.0;
     view_.reset();
     state_.quantity.clear();
     state_.step = 0;
     state_.volume.shown = false;
   } else {
     ScalarView view = session_->evaluate(session_->findQuantity(quantity), step);  // throws, changing nothing
+    if (stepBlend_ > 0.0) deformedStep_ = ~std::size_t(0);  // a shape moved between steps is moved back
+    stepBlend_ = 0.0;
     if (!view_ || view_->location != view.location) ++revisions_.geometry;
     view_ = std::move(view);
     state_.quantity = quantity;

@@ -124,6 +124,12 @@ class Scene {
   // ---- what is shown (a drawing applies it) ----
   /// Throws std::invalid_argument (no such quantity or step) and changes nothing then.
   void setResult(const std::string& quantity, std::size_t step);
+  /// An animation's in-between frame: the shown values and the deformed shape taken `t` of
+  /// the way from the shown step to the next, linearly (0: the step itself; the last step
+  /// has no next and stays). Not kept in the state; setResult and another model set it
+  /// back to 0. Throws std::invalid_argument outside [0, 1).
+  void setStepBlend(double t);
+  double stepBlend() const { return stepBlend_; }
   void setColorMap(const std::string& name);
   /// A fixed color range (nullopt: the values' own). Setting one turns the range over
   /// steps off.
@@ -416,6 +422,9 @@ class Scene {
   double devicePixelRatio_ = 1.0;
   std::optional<ScalarView> view_;
   std::uint64_t viewVersion_ = 0;  ///< counts changes of view_ (what extremes_ was found for)
+  double stepBlend_ = 0.0;         ///< setStepBlend
+  /// The quantity at the shown step on `session`, or between it and the next (stepBlend_).
+  ScalarView evaluateShown(const ModelSession& session, const Quantity& q, std::size_t step) const;
   mutable std::optional<Extremes> extremes_;
   mutable std::optional<double> smallestPositive_;  ///< of view_, for a log scale
   mutable std::uint64_t smallestPositiveVersion_ = ~std::uint64_t(0);

@@ -111,8 +111,18 @@ StepController::StepController(QMainWindow& window, Viewport& viewport, QToolBar
       if (!ok) return;
       settings.setValue("files/animationRate", framesPerSecond);
     }
+    int between = 0;
+    if (stepBox_.count() > 1) {
+      bool ok = false;
+      between = QInputDialog::getInt(&window_, "Export animation",
+                                     "Frames between steps, the values and the shape interpolated (0: one frame "
+                                     "per step):",
+                                     settings.value("files/animationBetween", 0).toInt(), 0, 100, 1, &ok);
+      if (!ok) return;
+      settings.setValue("files/animationBetween", between);
+    }
     settings.setValue("files/lastAnimation", path);
-    exportAnimation(path, framesPerSecond);
+    exportAnimation(path, framesPerSecond, between);
   });
   refresh();
   showRangeFields();
@@ -198,7 +208,7 @@ void StepController::showRangeFields() {
   maxEdit_->setText(QString::number(r.max, 'g', 10));
 }
 
-int StepController::exportAnimation(const QString& path, double framesPerSecond) {
+int StepController::exportAnimation(const QString& path, double framesPerSecond, int between) {
   const int count = stepBox_.count();
   if (count < 1 || !viewport_.scene().view()) {
     window_.statusBar()->showMessage("Export Animation needs a result shown (choose one in the toolbar)");
@@ -207,31 +217,37 @@ int StepController::exportAnimation(const QString& path, double framesPerSecond)
   const bool wasPlaying = play_->isChecked();
   play_->setChecked(false);
   const int kept = stepBox_.currentIndex();
-  AnimationOutput output(path, std::size_t(count), framesPerSecond);
-  QProgressDialog progress(output.isVideo() ? "Writing a video, one frame per step..." : "Writing one picture per step...",
-                           "Cancel", 0, count, &window_);
+  between = std::clamp(between, 0, 100);
+  const int frames = count + (count - 1) * between;  // each step, and `between` after all but the last
+  AnimationOutput output(path, std::size_t(frames), framesPerSecond);
+  QProgressDialog progress(output.isVideo() ? "Writing a video..." : "Writing the pictures...", "Cancel", 0, frames,
+                           &window_);
   progress.setWindowModality(Qt::WindowModal);
   progress.setMinimumDuration(300);
   QString error, written;
-  for (int i = 0; i < count && !progress.wasCanceled(); ++i) {
-    progress.setValue(i);
+  for (int i = 0, frame = 0; i < count && !progress.wasCanceled() && error.isEmpty(); ++i) {
     stepBox_.setCurrentIndex(i);
-    // What is still being prepared for this step (transfer-function tables, streamlines)
-    // is waited for, so each picture is complete.
-    QElapsedTimer waited;
-    waited.start();
-    while ((viewport_.drawing().hasPendingWork() || viewport_.scene().streamlinesNeedTracing()) &&
-           waited.elapsed() < 60000 && !progress.wasCanceled()) {
-      QApplication::processEvents(QEventLoop::AllEvents, 50);
-      QThread::msleep(10);
-    }
-    try {
-      output.add(viewport_.grabFramebuffer());
-    } catch (const std::exception& e) {
-      error = e.what();
-      break;
+    for (int k = 0; k <= (i + 1 < count ? between : 0) && !progress.wasCanceled(); ++k, ++frame) {
+      progress.setValue(frame);
+      viewport_.scene().setStepBlend(double(k) / double(between + 1));  // an in-between frame
+      // What is still being prepared for this frame (transfer-function tables, streamlines)
+      // is waited for, so each picture is complete.
+      QElapsedTimer waited;
+      waited.start();
+      while ((viewport_.drawing().hasPendingWork() || viewport_.scene().streamlinesNeedTracing()) &&
+             waited.elapsed() < 60000 && !progress.wasCanceled()) {
+        QApplication::processEvents(QEventLoop::AllEvents, 50);
+        QThread::msleep(10);
+      }
+      try {
+        output.add(viewport_.grabFramebuffer());
+      } catch (const std::exception& e) {
+        error = e.what();
+        break;
+      }
     }
   }
+  viewport_.scene().setStepBlend(0.0);
   const bool cancelled = progress.wasCanceled();
   // A cancelled video is not written at all (half a video is of no use); the pictures
   // written before a cancel stay.
@@ -240,7 +256,7 @@ int StepController::exportAnimation(const QString& path, double framesPerSecond)
     } catch (const std::exception& e) {
       error = e.what();
     }
-  progress.setValue(count);
+  progress.setValue(frames);
   stepBox_.setCurrentIndex(kept);
   if (wasPlaying) play_->setChecked(true);
   if (!error.isEmpty()) {
@@ -249,14 +265,16 @@ int StepController::exportAnimation(const QString& path, double framesPerSecond)
   }
   if (output.isVideo()) {
     window_.statusBar()->showMessage(written.isEmpty() ? QString("Cancelled: no video written")
-                                                       : QString("Wrote a video of %1 steps at %2 per second: %3")
+                                                       : QString("Wrote a video of %1 frames at %2 per second: %3")
                                                              .arg(output.added())
                                                              .arg(framesPerSecond)
                                                              .arg(written));
     return written.isEmpty() ? 0 : int(output.added());
   }
-  window_.statusBar()->showMessage(
-      QString("Wrote %1 of %2 pictures: %3 ...").arg(output.added()).arg(count).arg(framePath(path, 0, std::size_t(count))));
+  window_.statusBar()->showMessage(QString("Wrote %1 of %2 pictures: %3 ...")
+                                       .arg(output.added())
+                                       .arg(frames)
+                                       .arg(framePath(path, 0, std::size_t(frames))));
   return int(output.added());
 }
 

@@ -39,10 +39,12 @@ class StepController : public QObject {
   /// The range controls follow the scene (after a state file is opened).
   void syncToScene();
   /// Writes the view at every step as numbered pictures next to `path` (path_001.png ...),
-  /// or as one video when `path` is one (.mp4 ...; `framesPerSecond` steps per second),
-  /// with a cancellable progress dialog; returns how many frames were written (0 for a
-  /// video that was cancelled or failed: then no file is left).
-  int exportAnimation(const QString& path, double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond);
+  /// or as one video when `path` is one (.mp4 ...; `framesPerSecond` frames per second),
+  /// with `between` frames interpolated between each step and the next (0..100), with a
+  /// cancellable progress dialog; returns how many frames were written (0 for a video
+  /// that was cancelled or failed: then no file is left).
+  int exportAnimation(const QString& path, double framesPerSecond = AnimationOutput::kDefaultFramesPerSecond,
+                      int between = 0);
   bool playing() const;
 
  private:

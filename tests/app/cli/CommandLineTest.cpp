@@ -844,6 +844,22 @@ TEST(RenderCommand, AllStepsWritesOneNumberedPicturePerStep) {
   const std::string common = (dir / "common.png").string();
   ASSERT_EQ(runVolpost("render " + model + " --field T --step 2 --range all-steps --size 96x64 --no-legend -o " + common).exitCode, 0);
   EXPECT_EQ(QImage(QString::fromStdString(common)), second) << "--range all-steps: the same scale as the animation";
+  // Three frames between the two steps: five pictures, the in-between ones between them.
+  const std::string smooth = (dir / "s.png").string();
+  const auto between = runVolpost("render " + model +
+                                  " --field T --all-steps --frames-between 3 --size 96x64 "
+                                  "--no-legend -o " +
+                                  smooth);
+  ASSERT_EQ(between.exitCode, 0) << between.output;
+  EXPECT_NE(between.output.find("frame 5 of 5 (step 2)"), std::string::npos) << between.output;
+  EXPECT_EQ(QImage(QString::fromStdString((dir / "s_001.png").string())), first);
+  EXPECT_EQ(QImage(QString::fromStdString((dir / "s_005.png").string())), second);
+  const QImage middle(QString::fromStdString((dir / "s_003.png").string()));
+  ASSERT_FALSE(middle.isNull());
+  EXPECT_NE(middle, first);
+  EXPECT_NE(middle, second);
+  EXPECT_EQ(runVolpost("render " + model + " --field T --frames-between 3 -o " + out).exitCode, 2);
+  EXPECT_EQ(runVolpost("render " + model + " --field T --all-steps --frames-between 200 -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --field T --all-steps --step 2 -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --all-steps -o " + out).exitCode, 2);
   EXPECT_EQ(runVolpost("render " + model + " --field T --range everything -o " + out).exitCode, 2);

@@ -37,6 +37,11 @@ std::shared_ptr<ModelSession> tetWithSteps(std::vector<double> times) {
   model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, t, steps));
   model->fields.push_back(Field::fromValues("E", FieldLocation::Cell, 1, e, steps));
   model->fields.push_back(Field::fromValues("mode", FieldLocation::Node, 1, {t[0], t[0]}, {steps[0], steps[1]}));
+  std::vector<std::vector<double>> u;  // every node moved 0.1 x step along x
+  for (std::size_t s = 0; s < times.size(); ++s)
+    u.push_back(std::vector<double>(12, 0.0)),
+        u.back()[0] = u.back()[3] = u.back()[6] = u.back()[9] = 0.1 * double(s + 1);
+  model->fields.push_back(Field::fromValues("U", FieldLocation::Node, 3, u, steps));
   return ModelSession::fromModel(model);
 }
 
@@ -99,6 +104,29 @@ TEST(History, TheExtremesOverASetAtEveryStep) {
   } catch (const std::invalid_argument& x) {
     EXPECT_NE(std::string(x.what()).find("its sets: CORNERS, SOLID"), std::string::npos) << x.what();
   }
+}
+
+TEST(StepBlend, AnInBetweenFrameInterpolatesTheValuesAndTheShape) {
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(tetWithSteps({0.5, 1.0, 2.0}));
+  scene.setResult("T", 0);
+  scene.setDeformation({true, "U", 1.0, false});
+  EXPECT_DOUBLE_EQ(scene.session()->model().nodePosition(1).x, 1.1);
+  scene.setStepBlend(0.25);
+  ASSERT_TRUE(scene.view());
+  EXPECT_DOUBLE_EQ(scene.view()->values[3], 4.0 * 1.25) << "node 14's T a quarter of the way from 4 to 8";
+  EXPECT_EQ(scene.view()->stepLabel, "step 1 to step 2 (25 %)");
+  EXPECT_DOUBLE_EQ(scene.session()->model().nodePosition(1).x, 1.0 + 0.125) << "the shape moves with it";
+  scene.setResult("T", 1);  // a step of its own again
+  EXPECT_EQ(scene.stepBlend(), 0.0);
+  EXPECT_DOUBLE_EQ(scene.view()->values[3], 8.0);
+  EXPECT_DOUBLE_EQ(scene.session()->model().nodePosition(1).x, 1.2);
+  scene.setResult("T", 2);
+  scene.setStepBlend(0.5);  // the last step has no next: it stays
+  EXPECT_DOUBLE_EQ(scene.view()->values[3], 12.0);
+  EXPECT_THROW(scene.setStepBlend(1.0), std::invalid_argument);
+  EXPECT_THROW(scene.setStepBlend(-0.1), std::invalid_argument);
+  EXPECT_FALSE(scene.state().toJson().find("blend") != std::string::npos) << "not kept in the state";
 }
 
 TEST(History, StepNumbersWithoutIncreasingTimesAndGapsWhereAFieldHasNoStep) {

@@ -722,7 +722,14 @@ class MainWindowTest : public QObject {
     const QImage first(dir + "/t_001.png");
     QCOMPARE(video.frames[0].width(), first.width() + (first.width() & 1));
     QVERIFY(test::meanColorDifference(video.frames[0], first.scaled(video.frames[0].size())) < 4);
-    QVERIFY(window_->statusBar()->currentMessage().contains("Wrote a video of 2 steps"));
+    QVERIFY(window_->statusBar()->currentMessage().contains("Wrote a video of 2 frames"));
+    // Two frames between the steps: four pictures, the in-between ones between the steps'.
+    QCOMPARE(steps->exportAnimation(dir + "/b.png", 4, 2), 4);
+    QCOMPARE(QImage(dir + "/b_001.png"), QImage(dir + "/t_001.png"));
+    QCOMPARE(QImage(dir + "/b_004.png"), QImage(dir + "/t_002.png"));
+    QVERIFY(QImage(dir + "/b_002.png") != QImage(dir + "/t_001.png"));
+    QVERIFY(QImage(dir + "/b_002.png") != QImage(dir + "/b_003.png"));
+    QCOMPARE(view->scene().stepBlend(), 0.0);
     view->scene().setShowLegend(true);
     range->setCurrentIndex(0);
     window_->resize(900, 600);
