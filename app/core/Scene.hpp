@@ -270,7 +270,7 @@ class Scene {
   void setMarkExtremes(bool on) { state_.markExtremes = on; }
   bool marksExtremes() const { return state_.markExtremes; }
   bool showsTriad() const { return state_.triad; }
-  /// The window's handle on the first clip plane (outline and normal handle, PlaneWidget);
+  /// The window's handles on the free clip planes (outline and normal handle, PlaneWidget);
   /// pictures never show it.
   void setPlaneWidgetShown(bool on) { planeWidgetShown_ = on; }
   /// The window's handles as set (whether or not there is a plane, box or rake to show).

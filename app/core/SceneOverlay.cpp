@@ -200,10 +200,10 @@ struct PointInArea {
   std::optional<QPointF> operator()(const glm::dvec3& p) const;
 };
 
-// The first clip plane's widget: its outline in the model's box, lightly filled, and the
-// normal handle (shaft and knob) that the window's mouse drags.
-void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, double scale) {
-  const PlaneWidget widget = planeWidget(scene.volume().clipPlanes.front(), scene.session()->bounds());
+// A clip plane's widget: its outline in the model's box and the normal handle (shaft and
+// knob) that the window's mouse drags. Every free plane has one.
+void paintPlaneWidget(QPainter& painter, const QRect& area, const Scene& scene, const ClipPlane& plane, double scale) {
+  const PlaneWidget widget = planeWidget(plane, scene.session()->bounds());
   const PointInArea at{scene.pictureCamera(area.width(), area.height()), area};
   const QColor color(250, 170, 20);
   QPolygonF outline;
@@ -403,7 +403,8 @@ void paintSceneOverlay(QPainter& painter, const QRect& area, const Scene& scene)
   font.setPixelSize(std::max(6, int(std::lround(std::clamp(area.height() / 54, 9, 84) * scene.shown().textScale))));
   painter.setFont(font);
   const double scale = std::max(1.0, font.pixelSize() / 12.0);
-  if (scene.showsPlaneWidget()) paintPlaneWidget(painter, area, scene, scale);
+  if (scene.showsPlaneWidget())
+    for (const ClipPlane& plane : scene.volume().clipPlanes) paintPlaneWidget(painter, area, scene, plane, scale);
   if (scene.showsBoxWidget()) paintBoxWidget(painter, area, scene, scale);
   if (const auto& line = scene.plotLine()) paintPlotLine(painter, area, scene, *line, scale);
   if (scene.showsRakes()) paintRakes(painter, area, scene, scale);

@@ -54,7 +54,7 @@ ClipActions::ClipActions(QMainWindow& window, Scene& scene, QMenu& results, Chan
             "Drag the handle's knob to turn the clip plane, its shaft (or Ctrl+drag) to move it");
     });
   }
-  menu_->addAction("&Type Plane...", this, &ClipActions::typePlane)->setObjectName("typeClipPlane");
+  menu_->addAction("&Type Planes...", this, &ClipActions::typePlane)->setObjectName("typeClipPlane");
   QAction* handles = menu_->addAction("Show Plane and Box &Handles");
   handles->setObjectName("planeHandle");
   handles->setCheckable(true);
@@ -82,9 +82,16 @@ void ClipActions::invertPlane() {
     window_.statusBar()->showMessage("No clip plane to invert: choose one in View > Clip Plane first");
     return;
   }
-  planes.front().normal = -planes.front().normal;
-  changeScene_([&](Scene& s) { s.setClipPlanes(planes); });
+  // The plane last dragged (the first until one is): each plane can be turned around.
+  const std::size_t i = activePlane_ < planes.size() ? activePlane_ : 0;
+  planes[i].normal = -planes[i].normal;
+  if (!changeScene_([&](Scene& s) { s.setClipPlanes(planes); })) return;
   syncToScene();
+  if (planes.size() > 1)
+    window_.statusBar()->showMessage(
+        QString("Clip plane %1 of %2 inverted (drag another plane's handle to invert that one)")
+            .arg(i + 1)
+            .arg(planes.size()));
 }
 
 void ClipActions::planeToSlice() {
@@ -174,34 +181,51 @@ void ClipActions::checkAxisOf(const ClipPlane* plane) {
 
 void ClipActions::planeDragged(const ClipPlane& plane) {
   const double size = scene_.session() ? scene_.session()->bounds().diagonal() : 1.0;
-  window_.statusBar()->showMessage("Clip plane through " + roundedPoint(plane.point, size) + ", normal " +
+  const std::vector<ClipPlane>& planes = scene_.volume().clipPlanes;
+  const auto at = std::find(planes.begin(), planes.end(), plane);
+  if (at != planes.end()) activePlane_ = std::size_t(at - planes.begin());
+  const QString which = planes.size() > 1 ? QString("Clip plane %1 of %2").arg(activePlane_ + 1).arg(planes.size())
+                                          : QString("Clip plane");
+  window_.statusBar()->showMessage(which + " through " + roundedPoint(plane.point, size) + ", normal " +
                                    roundedPoint(glm::normalize(plane.normal), 1.0) +
-                                   " (View > Clip Plane > Type Plane to type it)");
-  checkAxisOf(&plane);
+                                   " (View > Clip Plane > Type Planes to type them)");
+  checkAxisOf(planes.size() == 1 ? &plane : nullptr);
 }
 
 void ClipActions::typePlane() {
   const ModelSession* session = scene_.session();
   if (!session) return;
+  // Every free plane, one per line: several cut the model together, each with its handle.
   const std::vector<ClipPlane> planes = scene_.volume().clipPlanes;
-  const ClipPlane current = planes.empty() ? ClipPlane{session->bounds().center(), {1.0, 0.0, 0.0}} : planes.front();
-  QString text = clipPlaneText(current);
+  QStringList lines;
+  for (const ClipPlane& p : planes) lines << clipPlaneText(p);
+  if (lines.isEmpty()) lines << clipPlaneText(ClipPlane{session->bounds().center(), {1.0, 0.0, 0.0}});
+  QString text = lines.join('\n');
   for (;;) {
     bool ok = false;
-    text = QInputDialog::getText(
-        &window_, "Clip plane",
-        "Point on the plane and normal toward the kept side, px,py,pz,nx,ny,nz:", QLineEdit::Normal, text, &ok);
+    text = QInputDialog::getMultiLineText(&window_, "Clip planes",
+                                          "One plane per line, a point on it and the normal toward the kept side, "
+                                          "px,py,pz,nx,ny,nz (empty: none):",
+                                          text, &ok);
     if (!ok) return;
-    if (const auto plane = parseClipPlane(text)) {
-      std::vector<ClipPlane> next = planes;
-      if (next.empty()) next.push_back(*plane);
-      else next.front() = *plane;
-      changeScene_([&](Scene& s) { s.setClipPlanes(next); });
+    std::vector<ClipPlane> next;
+    QString bad;
+    for (const QString& line : text.split('\n', Qt::SkipEmptyParts)) {
+      if (line.trimmed().isEmpty()) continue;
+      if (const auto plane = parseClipPlane(line.trimmed())) next.push_back(*plane);
+      else if (bad.isEmpty()) bad = line.trimmed();
+    }
+    if (bad.isEmpty()) {
+      if (!changeScene_([&](Scene& s) { s.setClipPlanes(next); })) {  // too many: say why, and ask again
+        QMessageBox::warning(&window_, "Clip planes", window_.statusBar()->currentMessage());
+        continue;
+      }
+      activePlane_ = 0;
       syncToScene();
       return;
     }
-    QMessageBox::warning(&window_, "Clip plane",
-                         QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(text));
+    QMessageBox::warning(&window_, "Clip planes",
+                         QString("'%1' is not six numbers px,py,pz,nx,ny,nz with a non-zero normal").arg(bad));
   }
 }
 

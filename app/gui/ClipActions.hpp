@@ -48,7 +48,8 @@ class ClipActions : public QObject {
   void planeToSlice();
   /// Clip Plane > Slices...: the slices typed, one plane per line; empty: none.
   void typeSlices();
-  /// The viewport's plane handle moved the first plane: the menu and the status bar say where.
+  /// The viewport's handle moved a plane: the menu and the status bar say where; Invert
+  /// Plane then turns that one.
   void planeDragged(const ClipPlane& plane);
   /// The menu shows the scene's first plane (a state file's, another model's none).
   void syncToScene();
@@ -63,6 +64,7 @@ class ClipActions : public QObject {
   std::function<std::size_t()> drawNow_;
   QMenu* menu_ = nullptr;
   std::array<QAction*, 4> axisActions_{};  ///< Off, +X, +Y, +Z
+  std::size_t activePlane_ = 0;            ///< the free plane last dragged (Invert Plane turns it)
 };
 
 }  // namespace volpost::app

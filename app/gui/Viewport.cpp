@@ -78,16 +78,16 @@ void Viewport::moveClipPlane(double distance) {
 
 void Viewport::dragPlaneWidget(const QPointF& at) {
   std::vector<ClipPlane> planes = scene_.volume().clipPlanes;
-  if (planes.empty() || !scene_.session()) return;
-  const PlaneWidget widget = planeWidget(planes.front(), scene_.session()->bounds());
+  if (planeDragIndex_ >= planes.size() || !scene_.session()) return;
+  ClipPlane& plane = planes[planeDragIndex_];  // the plane whose handle was taken
+  const PlaneWidget widget = planeWidget(plane, scene_.session()->bounds());
   const Camera camera = scene_.pictureCamera(width(), height());
   const glm::dvec2 to(at.x(), at.y()), from(planeDragLast_.x(), planeDragLast_.y());
-  planes.front() = planeDrag_ == PlaneWidgetPart::Knob
-                       ? turnedPlane(planes.front(), widget, camera, width(), height(), to)
-                       : slidPlane(planes.front(), widget, camera, width(), height(), from, to);
+  plane = planeDrag_ == PlaneWidgetPart::Knob ? turnedPlane(plane, widget, camera, width(), height(), to)
+                                              : slidPlane(plane, widget, camera, width(), height(), from, to);
   planeDragLast_ = at;
   scene_.setClipPlanes(planes);
-  emit clipPlaneDragged(planes.front());
+  emit clipPlaneDragged(plane);
   update();
 }
 
@@ -256,9 +256,15 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
   planeDrag_ = PlaneWidgetPart::None;
   // The widget takes the drag where it is hit; Ctrl+drag keeps sliding the plane from anywhere.
   if (event->button() == Qt::LeftButton && scene_.showsPlaneWidget() && !(event->modifiers() & Qt::ControlModifier)) {
-    const PlaneWidget widget = planeWidget(scene_.volume().clipPlanes.front(), scene_.session()->bounds());
+    // Each free plane has a handle: the first one hit takes the drag.
     const Camera camera = scene_.pictureCamera(width(), height());
-    planeDrag_ = hitPlaneWidget(widget, camera, width(), height(), {event->position().x(), event->position().y()}, 6.0);
+    const std::vector<ClipPlane>& planes = scene_.volume().clipPlanes;
+    for (std::size_t i = 0; i < planes.size() && planeDrag_ == PlaneWidgetPart::None; ++i) {
+      const PlaneWidget widget = planeWidget(planes[i], scene_.session()->bounds());
+      planeDrag_ =
+          hitPlaneWidget(widget, camera, width(), height(), {event->position().x(), event->position().y()}, 6.0);
+      planeDragIndex_ = i;
+    }
     planeDragLast_ = event->position();
   }
   boxDragFace_.reset();

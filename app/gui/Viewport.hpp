@@ -137,6 +137,7 @@ class Viewport : public QOpenGLWidget {
   QElapsedTimer wheelTurning_;         ///< since the wheel last turned
   QPoint hoverAt_;
   PlaneWidgetPart planeDrag_ = PlaneWidgetPart::None;  ///< the widget part held by the left button
+  std::size_t planeDragIndex_ = 0;                     ///< of the clip plane whose handle it is
   QPointF planeDragLast_;
   std::optional<int> boxDragFace_;  ///< the clip box's face held by the left button
   ClipBox boxDragged_{};            ///< where the drag has taken the box (applied on release)

@@ -814,6 +814,35 @@ class MainWindowTest : public QObject {
 
   // The clip plane's widget: its knob turns the plane toward the mouse, its shaft slides it;
   // the cut follows, the status bar says the plane, and View > Clip Plane hides the handle.
+  void everyClipPlaneHasAHandle() {
+    // Two planes (a state's or typed): the second one's knob turns the second plane only.
+    Viewport* view = window_->viewport();
+    view->setStandardView(StandardView::Isometric);
+    const ModelSession& s = *window_->session();
+    const glm::dvec3 c = s.bounds().center();
+    view->scene().setClipPlanes({ClipPlane{c + glm::dvec3(-3, 0, 0), {1, 0, 0}}, ClipPlane{c, {0, 1, 0}}});
+    view->update();
+    const ClipPlane first = view->scene().volume().clipPlanes[0];
+    const PlaneWidget widget = planeWidget(view->scene().volume().clipPlanes[1], s.bounds());
+    const auto q = view->scene()
+                       .pictureCamera(view->width(), view->height())
+                       .projectToPicture(widget.knob, view->width(), view->height());
+    QVERIFY(q);
+    const QPoint knob(int(std::lround(q->x)), int(std::lround(q->y)));
+    QTest::mousePress(view, Qt::LeftButton, {}, knob);
+    for (int step = 1; step <= 4; ++step) {
+      const QPointF at = QPointF(knob) + QPointF(10.0 * step, 0.0);
+      QMouseEvent move(QEvent::MouseMove, at, view->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, knob + QPoint(40, 0));
+    QCOMPARE(view->scene().volume().clipPlanes[0], first);
+    QVERIFY2(glm::length(glm::normalize(view->scene().volume().clipPlanes[1].normal) - glm::dvec3(0, 1, 0)) > 0.05,
+             "the second plane's knob turned the second plane");
+    QVERIFY(window_->statusBar()->currentMessage().startsWith("Clip plane 2 of 2"));
+    view->scene().setClipPlanes({});
+  }
+
   void thePlaneWidgetTurnsAndSlidesTheClipPlane() {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     Viewport* view = window_->viewport();

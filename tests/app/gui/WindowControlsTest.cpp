@@ -338,6 +338,23 @@ class WindowControlsTest : public QObject {
     QVERIFY2(said.contains("(5, 0, 0.5)") && said.contains("(0, -1, 0)") && !said.contains("e-1"), qPrintable(said));
   }
 
+  void severalTypedPlanesAndInvertTurnsTheOneDragged() {
+    QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
+    whenADialogOpens([](QWidget* dialog) {
+      auto* input = qobject_cast<QInputDialog*>(dialog);
+      input->setTextValue("5,0.5,0.5,1,0,0\n\n2,0.5,0.5,0,1,0\n");
+      input->accept();
+    });
+    action("typeClipPlane")->trigger();
+    QCOMPARE(scene().volume().clipPlanes.size(), std::size_t(2));
+    const ClipPlane second = scene().volume().clipPlanes[1];
+    emit window_->viewport()->clipPlaneDragged(second);  // its handle moved it
+    QVERIFY(window_->statusBar()->currentMessage().startsWith("Clip plane 2 of 2"));
+    action("invertClipPlane")->trigger();
+    QCOMPARE(scene().volume().clipPlanes[1].normal, glm::dvec3(0, -1, 0));
+    QCOMPARE(scene().volume().clipPlanes[0].normal, glm::dvec3(1, 0, 0));  // the other stays
+  }
+
   void probedNumbersAreReadableAndTypedPointsTakeSpaces() {
     QVERIFY(open(VOLPOST_TEST_DATA "/bar/bar_tet4.vtu"));
     scene().setUnits("S", "MPa");  // written after each of S's quantities, as the legend does
