@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "BoxSelection.hpp"
 
+#include "CellSection.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -186,35 +188,16 @@ void drawSeen(DepthBuffer& buffer, const Scene& scene, const Projector& project,
       if (front && k == 3) buffer.draw(v, surface.mesh.property(surface.cellOfFace, face));
     }
   }
-  const Mesh& mesh = model.mesh();
-  for (const ClipPlane& plane : kept.planes()) {
-    for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
-      const CellTopology& t = topology(mesh.cellType(c));
-      const auto nodes = mesh.cellNodes(c);
-      std::vector<glm::dvec3> points;
-      for (const CellEdge& e : t.edges) {
-        const glm::dvec3 a = model.nodePosition(nodes[e.a]), b = model.nodePosition(nodes[e.b]);
-        const double da = glm::dot(a - plane.point, plane.normal), db = glm::dot(b - plane.point, plane.normal);
-        if ((da < 0.0) == (db < 0.0) || da == db) continue;
-        points.push_back(a + (b - a) * (da / (da - db)));
-      }
-      if (points.size() < 3) continue;
-      // The section of a convex cell is convex: its points in order of angle about their centre.
-      glm::dvec3 centre(0.0);
-      for (const glm::dvec3& p : points) centre += p / double(points.size());
-      const glm::dvec3 u = glm::normalize(points[0] - centre);
-      const glm::dvec3 w = glm::cross(plane.normal, u);
-      std::sort(points.begin(), points.end(), [&](const glm::dvec3& a, const glm::dvec3& b) {
-        return std::atan2(glm::dot(a - centre, w), glm::dot(a - centre, u)) <
-               std::atan2(glm::dot(b - centre, w), glm::dot(b - centre, u));
-      });
-      const auto p0 = project(points[0]);
-      for (std::size_t i = 1; p0 && i + 1 < points.size(); ++i) {
-        const auto p1 = project(points[i]), p2 = project(points[i + 1]);
+  for (const ClipPlane& plane : kept.planes())
+    for (std::size_t c = 0; c < model.cellCount(); ++c) {
+      const std::vector<SectionPoint> section = cellSection(model, c, plane);
+      if (section.size() < 3) continue;
+      const auto p0 = project(section[0].at);
+      for (std::size_t i = 1; p0 && i + 1 < section.size(); ++i) {
+        const auto p1 = project(section[i].at), p2 = project(section[i + 1].at);
         if (p1 && p2) buffer.draw({*p0, *p1, *p2}, std::uint32_t(c));
       }
     }
-  }
 }
 
 bool selectable(const Scene& scene) {

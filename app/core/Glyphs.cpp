@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #include "Glyphs.hpp"
 
+#include "CellSection.hpp"
+
 #include <volpost/core/Quantity.hpp>
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -102,6 +106,60 @@ std::vector<NodeIndex> chosenNodes(const ModelSession& session, bool allNodes) {
   return nodes;
 }
 
+// Where a glyph may sit, with the field's components there and the coloring value.
+struct Anchor {
+  glm::dvec3 at{0.0};
+  std::array<double, 6> c{};
+  double color = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The chosen nodes the clip planes keep (a glyph whose node is cut away is not drawn, and
+// one whose node is kept is drawn whole), then, for the surface's glyphs, one at the centre
+// of each cell's cut face, its values interpolated along the cut edges.
+std::vector<Anchor> glyphAnchors(const ModelSession& session, const GlyphLayer& layer, const std::vector<double>& v,
+                                 std::size_t width, const ScalarView* colors, const std::vector<ClipPlane>& cuts,
+                                 bool onCutFaces) {
+  const Model& model = session.model();
+  const double tolerance = 1e-9 * std::max(session.bounds().diagonal(), 1e-300);
+  const auto kept = [&](const glm::dvec3& p) {
+    for (const ClipPlane& c : cuts)
+      if (glm::dot(p - c.point, glm::normalize(c.normal)) < -tolerance) return false;
+    return true;
+  };
+  const auto colorAt = [&](NodeIndex n) {
+    return colors && n < colors->values.size() ? double(colors->values[n]) : std::numeric_limits<double>::quiet_NaN();
+  };
+  std::vector<Anchor> out;
+  for (const NodeIndex n : chosenNodes(session, layer.allNodes)) {
+    if (std::size_t(n) * width + width > v.size() || !kept(model.nodePosition(n))) continue;
+    Anchor a;
+    a.at = model.nodePosition(n);
+    std::copy_n(v.data() + std::size_t(n) * width, width, a.c.begin());
+    a.color = colorAt(n);
+    out.push_back(a);
+  }
+  if (layer.allNodes || !onCutFaces || !model.meshBuilt()) return out;
+  for (const ClipPlane& plane : cuts)
+    for (std::size_t cell = 0; cell < model.cellCount(); ++cell) {
+      const std::vector<SectionPoint> section = cellSection(model, cell, plane);
+      if (section.size() < 3) continue;
+      Anchor a;
+      a.color = 0.0;
+      bool inside = true;
+      for (const SectionPoint& p : section) {
+        if (std::size_t(std::max(p.a, p.b)) * width + width > v.size()) inside = false;
+        if (!inside) break;
+        const double share = 1.0 / double(section.size());
+        a.at += p.at * share;
+        for (std::size_t k = 0; k < width; ++k)
+          a.c[k] += share * ((1.0 - p.t) * v[std::size_t(p.a) * width + k] + p.t * v[std::size_t(p.b) * width + k]);
+        a.color += share * ((1.0 - p.t) * colorAt(p.a) + p.t * colorAt(p.b));
+      }
+      if (inside && kept(a.at)) out.push_back(a);
+    }
+  return out;
+}
+
 }  // namespace
 
 void checkGlyphLayer(const ModelSession& session, const GlyphLayer& layer) {
@@ -118,42 +176,43 @@ void checkGlyphLayer(const ModelSession& session, const GlyphLayer& layer) {
   if (layer.every < 0) throw std::invalid_argument("glyphs at every k-th node need k >= 1 (0: automatic)");
 }
 
-GlyphGeometry buildGlyphs(const ModelSession& session, const GlyphLayer& layer, std::size_t step) {
+GlyphGeometry buildGlyphs(const ModelSession& session, const GlyphLayer& layer, std::size_t step,
+                          const std::vector<ClipPlane>& cuts, bool onCutFaces) {
   checkGlyphLayer(session, layer);
   const Field& field = *glyphField(session, layer.field);
   const bool tensor = field.kind() == FieldKind::SymTensor;
   const std::vector<double>& v = field.values(std::min(step, field.stepCount() - 1));
   const std::size_t width = tensor ? 6 : 3;
   GlyphGeometry out;
-  const std::vector<NodeIndex> nodes = chosenNodes(session, layer.allNodes);
-  out.candidates = nodes.size();
-  out.every = layer.every > 0 ? std::size_t(layer.every)
-                              : std::max<std::size_t>(1, (nodes.size() + kAutomaticGlyphs - 1) / kAutomaticGlyphs);
-  const std::size_t count = (nodes.size() + out.every - 1) / out.every;
-  if (count > kMaxGlyphs)
-    throw std::invalid_argument(std::to_string(count) + " glyphs (every " + std::to_string(out.every) + " of " +
-                                std::to_string(nodes.size()) + " nodes); at most " + std::to_string(kMaxGlyphs) +
-                                ": take every " + std::to_string((nodes.size() + kMaxGlyphs - 1) / kMaxGlyphs) +
-                                "th node or more");
   std::optional<ScalarView> colors;
   if (!layer.colorBy.empty()) {
     const Quantity q = session.findQuantity(layer.colorBy);
     colors = session.evaluate(q, std::min(step, session.fieldOf(q).stepCount() - 1));
   }
+  const std::vector<Anchor> anchors =
+      glyphAnchors(session, layer, v, width, colors ? &*colors : nullptr, cuts, onCutFaces);
+  out.candidates = anchors.size();
+  out.every = layer.every > 0 ? std::size_t(layer.every)
+                              : std::max<std::size_t>(1, (anchors.size() + kAutomaticGlyphs - 1) / kAutomaticGlyphs);
+  const std::size_t count = (anchors.size() + out.every - 1) / out.every;
+  if (count > kMaxGlyphs)
+    throw std::invalid_argument(std::to_string(count) + " glyphs (every " + std::to_string(out.every) + " of " +
+                                std::to_string(anchors.size()) + " places); at most " + std::to_string(kMaxGlyphs) +
+                                ": take every " + std::to_string((anchors.size() + kMaxGlyphs - 1) / kMaxGlyphs) +
+                                "th node or more");
   // The largest length (or principal value) among the glyphs drawn sets the automatic scale.
-  const auto sizeAt = [&](NodeIndex n, std::array<double, 3>* principal, PrincipalAxes* axes) {
-    const double* c = v.data() + std::size_t(n) * width;
-    if (std::size_t(n) * width + width > v.size()) return std::numeric_limits<double>::quiet_NaN();
+  const auto sizeAt = [&](const Anchor& a, std::array<double, 3>* principal, PrincipalAxes* axes) {
+    const double* c = a.c.data();
     if (!tensor) return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     *axes = principalAxes(c);
     *principal = axes->values;
     return std::max({std::abs(axes->values[0]), std::abs(axes->values[1]), std::abs(axes->values[2])});
   };
   double largest = 0.0;
-  for (std::size_t i = 0; i < nodes.size(); i += out.every) {
+  for (std::size_t i = 0; i < anchors.size(); i += out.every) {
     std::array<double, 3> p{};
     PrincipalAxes a;
-    const double s = sizeAt(nodes[i], &p, &a);
+    const double s = sizeAt(anchors[i], &p, &a);
     if (std::isfinite(s)) largest = std::max(largest, s);
   }
   const double diagonal = session.bounds().diagonal();
@@ -167,18 +226,17 @@ GlyphGeometry buildGlyphs(const ModelSession& session, const GlyphLayer& layer, 
                                          : layer.field + " magnitude";
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   Builder build{out};
-  const std::vector<glm::dvec3>& positions = session.model().mesh().nodes;
-  for (std::size_t i = 0; i < nodes.size(); i += out.every) {
-    const NodeIndex n = nodes[i];
+  for (std::size_t i = 0; i < anchors.size(); i += out.every) {
+    const Anchor& anchor = anchors[i];
     std::array<double, 3> principal{};
     PrincipalAxes axes;
-    const double size = sizeAt(n, &principal, &axes);
+    const double size = sizeAt(anchor, &principal, &axes);
     if (!std::isfinite(size) || size == 0.0 || out.scale == 0.0) continue;
-    const glm::dvec3 at = positions[n];
-    const double colorValue = colors ? colors->values[n] : size;
+    const glm::dvec3 at = anchor.at;
+    const double colorValue = colors ? anchor.color : size;
     if (colors && !std::isfinite(colorValue)) continue;
     if (!tensor) {
-      const double* c = v.data() + std::size_t(n) * 3;
+      const double* c = anchor.c.data();
       const glm::dvec3 direction = glm::dvec3(c[0], c[1], c[2]) / size;
       build.arrow(at, direction, layer.fixedLength ? out.scale : size * out.scale, colorValue);
       lo = std::min(lo, colorValue);

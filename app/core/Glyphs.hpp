@@ -9,6 +9,8 @@
 
 #include "ModelSession.hpp"
 
+#include <volpost/core/ClipPlane.hpp>
+
 #include <glm/vec3.hpp>
 
 #include <cstddef>
@@ -39,7 +41,7 @@ struct GlyphGeometry {
   std::vector<glm::dvec3> corners;      ///< three per triangle, model coordinates
   std::vector<double> values;           ///< one per corner: what the color map colors
   std::size_t glyphs = 0;               ///< nodes drawn (without a glyph: zero or not finite)
-  std::size_t candidates = 0;           ///< nodes in the chosen set
+  std::size_t candidates = 0;           ///< places in the chosen set (nodes, cut faces' centres)
   std::size_t every = 1;                ///< the stride used
   double min = 0.0, max = 1.0;          ///< the colors' range
   double dataMin = 0.0, dataMax = 0.0;  ///< the values' own extremes (a tensor's range is widened about 0)
@@ -51,8 +53,12 @@ struct GlyphGeometry {
 /// symmetric tensor field, the coloring quantity is not given at the nodes, the scale is
 /// not positive or the stride negative.
 void checkGlyphLayer(const ModelSession& session, const GlyphLayer& layer);
-/// The glyphs at a step (the field's last when it has fewer). Throws std::invalid_argument
-/// when the nodes chosen would give more than kMaxGlyphs glyphs.
-GlyphGeometry buildGlyphs(const ModelSession& session, const GlyphLayer& layer, std::size_t step);
+/// The glyphs at a step (the field's last when it has fewer). `cuts` (the clip planes and
+/// box): a node they cut away has no glyph, and with `onCutFaces` the surface's glyphs (not
+/// allNodes) are joined by one at the centre of each cell's cut face, interpolated along its
+/// cut edges (the surface view draws those faces; a volume does not).
+/// Throws std::invalid_argument when the places chosen would give more than kMaxGlyphs glyphs.
+GlyphGeometry buildGlyphs(const ModelSession& session, const GlyphLayer& layer, std::size_t step,
+                          const std::vector<ClipPlane>& cuts = {}, bool onCutFaces = true);
 
 }  // namespace volpost::app

@@ -404,19 +404,24 @@ void Scene::setGlyphs(GlyphLayer layer) {
     if (!session_) throw std::invalid_argument("no model is open to draw glyphs on");
     checkGlyphLayer(*session_, layer);
     // Built now: too many glyphs is said here, not by the next frame.
-    auto built = std::make_shared<const GlyphGeometry>(buildGlyphs(*session_, layer, state_.step));
+    const std::vector<ClipPlane> cuts = state_.volume.allClipPlanes();
+    auto built =
+        std::make_shared<const GlyphGeometry>(buildGlyphs(*session_, layer, state_.step, cuts, !state_.volume.shown));
     glyphs_ = std::move(built);
-    glyphsFor_ = std::make_tuple(session_.get(), state_.step, layer);
+    glyphsFor_ = std::make_tuple(session_.get(), state_.step, layer, cuts, !state_.volume.shown);
   }
   state_.glyphs = std::move(layer);
 }
 
 std::shared_ptr<const GlyphGeometry> Scene::glyphs() const {
   if (!session_ || !state_.glyphs.shown) return nullptr;
-  const auto key = std::make_tuple(session_.get(), state_.step, state_.glyphs);
+  // Clip planes cut the glyphs at their places, not through them; the cut faces carry glyphs too.
+  const auto key =
+      std::make_tuple(session_.get(), state_.step, state_.glyphs, state_.volume.allClipPlanes(), !state_.volume.shown);
   if (!glyphs_ || glyphsFor_ != key) {
     glyphs_.reset();
-    glyphs_ = std::make_shared<const GlyphGeometry>(buildGlyphs(*session_, state_.glyphs, state_.step));
+    glyphs_ = std::make_shared<const GlyphGeometry>(
+        buildGlyphs(*session_, state_.glyphs, state_.step, std::get<3>(key), std::get<4>(key)));
     glyphsFor_ = key;
   }
   return glyphs_;

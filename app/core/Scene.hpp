@@ -445,7 +445,9 @@ class Scene {
 
   std::shared_ptr<const StreamlineResult> streamlineResult_;
   mutable std::shared_ptr<const GlyphGeometry> glyphs_;
-  mutable std::tuple<const ModelSession*, std::size_t, GlyphLayer> glyphsFor_;
+  /// What glyphs_ was built for: the model, step, layer, the planes cutting it and whether
+  /// its cut faces are drawn (the surface view).
+  mutable std::tuple<const ModelSession*, std::size_t, GlyphLayer, std::vector<ClipPlane>, bool> glyphsFor_;
 };
 
 }  // namespace volpost::app

@@ -375,7 +375,7 @@ void SceneDrawing::drawGlyphs(const Scene& scene, const RenderContext& ctx) {
   }
   glyphRenderer_.setShowEdges(false);
   glyphRenderer_.setLighting(true);
-  glyphRenderer_.setClipPlanes(scene.shown().volume.allClipPlanes());
+  glyphRenderer_.setClipPlanes({});  // cut at their places (Scene::glyphs): a glyph kept is drawn whole
   drawDepthTested(glyphRenderer_, ctx, scene.session()->origin());
 }
 

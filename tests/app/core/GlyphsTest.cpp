@@ -169,3 +169,53 @@ TEST(Glyphs, TheyAreDrawnWhereTheModelIsNot) {
   scene.setGlyphs(layer);
   EXPECT_GT(drawn(), 100);
 }
+
+// A clip plane cuts the glyphs at their places: a node it removes has none, a kept one is
+// drawn whole; the cut faces carry one glyph per cut element, at its face's centre, its
+// vector interpolated along the cut edges (exact for a linear field).
+TEST(Glyphs, OnTheCutFacesAndNotOnWhatTheCutRemoves) {
+  // A block of 2 x 2 x 2 unit hexahedra with U = (x, 2y, 0) at its nodes.
+  auto model = std::make_shared<Model>();
+  Mesh mesh;
+  const auto id = [](int i, int j, int k) { return NodeIndex((k * 3 + j) * 3 + i); };
+  for (int k = 0; k <= 2; ++k)
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 2; ++i) mesh.nodes.push_back(glm::dvec3(i, j, k));
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const NodeIndex hex[8] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                                  id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+        mesh.addCell(CellType::Hex8, hex);
+      }
+  std::vector<double> u;
+  for (const glm::dvec3& p : mesh.nodes) u.insert(u.end(), {p.x, 2.0 * p.y, 0.0});
+  model->setMesh(std::move(mesh));
+  model->fields.push_back(Field::fromValues("U", FieldLocation::Node, 3, {u}, {Step{"1", 1.0}}));
+  const auto session = ModelSession::fromModel(model);
+  GlyphLayer layer;
+  layer.shown = true;
+  layer.field = "U";
+  layer.every = 1;
+  layer.scale = 0.1;
+  const std::size_t surfaceNodes = 26;  // all 27 nodes but the centre
+  EXPECT_EQ(buildGlyphs(*session, layer, 0).candidates, surfaceNodes);
+  // Keep x <= 1.5: the x = 2 nodes go; the four cells with x in [1, 2] are cut at 1.5.
+  const std::vector<ClipPlane> cut{ClipPlane{{1.5, 0.0, 0.0}, {-1.0, 0.0, 0.0}}};
+  const GlyphGeometry g = buildGlyphs(*session, layer, 0, cut);
+  EXPECT_EQ(g.candidates, surfaceNodes - 9 + 4);
+  // The cut glyphs come last, at the faces' centres (1.5, y, z) with y, z = 0.5 or 1.5, their
+  // vectors (1.5, 2y, 0) interpolated: the tip at (1.5, y) + 0.1 (1.5, 2y), the color |U|.
+  ASSERT_GE(g.glyphs, 4u);
+  for (std::size_t k = g.glyphs - 4; k < g.glyphs; ++k) {
+    const double length = g.values[k * kArrowCorners];
+    const double y = std::sqrt((length * length - 2.25) / 4.0);
+    EXPECT_TRUE(std::abs(y - 0.5) < 1e-9 || std::abs(y - 1.5) < 1e-9) << y;
+    const glm::dvec3 tip = g.corners[k * kArrowCorners + kTipCorner];
+    EXPECT_NEAR(tip.x, 1.5 + 0.15, 1e-9);
+    EXPECT_NEAR(tip.y, 1.2 * y, 1e-9);
+  }
+  EXPECT_EQ(buildGlyphs(*session, layer, 0, cut, false).candidates, surfaceNodes - 9) << "a volume: no cut faces";
+  layer.allNodes = true;
+  EXPECT_EQ(buildGlyphs(*session, layer, 0, cut).candidates, 27u - 9) << "every node: the cut removes, adds none";
+}
