@@ -200,19 +200,31 @@ void drawSeen(DepthBuffer& buffer, const Scene& scene, const Projector& project,
     }
 }
 
-bool selectable(const Scene& scene) {
-  return scene.session() && scene.session()->model().meshBuilt() && scene.session()->model().cellCount() > 0;
+// What both kinds of selection work from: the drawn model, its projection into the picture
+// and the clip planes. nullopt where there is nothing to select (a grid, no cells, no picture).
+struct Picture {
+  const ModelSession& session;
+  const Model& model;
+  Projector project;
+  Kept kept;
+};
+
+std::optional<Picture> pictureOf(const Scene& scene, const Camera& camera, double width, double height) {
+  const ModelSession* session = scene.session();
+  if (!session || !session->model().meshBuilt() || session->model().cellCount() == 0 || !(width > 0.0) ||
+      !(height > 0.0))
+    return std::nullopt;
+  return Picture{*session, session->model(), Projector(camera, session->origin(), width, height),
+                 Kept(scene, session->bounds().diagonal())};
 }
 
 }  // namespace
 
 std::vector<std::uint32_t> elementsInBox(const Scene& scene, const Camera& camera, double width, double height,
                                          const PictureBox& box, SelectionDepth depth) {
-  if (!selectable(scene) || !(width > 0.0) || !(height > 0.0)) return {};
-  const ModelSession& session = *scene.session();
-  const Model& model = session.model();
-  const Projector project(camera, session.origin(), width, height);
-  const Kept kept(scene, session.bounds().diagonal());
+  const std::optional<Picture> picture = pictureOf(scene, camera, width, height);
+  if (!picture) return {};
+  const auto& [session, model, project, kept] = *picture;
   if (depth == SelectionDepth::Surface) {
     const PixelBounds bounds = pixelBounds(box, width, height);
     if (bounds.empty()) return {};
@@ -235,11 +247,9 @@ std::vector<std::uint32_t> elementsInBox(const Scene& scene, const Camera& camer
 
 std::vector<std::uint32_t> nodesInBox(const Scene& scene, const Camera& camera, double width, double height,
                                       const PictureBox& box, SelectionDepth depth) {
-  if (!selectable(scene) || !(width > 0.0) || !(height > 0.0)) return {};
-  const ModelSession& session = *scene.session();
-  const Model& model = session.model();
-  const Projector project(camera, session.origin(), width, height);
-  const Kept kept(scene, session.bounds().diagonal());
+  const std::optional<Picture> picture = pictureOf(scene, camera, width, height);
+  if (!picture) return {};
+  const auto& [session, model, project, kept] = *picture;
   std::vector<char> candidate(model.mesh().nodeCount(), 0);
   if (depth == SelectionDepth::Surface) {
     if (!scene.state().surfaceShown) return {};  // a cut face has no nodes on it

@@ -25,6 +25,18 @@ QString roundedPoint(const glm::dvec3& p, double size) {
   return QString("(%1, %2, %3)").arg(c(p.x), 0, 'g', 4).arg(c(p.y), 0, 'g', 4).arg(c(p.z), 0, 'g', 4);
 }
 
+// The planes typed one per line (px,py,pz,nx,ny,nz; blank lines skipped); `bad` gets the
+// first line that is not one.
+std::vector<ClipPlane> planesOfLines(const QString& text, QString& bad) {
+  std::vector<ClipPlane> planes;
+  for (const QString& line : text.split('\n', Qt::SkipEmptyParts)) {
+    if (line.trimmed().isEmpty()) continue;
+    if (const auto plane = parseClipPlane(line.trimmed())) planes.push_back(*plane);
+    else if (bad.isEmpty()) bad = line.trimmed();
+  }
+  return planes;
+}
+
 }  // namespace
 
 ClipActions::ClipActions(QMainWindow& window, Scene& scene, QMenu& results, ChangeScene changeScene,
@@ -128,13 +140,8 @@ void ClipActions::typeSlices() {
                                               .arg(kMaxSlicePlanes),
                                           text, &ok);
     if (!ok) return;
-    std::vector<ClipPlane> planes;
     QString bad;
-    for (const QString& line : text.split('\n', Qt::SkipEmptyParts)) {
-      if (line.trimmed().isEmpty()) continue;
-      if (const auto plane = parseClipPlane(line.trimmed())) planes.push_back(*plane);
-      else if (bad.isEmpty()) bad = line.trimmed();
-    }
+    const std::vector<ClipPlane> planes = planesOfLines(text, bad);
     if (bad.isEmpty() && planes.size() <= kMaxSlicePlanes) {
       changeScene_([&](Scene& s) { s.setSlicePlanes(planes); });
       return;
@@ -208,13 +215,8 @@ void ClipActions::typePlane() {
                                           "px,py,pz,nx,ny,nz (empty: none):",
                                           text, &ok);
     if (!ok) return;
-    std::vector<ClipPlane> next;
     QString bad;
-    for (const QString& line : text.split('\n', Qt::SkipEmptyParts)) {
-      if (line.trimmed().isEmpty()) continue;
-      if (const auto plane = parseClipPlane(line.trimmed())) next.push_back(*plane);
-      else if (bad.isEmpty()) bad = line.trimmed();
-    }
+    const std::vector<ClipPlane> next = planesOfLines(text, bad);
     if (bad.isEmpty()) {
       if (!changeScene_([&](Scene& s) { s.setClipPlanes(next); })) {  // too many: say why, and ask again
         QMessageBox::warning(&window_, "Clip planes", window_.statusBar()->currentMessage());
