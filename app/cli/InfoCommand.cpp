@@ -39,6 +39,7 @@ std::size_t printFields(const Model& model) {
                 toString(f->kind()), f->components(), f->components() == 1 ? "" : "s", f->stepCount(),
                 f->stepCount() == 1 ? "" : "s");
     printQuantities(*f);
+    if (!f->units().empty()) std::printf("      units: %s (as the file states them)\n", f->units().c_str());
     if (f->storesSamples() && f->stepCount() > 0) {
       try {  // what the field holds in memory: the file's own type, not doubles
         const SampleType type = f->samples(0).type();

@@ -287,6 +287,20 @@ void Scene::setUnits(const std::string& field, const std::string& units) {
   setOrErase(state_.units, field, units, "units");
 }
 
+std::string Scene::unitsOf(const std::string& field) const {
+  if (const auto typed = state_.units.find(field); typed != state_.units.end()) return typed->second;
+  const Field* f = session_ ? session_->model().findField(field) : nullptr;
+  return f ? f->units() : std::string();
+}
+
+std::map<std::string, std::string> Scene::unitsByField() const {
+  std::map<std::string, std::string> out = state_.units;
+  if (session_)
+    for (const auto& f : session_->model().fields)
+      if (!f->units().empty()) out.emplace(f->name(), f->units());  // a typed one stays
+  return out;
+}
+
 void Scene::setLegendNumbers(const std::string& style) {
   const auto numbers = LegendNumbers::parse(style);
   if (!numbers)
@@ -1024,9 +1038,7 @@ std::vector<LegendPicture> Scene::legends() const {
     const auto title = state_.legendTitles.find(view_->quantity.key());
     content.title =
         QString::fromStdString(title != state_.legendTitles.end() ? title->second : view_->quantity.displayName());
-    const auto units = state_.units.find(view_->quantity.field);
-    const QString written =
-        quantityUnits(view_->quantity, units != state_.units.end() ? QString::fromStdString(units->second) : QString());
+    const QString written = quantityUnits(view_->quantity, QString::fromStdString(unitsOf(view_->quantity.field)));
     if (!written.isEmpty()) content.title += QString(" [%1]").arg(written);
     content.numbers = LegendNumbers::parse(state_.legendNumbers).value_or(LegendNumbers{});
     content.labels = state_.legendLabels;

@@ -169,6 +169,11 @@ class Scene {
   /// the title ("S von Mises [MPa]"); std::invalid_argument for text over 200 bytes.
   void setLegendTitle(const std::string& quantity, const std::string& title);
   void setUnits(const std::string& field, const std::string& units);
+  /// The units a field's values are shown in: those typed (setUnits), else the file's
+  /// (Field::units), else none.
+  std::string unitsOf(const std::string& field) const;
+  /// unitsOf for every field of the model that has some.
+  std::map<std::string, std::string> unitsByField() const;
   /// "auto[:N]", "fixed[:N]", "scientific[:N]"; std::invalid_argument otherwise.
   void setLegendNumbers(const std::string& style);
   /// About how many values a continuous bar labels, 2..20.

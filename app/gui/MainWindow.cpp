@@ -640,7 +640,11 @@ void MainWindow::chooseLegendText() {
   form->addRow(QString("Title of %1:").arg(QString::fromStdString(q.key())), title);
   auto* units = new QLineEdit(&dialog);
   units->setObjectName("legendUnits");
-  units->setPlaceholderText("MPa, mm, K ...");
+  // The file's own units, where it states them, show until the user types others.
+  const Field* field = scene.session() ? scene.session()->model().findField(q.field) : nullptr;
+  units->setPlaceholderText(field && !field->units().empty()
+                                ? QString::fromStdString(field->units()) + " (as the file states them)"
+                                : QString("MPa, mm, K ..."));
   if (const auto u = state.units.find(q.field); u != state.units.end())
     units->setText(QString::fromStdString(u->second));
   form->addRow(QString("Units of %1:").arg(QString::fromStdString(q.field)), units);

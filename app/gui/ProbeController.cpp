@@ -137,7 +137,7 @@ void ProbeController::showHistory(const std::vector<HistoryPlace>& places) {
 void ProbeController::refresh() {
   const Scene& scene = viewport_.scene();
   panel_->setDeformed(scene.deformation().shown);
-  panel_->setUnits(scene.shown().units);
+  panel_->setUnits(scene.unitsByField());
   panel_->showProbes(session_(), scene.probes(), scene.state().step, scene.view() ? scene.view()->quantity.key() : "");
   if (!scene.probes().empty() && !dock_->isVisible()) dock_->show();
 }

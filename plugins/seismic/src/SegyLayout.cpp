@@ -171,4 +171,9 @@ std::optional<BinaryHeader> parseBinaryHeader(const unsigned char* h, std::strin
   return b;
 }
 
+std::string traceValueUnits(std::int64_t code) {
+  static constexpr const char* kSymbols[] = {"Pa", "V", "mV", "A", "m", "m/s", "m/s^2", "N", "W"};
+  return code >= 1 && code <= 9 ? kSymbols[code - 1] : "";
+}
+
 }  // namespace volpost::seismic

@@ -59,6 +59,12 @@ struct BinaryHeader {
 /// sense. Returns the reason it is not SEG-Y in `error` otherwise.
 std::optional<BinaryHeader> parseBinaryHeader(const unsigned char* header400, std::string& error);
 
+/// Trace value measurement unit (rev 1 and later, trace header bytes 203-204): the unit's
+/// symbol for the codes the standard lists (1 Pa, 2 V, 3 mV, 4 A, 5 m, 6 m/s, 7 m/s^2,
+/// 8 N, 9 W), empty for 0 (unknown), -1 (other) and any code it does not list.
+constexpr int kTraceValueUnitPosition = 203;
+std::string traceValueUnits(std::int64_t code);
+
 /// Byte positions (1-based, in the trace header) of the fields the geometry needs. The
 /// defaults are the standard's (rev 1): inline 189, crossline 193, CDP x 181, CDP y 185,
 /// coordinate scalar 71, offset 37, delay 109.

@@ -31,6 +31,7 @@ struct TraceKey {
   std::int64_t inlineNumber = 0, crosslineNumber = 0, offset = 0;
   glm::dvec2 cdp{0.0};
   std::int64_t delayMs = 0;
+  std::int64_t valueUnitCode = 0;  ///< bytes 203-204 (revision 1 and later)
 };
 
 class SegyFile {
@@ -153,6 +154,27 @@ std::string offsetList(const std::set<std::int64_t>& offsets) {
     s += (s.empty() ? "" : ", ") + std::to_string(o);
   }
   return s;
+}
+
+// The unit the traces' values are in (bytes 203-204), when every chosen trace names the
+// same one the standard lists; traces that disagree leave the values without units, said.
+std::string valueUnits(const std::vector<TraceKey>& keys, const std::vector<std::uint64_t>& chosen,
+                       std::uint64_t dataStart, std::uint64_t traceBytes, Model& model) {
+  const std::int64_t first = keys[chosen.front()].valueUnitCode;
+  for (std::uint64_t t : chosen) {
+    if (keys[t].valueUnitCode == first) continue;
+    model.diagnostics.push_back(
+        {Severity::Warning,
+         "trace-value-units",
+         "traces name different units for their values (bytes 203-204 of the trace header: code " +
+             std::to_string(first) + " in trace " + std::to_string(chosen.front() + 1) + ", " +
+             std::to_string(keys[t].valueUnitCode) + " in trace " + std::to_string(t + 1) + ", at byte " +
+             std::to_string(dataStart + t * traceBytes + kTraceValueUnitPosition - 1) +
+             "): the amplitude is shown without units",
+         {}});
+    return {};
+  }
+  return traceValueUnits(first);
 }
 
 }  // namespace
@@ -292,6 +314,8 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
     const std::int64_t scalar = field(at.coordinateScalar, 2);
     k.cdp = {scaled(field(at.cdpX, 4), scalar), scaled(field(at.cdpY, 4), scalar)};
     k.delayMs = field(at.delayMs, 2);
+    // Revision 0 left bytes 203-204 unassigned: whatever they hold there is no unit.
+    if (b.revisionMajor >= 1) k.valueUnitCode = field(kTraceValueUnitPosition, 2);
     // The binary header's count rules (it fits the file's size); trace headers copied from a
     // longer survey may still carry the old count: said once, not refused.
     const std::int64_t samples = headerInt(th.data(), at.samples, 2, b.order, false);
@@ -503,7 +527,9 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                                   {}});
 
   model->grid = grid;
-  model->fields.push_back(Field::fromSamples("amplitude", FieldLocation::Node, 1, std::move(values)));
+  auto amplitude = Field::fromSamples("amplitude", FieldLocation::Node, 1, std::move(values));
+  amplitude->setUnits(valueUnits(keys, chosen, dataStart, traceBytes, *model));
+  model->fields.push_back(std::move(amplitude));
   addSeismicAttributes(*model);
   progress.report(1.0);
   return model;

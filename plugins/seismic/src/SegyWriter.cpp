@@ -125,6 +125,7 @@ void writeSegy(const std::string& path, const RegularGrid& grid, std::span<const
       put(h, 185, std::llround(at.y * scale), 4, order);
       put(h, 189, std::llround(grid.label(0, double(i))), 4, order);
       put(h, 193, std::llround(grid.label(1, double(j))), 4, order);
+      put(h, kTraceValueUnitPosition, options.valueUnitCode, 2, order);
       for (std::size_t k = 0; k < grid.dims[2]; ++k)
         encodeSample(trace.data() + 240 + k * bytesPer, values[grid.pointIndex(i, j, k)], options.format, order);
       out.write(reinterpret_cast<const char*>(trace.data()), std::streamsize(trace.size()));

@@ -17,6 +17,7 @@ struct SegyWriteOptions {
   SampleFormat format = SampleFormat::IeeeFloat32;
   ByteOrder order = ByteOrder::Big;
   int coordinateScalar = -100;  ///< CDP x/y stored times 100 (scalar -100)
+  int valueUnitCode = 0;        ///< trace bytes 203-204: 0 unknown, 1 Pa, 2 V, ... (SegyLayout.hpp)
   std::string title = "volpost synthetic seismic";
 };
 

@@ -118,10 +118,15 @@ void addSeismicAttributes(Model& model) {
           return out;
         });
   };
-  model.fields.push_back(field("envelope", Kind::Envelope));
+  // The envelope and the RMS amplitude are amplitudes: the amplitude's units. Phase and
+  // frequency carry theirs in their names.
+  auto envelope = field("envelope", Kind::Envelope), rms = field("RMS amplitude", Kind::Rms);
+  envelope->setUnits(amplitude->units());
+  rms->setUnits(amplitude->units());
+  model.fields.push_back(std::move(envelope));
   model.fields.push_back(field("phase (degrees)", Kind::Phase));
   model.fields.push_back(field("frequency (Hz)", Kind::Frequency));
-  model.fields.push_back(field("RMS amplitude", Kind::Rms));
+  model.fields.push_back(std::move(rms));
 }
 
 }  // namespace volpost::seismic

@@ -147,6 +147,31 @@ TEST(SceneLegend, TitlesUnitsAndNumberStyles) {
   EXPECT_EQ(scene.legend()->content.title.toStdString(), "S XX");
 }
 
+// Units the file states show in the legend until the user types others; typed ones are
+// saved, the file's are not (they come back with the file).
+TEST(SceneLegend, TheFilesUnitsShowUntilOthersAreTyped) {
+  auto model = std::make_shared<Model>();
+  model->sourcePath = "one_tet";
+  Mesh& mesh = model->mesh();
+  mesh.nodes = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const NodeIndex tet[4] = {0, 1, 2, 3};
+  mesh.addCell(CellType::Tet4, tet);
+  auto pressure = Field::fromValues("p", FieldLocation::Node, 1, {{1.0, 2.0, 3.0, 4.0}});
+  pressure->setUnits("Pa");
+  model->fields.push_back(pressure);
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::fromModel(model));
+  scene.setResult("p", 0);
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "p [Pa]");
+  EXPECT_EQ(scene.unitsByField(), (std::map<std::string, std::string>{{"p", "Pa"}}));
+  EXPECT_TRUE(scene.state().units.empty());
+  scene.setUnits("p", "kPa");
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "p [kPa]");
+  EXPECT_EQ(scene.unitsOf("p"), "kPa");
+  scene.setUnits("p", "");
+  EXPECT_EQ(scene.legend()->content.title.toStdString(), "p [Pa]");
+}
+
 // The picture's caption: the title at the top left, kept in the state; one line only.
 TEST(SceneLegend, ATitleIsPaintedAtTheTopLeftAndKept) {
   Scene scene([](const std::string&) { return nullptr; });

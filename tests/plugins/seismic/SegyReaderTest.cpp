@@ -137,6 +137,47 @@ TEST(SegyReader, MissingTracesAreFilledWithZeroAndFlagged) {
   fs::remove(p);
 }
 
+// Trace bytes 203-204 (revision 1): the unit of the values, shown in the legend and the
+// probe; traces that disagree, or a revision 0 file, give none.
+TEST(SegyReader, ValueUnitsComeFromTheTraceHeaders) {
+  const RegularGrid grid = surveyGrid();
+  const fs::path p = tempFile("units.sgy");
+  SegyWriteOptions options;
+  options.valueUnitCode = 1;  // Pascal
+  writeSegy(p.string(), grid, surveyValues(grid), options);
+  const auto unitsOf = [](const Model& m, const std::string& field) { return m.findField(field)->units(); };
+  {
+    const auto model = readSegy(p.string(), {});
+    EXPECT_EQ(unitsOf(*model, "amplitude"), "Pa");
+    EXPECT_EQ(unitsOf(*model, "envelope"), "Pa");  // amplitudes too
+    EXPECT_EQ(unitsOf(*model, "RMS amplitude"), "Pa");
+    EXPECT_EQ(unitsOf(*model, "phase (degrees)"), "");  // its name says it
+    EXPECT_TRUE(model->diagnostics.empty());
+  }
+  std::vector<char> bytes = bytesOf(p);
+  const std::size_t traceBytes = 240 + 6 * 4, third = 3600 + 2 * traceBytes;
+  bytes[third + 202] = 0, bytes[third + 203] = 5;  // metres, in one trace
+  writeBytes(p, bytes);
+  {
+    const auto model = readSegy(p.string(), {});
+    EXPECT_EQ(unitsOf(*model, "amplitude"), "");
+    ASSERT_EQ(model->diagnostics.size(), 1u);
+    EXPECT_EQ(model->diagnostics[0].code, "trace-value-units");
+    EXPECT_NE(model->diagnostics[0].message.find("5 in trace 3, at byte " + std::to_string(third + 202)),
+              std::string::npos)
+        << model->diagnostics[0].message;
+  }
+  bytes[third + 203] = 1;
+  bytes[3500] = 0;  // revision 0: bytes 203-204 are not the unit there
+  writeBytes(p, bytes);
+  EXPECT_EQ(unitsOf(*readSegy(p.string(), {}), "amplitude"), "");
+  fs::remove(p);
+  EXPECT_EQ(traceValueUnits(7), "m/s^2");
+  EXPECT_EQ(traceValueUnits(0), "");
+  EXPECT_EQ(traceValueUnits(-1), "");  // "other": the standard does not say which
+  EXPECT_EQ(traceValueUnits(10), "");
+}
+
 void expectRefused(const fs::path& p, const std::string& words) {
   try {
     (void)readSegy(p.string(), {});

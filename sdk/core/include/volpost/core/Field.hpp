@@ -61,6 +61,10 @@ class Field {
   std::size_t entityCount() const { return entityCount_; }
   const std::vector<Step>& steps() const { return steps_; }
   std::size_t stepCount() const { return steps_.size(); }
+  /// The units of the values as the file states them ("Pa"), empty when it says nothing
+  /// (most finite-element formats store none). Set by the reader while building the model.
+  const std::string& units() const { return units_; }
+  void setUnits(std::string units) { units_ = std::move(units); }
 
   /// Values of a step, loaded on first use and kept. Thread-safe.
   const std::vector<double>& values(std::size_t step) const;
@@ -86,6 +90,7 @@ class Field {
   void hold(std::size_t bytes) const;
 
   std::string name_;
+  std::string units_;
   FieldLocation location_;
   int components_;
   std::size_t entityCount_;
