@@ -12,6 +12,7 @@
 #include "ClipActions.hpp"
 #include "DeformationActions.hpp"
 #include "DisplayActions.hpp"
+#include "FrameRateActions.hpp"
 #include "GlyphDialog.hpp"
 #include "GridSlicesPanel.hpp"
 #include "IsoSurfaceDialog.hpp"
@@ -246,6 +247,7 @@ void MainWindow::buildActions() {
   connect(legendAction_, &QAction::toggled, this, [this](bool on) { changeScene([on](Scene& s) { s.setShowLegend(on); }); });
   view->addAction("Surface &Opacity...", this, &MainWindow::chooseSurfaceOpacity)
       ->setObjectName("surfaceOpacityAction");
+  frameRate_ = new FrameRateActions(*this, *viewport_, *view, *statusBar());
   display_ = new DisplayActions(*this, viewport_->scene(), *view, [this](const std::function<void(Scene&)>& c) {
     const bool changed = changeScene(c);
     if (gridSlices_) gridSlices_->followScene();  // its Show the Model's Surface box too

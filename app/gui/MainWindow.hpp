@@ -45,6 +45,7 @@ class StreamlineActions;
 class Viewport;
 class VolumeActions;
 class DisplayActions;
+class FrameRateActions;
 
 class MainWindow : public QMainWindow, public PanelHost {
   Q_OBJECT
@@ -174,6 +175,7 @@ class MainWindow : public QMainWindow, public PanelHost {
   StateFiles* stateFiles_ = nullptr;
   VolumeActions* volume_ = nullptr;
   DisplayActions* display_ = nullptr;
+  FrameRateActions* frameRate_ = nullptr;
   SavedViews* savedViews_ = nullptr;
   LinePlotPanel* linePlot_ = nullptr;
   std::map<std::string, TransferFunction> userTransferFunctions_;  ///< set by panels, per quantity key

@@ -5,12 +5,14 @@
 #include "core/SceneOverlay.hpp"
 #include "core/ScenePick.hpp"
 
+#include <QFile>
 #include <QImage>
 #include <QKeyEvent>
-#include <QPen>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPainter>
+#include <QPen>
 #include <QTimer>
 #include <QWheelEvent>
 
@@ -24,9 +26,64 @@ Viewport::Viewport(VolumeRendererFactory factory, QWidget* parent) : QOpenGLWidg
   setMinimumSize(200, 150);
   setFocusPolicy(Qt::StrongFocus);
   drawing_.setAsynchronousUpdates(true);  // transfer-function drags never block the window
+  clock_.start();
+  // Presented, not only drawn: what the user sees is timed.
+  connect(this, &QOpenGLWidget::frameSwapped, this, &Viewport::framePresented);
 }
 
 Viewport::~Viewport() { cleanupGL(); }
+
+void Viewport::viewChangedByInput() {
+  frameTimes_.inputAt(clockMs());
+  update();
+}
+
+void Viewport::framePresented() {
+  frameTimes_.paintedAt(clockMs(), refining_);
+  if (frameRateLabel_) {
+    frameRateLabel_->setText(QString::fromStdString(FrameTimes::text(frameTimes_.summary())));
+    frameRateLabel_->adjustSize();
+    frameRateLabel_->move(width() - frameRateLabel_->width() - 8, 8);
+  }
+}
+
+void Viewport::setShowFrameRate(bool on) {
+  if (on == showsFrameRate()) return;
+  if (!on) {
+    delete frameRateLabel_;
+    frameRateLabel_ = nullptr;
+    return;
+  }
+  frameTimes_.reset();  // what is shown is measured from now
+  frameRateLabel_ = new QLabel(this);
+  frameRateLabel_->setObjectName("frameRate");
+  frameRateLabel_->setAttribute(Qt::WA_TransparentForMouseEvents);
+  frameRateLabel_->setStyleSheet("QLabel { background: rgba(255, 255, 255, 200); color: black; padding: 2px 5px; }");
+  frameRateLabel_->setText(QString::fromStdString(FrameTimes::text(frameTimes_.summary())));
+  frameRateLabel_->adjustSize();
+  frameRateLabel_->move(width() - frameRateLabel_->width() - 8, 8);
+  frameRateLabel_->show();
+}
+
+void Viewport::setFrameLog(const QString& path) {
+  if (path.isEmpty()) {
+    frameLog_.reset();
+    frameTimes_.setLog({});
+    return;
+  }
+  auto file = std::make_unique<QFile>(path);
+  if (!file->open(QIODevice::WriteOnly | QIODevice::Append | QIODevice::Text))
+    throw std::runtime_error(path.toStdString() + ": cannot be written (" + file->errorString().toStdString() + ")");
+  frameLog_ = std::move(file);
+  frameTimes_.setLog([this](const std::string& line) {
+    if (!frameLog_) return;
+    const QString stamped = QString("%1 s  %2\n").arg(clockMs() / 1000.0, 0, 'f', 3).arg(QString::fromStdString(line));
+    frameLog_->write(stamped.toUtf8());
+    frameLog_->flush();  // readable while the window runs
+  });
+}
+
+QString Viewport::frameLogPath() const { return frameLog_ ? frameLog_->fileName() : QString(); }
 
 void Viewport::initializeGL() {
   // GL objects die with the context, which can go before the widget (reparenting).
@@ -73,7 +130,7 @@ void Viewport::moveClipPlane(double distance) {
   if (planes.empty()) return;
   planes.front().point += glm::normalize(planes.front().normal) * distance;
   scene_.setClipPlanes(planes);
-  update();
+  viewChangedByInput();
 }
 
 void Viewport::dragPlaneWidget(const QPointF& at) {
@@ -88,7 +145,7 @@ void Viewport::dragPlaneWidget(const QPointF& at) {
   planeDragLast_ = at;
   scene_.setClipPlanes(planes);
   emit clipPlaneDragged(plane);
-  update();
+  viewChangedByInput();
 }
 
 void Viewport::paintGL() {
@@ -388,7 +445,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
                              {planeDragLast_.x(), planeDragLast_.y()}, {event->position().x(), event->position().y()});
     planeDragLast_ = event->position();
     scene_.setClipBoxPreview(boxDragged_);
-    update();
+    viewChangedByInput();
     return;
   }
   const QPoint p = event->position().toPoint();
@@ -406,7 +463,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
   else if ((event->buttons() & Qt::LeftButton) && trackball_) camera.orbit(-0.4 * d.x(), -0.4 * d.y());
   else if (event->buttons() & Qt::LeftButton) camera.turntable(-0.4 * d.x(), -0.4 * d.y(), dragUp_);
   else return;
-  update();
+  viewChangedByInput();
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {
@@ -414,7 +471,7 @@ void Viewport::wheelEvent(QWheelEvent* event) {
   if (!wheelTurning_.isValid() || wheelTurning_.elapsed() > 800) scene_.rememberView();
   wheelTurning_.start();
   scene_.camera().zoom(std::pow(1.1, event->angleDelta().y() / 120.0));
-  update();
+  viewChangedByInput();
 }
 
 }  // namespace volpost::app

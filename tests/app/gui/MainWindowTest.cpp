@@ -5,6 +5,7 @@
 #include "core/PlaneWidget.hpp"
 #include "core/SceneOverlay.hpp"
 #include "gui/CalculatorDialog.hpp"
+#include "gui/FrameRateActions.hpp"
 #include "gui/HistoryPanel.hpp"
 #include "gui/LinePlotPanel.hpp"
 #include "gui/MainWindow.hpp"
@@ -652,6 +653,54 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("extremesAction")->setChecked(false);
     view->scene().setProbes({});
     window_->viewport()->setStandardView(StandardView::Isometric);
+  }
+
+  // View > Show Frame Rate times what the user waits for: a drag's frames and the full
+  // picture after it (on the small bar the CPU ray caster's frames are full at once, on a
+  // large model quick first); the log writes each one.
+  void theFrameRateIsShownAndLogged() {
+    Viewport* view = window_->viewport();
+    window_->findChild<QAction*>("volumeAction")->setChecked(true);
+    (void)settled(view);
+    auto* show = window_->findChild<QAction*>("showFrameRateAction");
+    QVERIFY(show);
+    show->setChecked(true);
+    auto* readout = view->findChild<QLabel*>("frameRate");
+    QVERIFY(readout && readout->isVisible());
+    QVERIFY(readout->text().contains("move the view"));
+    const QString logPath = QDir::temp().filePath("volpost_frame_times.txt");
+    QFile::remove(logPath);
+    auto* actions = window_->findChild<FrameRateActions*>();
+    QVERIFY(actions && actions->logTo(logPath));
+    QVERIFY(window_->findChild<QAction*>("logFrameTimesAction")->isChecked());
+    QPoint at = view->rect().center();
+    QTest::mousePress(view, Qt::LeftButton, {}, at);
+    for (int i = 0; i < 6; ++i) {
+      at += QPoint(8, 2);
+      QMouseEvent move(QEvent::MouseMove, QPointF(at), view->mapToGlobal(QPointF(at)), Qt::LeftButton, Qt::LeftButton,
+                       Qt::NoModifier);
+      QApplication::sendEvent(view, &move);
+      QTest::qWait(60);
+    }
+    QTest::mouseRelease(view, Qt::LeftButton, {}, at);
+    QTRY_VERIFY_WITH_TIMEOUT(view->frameTimes().changeToFullMs.has_value(), 60000);
+    const FrameTimes::Summary times = view->frameTimes();
+    QVERIFY(times.framesAnswered >= 2);
+    QVERIFY(*times.inputToFrameMs > 0.0);
+    QVERIFY2(readout->text().contains("after input") && readout->text().contains("full picture"),
+             qPrintable(readout->text()));
+    QVERIFY(actions->logTo({}));
+    QFile log(logPath);
+    QVERIFY(log.open(QIODevice::ReadOnly));
+    const QString lines = QString::fromUtf8(log.readAll());
+    QVERIFY2(lines.contains("ms after input, ") && lines.contains("after the last change"), qPrintable(lines));
+    QFile::remove(logPath);
+    // A log that cannot be written says so and stays off.
+    QVERIFY(!actions->logTo("/nonexistent/volpost/frames.txt"));
+    QVERIFY(window_->statusBar()->currentMessage().contains("/nonexistent/volpost/frames.txt"));
+    QVERIFY(!window_->findChild<QAction*>("logFrameTimesAction")->isChecked());
+    show->setChecked(false);
+    QVERIFY(!view->findChild<QLabel*>("frameRate"));
   }
 
   void steppingPlayingAndTheRangeOverSteps() {
