@@ -24,14 +24,15 @@
 #include <volpost/render/OffscreenTarget.hpp>
 
 #include <algorithm>
-#include <functional>
 #include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <optional>
 #include <thread>
@@ -56,6 +57,14 @@ void writeErrorImage(const std::filesystem::path& path, const std::vector<double
 }
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// CPU time of the whole process (every thread: the ray caster's workers and llvmpipe's
+// rasterizer threads alike), in ms: what a frame costs the machine, beside its wall time.
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+}
 
 Mesh kuhnGrid(int n) {  // n^3 cubes of 6 tets on [0, n]^3, as in Espinha 2005's grids
   Mesh m;
@@ -87,6 +96,7 @@ struct Case {
   FieldLocation location = FieldLocation::Node;
   std::vector<double> values;
   bool sharpPeak = false;  ///< the transfer function: a narrow opacity peak instead of a ramp
+  bool fog = false;        ///< and a thin extinction everywhere else: no tet can be skipped
 };
 
 // --model FILE --field NAME [--tf FILE]: any model the readers know, one scalar field (the
@@ -124,7 +134,13 @@ std::vector<Case> cases(bool quick) {
     Case c{"grid " + std::to_string(n) + "^3 wave, sharp peak", kuhnGrid(n), FieldLocation::Node, {}, true};
     for (const auto& p : c.mesh.nodes)
       c.values.push_back(std::sin(6.0 * p.x / n) * std::cos(5.0 * p.y / n) + 0.5 * std::sin(7.0 * p.z / n));
+    // The same peak in a thin fog: every tet is visible, none skipped (the scene where
+    // renderers that project every tet anyway lose nothing against a skipping ray caster).
+    Case fogged = c;
+    fogged.name = "grid " + std::to_string(n) + "^3 wave, sharp peak in fog (no tet skippable)";
+    fogged.fog = true;
     out.push_back(std::move(c));
+    out.push_back(std::move(fogged));
   }
   const std::string shared = VOLPOST_SHARED_DATA;
   if (!std::filesystem::exists(shared)) {
@@ -174,12 +190,17 @@ void exportCase(const std::filesystem::path& dir, const Case& c, const TransferF
   app::writeFloatImage((dir / (slug + ".reference.npy")).string(), reference.width, reference.height, rgba, glm::dvec3(0.0));
 }
 
-TransferFunction sharpPeakTf(const std::vector<double>& values, double diagonal) {
+// `fog`: a floor of extinction (0.5 per diagonal) under the peak, so no tet is transparent.
+TransferFunction sharpPeakTf(const std::vector<double>& values, double diagonal, bool fog) {
   double lo = INFINITY, hi = -INFINITY;
   for (double v : values) lo = std::min(lo, v), hi = std::max(hi, v);
   const double mid = lo + 0.6 * (hi - lo), half = 0.015 * (hi - lo), tau = 60.0 / diagonal;
-  return TransferFunction({{lo, {0.2, 0.3, 0.9}, 0.0}, {mid - half, {0.2, 0.3, 0.9}, 0.0}, {mid, {1.0, 0.6, 0.1}, tau},
-                           {mid + half, {0.9, 0.2, 0.1}, 0.0}, {hi, {0.9, 0.2, 0.1}, 0.0}});
+  const double floor = fog ? 0.5 / diagonal : 0.0;
+  return TransferFunction({{lo, {0.2, 0.3, 0.9}, floor},
+                           {mid - half, {0.2, 0.3, 0.9}, floor},
+                           {mid, {1.0, 0.6, 0.1}, tau},
+                           {mid + half, {0.9, 0.2, 0.1}, floor},
+                           {hi, {0.9, 0.2, 0.1}, floor}});
 }
 
 TransferFunction benchTf(const std::vector<double>& values, double diagonal) {
@@ -307,27 +328,33 @@ int main(int argc, char** argv) {
   HeadlessContext context;
   std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
               "premultiplied RGBA in 0..1\n\n", gl::describeContext().c_str(), size, size, frames);
-  std::printf("| mesh | tets | renderer / mode | ms/frame min / median / max | sort ms | tets/s | TF update ms | GPU MB (mesh B/tet) | RMSE | max error |\n");
-  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf(
+      "| mesh | tets | renderer / mode | ms/frame min / median / max | CPU ms/frame | sort ms | tets/s | TF update ms "
+      "| GPU MB (mesh B/tet) | RMSE | max error |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
   if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
   OffscreenTarget target(size, size);
   for (Case& c : modelPath ? std::move(chosen) : cases(quick)) {
     if (only && c.name.find(only) == std::string::npos) continue;
     const double diagonal = c.mesh.bounds().diagonal();
-    const TransferFunction tf = fileTf ? *fileTf : c.sharpPeak ? sharpPeakTf(c.values, diagonal) : benchTf(c.values, diagonal);
+    const TransferFunction tf = fileTf        ? *fileTf
+                                : c.sharpPeak ? sharpPeakTf(c.values, diagonal, c.fog)
+                                              : benchTf(c.values, diagonal);
     Camera camera;
     camera.setView(StandardView::Isometric);
     camera.fit(c.mesh.bounds());
     if (eye) camera.lookAt(*eye, *lookAt, up.value_or(glm::dvec3(0.0, 0.0, 1.0)));
     if (viewAngle > 0.0) camera.setFieldOfView(viewAngle);
     const auto refStart = Clock::now();
+    const double refCpuStart = processCpuMs();
     const optics::TetVolume volume(c.mesh, c.location, c.values);
     const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
-    const double refMs = msSince(refStart);
+    const double refMs = msSince(refStart), refCpuMs = processCpuMs() - refCpuStart;
     if (exportDir) exportCase(exportDir, c, tf, camera, reference);
-    std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | - | %.3g | - | - | 0 | 0 |\n", c.name.c_str(),
-                volume.tetCount(), std::thread::hardware_concurrency(), refMs, double(volume.tetCount()) / (refMs / 1e3));
+    std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | %.0f | - | %.3g | - | - | 0 | 0 |\n",
+                c.name.c_str(), volume.tetCount(), std::thread::hardware_concurrency(), refMs, refCpuMs,
+                double(volume.tetCount()) / (refMs / 1e3));
     // The CPU renderer: without early termination (like with like), then with its default.
     {
       const auto prepStart = Clock::now();
@@ -345,21 +372,25 @@ int main(int argc, char** argv) {
             worst = std::max(worst, std::abs(d));
           }
         const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
-        std::vector<double> times;
+        std::vector<double> times, cpuTimes;
         Camera orbit = camera;
         for (int f = 0; f < frames; ++f) {
           const auto t0 = Clock::now();
+          const double cpu0 = processCpuMs();
           (void)volume::renderCpu(walkMesh, tf, orbit, size, size, settings);
           times.push_back(msSince(t0));
+          cpuTimes.push_back(processCpuMs() - cpu0);
           orbit.orbit(360.0 / frames, 0.0);
         }
         std::sort(times.begin(), times.end());
+        std::sort(cpuTimes.begin(), cpuTimes.end());
         const double median = times[times.size() / 2];
         char label[160];
         std::snprintf(label, sizeof label, "cpu (%u threads, stop at %g; entries %.0f ms, walk %.0f ms, prepare %.0f ms)",
                       first.stats.threads, stopAt, first.stats.entryMs, first.stats.walkMs, prepMs);
-        std::printf("| %s | %zu | %s | %.0f / %.0f / %.0f | - | %.3g | - | host %.1f (%.0f) | %.2g | %.2g |\n", c.name.c_str(),
-                    walkMesh.tetCount(), label, times.front(), median, times.back(), double(walkMesh.tetCount()) / (median / 1e3),
+        std::printf("| %s | %zu | %s | %.0f / %.0f / %.0f | %.0f | - | %.3g | - | host %.1f (%.0f) | %.2g | %.2g |\n",
+                    c.name.c_str(), walkMesh.tetCount(), label, times.front(), median, times.back(),
+                    cpuTimes[cpuTimes.size() / 2], double(walkMesh.tetCount()) / (median / 1e3),
                     walkMesh.bytes() / 1048576.0, double(walkMesh.bytes()) / double(walkMesh.tetCount()), rmse, worst);
         std::fflush(stdout);
         if (csv) std::fprintf(csv, "%s,cpu stop %g,%.3f,%.6g,%.6g\n", c.name.c_str(), stopAt, median, rmse, worst);
@@ -405,13 +436,18 @@ int main(int argc, char** argv) {
         std::sort(times.begin() + 5, times.end());  // the first frames measure the cost per ray
         const double median = times[5 + (times.size() - 5) / 2];
         // Every tet renderer's quick frames are ray cast (cell projection's too).
-        std::printf("| %s | %zu | %s, window 1024x768 turning: quick frames (1 ray per %dx%d pixels) | %.0f / %.0f / %.0f | - | "
-                    "%.1f frames/s | - | - | - | - |\n", c.name.c_str(), c.mesh.cellCount(), name, reduction, reduction,
-                    times[5], median, times.back(), 1000.0 / median);
+        std::printf(
+            "| %s | %zu | %s, window 1024x768 turning: quick frames (1 ray per %dx%d pixels) | %.0f / %.0f / %.0f | - "
+            "| - | "
+            "%.1f frames/s | - | - | - | - |\n",
+            c.name.c_str(), c.mesh.cellCount(), name, reduction, reduction, times[5], median, times.back(),
+            1000.0 / median);
         std::sort(slices.begin(), slices.end());
-        std::printf("| %s | %zu | %s, window 1024x768 at rest: %zu calls to the full picture | %.0f / %.0f / %.0f | - | "
-                    "full in %.0f ms | - | - | - | - |\n", c.name.c_str(), c.mesh.cellCount(), name, slices.size(), slices.front(),
-                    slices[slices.size() / 2], slices.back(), restMs);
+        std::printf(
+            "| %s | %zu | %s, window 1024x768 at rest: %zu calls to the full picture | %.0f / %.0f / %.0f | - | - | "
+            "full in %.0f ms | - | - | - | - |\n",
+            c.name.c_str(), c.mesh.cellCount(), name, slices.size(), slices.front(), slices[slices.size() / 2],
+            slices.back(), restMs);
         std::fflush(stdout);
       };
       volume::CpuVolumeRenderer cpu;
@@ -475,26 +511,29 @@ int main(int argc, char** argv) {
         writeErrorImage(std::filesystem::path(errorImages) / (name + ".pgm"), pixelErrors, size);
       }
       const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
-      std::vector<double> times, sorts;
+      std::vector<double> times, sorts, cpuTimes;
       Camera orbit = camera;
       for (int f = 0; f < frames; ++f) {
         ctx.camera = orbit;
         const auto t0 = Clock::now();
+        const double cpu0 = processCpuMs();
         caster->render(ctx);
         glFinish();
         times.push_back(msSince(t0));
+        cpuTimes.push_back(processCpuMs() - cpu0);
         sorts.push_back(caster->stats().lastSortMs);
         orbit.orbit(360.0 / frames, 0.0);
       }
       std::sort(times.begin(), times.end());
       std::sort(sorts.begin(), sorts.end());
+      std::sort(cpuTimes.begin(), cpuTimes.end());
       const double median = times[times.size() / 2];
       const VolumeStats st = caster->stats();
       const std::string sortMs = caster == &raycaster ? "-" : std::to_string(int(std::lround(sorts[sorts.size() / 2])));
-      std::printf("| %s | %zu | %s / %s | %.0f / %.0f / %.0f | %s | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
-                  c.name.c_str(), st.tetrahedra, label, toString(mode).data(), times.front(), median, times.back(), sortMs.c_str(),
-                  double(st.tetrahedra) / (median / 1e3), tfMs, st.gpuBytes / 1048576.0,
-                  double(st.meshBytes) / double(st.tetrahedra), rmse, worst);
+      std::printf("| %s | %zu | %s / %s | %.0f / %.0f / %.0f | %.0f | %s | %.3g | %.0f | %.1f (%.0f) | %.2g | %.2g |\n",
+                  c.name.c_str(), st.tetrahedra, label, toString(mode).data(), times.front(), median, times.back(),
+                  cpuTimes[cpuTimes.size() / 2], sortMs.c_str(), double(st.tetrahedra) / (median / 1e3), tfMs,
+                  st.gpuBytes / 1048576.0, double(st.meshBytes) / double(st.tetrahedra), rmse, worst);
       std::fflush(stdout);
       if (csv)
         std::fprintf(csv, "%s,%s%s,%.3f,%.6g,%.6g\n", c.name.c_str(), caster == &raycaster ? "" : (caster == &vicp ? "vicp " : "vicp-exact "),
