@@ -6,12 +6,13 @@
 // writes a CSV for the speed-versus-error plot.
 //   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]
 //                        [--error-images DIR]  (one PGM per row: white = off by 0.05 or more)
+#include "AllReaders.hpp"
 #include "CellProjector.hpp"
+#include "KuhnGrid.hpp"
 #include "RayCaster.hpp"
 #include "TetVolumeRenderer.hpp"
 #include "VtkLegacyReader.hpp"
 #include "VtuReader.hpp"
-#include "AllReaders.hpp"
 
 #include <volpost/core/MeshChecks.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
@@ -40,6 +41,7 @@
 
 using namespace volpost;
 using Clock = std::chrono::steady_clock;
+using volpost::bench::kuhnGrid;
 
 namespace {
 
@@ -64,30 +66,6 @@ double processCpuMs() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
-}
-
-Mesh kuhnGrid(int n) {  // n^3 cubes of 6 tets on [0, n]^3, as in Espinha 2005's grids
-  Mesh m;
-  auto id = [n](int i, int j, int k) { return NodeIndex((k * (n + 1) + j) * (n + 1) + i); };
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) m.nodes.push_back({double(i), double(j), double(k)});
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        int axes[3] = {0, 1, 2};
-        do {
-          int c[3] = {i, j, k};
-          NodeIndex t[4];
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[axes[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          m.addCell(CellType::Tet4, t);
-        } while (std::next_permutation(axes, axes + 3));
-      }
-  return m;
 }
 
 struct Case {

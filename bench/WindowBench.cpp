@@ -12,6 +12,8 @@
 
 #include "host/VtuWriter.hpp"
 
+#include "KuhnGrid.hpp"
+
 #include <volpost/core/Model.hpp>
 #include <volpost/plugin/PluginManager.hpp>
 
@@ -38,38 +40,25 @@ using namespace volpost::app;
 
 namespace {
 
-// n^3 cubes of 6 tets on [0, 1]^3 with a smooth wave at every node, written as .vtu.
+// n^3 cubes of 6 tets on [0, 1]^3 (the benches' Kuhn grid, scaled, every tet wound outward
+// as a mesher writes them) with a smooth wave at every node, written as .vtu.
 std::string writeKuhnGrid(int n, const std::filesystem::path& dir) {
+  const Mesh grid = bench::kuhnGrid(n);
   auto model = std::make_shared<Model>();
   Mesh& m = model->mesh();
-  const auto id = [n](int i, int j, int k) { return NodeIndex((k * (n + 1) + j) * (n + 1) + i); };
   std::vector<double> wave;
-  for (int k = 0; k <= n; ++k)
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) {
-        const glm::dvec3 p(double(i) / n, double(j) / n, double(k) / n);
-        m.nodes.push_back(p);
-        wave.push_back(std::sin(6.0 * p.x) * std::cos(5.0 * p.y) + p.z);
-      }
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        int axes[3] = {0, 1, 2};
-        do {
-          int c[3] = {i, j, k};
-          NodeIndex t[4];
-          t[0] = id(c[0], c[1], c[2]);
-          for (int s = 0; s < 3; ++s) {
-            ++c[axes[s]];
-            t[s + 1] = id(c[0], c[1], c[2]);
-          }
-          // Half the permutations wind the tet inward: turned, as a mesher writes them.
-          const glm::dvec3 p0 = m.nodes[t[0]];
-          if (glm::dot(m.nodes[t[1]] - p0, glm::cross(m.nodes[t[2]] - p0, m.nodes[t[3]] - p0)) < 0.0)
-            std::swap(t[2], t[3]);
-          m.addCell(CellType::Tet4, t);
-        } while (std::next_permutation(axes, axes + 3));
-      }
+  for (const glm::dvec3& node : grid.nodes) {
+    const glm::dvec3 p = node / double(n);
+    m.nodes.push_back(p);
+    wave.push_back(std::sin(6.0 * p.x) * std::cos(5.0 * p.y) + p.z);
+  }
+  for (std::size_t c = 0; c < grid.cellCount(); ++c) {
+    const auto nodes = grid.cellNodes(c);
+    NodeIndex t[4] = {nodes[0], nodes[1], nodes[2], nodes[3]};
+    const glm::dvec3 p0 = m.nodes[t[0]];
+    if (glm::dot(m.nodes[t[1]] - p0, glm::cross(m.nodes[t[2]] - p0, m.nodes[t[3]] - p0)) < 0.0) std::swap(t[2], t[3]);
+    m.addCell(CellType::Tet4, t);
+  }
   model->fields.push_back(Field::fromValues("wave", FieldLocation::Node, 1, {wave}));
   const std::filesystem::path path = dir / ("volpost_window_bench_kuhn_" + std::to_string(n) + ".vtu");
   writeVtu(*model, path.string());
