@@ -192,6 +192,66 @@ glm::dvec3 positionAt(CellType type, std::span<const glm::dvec3> nodes, const gl
   return origin + x;
 }
 
+namespace {
+
+// The shape functions at xi with their derivatives along the natural coordinates.
+void evaluateWithDerivatives(CellType type, const glm::dvec3& xi, Dual n[kMaxCellNodes]) {
+  Dual d[3];
+  for (int k = 0; k < 3; ++k) d[k] = Dual{xi[k], glm::dvec3(0.0)}, d[k].d[k] = 1.0;
+  evaluate(type, d, n);
+}
+
+}  // namespace
+
+glm::dmat3 jacobianAt(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& xi) {
+  Dual n[kMaxCellNodes];
+  evaluateWithDerivatives(type, xi, n);
+  const int count = std::min(int(nodes.size()), topology(type).nodeCount);
+  glm::dmat3 jacobian(0.0);
+  for (int i = 0; i < count; ++i)
+    for (int k = 0; k < 3; ++k) jacobian[k] += n[i].d[k] * (nodes[std::size_t(i)] - nodes[0]);
+  return jacobian;
+}
+
+glm::dvec3 fieldGradient(CellType type, std::span<const glm::dvec3> nodes, std::span<const double> values,
+                         const glm::dvec3& xi) {
+  Dual n[kMaxCellNodes];
+  evaluateWithDerivatives(type, xi, n);
+  const int count = std::min({int(nodes.size()), int(values.size()), topology(type).nodeCount});
+  glm::dmat3 jacobian(0.0);
+  glm::dvec3 natural(0.0);
+  for (int i = 0; i < count; ++i) {
+    natural += values[std::size_t(i)] * n[i].d;
+    for (int k = 0; k < 3; ++k) jacobian[k] += n[i].d[k] * (nodes[std::size_t(i)] - nodes[0]);
+  }
+  // dS/dxi = J^T grad S, so grad S = J^-T dS/dxi.
+  const double det = glm::determinant(jacobian);
+  if (!(std::abs(det) > 0.0) || !std::isfinite(det)) return glm::dvec3(0.0);
+  return glm::inverse(glm::transpose(jacobian)) * natural;
+}
+
+bool mapInvertible(CellType type, std::span<const glm::dvec3> nodes) {
+  const CellTopology& topo = topology(type);
+  if (int(nodes.size()) != topo.nodeCount) return false;
+  double size = 0.0;
+  for (const glm::dvec3& x : nodes) size = std::max(size, glm::length(x - nodes[0]));
+  if (!(size > 0.0) || !std::isfinite(size)) return false;
+  const double tiny = 1e-12 * size * size * size;
+  int sign = 0;
+  const auto sameSign = [&](const glm::dvec3& xi) {
+    const double det = glm::determinant(jacobianAt(type, nodes, xi));
+    const int s = det > tiny ? 1 : det < -tiny ? -1 : 0;
+    if (s == 0 || (sign != 0 && s != sign)) return false;
+    sign = s;
+    return true;
+  };
+  for (int corner = 0; corner < topo.cornerCount; ++corner) {
+    if (type == CellType::Pyramid5 && corner == 4) continue;
+    if (!sameSign(cornerOf(type, corner))) return false;
+  }
+  return sameSign(referenceCentre(type));
+}
+
 std::optional<glm::dvec3> naturalCoordinates(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& p,
                                              const glm::dvec3& start) {
   const int count = topology(type).nodeCount;

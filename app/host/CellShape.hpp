@@ -12,6 +12,7 @@
 
 #include <volpost/core/CellType.hpp>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -49,5 +50,20 @@ glm::dvec3 positionAt(CellType type, std::span<const glm::dvec3> nodes, const gl
 /// far outside it).
 std::optional<glm::dvec3> naturalCoordinates(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& p,
                                              const glm::dvec3& start);
+
+/// The Jacobian of the cell's map at `xi` (column k: dx/dxi_k), exact by forward
+/// differentiation of the shape functions.
+glm::dmat3 jacobianAt(CellType type, std::span<const glm::dvec3> nodes, const glm::dvec3& xi);
+
+/// The gradient per length unit, at natural coordinates `xi`, of the field with these node
+/// values interpolated by the shape functions (the inverse transposed Jacobian times the
+/// natural gradient); zero where the map is singular there.
+glm::dvec3 fieldGradient(CellType type, std::span<const glm::dvec3> nodes, std::span<const double> values,
+                         const glm::dvec3& xi);
+
+/// Whether the cell's map can be inverted: its Jacobian determinant has one strict sign at
+/// every corner (a pyramid's apex, where every pyramid's map is singular, aside) and at the
+/// centre. A folded, inverted or collapsed cell fails.
+bool mapInvertible(CellType type, std::span<const glm::dvec3> nodes);
 
 }  // namespace volpost

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "host/optics/ReferenceRenderer.hpp"
 
+#include "host/optics/PolynomialSegment.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -94,16 +96,74 @@ SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& 
   return total;
 }
 
+namespace {
+
+SegmentLight linearTetSegment(const TetVolume& volume, const TransferFunction& tf, const RaySettings& settings,
+                              const LocalRay& r, const Interval& i) {
+  const PreparedTet& tet = volume.tet(i.tet);
+  const double sFront = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t0 * r.d);
+  const double sBack = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t1 * r.d);
+  return segmentWithSurfaces(tf, settings, sFront, sBack, i.t1 - i.t0, tet.gradient, r.d);
+}
+
+// How far the fitted polynomial may stray from the element's field, relative to the
+// field's range, before a segment is halved; and how often it may be halved.
+constexpr double kFitTolerance = 1e-10;
+constexpr int kMaxHalvings = 10;
+
+// The ray from t0 to t1 inside one cell, through the cell's own interpolation: fitted by a
+// polynomial (halved until it fits), each piece integrated to rounding. nullopt where the
+// cell's map could not be inverted at a point of the ray.
+std::optional<SegmentLight> elementSegment(const ElementField& field, std::uint32_t cell, const TransferFunction& tf,
+                                           const RaySettings& settings, const LocalRay& r, double t0, double t1,
+                                           int halvings = 0) {
+  const double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
+  glm::dvec3 xi = field.start(cell);
+  double error = 0.0;
+  const auto p = fitChebyshev([&](double u) { return field.value(cell, r.o + (mid + half * u) * r.d, xi); }, error);
+  if (!p) return std::nullopt;
+  if (error > kFitTolerance * field.valueScale() && halvings < kMaxHalvings) {
+    auto front = elementSegment(field, cell, tf, settings, r, t0, mid, halvings + 1);
+    auto back = elementSegment(field, cell, tf, settings, r, mid, t1, halvings + 1);
+    if (!front || !back) return std::nullopt;
+    compositeBehind(*front, *back);
+    return front;
+  }
+  const auto gradientAt = [&](double u) {
+    glm::dvec3 at = xi;
+    return field.value(cell, r.o + (mid + half * u) * r.d, at) ? field.gradient(cell, at) : glm::dvec3(0.0);
+  };
+  return integratePolynomialSegment(tf, settings.isoSurfaces, *p, t1 - t0, gradientAt, r.d);
+}
+
+}  // namespace
+
 SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
                           double tMin, double tMax, const RaySettings& settings) {
   const LocalRay r = localRay(volume, origin, direction, tMin, tMax);
+  const ElementField* field = settings.elementField;
   SegmentLight total;
-  for (const Interval& i : intervals(volume, r.o, r.d, r.tMin, r.tMax, settings)) {
-    const PreparedTet& tet = volume.tet(i.tet);
-    const double sFront = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t0 * r.d);
-    const double sBack = tet.valueAtOrigin + glm::dot(tet.gradient, r.o + i.t1 * r.d);
-    compositeBehind(total, segmentWithSurfaces(tf, settings, sFront, sBack, i.t1 - i.t0, tet.gradient, r.d));
-    if (total.transmittance < settings.terminationTransmittance) break;
+  const std::vector<Interval> list = intervals(volume, r.o, r.d, r.tMin, r.tMax, settings);
+  for (std::size_t i = 0; i < list.size() && total.transmittance >= settings.terminationTransmittance; ++i) {
+    const std::uint32_t cell = field ? field->cellOfTet(volume.tet(list[i].tet).source) : 0;
+    if (!field || field->linearIn(cell)) {
+      compositeBehind(total, linearTetSegment(volume, tf, settings, r, list[i]));
+      continue;
+    }
+    // The cell's tets the ray crosses one after another make one stretch of the cell.
+    std::size_t last = i;
+    double end = list[i].t1;
+    while (last + 1 < list.size() && list[last + 1].t0 <= end &&
+           field->cellOfTet(volume.tet(list[last + 1].tet).source) == cell)
+      end = std::max(end, list[++last].t1);
+    if (const auto light = elementSegment(*field, cell, tf, settings, r, list[i].t0, end)) {
+      compositeBehind(total, *light);
+    } else {  // the map could not be inverted along this ray: the split's field there
+      field->countFallback();
+      for (std::size_t k = i; k <= last; ++k)
+        compositeBehind(total, linearTetSegment(volume, tf, settings, r, list[k]));
+    }
+    i = last;
   }
   return total;
 }

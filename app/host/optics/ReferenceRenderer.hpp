@@ -15,6 +15,7 @@
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
+#include "host/optics/ElementField.hpp"
 #include "host/optics/TetVolume.hpp"
 
 #include <glm/vec4.hpp>
@@ -33,6 +34,9 @@ struct RaySettings {
   /// Regular grids: the emission shaded by the trilinear gradient with the light at the eye
   /// (volpost/core/optics/Headlight.hpp), exactly at every quadrature point.
   bool shading = false;
+  /// The field as the cells' own shape functions interpolate it (null: linear on the
+  /// tetrahedra). It must be built on the same split and origin as the volume.
+  const ElementField* elementField = nullptr;
 };
 
 /// Integrates one ray: origin in model coordinates, direction of any length (distances

@@ -67,6 +67,7 @@ TetVolume::TetVolume(const Mesh& mesh, FieldLocation location, std::span<const d
     tet.gradient = glm::inverse(glm::transpose(edges)) * ds;
     if (location == FieldLocation::Cell) tet.gradient = glm::dvec3(0.0);
     tet.valueAtOrigin = s[0] - glm::dot(tet.gradient, p[0]);
+    tet.source = std::uint32_t(c);
     tets_.push_back(tet);
     glm::dvec3 lo = glm::min(glm::min(p[0], p[1]), glm::min(p[2], p[3]));
     glm::dvec3 hi = glm::max(glm::max(p[0], p[1]), glm::max(p[2], p[3]));

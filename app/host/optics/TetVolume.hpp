@@ -27,6 +27,7 @@ struct PreparedTet {
   std::array<TetPlane, 4> planes;
   glm::dvec3 gradient;  ///< of the scalar, per length unit
   double valueAtOrigin; ///< scalar at the mesh-relative origin: s(x) = valueAtOrigin + gradient . x
+  std::uint32_t source;  ///< its index in the mesh it was built from
 };
 
 class TetVolume {

@@ -111,5 +111,31 @@ TEST_P(EachCellType, InverseMapFindsTheNaturalCoordinatesOnACurvedCellFarFromThe
   EXPECT_FALSE(naturalCoordinates(type, collapsed, glm::dvec3(1.0), referenceCentre(type)));
 }
 
+TEST_P(EachCellType, GradientOfAFieldItReproducesIsExactOnACurvedCell) {
+  // Isoparametric cells reproduce every linear field, curved or not: the field 2x - 3y + z
+  // sampled at the nodes has that gradient everywhere inside.
+  const CellType type = GetParam();
+  const std::vector<glm::dvec3> nodes = curvedCell(type);
+  std::vector<double> values;
+  for (const glm::dvec3& x : nodes) values.push_back(2.0 * x.x - 3.0 * x.y + x.z);
+  std::mt19937 random(5);
+  for (int k = 0; k < 50; ++k) {
+    const glm::dvec3 g = fieldGradient(type, nodes, values, randomInside(type, random));
+    EXPECT_LT(glm::length(g - glm::dvec3(2.0, -3.0, 1.0)), 1e-9) << k;
+  }
+}
+
+TEST_P(EachCellType, AnInvertedOrCollapsedCellsMapIsNotInvertible) {
+  const CellType type = GetParam();
+  std::vector<glm::dvec3> nodes = curvedCell(type);
+  EXPECT_TRUE(mapInvertible(type, nodes));
+  // Pull the first corner through the cell to beyond its opposite side: the Jacobian changes sign.
+  const glm::dvec3 centre = mapped(type, nodes, referenceCentre(type));
+  nodes[0] = centre + 3.0 * (centre - nodes[0]);
+  EXPECT_EQ(mapInvertible(type, nodes), type == CellType::Tet4);  // a mirrored tet4 is still a tet4
+  const std::vector<glm::dvec3> collapsed(nodes.size(), glm::dvec3(1.0));
+  EXPECT_FALSE(mapInvertible(type, collapsed));
+}
+
 INSTANTIATE_TEST_SUITE_P(Cells, EachCellType, ::testing::ValuesIn(kAllCellTypes),
                          [](const auto& p) { return std::string(cellTypeName(p.param)); });

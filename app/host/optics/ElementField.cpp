@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "host/optics/ElementField.hpp"
+
+#include "host/CellShape.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace volpost::optics {
+
+ElementField::ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin)
+    : mesh_(mesh),
+      values_(values.begin(), values.end()),
+      tets_(tets),
+      origin_(origin),
+      elementCells_(mesh.cellCount(), 0) {
+  if (values.size() != mesh.nodeCount())
+    throw std::invalid_argument("the element interpolation needs one value per node: " + std::to_string(values.size()) +
+                                " values for " + std::to_string(mesh.nodeCount()) + " nodes");
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values_)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  scale_ = hi > lo ? hi - lo : (std::isfinite(lo) && lo != 0.0 ? std::abs(lo) : 1.0);
+  glm::dvec3 nodes[kMaxCellNodes];
+  double cellValues[kMaxCellNodes];
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    const CellType type = mesh.cellType(c);
+    if (type == CellType::Tet4) continue;  // linear: its split (itself) is its field
+    const int count = gather(std::uint32_t(c), nodes, cellValues);
+    bool finite = true;
+    for (int i = 0; i < count; ++i) finite = finite && std::isfinite(cellValues[i]);
+    if (!finite) continue;  // the split leaves its tets out
+    if (mapInvertible(type, std::span<const glm::dvec3>(nodes, std::size_t(count)))) elementCells_[c] = 1;
+    else uninvertible_.push_back(std::uint32_t(c));
+  }
+}
+
+int ElementField::gather(std::uint32_t cell, glm::dvec3* nodes, double* values) const {
+  const auto ids = mesh_.cellNodes(cell);
+  const int count = std::min(int(ids.size()), kMaxCellNodes);
+  for (int i = 0; i < count; ++i) {
+    nodes[i] = mesh_.nodes[ids[std::size_t(i)]] - origin_;
+    values[i] = values_[ids[std::size_t(i)]];
+  }
+  return count;
+}
+
+std::optional<double> ElementField::value(std::uint32_t cell, const glm::dvec3& p, glm::dvec3& xi) const {
+  glm::dvec3 nodes[kMaxCellNodes];
+  double values[kMaxCellNodes];
+  const int count = gather(cell, nodes, values);
+  const CellType type = mesh_.cellType(cell);
+  const auto found = naturalCoordinates(type, std::span<const glm::dvec3>(nodes, std::size_t(count)), p, xi);
+  if (!found) return std::nullopt;
+  xi = *found;
+  const ShapeValues n = shapeFunctions(type, xi);
+  double v = 0.0;
+  for (int i = 0; i < count; ++i) v += n[std::size_t(i)] * values[i];
+  return v;
+}
+
+glm::dvec3 ElementField::gradient(std::uint32_t cell, const glm::dvec3& xi) const {
+  glm::dvec3 nodes[kMaxCellNodes];
+  double values[kMaxCellNodes];
+  const int count = gather(cell, nodes, values);
+  return fieldGradient(mesh_.cellType(cell), std::span<const glm::dvec3>(nodes, std::size_t(count)),
+                       std::span<const double>(values, std::size_t(count)), xi);
+}
+
+glm::dvec3 ElementField::start(std::uint32_t cell) const { return referenceCentre(mesh_.cellType(cell)); }
+
+}  // namespace volpost::optics

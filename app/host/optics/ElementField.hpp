@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The field as the finite-element program defines it: in each cell, the node values
+// through the cell's own shape functions (trilinear in a hex8, quadratic in a tet10,
+// serendipity in a hex20 and a wedge15), found at a point through the inverse of the
+// cell's isoparametric map. The reference integrates it, instead of the field linear on the
+// tetrahedra the cells are split into, when asked for the element interpolation. The split
+// still gives the geometry: exact for cells with straight edges and plane faces; a warped
+// face or a curved edge is drawn as its split's facets (docs/methods/element_field.md).
+#pragma once
+
+#include <volpost/core/Mesh.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace volpost::optics {
+
+class ElementField {
+ public:
+  /// `mesh`: the cells as the file has them, `values` one per node; `tets`: their split.
+  /// Points given to the methods are relative to `origin`. The mesh and the split are
+  /// referenced, not copied: they must outlive this.
+  ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin);
+
+  std::uint32_t cellOfTet(std::size_t tet) const { return tets_.sourceCell(tet); }
+  /// Where the split's linear field is the whole story: a tet4, or a cell whose map cannot
+  /// be inverted (folded, inverted, collapsed: drawn by its split and listed).
+  bool linearIn(std::uint32_t cell) const { return !elementCells_[cell]; }
+  /// The cells whose map cannot be inverted, ascending.
+  const std::vector<std::uint32_t>& uninvertibleCells() const { return uninvertible_; }
+  /// The values' range (what tolerances are relative to; 1 when they are all equal).
+  double valueScale() const { return scale_; }
+
+  /// The value at `p` in `cell`; `xi` is where the inverse map starts and gets the natural
+  /// coordinates found. nullopt where the map's iteration does not converge.
+  std::optional<double> value(std::uint32_t cell, const glm::dvec3& p, glm::dvec3& xi) const;
+  /// The gradient per length unit at natural coordinates `xi` of `cell`.
+  glm::dvec3 gradient(std::uint32_t cell, const glm::dvec3& xi) const;
+  /// Where the inverse map starts in this cell.
+  glm::dvec3 start(std::uint32_t cell) const;
+
+  /// Ray stretches where the inverse map did not converge and the split's field was drawn.
+  void countFallback() const { ++fallbacks_; }
+  std::size_t fallbacks() const { return fallbacks_; }
+
+ private:
+  int gather(std::uint32_t cell, glm::dvec3* nodes, double* values) const;
+
+  const Mesh& mesh_;
+  std::vector<double> values_;
+  const TetMesh& tets_;
+  glm::dvec3 origin_;
+  std::vector<char> elementCells_;
+  std::vector<std::uint32_t> uninvertible_;
+  double scale_ = 1.0;
+  mutable std::atomic<std::size_t> fallbacks_{0};
+};
+
+}  // namespace volpost::optics

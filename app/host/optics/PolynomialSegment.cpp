@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+#include "host/optics/PolynomialSegment.hpp"
+
+#include "host/optics/ReferenceRenderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace volpost::optics {
+namespace {
+
+constexpr int kGaussPoints = 16;
+constexpr double kPanelDepth = 0.1;  // optical depth per quadrature panel
+constexpr double kDark = 1e-20;      // transmittance below which nothing behind is seen
+
+struct GaussLegendre {
+  std::array<double, kGaussPoints> x{}, w{};
+};
+
+// Nodes and weights on [-1, 1] by Newton's method on the Legendre polynomial, once.
+const GaussLegendre& gaussLegendre() {
+  static const GaussLegendre rule = [] {
+    GaussLegendre g;
+    const int n = kGaussPoints;
+    for (int i = 0; i < n; ++i) {
+      double x = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+      for (int iteration = 0; iteration < 100; ++iteration) {
+        double p0 = 1.0, p1 = x;
+        for (int k = 2; k <= n; ++k) {
+          const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+          p0 = p1;
+          p1 = p2;
+        }
+        dp = n * (x * p1 - p0) / (x * x - 1.0);
+        const double step = p1 / dp;
+        x -= step;
+        if (std::abs(step) < 1e-16) break;
+      }
+      g.x[std::size_t(i)] = x;
+      g.w[std::size_t(i)] = 2.0 / ((1.0 - x * x) * dp * dp);
+    }
+    return g;
+  }();
+  return rule;
+}
+
+// The value where a monotone p reaches `target` in [a, b] (p(a) and p(b) on either side):
+// Newton steps kept inside a shrinking bracket, bisection where a step leaves it.
+double solveMonotone(const ScalarPolynomial& p, const ScalarPolynomial& dp, double target, double a, double b) {
+  double fa = p.at(a) - target;
+  double x = 0.5 * (a + b);
+  for (int iteration = 0; iteration < 200 && b - a > 1e-16 * (1.0 + std::abs(a) + std::abs(b)); ++iteration) {
+    const double f = p.at(x) - target;
+    if (f == 0.0) return x;
+    if ((f < 0.0) == (fa < 0.0)) a = x, fa = f;
+    else b = x;
+    const double slope = dp.at(x);
+    double next = slope != 0.0 ? x - f / slope : 0.5 * (a + b);
+    if (!(next > a && next < b)) next = 0.5 * (a + b);
+    if (next == x) break;
+    x = next;
+  }
+  return x;
+}
+
+// A stretch where the scalar goes monotonically from s0 to s1 and no control point lies
+// strictly between them: extinction and color are linear in the scalar.
+SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s, const ScalarPolynomial& integral,
+                           double ua, double ub, double s0, double s1, double halfLength) {
+  if (!(ub > ua)) return {};
+  const double length = (ub - ua) * halfLength;
+  if (s0 == s1) return constantSegment(tf.color(s0), tf.extinction(s0), length);
+  const bool rising = s1 > s0;
+  const TransferSample a = sampleSide(tf, s0, !rising), b = sampleSide(tf, s1, rising);
+  const double slope = (b.extinction - a.extinction) / (s1 - s0);  // extinction per unit scalar
+  const double integralAtA = integral.at(ua);
+  // Optical depth from ua: halfLength * integral of (a.extinction + slope (s(v) - s0)) dv.
+  const auto depth = [&](double u) {
+    return halfLength * (a.extinction * (u - ua) + slope * (integral.at(u) - integralAtA - s0 * (u - ua)));
+  };
+  const double total = std::max(0.0, depth(ub));
+  SegmentLight light{glm::dvec3(0.0), std::exp(-total)};
+  if (a.color == b.color) {  // the emission integrates to color * (1 - transmittance)
+    light.color = a.color * (1.0 - light.transmittance);
+    return light;
+  }
+  const GaussLegendre& g = gaussLegendre();
+  const auto emitted = [&](double u) {
+    const double w = std::clamp((s.at(u) - s0) / (s1 - s0), 0.0, 1.0);
+    const glm::dvec3 color = a.color + w * (b.color - a.color);
+    const double extinction = a.extinction + w * (b.extinction - a.extinction);
+    return color * (extinction * std::exp(-std::max(0.0, depth(u))) * halfLength);
+  };
+  // Panels of optical depth <= kPanelDepth, split in half until they are.
+  struct Panel {
+    double u0, u1;
+    int level;
+  };
+  std::vector<Panel> stack{{ua, ub, 0}};
+  std::vector<Panel> panels;
+  while (!stack.empty()) {
+    const Panel p = stack.back();
+    stack.pop_back();
+    const double d0 = depth(p.u0);
+    if (std::exp(-d0) < kDark) continue;  // nothing of it is seen
+    if (depth(p.u1) - d0 > kPanelDepth && p.level < 48) {
+      const double mid = 0.5 * (p.u0 + p.u1);
+      stack.push_back({mid, p.u1, p.level + 1});
+      stack.push_back({p.u0, mid, p.level + 1});
+      continue;
+    }
+    const double centre = 0.5 * (p.u0 + p.u1), half = 0.5 * (p.u1 - p.u0);
+    for (int i = 0; i < kGaussPoints; ++i)
+      light.color += (g.w[std::size_t(i)] * half) * emitted(centre + half * g.x[std::size_t(i)]);
+  }
+  return light;
+}
+
+struct Cut {
+  double u, s;
+  const IsoSurface* surface;  ///< the iso-surface composited here, or none
+};
+
+}  // namespace
+
+double ScalarPolynomial::at(double u) const {
+  double v = c[std::size_t(degree)];
+  for (int k = degree - 1; k >= 0; --k) v = v * u + c[std::size_t(k)];
+  return v;
+}
+
+ScalarPolynomial ScalarPolynomial::derivative() const {
+  ScalarPolynomial d;
+  d.degree = std::max(0, degree - 1);
+  for (int k = 1; k <= degree; ++k) d.c[std::size_t(k - 1)] = k * c[std::size_t(k)];
+  return d;
+}
+
+ScalarPolynomial ScalarPolynomial::antiderivative() const {
+  ScalarPolynomial a;
+  a.degree = std::min(degree + 1, int(a.c.size()) - 1);
+  for (int k = 0; k < a.degree; ++k) a.c[std::size_t(k + 1)] = c[std::size_t(k)] / (k + 1);
+  return a;
+}
+
+std::vector<double> zerosIn(const ScalarPolynomial& p, double a, double b) {
+  std::vector<double> zeros;
+  if (p.degree <= 0) return zeros;
+  if (p.degree == 1) {
+    if (p.c[1] != 0.0) {
+      const double x = -p.c[0] / p.c[1];
+      if (x > a && x < b) zeros.push_back(x);
+    }
+    return zeros;
+  }
+  // Between consecutive turning points p is monotone: at most one zero there.
+  const ScalarPolynomial dp = p.derivative();
+  std::vector<double> ends{a};
+  for (double x : zerosIn(dp, a, b)) ends.push_back(x);
+  ends.push_back(b);
+  // A value within rounding of zero at a turning point is a zero that touches (a double
+  // root): taken there, not found again on either side.
+  double size = 0.0;
+  for (int k = 0; k <= p.degree; ++k) size += std::abs(p.c[std::size_t(k)]);
+  const auto zeroish = [&](double f) { return std::abs(f) <= 8.0 * std::numeric_limits<double>::epsilon() * size; };
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const double x0 = ends[i], x1 = ends[i + 1];
+    const double f0 = p.at(x0), f1 = p.at(x1);
+    const bool touches0 = i > 0 && zeroish(f0), touches1 = i + 2 < ends.size() && zeroish(f1);
+    if (touches1) zeros.push_back(x1);
+    else if (!touches0 && ((f0 < 0.0 && f1 > 0.0) || (f0 > 0.0 && f1 < 0.0)))
+      zeros.push_back(solveMonotone(p, dp, 0.0, x0, x1));
+  }
+  zeros.erase(std::unique(zeros.begin(), zeros.end()), zeros.end());
+  return zeros;
+}
+
+std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error) {
+  constexpr int n = ScalarPolynomial::kMaxDegree + 1;
+  // Monomial coefficients of the Chebyshev polynomials T_0 .. T_8 (T_k+1 = 2u T_k - T_k-1).
+  static const auto chebyshev = [] {
+    std::array<std::array<double, n>, n> t{};
+    t[0][0] = 1.0;
+    t[1][1] = 1.0;
+    for (int k = 1; k + 1 < n; ++k)
+      for (int j = 0; j < n; ++j)
+        t[std::size_t(k + 1)][std::size_t(j)] =
+            (j > 0 ? 2.0 * t[std::size_t(k)][std::size_t(j - 1)] : 0.0) - t[std::size_t(k - 1)][std::size_t(j)];
+    return t;
+  }();
+  std::array<double, n> values{};
+  for (int i = 0; i < n; ++i) {
+    const auto v = f(-std::cos(std::numbers::pi * (i + 0.5) / n));  // ascending u
+    if (!v || !std::isfinite(*v)) return std::nullopt;
+    values[std::size_t(i)] = *v;
+  }
+  // Coefficients of T_k by the discrete cosine transform; the sign (-1)^k because the
+  // points run from u = -1 up while the cosines run down.
+  std::array<double, n> coefficients{};
+  double magnitude = 0.0;
+  for (int k = 0; k < n; ++k) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += values[std::size_t(i)] * std::cos(std::numbers::pi * k * (i + 0.5) / n);
+    coefficients[std::size_t(k)] = sum * (k % 2 ? -1.0 : 1.0) * (k == 0 ? 1.0 : 2.0) / n;
+    magnitude += std::abs(coefficients[std::size_t(k)]);
+  }
+  // The degree the values need: trailing coefficients at rounding level dropped (a cubic
+  // stays a cubic, which keeps its zeros cheap to find).
+  int degree = n - 1;
+  while (degree > 0 && std::abs(coefficients[std::size_t(degree)]) <= 1e-14 * magnitude) --degree;
+  ScalarPolynomial p;
+  p.degree = degree;
+  for (int k = 0; k <= degree; ++k)
+    for (int j = 0; j <= k; ++j)
+      p.c[std::size_t(j)] += coefficients[std::size_t(k)] * chebyshev[std::size_t(k)][std::size_t(j)];
+  error = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    const double u = -std::cos(std::numbers::pi * (i + 1.0) / n);
+    const auto v = f(u);
+    if (!v || !std::isfinite(*v)) return std::nullopt;
+    error = std::max(error, std::abs(*v - p.at(u)));
+  }
+  return p;
+}
+
+SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::vector<IsoSurface>& isoSurfaces,
+                                        const ScalarPolynomial& s, double length, const GradientAlong& gradientAt,
+                                        const glm::dvec3& direction) {
+  SegmentLight total;
+  if (!(length > 0.0) || tf.empty()) return total;
+  const ScalarPolynomial ds = s.derivative(), integral = s.antiderivative();
+  std::vector<double> turns{-1.0};
+  for (double u : zerosIn(ds, -1.0, 1.0)) turns.push_back(u);
+  turns.push_back(1.0);
+  // Every cut in order: control points and iso-values crossed on each monotone stretch.
+  std::vector<Cut> cuts{{-1.0, s.at(-1.0), nullptr}};
+  for (std::size_t i = 0; i + 1 < turns.size(); ++i) {
+    const double ua = turns[i], ub = turns[i + 1], sa = s.at(ua), sb = s.at(ub);
+    std::vector<Cut> stretch;
+    for (double v : tf.crossings(sa, sb)) stretch.push_back({solveMonotone(s, ds, v, ua, ub), v, nullptr});
+    for (const IsoSurface& iso : isoSurfaces) {
+      const bool crossed = sb > sa ? (iso.value > sa && iso.value <= sb) : (iso.value < sa && iso.value >= sb);
+      if (!crossed) continue;
+      stretch.push_back({iso.value == sb ? ub : solveMonotone(s, ds, iso.value, ua, ub), iso.value, &iso});
+    }
+    std::sort(stretch.begin(), stretch.end(), [&](const Cut& x, const Cut& y) {
+      return sb > sa ? x.s < y.s || (x.s == y.s && !x.surface) : x.s > y.s || (x.s == y.s && !x.surface);
+    });
+    double previous = std::max(ua, cuts.back().u);  // rounding must not reorder them
+    for (Cut& c : stretch) previous = c.u = std::clamp(c.u, previous, ub);
+    cuts.insert(cuts.end(), stretch.begin(), stretch.end());
+    if (stretch.empty() || stretch.back().u < ub || stretch.back().surface) cuts.push_back({ub, sb, nullptr});
+  }
+  const double halfLength = 0.5 * length;
+  for (std::size_t i = 1; i < cuts.size() && total.transmittance >= kDark; ++i) {
+    const Cut& from = cuts[i - 1];
+    const Cut& to = cuts[i];
+    compositeBehind(total, monotonePiece(tf, s, integral, from.u, to.u, from.s, to.s, halfLength));
+    if (to.surface) {
+      const double shade = isoShade(gradientAt(to.u), direction);
+      compositeBehind(total, {to.surface->color * shade * to.surface->opacity, 1.0 - to.surface->opacity});
+    }
+  }
+  return total;
+}
+
+}  // namespace volpost::optics

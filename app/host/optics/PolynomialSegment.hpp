@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// A ray segment over which the scalar is a polynomial of the position along it, integrated
+// against a piecewise-linear transfer function to rounding. Along a straight ray through a
+// cell with straight edges, a finite element's own interpolation is such a polynomial
+// (cubic in a hex8, quadratic in a tet10, up to quartic in a hex20); through a distorted
+// cell it is fitted to a checked tolerance (fitAlongSegment).
+//
+// The segment is cut where the scalar turns (zeros of its derivative, found recursively
+// from the derivative's own turning points) and where it crosses a control point or an
+// iso-value. Between cuts the scalar is monotone and the extinction and the color are
+// linear in it, so the optical depth is the polynomial's integral (exact) and only the
+// emission needs quadrature: Gauss-Legendre, 16 points, on panels of optical depth at most
+// 0.1 (the polynomial part is integrated exactly; the exponential's truncation is below
+// 1e-15). See docs/methods/element_field.md.
+#pragma once
+
+#include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/core/optics/SegmentIntegral.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace volpost::optics {
+
+/// s(u) = sum c[k] u^k for u in [-1, 1], u = -1 at the segment's front.
+struct ScalarPolynomial {
+  static constexpr int kMaxDegree = 8;
+  std::array<double, kMaxDegree + 2> c{};  ///< one more than fitted: room for an antiderivative
+  int degree = 0;
+
+  double at(double u) const;
+  ScalarPolynomial derivative() const;
+  /// The antiderivative that is 0 at u = 0.
+  ScalarPolynomial antiderivative() const;
+};
+
+/// The zeros of p in the open interval (a, b), ascending (a zero of even multiplicity that
+/// touches zero counts once, where it is found exactly).
+std::vector<double> zerosIn(const ScalarPolynomial& p, double a, double b);
+
+/// The polynomial of degree <= 8 interpolating f at the 9 Chebyshev points of [-1, 1],
+/// trailing coefficients below rounding dropped. `error` gets the largest difference from
+/// f at the 8 points halfway between them (how well it fits). nullopt where f does.
+std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error);
+
+/// What the ray needs to shade an iso-surface met at u: the field's gradient there.
+using GradientAlong = std::function<glm::dvec3(double u)>;
+
+/// The segment of `length` (front at u = -1) with the scalar `s`, with the iso-surfaces it
+/// crosses (a surface counts where the scalar reaches its value coming from the front: in
+/// (s(-1), s(1)] along each monotone stretch), composited front to back. Iso-surfaces are
+/// shaded 0.3 + 0.7 |cos| against the unit `direction` with gradientAt.
+SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::vector<IsoSurface>& isoSurfaces,
+                                        const ScalarPolynomial& s, double length, const GradientAlong& gradientAt,
+                                        const glm::dvec3& direction);
+
+}  // namespace volpost::optics

@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: MIT
+// The reference renderer with the cells' own interpolation, on fields the elements
+// represent exactly, against independent evaluation: the closed-form field summed along
+// each ray by the midpoint rule over the ray's exact path through the cell (slabs for boxes,
+// planes for a tet), no volpost geometry or shape function involved. The same rays drawn
+// with the field linear on the split differ visibly: these tests cannot pass on the split.
+#include "host/optics/ReferenceRenderer.hpp"
+
+#include <volpost/core/Tetrahedralize.hpp>
+
+#include "host/CellShape.hpp"
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <random>
+
+using namespace volpost;
+using namespace volpost::optics;
+
+namespace {
+
+using ClosedForm = std::function<double(const glm::dvec3&)>;
+
+TransferFunction peakTf(double lo, double hi) {
+  const auto at = [&](double f) { return lo + f * (hi - lo); };
+  return TransferFunction({{at(0.0), {0.1, 0.2, 0.9}, 0.3},
+                           {at(0.3), {0.9, 0.1, 0.1}, 0.5},
+                           {at(0.34), {1.0, 0.9, 0.2}, 12.0},
+                           {at(0.38), {0.2, 0.8, 0.3}, 0.5},
+                           {at(1.0), {1.0, 1.0, 1.0}, 1.5}});
+}
+
+// A box [lo, hi] cut into n^3 cells of `type` (hex8 or hex20), nodes shared, planes spaced
+// unevenly; the field sampled at every node.
+Mesh boxOfHexes(CellType type, glm::dvec3 lo, glm::dvec3 hi, int n) {
+  Mesh mesh;
+  std::map<std::array<long, 3>, NodeIndex> index;  // by position on a fine lattice
+  const auto plane = [&](int k, double f) { return lo[k] + (hi[k] - lo[k]) * (f + 0.15 * f * (1.0 - f)); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        std::vector<NodeIndex> ids;
+        for (int node = 0; node < topology(type).nodeCount; ++node) {
+          const glm::dvec3 xi = naturalCoordinatesOfNode(type, node);  // in [-1, 1]^3
+          const glm::dvec3 g = 2.0 * glm::dvec3(i, j, k) + xi + 1.0;   // in half-cell steps
+          const std::array<long, 3> key{long(g.x), long(g.y), long(g.z)};
+          auto [it, fresh] = index.emplace(key, NodeIndex(mesh.nodes.size()));
+          if (fresh) {
+            glm::dvec3 x;
+            for (int a = 0; a < 3; ++a) {
+              // Midside nodes halfway between their corners: straight edges.
+              const double c0 = plane(a, std::floor(g[a] / 2.0) / n), c1 = plane(a, std::ceil(g[a] / 2.0) / n);
+              x[a] = 0.5 * (c0 + c1);
+            }
+            mesh.nodes.push_back(x);
+          }
+          ids.push_back(it->second);
+        }
+        mesh.addCell(type, ids);
+      }
+  return mesh;
+}
+
+// One straight tet10 (midside nodes at the middle of its edges).
+Mesh oneTet10(const std::array<glm::dvec3, 4>& v) {
+  Mesh mesh;
+  std::vector<NodeIndex> ids;
+  for (int node = 0; node < 10; ++node) {
+    const glm::dvec3 r = naturalCoordinatesOfNode(CellType::Tet10, node);
+    mesh.nodes.push_back(v[0] + r.x * (v[1] - v[0]) + r.y * (v[2] - v[0]) + r.z * (v[3] - v[0]));
+    ids.push_back(NodeIndex(node));
+  }
+  mesh.addCell(CellType::Tet10, ids);
+  return mesh;
+}
+
+std::vector<double> sampled(const Mesh& mesh, const ClosedForm& f) {
+  std::vector<double> v;
+  for (const glm::dvec3& x : mesh.nodes) v.push_back(f(x));
+  return v;
+}
+
+// The ray's light by the midpoint rule along [t0, t1] (unit direction), Richardson-extrapolated.
+SegmentLight independent(const TransferFunction& tf, const ClosedForm& f, glm::dvec3 o, glm::dvec3 d, double t0,
+                         double t1) {
+  const auto sum = [&](int steps) {
+    SegmentLight total;
+    const double h = (t1 - t0) / steps;
+    for (int i = 0; i < steps; ++i) {
+      const double v = f(o + (t0 + (i + 0.5) * h) * d);
+      compositeBehind(total, constantSegment(tf.color(v), tf.extinction(v), h));
+    }
+    return total;
+  };
+  const SegmentLight a = sum(40000), b = sum(80000);
+  return {(4.0 * b.color - a.color) / 3.0, (4.0 * b.transmittance - a.transmittance) / 3.0};
+}
+
+// Where the ray o + t d (unit d) is inside the box: slabs.
+std::pair<double, double> throughBox(glm::dvec3 lo, glm::dvec3 hi, glm::dvec3 o, glm::dvec3 d) {
+  double t0 = -1e30, t1 = 1e30;
+  for (int k = 0; k < 3; ++k) {
+    double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
+    if (a > b) std::swap(a, b);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, b);
+  }
+  return {t0, t1};
+}
+
+double difference(const SegmentLight& a, const SegmentLight& b) {
+  return std::max({std::abs(a.color.r - b.color.r), std::abs(a.color.g - b.color.g), std::abs(a.color.b - b.color.b),
+                   std::abs(a.transmittance - b.transmittance)});
+}
+
+struct Drawn {
+  SegmentLight element, split;
+};
+
+// The mesh's split, drawn both ways along one ray.
+class BothFields {
+ public:
+  BothFields(const Mesh& mesh, std::vector<double> values)
+      : mesh_(mesh),
+        values_(std::move(values)),
+        tets_(tetrahedralize(mesh_)),
+        volume_(tets_.mesh, FieldLocation::Node, tets_.nodeValues(mesh_, values_)),
+        field_(mesh_, values_, tets_, volume_.origin()) {}
+  Drawn ray(const TransferFunction& tf, glm::dvec3 o, glm::dvec3 d, RaySettings settings = {}) const {
+    RaySettings element = settings;
+    element.elementField = &field_;
+    return {integrateRay(volume_, tf, o, d, 0.0, 100.0, element),
+            integrateRay(volume_, tf, o, d, 0.0, 100.0, settings)};
+  }
+  const ElementField& field() const { return field_; }
+
+ private:
+  Mesh mesh_;
+  std::vector<double> values_;
+  TetMesh tets_;
+  TetVolume volume_;
+  ElementField field_;
+};
+
+// Random rays from outside through the box [0.2, 1.3] x [-0.4, 0.9] x [0.1, 1.0].
+std::vector<std::pair<glm::dvec3, glm::dvec3>> raysThroughBox(int count) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> rays;
+  while (int(rays.size()) < count) {
+    const glm::dvec3 target(0.2 + 1.1 * u(random), -0.4 + 1.3 * u(random), 0.1 + 0.9 * u(random));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(u(random) - 0.5, u(random) - 0.5, u(random) - 0.5));
+    rays.push_back({target - 4.0 * d, d});
+  }
+  return rays;
+}
+
+const glm::dvec3 kLo(0.2, -0.4, 0.1), kHi(1.3, 0.9, 1.0);
+
+void expectElementFieldDrawn(CellType type, const ClosedForm& f, double lo, double hi) {
+  BothFields both(boxOfHexes(type, kLo, kHi, 2), sampled(boxOfHexes(type, kLo, kHi, 2), f));
+  EXPECT_TRUE(both.field().uninvertibleCells().empty());
+  const TransferFunction tf = peakTf(lo, hi);
+  double worst = 0.0, splitWorst = 0.0;
+  for (const auto& [o, d] : raysThroughBox(24)) {
+    const auto [t0, t1] = throughBox(kLo, kHi, o, d);
+    const SegmentLight truth = independent(tf, f, o, d, t0, t1);
+    const Drawn drawn = both.ray(tf, o, d);
+    worst = std::max(worst, difference(drawn.element, truth));
+    splitWorst = std::max(splitWorst, difference(drawn.split, truth));
+  }
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(splitWorst, 1e-3);  // the split's field is visibly another one
+  EXPECT_EQ(both.field().fallbacks(), 0u);
+}
+
+}  // namespace
+
+TEST(ElementReference, AHex8MeshCarryingXyzIsDrawnAsXyz) {
+  // xyz is trilinear: the hex8's field is xyz itself, cubic along an oblique ray.
+  expectElementFieldDrawn(
+      CellType::Hex8, [](const glm::dvec3& x) { return x.x * x.y * x.z; }, -0.5, 1.2);
+}
+
+TEST(ElementReference, AHex20MeshCarryingAQuadraticIsDrawnAsIt) {
+  expectElementFieldDrawn(
+      CellType::Hex20, [](const glm::dvec3& x) { return x.x * x.x - 0.7 * x.y * x.z + 0.4 * x.z * x.z - 0.3 * x.x; },
+      -0.7, 1.6);
+}
+
+TEST(ElementReference, AStraightTet10CarryingAQuadraticIsDrawnAsIt) {
+  const std::array<glm::dvec3, 4> v{glm::dvec3(0.1, 0.0, 0.2), glm::dvec3(1.4, 0.1, 0.0), glm::dvec3(0.3, 1.2, 0.1),
+                                    glm::dvec3(0.5, 0.4, 1.3)};
+  const ClosedForm f = [](const glm::dvec3& x) { return 1.5 * x.x * x.x - x.y * x.z + 0.8 * x.y * x.y; };
+  const Mesh mesh = oneTet10(v);
+  BothFields both(mesh, sampled(mesh, f));
+  double lo = INFINITY, hi = -INFINITY;
+  for (double s : sampled(mesh, f)) lo = std::min(lo, s), hi = std::max(hi, s);
+  const TransferFunction tf = peakTf(lo - 0.2, hi + 0.2);
+  // The tet's faces as planes n.x <= c, for the path of each ray through it.
+  std::vector<std::pair<glm::dvec3, double>> faces;
+  const int opposite[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  for (int k = 0; k < 4; ++k) {
+    glm::dvec3 n = glm::cross(v[opposite[k][1]] - v[opposite[k][0]], v[opposite[k][2]] - v[opposite[k][0]]);
+    if (glm::dot(n, v[k] - v[opposite[k][0]]) > 0.0) n = -n;
+    faces.push_back({n, glm::dot(n, v[opposite[k][0]])});
+  }
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worst = 0.0, splitWorst = 0.0;
+  for (int k = 0; k < 24; ++k) {
+    double b[4] = {u(random) + 0.1, u(random) + 0.1, u(random) + 0.1, u(random) + 0.1};
+    const double sum = b[0] + b[1] + b[2] + b[3];
+    const glm::dvec3 inside = (b[0] * v[0] + b[1] * v[1] + b[2] * v[2] + b[3] * v[3]) / sum;
+    const glm::dvec3 d = glm::normalize(glm::dvec3(u(random) - 0.5, u(random) - 0.5, u(random) - 0.5));
+    const glm::dvec3 o = inside - 4.0 * d;
+    double t0 = -1e30, t1 = 1e30;
+    for (const auto& [n, c] : faces) {
+      const double t = (c - glm::dot(n, o)) / glm::dot(n, d);
+      if (glm::dot(n, d) > 0.0) t1 = std::min(t1, t);
+      else t0 = std::max(t0, t);
+    }
+    const Drawn drawn = both.ray(tf, o, d);
+    const SegmentLight truth = independent(tf, f, o, d, t0, t1);
+    worst = std::max(worst, difference(drawn.element, truth));
+    splitWorst = std::max(splitWorst, difference(drawn.split, truth));
+  }
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(splitWorst, 1e-3);
+}
+
+TEST(ElementReference, TheIsoSurfaceOfXyzIsWhereXyzTakesItsValueShadedByItsGradient) {
+  const ClosedForm f = [](const glm::dvec3& x) { return x.x * x.y * x.z; };
+  const Mesh mesh = boxOfHexes(CellType::Hex8, glm::dvec3(0.1), glm::dvec3(1.0), 3);
+  BothFields both(mesh, sampled(mesh, f));
+  const TransferFunction clear({{0.0, glm::dvec3(0.0), 0.0}, {1.0, glm::dvec3(0.0), 0.0}});
+  const double c = 0.2;
+  RaySettings settings;
+  settings.isoSurfaces = {{c, glm::dvec3(1.0), 1.0}};
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int tested = 0;
+  for (int k = 0; k < 20; ++k) {
+    // Rays rising through the box from its low corner's side: xyz grows along them.
+    const glm::dvec3 d = glm::normalize(glm::dvec3(0.3 + u(random), 0.3 + u(random), 0.3 + u(random)));
+    const glm::dvec3 o = glm::dvec3(0.1 + 0.3 * u(random), 0.1 + 0.3 * u(random), 0.1) - 0.05 * d;
+    // Independently: where x y z = c along the ray (bisection on the closed form).
+    double a = 0.05, b = 0.05;
+    while (f(o + b * d) < c && b < 3.0) b += 0.01;
+    if (f(o + b * d) < c) continue;
+    for (int i = 0; i < 200; ++i) (f(o + 0.5 * (a + b) * d) < c ? a : b) = 0.5 * (a + b);
+    const glm::dvec3 x = o + a * d;
+    if (x.x > 1.0 || x.y > 1.0 || x.z > 1.0) continue;
+    const glm::dvec3 gradient(x.y * x.z, x.x * x.z, x.x * x.y);
+    const double shade = 0.3 + 0.7 * std::abs(glm::dot(glm::normalize(gradient), d));
+    const Drawn drawn = both.ray(clear, o, d, settings);
+    EXPECT_NEAR(drawn.element.color.r, shade, 1e-9) << k;
+    EXPECT_NEAR(drawn.element.transmittance, 0.0, 1e-15) << k;
+    ++tested;
+  }
+  EXPECT_GE(tested, 10);
+}
+
+TEST(ElementReference, AnInvertedCellIsListedAndDrawnByItsSplit) {
+  Mesh mesh = boxOfHexes(CellType::Hex8, kLo, kHi, 2);
+  // Cell 0's first corner (a corner of the box) pulled through its cell: the map folds.
+  const NodeIndex corner = mesh.cellNodes(0)[0];
+  mesh.nodes[corner] = glm::dvec3(1.0, 0.6, 0.8);
+  const BothFields both(mesh, sampled(mesh, [](const glm::dvec3& x) { return x.x + x.y; }));
+  ASSERT_EQ(both.field().uninvertibleCells().size(), 1u);
+  EXPECT_EQ(both.field().uninvertibleCells()[0], 0u);
+}
+
+TEST(ElementReference, ATaperedHex8WhoseFieldIsNoPolynomialAlongTheRayIsFittedToTolerance) {
+  // A frustum: plane faces, but the map is not affine, so the field along a ray is a
+  // rational-like function the reference fits piecewise. The truth evaluates the element's
+  // interpolation point by point (its inverse map) along the ray's path between the faces.
+  Mesh mesh;
+  const double bottom = 1.0, top = 0.45;
+  for (double z : {0.0, 1.0}) {
+    const double h = z == 0.0 ? bottom : top;
+    for (const glm::dvec2 c : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)})
+      mesh.nodes.push_back(glm::dvec3(h * c.x, h * c.y, z));
+  }
+  const std::vector<NodeIndex> ids{0, 1, 2, 3, 4, 5, 6, 7};
+  mesh.addCell(CellType::Hex8, ids);
+  const std::vector<double> values{0.0, 1.0, 0.3, 0.9, 1.4, -0.2, 0.7, 0.1};
+  const BothFields both(mesh, values);
+  const ClosedForm f = [&](const glm::dvec3& x) {
+    const auto xi = naturalCoordinates(CellType::Hex8, mesh.nodes, x, glm::dvec3(0.0));
+    const ShapeValues n = shapeFunctions(CellType::Hex8, *xi);
+    double v = 0.0;
+    for (int i = 0; i < 8; ++i) v += n[std::size_t(i)] * values[std::size_t(i)];
+    return v;
+  };
+  // Faces as planes n.x <= c through three of their corners.
+  const int quads[6][3] = {{0, 3, 2}, {4, 5, 6}, {0, 1, 5}, {1, 2, 6}, {2, 3, 7}, {3, 0, 4}};
+  std::vector<std::pair<glm::dvec3, double>> faces;
+  for (const auto& q : quads) {
+    glm::dvec3 n = glm::cross(mesh.nodes[q[1]] - mesh.nodes[q[0]], mesh.nodes[q[2]] - mesh.nodes[q[0]]);
+    if (glm::dot(n, glm::dvec3(0, 0, 0.5) - mesh.nodes[q[0]]) > 0.0) n = -n;
+    faces.push_back({n, glm::dot(n, mesh.nodes[q[0]])});
+  }
+  const TransferFunction tf = peakTf(-0.2, 1.4);
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worst = 0.0, splitWorst = 0.0;
+  for (int k = 0; k < 16; ++k) {
+    const glm::dvec3 inside(0.6 * (u(random) - 0.5), 0.6 * (u(random) - 0.5), 0.2 + 0.6 * u(random));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(u(random) - 0.5, u(random) - 0.5, u(random) - 0.5));
+    const glm::dvec3 o = inside - 4.0 * d;
+    double t0 = -1e30, t1 = 1e30;
+    for (const auto& [n, c] : faces) {
+      const double t = (c - glm::dot(n, o)) / glm::dot(n, d);
+      if (glm::dot(n, d) > 0.0) t1 = std::min(t1, t);
+      else t0 = std::max(t0, t);
+    }
+    const Drawn drawn = both.ray(tf, o, d);
+    const SegmentLight truth = independent(tf, f, o, d, t0, t1);
+    worst = std::max(worst, difference(drawn.element, truth));
+    splitWorst = std::max(splitWorst, difference(drawn.split, truth));
+  }
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(splitWorst, 1e-3);
+  EXPECT_EQ(both.field().fallbacks(), 0u);
+}
