@@ -163,6 +163,12 @@ struct Options {
                              "eye."};
   QCommandLineOption termination{"termination", "Rays stop when the light left behind is below this fraction "
                                                 "(default 0.002; 0: never).", "T"};
+  QCommandLineOption interpolation{
+      "interpolation",
+      "Meshes: how node values vary inside a cell. tetrahedra (default): linear on the tetrahedra each cell is split "
+      "into; element: each cell's own shape functions, as the solver computed the field (trilinear in a hex8, "
+      "quadratic in a tet10 or hex20).",
+      "HOW"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
                                        "FILE.pfm (RGB over the background).", "FILE"};
   QCommandLineOption threads{"threads", "Threads for the reference renderer (default: all cores).", "N"};
@@ -519,6 +525,14 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
   if (p.isSet(o.samplingStep)) scene.setSamplingStep(number(o.samplingStep, "sampling-step"));
   if (p.isSet(o.termination)) scene.setTermination(number(o.termination, "termination"));
   if (p.isSet(o.shading)) scene.setShading(true);
+  if (p.isSet(o.interpolation)) {
+    const auto interpolation = fieldInterpolationFromString(p.value(o.interpolation).toStdString());
+    if (!interpolation)
+      throw UsageError(QString("--interpolation %1 is not one of: %2")
+                           .arg(p.value(o.interpolation), kFieldInterpolationChoices)
+                           .toStdString());
+    scene.setInterpolation(*interpolation);
+  }
 }
 
 // The renderer a picture is drawn with: the surface (no entry) or a volume renderer.
@@ -581,7 +595,7 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     const QString why =
         "works with volume renderers (--renderer " + chosen.namesWhere([](const RendererEntry&) { return true; }) + ")";
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep,
-                                             &o.termination, &o.shading, &o.floatOut, &o.threads})
+                                             &o.termination, &o.shading, &o.floatOut, &o.threads, &o.interpolation})
       refuse(*option, why);
     return;
   }
@@ -638,8 +652,15 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
 // A renderer that draws the volume alone (the reference, with the legend and markers over
 // it) refuses the layers of the state drawn with GL, from the command line or a state file.
 void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRenderer& chosen) {
-  if (!chosen.volume || chosen.volume->drawsSceneLayers) return;
+  if (!chosen.volume) return;
   const QString name = chosen.volume->name;
+  if (state.volume.interpolation == FieldInterpolation::Element && !chosen.volume->traits.elementInterpolation)
+    throw UsageError(("the cells' own interpolation (--interpolation element, or \"volume.interpolation\" in a state "
+                      "file) is drawn by " +
+                      chosen.namesWhere([](const RendererEntry& e) { return e.traits.elementInterpolation; }) +
+                      ", not by " + name + ": choose one of those, or --interpolation tetrahedra")
+                         .toStdString());
+  if (chosen.volume->drawsSceneLayers) return;
   const bool slices =
       std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
   if (!state.slicePlanes.empty())
@@ -918,27 +939,91 @@ int runRender(const QStringList& args) {
   auto plugins = loadPluginsForCli();
   Options o;
   describeRenderers(o, allVolumeRenderers(*plugins));
-  parser.addOptions({o.field,         o.step,           o.camera,      o.view,
-                     o.eye,           o.target,         o.up,          o.viewAngle,
-                     o.size,          o.colormap,       o.range,       o.bands,
-                     o.symmetric,     o.ownRange,       o.noEdges,     o.noLegend,
-                     o.noTriad,       o.deform,         o.undeformed,  o.flat,
-                     o.output,        o.renderer,       o.mode,        o.tf,
-                     o.tf2d,          o.clip,           o.clipBox,     o.iso,
-                     o.volumeEdges,   o.samplingStep,   o.termination, o.shading,
-                     o.floatOut,      o.threads,        o.state,       o.saveState,
-                     o.streamlines,   o.lineWidth,      o.tubes,       o.tubeRadius,
-                     o.radiusByValue, o.arrows,         o.noSurface,   o.surfaceOpacity,
-                     o.probe,         o.markExtremes,   o.allSteps,    o.framesBetween,
-                     o.fps,           o.readerOption,   o.slice,       o.representation,
-                     o.pointSize,     o.volumeOutline,  o.background,  o.textScale,
-                     o.transparent,   o.formula,        o.units,       o.legendTitle,
-                     o.legendNumbers, o.legendLabels,   o.belowColor,  o.aboveColor,
-                     o.title,         o.glyphs,         o.glyphColor,  o.glyphScale,
-                     o.glyphFixed,    o.glyphEvery,     o.glyphNodes,  o.sweep,
-                     o.threshold,     o.thresholdNodes, o.showSet,     o.markSet,
-                     o.measure,       o.setNumbers,     o.colorBySet,  o.selectElements,
-                     o.selectNodes,   o.hideSet,        o.logScale,    o.stepText});
+  parser.addOptions({o.field,
+                     o.step,
+                     o.camera,
+                     o.view,
+                     o.eye,
+                     o.target,
+                     o.up,
+                     o.viewAngle,
+                     o.size,
+                     o.colormap,
+                     o.range,
+                     o.bands,
+                     o.symmetric,
+                     o.ownRange,
+                     o.noEdges,
+                     o.noLegend,
+                     o.noTriad,
+                     o.deform,
+                     o.undeformed,
+                     o.flat,
+                     o.output,
+                     o.renderer,
+                     o.mode,
+                     o.tf,
+                     o.tf2d,
+                     o.clip,
+                     o.clipBox,
+                     o.iso,
+                     o.volumeEdges,
+                     o.samplingStep,
+                     o.termination,
+                     o.shading,
+                     o.interpolation,
+                     o.floatOut,
+                     o.threads,
+                     o.state,
+                     o.saveState,
+                     o.streamlines,
+                     o.lineWidth,
+                     o.tubes,
+                     o.tubeRadius,
+                     o.radiusByValue,
+                     o.arrows,
+                     o.noSurface,
+                     o.surfaceOpacity,
+                     o.probe,
+                     o.markExtremes,
+                     o.allSteps,
+                     o.framesBetween,
+                     o.fps,
+                     o.readerOption,
+                     o.slice,
+                     o.representation,
+                     o.pointSize,
+                     o.volumeOutline,
+                     o.background,
+                     o.textScale,
+                     o.transparent,
+                     o.formula,
+                     o.units,
+                     o.legendTitle,
+                     o.legendNumbers,
+                     o.legendLabels,
+                     o.belowColor,
+                     o.aboveColor,
+                     o.title,
+                     o.glyphs,
+                     o.glyphColor,
+                     o.glyphScale,
+                     o.glyphFixed,
+                     o.glyphEvery,
+                     o.glyphNodes,
+                     o.sweep,
+                     o.threshold,
+                     o.thresholdNodes,
+                     o.showSet,
+                     o.markSet,
+                     o.measure,
+                     o.setNumbers,
+                     o.colorBySet,
+                     o.selectElements,
+                     o.selectNodes,
+                     o.hideSet,
+                     o.logScale,
+                     o.stepText});
   for (const auto& option : o.lineOptions.all()) parser.addOption(option);
   if (const auto code = parseArguments(parser, "volpost render", args)) return *code;
   try {
@@ -1092,6 +1177,7 @@ int runRender(const QStringList& args) {
         return renderEveryStep(scene, out, framesPerSecond, parser.isSet(o.range), framesBetween, draw);
       if (sweepFrames > 0) return renderDeformationSweep(scene, out, framesPerSecond, std::size_t(sweepFrames), draw);
       const SceneImage image = draw();
+      for (const std::string& note : image.notes) std::fprintf(stderr, "volpost: note: %s\n", note.c_str());
       if (const auto lines = scene.streamlineResult()) {
         if (lines->outside)
           std::fprintf(stderr, "volpost: note: %zu of the %zu seeds lie outside the mesh and start no streamline\n",

@@ -39,6 +39,7 @@ RendererEntry referenceRenderer() {
   r.traits.samplingStepOnMeshes = r.traits.samplingStepOnGrids = false;  // integrates exactly
   r.traits.earlyTermination = false;
   r.traits.runsOnCpu = true;
+  r.traits.elementInterpolation = true;
   r.drawsSceneLayers = false;
   r.takesThreadCount = true;
   return r;

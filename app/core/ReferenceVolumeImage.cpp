@@ -3,9 +3,34 @@
 
 #include "host/optics/GridReference.hpp"
 
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace volpost::app {
+namespace {
+
+// Cells whose map cannot be inverted are drawn by their split, and the user is told which.
+std::vector<std::string> elementFieldNotes(const optics::ElementField& field, const Mesh& mesh) {
+  std::vector<std::string> notes;
+  const auto& cells = field.uninvertibleCells();
+  if (!cells.empty()) {
+    std::string ids;
+    for (std::size_t i = 0; i < cells.size() && i < 10; ++i)
+      ids += (i ? ", " : "") + std::to_string(mesh.cellId(cells[i]));
+    if (cells.size() > 10) ids += ", ...";
+    notes.push_back(std::to_string(cells.size()) + " cell" + (cells.size() == 1 ? "" : "s") +
+                    " folded, inverted or collapsed (no inverse map): drawn linear on their tetrahedra; cell id" +
+                    (cells.size() == 1 ? " " : "s ") + ids);
+  }
+  if (field.fallbacks() > 0)
+    notes.push_back(std::to_string(field.fallbacks()) +
+                    " ray crossings of a cell where its inverse map did not converge: drawn linear on its tetrahedra");
+  return notes;
+}
+
+}  // namespace
 
 optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int height, int threads,
                                              const Progress& progress) {
@@ -29,9 +54,19 @@ optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int 
   if (model.grid && view.location == FieldLocation::Node)
     return optics::renderGridReference(*model.grid, view.values, scene.transferFunction(),
                                        scene.pictureCamera(width, height), width, height, settings, progress, threads);
-  const optics::TetVolume volume(scene.session()->tetrahedra().mesh, view.location, scene.session()->tetValues(view));
-  return optics::renderReference(volume, scene.transferFunction(), scene.pictureCamera(width, height), width, height, settings, progress,
-                                 threads);
+  const TetMesh& tets = scene.session()->tetrahedra();
+  const optics::TetVolume volume(tets.mesh, view.location, scene.session()->tetValues(view));
+  // Values per cell are constant in it: both interpolations are the same field.
+  std::optional<optics::ElementField> field;
+  if (scene.volume().interpolation == FieldInterpolation::Element && view.location == FieldLocation::Node) {
+    std::vector<double> converted;
+    field.emplace(model.mesh(), view.values.doubles(converted), tets, volume.origin());
+    settings.elementField = &*field;
+  }
+  optics::ReferenceImage image = optics::renderReference(
+      volume, scene.transferFunction(), scene.pictureCamera(width, height), width, height, settings, progress, threads);
+  if (field) image.notes = elementFieldNotes(*field, model.mesh());
+  return image;
 }
 
 }  // namespace volpost::app

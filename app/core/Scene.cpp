@@ -494,6 +494,12 @@ void Scene::setTermination(double transmittance) {
   ++revisions_.mode;
 }
 
+void Scene::setInterpolation(FieldInterpolation interpolation) {
+  if (interpolation == state_.volume.interpolation) return;
+  state_.volume.interpolation = interpolation;
+  ++revisions_.mode;
+}
+
 void Scene::setVolumeEdges(bool show) { state_.volume.edges = show; }
 
 // ---- the whole state ----

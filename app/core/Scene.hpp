@@ -214,6 +214,8 @@ class Scene {
   std::vector<ClipPlane> slicePlanes() const;
   void setSamplingStep(double step);
   void setTermination(double transmittance);
+  /// Meshes: how node values vary inside a cell when the volume is drawn.
+  void setInterpolation(FieldInterpolation interpolation);
   /// Regular grids: the volume's emission lit by the trilinear gradient (light at the eye).
   /// Throws std::invalid_argument, changing nothing, to turn it on for a mesh.
   void setShading(bool on);

@@ -62,6 +62,7 @@ SceneImage renderReferenceSceneImage(const Scene& scene, int width, int height, 
   SceneImage out;
   out.width = width;
   out.height = height;
+  out.notes = reference.notes;
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   out.volumeRgba.resize(reference.pixels.size() * 4);
   const glm::dvec3 background(scene.background());

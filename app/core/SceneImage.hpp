@@ -20,6 +20,7 @@ struct SceneImage {
   int width = 0, height = 0;
   std::vector<float> volumeRgba;  ///< premultiplied RGBA, top row first; empty without a volume
   std::vector<glm::dvec3> isoSurfaceCorners;  ///< the surface view's iso-surface triangles as drawn
+  std::vector<std::string> notes;             ///< what the user should know about how it was drawn
 };
 
 /// Draws the scene with its GPU renderers in a headless context of its own (a SceneDrawing

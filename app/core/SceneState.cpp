@@ -87,6 +87,7 @@ json jsonOf(const VolumeLayer& v) {
   if (!v.isoQuantity.empty()) out["isoQuantity"] = v.isoQuantity;
   out["samplingStep"] = v.samplingStep;
   out["termination"] = v.termination;
+  out["interpolation"] = toString(v.interpolation);
   out["shading"] = v.shading;
   if (v.transferFunction2D) out["transferFunction2D"] = json::parse(v.transferFunction2D->toJson());
   out["edges"] = v.edges;
@@ -176,6 +177,11 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
   if (const json* x = r.find(in, "termination")) {
     v.termination = r.number(*x, "volume.termination");
     if (v.termination < 0.0 || v.termination >= 1.0) r.fail("volume.termination", "must lie in [0, 1)");
+  }
+  if (const json* x = r.find(in, "interpolation")) {
+    const auto interpolation = fieldInterpolationFromString(r.text(*x, "volume.interpolation"));
+    if (!interpolation) r.fail("volume.interpolation", std::string("must be one of: ") + kFieldInterpolationChoices);
+    v.interpolation = *interpolation;
   }
   if (const json* x = r.find(in, "edges")) v.edges = r.boolean(*x, "volume.edges");
   if (const json* x = r.find(in, "outline")) v.outline = r.boolean(*x, "volume.outline");

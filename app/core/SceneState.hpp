@@ -23,6 +23,7 @@
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/TransferFunction2D.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
+#include <volpost/render/FieldInterpolation.hpp>
 #include <volpost/render/IntegrationMode.hpp>
 #include <volpost/render/VolumeLimits.hpp>
 
@@ -91,6 +92,9 @@ struct VolumeLayer {
   std::string isoQuantity;
   double samplingStep = 0.0;    ///< sampling mode; 0: a quarter of the mean edge
   double termination = 0.002;   ///< rays stop below this transmittance
+  /// Meshes: how node values vary inside a cell (the cells' own shape functions, or linear
+  /// on the tetrahedra they are split into).
+  FieldInterpolation interpolation = FieldInterpolation::Tetrahedra;
   bool shading = false;         ///< regular grids: the emission lit by the gradient (headlight)
   bool edges = false;           ///< element edges over the volume (they end the rays)
   bool outline = false;         ///< the model's feature edges over the volume (they end the rays)

@@ -3,7 +3,7 @@
 // against a piecewise-linear transfer function to rounding. Along a straight ray through a
 // cell with straight edges, a finite element's own interpolation is such a polynomial
 // (cubic in a hex8, quadratic in a tet10, up to quartic in a hex20); through a distorted
-// cell it is fitted to a checked tolerance (fitAlongSegment).
+// cell it is fitted to a checked tolerance (fitChebyshev, halved where it does not fit).
 //
 // The segment is cut where the scalar turns (zeros of its derivative, found recursively
 // from the derivative's own turning points) and where it crosses a control point or an

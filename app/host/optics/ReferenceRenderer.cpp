@@ -178,7 +178,7 @@ double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direc
 
 ReferenceImage renderPixelRays(const Camera& camera, int width, int height, const PixelRay& ray,
                                const Progress& progress, int threads) {
-  ReferenceImage image{width, height, std::vector<glm::dvec4>(std::size_t(width) * std::size_t(height))};
+  ReferenceImage image{width, height, std::vector<glm::dvec4>(std::size_t(width) * std::size_t(height)), {}};
   const double aspect = double(width) / double(height);
   const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(aspect) * camera.viewMatrix());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;

@@ -21,6 +21,7 @@
 #include <glm/vec4.hpp>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace volpost::optics {
@@ -60,6 +61,7 @@ double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction);
 struct ReferenceImage {
   int width = 0, height = 0;
   std::vector<glm::dvec4> pixels;  ///< premultiplied RGB and alpha, top row first
+  std::vector<std::string> notes;  ///< what the user should know about how it was drawn
 };
 
 /// Renders the volume as seen by the camera (the same rays as the GPU renderers: through

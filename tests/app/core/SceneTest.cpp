@@ -180,6 +180,7 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   s.volume.isoSurfaces = {{0.5, {1, 0.5, 0}, 0.25}};
   s.volume.samplingStep = 0.01;
   s.volume.termination = 0.0;
+  s.volume.interpolation = FieldInterpolation::Element;
   const SceneState back = SceneState::fromJson(s.toJson(), "/data/view.json");
   EXPECT_EQ(back.modelPath, s.modelPath);
   EXPECT_EQ(back.quantity, s.quantity);
@@ -196,6 +197,7 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   EXPECT_EQ(back.volume.isoSurfaces.size(), 1u);
   EXPECT_EQ(back.volume.samplingStep, s.volume.samplingStep);
   EXPECT_EQ(back.volume.termination, s.volume.termination);
+  EXPECT_EQ(back.volume.interpolation, FieldInterpolation::Element);
   // A model next to the state file is written relative to it, and found again.
   const SceneState moved = SceneState::fromJson(s.toJson("/data"), "/elsewhere/view.json");
   EXPECT_EQ(moved.modelPath, "/elsewhere/model.vtu");
@@ -269,6 +271,9 @@ TEST(SceneState, RefusalsNameTheFileAndTheKey) {
                 .find("view.json: \"volume.transferFunction\""),
             std::string::npos);
   EXPECT_NE(message(head + R"("volume": {"clipPlanes": [{"point":[0,0,0],"normal":[0,0,0]}]}})").find("normal"), std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"interpolation": "quadratic"}})")
+                .find("\"volume.interpolation\" must be one of: element, tetrahedra"),
+            std::string::npos);
 }
 
 TEST(Scene, TheDefaultTransferFunctionTakesTheColorMapAndRange) {

@@ -35,6 +35,9 @@ struct VolumeRendererTraits {
   /// It computes on the CPU's cores, not through OpenGL: the quick choice where OpenGL is a
   /// software rasterizer.
   bool runsOnCpu = false;
+  /// It draws a mesh's field through the cells' own shape functions when asked
+  /// (FieldInterpolation::Element), not only linear on their tetrahedra.
+  bool elementInterpolation = false;
 };
 
 }  // namespace volpost

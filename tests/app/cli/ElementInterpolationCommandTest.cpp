@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: MIT
+// `volpost render --interpolation element`: the cells' own field drawn by the reference,
+// refused by renderers that draw the tetrahedra only, kept in the state file.
+#include "FloatPictures.hpp"
+#include "ProcessRunner.hpp"
+#include "support/TestSupport.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+using volpost::test::dataFile;
+using volpost::test::runVolpost;
+
+namespace {
+
+// A legacy VTK file of n^3 hex8 cells on [0,1]^3 with the point field T = f(x, y, z);
+// `moveFirstCorner` pulls cell 0's corner at the origin through the cell (the map folds).
+std::string writeHexBlock(const std::string& path, int n, const std::function<double(double, double, double)>& f,
+                          bool moveFirstCorner = false) {
+  const int m = n + 1;
+  std::ostringstream points, values, cells;
+  for (int k = 0; k < m; ++k)
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const double x = double(i) / n, y = double(j) / n, z = double(k) / n;
+        const bool moved = moveFirstCorner && i == 0 && j == 0 && k == 0;
+        points << (moved ? 0.9 : x) << ' ' << (moved ? 0.4 : y) << ' ' << (moved ? 0.45 : z) << '\n';
+        values << f(x, y, z) << '\n';
+      }
+  const auto id = [m](int i, int j, int k) { return (k * m + j) * m + i; };
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        cells << "8 " << id(i, j, k) << ' ' << id(i + 1, j, k) << ' ' << id(i + 1, j + 1, k) << ' ' << id(i, j + 1, k)
+              << ' ' << id(i, j, k + 1) << ' ' << id(i + 1, j, k + 1) << ' ' << id(i + 1, j + 1, k + 1) << ' '
+              << id(i, j + 1, k + 1) << '\n';
+  const int count = n * n * n;
+  std::ofstream out(path);
+  out << "# vtk DataFile Version 4.2\nhex8 block\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << m * m * m << " double\n"
+      << points.str() << "CELLS " << count << ' ' << 9 * count << '\n'
+      << cells.str() << "CELL_TYPES " << count << '\n';
+  for (int c = 0; c < count; ++c) out << "12\n";
+  out << "POINT_DATA " << m * m * m << "\nSCALARS T double 1\nLOOKUP_TABLE default\n" << values.str();
+  return path;
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+// A hex8's trilinear field (x y z is its own trilinear interpolant) differs from the linear
+// field of the tetrahedra the hex is split into; the reference draws either on request.
+TEST(ElementInterpolationCommand, TheReferenceDrawsTheHexahedraTrilinearFieldNotTheirSplit) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model =
+      writeHexBlock(dir + "/hex_xyz.vtk", 2, [](double x, double y, double z) { return x * y * z; });
+  const std::string common = "render " + model +
+                             " --field T --size 48x40 --eye 2.2,-1.4,1.9 --target 0.5,0.5,0.5 "
+                             "--up 0,0,1 --renderer reference -o " +
+                             dir + "/hex.png";
+  const std::string element = dir + "/hex_element.npy", split = dir + "/hex_split.npy";
+  const auto a = runVolpost(common + " --interpolation element --float " + element);
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  EXPECT_EQ(a.output.find("note:"), std::string::npos) << "no cell is folded: " << a.output;
+  ASSERT_EQ(runVolpost(common + " --interpolation tetrahedra --float " + split).exitCode, 0);
+  const FloatPicturesApart apart = compareFloatPictures(element, split, 48u * 40u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_GT(apart.worst, 2e-3f) << "the trilinear field is not the split's piecewise linear one";
+  // The default is the split's field.
+  const std::string plain = dir + "/hex_default.npy";
+  ASSERT_EQ(runVolpost(common + " --float " + plain).exitCode, 0);
+  EXPECT_EQ(compareFloatPictures(plain, split, 48u * 40u * 4u).worst, 0.0f);
+}
+
+// A linear field is reproduced exactly by every element (hex20, wedge15, tet10 here): both
+// interpolations draw the same picture, up to the reference's fitting tolerance.
+TEST(ElementInterpolationCommand, QuadraticCellsDrawALinearFieldAsTheirSplitDoes) {
+  const std::string dir = ::testing::TempDir(), model = dataFile("formats/golden.frd");
+  const std::string common =
+      "render " + model + " --field T --size 40x32 --renderer reference -o " + dir + "/golden.png";
+  const std::string element = dir + "/golden_element.npy", split = dir + "/golden_split.npy";
+  const auto a = runVolpost(common + " --interpolation element --float " + element);
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  ASSERT_EQ(runVolpost(common + " --float " + split).exitCode, 0);
+  const FloatPicturesApart apart = compareFloatPictures(element, split, 40u * 32u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_LT(apart.worst, 1e-5f);
+}
+
+TEST(ElementInterpolationCommand, AFoldedCellIsDrawnLinearAndNamed) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeHexBlock(
+      dir + "/hex_folded.vtk", 2, [](double x, double y, double z) { return x + y + z; }, true);
+  const auto r =
+      runVolpost("render " + model + " --field T --size 32x24 --renderer reference --interpolation element -o " + dir +
+                 "/folded.png");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("note: 1 cell folded, inverted or collapsed (no inverse map): drawn linear on their "
+                          "tetrahedra; cell id 1"),
+            std::string::npos)
+      << r.output;
+}
+
+TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheStateKeepsIt) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model =
+      writeHexBlock(dir + "/hex_state.vtk", 2, [](double x, double y, double z) { return x * y * z; });
+  const std::string png = dir + "/state.png";
+  const auto cpu = runVolpost("render " + model + " --field T --renderer cpu --interpolation element -o " + png);
+  EXPECT_EQ(cpu.exitCode, 2);
+  EXPECT_NE(cpu.output.find("is drawn by reference, not by cpu"), std::string::npos) << cpu.output;
+  const auto bad =
+      runVolpost("render " + model + " --field T --renderer reference --interpolation quadratic -o " + png);
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--interpolation quadratic is not one of: element, tetrahedra"), std::string::npos)
+      << bad.output;
+  const auto surface = runVolpost("render " + model + " --field T --interpolation element -o " + png);
+  EXPECT_EQ(surface.exitCode, 2) << surface.output;
+
+  const std::string state = dir + "/element.json", first = dir + "/state_first.npy", again = dir + "/state_again.npy";
+  const auto saved = runVolpost("render " + model +
+                                " --field T --size 32x24 --renderer reference --interpolation element "
+                                "-o " +
+                                png + " --float " + first + " --save-state " + state);
+  ASSERT_EQ(saved.exitCode, 0) << saved.output;
+  EXPECT_NE(readText(state).find("\"interpolation\": \"element\""), std::string::npos) << readText(state);
+  ASSERT_EQ(runVolpost("render --state " + state + " --size 32x24 -o " + png + " --float " + again).exitCode, 0);
+  EXPECT_EQ(compareFloatPictures(first, again, 32u * 24u * 4u).worst, 0.0f);
+  const auto stateOnCpu = runVolpost("render --state " + state + " --renderer cpu -o " + png);
+  EXPECT_EQ(stateOnCpu.exitCode, 2);
+  EXPECT_NE(stateOnCpu.output.find("\"volume.interpolation\" in a state file"), std::string::npos) << stateOnCpu.output;
+}
