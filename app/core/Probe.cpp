@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "Probe.hpp"
 
-#include "host/CellShape.hpp"
+#include <volpost/core/CellShape.hpp>
 
 #include <glm/geometric.hpp>
 

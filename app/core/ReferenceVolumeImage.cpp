@@ -9,7 +9,6 @@
 #include <vector>
 
 namespace volpost::app {
-namespace {
 
 // Cells whose map cannot be inverted are drawn by their split, and the user is told which.
 std::vector<std::string> elementFieldNotes(const optics::ElementField& field, const Mesh& mesh) {
@@ -29,8 +28,6 @@ std::vector<std::string> elementFieldNotes(const optics::ElementField& field, co
                     " ray crossings of a cell where its inverse map did not converge: drawn linear on its tetrahedra");
   return notes;
 }
-
-}  // namespace
 
 optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int height, int threads,
                                              const Progress& progress) {

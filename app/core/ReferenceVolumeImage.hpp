@@ -9,11 +9,19 @@
 
 #include <volpost/core/Progress.hpp>
 
+#include <string>
+#include <vector>
+
 namespace volpost::app {
 
 /// The scene's result, transfer function, camera, clip planes (box included) and
 /// iso-surfaces, rendered by the reference renderer on `threads` cores (0: all). Throws
 /// std::invalid_argument without a result, Cancelled on request.
+/// What the user should know after drawing the cells' own field: the cells drawn by their
+/// split (no inverse map; their ids, the first ten) and the stretches where the map did not
+/// converge. Empty when there is nothing to say.
+std::vector<std::string> elementFieldNotes(const optics::ElementField& field, const Mesh& mesh);
+
 optics::ReferenceImage renderVolumeReference(const Scene& scene, int width, int height, int threads = 0,
                                              const Progress& progress = {});
 

@@ -77,6 +77,7 @@ void SceneDrawing::forgetVolume() {
   drawn_.geometry = drawn_.values = drawn_.tables = drawn_.planes = drawn_.iso = drawn_.mode = kNever;
   culled_.reset();
   culledFor_.clear();
+  elementField_.reset();
 }
 
 void SceneDrawing::initialize() {
@@ -245,7 +246,28 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
     const std::vector<double> tetValues = session.tetValues(view);
     volume_->setValues(culled_ ? culled_->values(view.location, tetValues) : tetValues);  // only the values travel
   }
+  if (geometry || values || drawn_.mode != now.mode) applyElementField(scene);  // setVolume and setValues drop it
   applyVolumeSettings(scene);
+}
+
+void SceneDrawing::applyElementField(const Scene& scene) {
+  const ModelSession& session = *scene.session();
+  const ScalarView& view = *scene.view();
+  elementField_.reset();
+  // Values per cell are constant in it: both interpolations are the same field.
+  if (!volumeTraits_.elementInterpolation) return;
+  if (scene.shown().volume.interpolation != FieldInterpolation::Element || view.location != FieldLocation::Node) {
+    volume_->setElementField(nullptr, {});
+    return;
+  }
+  const TetMesh& split = session.tetrahedra();
+  std::vector<double> converted;
+  auto field = std::make_shared<const optics::ElementField>(session.model().mesh(), view.values.doubles(converted),
+                                                            split, split.mesh.bounds().center());
+  std::vector<std::uint32_t> cellOfTet(culled_ ? culled_->cellOf.size() : split.mesh.cellCount());
+  for (std::size_t t = 0; t < cellOfTet.size(); ++t) cellOfTet[t] = split.sourceCell(culled_ ? culled_->cellOf[t] : t);
+  volume_->setElementField(field, std::move(cellOfTet));
+  elementField_ = std::move(field);
 }
 
 // What every volume renderer takes the same way: the transfer function, planes,

@@ -58,6 +58,8 @@ class SceneDrawing {
   std::size_t isoTriangles() const { return boundary_.isoTriangles(); }
   /// The surface view's iso-surface triangles as last drawn (three corners each).
   const std::vector<glm::dvec3>& isoSurfaceCorners() const { return boundary_.isoCorners(); }
+  /// The cells' own field the volume renderer draws (null: it draws the tetrahedra's).
+  const optics::ElementField* elementField() const { return volumeDrawn_ ? elementField_.get() : nullptr; }
   /// The volume renderer is still refining or building tables off the GUI thread.
   bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
 
@@ -67,6 +69,8 @@ class SceneDrawing {
   void applyToVolume(const Scene& scene);
   void applyToGridVolume(const Scene& scene, GridVolumeRenderer& renderer);
   void applyVolumeSettings(const Scene& scene);
+  /// The cells' own field to a renderer that draws it (or none, for the tetrahedra's field).
+  void applyElementField(const Scene& scene);
   void renderSurface(const Scene& scene, const RenderContext& ctx);
   void renderVolume(const Scene& scene, const RenderContext& ctx);
   void drawUndeformedOutline(const Scene& scene, const RenderContext& ctx);
@@ -97,13 +101,14 @@ class SceneDrawing {
   const StreamlineResult* linesUploaded_ = nullptr;    ///< the lines streamlineRenderer_ holds
   std::shared_ptr<const StreamlineResult> linesHeld_;  ///< kept alive while uploaded
   std::unique_ptr<VolumeRenderer> volume_;
-  std::string volumeName_;                        ///< the renderer volume_ is
-  VolumeRendererTraits volumeTraits_;             ///< what it says of itself (asked once)
-  bool volumeGivenAGrid_ = false;                 ///< volume_ was given the grid (else tetrahedra)
-  bool volumeDrawn_ = false;                      ///< the last frame drew the volume
-  std::optional<CulledMesh> culled_;              ///< the tets the renderer holds, when culled
-  std::vector<ClipPlane> culledFor_;              ///< the planes culled_ was made for
-  std::unique_ptr<OffscreenTarget> depthTarget_;  ///< depth of the edges drawn over a volume
+  std::string volumeName_;                                    ///< the renderer volume_ is
+  VolumeRendererTraits volumeTraits_;                         ///< what it says of itself (asked once)
+  bool volumeGivenAGrid_ = false;                             ///< volume_ was given the grid (else tetrahedra)
+  bool volumeDrawn_ = false;                                  ///< the last frame drew the volume
+  std::optional<CulledMesh> culled_;                          ///< the tets the renderer holds, when culled
+  std::vector<ClipPlane> culledFor_;                          ///< the planes culled_ was made for
+  std::shared_ptr<const optics::ElementField> elementField_;  ///< what the renderer draws, if the cells' own field
+  std::unique_ptr<OffscreenTarget> depthTarget_;              ///< depth of the edges drawn over a volume
   bool initialized_ = false;
 };
 

@@ -48,6 +48,8 @@ SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay) {
     pixels = target.readPixels();
     out.volumeRgba = drawing.readVolumeImage();
     out.isoSurfaceCorners = drawing.isoSurfaceCorners();
+    if (const optics::ElementField* field = drawing.elementField())
+      out.notes = elementFieldNotes(*field, scene.session()->model().mesh());
   }
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   for (int y = 0; y < height; ++y)

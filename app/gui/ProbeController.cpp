@@ -7,8 +7,8 @@
 #include "HistoryPanel.hpp"
 #include "ProbePanel.hpp"
 
+#include <volpost/core/CellShape.hpp>
 #include "Viewport.hpp"
-#include "host/CellShape.hpp"
 
 #include <QAction>
 #include <QDockWidget>

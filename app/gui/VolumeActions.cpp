@@ -41,6 +41,14 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
     syncToScene();
   });
 
+  interpolation_ = view.addAction("Cells' Own &Interpolation (trilinear, quadratic)");
+  interpolation_->setObjectName("elementInterpolationAction");
+  interpolation_->setCheckable(true);
+  interpolation_->setToolTip(
+      "Draw the field as the solver defines it in each cell (trilinear in a hexahedron, quadratic in a "
+      "10-node tetrahedron); off: linear on the tetrahedra the cells are split into");
+  connect(interpolation_, &QAction::toggled, this, &VolumeActions::drawCellsOwnField);
+
   edges_ = view.addAction("Element &Edges over the Volume");
   edges_->setObjectName("volumeEdgesAction");
   edges_->setCheckable(true);
@@ -72,11 +80,32 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
 }
 
 void VolumeActions::syncToScene() {
-  const QSignalBlocker a(volume_), b(shading_), c(edges_), d(outline_);
+  const QSignalBlocker a(volume_), b(shading_), c(edges_), d(outline_), e(interpolation_);
   volume_->setChecked(scene_.volumeShown());
+  interpolation_->setChecked(scene_.volume().interpolation == FieldInterpolation::Element);
   shading_->setChecked(scene_.volume().shading);
   edges_->setChecked(scene_.volume().edges);
   outline_->setChecked(scene_.volume().outline);
+}
+
+void VolumeActions::drawCellsOwnField(bool on) {
+  const std::string renderer = scene_.volume().renderer;
+  const auto traits = scene_.volumeRenderers().traitsOf(renderer);
+  if (on && traits && !traits->elementInterpolation) {
+    const std::string drawing =
+        scene_.volumeRenderers().namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; });
+    window_.statusBar()->showMessage(
+        QString::fromStdString("The volume renderer " + renderer + " draws the field linear on the tetrahedra; " +
+                               (drawing.empty() ? std::string("no loaded renderer draws the cells' own interpolation")
+                                                : "choose " + drawing + " in Volume Renderer to draw the cells' own")));
+  } else if (changeScene_([on](Scene& s) {
+               s.setInterpolation(on ? FieldInterpolation::Element : FieldInterpolation::Tetrahedra);
+             })) {
+    window_.statusBar()->showMessage(
+        on ? "The volume shows each cell's own interpolation of the node values"
+           : "The volume shows the field linear on the tetrahedra the cells are split into");
+  }
+  syncToScene();
 }
 
 void VolumeActions::show(bool on) {

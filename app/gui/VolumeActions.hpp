@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The window's volume entries: View > Volume Rendering (V), Shade the Volume by Its
-// Gradient (grids), Load a 2D Transfer Function (grids)... and Use the 1D Transfer
-// Function. The scene is the one record of them; the entries show it.
+// Gradient (grids), the Cells' Own Interpolation (meshes), Load a 2D Transfer Function
+// (grids)... and Use the 1D Transfer Function. The scene is the one record of them; the entries show it.
 #pragma once
 
 #include "ChangeScene.hpp"
@@ -57,8 +57,12 @@ class VolumeActions : public QObject {
   Followers followers_;
   QAction* volume_ = nullptr;
   QAction* shading_ = nullptr;
-  QAction* edges_ = nullptr;    ///< element edges over the volume
-  QAction* outline_ = nullptr;  ///< the model's feature edges over the volume
+  QAction* edges_ = nullptr;          ///< element edges over the volume
+  QAction* outline_ = nullptr;        ///< the model's feature edges over the volume
+  QAction* interpolation_ = nullptr;  ///< the cells' own interpolation (else the tetrahedra's)
+  /// The cells' own interpolation on or off; refused, saying why, where the renderer in use
+  /// draws the tetrahedra's field only.
+  void drawCellsOwnField(bool on);
 };
 
 }  // namespace volpost::app

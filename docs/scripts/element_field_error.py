@@ -29,7 +29,7 @@ VTK_TYPE = {"tet4": 10, "hex8": 12, "hex20": 25, "tet10": 24}
 
 def field(p):
     x, y, z = p
-    return math.sin(3.0 * x) * math.cos(2.0 * y) + 0.5 * math.sin(4.0 * z)
+    return math.sin(3.0 * x) * math.cos(2.0 * y) + 0.5 * math.sin(4.0 * z + 2.0 * x)
 
 
 def mesh(kind, n):

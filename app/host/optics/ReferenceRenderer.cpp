@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "host/optics/ReferenceRenderer.hpp"
 
-#include "host/optics/PolynomialSegment.hpp"
+#include <volpost/core/optics/ElementStretch.hpp>
+#include <volpost/core/optics/Headlight.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -66,11 +67,6 @@ LocalRay localRay(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 directi
 
 }  // namespace
 
-double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction) {
-  const double g = glm::length(gradient);
-  return g > 0.0 && std::isfinite(g) ? 0.3 + 0.7 * std::abs(glm::dot(gradient / g, direction)) : 1.0;
-}
-
 // A tet's segment with the iso-surfaces it crosses: volume pieces between crossings, each
 // surface composited at its crossing. A crossing counts when the value lies in
 // (sFront, sBack] along the ray, so a surface on a shared face is met once.
@@ -106,36 +102,6 @@ SegmentLight linearTetSegment(const TetVolume& volume, const TransferFunction& t
   return segmentWithSurfaces(tf, settings, sFront, sBack, i.t1 - i.t0, tet.gradient, r.d);
 }
 
-// How far the fitted polynomial may stray from the element's field, relative to the
-// field's range, before a segment is halved; and how often it may be halved.
-constexpr double kFitTolerance = 1e-10;
-constexpr int kMaxHalvings = 10;
-
-// The ray from t0 to t1 inside one cell, through the cell's own interpolation: fitted by a
-// polynomial (halved until it fits), each piece integrated to rounding. nullopt where the
-// cell's map could not be inverted at a point of the ray.
-std::optional<SegmentLight> elementSegment(const ElementField& field, std::uint32_t cell, const TransferFunction& tf,
-                                           const RaySettings& settings, const LocalRay& r, double t0, double t1,
-                                           int halvings = 0) {
-  const double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
-  glm::dvec3 xi = field.start(cell);
-  double error = 0.0;
-  const auto p = fitChebyshev([&](double u) { return field.value(cell, r.o + (mid + half * u) * r.d, xi); }, error);
-  if (!p) return std::nullopt;
-  if (error > kFitTolerance * field.valueScale() && halvings < kMaxHalvings) {
-    auto front = elementSegment(field, cell, tf, settings, r, t0, mid, halvings + 1);
-    auto back = elementSegment(field, cell, tf, settings, r, mid, t1, halvings + 1);
-    if (!front || !back) return std::nullopt;
-    compositeBehind(*front, *back);
-    return front;
-  }
-  const auto gradientAt = [&](double u) {
-    glm::dvec3 at = xi;
-    return field.value(cell, r.o + (mid + half * u) * r.d, at) ? field.gradient(cell, at) : glm::dvec3(0.0);
-  };
-  return integratePolynomialSegment(tf, settings.isoSurfaces, *p, t1 - t0, gradientAt, r.d);
-}
-
 }  // namespace
 
 SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
@@ -156,7 +122,7 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
     while (last + 1 < list.size() && list[last + 1].t0 <= end &&
            field->cellOfTet(volume.tet(list[last + 1].tet).source) == cell)
       end = std::max(end, list[++last].t1);
-    if (const auto light = elementSegment(*field, cell, tf, settings, r, list[i].t0, end)) {
+    if (const auto light = integrateElementStretch(*field, cell, tf, settings.isoSurfaces, r.o, r.d, list[i].t0, end)) {
       compositeBehind(total, *light);
     } else {  // the map could not be inverted along this ray: the split's field there
       field->countFallback();

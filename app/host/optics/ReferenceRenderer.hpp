@@ -13,9 +13,9 @@
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/Progress.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/ElementField.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
-#include "host/optics/ElementField.hpp"
 #include "host/optics/TetVolume.hpp"
 
 #include <glm/vec4.hpp>
@@ -55,8 +55,6 @@ double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direc
 /// `gradient` (0.3 + 0.7 |cos| headlight against the unit `direction`).
 SegmentLight segmentWithSurfaces(const TransferFunction& tf, const RaySettings& settings, double sFront, double sBack,
                                  double length, const glm::dvec3& gradient, const glm::dvec3& direction);
-/// The shading factor of an iso-surface with this gradient seen along the unit direction.
-double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction);
 
 struct ReferenceImage {
   int width = 0, height = 0;

@@ -8,6 +8,7 @@
 #include "PiecewiseIntegrator.hpp"
 
 #include <volpost/core/WorkerThreads.hpp>
+#include <volpost/core/optics/ElementStretch.hpp>
 
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -161,6 +162,9 @@ struct Shared {
   const std::vector<std::uint8_t>& visible;  ///< per tet: can it add anything to a picture?
   std::size_t stepCap;
   float reentryTolerance;
+  const TransferFunction& transfer;  ///< what the element field's stretches are lit by
+  const CpuElementField* element;    ///< null: the tetrahedra's field
+  glm::dvec3 toField;                ///< walk coordinates + this = the element field's
 };
 
 // Empty-space skipping: a tet whose values all map to zero extinction (and hold no
@@ -169,7 +173,8 @@ struct Shared {
 // them, found like the mesh's own boundary: typical transfer functions, transparent over
 // most of the range, leave most tets out.
 std::vector<std::uint8_t> visibleTets(const TetWalkMesh& mesh, const PiecewiseIntegrator& tf,
-                                      const std::vector<optics::IsoSurface>& isoSurfaces, unsigned threads) {
+                                      const std::vector<optics::IsoSurface>& isoSurfaces, unsigned threads,
+                                      const CpuElementField* element) {
   std::vector<std::uint8_t> visible(mesh.tetCount());
   const double offset = mesh.valueOffset();
   std::atomic<std::size_t> next{0};
@@ -178,7 +183,16 @@ std::vector<std::uint8_t> visibleTets(const TetWalkMesh& mesh, const PiecewiseIn
     for (std::size_t first; (first = next.fetch_add(kChunk)) < visible.size();)
       for (std::size_t t = first; t < std::min(first + kChunk, visible.size()); ++t) {
         double lo, hi;
-        if (mesh.cellValues()) {
+        const std::uint32_t cell = element ? element->cellOfTet[t] : 0;
+        if (element && !element->field->linearIn(cell)) {
+          // The cell's own field reaches past its tets' corner values: its bound, or all of it.
+          const auto bound = element->field->valueBound(cell);
+          if (!bound) {
+            visible[t] = 1;
+            continue;
+          }
+          lo = bound->first - offset, hi = bound->second - offset;
+        } else if (mesh.cellValues()) {
           lo = hi = mesh.tetValue(t);
         } else {
           const glm::uvec4 v = mesh.tetNodes(t);
@@ -194,7 +208,6 @@ std::vector<std::uint8_t> visibleTets(const TetWalkMesh& mesh, const PiecewiseIn
   });
   return visible;
 }
-
 
 EntryFace boundaryEntry(const TetWalkMesh& mesh, const BoundaryFace& f, const PixelRay& ray) {
   EntryFace e;
@@ -255,9 +268,25 @@ optics::SegmentLight segmentLight(const Shared& sh, double sFront, double sBack,
   return total;
 }
 
+// A tet's piece of a ray as the tetrahedra's field gives it: what an element stretch falls
+// back to where the cell's map cannot be inverted along it.
+struct LinearPiece {
+  double sFront, sBack, length;
+  glm::uvec4 tet;
+};
+
 struct RayTotals {
   std::size_t steps = 0, stopped = 0, ambiguous = 0, capped = 0;
   double maxStop = 0.0;
+  std::vector<LinearPiece> stretchPieces;  ///< the open element stretch's tets (kept per thread)
+};
+
+// The ray's way through one cell drawn by the cell's own field: its tets' segments, joined,
+// lit together once the ray leaves the cell.
+struct OpenStretch {
+  bool open = false;
+  std::uint32_t cell = 0;
+  double t0 = 0.0, t1 = 0.0;
 };
 
 // The exit face of the tet entered through `in`, whose fourth vertex is k (r, s): each
@@ -276,10 +305,34 @@ inline int exitFace(const Side& eA, const Side& eB, const Side& eC, bool& ambigu
   return m0 >= m1 && m0 >= m2 ? 0 : (m1 >= m2 ? 1 : 2);
 }
 
-// Walks one ray from a boundary entry until it leaves the mesh, stops, or passes the end of
-// its window [w0, w1]. Returns the parameter where it left the mesh (or +inf when done).
-float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t tet, float tIn, float sIn, float w0,
-           float w1, optics::SegmentLight& light, RayTotals& totals) {
+// Lights the open element stretch (if any) behind `light`: the cell's own field fitted and
+// integrated in double, or its tets' linear pieces where the map cannot be inverted.
+// Returns whether the ray is now nearly opaque (and counts it).
+bool closeStretch(const Shared& sh, const PixelRay& ray, OpenStretch& stretch, optics::SegmentLight& light,
+                  RayTotals& totals) {
+  if (!stretch.open) return false;
+  stretch.open = false;
+  const optics::ElementField& field = *sh.element->field;
+  const auto lit = optics::integrateElementStretch(field, stretch.cell, sh.transfer, sh.settings.isoSurfaces,
+                                                   ray.exactO + sh.toField, ray.exactD, stretch.t0, stretch.t1);
+  if (lit) {
+    optics::compositeBehind(light, *lit);
+  } else {
+    field.countFallback();
+    for (const LinearPiece& p : totals.stretchPieces)
+      optics::compositeBehind(light, segmentLight(sh, p.sFront, p.sBack, p.length, p.tet, ray.d));
+  }
+  totals.stretchPieces.clear();
+  if (light.transmittance >= sh.settings.terminationTransmittance) return false;
+  ++totals.stopped;
+  totals.maxStop = std::max(totals.maxStop, light.transmittance);
+  return true;
+}
+
+// The walk itself (walk below): an element stretch still open when it returns is closed
+// by the caller.
+float walkTets(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t tet, float tIn, float sIn, float w0,
+               float w1, optics::SegmentLight& light, RayTotals& totals, OpenStretch& stretch) {
   const TetWalkMesh& mesh = sh.mesh;
   const auto& nodes = mesh.nodes();
   const bool cellData = mesh.cellValues();
@@ -340,11 +393,20 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
       if (a < w0) sa = sIn + (sOut - sIn) * ((w0 - tIn) / span), a = w0;
       if (b > w1) sb = sIn + (sOut - sIn) * ((w1 - tIn) / span), b = w1;
       if (cellData) sa = sb = mesh.tetValue(tet);
-      optics::compositeBehind(light, segmentLight(sh, sa, sb, double(b) - double(a), v, ray.d));
-      if (light.transmittance < sh.settings.terminationTransmittance) {
-        ++totals.stopped;
-        totals.maxStop = std::max(totals.maxStop, light.transmittance);
-        return inf;
+      const std::uint32_t cell = sh.element ? sh.element->cellOfTet[tet] : 0;
+      if (sh.element && !sh.element->field->linearIn(cell)) {
+        if (stretch.open && stretch.cell != cell && closeStretch(sh, ray, stretch, light, totals)) return inf;
+        if (!stretch.open) stretch = {true, cell, double(a), double(b)};
+        stretch.t1 = double(b);
+        totals.stretchPieces.push_back({sa, sb, double(b) - double(a), v});
+      } else {
+        if (closeStretch(sh, ray, stretch, light, totals)) return inf;
+        optics::compositeBehind(light, segmentLight(sh, sa, sb, double(b) - double(a), v, ray.d));
+        if (light.transmittance < sh.settings.terminationTransmittance) {
+          ++totals.stopped;
+          totals.maxStop = std::max(totals.maxStop, light.transmittance);
+          return inf;
+        }
       }
     }
     if (next < 0) return tOut;
@@ -353,6 +415,17 @@ float walk(const Shared& sh, const PixelRay& ray, EntryFace in, std::uint32_t te
     tIn = tOut;
     sIn = sOut;
   }
+}
+
+// Walks one ray from a boundary entry until it leaves the mesh, stops, or passes the end of
+// its window [w0, w1]. Returns the parameter where it left the mesh (or +inf when done).
+float walk(const Shared& sh, const PixelRay& ray, const EntryFace& in, std::uint32_t tet, float tIn, float sIn,
+           float w0, float w1, optics::SegmentLight& light, RayTotals& totals) {
+  OpenStretch stretch;
+  const float left = walkTets(sh, ray, in, tet, tIn, sIn, w0, w1, light, totals, stretch);
+  // Leaving the cell through the mesh's boundary, the window's end or a stop ends its stretch.
+  if (closeStretch(sh, ray, stretch, light, totals)) return std::numeric_limits<float>::infinity();
+  return left;
 }
 
 // Asks progress whether to go on (the calling thread's worker does); on cancellation the
@@ -534,17 +607,18 @@ unsigned threadsFor(int threadCount) {
 }  // namespace
 
 VisiblePart findVisiblePart(const TetWalkMesh& mesh, const TransferFunction& tf,
-                            const std::vector<optics::IsoSurface>& isoSurfaces, int threadCount) {
+                            const std::vector<optics::IsoSurface>& isoSurfaces, int threadCount,
+                            const CpuElementField* element) {
   VisiblePart part;
-  part.tets = visibleTets(mesh, PiecewiseIntegrator(tf), isoSurfaces, threadsFor(threadCount));
+  part.tets = visibleTets(mesh, PiecewiseIntegrator(tf), isoSurfaces, threadsFor(threadCount), element);
   part.faces = mesh.boundaryOf(part.tets);
   return part;
 }
 
 CpuImage renderCpu(const TetWalkMesh& mesh, const TransferFunction& tf, const Camera& camera, int width, int height,
                    const CpuRaySettings& settings, const Progress& progress, int threadCount) {
-  return renderCpu(mesh, findVisiblePart(mesh, tf, settings.isoSurfaces, threadCount), tf, camera, width, height, settings,
-                   progress, threadCount);
+  return renderCpu(mesh, findVisiblePart(mesh, tf, settings.isoSurfaces, threadCount, settings.element.get()), tf,
+                   camera, width, height, settings, progress, threadCount);
 }
 
 CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const TransferFunction& tf, const Camera& camera,
@@ -563,7 +637,20 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
   const std::vector<std::uint32_t>& firstEntry = found.first;
   image.stats.entryMs = msSince(entryStart);
 
-  const Shared shared{mesh, integrator, settings, visible, mesh.tetCount() + 16, float(1e-6 * mesh.diagonal())};
+  const CpuElementField* element = settings.element.get();
+  if (element && (element->cellOfTet.size() != mesh.tetCount() || mesh.cellValues()))
+    throw std::invalid_argument(
+        "the element field does not fit the mesh: " + std::to_string(element->cellOfTet.size()) + " cells named for " +
+        std::to_string(mesh.tetCount()) + " tetrahedra");
+  const Shared shared{mesh,
+                      integrator,
+                      settings,
+                      visible,
+                      mesh.tetCount() + 16,
+                      float(1e-6 * mesh.diagonal()),
+                      tf,
+                      element,
+                      element ? mesh.origin() - element->field->origin() : glm::dvec3(0.0)};
   constexpr int kTile = 16;
   const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
   std::atomic<int> nextTile{0}, tilesDone{0};

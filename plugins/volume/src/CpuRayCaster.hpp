@@ -20,13 +20,23 @@
 #include <volpost/core/ClipPlane.hpp>
 #include <volpost/core/Progress.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/ElementField.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include "TetWalkMesh.hpp"
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace volpost::volume {
+
+/// The cells' own field for the walk (docs/methods/element_field.md): `field` through each
+/// cell's inverse map, `cellOfTet[t]` the field's cell that walk tet t was split from.
+struct CpuElementField {
+  std::shared_ptr<const optics::ElementField> field;
+  std::vector<std::uint32_t> cellOfTet;
+};
 
 struct CpuRaySettings {
   std::vector<ClipPlane> clipPlanes;    ///< in model coordinates
@@ -44,6 +54,9 @@ struct CpuRaySettings {
   /// Regular grids: a 2D transfer function over the value and its gradient magnitude, used
   /// instead of the 1D one. The tetrahedral walk refuses it.
   std::optional<TransferFunction2D> transferFunction2D;
+  /// Meshes: the cells' own field instead of the tetrahedra's linear one (null: the latter).
+  /// Each ray's stretch through one such cell is fitted and integrated in double.
+  std::shared_ptr<const CpuElementField> element;
 };
 
 struct CpuRenderStats {
@@ -73,8 +86,11 @@ struct VisiblePart {
   std::vector<std::uint8_t> tets;   ///< one flag per tet
   std::vector<BoundaryFace> faces;  ///< listed outward
 };
+/// With an element field, a cell's tets show together, by the bound of the cell's field
+/// (ElementField::valueBound; always where it has none).
 VisiblePart findVisiblePart(const TetWalkMesh& mesh, const TransferFunction& tf,
-                            const std::vector<optics::IsoSurface>& isoSurfaces, int threads = 0);
+                            const std::vector<optics::IsoSurface>& isoSurfaces, int threads = 0,
+                            const CpuElementField* element = nullptr);
 
 /// Renders the volume as seen by the camera, with the same rays as the other renderers
 /// (through pixel centres, perspective or orthographic). threads = 0: all cores. Throws

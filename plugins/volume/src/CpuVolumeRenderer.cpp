@@ -35,7 +35,30 @@ void CpuVolumeRenderer::setVolume(const Mesh& mesh, FieldLocation location, std:
   grid_.reset();
   mesh_ = &mesh;
   location_ = location;
+  settings_.element.reset();
   ++meshUploads_;
+  ++revision_;
+  visible_.reset();
+}
+
+void CpuVolumeRenderer::setElementField(std::shared_ptr<const optics::ElementField> field,
+                                        std::vector<std::uint32_t> cellOfTet) {
+  if (!field) {
+    if (settings_.element) ++revision_, visible_.reset();
+    settings_.element.reset();
+    return;
+  }
+  if (!walkMesh_ || !mesh_) throw std::logic_error("CpuVolumeRenderer::setElementField before setVolume");
+  if (location_ != FieldLocation::Node)
+    throw std::invalid_argument("the cells' own interpolation needs values at the nodes, not per cell");
+  if (cellOfTet.size() != mesh_->cellCount())
+    throw std::invalid_argument("the element field names the cells of " + std::to_string(cellOfTet.size()) +
+                                " tetrahedra; the volume has " + std::to_string(mesh_->cellCount()));
+  auto element = std::make_shared<CpuElementField>();
+  element->field = std::move(field);
+  element->cellOfTet.resize(walkMesh_->tetCount());  // the walk leaves degenerate tets out
+  for (std::size_t t = 0; t < element->cellOfTet.size(); ++t) element->cellOfTet[t] = cellOfTet[walkMesh_->meshTet(t)];
+  settings_.element = std::move(element);
   ++revision_;
   visible_.reset();
 }
@@ -45,6 +68,7 @@ void CpuVolumeRenderer::setGrid(const RegularGrid& grid, SampleView values) {
   walkMesh_.reset();
   mesh_ = nullptr;
   location_ = FieldLocation::Node;
+  settings_.element.reset();
   ++meshUploads_;
   ++revision_;
   visible_.reset();
@@ -81,6 +105,7 @@ void CpuVolumeRenderer::setValues(std::span<const double> values) {
   }
   if (!mesh_) throw std::logic_error("CpuVolumeRenderer::setValues before setVolume");
   walkMesh_ = TetWalkMesh::withValues(walkMesh_, *mesh_, values);
+  settings_.element.reset();
   ++valueUploads_;
   ++revision_;
   visible_.reset();
@@ -121,7 +146,9 @@ void CpuVolumeRenderer::cancelJob() {
 }
 
 std::shared_ptr<const VisiblePart> CpuVolumeRenderer::visiblePart() {
-  if (!visible_) visible_ = std::make_shared<const VisiblePart>(findVisiblePart(*walkMesh_, tf_, settings_.isoSurfaces, threads_));
+  if (!visible_)
+    visible_ = std::make_shared<const VisiblePart>(
+        findVisiblePart(*walkMesh_, tf_, settings_.isoSurfaces, threads_, settings_.element.get()));
   return visible_;
 }
 

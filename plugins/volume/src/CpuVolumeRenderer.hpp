@@ -35,6 +35,7 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
     t.drawsGrids = t.transferFunction2D = t.shading = true;
     t.samplingStepOnMeshes = false;  // meshes are integrated exactly; grids are marched
     t.runsOnCpu = true;
+    t.elementInterpolation = true;
     return t;
   }
   void initialize() override;
@@ -42,6 +43,8 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   void render(const RenderContext& ctx) override;
 
   void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) override;
+  void setElementField(std::shared_ptr<const optics::ElementField> field,
+                       std::vector<std::uint32_t> cellOfTet) override;
   void setGrid(const RegularGrid& grid, SampleView values) override;
   void setGridValues(SampleView values) override;
   /// Grids only (the marcher shades by the trilinear gradient); meshes are drawn unlit.

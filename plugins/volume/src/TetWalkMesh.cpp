@@ -83,14 +83,18 @@ TetWalkMesh::TetWalkMesh(const Mesh& mesh, FieldLocation location, std::span<con
       parallelChunks(count, [&](std::size_t c) { cellValues_[c] = float(values[c] - valueOffset_); });
   } else {
     auto own = std::make_shared<std::vector<std::uint32_t>>(count * 4);
+    auto keptTets = std::make_shared<std::vector<std::uint32_t>>();
+    if (skipped_ > 0) keptTets->reserve(count);
     for (std::size_t c = 0, t = 0; c < mesh.cellCount(); ++c) {
       if (!kept[c]) continue;
+      if (skipped_ > 0) keptTets->push_back(std::uint32_t(c));
       const auto nodes = mesh.cellNodes(c);
       std::copy(nodes.begin(), nodes.begin() + 4, own->begin() + std::ptrdiff_t(4 * t));
       if (location == FieldLocation::Cell) cellValues_[t] = float(values[c] - valueOffset_);
       ++t;
     }
     tetNodes_ = own->data();
+    if (skipped_ > 0) keptTets_ = std::move(keptTets);
     stride_ = 4;
     tetNodeOwner_ = std::move(own);
   }
@@ -141,7 +145,7 @@ std::vector<BoundaryFace> TetWalkMesh::boundaryOf(const std::vector<std::uint8_t
 std::size_t TetWalkMesh::bytes() const {
   const std::size_t ownNodes = sharedCells_ ? 0 : tetCount() * 4 * sizeof(std::uint32_t);
   return nodes_.size() * (sizeof(glm::vec4) + sizeof(glm::dvec3)) + ownNodes + tetCount() * sizeof(glm::ivec4) +
-         cellValues_.size() * sizeof(float);
+         cellValues_.size() * sizeof(float) + (keptTets_ ? keptTets_->size() * sizeof(std::uint32_t) : 0);
 }
 
 }  // namespace volpost::volume

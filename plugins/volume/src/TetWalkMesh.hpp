@@ -53,6 +53,8 @@ class TetWalkMesh {
     const std::uint32_t* n = tetNodes_ + i * stride_;
     return {n[0], n[1], n[2], n[3]};
   }
+  /// The index in the given mesh of tet i (they differ after a left-out tet).
+  std::size_t meshTet(std::size_t i) const { return keptTets_ ? (*keptTets_)[i] : i; }
   /// The tet across the face opposite each vertex of tet i (-1: none).
   const glm::ivec4& tetNeighbors(std::size_t i) const { return (*neighbors_)[i]; }
   /// Whether the vertex ids are `mesh`'s cells themselves (not a copy).
@@ -80,6 +82,7 @@ class TetWalkMesh {
   std::size_t stride_ = 4;
   bool sharedCells_ = false;
   std::shared_ptr<const std::vector<glm::ivec4>> neighbors_ = std::make_shared<const std::vector<glm::ivec4>>();
+  std::shared_ptr<const std::vector<std::uint32_t>> keptTets_;  ///< null when no tet was left out
   std::vector<float> cellValues_;
   double valueOffset_ = 0.0;
   std::size_t skipped_ = 0;

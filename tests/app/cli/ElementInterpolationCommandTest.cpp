@@ -113,9 +113,9 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   const std::string model =
       writeHexBlock(dir + "/hex_state.vtk", 2, [](double x, double y, double z) { return x * y * z; });
   const std::string png = dir + "/state.png";
-  const auto cpu = runVolpost("render " + model + " --field T --renderer cpu --interpolation element -o " + png);
-  EXPECT_EQ(cpu.exitCode, 2);
-  EXPECT_NE(cpu.output.find("is drawn by reference, not by cpu"), std::string::npos) << cpu.output;
+  const auto gpu = runVolpost("render " + model + " --field T --renderer raycast --interpolation element -o " + png);
+  EXPECT_EQ(gpu.exitCode, 2);
+  EXPECT_NE(gpu.output.find("is drawn by cpu, reference, not by raycast"), std::string::npos) << gpu.output;
   const auto bad =
       runVolpost("render " + model + " --field T --renderer reference --interpolation quadratic -o " + png);
   EXPECT_EQ(bad.exitCode, 2);
@@ -133,7 +133,35 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   EXPECT_NE(readText(state).find("\"interpolation\": \"element\""), std::string::npos) << readText(state);
   ASSERT_EQ(runVolpost("render --state " + state + " --size 32x24 -o " + png + " --float " + again).exitCode, 0);
   EXPECT_EQ(compareFloatPictures(first, again, 32u * 24u * 4u).worst, 0.0f);
-  const auto stateOnCpu = runVolpost("render --state " + state + " --renderer cpu -o " + png);
-  EXPECT_EQ(stateOnCpu.exitCode, 2);
-  EXPECT_NE(stateOnCpu.output.find("\"volume.interpolation\" in a state file"), std::string::npos) << stateOnCpu.output;
+  const auto stateOnGpu = runVolpost("render --state " + state + " --renderer vicp -o " + png);
+  EXPECT_EQ(stateOnGpu.exitCode, 2);
+  EXPECT_NE(stateOnGpu.output.find("\"volume.interpolation\" in a state file"), std::string::npos) << stateOnGpu.output;
+}
+
+// The CPU ray caster draws the cells' own field as the reference does, up to its float walk;
+// a folded cell is named by it too.
+TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model =
+      writeHexBlock(dir + "/hex_cpu.vtk", 3, [](double x, double y, double z) { return x * y * z; });
+  const std::string common =
+      "render " + model + " --field T --size 48x40 --interpolation element -o " + dir + "/cpu.png";
+  const std::string cpu = dir + "/hex_cpu.npy", reference = dir + "/hex_cpu_reference.npy",
+                    split = dir + "/hex_cpu_split.npy";
+  const auto a = runVolpost(common + " --renderer cpu --termination 0 --float " + cpu);
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  ASSERT_EQ(runVolpost(common + " --renderer reference --float " + reference).exitCode, 0);
+  ASSERT_EQ(runVolpost(common + " --renderer cpu --termination 0 --interpolation tetrahedra --float " + split).exitCode,
+            0);
+  const FloatPicturesApart apart = compareFloatPictures(cpu, reference, 48u * 40u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(apart.worst, 2e-4f);
+  EXPECT_GT(compareFloatPictures(split, reference, 48u * 40u * 4u).worst, 2e-3f);
+
+  const std::string folded = writeHexBlock(
+      dir + "/hex_cpu_folded.vtk", 2, [](double x, double y, double z) { return x + y + z; }, true);
+  const auto f = runVolpost("render " + folded + " --field T --size 32x24 --renderer cpu --interpolation element -o " +
+                            dir + "/cpu_folded.png");
+  ASSERT_EQ(f.exitCode, 0) << f.output;
+  EXPECT_NE(f.output.find("note: 1 cell folded, inverted or collapsed"), std::string::npos) << f.output;
 }

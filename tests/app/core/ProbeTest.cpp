@@ -5,9 +5,9 @@
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
+#include <volpost/core/CellShape.hpp>
 #include "core/Probe.hpp"
 #include "core/ScenePick.hpp"
-#include "host/CellShape.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -9,6 +9,8 @@
 
 #include "support/RayCasterScene.hpp"
 
+#include "CpuVolumeRenderer.hpp"
+
 #include <QAction>
 #include <QApplication>
 #include <QMenu>
@@ -93,6 +95,47 @@ class VolumeActionsTest : public QObject {
     QVERIFY(!scene_->volume().transferFunction2D);
     QCOMPARE(tableChanges_, 2);  // the 1D editor draws again
     QCOMPARE(status(), QString("Volume colors from the 1D transfer function"));
+  }
+
+  void theCellsOwnInterpolationNeedsARendererThatDrawsIt() {
+    QAction* entry = window_->findChild<QAction*>("elementInterpolationAction");
+    entry->setChecked(true);  // the GPU ray caster alone: it draws the tetrahedra's field
+    QVERIFY(!entry->isChecked());
+    QVERIFY(scene_->volume().interpolation == FieldInterpolation::Tetrahedra);
+    QVERIFY2(status().contains("no loaded renderer draws the cells' own interpolation"), qPrintable(status()));
+
+    QMainWindow window;
+    Scene scene(app::VolumeRendererFactory{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
+                                             if (name == "raycast") return std::make_unique<volume::RayCaster>();
+                                             if (name == "cpu") return std::make_unique<volume::CpuVolumeRenderer>();
+                                             return nullptr;
+                                           },
+                                           {"raycast", "cpu"}});
+    QMenu* view = window.menuBar()->addMenu("View");
+    auto* actions = new VolumeActions(window, scene, *view, true, volpost::test::changingScene(window, scene), {});
+    scene.setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));
+    QAction* own = window.findChild<QAction*>("elementInterpolationAction");
+    own->setChecked(true);
+    QVERIFY(!own->isChecked());
+    QVERIFY2(window.statusBar()->currentMessage().contains("choose cpu in Volume Renderer"),
+             qPrintable(window.statusBar()->currentMessage()));
+    scene.setVolumeRenderer("cpu");
+    own->setChecked(true);
+    QVERIFY(own->isChecked());
+    QVERIFY(scene.volume().interpolation == FieldInterpolation::Element);
+    bool refused = false;  // the GPU ray caster would draw the tetrahedra's field under the checked entry
+    try {
+      scene.setVolumeRenderer("raycast");
+    } catch (const std::invalid_argument&) {
+      refused = true;
+    }
+    QVERIFY(refused);
+    QCOMPARE(scene.volume().renderer, std::string("cpu"));
+    own->setChecked(false);
+    QVERIFY(scene.volume().interpolation == FieldInterpolation::Tetrahedra);
+    scene.setInterpolation(FieldInterpolation::Element);  // as a state file would
+    actions->syncToScene();
+    QVERIFY(own->isChecked());
   }
 
   void withoutRenderersTheEntrySaysWhy() {

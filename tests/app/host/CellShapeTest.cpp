@@ -2,7 +2,7 @@
 // Shape functions of every cell type: a partition of unity, one at their own node and zero
 // at the others, reproducing the polynomials their element reproduces; and the inverse map
 // from a point back to natural coordinates on distorted elements.
-#include "host/CellShape.hpp"
+#include <volpost/core/CellShape.hpp>
 
 #include <gtest/gtest.h>
 

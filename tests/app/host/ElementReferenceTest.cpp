@@ -8,7 +8,7 @@
 
 #include <volpost/core/Tetrahedralize.hpp>
 
-#include "host/CellShape.hpp"
+#include <volpost/core/CellShape.hpp>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -2,7 +2,7 @@
 // A segment whose scalar is a polynomial along it, against independent evaluation: the
 // linear case against the closed form, higher degrees against a fine midpoint sum of the
 // transfer function itself; zeros, fits and iso-surfaces met twice on a turning scalar.
-#include "host/optics/PolynomialSegment.hpp"
+#include <volpost/core/optics/PolynomialSegment.hpp>
 
 #include <gtest/gtest.h>
 

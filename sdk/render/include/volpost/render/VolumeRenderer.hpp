@@ -14,14 +14,18 @@
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/TransferFunction.hpp>
+#include <volpost/core/optics/ElementField.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/render/IntegrationMode.hpp>
 #include <volpost/render/Renderer.hpp>
 #include <volpost/render/VolumeLimits.hpp>
 #include <volpost/render/VolumeRendererTraits.hpp>
 
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -53,6 +57,17 @@ class VolumeRenderer : public Renderer {
   virtual void setVolume(const Mesh& mesh, FieldLocation location, std::span<const double> values) = 0;
   /// Only the values change (another result or step on the same mesh).
   virtual void setValues(std::span<const double> values) = 0;
+  /// The cells' own field, for renderers whose traits() say elementInterpolation: node
+  /// values through each cell's shape functions (trilinear, quadratic) instead of linear on
+  /// setVolume's tetrahedra, which still give the geometry. `cellOfTet[t]` is the cell of
+  /// `field` that tet t of setVolume's mesh was split from. Null: the tetrahedra's field
+  /// again. Call after setVolume or setValues (they drop it). Renderers that draw the
+  /// tetrahedra's field only throw std::invalid_argument for a field.
+  virtual void setElementField(std::shared_ptr<const optics::ElementField> field,
+                               std::vector<std::uint32_t> cellOfTet) {
+    (void)cellOfTet;
+    if (field) throw std::invalid_argument("this volume renderer draws the field linear on the tetrahedra only");
+  }
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
   /// Throws std::invalid_argument where checkClipPlanes does (VolumeLimits.hpp).
   virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;

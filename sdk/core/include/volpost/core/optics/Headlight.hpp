@@ -22,4 +22,11 @@ inline glm::dvec2 headlight(const glm::dvec3& gradient, const glm::dvec3& direct
   return {0.3 + 0.7 * c, 0.3 * std::pow(c, 20.0)};
 }
 
+/// The shading factor of an iso-surface with this gradient seen along the unit direction
+/// (0.3 + 0.7 |cos|; 1 where the gradient is zero).
+inline double isoShade(const glm::dvec3& gradient, const glm::dvec3& direction) {
+  const double g = glm::length(gradient);
+  return g > 0.0 && std::isfinite(g) ? 0.3 + 0.7 * std::abs(glm::dot(gradient / g, direction)) : 1.0;
+}
+
 }  // namespace volpost::optics

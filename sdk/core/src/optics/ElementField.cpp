@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-#include "host/optics/ElementField.hpp"
+#include <volpost/core/optics/ElementField.hpp>
 
-#include "host/CellShape.hpp"
+#include <volpost/core/CellShape.hpp>
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +11,24 @@
 #include <string>
 
 namespace volpost::optics {
+namespace {
+
+// The map is affine when its Jacobian is the same at every node and at the centre (to
+// rounding): a parallelepiped, or straight edges with midside nodes halfway.
+bool affineMap(CellType type, std::span<const glm::dvec3> nodes) {
+  if (type == CellType::Pyramid5) return false;  // rational functions: never affine
+  const glm::dmat3 centre = jacobianAt(type, nodes, referenceCentre(type));
+  double scale = 0.0;
+  for (int k = 0; k < 3; ++k) scale = std::max(scale, glm::length(centre[k]));
+  for (int i = 0; i < int(nodes.size()); ++i) {
+    const glm::dmat3 j = jacobianAt(type, nodes, naturalCoordinatesOfNode(type, i));
+    for (int k = 0; k < 3; ++k)
+      if (!(glm::length(j[k] - centre[k]) <= 1e-12 * scale)) return false;
+  }
+  return true;
+}
+
+}  // namespace
 
 ElementField::ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin)
     : mesh_(mesh),
@@ -32,7 +52,8 @@ ElementField::ElementField(const Mesh& mesh, std::span<const double> values, con
     bool finite = true;
     for (int i = 0; i < count; ++i) finite = finite && std::isfinite(cellValues[i]);
     if (!finite) continue;  // the split leaves its tets out
-    if (mapInvertible(type, std::span<const glm::dvec3>(nodes, std::size_t(count)))) elementCells_[c] = 1;
+    const std::span<const glm::dvec3> at(nodes, std::size_t(count));
+    if (mapInvertible(type, at)) elementCells_[c] = affineMap(type, at) ? kAffine : 1;
     else uninvertible_.push_back(std::uint32_t(c));
   }
 }
@@ -61,12 +82,37 @@ std::optional<double> ElementField::value(std::uint32_t cell, const glm::dvec3& 
   return v;
 }
 
+double ElementField::valueAt(std::uint32_t cell, const glm::dvec3& xi) const {
+  const ShapeValues n = shapeFunctions(mesh_.cellType(cell), xi);
+  const auto ids = mesh_.cellNodes(cell);
+  double v = 0.0;
+  for (std::size_t i = 0; i < ids.size() && i < n.size(); ++i) v += n[i] * values_[ids[i]];
+  return v;
+}
+
 glm::dvec3 ElementField::gradient(std::uint32_t cell, const glm::dvec3& xi) const {
   glm::dvec3 nodes[kMaxCellNodes];
   double values[kMaxCellNodes];
   const int count = gather(cell, nodes, values);
   return fieldGradient(mesh_.cellType(cell), std::span<const glm::dvec3>(nodes, std::size_t(count)),
                        std::span<const double>(values, std::size_t(count)), xi);
+}
+
+std::optional<std::pair<double, double>> ElementField::valueBound(std::uint32_t cell) const {
+  const CellType type = mesh_.cellType(cell);
+  if (type == CellType::Hex20 || type == CellType::Wedge15) return std::nullopt;
+  const auto ids = mesh_.cellNodes(cell);
+  const int corners = topology(type).cornerCount;
+  double lo = INFINITY, hi = -INFINITY;
+  for (int i = 0; i < corners; ++i)
+    lo = std::min(lo, values_[ids[std::size_t(i)]]), hi = std::max(hi, values_[ids[std::size_t(i)]]);
+  if (type == CellType::Tet10)  // edge Bernstein coefficient: 2 v_mid - (v_a + v_b) / 2
+    for (const CellEdge& e : topology(type).edges) {
+      const double b = 2.0 * values_[ids[std::size_t(e.mid)]] -
+                       0.5 * (values_[ids[std::size_t(e.a)]] + values_[ids[std::size_t(e.b)]]);
+      lo = std::min(lo, b), hi = std::max(hi, b);
+    }
+  return std::pair{lo, hi};
 }
 
 glm::dvec3 ElementField::start(std::uint32_t cell) const { return referenceCentre(mesh_.cellType(cell)); }

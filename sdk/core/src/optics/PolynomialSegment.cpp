@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-#include "host/optics/PolynomialSegment.hpp"
+#include <volpost/core/optics/PolynomialSegment.hpp>
 
-#include "host/optics/ReferenceRenderer.hpp"
+#include <volpost/core/optics/Headlight.hpp>
+#include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -190,9 +191,24 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
             (j > 0 ? 2.0 * t[std::size_t(k)][std::size_t(j - 1)] : 0.0) - t[std::size_t(k - 1)][std::size_t(j)];
     return t;
   }();
+  // The points (ascending u), the points halfway between them, and the transform's cosines.
+  struct Cosines {
+    std::array<double, n> points{}, between{};
+    std::array<std::array<double, n>, n> transform{};
+  };
+  static const Cosines cosines = [] {
+    Cosines c;
+    for (int i = 0; i < n; ++i) {
+      c.points[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 0.5) / n);
+      c.between[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 1.0) / n);
+      for (int k = 0; k < n; ++k)
+        c.transform[std::size_t(k)][std::size_t(i)] = std::cos(std::numbers::pi * k * (i + 0.5) / n);
+    }
+    return c;
+  }();
   std::array<double, n> values{};
   for (int i = 0; i < n; ++i) {
-    const auto v = f(-std::cos(std::numbers::pi * (i + 0.5) / n));  // ascending u
+    const auto v = f(cosines.points[std::size_t(i)]);
     if (!v || !std::isfinite(*v)) return std::nullopt;
     values[std::size_t(i)] = *v;
   }
@@ -202,7 +218,7 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
   double magnitude = 0.0;
   for (int k = 0; k < n; ++k) {
     double sum = 0.0;
-    for (int i = 0; i < n; ++i) sum += values[std::size_t(i)] * std::cos(std::numbers::pi * k * (i + 0.5) / n);
+    for (int i = 0; i < n; ++i) sum += values[std::size_t(i)] * cosines.transform[std::size_t(k)][std::size_t(i)];
     coefficients[std::size_t(k)] = sum * (k % 2 ? -1.0 : 1.0) * (k == 0 ? 1.0 : 2.0) / n;
     magnitude += std::abs(coefficients[std::size_t(k)]);
   }
@@ -217,7 +233,7 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
       p.c[std::size_t(j)] += coefficients[std::size_t(k)] * chebyshev[std::size_t(k)][std::size_t(j)];
   error = 0.0;
   for (int i = 0; i + 1 < n; ++i) {
-    const double u = -std::cos(std::numbers::pi * (i + 1.0) / n);
+    const double u = cosines.between[std::size_t(i)];
     const auto v = f(u);
     if (!v || !std::isfinite(*v)) return std::nullopt;
     error = std::max(error, std::abs(*v - p.at(u)));

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace volpost::optics {
@@ -36,10 +37,23 @@ class ElementField {
   const std::vector<std::uint32_t>& uninvertibleCells() const { return uninvertible_; }
   /// The values' range (what tolerances are relative to; 1 when they are all equal).
   double valueScale() const { return scale_; }
+  /// Where points given to the methods are measured from.
+  const glm::dvec3& origin() const { return origin_; }
+  /// Bounds of the field anywhere in `cell` (lo, hi), where they follow from its node
+  /// values: a hex8, wedge6 or pyramid5 (shape functions >= 0: the node values' range) and
+  /// a tet10 (the range of its Bernstein coefficients). nullopt for a hex20 or a wedge15,
+  /// whose serendipity field can leave that range by an amount the nodes do not bound simply.
+  std::optional<std::pair<double, double>> valueBound(std::uint32_t cell) const;
 
   /// The value at `p` in `cell`; `xi` is where the inverse map starts and gets the natural
   /// coordinates found. nullopt where the map's iteration does not converge.
   std::optional<double> value(std::uint32_t cell, const glm::dvec3& p, glm::dvec3& xi) const;
+  /// Whether `cell`'s isoparametric map is affine (a parallelepiped hex8, a straight-sided
+  /// quadratic cell with its midside nodes halfway): then the natural coordinates move
+  /// linearly along a straight ray and valueAt needs no inverse map.
+  bool affine(std::uint32_t cell) const { return elementCells_[cell] == kAffine; }
+  /// The value at natural coordinates `xi` of `cell`.
+  double valueAt(std::uint32_t cell, const glm::dvec3& xi) const;
   /// The gradient per length unit at natural coordinates `xi` of `cell`.
   glm::dvec3 gradient(std::uint32_t cell, const glm::dvec3& xi) const;
   /// Where the inverse map starts in this cell.
@@ -56,7 +70,8 @@ class ElementField {
   std::vector<double> values_;
   const TetMesh& tets_;
   glm::dvec3 origin_;
-  std::vector<char> elementCells_;
+  static constexpr char kAffine = 2;  ///< in elementCells_: drawn by its own field, map affine
+  std::vector<char> elementCells_;    ///< per cell: 0 the split's field, 1 its own, kAffine its own (affine map)
   std::vector<std::uint32_t> uninvertible_;
   double scale_ = 1.0;
   mutable std::atomic<std::size_t> fallbacks_{0};

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "host/CellShape.hpp"
+#include <volpost/core/CellShape.hpp>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
