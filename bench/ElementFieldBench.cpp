@@ -5,7 +5,7 @@
 // the tetrahedra's field and with the cells' own, and each picture's error against the
 // reference drawing the cells' own field (same camera, transfer function and image size).
 // Prints a Markdown table.
-//   volpost_element_field_bench [--size N] [--frames N] [--cubes N,N,...] [--threads N]
+//   volpost_element_field_bench [--size N] [--frames N] [--cubes N,N,...] [--threads N] [--cells TYPE]
 #include "BenchUsage.hpp"
 #include "CpuRayCaster.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
@@ -180,12 +180,14 @@ Timing timeFrames(const volume::TetWalkMesh& walk, const volume::VisiblePart& pa
 int main(int argc, char** argv) {
   int size = 256, frames = 5, threads = 0;
   std::vector<int> cubes{8, 16};
+  std::string only;  // one cell type's name, or all
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
     if (a == "--size" && more) size = std::atoi(argv[++i]);
     else if (a == "--frames" && more) frames = std::atoi(argv[++i]);
     else if (a == "--threads" && more) threads = std::atoi(argv[++i]);
+    else if (a == "--cells" && more) only = argv[++i];
     else if (a == "--cubes" && more) {
       cubes.clear();
       for (const char* p = argv[++i]; *p;) {
@@ -194,13 +196,15 @@ int main(int argc, char** argv) {
         if (*p == ',') ++p;
       }
     } else {
-      return bench::usageFor(argv[i],
-                             "volpost_element_field_bench: the CPU ray caster with the tetrahedra's field and with the "
-                             "cells' own, per cell type: ms per frame, memory, error against the exact reference\n"
-                             "  --size N        image N x N (default 256)\n"
-                             "  --frames N      frames along a quarter orbit; the median is printed (default 5)\n"
-                             "  --cubes N,...   meshes of N^3 cubes on [0,1]^3 (default 8,16)\n"
-                             "  --threads N     threads (default: all cores)\n");
+      return bench::usageFor(
+          argv[i],
+          "volpost_element_field_bench: the CPU ray caster with the tetrahedra's field and with the "
+          "cells' own, per cell type: ms per frame, memory, error against the exact reference\n"
+          "  --size N        image N x N (default 256)\n"
+          "  --frames N      frames along a quarter orbit; the median is printed (default 5)\n"
+          "  --cubes N,...   meshes of N^3 cubes on [0,1]^3 (default 8,16)\n"
+          "  --threads N     threads (default: all cores)\n"
+          "  --cells TYPE    one cell type only (tet4, tet10, hex8, hex20, wedge6, wedge15, pyramid5)\n");
     }
   }
   if (size < 8 || frames < 1 || cubes.empty() ||
@@ -220,6 +224,7 @@ int main(int argc, char** argv) {
       "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const int n : cubes)
     for (const CellType type : kAllCellTypes) {
+      if (!only.empty() && only != cellTypeName(type)) continue;
       const Model model = modelOf(type, n);
       const TetMesh split = tetrahedralize(model.mesh);
       const std::vector<double> tetValues = split.nodeValues(model.mesh, model.values);

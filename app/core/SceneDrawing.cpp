@@ -256,7 +256,12 @@ void SceneDrawing::applyElementField(const Scene& scene) {
   elementField_.reset();
   // Values per cell are constant in it: both interpolations are the same field.
   if (!volumeTraits_.elementInterpolation) return;
-  if (scene.shown().volume.interpolation != FieldInterpolation::Element || view.location != FieldLocation::Node) {
+  const Mesh& cells = session.model().mesh();
+  bool tetrahedraOnly = true;  // then the cells are their own split: nothing to send
+  for (std::size_t c = 0; c < cells.cellCount() && tetrahedraOnly; ++c)
+    tetrahedraOnly = cells.cellType(c) == CellType::Tet4;
+  if (scene.shown().volume.interpolation != FieldInterpolation::Element || view.location != FieldLocation::Node ||
+      tetrahedraOnly) {
     volume_->setElementField(nullptr, {});
     return;
   }

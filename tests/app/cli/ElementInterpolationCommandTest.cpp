@@ -157,6 +157,13 @@ TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
   EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
   EXPECT_LE(apart.worst, 2e-4f);
   EXPECT_GT(compareFloatPictures(split, reference, 48u * 40u * 4u).worst, 2e-3f);
+  // A clip box: the CPU renderer holds only the tetrahedra it can show, each still named by its cell.
+  const std::string boxed = " --clip-box 0.1,0.8,0.05,0.9,0.2,1 --float ";
+  ASSERT_EQ(runVolpost(common + " --renderer cpu --termination 0" + boxed + cpu).exitCode, 0);
+  ASSERT_EQ(runVolpost(common + " --renderer reference" + boxed + reference).exitCode, 0);
+  const FloatPicturesApart clipped = compareFloatPictures(cpu, reference, 48u * 40u * 4u);
+  EXPECT_GT(clipped.alpha, 0.05f);
+  EXPECT_LE(clipped.worst, 2e-4f);
 
   const std::string folded = writeHexBlock(
       dir + "/hex_cpu_folded.vtk", 2, [](double x, double y, double z) { return x + y + z; }, true);

@@ -272,6 +272,7 @@ TEST(ElementReference, AnInvertedCellIsListedAndDrawnByItsSplit) {
   const NodeIndex corner = mesh.cellNodes(0)[0];
   mesh.nodes[corner] = glm::dvec3(1.0, 0.6, 0.8);
   const BothFields both(mesh, sampled(mesh, [](const glm::dvec3& x) { return x.x + x.y; }));
+  EXPECT_TRUE(both.field().affine(1)) << "a box cell's map is affine";
   ASSERT_EQ(both.field().uninvertibleCells().size(), 1u);
   EXPECT_EQ(both.field().uninvertibleCells()[0], 0u);
 }
@@ -291,6 +292,7 @@ TEST(ElementReference, ATaperedHex8WhoseFieldIsNoPolynomialAlongTheRayIsFittedTo
   mesh.addCell(CellType::Hex8, ids);
   const std::vector<double> values{0.0, 1.0, 0.3, 0.9, 1.4, -0.2, 0.7, 0.1};
   const BothFields both(mesh, values);
+  EXPECT_FALSE(both.field().affine(0)) << "a frustum's map is not affine: each point goes through Newton's method";
   const ClosedForm f = [&](const glm::dvec3& x) {
     const auto xi = naturalCoordinates(CellType::Hex8, mesh.nodes, x, glm::dvec3(0.0));
     const ShapeValues n = shapeFunctions(CellType::Hex8, *xi);

@@ -5,6 +5,7 @@
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -75,7 +76,8 @@ SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s
   if (s0 == s1) return constantSegment(tf.color(s0), tf.extinction(s0), length);
   const bool rising = s1 > s0;
   const TransferSample a = sampleSide(tf, s0, !rising), b = sampleSide(tf, s1, rising);
-  const double slope = (b.extinction - a.extinction) / (s1 - s0);  // extinction per unit scalar
+  if (a.extinction == 0.0 && b.extinction == 0.0) return {glm::dvec3(0.0), 1.0};  // transparent: nothing emitted
+  const double slope = (b.extinction - a.extinction) / (s1 - s0);                 // extinction per unit scalar
   const double integralAtA = integral.at(ua);
   // Optical depth from ua: halfLength * integral of (a.extinction + slope (s(v) - s0)) dv.
   const auto depth = [&](double u) {
@@ -99,17 +101,18 @@ SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s
     double u0, u1;
     int level;
   };
-  std::vector<Panel> stack{{ua, ub, 0}};
-  std::vector<Panel> panels;
-  while (!stack.empty()) {
-    const Panel p = stack.back();
-    stack.pop_back();
+  // Depth first: at most one pending panel per level (48 levels), no allocation.
+  std::array<Panel, 64> stack;
+  std::size_t pending = 0;
+  stack[pending++] = {ua, ub, 0};
+  while (pending > 0) {
+    const Panel p = stack[--pending];
     const double d0 = depth(p.u0);
     if (std::exp(-d0) < kDark) continue;  // nothing of it is seen
     if (depth(p.u1) - d0 > kPanelDepth && p.level < 48) {
       const double mid = 0.5 * (p.u0 + p.u1);
-      stack.push_back({mid, p.u1, p.level + 1});
-      stack.push_back({p.u0, mid, p.level + 1});
+      stack[pending++] = {mid, p.u1, p.level + 1};
+      stack[pending++] = {p.u0, mid, p.level + 1};
       continue;
     }
     const double centre = 0.5 * (p.u0 + p.u1), half = 0.5 * (p.u1 - p.u0);
