@@ -45,6 +45,7 @@
 #include <QTableWidget>
 #include <QTest>
 #include <QTextBrowser>
+#include <QTextStream>
 #include <QTimer>
 #include <QUrl>
 
@@ -478,6 +479,60 @@ class MainWindowTest : public QObject {
     window_->findChild<QAction*>("planeHandle")->setChecked(true);
     window_->findChild<QAction*>("clip:-1")->trigger();
     action->setChecked(false);
+  }
+
+  void theCellsOwnFieldIsDrawnInTheWindowAsHeadless() {
+    // Two hex8 cells carrying x y z (their own trilinear field): the window's CPU volume
+    // renderer draws it from Volume > Cells' Own Interpolation, and `volpost render --state`
+    // draws the same picture; the split's field is another picture.
+    const QString model = QDir::temp().filePath("volpost_gui_hex_xyz.vtk");
+    {
+      QFile f(model);
+      QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+      QTextStream out(&f);
+      out << "# vtk DataFile Version 4.2\nhex8 xyz\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 12 double\n";
+      for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 3; ++i) out << 0.5 * i << ' ' << j << ' ' << k << '\n';
+      out << "CELLS 2 18\n8 0 1 4 3 6 7 10 9\n8 1 2 5 4 7 8 11 10\nCELL_TYPES 2\n12\n12\n";
+      out << "POINT_DATA 12\nSCALARS T double 1\nLOOKUP_TABLE default\n";
+      for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 3; ++i) out << 0.5 * i * j * k << '\n';
+    }
+    QVERIFY(open(model));
+    QVERIFY(window_->selectQuantity("T"));
+    window_->findChild<QAction*>("triadAction")->setChecked(false);
+    Viewport* view = window_->viewport();
+    view->scene().setShowLegend(false);
+    window_->findChild<QAction*>("volumeAction")->setChecked(true);
+    QCOMPARE(view->scene().volume().renderer, std::string("cpu"));  // OpenGL drawn by the CPU here
+    view->scene().camera().orbit(25.0, 15.0);
+    view->update();
+    const QImage split = settled(view).convertToFormat(QImage::Format_RGB32);
+    auto* own = window_->findChild<QAction*>("elementInterpolationAction");
+    own->setChecked(true);
+    QVERIFY(own->isChecked());
+    view->update();
+    const QImage shown = settled(view).convertToFormat(QImage::Format_RGB32);
+    QVERIFY2(shown != split, "the trilinear field is not the split's");
+    const QString state = QDir::temp().filePath("volpost_gui_element_state.json");
+    const QString png = QDir::temp().filePath("volpost_gui_element_state.png");
+    QVERIFY(window_->saveStateFile(state));
+    QProcess render;
+    render.start(VOLPOST_EXECUTABLE, {"render", "--state", state, "-o", png, "--size",
+                                      QString("%1x%2").arg(shown.width()).arg(shown.height())});
+    QVERIFY(render.waitForFinished(120000));
+    QVERIFY2(render.exitCode() == 0, render.readAllStandardError().constData());
+    const QImage headless = QImage(png).convertToFormat(QImage::Format_RGB32);
+    QCOMPARE(headless.size(), shown.size());
+    int different = 0;
+    for (int y = 0; y < shown.height(); ++y)
+      for (int x = 0; x < shown.width(); ++x) different += shown.pixel(x, y) != headless.pixel(x, y);
+    QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ").arg(different)));
+    QFile::remove(state);
+    QFile::remove(png);
+    QFile::remove(model);
   }
 
   void transferFunctionPanelEditsTheVolumeLive() {
