@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "VolumeActions.hpp"
 
+#include "../core/ReferenceVolumeImage.hpp"
 #include "../core/Scene.hpp"
 
 #include "host/TextFile.hpp"
@@ -101,11 +102,23 @@ void VolumeActions::drawCellsOwnField(bool on) {
   } else if (changeScene_([on](Scene& s) {
                s.setInterpolation(on ? FieldInterpolation::Element : FieldInterpolation::Tetrahedra);
              })) {
-    window_.statusBar()->showMessage(
-        on ? "The volume shows each cell's own interpolation of the node values"
-           : "The volume shows the field linear on the tetrahedra the cells are split into");
+    QString message = on ? "The volume shows each cell's own interpolation of the node values"
+                         : "The volume shows the field linear on the tetrahedra the cells are split into";
+    if (on)
+      for (const std::string& note : cellsDrawnBySplit()) message += "; " + QString::fromStdString(note);
+    window_.statusBar()->showMessage(message);
   }
   syncToScene();
+}
+
+std::vector<std::string> VolumeActions::cellsDrawnBySplit() const {
+  const ModelSession* session = scene_.session();
+  const std::optional<ScalarView>& view = scene_.view();
+  if (!session || !view || view->location != FieldLocation::Node || session->model().grid) return {};
+  std::vector<double> converted;
+  const TetMesh& split = session->tetrahedra();
+  const optics::ElementField field(session->model().mesh(), view->values.doubles(converted), split, glm::dvec3(0.0));
+  return elementFieldNotes(field, session->model().mesh());
 }
 
 void VolumeActions::show(bool on) {

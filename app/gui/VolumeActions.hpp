@@ -13,6 +13,8 @@
 
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 class QAction;
 class QMainWindow;
@@ -63,6 +65,9 @@ class VolumeActions : public QObject {
   /// The cells' own interpolation on or off; refused, saying why, where the renderer in use
   /// draws the tetrahedra's field only.
   void drawCellsOwnField(bool on);
+  /// What the user should know of the cells' own field on this model: the cells drawn by
+  /// their split (folded, inverted or collapsed), named.
+  std::vector<std::string> cellsDrawnBySplit() const;
 };
 
 }  // namespace volpost::app

@@ -17,6 +17,8 @@
 #include <QMenuBar>
 #include <QTest>
 
+#include <filesystem>
+#include <fstream>
 #include <memory>
 
 using namespace volpost;
@@ -136,6 +138,22 @@ class VolumeActionsTest : public QObject {
     scene.setInterpolation(FieldInterpolation::Element);  // as a state file would
     actions->syncToScene();
     QVERIFY(own->isChecked());
+
+    // A hexahedron whose first corner is pulled through it: no inverse map. Turned on, the
+    // entry says it is drawn linear on its tetrahedra, by its id.
+    const std::string folded = (std::filesystem::temp_directory_path() / "volpost_folded_hex.vtk").string();
+    std::ofstream(folded) << "# vtk DataFile Version 4.2\nfolded\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n"
+                             "0.9 0.8 0.8  1 0 0  1 1 0  0 1 0  0 0 1  1 0 1  1 1 1  0 1 1\n"
+                             "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n12\n"
+                             "POINT_DATA 8\nSCALARS T double 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n";
+    scene.setSession(volpost::test::loadTestModel(folded));
+    scene.setResult("T", 0);
+    own->setChecked(false);
+    own->setChecked(true);
+    QVERIFY2(window.statusBar()->currentMessage().contains(
+                 "1 cell folded, inverted or collapsed (no inverse map): drawn linear on their tetrahedra; cell id 1"),
+             qPrintable(window.statusBar()->currentMessage()));
+    std::filesystem::remove(folded);
   }
 
   void withoutRenderersTheEntrySaysWhy() {
