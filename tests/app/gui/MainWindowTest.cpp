@@ -80,6 +80,33 @@ class MainWindowTest : public QObject {
     return image;
   }
 
+  // `volpost render --state STATE -o PNG` at `size`, read back as RGB32; `error` gets its
+  // stderr when it fails (the image is then null).
+  static QImage renderedHeadless(const QString& state, const QString& png, QSize size, QString& error) {
+    QProcess render;
+    render.start(VOLPOST_EXECUTABLE, {"render", "--state", state, "-o", png, "--size",
+                                      QString("%1x%2").arg(size.width()).arg(size.height())});
+    if (!render.waitForFinished(120000) || render.exitCode() != 0) {
+      error = "volpost render failed: " + QString::fromLocal8Bit(render.readAllStandardError());
+      return {};
+    }
+    return QImage(png).convertToFormat(QImage::Format_RGB32);
+  }
+
+  // Pixels of two same-size pictures that differ, and the largest channel difference.
+  static std::pair<int, int> pixelsApart(const QImage& a, const QImage& b) {
+    int different = 0, worst = 0;
+    for (int y = 0; y < a.height(); ++y)
+      for (int x = 0; x < a.width(); ++x) {
+        const QRgb p = a.pixel(x, y), q = b.pixel(x, y);
+        const int d =
+            std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)), std::abs(qBlue(p) - qBlue(q))});
+        different += d > 0;
+        worst = std::max(worst, d);
+      }
+    return {different, worst};
+  }
+
   static std::pair<int, quint64> summarize(const QImage& image) {
     int drawn = 0;
     quint64 sum = 0;
@@ -447,22 +474,12 @@ class MainWindowTest : public QObject {
     const QString state = QDir::temp().filePath("volpost_gui_state_test.json");
     const QString png = QDir::temp().filePath("volpost_gui_state_test.png");
     QVERIFY(window_->saveStateFile(state));
-    QProcess render;
-    render.start(VOLPOST_EXECUTABLE, {"render", "--state", state, "-o", png, "--size",
-                                      QString("%1x%2").arg(shown.width()).arg(shown.height())});
-    QVERIFY(render.waitForFinished(120000));
-    QVERIFY2(render.exitCode() == 0, render.readAllStandardError().constData());
-    const QImage headless = QImage(png).convertToFormat(QImage::Format_RGB32);
+    QString error;
+    const QImage headless = renderedHeadless(state, png, shown.size(), error);
+    QVERIFY2(!headless.isNull(), qPrintable(error));
     const QImage window = shown.convertToFormat(QImage::Format_RGB32);
     QCOMPARE(headless.size(), window.size());
-    int different = 0, worst = 0;
-    for (int y = 0; y < window.height(); ++y)
-      for (int x = 0; x < window.width(); ++x) {
-        const QRgb a = window.pixel(x, y), b = headless.pixel(x, y);
-        const int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)), std::abs(qBlue(a) - qBlue(b))});
-        different += d > 0;
-        worst = std::max(worst, d);
-      }
+    const auto [different, worst] = pixelsApart(window, headless);
     QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ, by up to %2").arg(different).arg(worst)));
     // And back: the window opens the state file and shows the same view again.
     window_->findChild<QAction*>("clip:-1")->trigger();
@@ -519,16 +536,11 @@ class MainWindowTest : public QObject {
     const QString state = QDir::temp().filePath("volpost_gui_element_state.json");
     const QString png = QDir::temp().filePath("volpost_gui_element_state.png");
     QVERIFY(window_->saveStateFile(state));
-    QProcess render;
-    render.start(VOLPOST_EXECUTABLE, {"render", "--state", state, "-o", png, "--size",
-                                      QString("%1x%2").arg(shown.width()).arg(shown.height())});
-    QVERIFY(render.waitForFinished(120000));
-    QVERIFY2(render.exitCode() == 0, render.readAllStandardError().constData());
-    const QImage headless = QImage(png).convertToFormat(QImage::Format_RGB32);
+    QString error;
+    const QImage headless = renderedHeadless(state, png, shown.size(), error);
+    QVERIFY2(!headless.isNull(), qPrintable(error));
     QCOMPARE(headless.size(), shown.size());
-    int different = 0;
-    for (int y = 0; y < shown.height(); ++y)
-      for (int x = 0; x < shown.width(); ++x) different += shown.pixel(x, y) != headless.pixel(x, y);
+    const int different = pixelsApart(shown, headless).first;
     QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ").arg(different)));
     QFile::remove(state);
     QFile::remove(png);

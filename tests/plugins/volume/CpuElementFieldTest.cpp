@@ -6,6 +6,7 @@
 #include "VolumeImageFixture.hpp"
 
 #include "CpuRayCaster.hpp"
+#include "support/ReferenceCells.hpp"
 
 #include <volpost/core/CellShape.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
@@ -121,15 +122,7 @@ TEST(CpuElementField, Hex20QuadraticFieldWithIsoSurfaceAndClipPlane) {
 // 0.8125 at the nodes, 1 at the centroid): a transfer function that sees only that peak must
 // not skip the cell as transparent by its node values.
 TEST(CpuElementField, ATet10SeenOnlyWhereItsFieldRisesAboveItsNodesIsNotSkipped) {
-  Mesh mesh;
-  const std::array<glm::dvec3, 4> v{glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-  std::vector<NodeIndex> ids;
-  for (int node = 0; node < 10; ++node) {
-    const glm::dvec3 r = naturalCoordinatesOfNode(CellType::Tet10, node);
-    mesh.nodes.push_back(v[0] + r.x * (v[1] - v[0]) + r.y * (v[2] - v[0]) + r.z * (v[3] - v[0]));
-    ids.push_back(NodeIndex(node));
-  }
-  mesh.addCell(CellType::Tet10, ids);
+  const Mesh mesh = volpost::test::referenceCell(CellType::Tet10).first;  // the unit tet, straight edges
   const auto values = sampled(mesh, [](const glm::dvec3& x) {
     const glm::dvec3 d = x - glm::dvec3(0.25);
     return 1.0 - glm::dot(d, d);
