@@ -5,7 +5,9 @@
 // the tetrahedra's field and with the cells' own, and each picture's error against the
 // reference drawing the cells' own field (same camera, transfer function and image size).
 // Prints a Markdown table.
+// The own field is drawn at each tolerance asked for (0: integrated to rounding).
 //   volpost_element_field_bench [--size N] [--frames N] [--cubes N,N,...] [--threads N] [--cells TYPE]
+//                               [--tolerances E,E,...]
 #include "BenchUsage.hpp"
 #include "CpuRayCaster.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
@@ -148,6 +150,28 @@ double rmse(const std::vector<float>& image, const optics::ReferenceImage& ref) 
   return std::sqrt(sum / double(4 * ref.pixels.size()));
 }
 
+double largestError(const std::vector<float>& image, const optics::ReferenceImage& ref) {
+  double most = 0.0;
+  for (std::size_t i = 0; i < ref.pixels.size(); ++i)
+    for (int k = 0; k < 4; ++k)
+      most = std::max(most, std::abs(double(image[4 * i + std::size_t(k)]) - ref.pixels[i][k]));
+  return most;
+}
+
+// "1e-3,0" -> {1e-3, 0}; empty where a number does not read.
+std::vector<double> numbersIn(const char* list) {
+  std::vector<double> out;
+  for (const char* p = list; *p;) {
+    char* end = nullptr;
+    const double v = std::strtod(p, &end);
+    if (end == p || !(v >= 0.0)) return {};
+    out.push_back(v);
+    p = *end == ',' ? end + 1 : end;
+    if (*end && *end != ',') return {};
+  }
+  return out;
+}
+
 struct Timing {
   double wallMs = 0.0, cpuMs = 0.0;
   std::vector<float> first;
@@ -181,6 +205,7 @@ int main(int argc, char** argv) {
   int size = 256, frames = 5, threads = 0;
   std::vector<int> cubes{8, 16};
   std::string only;  // one cell type's name, or all
+  std::vector<double> tolerances{1e-3, 0.0};
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -188,6 +213,7 @@ int main(int argc, char** argv) {
     else if (a == "--frames" && more) frames = std::atoi(argv[++i]);
     else if (a == "--threads" && more) threads = std::atoi(argv[++i]);
     else if (a == "--cells" && more) only = argv[++i];
+    else if (a == "--tolerances" && more) tolerances = numbersIn(argv[++i]);
     else if (a == "--cubes" && more) {
       cubes.clear();
       for (const char* p = argv[++i]; *p;) {
@@ -204,12 +230,14 @@ int main(int argc, char** argv) {
           "  --frames N      frames along a quarter orbit; the median is printed (default 5)\n"
           "  --cubes N,...   meshes of N^3 cubes on [0,1]^3 (default 8,16)\n"
           "  --threads N     threads (default: all cores)\n"
-          "  --cells TYPE    one cell type only (tet4, tet10, hex8, hex20, wedge6, wedge15, pyramid5)\n");
+          "  --cells TYPE    one cell type only (tet4, tet10, hex8, hex20, wedge6, wedge15, pyramid5)\n"
+          "  --tolerances E,...  the own field's tolerances per pixel channel (default 1e-3,0; 0: to "
+          "rounding)\n");
     }
   }
-  if (size < 8 || frames < 1 || cubes.empty() ||
+  if (size < 8 || frames < 1 || cubes.empty() || tolerances.empty() ||
       std::any_of(cubes.begin(), cubes.end(), [](int n) { return n < 1 || n > 64; })) {
-    std::fprintf(stderr, "--size >= 8, --frames >= 1, --cubes between 1 and 64\n");
+    std::fprintf(stderr, "--size >= 8, --frames >= 1, --cubes between 1 and 64, --tolerances numbers >= 0\n");
     return 2;
   }
   const TransferFunction tf = sharpPeak();
@@ -219,9 +247,9 @@ int main(int argc, char** argv) {
       "cells' own field\n\n",
       size, size, frames);
   std::printf(
-      "| cells | n | count | tets | split: ms wall / CPU | split: bytes | split: RMSE | own field: ms wall / CPU "
-      "| own field: bytes | own field: RMSE | drawn by the split "
-      "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+      "| cells | n | count | tets | split: ms wall / CPU | split: bytes | split: RMSE | tolerance | own field: ms "
+      "wall / CPU | own field: bytes | own field: RMSE | own field: largest | drawn by the split "
+      "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const int n : cubes)
     for (const CellType type : kAllCellTypes) {
       if (!only.empty() && only != cellTypeName(type)) continue;
@@ -238,12 +266,9 @@ int main(int argc, char** argv) {
       camera.fit(model.mesh.bounds());
       volume::CpuRaySettings linear;
       linear.terminationTransmittance = 0.0;
-      volume::CpuRaySettings own = linear;
-      own.element = element;
       const volume::VisiblePart linearPart = volume::findVisiblePart(walk, tf, {}, threads);
       const volume::VisiblePart ownPart = volume::findVisiblePart(walk, tf, {}, threads, element.get());
       const Timing a = timeFrames(walk, linearPart, tf, camera, size, linear, frames, threads);
-      const Timing b = timeFrames(walk, ownPart, tf, camera, size, own, frames, threads);
 
       const optics::TetVolume volume(split.mesh, FieldLocation::Node, tetValues);
       const optics::ElementField field(model.mesh, model.values, split, volume.origin());
@@ -254,11 +279,18 @@ int main(int argc, char** argv) {
       const std::size_t walkBytes = walk.bytes();
       const std::size_t elementBytes = model.values.size() * sizeof(double) + model.mesh.cellCount() +
                                        element->cellOfTet.size() * sizeof(std::uint32_t);
-      std::printf("| %s | %d | %zu | %zu | %.1f / %.1f | %zu | %.2g | %.1f / %.1f | %zu | %.2g | %zu |\n",
-                  std::string(cellTypeName(type)).c_str(), n, model.mesh.cellCount(), walk.tetCount(), a.wallMs,
-                  a.cpuMs, walkBytes, rmse(a.first, reference), b.wallMs, b.cpuMs, walkBytes + elementBytes,
-                  rmse(b.first, reference), field.uninvertibleCells().size());
-      std::fflush(stdout);
+      for (const double tolerance : tolerances) {
+        volume::CpuRaySettings own = linear;
+        own.element = element;
+        own.elementTolerance = tolerance;
+        const Timing b = timeFrames(walk, ownPart, tf, camera, size, own, frames, threads);
+        std::printf("| %s | %d | %zu | %zu | %.1f / %.1f | %zu | %.2g | %g | %.1f / %.1f | %zu | %.2g | %.2g | %zu |\n",
+                    std::string(cellTypeName(type)).c_str(), n, model.mesh.cellCount(), walk.tetCount(), a.wallMs,
+                    a.cpuMs, walkBytes, rmse(a.first, reference), tolerance, b.wallMs, b.cpuMs,
+                    walkBytes + elementBytes, rmse(b.first, reference), largestError(b.first, reference),
+                    field.uninvertibleCells().size());
+        std::fflush(stdout);
+      }
     }
   return 0;
 }

@@ -122,7 +122,8 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
     while (last + 1 < list.size() && list[last + 1].t0 <= end &&
            field->cellOfTet(volume.tet(list[last + 1].tet).source) == cell)
       end = std::max(end, list[++last].t1);
-    if (const auto light = integrateElementStretch(*field, cell, tf, settings.isoSurfaces, r.o, r.d, list[i].t0, end)) {
+    if (const auto light = integrateElementStretch(*field, cell, tf, settings.isoSurfaces, r.o, r.d, list[i].t0, end,
+                                                   exactStretches(*field))) {
       compositeBehind(total, *light);
     } else {  // the map could not be inverted along this ray: the split's field there
       field->countFallback();

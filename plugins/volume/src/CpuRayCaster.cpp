@@ -165,6 +165,7 @@ struct Shared {
   const TransferFunction& transfer;  ///< what the element field's stretches are lit by
   const CpuElementField* element;    ///< null: the tetrahedra's field
   glm::dvec3 toField;                ///< walk coordinates + this = the element field's
+  optics::StretchAccuracy accuracy;  ///< how closely element stretches are lit
 };
 
 // Empty-space skipping: a tet whose values all map to zero extinction (and hold no
@@ -313,8 +314,9 @@ bool closeStretch(const Shared& sh, const PixelRay& ray, OpenStretch& stretch, o
   if (!stretch.open) return false;
   stretch.open = false;
   const optics::ElementField& field = *sh.element->field;
-  const auto lit = optics::integrateElementStretch(field, stretch.cell, sh.transfer, sh.settings.isoSurfaces,
-                                                   ray.exactO + sh.toField, ray.exactD, stretch.t0, stretch.t1);
+  const auto lit =
+      optics::integrateElementStretch(field, stretch.cell, sh.transfer, sh.settings.isoSurfaces,
+                                      ray.exactO + sh.toField, ray.exactD, stretch.t0, stretch.t1, sh.accuracy);
   if (lit) {
     optics::compositeBehind(light, *lit);
   } else {
@@ -650,7 +652,10 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
                       float(1e-6 * mesh.diagonal()),
                       tf,
                       element,
-                      element ? mesh.origin() - element->field->origin() : glm::dvec3(0.0)};
+                      element ? mesh.origin() - element->field->origin() : glm::dvec3(0.0),
+                      element ? optics::toleratedStretches(*element->field, tf, !settings.isoSurfaces.empty(),
+                                                           settings.elementTolerance)
+                              : optics::StretchAccuracy{}};
   constexpr int kTile = 16;
   const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
   std::atomic<int> nextTile{0}, tilesDone{0};

@@ -57,6 +57,9 @@ struct CpuRaySettings {
   /// Meshes: the cells' own field instead of the tetrahedra's linear one (null: the latter).
   /// Each ray's stretch through one such cell is fitted and integrated in double.
   std::shared_ptr<const CpuElementField> element;
+  /// The most each pixel channel may differ from the exact picture of the cells' own field,
+  /// on top of early termination's bound (0: integrated to rounding, as the reference).
+  double elementTolerance = 0.0;
 };
 
 struct CpuRenderStats {

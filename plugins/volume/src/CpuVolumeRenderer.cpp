@@ -63,6 +63,15 @@ void CpuVolumeRenderer::setElementField(std::shared_ptr<const optics::ElementFie
   visible_.reset();
 }
 
+void CpuVolumeRenderer::setElementTolerance(double tolerance) {
+  if (!(tolerance >= 0.0 && tolerance <= 1.0))
+    throw std::invalid_argument("the tolerance of the cells' own field must lie in [0, 1], not " +
+                                std::to_string(tolerance));
+  if (tolerance == settings_.elementTolerance) return;
+  settings_.elementTolerance = tolerance;
+  ++revision_;
+}
+
 void CpuVolumeRenderer::setGrid(const RegularGrid& grid, SampleView values) {
   grid_ = std::make_shared<const GridSamples>(grid, values);  // throws before anything changes
   walkMesh_.reset();

@@ -35,7 +35,7 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
     t.drawsGrids = t.transferFunction2D = t.shading = true;
     t.samplingStepOnMeshes = false;  // meshes are integrated exactly; grids are marched
     t.runsOnCpu = true;
-    t.elementInterpolation = true;
+    t.elementInterpolation = t.elementTolerance = true;
     return t;
   }
   void initialize() override;
@@ -52,6 +52,7 @@ class CpuVolumeRenderer : public GridVolumeRenderer {
   /// Grids only; a mesh's frame with one set is refused.
   void setTransferFunction2D(const std::optional<TransferFunction2D>& tf) override;
   void setValues(std::span<const double> values) override;
+  void setElementTolerance(double tolerance) override;
   void setTransferFunction(const TransferFunction& tf) override {
     tf_ = tf;
     ++revision_;

@@ -39,9 +39,6 @@ class PiecewiseIntegrator {
   /// control point crossed, each piece integrated exactly (as integrateSegment).
   optics::SegmentLight integrate(double sFront, double sBack, double length, const EmissionShade* shade = nullptr) const;
 
-  /// The series used for thin pieces (tf + tb <= 1), exposed for its accuracy test.
-  static double psiThin(double tf, double tb);
-
  private:
   int pieceOf(double s) const;  ///< j with value[j] <= s < value[j + 1]; -1 below, n - 1 above
   void at(int piece, double s, glm::dvec3& color, double& tau) const;

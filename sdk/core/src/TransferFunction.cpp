@@ -75,6 +75,16 @@ double TransferFunction::extinction(double s) const {
 
 // Binary search to the first point beyond the lower end: the cost follows the points
 // crossed, not the function's size (functions of thousands of points stay fast).
+bool TransferFunction::transparentOver(double lo, double hi) const {
+  if (points_.empty()) return true;
+  if (extinction(lo) != 0.0 || extinction(hi) != 0.0) return false;
+  // Linear between points: zero throughout when zero at every point in between (and at
+  // both sides of a step there).
+  for (const ControlPoint& p : points_)
+    if (p.value >= lo && p.value <= hi && p.extinction != 0.0) return false;
+  return true;
+}
+
 std::vector<double> TransferFunction::crossings(double a, double b) const {
   std::vector<double> out;
   const double lo = std::min(a, b), hi = std::max(a, b);

@@ -129,3 +129,63 @@ TEST(PolynomialSegment, AnIsoSurfaceIsMetWhereverATurningScalarCrossesIt) {
   ASSERT_EQ(metAt.size(), 1u);
   EXPECT_EQ(metAt[0], 1.0);
 }
+
+TEST(PolynomialSegment, AKnownDegreeIsInterpolatedAtThatManyPointsExactly) {
+  int calls = 0;
+  double error = 1.0;
+  const auto cubic = fitChebyshev(
+      [&](double u) {
+        ++calls;
+        return std::optional<double>(2.0 - u + 0.5 * u * u * u);
+      },
+      error, 3);
+  ASSERT_TRUE(cubic);
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(error, 0.0);
+  EXPECT_NEAR(cubic->c[1], -1.0, 1e-14);
+  EXPECT_NEAR(cubic->c[3], 0.5, 1e-14);
+}
+
+// Chords within a tolerance: every channel and the transmittance within it of the exact
+// integral (the pieces a segment takes add up to at most its length and their opacities
+// to at most one, so the segment is also the whole ray here), on steep and gentle peaks.
+TEST(PolynomialSegment, ChordsStayWithinTheToleranceOfTheExactIntegral) {
+  const TransferFunction steep({{0.0, {0.2, 0.3, 0.9}, 0.0},
+                                {0.30, {0.2, 0.6, 0.9}, 0.0},
+                                {0.40, {1.0, 0.7, 0.2}, 40.0},
+                                {0.50, {0.9, 0.2, 0.1}, 0.0},
+                                {1.0, {0.9, 0.2, 0.1}, 0.0}});
+  const std::vector<ScalarPolynomial> scalars{polynomial({0.15, 0.1, -1.2, -0.1, 1.1}),
+                                              polynomial({0.4, -0.9, 0.2, 0.5}), polynomial({0.38, 0.3, -0.25})};
+  for (const TransferFunction& tf : {peakTf(), steep})
+    for (const ScalarPolynomial& s : scalars)
+      for (double length : {0.05, 0.4, 3.0}) {
+        const SegmentLight exact = integratePolynomialSegment(tf, {}, s, length, kAlongRay, {0, 0, 1});
+        for (double tolerance : {1e-2, 1e-3, 1e-4}) {
+          const EmissionAccuracy accuracy{tolerance, length, 1.0};
+          const SegmentLight got = integratePolynomialSegment(tf, {}, s, length, kAlongRay, {0, 0, 1}, accuracy);
+          EXPECT_LE(difference(got, exact), tolerance) << s.degree << " " << length;
+        }
+      }
+  // The chords are what is drawn (not the exact quadrature under another name).
+  const ScalarPolynomial& cubic = scalars[1];
+  const SegmentLight exact = integratePolynomialSegment(steep, {}, cubic, 3.0, kAlongRay, {0, 0, 1});
+  const SegmentLight chords =
+      integratePolynomialSegment(steep, {}, cubic, 3.0, kAlongRay, {0, 0, 1}, EmissionAccuracy{1e-2, 3.0, 1.0});
+  EXPECT_GT(difference(chords, exact), 1e-9);
+}
+
+TEST(PolynomialSegment, AStretchWhoseValuesStayTransparentIsSkippedWhole) {
+  const TransferFunction tf({{0.0, {1, 1, 1}, 0.0}, {0.5, {1, 1, 1}, 0.0}, {0.6, {1, 0, 0}, 5.0}});
+  EXPECT_TRUE(tf.transparentOver(-3.0, 0.5));
+  EXPECT_FALSE(tf.transparentOver(0.2, 0.51));
+  EXPECT_FALSE(tf.transparentOver(0.7, 0.9)) << "clamped above the last point";
+  // Rises to 0.45 and falls again: transparent throughout; a surface at 0.4 is still met twice.
+  const ScalarPolynomial s = polynomial({0.45, 0.0, -0.4});
+  const SegmentLight clear = integratePolynomialSegment(tf, {}, s, 1.0, kAlongRay, {0, 0, 1});
+  EXPECT_EQ(clear.transmittance, 1.0);
+  EXPECT_EQ(clear.color, glm::dvec3(0.0));
+  const std::vector<IsoSurface> surface{{0.4, {1.0, 1.0, 1.0}, 0.5}};
+  const SegmentLight met = integratePolynomialSegment(tf, surface, s, 1.0, kAlongRay, {0, 0, 1});
+  EXPECT_NEAR(met.transmittance, 0.25, 1e-12);
+}

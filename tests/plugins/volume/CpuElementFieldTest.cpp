@@ -66,7 +66,8 @@ struct ThreeImages {
 };
 
 ThreeImages draw(const Mesh& mesh, const std::vector<double>& values, const TransferFunction& tf, const Camera& camera,
-                 int size, std::vector<optics::IsoSurface> iso = {}, std::vector<ClipPlane> planes = {}) {
+                 int size, std::vector<optics::IsoSurface> iso = {}, std::vector<ClipPlane> planes = {},
+                 double tolerance = 0.0) {
   const TetMesh split = tetrahedralize(mesh);
   const std::vector<double> tetValues = split.nodeValues(mesh, values);
   const volume::TetWalkMesh walk(split.mesh, FieldLocation::Node, tetValues);
@@ -78,6 +79,7 @@ ThreeImages draw(const Mesh& mesh, const std::vector<double>& values, const Tran
   settings.isoSurfaces = iso;
   settings.clipPlanes = planes;
   settings.element = element;
+  settings.elementTolerance = tolerance;
   const volume::CpuImage cpu = volume::renderCpu(walk, tf, camera, size, size, settings);
 
   const optics::TetVolume volume(split.mesh, FieldLocation::Node, tetValues);
@@ -132,4 +134,21 @@ TEST(CpuElementField, ATet10SeenOnlyWhereItsFieldRisesAboveItsNodesIsNotSkipped)
   EXPECT_GT(d.alpha, 0.05) << "the element field reaches the peak";
   EXPECT_LE(d.cpu.max, 2e-4);
   EXPECT_GT(d.split.max, 0.05) << "the split's field stays below it";
+}
+
+// Within a tolerance the CPU ray caster lights each stretch by chords where the transfer
+// function allows: each pixel stays within it of the exact picture (plus the float walk's
+// own 2e-4), on the trilinear hex8 and the quadratic hex20 with their sharp peaks.
+TEST(CpuElementField, WithinItsToleranceEveryPixelStaysThatCloseToTheExactPicture) {
+  const Mesh hex8 = boxOf(CellType::Hex8, 3), hex20 = boxOf(CellType::Hex20, 2);
+  const auto trilinear = sampled(hex8, [](const glm::dvec3& x) { return x.x * x.y * x.z; });
+  const auto quadratic = sampled(hex20, [](const glm::dvec3& x) { return x.x * x.x + x.y * x.z - 0.5 * x.z * x.z; });
+  for (double tolerance : {1e-2, 1e-3}) {
+    const ThreeImages a = draw(hex8, trilinear, peak(0.2, 0.04), isoCamera(hex8), 40, {}, {}, tolerance);
+    EXPECT_LE(a.cpu.max, tolerance + 2e-4) << tolerance;
+    EXPECT_LE(a.cpu.rmse, 1e-4) << tolerance;
+    const ThreeImages b = draw(hex20, quadratic, peak(0.3, 0.05), isoCamera(hex20), 40, {}, {}, tolerance);
+    EXPECT_LE(b.cpu.max, tolerance + 2e-4) << tolerance;
+    EXPECT_LE(b.cpu.rmse, 1e-4) << tolerance;
+  }
 }

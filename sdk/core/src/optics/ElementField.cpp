@@ -4,11 +4,14 @@
 #include <volpost/core/CellShape.hpp>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace volpost::optics {
 namespace {
@@ -28,6 +31,34 @@ bool affineMap(CellType type, std::span<const glm::dvec3> nodes) {
   return true;
 }
 
+// The shape functions and their gradients at each type's reference centre: there an affine
+// cell's Jacobian is sum x_i g_i^T and its centre sum N_i x_i, with no differentiation per cell.
+struct CentreShape {
+  ShapeValues n{};
+  std::array<glm::dvec3, kMaxCellNodes> gradient{};
+};
+
+const CentreShape& centreShape(CellType type) {
+  static const std::array<CentreShape, kAllCellTypes.size()> all = [] {
+    std::array<CentreShape, kAllCellTypes.size()> shapes{};
+    for (const CellType t : kAllCellTypes) {
+      CentreShape& c = shapes[std::size_t(t)];
+      const glm::dvec3 centre = referenceCentre(t);
+      c.n = shapeFunctions(t, centre);
+      const int count = topology(t).nodeCount;
+      std::vector<glm::dvec3> unit(std::size_t(count), glm::dvec3(0.0));
+      for (int i = 0; i < count; ++i) {  // node i at x = 1, the rest at 0: row x of the Jacobian is g_i
+        unit[std::size_t(i)] = glm::dvec3(1.0, 0.0, 0.0);
+        const glm::dmat3 j = jacobianAt(t, unit, centre);
+        c.gradient[std::size_t(i)] = glm::dvec3(j[0].x, j[1].x, j[2].x);
+        unit[std::size_t(i)] = glm::dvec3(0.0);
+      }
+    }
+    return shapes;
+  }();
+  return all[std::size_t(type)];
+}
+
 }  // namespace
 
 ElementField::ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin)
@@ -43,6 +74,9 @@ ElementField::ElementField(const Mesh& mesh, std::span<const double> values, con
   for (double v : values_)
     if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   scale_ = hi > lo ? hi - lo : (std::isfinite(lo) && lo != 0.0 ? std::abs(lo) : 1.0);
+  glm::dvec3 low(INFINITY), high(-INFINITY);
+  for (const glm::dvec3& p : mesh.nodes) low = glm::min(low, p), high = glm::max(high, p);
+  if (!mesh.nodes.empty()) diagonal_ = glm::length(high - low);
   glm::dvec3 nodes[kMaxCellNodes];
   double cellValues[kMaxCellNodes];
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
@@ -80,6 +114,43 @@ std::optional<double> ElementField::value(std::uint32_t cell, const glm::dvec3& 
   double v = 0.0;
   for (int i = 0; i < count; ++i) v += n[std::size_t(i)] * values[i];
   return v;
+}
+
+bool ElementField::affineCoordinates(std::uint32_t cell, const glm::dvec3* p, glm::dvec3* xi, int count) const {
+  const CellType type = mesh_.cellType(cell);
+  const CentreShape& shape = centreShape(type);
+  const auto ids = mesh_.cellNodes(cell);
+  glm::dmat3 j(0.0);
+  glm::dvec3 x(0.0);
+  for (std::size_t i = 0; i < ids.size() && i < std::size_t(kMaxCellNodes); ++i) {
+    const glm::dvec3 node = mesh_.nodes[ids[i]] - origin_;
+    const glm::dvec3& g = shape.gradient[i];
+    x += shape.n[i] * node;
+    j[0] += g.x * node;
+    j[1] += g.y * node;
+    j[2] += g.z * node;
+  }
+  if (!(std::abs(glm::determinant(j)) > 0.0)) return false;
+  const glm::dmat3 inverse = glm::inverse(j);
+  const glm::dvec3 centre = referenceCentre(type);
+  for (int i = 0; i < count; ++i) xi[i] = centre + inverse * (p[i] - x);
+  return true;
+}
+
+int ElementField::degreeAlongLine(std::uint32_t cell) const {
+  if (!affine(cell)) return -1;
+  switch (mesh_.cellType(cell)) {
+    case CellType::Tet10:
+    case CellType::Wedge6:
+      return 2;
+    case CellType::Hex8:
+    case CellType::Wedge15:
+      return 3;
+    case CellType::Hex20:
+      return 4;
+    default:
+      return -1;
+  }
 }
 
 double ElementField::valueAt(std::uint32_t cell, const glm::dvec3& xi) const {

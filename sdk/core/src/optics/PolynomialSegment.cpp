@@ -2,6 +2,9 @@
 #include <volpost/core/optics/PolynomialSegment.hpp>
 
 #include <volpost/core/optics/Headlight.hpp>
+#include <volpost/core/optics/QuickSegment.hpp>
+
+#include <glm/common.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
@@ -69,8 +72,43 @@ double solveMonotone(const ScalarPolynomial& p, const ScalarPolynomial& dp, doub
 
 // A stretch where the scalar goes monotonically from s0 to s1 and no control point lies
 // strictly between them: extinction and color are linear in the scalar.
+// The largest |p| on [ua, ub] (exact for degree <= 1, else bounded by its coefficients).
+double largestOn(const ScalarPolynomial& p, double ua, double ub) {
+  if (p.degree <= 1) return std::max(std::abs(p.at(ua)), std::abs(p.at(ub)));
+  const double m = std::max(std::abs(ua), std::abs(ub));
+  double bound = 0.0, power = 1.0;
+  for (int k = 0; k <= p.degree; ++k, power *= m) bound += std::abs(p.c[std::size_t(k)]) * power;
+  return bound;
+}
+
+// The monotone piece cut into linear pieces, each within delta of s (chords of a function
+// with |s''| <= M2 over width h stray by at most M2 h^2 / 8), each lit in closed form.
+SegmentLight chordPieces(const ScalarPolynomial& s, const ScalarPolynomial& curvature, double ua, double ub,
+                         const TransferSample& a, const TransferSample& b, double s0, double s1, double delta,
+                         double halfLength) {
+  constexpr int kMostChords = 4096;
+  const double bend = largestOn(curvature, ua, ub);
+  const double wanted = (ub - ua) * std::sqrt(bend / (8.0 * delta));
+  const int n = std::clamp(int(std::ceil(std::min(wanted, double(kMostChords)))), 1, kMostChords);
+  const double step = (ub - ua) / n, inverseRange = 1.0 / (s1 - s0);
+  const auto sample = [&](double value) {
+    const double w = std::clamp((value - s0) * inverseRange, 0.0, 1.0);
+    return TransferSample{a.color + w * (b.color - a.color), a.extinction + w * (b.extinction - a.extinction)};
+  };
+  SegmentLight light;
+  TransferSample front = a;
+  for (int i = 1; i <= n && light.transmittance >= kDark; ++i) {
+    const TransferSample back = i == n ? b : sample(s.at(ua + i * step));
+    compositeBehind(light,
+                    quickLinearSegment(front.color, front.extinction, back.color, back.extinction, step * halfLength));
+    front = back;
+  }
+  return light;
+}
+
 SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s, const ScalarPolynomial& integral,
-                           double ua, double ub, double s0, double s1, double halfLength) {
+                           const ScalarPolynomial& curvature, double ua, double ub, double s0, double s1,
+                           double halfLength, const EmissionAccuracy& accuracy) {
   if (!(ub > ua)) return {};
   const double length = (ub - ua) * halfLength;
   if (s0 == s1) return constantSegment(tf.color(s0), tf.extinction(s0), length);
@@ -88,6 +126,20 @@ SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s
   if (a.color == b.color) {  // the emission integrates to color * (1 - transmittance)
     light.color = a.color * (1.0 - light.transmittance);
     return light;
+  }
+  if (accuracy.tolerance > 0.0) {
+    // How far a pixel moves per unit length and unit change of the scalar on this piece:
+    // tau C and tau are linear in s here, d(tau C)/ds is linear too, largest at an end.
+    const glm::dvec3 dColor = (b.color - a.color) / (s1 - s0);
+    const double dTau = (b.extinction - a.extinction) / (s1 - s0);
+    const glm::dvec3 atA = glm::abs(dTau * a.color + a.extinction * dColor);
+    const glm::dvec3 atB = glm::abs(dTau * b.color + b.extinction * dColor);
+    const double weight = std::max({atA.x, atA.y, atA.z, atB.x, atB.y, atB.z}) + accuracy.brightest * std::abs(dTau);
+    if (weight > 0.0) {
+      const double share = 1.0 - light.transmittance + length / accuracy.rayLength;
+      const double delta = 0.5 * accuracy.tolerance * share / (length * weight);
+      return chordPieces(s, curvature, ua, ub, a, b, s0, s1, delta, halfLength);
+    }
   }
   const GaussLegendre& g = gaussLegendre();
   const auto emitted = [&](double u) {
@@ -161,18 +213,22 @@ std::vector<double> zerosIn(const ScalarPolynomial& p, double a, double b) {
   }
   // Between consecutive turning points p is monotone: at most one zero there.
   const ScalarPolynomial dp = p.derivative();
-  std::vector<double> ends{a};
-  for (double x : zerosIn(dp, a, b)) ends.push_back(x);
-  ends.push_back(b);
+  // At most kMaxDegree + 1 turning points, and the two ends.
+  std::array<double, ScalarPolynomial::kMaxDegree + 4> ends{};
+  std::size_t count = 0;
+  ends[count++] = a;
+  for (double x : zerosIn(dp, a, b))
+    if (count + 1 < ends.size()) ends[count++] = x;
+  ends[count++] = b;
   // A value within rounding of zero at a turning point is a zero that touches (a double
   // root): taken there, not found again on either side.
   double size = 0.0;
   for (int k = 0; k <= p.degree; ++k) size += std::abs(p.c[std::size_t(k)]);
   const auto zeroish = [&](double f) { return std::abs(f) <= 8.0 * std::numeric_limits<double>::epsilon() * size; };
-  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+  for (std::size_t i = 0; i + 1 < count; ++i) {
     const double x0 = ends[i], x1 = ends[i + 1];
     const double f0 = p.at(x0), f1 = p.at(x1);
-    const bool touches0 = i > 0 && zeroish(f0), touches1 = i + 2 < ends.size() && zeroish(f1);
+    const bool touches0 = i > 0 && zeroish(f0), touches1 = i + 2 < count && zeroish(f1);
     if (touches1) zeros.push_back(x1);
     else if (!touches0 && ((f0 < 0.0 && f1 > 0.0) || (f0 > 0.0 && f1 < 0.0)))
       zeros.push_back(solveMonotone(p, dp, 0.0, x0, x1));
@@ -181,35 +237,54 @@ std::vector<double> zerosIn(const ScalarPolynomial& p, double a, double b) {
   return zeros;
 }
 
-std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error) {
-  constexpr int n = ScalarPolynomial::kMaxDegree + 1;
-  // Monomial coefficients of the Chebyshev polynomials T_0 .. T_8 (T_k+1 = 2u T_k - T_k-1).
-  static const auto chebyshev = [] {
-    std::array<std::array<double, n>, n> t{};
-    t[0][0] = 1.0;
-    t[1][1] = 1.0;
-    for (int k = 1; k + 1 < n; ++k)
-      for (int j = 0; j < n; ++j)
-        t[std::size_t(k + 1)][std::size_t(j)] =
-            (j > 0 ? 2.0 * t[std::size_t(k)][std::size_t(j - 1)] : 0.0) - t[std::size_t(k - 1)][std::size_t(j)];
-    return t;
+namespace {
+
+// What interpolating at n Chebyshev points needs, for each n up to kMaxDegree + 1: the
+// points (ascending u), the points halfway between them, the transform's cosines, and the
+// monomial coefficients of the Chebyshev polynomials (T_k+1 = 2u T_k - T_k-1).
+constexpr int kMostPoints = ScalarPolynomial::kMaxDegree + 1;
+struct ChebyshevTables {
+  std::array<double, kMostPoints> points{}, between{};
+  std::array<std::array<double, kMostPoints>, kMostPoints> transform{};
+};
+using ChebyshevMonomials = std::array<std::array<double, kMostPoints>, kMostPoints>;
+
+const ChebyshevMonomials& chebyshevMonomials() {
+  static const ChebyshevMonomials t = [] {
+    ChebyshevMonomials m{};
+    m[0][0] = 1.0;
+    m[1][1] = 1.0;
+    for (std::size_t k = 1; k + 1 < kMostPoints; ++k)
+      for (std::size_t j = 0; j < kMostPoints; ++j) m[k + 1][j] = (j > 0 ? 2.0 * m[k][j - 1] : 0.0) - m[k - 1][j];
+    return m;
   }();
-  // The points (ascending u), the points halfway between them, and the transform's cosines.
-  struct Cosines {
-    std::array<double, n> points{}, between{};
-    std::array<std::array<double, n>, n> transform{};
-  };
-  static const Cosines cosines = [] {
-    Cosines c;
-    for (int i = 0; i < n; ++i) {
-      c.points[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 0.5) / n);
-      c.between[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 1.0) / n);
-      for (int k = 0; k < n; ++k)
-        c.transform[std::size_t(k)][std::size_t(i)] = std::cos(std::numbers::pi * k * (i + 0.5) / n);
+  return t;
+}
+
+const ChebyshevTables& chebyshevTables(int n) {
+  static const std::array<ChebyshevTables, kMostPoints + 1> all = [] {
+    std::array<ChebyshevTables, kMostPoints + 1> tables{};
+    for (int count = 1; count <= kMostPoints; ++count) {
+      ChebyshevTables& c = tables[std::size_t(count)];
+      for (int i = 0; i < count; ++i) {
+        c.points[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 0.5) / count);
+        c.between[std::size_t(i)] = -std::cos(std::numbers::pi * (i + 1.0) / count);
+        for (int k = 0; k < count; ++k)
+          c.transform[std::size_t(k)][std::size_t(i)] = std::cos(std::numbers::pi * k * (i + 0.5) / count);
+      }
     }
-    return c;
+    return tables;
   }();
-  std::array<double, n> values{};
+  return all[std::size_t(n)];
+}
+
+}  // namespace
+
+std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error,
+                                             int degree) {
+  const int n = std::clamp(degree, 0, ScalarPolynomial::kMaxDegree) + 1;
+  const ChebyshevTables& cosines = chebyshevTables(n);
+  std::array<double, kMostPoints> values{};
   for (int i = 0; i < n; ++i) {
     const auto v = f(cosines.points[std::size_t(i)]);
     if (!v || !std::isfinite(*v)) return std::nullopt;
@@ -217,7 +292,7 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
   }
   // Coefficients of T_k by the discrete cosine transform; the sign (-1)^k because the
   // points run from u = -1 up while the cosines run down.
-  std::array<double, n> coefficients{};
+  std::array<double, kMostPoints> coefficients{};
   double magnitude = 0.0;
   for (int k = 0; k < n; ++k) {
     double sum = 0.0;
@@ -227,14 +302,16 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
   }
   // The degree the values need: trailing coefficients at rounding level dropped (a cubic
   // stays a cubic, which keeps its zeros cheap to find).
-  int degree = n - 1;
-  while (degree > 0 && std::abs(coefficients[std::size_t(degree)]) <= 1e-14 * magnitude) --degree;
+  int needed = n - 1;
+  while (needed > 0 && std::abs(coefficients[std::size_t(needed)]) <= 1e-14 * magnitude) --needed;
+  const ChebyshevMonomials& chebyshev = chebyshevMonomials();
   ScalarPolynomial p;
-  p.degree = degree;
-  for (int k = 0; k <= degree; ++k)
+  p.degree = needed;
+  for (int k = 0; k <= needed; ++k)
     for (int j = 0; j <= k; ++j)
       p.c[std::size_t(j)] += coefficients[std::size_t(k)] * chebyshev[std::size_t(k)][std::size_t(j)];
   error = 0.0;
+  if (degree < ScalarPolynomial::kMaxDegree) return p;  // f is a polynomial of that degree: exact
   for (int i = 0; i + 1 < n; ++i) {
     const double u = cosines.between[std::size_t(i)];
     const auto v = f(u);
@@ -246,18 +323,28 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
 
 SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::vector<IsoSurface>& isoSurfaces,
                                         const ScalarPolynomial& s, double length, const GradientAlong& gradientAt,
-                                        const glm::dvec3& direction) {
+                                        const glm::dvec3& direction, const EmissionAccuracy& accuracy) {
   SegmentLight total;
   if (!(length > 0.0) || tf.empty()) return total;
-  const ScalarPolynomial ds = s.derivative(), integral = s.antiderivative();
-  std::vector<double> turns{-1.0};
+  const ScalarPolynomial ds = s.derivative(), integral = s.antiderivative(), curvature = ds.derivative();
+  // Scratch lists kept per thread: a renderer calls this for every stretch of every ray.
+  thread_local std::vector<double> turns;
+  thread_local std::vector<Cut> cuts, stretch;
+  turns.assign(1, -1.0);
   for (double u : zerosIn(ds, -1.0, 1.0)) turns.push_back(u);
   turns.push_back(1.0);
+  // The values it takes lie between those at its ends and turns: where the transfer function
+  // is transparent over them and no surface's value is among them, nothing is seen.
+  double lo = INFINITY, hi = -INFINITY;
+  for (double u : turns) lo = std::min(lo, s.at(u)), hi = std::max(hi, s.at(u));
+  const bool surfaceInside = std::any_of(isoSurfaces.begin(), isoSurfaces.end(),
+                                         [&](const IsoSurface& iso) { return iso.value >= lo && iso.value <= hi; });
+  if (!surfaceInside && tf.transparentOver(lo, hi)) return total;
   // Every cut in order: control points and iso-values crossed on each monotone stretch.
-  std::vector<Cut> cuts{{-1.0, s.at(-1.0), nullptr}};
+  cuts.assign(1, {-1.0, s.at(-1.0), nullptr});
   for (std::size_t i = 0; i + 1 < turns.size(); ++i) {
     const double ua = turns[i], ub = turns[i + 1], sa = s.at(ua), sb = s.at(ub);
-    std::vector<Cut> stretch;
+    stretch.clear();
     for (double v : tf.crossings(sa, sb)) stretch.push_back({solveMonotone(s, ds, v, ua, ub), v, nullptr});
     for (const IsoSurface& iso : isoSurfaces) {
       const bool crossed = sb > sa ? (iso.value > sa && iso.value <= sb) : (iso.value < sa && iso.value >= sb);
@@ -276,7 +363,7 @@ SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::v
   for (std::size_t i = 1; i < cuts.size() && total.transmittance >= kDark; ++i) {
     const Cut& from = cuts[i - 1];
     const Cut& to = cuts[i];
-    compositeBehind(total, monotonePiece(tf, s, integral, from.u, to.u, from.s, to.s, halfLength));
+    compositeBehind(total, monotonePiece(tf, s, integral, curvature, from.u, to.u, from.s, to.s, halfLength, accuracy));
     if (to.surface) {
       const double shade = isoShade(gradientAt(to.u), direction);
       compositeBehind(total, {to.surface->color * shade * to.surface->opacity, 1.0 - to.surface->opacity});

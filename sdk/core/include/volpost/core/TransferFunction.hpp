@@ -55,6 +55,10 @@ class TransferFunction {
   glm::dvec3 color(double s) const;
   double extinction(double s) const;
 
+  /// True when the extinction is zero at every value from lo to hi (lo <= hi): a segment
+  /// whose values stay there neither emits nor absorbs.
+  bool transparentOver(double lo, double hi) const;
+
   /// The control-point values strictly between a and b, ordered from a toward b (a > b
   /// too). These are the places where exact integration cuts a segment.
   std::vector<double> crossings(double a, double b) const;

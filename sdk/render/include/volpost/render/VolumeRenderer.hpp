@@ -68,6 +68,12 @@ class VolumeRenderer : public Renderer {
     (void)cellOfTet;
     if (field) throw std::invalid_argument("this volume renderer draws the field linear on the tetrahedra only");
   }
+  /// For renderers whose traits() say elementTolerance: the most each pixel channel (0..1)
+  /// may differ from the exact picture of the cells' own field (0: exact). The host sends
+  /// it to no other renderer; their default refuses anything but 0.
+  virtual void setElementTolerance(double tolerance) {
+    if (tolerance != 0.0) throw std::invalid_argument("this volume renderer draws the cells' own field exactly");
+  }
   virtual void setTransferFunction(const TransferFunction& tf) = 0;
   /// Throws std::invalid_argument where checkClipPlanes does (VolumeLimits.hpp).
   virtual void setClipPlanes(const std::vector<ClipPlane>& planes) = 0;

@@ -38,6 +38,9 @@ struct VolumeRendererTraits {
   /// It draws a mesh's field through the cells' own shape functions when asked
   /// (FieldInterpolation::Element), not only linear on their tetrahedra.
   bool elementInterpolation = false;
+  /// It draws the cells' own field within a tolerance it is given (setElementTolerance),
+  /// faster than exactly; false: exactly or not at all.
+  bool elementTolerance = false;
 };
 
 }  // namespace volpost

@@ -37,6 +37,8 @@ class ElementField {
   const std::vector<std::uint32_t>& uninvertibleCells() const { return uninvertible_; }
   /// The values' range (what tolerances are relative to; 1 when they are all equal).
   double valueScale() const { return scale_; }
+  /// The diagonal of the nodes' bounding box: no straight ray is longer inside the mesh.
+  double diagonal() const { return diagonal_; }
   /// Where points given to the methods are measured from.
   const glm::dvec3& origin() const { return origin_; }
   /// Bounds of the field anywhere in `cell` (lo, hi), where they follow from its node
@@ -52,6 +54,13 @@ class ElementField {
   /// quadratic cell with its midside nodes halfway): then the natural coordinates move
   /// linearly along a straight ray and valueAt needs no inverse map.
   bool affine(std::uint32_t cell) const { return elementCells_[cell] == kAffine; }
+  /// For an affine cell: the natural coordinates of the `count` points `p` without Newton
+  /// steps (one Jacobian, inverted). False where the Jacobian is singular.
+  bool affineCoordinates(std::uint32_t cell, const glm::dvec3* p, glm::dvec3* xi, int count) const;
+  /// For an affine cell: the degree of its field as a polynomial along any straight line
+  /// (the coordinates move linearly: 2 for a tet10 or wedge6, 3 for a hex8 or wedge15, 4
+  /// for a hex20); -1 where it is not a polynomial of known degree.
+  int degreeAlongLine(std::uint32_t cell) const;
   /// The value at natural coordinates `xi` of `cell`.
   double valueAt(std::uint32_t cell, const glm::dvec3& xi) const;
   /// The gradient per length unit at natural coordinates `xi` of `cell`.
@@ -74,6 +83,7 @@ class ElementField {
   std::vector<char> elementCells_;    ///< per cell: 0 the split's field, 1 its own, kAffine its own (affine map)
   std::vector<std::uint32_t> uninvertible_;
   double scale_ = 1.0;
+  double diagonal_ = 0.0;
   mutable std::atomic<std::size_t> fallbacks_{0};
 };
 

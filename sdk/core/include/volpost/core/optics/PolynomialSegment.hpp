@@ -46,7 +46,25 @@ std::vector<double> zerosIn(const ScalarPolynomial& p, double a, double b);
 /// The polynomial of degree <= 8 interpolating f at the 9 Chebyshev points of [-1, 1],
 /// trailing coefficients below rounding dropped. `error` gets the largest difference from
 /// f at the 8 points halfway between them (how well it fits). nullopt where f does.
-std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error);
+/// With a `degree` below 8, f is known to be a polynomial of at most that degree: it is
+/// interpolated at degree + 1 points, exactly, and `error` is 0.
+std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error,
+                                             int degree = ScalarPolynomial::kMaxDegree);
+
+/// How closely the emission is integrated. `tolerance` 0: to rounding (Gauss-Legendre
+/// above). Otherwise each monotone piece whose color changes is cut into chords, each lit
+/// by the closed form of a linear segment, with the polynomial within
+///   delta = tolerance (alpha / length + 1 / rayLength) / (2 W)
+/// of its chords, where alpha is the piece's opacity and W = max |d(tau C)/ds| + brightest
+/// |d tau/ds| bounds how far a pixel moves per unit length and unit change of the scalar on
+/// that piece. Weighted by the transmittance in front, the pieces' opacities add up to at
+/// most 1 and their lengths to at most rayLength, so a pixel moves by at most `tolerance`
+/// (docs/methods/element_field.md); pieces the transfer function cannot tell apart stay whole.
+struct EmissionAccuracy {
+  double tolerance = 0.0;
+  double rayLength = 1.0;  ///< the longest ray through the mesh
+  double brightest = 1.0;  ///< the largest color component in front of or behind the piece
+};
 
 /// What the ray needs to shade an iso-surface met at u: the field's gradient there.
 using GradientAlong = std::function<glm::dvec3(double u)>;
@@ -57,6 +75,6 @@ using GradientAlong = std::function<glm::dvec3(double u)>;
 /// shaded 0.3 + 0.7 |cos| against the unit `direction` with gradientAt.
 SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::vector<IsoSurface>& isoSurfaces,
                                         const ScalarPolynomial& s, double length, const GradientAlong& gradientAt,
-                                        const glm::dvec3& direction);
+                                        const glm::dvec3& direction, const EmissionAccuracy& accuracy = {});
 
 }  // namespace volpost::optics
