@@ -169,6 +169,12 @@ struct Options {
       "into; element: each cell's own shape functions, as the solver computed the field (trilinear in a hex8, "
       "quadratic in a tet10 or hex20).",
       "HOW"};
+  QCommandLineOption elementTolerance{
+      "element-tolerance",
+      "With --interpolation element: the most each pixel's color or opacity (0..1) may differ from the exact "
+      "picture of the cells' own field (default 0.01, a bound the pictures stay well under; 0: exact, slower; "
+      "at least 1e-05 otherwise). Renderers that draw it exactly (reference) take no tolerance.",
+      "E"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
                                        "FILE.pfm (RGB over the background).", "FILE"};
   QCommandLineOption threads{"threads", "Threads for the reference renderer (default: all cores).", "N"};
@@ -533,6 +539,7 @@ void applyVolumeOptions(const QCommandLineParser& p, const Options& o, Scene& sc
                            .toStdString());
     scene.setInterpolation(*interpolation);
   }
+  if (p.isSet(o.elementTolerance)) scene.setElementTolerance(number(o.elementTolerance, "element-tolerance"));
 }
 
 // The renderer a picture is drawn with: the surface (no entry) or a volume renderer.
@@ -594,8 +601,9 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   if (!chosen.volume) {
     const QString why =
         "works with volume renderers (--renderer " + chosen.namesWhere([](const RendererEntry&) { return true; }) + ")";
-    for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep,
-                                             &o.termination, &o.shading, &o.floatOut, &o.threads, &o.interpolation})
+    for (const QCommandLineOption* option :
+         {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep, &o.termination, &o.shading,
+          &o.floatOut, &o.threads, &o.interpolation, &o.elementTolerance})
       refuse(*option, why);
     return;
   }
@@ -639,6 +647,8 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
   if (!t.samplingStepOnMeshes && !t.samplingStepOnGrids)
     refuse(o.samplingStep, "is not used by " + name + " (it integrates exactly)");
   if (!t.earlyTermination) refuse(o.termination, "is not used by " + name + " (it never stops early)");
+  if (!t.elementTolerance && t.elementInterpolation)
+    refuse(o.elementTolerance, "is not used by " + name + " (it draws the cells' own field exactly)");
   if (p.isSet(o.tf2d) && p.isSet(o.tf))
     throw UsageError("--tf and --tf2d: a volume is drawn with one transfer function; give one");
   if (p.isSet(o.tf2d) && (p.isSet(o.colormap) || p.isSet(o.range)))
@@ -972,6 +982,7 @@ int runRender(const QStringList& args) {
                      o.termination,
                      o.shading,
                      o.interpolation,
+                     o.elementTolerance,
                      o.floatOut,
                      o.threads,
                      o.state,
@@ -1158,6 +1169,8 @@ int runRender(const QStringList& args) {
       if (chosen.volume && !scene.view())
         throw UsageError(QString("--renderer %1 needs --field (the quantity to render)").arg(rendererName).toStdString());
       refuseWhatTheRendererIgnoresOnThisModel(parser, o, chosen, session->model().grid.has_value());
+      if (parser.isSet(o.elementTolerance) && scene.state().volume.interpolation != FieldInterpolation::Element)
+        throw UsageError("--element-tolerance applies to the cells' own field: add --interpolation element");
       try {
         if (glVolume) scene.setVolumeRenderer(rendererName.toStdString());
       } catch (const std::invalid_argument& e) {

@@ -514,6 +514,18 @@ void Scene::setInterpolation(FieldInterpolation interpolation) {
   ++revisions_.mode;
 }
 
+void Scene::setElementTolerance(double tolerance) {
+  if (!validElementTolerance(tolerance)) {
+    char value[32];
+    std::snprintf(value, sizeof value, "%g", tolerance);
+    throw std::invalid_argument(std::string("the tolerance of the cells' own field ") + kElementToleranceRule +
+                                "; not " + value);
+  }
+  if (tolerance == state_.volume.elementTolerance) return;
+  state_.volume.elementTolerance = tolerance;
+  ++revisions_.mode;
+}
+
 void Scene::setVolumeEdges(bool show) { state_.volume.edges = show; }
 
 // ---- the whole state ----

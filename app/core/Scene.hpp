@@ -216,6 +216,9 @@ class Scene {
   void setTermination(double transmittance);
   /// Meshes: how node values vary inside a cell when the volume is drawn.
   void setInterpolation(FieldInterpolation interpolation);
+  /// The cells' own field's tolerance per pixel channel: 0 (exact) or within
+  /// [kLeastElementTolerance, kMostElementTolerance]; throws std::invalid_argument otherwise.
+  void setElementTolerance(double tolerance);
   /// Regular grids: the volume's emission lit by the trilinear gradient (light at the eye).
   /// Throws std::invalid_argument, changing nothing, to turn it on for a mesh.
   void setShading(bool on);

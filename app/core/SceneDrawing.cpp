@@ -291,6 +291,7 @@ void SceneDrawing::applyVolumeSettings(const Scene& scene) {
     volume_->setIntegrationMode(v.mode);
     volume_->setSamplingStep(v.samplingStep);
     volume_->setTerminationThreshold(v.termination);
+    if (volumeTraits_.elementTolerance) volume_->setElementTolerance(v.elementTolerance);
   }
   volumeCaughtUp(drawn_, now);
 }

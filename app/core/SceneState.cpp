@@ -88,6 +88,7 @@ json jsonOf(const VolumeLayer& v) {
   out["samplingStep"] = v.samplingStep;
   out["termination"] = v.termination;
   out["interpolation"] = toString(v.interpolation);
+  out["elementTolerance"] = v.elementTolerance;
   out["shading"] = v.shading;
   if (v.transferFunction2D) out["transferFunction2D"] = json::parse(v.transferFunction2D->toJson());
   out["edges"] = v.edges;
@@ -182,6 +183,10 @@ VolumeLayer volumeFrom(const Reader& r, const json& in, const std::string& fileN
     const auto interpolation = fieldInterpolationFromString(r.text(*x, "volume.interpolation"));
     if (!interpolation) r.fail("volume.interpolation", std::string("must be one of: ") + kFieldInterpolationChoices);
     v.interpolation = *interpolation;
+  }
+  if (const json* x = r.find(in, "elementTolerance")) {
+    v.elementTolerance = r.number(*x, "volume.elementTolerance");
+    if (!validElementTolerance(v.elementTolerance)) r.fail("volume.elementTolerance", kElementToleranceRule);
   }
   if (const json* x = r.find(in, "edges")) v.edges = r.boolean(*x, "volume.edges");
   if (const json* x = r.find(in, "outline")) v.outline = r.boolean(*x, "volume.outline");

@@ -68,6 +68,15 @@ inline constexpr double kMaxPointSize = 64.0;
 inline constexpr double kMinTextScale = 0.25, kMaxTextScale = 8.0;
 /// The most formulas a scene (and its state file) holds.
 inline constexpr std::size_t kMaxFormulas = 100;
+/// The cells' own field's tolerance per pixel channel: a bound the pictures stay well under
+/// (docs/methods/element_field.md); 0 draws it exactly; below the least, the fast path's own
+/// rounding would not stay within it.
+inline constexpr double kDefaultElementTolerance = 0.01;
+inline constexpr double kLeastElementTolerance = 1e-5, kMostElementTolerance = 0.1;
+inline constexpr const char* kElementToleranceRule = "must be 0 (exact) or lie in [1e-05, 0.1]";
+inline bool validElementTolerance(double e) {
+  return e == 0.0 || (e >= kLeastElementTolerance && e <= kMostElementTolerance);
+}
 inline constexpr std::size_t kMaxViewNameBytes = 200;
 /// Why `name` cannot name a view (empty, too long, a control character), or empty.
 std::string viewNameProblem(const std::string& name);
@@ -95,6 +104,9 @@ struct VolumeLayer {
   /// Meshes: how node values vary inside a cell (the cells' own shape functions, or linear
   /// on the tetrahedra they are split into).
   FieldInterpolation interpolation = FieldInterpolation::Tetrahedra;
+  /// With the cells' own interpolation: the most each pixel channel may differ from its
+  /// exact picture, for renderers that take a tolerance (0: exact).
+  double elementTolerance = kDefaultElementTolerance;
   bool shading = false;         ///< regular grids: the emission lit by the gradient (headlight)
   bool edges = false;           ///< element edges over the volume (they end the rays)
   bool outline = false;         ///< the model's feature edges over the volume (they end the rays)

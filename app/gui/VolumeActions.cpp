@@ -9,6 +9,7 @@
 #include <QAction>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
@@ -49,6 +50,13 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
       "Draw the field as the solver defines it in each cell (trilinear in a hexahedron, quadratic in a "
       "10-node tetrahedron); off: linear on the tetrahedra the cells are split into");
   connect(interpolation_, &QAction::toggled, this, &VolumeActions::drawCellsOwnField);
+  tolerance_ = view.addAction(QString());  // the text shows the value (syncToScene)
+  tolerance_->setObjectName("elementToleranceAction");
+  tolerance_->setToolTip(
+      "How far each pixel's color or opacity may stray from the exact picture of the cells' own field: a "
+      "bound the pictures stay well under; 0 draws it exactly (slower). The reference renderer always "
+      "draws it exactly");
+  connect(tolerance_, &QAction::triggered, this, &VolumeActions::askElementTolerance);
 
   edges_ = view.addAction("Element &Edges over the Volume");
   edges_->setObjectName("volumeEdgesAction");
@@ -78,12 +86,16 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
     if (setTransferFunction2D(std::nullopt))
       window_.statusBar()->showMessage("Volume colors from the 1D transfer function");
   });
+  syncToScene();
 }
 
 void VolumeActions::syncToScene() {
   const QSignalBlocker a(volume_), b(shading_), c(edges_), d(outline_), e(interpolation_);
   volume_->setChecked(scene_.volumeShown());
   interpolation_->setChecked(scene_.volume().interpolation == FieldInterpolation::Element);
+  const double tolerance = scene_.volume().elementTolerance;
+  tolerance_->setText(tolerance == 0.0 ? QString("Tolerance of the Cells' Own Field: exact...")
+                                       : QString("Tolerance of the Cells' Own Field: %1...").arg(tolerance, 0, 'g', 3));
   shading_->setChecked(scene_.volume().shading);
   edges_->setChecked(scene_.volume().edges);
   outline_->setChecked(scene_.volume().outline);
@@ -109,6 +121,28 @@ void VolumeActions::drawCellsOwnField(bool on) {
     window_.statusBar()->showMessage(message);
   }
   syncToScene();
+}
+
+bool VolumeActions::setElementTolerance(double tolerance) {
+  const bool changed = changeScene_([tolerance](Scene& s) { s.setElementTolerance(tolerance); });
+  if (changed)
+    window_.statusBar()->showMessage(
+        tolerance == 0.0 ? QString("The cells' own field is drawn exactly")
+                         : QString("The cells' own field is drawn within %1 of its exact picture per pixel channel")
+                               .arg(tolerance, 0, 'g', 3));
+  syncToScene();
+  return changed;
+}
+
+void VolumeActions::askElementTolerance() {
+  bool ok = false;
+  const double tolerance = QInputDialog::getDouble(
+      &window_, "Tolerance of the cells' own field",
+      QString("Most a pixel's color or opacity may differ from the exact picture\n(0: exact; otherwise %1 to %2):")
+          .arg(kLeastElementTolerance, 0, 'g')
+          .arg(kMostElementTolerance, 0, 'g'),
+      scene_.volume().elementTolerance, 0.0, kMostElementTolerance, 5, &ok);
+  if (ok) setElementTolerance(tolerance);
 }
 
 std::vector<std::string> VolumeActions::cellsDrawnBySplit() const {

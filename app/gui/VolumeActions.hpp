@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The window's volume entries: View > Volume Rendering (V), Shade the Volume by Its
-// Gradient (grids), the Cells' Own Interpolation (meshes), Load a 2D Transfer Function
+// Gradient (grids), the Cells' Own Interpolation and its tolerance (meshes), Load a 2D Transfer Function
 // (grids)... and Use the 1D Transfer Function. The scene is the one record of them; the entries show it.
 #pragma once
 
@@ -49,6 +49,9 @@ class VolumeActions : public QObject {
   /// Reads a volpost-tf2d file and draws with it; false (and a message naming the file)
   /// when it is not one or the model is not a grid.
   bool loadTransferFunction2D(const QString& path);
+  /// The cells' own field's tolerance per pixel channel (0: exact); false, saying why in
+  /// the status bar, where the scene refuses the value.
+  bool setElementTolerance(double tolerance);
   /// The entries show the scene's volume and shading.
   void syncToScene();
 
@@ -62,6 +65,9 @@ class VolumeActions : public QObject {
   QAction* edges_ = nullptr;          ///< element edges over the volume
   QAction* outline_ = nullptr;        ///< the model's feature edges over the volume
   QAction* interpolation_ = nullptr;  ///< the cells' own interpolation (else the tetrahedra's)
+  QAction* tolerance_ = nullptr;      ///< its tolerance, shown in the entry's text
+  /// Asks for the tolerance (a number box starting at the current one).
+  void askElementTolerance();
   /// The cells' own interpolation on or off; refused, saying why, where the renderer in use
   /// draws the tetrahedra's field only.
   void drawCellsOwnField(bool on);

@@ -138,8 +138,8 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   EXPECT_NE(stateOnGpu.output.find("\"volume.interpolation\" in a state file"), std::string::npos) << stateOnGpu.output;
 }
 
-// The CPU ray caster draws the cells' own field as the reference does, up to its float walk;
-// a folded cell is named by it too.
+// The CPU ray caster draws the cells' own field as the reference does, up to its float walk
+// (with no tolerance: to rounding); a folded cell is named by it too.
 TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
   const std::string dir = ::testing::TempDir();
   const std::string model =
@@ -148,7 +148,7 @@ TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
       "render " + model + " --field T --size 48x40 --interpolation element -o " + dir + "/cpu.png";
   const std::string cpu = dir + "/hex_cpu.npy", reference = dir + "/hex_cpu_reference.npy",
                     split = dir + "/hex_cpu_split.npy";
-  const auto a = runVolpost(common + " --renderer cpu --termination 0 --float " + cpu);
+  const auto a = runVolpost(common + " --renderer cpu --termination 0 --element-tolerance 0 --float " + cpu);
   ASSERT_EQ(a.exitCode, 0) << a.output;
   ASSERT_EQ(runVolpost(common + " --renderer reference --float " + reference).exitCode, 0);
   ASSERT_EQ(runVolpost(common + " --renderer cpu --termination 0 --interpolation tetrahedra --float " + split).exitCode,
@@ -159,7 +159,7 @@ TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
   EXPECT_GT(compareFloatPictures(split, reference, 48u * 40u * 4u).worst, 2e-3f);
   // A clip box: the CPU renderer holds only the tetrahedra it can show, each still named by its cell.
   const std::string boxed = " --clip-box 0.1,0.8,0.05,0.9,0.2,1 --float ";
-  ASSERT_EQ(runVolpost(common + " --renderer cpu --termination 0" + boxed + cpu).exitCode, 0);
+  ASSERT_EQ(runVolpost(common + " --renderer cpu --termination 0 --element-tolerance 0" + boxed + cpu).exitCode, 0);
   ASSERT_EQ(runVolpost(common + " --renderer reference" + boxed + reference).exitCode, 0);
   const FloatPicturesApart clipped = compareFloatPictures(cpu, reference, 48u * 40u * 4u);
   EXPECT_GT(clipped.alpha, 0.05f);
@@ -171,4 +171,44 @@ TEST(ElementInterpolationCommand, TheCpuRayCasterDrawsItAsTheReferenceDoes) {
                             dir + "/cpu_folded.png");
   ASSERT_EQ(f.exitCode, 0) << f.output;
   EXPECT_NE(f.output.find("note: 1 cell folded, inverted or collapsed"), std::string::npos) << f.output;
+}
+
+// The CPU ray caster within --element-tolerance of the reference's exact picture (early
+// termination off: its own bound would add to it); the tolerance kept in the state file;
+// values it cannot honour, renderers that draw exactly and a split field refuse it.
+TEST(ElementInterpolationCommand, TheCpuRayCasterKeepsItsToleranceAndTheStateKeepsIt) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model =
+      writeHexBlock(dir + "/hex_tolerance.vtk", 2, [](double x, double y, double z) { return x * y * z; });
+  const std::string png = dir + "/tolerance.png";
+  const std::string common = "render " + model +
+                             " --field T --size 40x32 --eye 2.2,-1.4,1.9 --target 0.5,0.5,0.5 --up 0,0,1 "
+                             "--interpolation element -o " +
+                             png;
+  const std::string exact = dir + "/tolerance_exact.npy", cpu = dir + "/tolerance_cpu.npy";
+  ASSERT_EQ(runVolpost(common + " --renderer reference --float " + exact).exitCode, 0);
+  const std::string state = dir + "/tolerance.json";
+  const auto r = runVolpost(common + " --renderer cpu --termination 0 --element-tolerance 0.002 --float " + cpu +
+                            " --save-state " + state);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const FloatPicturesApart apart = compareFloatPictures(exact, cpu, 40u * 32u * 4u);
+  EXPECT_GT(apart.alpha, 0.05f) << "the volume shows";
+  EXPECT_LE(apart.worst, 0.002f + 2e-4f) << "the tolerance and the float walk's own error";
+  EXPECT_NE(readText(state).find("\"elementTolerance\": 0.002"), std::string::npos) << readText(state);
+
+  const auto big = runVolpost(common + " --renderer cpu --element-tolerance 0.5");
+  EXPECT_EQ(big.exitCode, 2);
+  EXPECT_NE(big.output.find("must be 0 (exact) or lie in [1e-05, 0.1]; not 0.5"), std::string::npos) << big.output;
+  const auto word = runVolpost(common + " --renderer cpu --element-tolerance fine");
+  EXPECT_EQ(word.exitCode, 2);
+  EXPECT_NE(word.output.find("--element-tolerance fine is not a number"), std::string::npos) << word.output;
+  const auto reference = runVolpost(common + " --renderer reference --element-tolerance 0.01");
+  EXPECT_EQ(reference.exitCode, 2);
+  EXPECT_NE(reference.output.find("--element-tolerance is not used by reference"), std::string::npos)
+      << reference.output;
+  const auto split = runVolpost("render " + model + " --field T --renderer cpu --element-tolerance 0.01 -o " + png);
+  EXPECT_EQ(split.exitCode, 2);
+  EXPECT_NE(split.output.find("add --interpolation element"), std::string::npos) << split.output;
+  const auto surface = runVolpost("render " + model + " --field T --element-tolerance 0.01 -o " + png);
+  EXPECT_EQ(surface.exitCode, 2) << surface.output;
 }

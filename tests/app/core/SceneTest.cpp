@@ -181,6 +181,7 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   s.volume.samplingStep = 0.01;
   s.volume.termination = 0.0;
   s.volume.interpolation = FieldInterpolation::Element;
+  s.volume.elementTolerance = 2.5e-4;
   const SceneState back = SceneState::fromJson(s.toJson(), "/data/view.json");
   EXPECT_EQ(back.modelPath, s.modelPath);
   EXPECT_EQ(back.quantity, s.quantity);
@@ -198,6 +199,7 @@ TEST(SceneState, RoundTripsThroughItsFile) {
   EXPECT_EQ(back.volume.samplingStep, s.volume.samplingStep);
   EXPECT_EQ(back.volume.termination, s.volume.termination);
   EXPECT_EQ(back.volume.interpolation, FieldInterpolation::Element);
+  EXPECT_EQ(back.volume.elementTolerance, 2.5e-4);
   // A model next to the state file is written relative to it, and found again.
   const SceneState moved = SceneState::fromJson(s.toJson("/data"), "/elsewhere/view.json");
   EXPECT_EQ(moved.modelPath, "/elsewhere/model.vtu");
@@ -273,6 +275,11 @@ TEST(SceneState, RefusalsNameTheFileAndTheKey) {
   EXPECT_NE(message(head + R"("volume": {"clipPlanes": [{"point":[0,0,0],"normal":[0,0,0]}]}})").find("normal"), std::string::npos);
   EXPECT_NE(message(head + R"("volume": {"interpolation": "quadratic"}})")
                 .find("\"volume.interpolation\" must be one of: element, tetrahedra"),
+            std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"elementTolerance": 0.5}})")
+                .find("\"volume.elementTolerance\" must be 0 (exact) or lie in [1e-05, 0.1]"),
+            std::string::npos);
+  EXPECT_NE(message(head + R"("volume": {"elementTolerance": -1e-3}})").find("\"volume.elementTolerance\""),
             std::string::npos);
 }
 

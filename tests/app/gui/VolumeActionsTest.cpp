@@ -156,6 +156,25 @@ class VolumeActionsTest : public QObject {
     std::filesystem::remove(folded);
   }
 
+  void theToleranceEntryShowsTheSceneAndRefusesWhatItCannotHonour() {
+    QAction* entry = window_->findChild<QAction*>("elementToleranceAction");
+    QVERIFY(entry);
+    QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.01..."));
+    QVERIFY(actions_->setElementTolerance(1e-3));
+    QCOMPARE(scene_->volume().elementTolerance, 1e-3);
+    QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.001..."));
+    QVERIFY2(status().contains("within 0.001 of its exact picture"), qPrintable(status()));
+    QVERIFY(!actions_->setElementTolerance(1e-7));  // below what the fast path can keep
+    QCOMPARE(scene_->volume().elementTolerance, 1e-3);
+    QVERIFY2(status().contains("must be 0 (exact) or lie in [1e-05, 0.1]"), qPrintable(status()));
+    QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.001..."));
+    QVERIFY(actions_->setElementTolerance(0.0));
+    QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: exact..."));
+    scene_->setElementTolerance(0.05);  // as a state file would
+    actions_->syncToScene();
+    QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.05..."));
+  }
+
   void withoutRenderersTheEntrySaysWhy() {
     QMainWindow bare;
     QMenu* view = bare.menuBar()->addMenu("View");
