@@ -5,6 +5,7 @@
 // planes for a tet), no volpost geometry or shape function involved. The same rays drawn
 // with the field linear on the split differ visibly: these tests cannot pass on the split.
 #include "host/optics/ReferenceRenderer.hpp"
+#include "support/ReferenceCells.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>
 
@@ -330,4 +331,43 @@ TEST(ElementReference, ATaperedHex8WhoseFieldIsNoPolynomialAlongTheRayIsFittedTo
   EXPECT_LT(worst, 1e-7);
   EXPECT_GT(splitWorst, 1e-3);
   EXPECT_EQ(both.field().fallbacks(), 0u);
+}
+
+// The bound that lets empty-space skipping leave a cell out: every value of the cell's own
+// field, sampled densely through its reference cell, lies inside it, for node values drawn
+// at random (quadratic cells rise and fall beyond their node values); and it is not loose by
+// more than the field's own swing.
+TEST(ElementReference, EveryCellsFieldStaysInsideItsBound) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  for (const CellType type : kAllCellTypes) {
+    const Mesh mesh = volpost::test::referenceCell(type).first;
+    const TetMesh split = tetrahedralize(mesh);
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<double> values(mesh.nodes.size());
+      for (double& v : values) v = value(rng);
+      const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+      if (field.linearIn(0)) continue;  // tet4: its own split
+      const auto bound = field.valueBound(0);
+      ASSERT_TRUE(bound) << cellTypeName(type);
+      double lo = INFINITY, hi = -INFINITY;
+      constexpr int n = 16;
+      for (int i = 0; i <= n; ++i)
+        for (int j = 0; j <= n; ++j)
+          for (int k = 0; k <= n; ++k) {
+            const glm::dvec3 u(double(i) / n, double(j) / n, double(k) / n);  // the unit cube, mapped below
+            glm::dvec3 xi = u;
+            if (type == CellType::Hex8 || type == CellType::Hex20) xi = 2.0 * u - 1.0;
+            if (type == CellType::Wedge6 || type == CellType::Wedge15) xi = {u.x * (1.0 - u.y), u.y, 2.0 * u.z - 1.0};
+            if (type == CellType::Tet10) xi = {u.x * (1.0 - u.y) * (1.0 - u.z), u.y * (1.0 - u.z), u.z};
+            if (type == CellType::Pyramid5) xi = {u.x, u.y, u.z * 0.999};
+            if (outsideReference(type, xi) > 0.0) continue;
+            const double v = field.valueAt(0, xi);
+            lo = std::min(lo, v), hi = std::max(hi, v);
+          }
+      EXPECT_LE(bound->first, lo + 1e-12) << cellTypeName(type) << " trial " << trial;
+      EXPECT_GE(bound->second, hi - 1e-12) << cellTypeName(type) << " trial " << trial;
+      EXPECT_LE(bound->second - bound->first, 4.0 * (hi - lo)) << cellTypeName(type) << " trial " << trial;
+    }
+  }
 }

@@ -169,20 +169,59 @@ glm::dvec3 ElementField::gradient(std::uint32_t cell, const glm::dvec3& xi) cons
                        std::span<const double>(values, std::size_t(count)), xi);
 }
 
+namespace {
+
+// A quadratic's Bernstein coefficients from its values at the ends and the middle: the
+// quadratic lies between the least and the largest of them.
+void quadraticBernstein(double& first, double& middle, double& last) { middle = 2.0 * middle - 0.5 * (first + last); }
+
+}  // namespace
+
 std::optional<std::pair<double, double>> ElementField::valueBound(std::uint32_t cell) const {
   const CellType type = mesh_.cellType(cell);
-  if (type == CellType::Hex20 || type == CellType::Wedge15) return std::nullopt;
   const auto ids = mesh_.cellNodes(cell);
-  const int corners = topology(type).cornerCount;
   double lo = INFINITY, hi = -INFINITY;
-  for (int i = 0; i < corners; ++i)
-    lo = std::min(lo, values_[ids[std::size_t(i)]]), hi = std::max(hi, values_[ids[std::size_t(i)]]);
-  if (type == CellType::Tet10)  // edge Bernstein coefficient: 2 v_mid - (v_a + v_b) / 2
-    for (const CellEdge& e : topology(type).edges) {
-      const double b = 2.0 * values_[ids[std::size_t(e.mid)]] -
-                       0.5 * (values_[ids[std::size_t(e.a)]] + values_[ids[std::size_t(e.b)]]);
-      lo = std::min(lo, b), hi = std::max(hi, b);
+  const auto take = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
+  if (type == CellType::Hex20) {
+    // The serendipity field is triquadratic: its 27 tensor Bernstein coefficients, from its
+    // values on the 3 x 3 x 3 grid of the reference cube, bound it.
+    double f[3][3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k) f[i][j][k] = valueAt(cell, glm::dvec3(i - 1, j - 1, k - 1));
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        quadraticBernstein(f[0][a][b], f[1][a][b], f[2][a][b]);
+        quadraticBernstein(f[a][0][b], f[a][1][b], f[a][2][b]);
+        quadraticBernstein(f[a][b][0], f[a][b][1], f[a][b][2]);
+      }
+    for (auto& plane : f)
+      for (auto& row : plane)
+        for (double v : row) take(v);
+    return std::pair{lo, hi};
+  }
+  if (type == CellType::Wedge15) {
+    // Quadratic on the triangle times quadratic along the axis: Bernstein coefficients from
+    // the values at the triangle's corners and edge midpoints on three levels.
+    const glm::dvec2 at[6] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
+    const int edges[3][3] = {{0, 1, 3}, {1, 2, 4}, {2, 0, 5}};  // corner, corner, midpoint
+    double f[6][3];
+    for (int p = 0; p < 6; ++p) {
+      for (int z = 0; z < 3; ++z) f[p][z] = valueAt(cell, glm::dvec3(at[p], z - 1));
+      quadraticBernstein(f[p][0], f[p][1], f[p][2]);
     }
+    for (int z = 0; z < 3; ++z)
+      for (const auto& e : edges) f[e[2]][z] = 2.0 * f[e[2]][z] - 0.5 * (f[e[0]][z] + f[e[1]][z]);
+    for (auto& point : f)
+      for (double v : point) take(v);
+    return std::pair{lo, hi};
+  }
+  const int corners = topology(type).cornerCount;
+  for (int i = 0; i < corners; ++i) take(values_[ids[std::size_t(i)]]);
+  if (type == CellType::Tet10)  // edge Bernstein coefficient: 2 v_mid - (v_a + v_b) / 2
+    for (const CellEdge& e : topology(type).edges)
+      take(2.0 * values_[ids[std::size_t(e.mid)]] -
+           0.5 * (values_[ids[std::size_t(e.a)]] + values_[ids[std::size_t(e.b)]]));
   return std::pair{lo, hi};
 }
 

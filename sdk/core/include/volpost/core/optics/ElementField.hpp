@@ -41,10 +41,11 @@ class ElementField {
   double diagonal() const { return diagonal_; }
   /// Where points given to the methods are measured from.
   const glm::dvec3& origin() const { return origin_; }
-  /// Bounds of the field anywhere in `cell` (lo, hi), where they follow from its node
-  /// values: a hex8, wedge6 or pyramid5 (shape functions >= 0: the node values' range) and
-  /// a tet10 (the range of its Bernstein coefficients). nullopt for a hex20 or a wedge15,
-  /// whose serendipity field can leave that range by an amount the nodes do not bound simply.
+  /// Bounds of the field anywhere in `cell` (lo, hi): for a hex8, wedge6 or pyramid5 the
+  /// node values' range (shape functions >= 0); for a tet10 the range of its Bernstein
+  /// coefficients; for a hex20 (triquadratic) and a wedge15 (quadratic on the triangle times
+  /// quadratic along the axis) the range of the tensor Bernstein coefficients of the space
+  /// its serendipity field lies in. The field is a convex combination of them.
   std::optional<std::pair<double, double>> valueBound(std::uint32_t cell) const;
 
   /// The value at `p` in `cell`; `xi` is where the inverse map starts and gets the natural
