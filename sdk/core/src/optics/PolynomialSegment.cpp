@@ -3,9 +3,9 @@
 
 #include <volpost/core/optics/Headlight.hpp>
 #include <volpost/core/optics/QuickSegment.hpp>
+#include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <glm/common.hpp>
-#include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
 #include <array>
@@ -70,8 +70,6 @@ double solveMonotone(const ScalarPolynomial& p, const ScalarPolynomial& dp, doub
   return x;
 }
 
-// A stretch where the scalar goes monotonically from s0 to s1 and no control point lies
-// strictly between them: extinction and color are linear in the scalar.
 // The largest |p| on [ua, ub] (exact for degree <= 1, else bounded by its coefficients).
 double largestOn(const ScalarPolynomial& p, double ua, double ub) {
   if (p.degree <= 1) return std::max(std::abs(p.at(ua)), std::abs(p.at(ub)));
@@ -106,6 +104,9 @@ SegmentLight chordPieces(const ScalarPolynomial& s, const ScalarPolynomial& curv
   return light;
 }
 
+// A stretch where the scalar goes monotonically from s0 to s1 and no control point lies
+// strictly between them: extinction and color are linear in the scalar. To rounding, or in
+// chords within the accuracy's tolerance.
 SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s, const ScalarPolynomial& integral,
                            const ScalarPolynomial& curvature, double ua, double ub, double s0, double s1,
                            double halfLength, const EmissionAccuracy& accuracy) {
