@@ -371,3 +371,29 @@ TEST(ElementReference, EveryCellsFieldStaysInsideItsBound) {
     }
   }
 }
+
+// An affine cell's field along a straight line is the polynomial polynomialAlong gives
+// (a hex8's cubic multiplied out, the others interpolated): the same values as the shape
+// functions at any point of the line, for random node values and lines.
+TEST(ElementReference, AnAffineCellsFieldAlongALineIsItsPolynomial) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> value(-1.0, 1.0), unit(0.0, 1.0);
+  for (const CellType type : {CellType::Hex8, CellType::Hex20, CellType::Tet10, CellType::Wedge6, CellType::Wedge15}) {
+    const Mesh mesh = volpost::test::referenceCell(type).first;
+    const TetMesh split = tetrahedralize(mesh);
+    std::vector<double> values(mesh.nodes.size());
+    for (double& v : values) v = value(rng);
+    const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+    ASSERT_TRUE(field.affine(0)) << cellTypeName(type);
+    for (int line = 0; line < 10; ++line) {
+      const glm::dvec3 front = clampToReference(type, {unit(rng), unit(rng), 2.0 * unit(rng) - 1.0});
+      const glm::dvec3 back = clampToReference(type, {unit(rng), unit(rng), 2.0 * unit(rng) - 1.0});
+      const auto p = field.polynomialAlong(0, front, back);
+      ASSERT_TRUE(p) << cellTypeName(type);
+      EXPECT_LE(p->degree, field.degreeAlongLine(0));
+      for (double u = -1.0; u <= 1.0; u += 0.2)
+        EXPECT_NEAR(p->at(u), field.valueAt(0, front + 0.5 * (u + 1.0) * (back - front)), 1e-12)
+            << cellTypeName(type) << " u " << u;
+    }
+  }
+}

@@ -153,6 +153,51 @@ int ElementField::degreeAlongLine(std::uint32_t cell) const {
   }
 }
 
+std::optional<ScalarPolynomial> ElementField::polynomialAlong(std::uint32_t cell, const glm::dvec3& front,
+                                                              const glm::dvec3& back) const {
+  const int degree = degreeAlongLine(cell);
+  if (degree < 0) return std::nullopt;
+  const CellType type = mesh_.cellType(cell);
+  const auto ids = mesh_.cellNodes(cell);
+  const std::size_t count = std::min(ids.size(), std::size_t(kMaxCellNodes));
+  double nodeValues[kMaxCellNodes];
+  for (std::size_t i = 0; i < count; ++i) nodeValues[i] = values_[ids[i]];
+  const glm::dvec3 middle = 0.5 * (front + back), half = 0.5 * (back - front);
+  ScalarPolynomial p;
+  if (type == CellType::Hex8) {
+    // N_i = (1 + x_i xi)(1 + y_i eta)(1 + z_i zeta) / 8, each factor linear in u: a + b u.
+    std::array<double, 4> c{};
+    for (std::size_t i = 0; i < count; ++i) {
+      const glm::dvec3 corner = naturalCoordinatesOfNode(type, int(i));
+      const glm::dvec3 a = 1.0 + corner * middle, b = corner * half;
+      const double w = 0.125 * nodeValues[i];
+      c[0] += w * a.x * a.y * a.z;
+      c[1] += w * (b.x * a.y * a.z + a.x * b.y * a.z + a.x * a.y * b.z);
+      c[2] += w * (b.x * b.y * a.z + b.x * a.y * b.z + a.x * b.y * b.z);
+      c[3] += w * b.x * b.y * b.z;
+    }
+    // Coefficients at rounding level dropped, as the interpolation does: a ray along an axis
+    // sees a linear field, whose zeros are cheap.
+    const double size = std::abs(c[0]) + std::abs(c[1]) + std::abs(c[2]) + std::abs(c[3]);
+    p.degree = 3;
+    while (p.degree > 0 && std::abs(c[std::size_t(p.degree)]) <= 1e-14 * size) --p.degree;
+    for (int k = 0; k <= p.degree; ++k) p.c[std::size_t(k)] = c[std::size_t(k)];
+  } else {
+    const std::span<const double> points = chebyshevPoints(degree + 1);
+    double values[ScalarPolynomial::kMaxDegree + 1];
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const ShapeValues n = shapeFunctions(type, middle + points[k] * half);
+      double v = 0.0;
+      for (std::size_t i = 0; i < count; ++i) v += n[i] * nodeValues[i];
+      values[k] = v;
+    }
+    p = interpolateChebyshev(std::span<const double>(values, points.size()));
+  }
+  for (int k = 0; k <= p.degree; ++k)
+    if (!std::isfinite(p.c[std::size_t(k)])) return std::nullopt;
+  return p;
+}
+
 double ElementField::valueAt(std::uint32_t cell, const glm::dvec3& xi) const {
   const ShapeValues n = shapeFunctions(mesh_.cellType(cell), xi);
   const auto ids = mesh_.cellNodes(cell);

@@ -55,12 +55,15 @@ std::optional<SegmentLight> fittedStretch(const ElementField& field, std::uint32
     glm::dvec3 natural[2];
     if (!field.affineCoordinates(cell, ends, natural, 2)) return std::nullopt;
     const glm::dvec3 front = natural[0], back = natural[1];
-    const int degree = field.degreeAlongLine(cell);
-    p = fitChebyshev(
-        [&](double u) -> std::optional<double> {
-          return field.valueAt(cell, front + (0.5 * (u + 1.0)) * (back - front));
-        },
-        error, degree >= 0 ? degree : ScalarPolynomial::kMaxDegree);
+    if (field.degreeAlongLine(cell) >= 0) {
+      p = field.polynomialAlong(cell, front, back);
+    } else {
+      p = fitChebyshev(
+          [&](double u) -> std::optional<double> {
+            return field.valueAt(cell, front + (0.5 * (u + 1.0)) * (back - front));
+          },
+          error);
+    }
     xi = back;
   } else {
     p = fitChebyshev([&](double u) { return field.value(cell, origin + (mid + half * u) * direction, xi); }, error);

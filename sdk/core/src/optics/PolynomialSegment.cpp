@@ -281,16 +281,14 @@ const ChebyshevTables& chebyshevTables(int n) {
 
 }  // namespace
 
-std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error,
-                                             int degree) {
-  const int n = std::clamp(degree, 0, ScalarPolynomial::kMaxDegree) + 1;
+std::span<const double> chebyshevPoints(int n) {
+  n = std::clamp(n, 1, kMostPoints);
+  return std::span<const double>(chebyshevTables(n).points.data(), std::size_t(n));
+}
+
+ScalarPolynomial interpolateChebyshev(std::span<const double> values) {
+  const int n = std::clamp(int(values.size()), 1, kMostPoints);
   const ChebyshevTables& cosines = chebyshevTables(n);
-  std::array<double, kMostPoints> values{};
-  for (int i = 0; i < n; ++i) {
-    const auto v = f(cosines.points[std::size_t(i)]);
-    if (!v || !std::isfinite(*v)) return std::nullopt;
-    values[std::size_t(i)] = *v;
-  }
   // Coefficients of T_k by the discrete cosine transform; the sign (-1)^k because the
   // points run from u = -1 up while the cosines run down.
   std::array<double, kMostPoints> coefficients{};
@@ -311,6 +309,20 @@ std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<d
   for (int k = 0; k <= needed; ++k)
     for (int j = 0; j <= k; ++j)
       p.c[std::size_t(j)] += coefficients[std::size_t(k)] * chebyshev[std::size_t(k)][std::size_t(j)];
+  return p;
+}
+
+std::optional<ScalarPolynomial> fitChebyshev(const std::function<std::optional<double>(double u)>& f, double& error,
+                                             int degree) {
+  const int n = std::clamp(degree, 0, ScalarPolynomial::kMaxDegree) + 1;
+  const ChebyshevTables& cosines = chebyshevTables(n);
+  std::array<double, kMostPoints> values{};
+  for (int i = 0; i < n; ++i) {
+    const auto v = f(cosines.points[std::size_t(i)]);
+    if (!v || !std::isfinite(*v)) return std::nullopt;
+    values[std::size_t(i)] = *v;
+  }
+  const ScalarPolynomial p = interpolateChebyshev(std::span<const double>(values.data(), std::size_t(n)));
   error = 0.0;
   if (degree < ScalarPolynomial::kMaxDegree) return p;  // f is a polynomial of that degree: exact
   for (int i = 0; i + 1 < n; ++i) {
@@ -346,7 +358,12 @@ SegmentLight integratePolynomialSegment(const TransferFunction& tf, const std::v
   for (std::size_t i = 0; i + 1 < turns.size(); ++i) {
     const double ua = turns[i], ub = turns[i + 1], sa = s.at(ua), sb = s.at(ub);
     stretch.clear();
-    for (double v : tf.crossings(sa, sb)) stretch.push_back({solveMonotone(s, ds, v, ua, ub), v, nullptr});
+    // The control-point values strictly between sa and sb (as TransferFunction::crossings,
+    // without a list per stretch; sorted with the iso-values below).
+    const double low = std::min(sa, sb), high = std::max(sa, sb);
+    for (const ControlPoint& point : tf.points())
+      if (point.value > low && point.value < high && (stretch.empty() || stretch.back().s != point.value))
+        stretch.push_back({solveMonotone(s, ds, point.value, ua, ub), point.value, nullptr});
     for (const IsoSurface& iso : isoSurfaces) {
       const bool crossed = sb > sa ? (iso.value > sa && iso.value <= sb) : (iso.value < sa && iso.value >= sb);
       if (!crossed) continue;

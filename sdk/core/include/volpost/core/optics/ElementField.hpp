@@ -10,6 +10,7 @@
 
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/optics/PolynomialSegment.hpp>
 
 #include <glm/vec3.hpp>
 
@@ -62,6 +63,12 @@ class ElementField {
   /// (the coordinates move linearly: 2 for a tet10 or wedge6, 3 for a hex8 or wedge15, 4
   /// for a hex20); -1 where it is not a polynomial of known degree.
   int degreeAlongLine(std::uint32_t cell) const;
+  /// For an affine cell (degreeAlongLine >= 0): its field along the natural coordinates
+  /// front + (u + 1) / 2 (back - front), u in [-1, 1], as the polynomial it is (a hex8's
+  /// cubic multiplied out, the others interpolated at degree + 1 points). nullopt where the
+  /// degree is unknown or a value is not finite.
+  std::optional<ScalarPolynomial> polynomialAlong(std::uint32_t cell, const glm::dvec3& front,
+                                                  const glm::dvec3& back) const;
   /// The value at natural coordinates `xi` of `cell`.
   double valueAt(std::uint32_t cell, const glm::dvec3& xi) const;
   /// The gradient per length unit at natural coordinates `xi` of `cell`.

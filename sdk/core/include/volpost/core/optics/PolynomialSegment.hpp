@@ -23,6 +23,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace volpost::optics {
@@ -65,6 +66,12 @@ struct EmissionAccuracy {
   double rayLength = 1.0;  ///< the longest ray through the mesh
   double brightest = 1.0;  ///< the largest color component in front of or behind the piece
 };
+
+/// The n Chebyshev points of [-1, 1] (1 <= n <= kMaxDegree + 1), ascending.
+std::span<const double> chebyshevPoints(int n);
+/// The polynomial of degree < n through `values` at chebyshevPoints(n), n = values.size(),
+/// trailing coefficients below rounding dropped.
+ScalarPolynomial interpolateChebyshev(std::span<const double> values);
 
 /// What the ray needs to shade an iso-surface met at u: the field's gradient there.
 using GradientAlong = std::function<glm::dvec3(double u)>;
