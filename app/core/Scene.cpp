@@ -33,10 +33,6 @@ std::string elementInterpolationRefusal(const VolumeRendererFactory& factory, co
          " (or draw the tetrahedra's field)";
 }
 
-}  // namespace
-
-namespace {
-
 QString stepAndLocation(const ScalarView& view) {
   return QString("%1%2").arg(QString::fromStdString(view.stepLabel),
                              view.location == FieldLocation::Node ? "  per node" : "  per cell");

@@ -3,9 +3,6 @@
 
 #include <volpost/core/optics/PolynomialSegment.hpp>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -30,12 +27,7 @@ double steepest(const TransferFunction& tf, double brightestColor) {
     if (a.color == b.color && a.extinction == b.extinction) continue;
     const double width = b.value - a.value;
     if (!(width > 0.0)) return std::numeric_limits<double>::infinity();
-    const glm::dvec3 dColor = (b.color - a.color) / width;
-    const double dTau = (b.extinction - a.extinction) / width;
-    for (const ControlPoint* end : {&a, &b}) {
-      const glm::dvec3 w = glm::abs(dTau * end->color + end->extinction * dColor);
-      most = std::max(most, std::max({w.x, w.y, w.z}) + brightestColor * std::abs(dTau));
-    }
+    most = std::max(most, pixelSensitivity({a.color, a.extinction}, {b.color, b.extinction}, width, brightestColor));
   }
   return most;
 }

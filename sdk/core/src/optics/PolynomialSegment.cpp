@@ -129,13 +129,7 @@ SegmentLight monotonePiece(const TransferFunction& tf, const ScalarPolynomial& s
     return light;
   }
   if (accuracy.tolerance > 0.0) {
-    // How far a pixel moves per unit length and unit change of the scalar on this piece:
-    // tau C and tau are linear in s here, d(tau C)/ds is linear too, largest at an end.
-    const glm::dvec3 dColor = (b.color - a.color) / (s1 - s0);
-    const double dTau = (b.extinction - a.extinction) / (s1 - s0);
-    const glm::dvec3 atA = glm::abs(dTau * a.color + a.extinction * dColor);
-    const glm::dvec3 atB = glm::abs(dTau * b.color + b.extinction * dColor);
-    const double weight = std::max({atA.x, atA.y, atA.z, atB.x, atB.y, atB.z}) + accuracy.brightest * std::abs(dTau);
+    const double weight = pixelSensitivity(a, b, s1 - s0, accuracy.brightest);
     if (weight > 0.0) {
       const double share = 1.0 - light.transmittance + length / accuracy.rayLength;
       const double delta = 0.5 * accuracy.tolerance * share / (length * weight);
@@ -181,6 +175,14 @@ struct Cut {
 };
 
 }  // namespace
+
+double pixelSensitivity(const TransferSample& a, const TransferSample& b, double valueSpan, double brightest) {
+  const glm::dvec3 dColor = (b.color - a.color) / valueSpan;
+  const double dTau = (b.extinction - a.extinction) / valueSpan;
+  const glm::dvec3 atA = glm::abs(dTau * a.color + a.extinction * dColor);
+  const glm::dvec3 atB = glm::abs(dTau * b.color + b.extinction * dColor);
+  return std::max({atA.x, atA.y, atA.z, atB.x, atB.y, atB.z}) + brightest * std::abs(dTau);
+}
 
 double ScalarPolynomial::at(double u) const {
   double v = c[std::size_t(degree)];

@@ -73,6 +73,12 @@ std::span<const double> chebyshevPoints(int n);
 /// trailing coefficients below rounding dropped.
 ScalarPolynomial interpolateChebyshev(std::span<const double> values);
 
+/// How far a pixel (color or opacity) can move per unit length and per unit change of the
+/// scalar where the transfer function goes linearly from `a` to `b` over `valueSpan`
+/// (non-zero): max |d(tau C)/ds| + brightest |d tau/ds|, both linear in s there, largest at
+/// an end. `brightest` bounds the color in front of or behind (the background's is 1).
+double pixelSensitivity(const TransferSample& a, const TransferSample& b, double valueSpan, double brightest);
+
 /// What the ray needs to shade an iso-surface met at u: the field's gradient there.
 using GradientAlong = std::function<glm::dvec3(double u)>;
 
