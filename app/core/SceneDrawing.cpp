@@ -246,25 +246,30 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
     const std::vector<double> tetValues = session.tetValues(view);
     volume_->setValues(culled_ ? culled_->values(view.location, tetValues) : tetValues);  // only the values travel
   }
-  if (geometry || values || drawn_.mode != now.mode) applyElementField(scene);  // setVolume and setValues drop it
+  if (geometry || values || drawn_.mode != now.mode) applyElementField(scene, geometry || values);
   applyVolumeSettings(scene);
 }
 
-void SceneDrawing::applyElementField(const Scene& scene) {
+void SceneDrawing::applyElementField(const Scene& scene, bool volumeSent) {
+  if (!volumeTraits_.elementInterpolation) return;
   const ModelSession& session = *scene.session();
   const ScalarView& view = *scene.view();
-  elementField_.reset();
-  // Values per cell are constant in it: both interpolations are the same field.
-  if (!volumeTraits_.elementInterpolation) return;
+  // Values per cell are constant in a cell: both interpolations are the same field. A mesh
+  // of tet4 cells is its own split: nothing to send.
   const Mesh& cells = session.model().mesh();
-  bool tetrahedraOnly = true;  // then the cells are their own split: nothing to send
-  for (std::size_t c = 0; c < cells.cellCount() && tetrahedraOnly; ++c)
-    tetrahedraOnly = cells.cellType(c) == CellType::Tet4;
-  if (scene.shown().volume.interpolation != FieldInterpolation::Element || view.location != FieldLocation::Node ||
-      tetrahedraOnly) {
-    volume_->setElementField(nullptr, {});
+  bool wanted =
+      scene.shown().volume.interpolation == FieldInterpolation::Element && view.location == FieldLocation::Node;
+  if (wanted) {
+    wanted = false;
+    for (std::size_t c = 0; c < cells.cellCount() && !wanted; ++c) wanted = cells.cellType(c) != CellType::Tet4;
+  }
+  if (!wanted) {
+    if (elementField_ && !volumeSent) volume_->setElementField(nullptr, {});  // setVolume and setValues drop it
+    elementField_.reset();
     return;
   }
+  // Another setting of the mode (the tolerance, early termination): the renderer keeps the field.
+  if (elementField_ && !volumeSent) return;
   const TetMesh& split = session.tetrahedra();
   std::vector<double> converted;
   auto field = std::make_shared<const optics::ElementField>(session.model().mesh(), view.values.doubles(converted),

@@ -69,8 +69,9 @@ class SceneDrawing {
   void applyToVolume(const Scene& scene);
   void applyToGridVolume(const Scene& scene, GridVolumeRenderer& renderer);
   void applyVolumeSettings(const Scene& scene);
-  /// The cells' own field to a renderer that draws it (or none, for the tetrahedra's field).
-  void applyElementField(const Scene& scene);
+  /// The cells' own field to a renderer that draws it (or none, for the tetrahedra's field),
+  /// built again only where `volumeSent` (setVolume or setValues dropped it) or it was off.
+  void applyElementField(const Scene& scene, bool volumeSent);
   void renderSurface(const Scene& scene, const RenderContext& ctx);
   void renderVolume(const Scene& scene, const RenderContext& ctx);
   void drawUndeformedOutline(const Scene& scene, const RenderContext& ctx);

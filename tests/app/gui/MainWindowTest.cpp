@@ -542,6 +542,11 @@ class MainWindowTest : public QObject {
     QCOMPARE(headless.size(), shown.size());
     const int different = pixelsApart(shown, headless).first;
     QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ").arg(different)));
+    // Turned off again, the renderer drops the cells' own field: the split's picture.
+    own->setChecked(false);
+    view->update();
+    const QImage again = settled(view).convertToFormat(QImage::Format_RGB32);
+    QVERIFY2(pixelsApart(again, split).first == 0, "the split's picture again");
     QFile::remove(state);
     QFile::remove(png);
     QFile::remove(model);
