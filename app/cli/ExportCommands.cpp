@@ -24,13 +24,25 @@ int runConvert(const QStringList& args) {
   parser.addPositionalArgument("OUT.vtu", "file to write");
   const QCommandLineOption readerOption = readerOptionOption();
   const QCommandLineOption formula = formulaOption();
-  parser.addOptions({readerOption, formula});
+  const QCommandLineOption layout(
+      "layout",
+      "Where the arrays' bytes go: inline (default; base64 inside each array, read by every VTK and "
+      "ParaView) or appended (one raw block after the XML: a quarter smaller and quicker, but VTK 9.2 "
+      "and ParaView 5.11 cannot read it where the system's XML parser defers parsing, as Debian 12's does).",
+      "LAYOUT", "inline");
+  parser.addOptions({readerOption, formula, layout});
   if (const auto code = parseArguments(parser, "volpost convert", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2 || !files[1].endsWith(".vtu", Qt::CaseInsensitive)) {
     printError("convert needs MODEL and OUT.vtu (volpost convert MODEL OUT.vtu)");
     return 2;
   }
+  const QString layoutName = parser.value(layout);
+  if (layoutName != "inline" && layoutName != "appended") {
+    printError(QString("--layout %1: the layout is inline or appended").arg(layoutName));
+    return 2;
+  }
+  const VtuLayout vtuLayout = layoutName == "appended" ? VtuLayout::Appended : VtuLayout::Inline;
   auto plugins = loadPluginsForCli();
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
@@ -38,7 +50,7 @@ int runConvert(const QStringList& args) {
     const auto model =
         plugins->readers().load(pathBytes(files[0]), readerOptionsFrom(parser, readerOption), terminalProgress("reading"));
     appendFormulas(*model, formulas);
-    writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"));
+    writeVtu(*model, pathBytes(files[1]), terminalProgress("writing"), vtuLayout);
     std::printf("%s: %zu nodes, %zu cells, %zu fields\n", qPrintable(files[1]), model->nodeCount(),
                 model->cellCount(), model->fields.size());
     return 0;

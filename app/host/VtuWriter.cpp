@@ -71,8 +71,12 @@ class UniqueNames {
   std::set<std::string> used_;
 };
 
-class Appended {
+/// The data of every array: after the XML in one raw block (appended), or inside each
+/// DataArray element as base64 (inline).
+class ArrayData {
  public:
+  explicit ArrayData(VtuLayout layout) : layout_(layout) {}
+
   /// `extra`: more attributes, already escaped (" VolpostField=...").
   template <typename T>
   std::string add(const char* type, const std::string& name, int components, const std::vector<T>& values,
@@ -80,24 +84,48 @@ class Appended {
     std::ostringstream head;
     head << "<DataArray type=\"" << type << "\" Name=\"" << escape(name) << "\"";
     if (components > 1) head << " NumberOfComponents=\"" << components << "\"";
-    head << extra << " format=\"appended\" offset=\"" << offset_ << "\"/>";
     auto b = bytesOf(values);
+    if (layout_ == VtuLayout::Inline) {
+      // As VTK writes it: the byte count and the data as two base64 runs.
+      head << extra << " format=\"binary\">" << base64(b.data(), sizeof(std::uint64_t))
+           << base64(b.data() + sizeof(std::uint64_t), b.size() - sizeof(std::uint64_t)) << "</DataArray>";
+      return head.str();
+    }
+    head << extra << " format=\"appended\" offset=\"" << offset_ << "\"/>";
     offset_ += b.size();
     data_.insert(data_.end(), b.begin(), b.end());
     return head.str();
   }
-  const std::vector<char>& data() const { return data_; }
+  const std::vector<char>& appended() const { return data_; }
 
  private:
+  static std::string base64(const char* bytes, std::size_t count) {
+    static constexpr char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((count + 2) / 3 * 4);
+    for (std::size_t i = 0; i < count; i += 3) {
+      const auto byte = [&](std::size_t k) {
+        return k < count ? std::uint32_t(static_cast<unsigned char>(bytes[k])) : 0u;
+      };
+      const std::uint32_t group = byte(i) << 16 | byte(i + 1) << 8 | byte(i + 2);
+      out += digits[group >> 18 & 63];
+      out += digits[group >> 12 & 63];
+      out += i + 1 < count ? digits[group >> 6 & 63] : '=';
+      out += i + 2 < count ? digits[group & 63] : '=';
+    }
+    return out;
+  }
+
+  VtuLayout layout_;
   std::vector<char> data_;
   std::size_t offset_ = 0;
 };
 
 }  // namespace
 
-void writeVtu(const Model& model, const std::string& path, const Progress& progress) {
+void writeVtu(const Model& model, const std::string& path, const Progress& progress, VtuLayout layout) {
   const Mesh& mesh = model.mesh();
-  Appended appended;
+  ArrayData arrays(layout);
   std::ostringstream xml;
   // No file name in a comment: "--" in a name would end it early and break the XML.
   xml << "<?xml version=\"1.0\"?>\n<!-- written by volpost -->\n"
@@ -108,7 +136,7 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
   std::vector<double> points(mesh.nodeCount() * 3);
   for (std::size_t i = 0; i < mesh.nodeCount(); ++i)
     for (int k = 0; k < 3; ++k) points[i * 3 + std::size_t(k)] = mesh.nodes[i][k];
-  xml << "<Points>\n" << appended.add("Float64", "Points", 3, points) << "\n</Points>\n";
+  xml << "<Points>\n" << arrays.add("Float64", "Points", 3, points) << "\n</Points>\n";
   progress.report(0.2);
 
   std::vector<std::int64_t> connectivity(mesh.connectivity().begin(), mesh.connectivity().end());
@@ -120,8 +148,10 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
     offsets[c] = std::int64_t(end);
     types[c] = std::uint8_t(vtkCellType(mesh.cellType(c)));
   }
-  xml << "<Cells>\n" << appended.add("Int64", "connectivity", 1, connectivity) << "\n"
-      << appended.add("Int64", "offsets", 1, offsets) << "\n" << appended.add("UInt8", "types", 1, types) << "\n</Cells>\n";
+  xml << "<Cells>\n"
+      << arrays.add("Int64", "connectivity", 1, connectivity) << "\n"
+      << arrays.add("Int64", "offsets", 1, offsets) << "\n"
+      << arrays.add("UInt8", "types", 1, types) << "\n</Cells>\n";
   progress.report(0.4);
 
   // Steps: one array each ("T step 2"), with attributes (VolpostField, VolpostStep,
@@ -132,7 +162,7 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
     UniqueNames names;
     const auto& ids = location == FieldLocation::Node ? mesh.nodeIds : mesh.cellIds;
     const char* idName = location == FieldLocation::Node ? "node_id" : "element_id";
-    if (!ids.empty()) xml << appended.add("Int64", names.take(idName), 1, ids) << "\n";
+    if (!ids.empty()) xml << arrays.add("Int64", names.take(idName), 1, ids) << "\n";
     for (const auto& f : model.fields) {
       if (f->location() != location) continue;
       for (std::size_t s = 0; s < f->stepCount(); ++s) {
@@ -143,18 +173,24 @@ void writeVtu(const Model& model, const std::string& path, const Progress& progr
         extra << " VolpostField=\"" << escape(f->name()) << "\" VolpostStep=\"" << s + 1 << "\" VolpostTime=\""
               << step.time << "\"";
         if (!step.label.empty()) extra << " VolpostStepLabel=\"" << escape(step.label) << "\"";
-        xml << appended.add("Float64", name, f->components(), f->values(s), extra.str()) << "\n";
+        xml << arrays.add("Float64", name, f->components(), f->values(s), extra.str()) << "\n";
       }
     }
     xml << (location == FieldLocation::Node ? "</PointData>\n" : "</CellData>\n");
   }
   progress.report(0.8);
-  xml << "</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
+  xml << "</Piece>\n</UnstructuredGrid>\n";
 
   AtomicFile file(path);  // a failed write leaves the previous file as it was
-  file.write(xml.str());
-  file.write(std::string_view(appended.data().data(), appended.data().size()));
-  file.write("\n</AppendedData>\n</VTKFile>\n");
+  if (layout == VtuLayout::Inline) {
+    xml << "</VTKFile>\n";
+    file.write(xml.str());
+  } else {
+    xml << "<AppendedData encoding=\"raw\">\n_";
+    file.write(xml.str());
+    file.write(std::string_view(arrays.appended().data(), arrays.appended().size()));
+    file.write("\n</AppendedData>\n</VTKFile>\n");
+  }
   file.commit();
   progress.report(1.0);
 }

@@ -492,6 +492,13 @@ TEST(ConvertCommand, WritesAVtuThatReadsBackTheSame) {
   const auto bad = runVolpost("convert " + dataFile("bad/index_out_of_range.msh") + " " + out);
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("index_out_of_range.msh:"), std::string::npos) << bad.output;
+  // Both layouts read back; a layout that is neither is a usage error naming it.
+  const std::string appended = ::testing::TempDir() + "/converted_appended.vtu";
+  ASSERT_EQ(runVolpost("convert --layout appended " + dataFile("formats/golden.nf") + " " + appended).exitCode, 0);
+  EXPECT_NE(runVolpost("info " + appended).output.find("nodes:    30"), std::string::npos);
+  const auto wrong = runVolpost("convert --layout zipped " + dataFile("formats/golden.nf") + " " + out);
+  EXPECT_EQ(wrong.exitCode, 2);
+  EXPECT_NE(wrong.output.find("--layout zipped"), std::string::npos) << wrong.output;
 }
 
 TEST(SurfaceCommand, WritesBoundaryAndIsoSurfaces) {

@@ -349,10 +349,19 @@ TEST(NeutralFile, RejectsDamageWithTheLine) {
 #include "host/PointLocator.hpp"
 #include "host/VtuWriter.hpp"
 
-TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
+class VtuWriterLayout : public ::testing::TestWithParam<VtuLayout> {};
+
+TEST_P(VtuWriterLayout, RoundTripKeepsMeshIdsAndEveryStep) {
   const auto model = meshioReaders().load(dataFile("formats/golden.nf"));
   const std::string path = ::testing::TempDir() + "/roundtrip.vtu";
-  writeVtu(*model, path);
+  writeVtu(*model, path, {}, GetParam());
+  {
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const bool inline_ = GetParam() == VtuLayout::Inline;
+    EXPECT_EQ(text.find("<AppendedData") == std::string::npos, inline_);
+    EXPECT_EQ(text.find("format=\"binary\"") != std::string::npos, inline_);
+  }
   const auto back = meshioReaders().load(path);
   EXPECT_EQ(back->mesh().nodes, model->mesh().nodes);
   EXPECT_EQ(back->mesh().nodeIds, model->mesh().nodeIds);
@@ -375,8 +384,10 @@ TEST(VtuWriter, RoundTripKeepsMeshIdsAndEveryStep) {
       for (std::size_t i = 0; i < a.size(); ++i) EXPECT_TRUE(a[i] == b[i] || (std::isnan(a[i]) && std::isnan(b[i])));
     }
   }
-  EXPECT_THROW(writeVtu(*model, "/no/such/folder/x.vtu"), WriteError);
+  EXPECT_THROW(writeVtu(*model, "/no/such/folder/x.vtu", {}, GetParam()), WriteError);
 }
+
+INSTANTIATE_TEST_SUITE_P(BothLayouts, VtuWriterLayout, ::testing::Values(VtuLayout::Appended, VtuLayout::Inline));
 
 TEST(Probe, BarAxialStressIsForceOverAreaInEveryElementType) {
   // S11 = F/A = 100 away from the clamp (FE: 99.996..100.000 for 3 < x < 7).
