@@ -1,0 +1,180 @@
+# SPDX-License-Identifier: MIT
+"""Run by pvbatch: "volpost Volume" in ParaView draws what `volpost render --renderer cpu` draws
+of the same grid, camera, picture size and transfer function, within 1/255 per channel.
+
+The grid is a Kuhn grid of tetrahedra carrying a smooth wave, or a file given on the command
+line (tetrahedra: ParaView hands every volume mapper tetrahedra, splitting other cells its own
+way, so only tetrahedral meshes draw the same field as `volpost render`). Under MPI (mpirun
+-np N pvbatch --mpi) the picture would be the ranks' pieces composited by ParaView, allowed
+2/255; ParaView 5.11 on Debian 12 cannot yet move the pieces between ranks
+(docs/user/paraview.md). ParaView's color
+map (linear RGB) and opacity function become volpost's transfer function by the rule
+docs/user/paraview.md states, written here independently: control points at every node and
+at 257 evenly spaced values, extinction -ln(1 - opacity) / unit distance.
+
+Usage: pvbatch representation_matches_render.py PLUGIN VOLPOST OUTDIR [FILE ARRAY]...
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+from paraview import servermanager
+from paraview.simple import (GetColorTransferFunction, GetOpacityTransferFunction, LoadPlugin, OpenDataFile,
+                             Render, SaveScreenshot, Show, CreateView, XMLUnstructuredGridReader)
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkUnstructuredGrid
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOLegacy import vtkUnstructuredGridWriter
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+plugin, volpost, outdir = sys.argv[1:4]
+RANKS = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+ALLOWED = 1 if RANKS == 1 else 2
+LoadPlugin(plugin, remote=False, ns=globals())
+os.makedirs(outdir, exist_ok=True)
+WIDTH, HEIGHT = 160, 120
+
+
+def kuhn_grid(path, n=6):
+    """n^3 cubes over [0,1]^3, each split into the six Kuhn tetrahedra around its diagonal,
+    f = sin(3x)cos(2y) + 0.5 sin(4z + 2x) at the nodes."""
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    values = vtkDoubleArray()
+    values.SetName("wave")
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                x, y, z = i / n, j / n, k / n
+                points.InsertNextPoint(x, y, z)
+                values.InsertNextValue(math.sin(3 * x) * math.cos(2 * y) + 0.5 * math.sin(4 * z + 2 * x))
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.GetPointData().AddArray(values)
+    at = lambda i, j, k: i + (n + 1) * (j + (n + 1) * k)
+    corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    kuhn = [(0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)]
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                for tet in kuhn:
+                    c = [corners[v] for v in tet]
+                    e = [np.subtract(c[m], c[0]) for m in (1, 2, 3)]
+                    ids = [at(i + dx, j + dy, k + dz) for dx, dy, dz in c]
+                    if np.dot(np.cross(e[0], e[1]), e[2]) < 0:  # VTK's positive orientation
+                        ids[1], ids[2] = ids[2], ids[1]
+                    grid.InsertNextCell(VTK_TETRA, 4, ids)
+    # Legacy VTK: ParaView 5.11's XML readers stop early on Debian 12 (docs/user/paraview.md),
+    # on the ranks past the first even with inline data.
+    writer = vtkUnstructuredGridWriter()
+    writer.SetFileName(path)
+    writer.SetInputData(grid)
+    writer.SetFileTypeToBinary()
+    writer.Write()
+
+
+def volpost_tf(rgb_points, opacity_points, unit):
+    """The documented rule, from ParaView's nodes (linear RGB, linear opacity)."""
+    rgb = np.array(rgb_points).reshape(-1, 4)
+    opa = np.array(opacity_points).reshape(-1, 4)
+    low, high = min(rgb[0, 0], opa[0, 0]), max(rgb[-1, 0], opa[-1, 0])
+    at = np.unique(np.concatenate([rgb[:, 0], opa[:, 0], low + (high - low) * np.arange(257) / 256]))
+    points = []
+    for v in at:
+        color = [float(np.interp(v, rgb[:, 0], rgb[:, c])) for c in (1, 2, 3)]
+        o = min(max(float(np.interp(v, opa[:, 0], opa[:, 1])), 0.0), 1.0)
+        extinction = 1e20 if o >= 1.0 else min(-math.log1p(-o) / unit, 1e20)
+        points.append({"value": float(v), "color": color, "extinction": extinction})
+    return {"format": "volpost-tf", "version": 1, "points": points}
+
+
+def png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    w, h, _ = image.GetDimensions()
+    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
+
+
+cases = list(zip(sys.argv[4::2], sys.argv[5::2]))
+if not cases:
+    grid_path = os.path.join(outdir, "kuhn_grid.vtk")
+    kuhn_grid(grid_path)
+    cases.append((grid_path, "wave"))
+
+failures = []
+for path, array in cases:
+    name = os.path.basename(path)
+    reader = XMLUnstructuredGridReader(FileName=[path]) if path.endswith(".vtu") else OpenDataFile(path)
+    reader.UpdatePipeline()
+    low, high = reader.PointData[array].GetRange()
+    bounds = reader.GetDataInformation().GetBounds()
+    center = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, (bounds[4] + bounds[5]) / 2]
+    size = math.dist(bounds[0::2], bounds[1::2])
+    eye = [center[0] + 1.1 * size, center[1] - 0.8 * size, center[2] + 0.9 * size]
+    up = [0.0, 0.0, 1.0]
+    unit = size / 20.0
+    mid = low + 0.55 * (high - low)
+    rgb_points = [low, 0.1, 0.2, 0.9, mid, 0.9, 0.9, 0.3, high, 0.9, 0.1, 0.1]
+    opacity_points = [low, 0.0, 0.5, 0.0, mid, 0.6, 0.5, 0.0, high, 0.15, 0.5, 0.0]
+
+    view = CreateView("RenderView")
+    view.ViewSize = [WIDTH, HEIGHT]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.0, 0.0, 0.0]
+    display = Show(reader, view)
+    display.ColorArrayName = ["POINTS", array]
+    colors = GetColorTransferFunction(array)
+    colors.ColorSpace = "RGB"
+    colors.Discretize = 0  # the color map itself, not a table of 256 colors from it
+    colors.RGBPoints = rgb_points
+    opacity = GetOpacityTransferFunction(array)
+    opacity.Points = opacity_points
+    display.LookupTable = colors
+    display.ScalarOpacityFunction = opacity
+    display.ScalarOpacityUnitDistance = unit
+    display.SetRepresentationType("volpost Volume")
+    display.EarlyTermination = 0.0
+    Render(view)  # ParaView fits the camera to the data on a view's first picture: then set ours
+    view.CameraPosition = eye
+    view.CameraFocalPoint = center
+    view.CameraViewUp = up
+    view.CameraViewAngle = 30.0
+    Render(view)
+    paraview_png = os.path.join(outdir, f"{name}.paraview{RANKS}.png")
+    SaveScreenshot(paraview_png, view, ImageResolution=[WIDTH, HEIGHT])
+
+    tf_path = os.path.join(outdir, name + ".tf.json")
+    with open(tf_path, "w") as f:
+        json.dump(volpost_tf(rgb_points, opacity_points, unit), f)
+    volpost_png = os.path.join(outdir, name + ".volpost.png")
+    command = [volpost, "render", path, "--renderer", "cpu", "--field", array, "--tf", tf_path,
+               "--eye", ",".join(map(repr, eye)), "--target", ",".join(map(repr, center)), "--up", "0,0,1",
+               "--view-angle", "30", "--size", f"{WIDTH}x{HEIGHT}", "--background", "black", "--no-legend",
+               "--no-triad", "--termination", "0", "-o", volpost_png]
+    if os.environ.get("VOLPOST_PV_SHOW_COMMAND"):
+        print(" ".join(command))
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        failures.append(f"{name}: volpost render failed: {done.stdout}{done.stderr}")
+        continue
+    a, b = png(paraview_png), png(volpost_png)
+    difference = np.abs(a - b)
+    lit = int((b.max(axis=2) > 8).sum())
+    print(f"{name}, {RANKS} rank(s): largest difference {difference.max()}/255, {int((difference > 1).any(axis=2).sum())} pixels "
+          f"off by more than 1, {lit} lit pixels")
+    if lit < WIDTH * HEIGHT // 20:
+        failures.append(f"{name}: the volpost picture is nearly empty ({lit} lit pixels)")
+    if difference.max() > ALLOWED:
+        failures.append(f"{name}: ParaView's picture ({RANKS} ranks) differs from volpost render's by "
+                        f"{difference.max()}/255, more than {ALLOWED}")
+
+for f in failures:
+    print("FAIL:", f)
+if failures:
+    raise SystemExit(f"{len(failures)} failure(s)")
