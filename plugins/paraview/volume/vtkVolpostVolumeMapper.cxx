@@ -8,9 +8,12 @@
 
 #include <volpost/core/Tetrahedralize.hpp>
 
+#include <vtkCamera.h>
 #include <vtkCellData.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkDataArray.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
@@ -21,6 +24,9 @@
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
 #include <vtk_glew.h>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <exception>
@@ -72,6 +78,39 @@ std::shared_ptr<const volpost::volume::TetWalkMesh> walkMeshOf(vtkUnstructuredGr
   }
   const std::vector<double> nodeValues = tets.nodeValues(mesh, all);
   return std::make_shared<volpost::volume::TetWalkMesh>(tets.mesh, volpost::FieldLocation::Node, nodeValues);
+}
+
+/// Where the view's opaque geometry lies, as volpost's window depth for `camera` (0..1,
+/// bottom row first): rays end there, so a surface in front hides the volume behind it.
+/// Empty when nothing opaque was drawn.
+std::vector<float> sceneDepthOf(vtkRenderer& renderer, const volpost::Camera& camera, int width, int height) {
+  const int* origin = renderer.GetOrigin();
+  std::vector<float> depth(std::size_t(width) * std::size_t(height), 1.0f);
+  if (!renderer.GetRenderWindow()->GetZbufferData(origin[0], origin[1], origin[0] + width - 1, origin[1] + height - 1,
+                                                  depth.data()))
+    return {};
+  vtkNew<vtkMatrix4x4> toWorld;
+  toWorld->DeepCopy(
+      renderer.GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer.GetTiledAspectRatio(), -1, 1));
+  toWorld->Invert();
+  const glm::dmat4 toVolpost = camera.projectionMatrix(double(width) / double(height)) * camera.viewMatrix();
+  bool any = false;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float& d = depth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+      if (!(d < 1.0f)) {
+        d = 1.0f;
+        continue;
+      }
+      const double ndc[4] = {(x + 0.5) / width * 2.0 - 1.0, (y + 0.5) / height * 2.0 - 1.0, 2.0 * d - 1.0, 1.0};
+      double world[4];
+      toWorld->MultiplyPoint(ndc, world);
+      const glm::dvec4 clip =
+          toVolpost * glm::dvec4(world[0] / world[3], world[1] / world[3], world[2] / world[3], 1.0);
+      d = float(std::clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0));
+      any = true;
+    }
+  return any ? depth : std::vector<float>{};
 }
 
 /// Premultiplied RGBA over what the view holds, bottom row first as OpenGL draws.
@@ -142,6 +181,7 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
         volpost::paraview::cameraOf(*renderer->GetActiveCamera(), s.bounds, size[0], size[1]);
     volpost::volume::CpuRaySettings settings;
     settings.terminationTransmittance = this->EarlyTermination;
+    settings.sceneDepth = sceneDepthOf(*renderer, camera, size[0], size[1]);
     const volpost::volume::CpuImage image =
         volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, size[0], size[1], settings);
     drawOver(*renderer, image);
