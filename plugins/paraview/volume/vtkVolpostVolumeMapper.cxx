@@ -7,6 +7,7 @@
 #include "TetWalkMesh.hpp"
 
 #include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/optics/ElementField.hpp>
 
 #include <vtkCamera.h>
 #include <vtkCellData.h>
@@ -20,6 +21,7 @@
 #include <vtkPiecewiseFunction.h>
 #include <vtkPointData.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkVolume.h>
 #include <vtkVolumeProperty.h>
@@ -29,18 +31,26 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <optional>
 #include <string>
 
-/// What is kept between frames: the walk mesh (rebuilt when the grid or the array changes)
-/// and the part of it the transfer function shows (found again when that changes).
+/// What is kept between frames: the grid in volpost's terms and its walk mesh (rebuilt when
+/// the grid, the array or the interpolation changes) and the part of it the transfer function
+/// shows (found again when that changes).
 class vtkVolpostVolumeState {
  public:
+  vtkSmartPointer<vtkUnstructuredGrid> source;
   vtkMTimeType gridTime = 0;
-  std::string arrayKey;
+  std::string key;
+  std::unique_ptr<volpost::Mesh> mesh;
+  std::unique_ptr<volpost::TetMesh> tets;
+  std::vector<double> nodeValues;
   std::shared_ptr<const volpost::volume::TetWalkMesh> walk;
+  std::shared_ptr<const volpost::optics::ElementField> field;
+  std::shared_ptr<const volpost::volume::CpuElementField> element;
   volpost::Bounds bounds;
   std::size_t skippedCells = 0;
   volpost::TransferFunction tf;
@@ -53,31 +63,50 @@ vtkVolpostVolumeMapper::vtkVolpostVolumeMapper() : State(new vtkVolpostVolumeSta
 
 vtkVolpostVolumeMapper::~vtkVolpostVolumeMapper() { delete this->State; }
 
+void vtkVolpostVolumeMapper::SetSourceGrid(vtkUnstructuredGrid* grid) {
+  if (this->State->source == grid) return;
+  this->State->source = grid;
+  this->Modified();
+}
+
 void vtkVolpostVolumeMapper::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "EarlyTermination: " << this->EarlyTermination << "\n";
+  os << indent << "Interpolation: " << (this->Interpolation ? "cells' own field" : "tetrahedra") << "\n";
+  os << indent << "ElementTolerance: " << this->ElementTolerance << "\n";
 }
 
 namespace {
 
 /// The grid as volpost's walk mesh: cells split into tets as volpost splits them, the
-/// array's values carried over (node values to the split's extra points by its rule).
-std::shared_ptr<const volpost::volume::TetWalkMesh> walkMeshOf(vtkUnstructuredGrid& grid, vtkDataArray& array,
-                                                               bool perCell, volpost::Bounds& bounds,
-                                                               std::size_t& skipped) {
+/// array's values carried over (node values to the split's extra points by its rule); with
+/// `element`, the cells' own field over it.
+void buildWalk(vtkVolpostVolumeState& s, vtkUnstructuredGrid& grid, vtkDataArray& array, bool perCell, bool element) {
   std::vector<std::size_t> kept;
-  const volpost::Mesh mesh = volpost::paraview::meshOf(grid, skipped, kept);
+  s.mesh = std::make_unique<volpost::Mesh>(volpost::paraview::meshOf(grid, s.skippedCells, kept));
+  s.tets = std::make_unique<volpost::TetMesh>(volpost::tetrahedralize(*s.mesh));
+  s.bounds = s.mesh->bounds();
+  s.field.reset();
+  s.element.reset();
   const std::vector<double> all = volpost::paraview::valuesOf(array, -1);
-  const volpost::TetMesh tets = volpost::tetrahedralize(mesh);
-  bounds = mesh.bounds();
   if (perCell) {
     std::vector<double> values(kept.size());
     for (std::size_t c = 0; c < kept.size(); ++c) values[c] = all[kept[c]];
-    const std::vector<double> tetValues = tets.cellValues(values);
-    return std::make_shared<volpost::volume::TetWalkMesh>(tets.mesh, volpost::FieldLocation::Cell, tetValues);
+    s.walk = std::make_shared<volpost::volume::TetWalkMesh>(s.tets->mesh, volpost::FieldLocation::Cell,
+                                                            s.tets->cellValues(values));
+    return;
   }
-  const std::vector<double> nodeValues = tets.nodeValues(mesh, all);
-  return std::make_shared<volpost::volume::TetWalkMesh>(tets.mesh, volpost::FieldLocation::Node, nodeValues);
+  s.nodeValues = all;
+  s.walk = std::make_shared<volpost::volume::TetWalkMesh>(s.tets->mesh, volpost::FieldLocation::Node,
+                                                          s.tets->nodeValues(*s.mesh, s.nodeValues));
+  if (!element) return;
+  s.field = std::make_shared<volpost::optics::ElementField>(*s.mesh, s.nodeValues, *s.tets, s.walk->origin());
+  auto cells = std::make_shared<volpost::volume::CpuElementField>();
+  cells->field = s.field;
+  cells->cellOfTet.resize(s.walk->tetCount());  // the walk leaves degenerate tets out
+  for (std::size_t t = 0; t < cells->cellOfTet.size(); ++t)
+    cells->cellOfTet[t] = s.tets->sourceCell(s.walk->meshTet(t));
+  s.element = std::move(cells);
 }
 
 /// Where the view's opaque geometry lies, as volpost's window depth for `camera` (0..1,
@@ -151,15 +180,35 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
   }
   vtkVolpostVolumeState& s = *this->State;
   try {
-    const std::string key =
-        std::string(scalars->GetName() ? scalars->GetName() : "") + (perCell ? " cells" : " points");
-    if (!s.walk || s.gridTime != grid->GetMTime() || s.arrayKey != key) {
-      s.walk = walkMeshOf(*grid, *scalars, perCell != 0, s.bounds, s.skippedCells);
+    // The grid's own cells when this is the grid the pipeline gave (same points): volpost's
+    // split of them, and their shape functions. Otherwise (pieces moved between ranks) the
+    // tetrahedra as delivered.
+    vtkUnstructuredGrid* cells = grid;
+    int sourcePerCell = perCell;
+    if (s.source && s.source->GetNumberOfPoints() == grid->GetNumberOfPoints()) {
+      if (vtkDataArray* own = this->GetScalars(s.source, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
+                                               this->ArrayName, sourcePerCell)) {
+        cells = s.source;
+        scalars = own;
+      }
+    }
+    const bool element = this->Interpolation == 1;
+    if (element && sourcePerCell)
+      vtkWarningMacro("The cells' own field needs values at the nodes: a cell array is drawn constant per cell.");
+    const std::string key = std::string(scalars->GetName() ? scalars->GetName() : "") +
+                            (sourcePerCell ? " cells" : " points") + (element ? " element" : " tets") +
+                            std::to_string(reinterpret_cast<std::uintptr_t>(cells));
+    if (!s.walk || s.gridTime != cells->GetMTime() || s.key != key) {
+      buildWalk(s, *cells, *scalars, sourcePerCell != 0, element && !sourcePerCell);
       if (s.skippedCells > 0)
         vtkWarningMacro(<< s.skippedCells << " cells are not drawn: volpost draws tetrahedra, hexahedra, wedges, "
                         << "pyramids and their quadratic forms.");
-      s.gridTime = grid->GetMTime();
-      s.arrayKey = key;
+      if (s.field && !s.field->uninvertibleCells().empty())
+        vtkWarningMacro(<< s.field->uninvertibleCells().size() << " cells are folded or inverted (the first is cell "
+                        << s.field->uninvertibleCells().front()
+                        << "): drawn by the tetrahedra of their split, not their own field.");
+      s.gridTime = cells->GetMTime();
+      s.key = key;
       s.visible.reset();
     }
     vtkVolumeProperty* property = volume->GetProperty();
@@ -172,7 +221,7 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
         *colors, *opacity, property->GetScalarOpacityUnitDistance(0), std::min(colorRange[0], opacityRange[0]),
         std::max(colorRange[1], opacityRange[1]));
     if (!s.visible || !(tf == s.tf)) {
-      s.visible = volpost::volume::findVisiblePart(*s.walk, tf, {});
+      s.visible = volpost::volume::findVisiblePart(*s.walk, tf, {}, 0, s.element.get());
       s.tf = tf;
     }
     const int* size = renderer->GetSize();
@@ -182,6 +231,8 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
     volpost::volume::CpuRaySettings settings;
     settings.terminationTransmittance = this->EarlyTermination;
     settings.sceneDepth = sceneDepthOf(*renderer, camera, size[0], size[1]);
+    settings.element = s.element;
+    settings.elementTolerance = s.element ? this->ElementTolerance : 0.0;
     const volpost::volume::CpuImage image =
         volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, size[0], size[1], settings);
     drawOver(*renderer, image);

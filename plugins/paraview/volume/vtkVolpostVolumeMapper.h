@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 // A volume mapper for unstructured grids that draws with volpost's CPU ray caster: each
 // pixel's ray walked tet to tet, the transfer function integrated exactly along it (no
-// sampling step). Cells other than tetrahedra are split as volpost splits them. ParaView's
-// color map and opacity function become volpost's transfer function (docs/user/paraview.md
-// states the rule).
+// sampling step), on the tetrahedra of volpost's split of the grid's cells, or through the
+// cells' own shape functions. ParaView's color map and opacity function become volpost's
+// transfer function (docs/user/paraview.md states the rule).
 #ifndef vtkVolpostVolumeMapper_h
 #define vtkVolpostVolumeMapper_h
 
@@ -11,6 +11,7 @@
 
 #include <vtkUnstructuredGridVolumeMapper.h>
 
+class vtkUnstructuredGrid;
 class vtkVolpostVolumeState;
 
 class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructuredGridVolumeMapper {
@@ -24,6 +25,21 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   vtkSetClampMacro(EarlyTermination, double, 0.0, 0.1);
   vtkGetMacro(EarlyTermination, double);
 
+  /// How node values vary inside a cell: 0, linear on the tetrahedra each cell is split into;
+  /// 1, the cell's own shape functions (trilinear in a hex8, quadratic in a tet10 or hex20),
+  /// within ElementTolerance per channel. Needs the grid's own cells (SetSourceGrid).
+  vtkSetClampMacro(Interpolation, int, 0, 1);
+  vtkGetMacro(Interpolation, int);
+  /// The most a pixel's channel may differ from the exact picture of the cells' own field
+  /// (0: to rounding). Default 0.01, as volpost's.
+  vtkSetClampMacro(ElementTolerance, double, 0.0, 0.1);
+  vtkGetMacro(ElementTolerance, double);
+
+  /// The grid as the pipeline gave it, before ParaView split its cells into tetrahedra. When
+  /// the mapper draws that same grid (one process: the same points), it walks volpost's own
+  /// split of these cells instead of ParaView's.
+  void SetSourceGrid(vtkUnstructuredGrid* grid);
+
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
   void ReleaseGraphicsResources(vtkWindow*) override {}
 
@@ -36,6 +52,8 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   void operator=(const vtkVolpostVolumeMapper&) = delete;
 
   double EarlyTermination = 0.002;
+  int Interpolation = 0;
+  double ElementTolerance = 0.01;
   vtkVolpostVolumeState* State;
 };
 

@@ -3,8 +3,10 @@
 
 #include "vtkVolpostVolumeMapper.h"
 
+#include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkUnstructuredGrid.h>
 
 namespace {
 constexpr const char* kMapper = "volpost exact ray caster";
@@ -22,6 +24,30 @@ vtkVolpostVolumeRepresentation::~vtkVolpostVolumeRepresentation() = default;
 
 void vtkVolpostVolumeRepresentation::SetActiveVolumeMapper(const char*) {
   this->Superclass::SetActiveVolumeMapper(kMapper);
+}
+
+int vtkVolpostVolumeRepresentation::RequestData(vtkInformation* request, vtkInformationVector** inputs,
+                                                vtkInformationVector* outputs) {
+  if (auto* mapper = vtkVolpostVolumeMapper::SafeDownCast(this->GetActiveVolumeMapper())) {
+    vtkUnstructuredGrid* grid = nullptr;
+    if (inputs[0]->GetNumberOfInformationObjects() > 0) grid = vtkUnstructuredGrid::GetData(inputs[0], 0);
+    mapper->SetSourceGrid(grid);
+  }
+  return this->Superclass::RequestData(request, inputs, outputs);
+}
+
+void vtkVolpostVolumeRepresentation::SetInterpolation(int interpolation) {
+  if (auto* mapper = vtkVolpostVolumeMapper::SafeDownCast(this->GetActiveVolumeMapper())) {
+    mapper->SetInterpolation(interpolation);
+    this->MarkModified();
+  }
+}
+
+void vtkVolpostVolumeRepresentation::SetElementTolerance(double tolerance) {
+  if (auto* mapper = vtkVolpostVolumeMapper::SafeDownCast(this->GetActiveVolumeMapper())) {
+    mapper->SetElementTolerance(tolerance);
+    this->MarkModified();
+  }
 }
 
 void vtkVolpostVolumeRepresentation::SetEarlyTermination(double transmittance) {

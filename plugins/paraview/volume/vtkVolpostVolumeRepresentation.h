@@ -2,7 +2,8 @@
 // "volpost Volume": ParaView's volume representation of unstructured grids (its data
 // delivery, redistribution and ordered compositing in parallel, color map and opacity
 // function) with volpost's ray caster as the only mapper. ParaView hands every volume mapper
-// tetrahedra (its preprocessor splits hexahedra, wedges and pyramids its own way).
+// tetrahedra of its own split; the representation also hands the ray caster the grid as it
+// came, so that in one process it walks volpost's split or the cells' own field.
 #ifndef vtkVolpostVolumeRepresentation_h
 #define vtkVolpostVolumeRepresentation_h
 
@@ -18,12 +19,18 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeRepresentation : public vtkUn
   /// Always volpost's ray caster, whatever ParaView's Volume representation was set to.
   void SetActiveVolumeMapper(const char*) override;
 
-  /// Forwarded to the ray caster (vtkVolpostVolumeMapper::SetEarlyTermination).
+  /// Forwarded to the ray caster (vtkVolpostVolumeMapper::SetEarlyTermination,
+  /// SetInterpolation, SetElementTolerance).
   void SetEarlyTermination(double transmittance);
+  void SetInterpolation(int interpolation);
+  void SetElementTolerance(double tolerance);
 
  protected:
   vtkVolpostVolumeRepresentation();
   ~vtkVolpostVolumeRepresentation() override;
+
+  /// Hands the ray caster the grid as it came, before ParaView splits its cells.
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
  private:
   vtkVolpostVolumeRepresentation(const vtkVolpostVolumeRepresentation&) = delete;

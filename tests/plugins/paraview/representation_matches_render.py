@@ -12,7 +12,9 @@ map (linear RGB) and opacity function become volpost's transfer function by the 
 docs/user/paraview.md states, written here independently: control points at every node and
 at 257 evenly spaced values, extinction -ln(1 - opacity) / unit distance.
 
-Usage: pvbatch representation_matches_render.py PLUGIN VOLPOST OUTDIR [FILE ARRAY]...
+Usage: pvbatch representation_matches_render.py [--hexahedra] [--element] PLUGIN VOLPOST OUTDIR [FILE ARRAY]...
+(--hexahedra: the made grid is of hexahedra, which volpost splits itself in one process;
+--element: both sides draw the cells' own field, default tolerance.)
 """
 import json
 import math
@@ -28,9 +30,12 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from kuhn_grid import kuhn_grid  # noqa: E402
+from kuhn_grid import hex_block, kuhn_grid  # noqa: E402
 
-plugin, volpost, outdir = sys.argv[1:4]
+ELEMENT = "--element" in sys.argv  # the cells' own field on both sides
+HEXAHEDRA = "--hexahedra" in sys.argv  # the made grid of hexahedra rather than tetrahedra
+arguments = [a for a in sys.argv if a not in ("--element", "--hexahedra")]
+plugin, volpost, outdir = arguments[1:4]
 RANKS = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 ALLOWED = 1 if RANKS == 1 else 2
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -62,10 +67,10 @@ def png(path):
     return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
 
 
-cases = list(zip(sys.argv[4::2], sys.argv[5::2]))
+cases = list(zip(arguments[4::2], arguments[5::2]))
 if not cases:
-    grid_path = os.path.join(outdir, "kuhn_grid.vtk")
-    kuhn_grid(grid_path)
+    grid_path = os.path.join(outdir, "hex_block.vtk" if HEXAHEDRA else "kuhn_grid.vtk")
+    (hex_block if HEXAHEDRA else kuhn_grid)(grid_path)
     cases.append((grid_path, "wave"))
 
 failures = []
@@ -102,23 +107,27 @@ for path, array in cases:
     display.ScalarOpacityUnitDistance = unit
     display.SetRepresentationType("volpost Volume")
     display.EarlyTermination = 0.0
+    if ELEMENT:
+        display.Interpolation = "Cells' own field"
     Render(view)  # ParaView fits the camera to the data on a view's first picture: then set ours
     view.CameraPosition = eye
     view.CameraFocalPoint = center
     view.CameraViewUp = up
     view.CameraViewAngle = 30.0
     Render(view)
-    paraview_png = os.path.join(outdir, f"{name}.paraview{RANKS}.png")
+    paraview_png = os.path.join(outdir, f"{name}{'.element' if ELEMENT else ''}.paraview{RANKS}.png")
     SaveScreenshot(paraview_png, view, ImageResolution=[WIDTH, HEIGHT])
 
     tf_path = os.path.join(outdir, name + ".tf.json")
     with open(tf_path, "w") as f:
         json.dump(volpost_tf(rgb_points, opacity_points, unit), f)
-    volpost_png = os.path.join(outdir, name + ".volpost.png")
+    volpost_png = os.path.join(outdir, name + (".element" if ELEMENT else "") + ".volpost.png")
     command = [volpost, "render", path, "--renderer", "cpu", "--field", array, "--tf", tf_path,
                "--eye", ",".join(map(repr, eye)), "--target", ",".join(map(repr, center)), "--up", "0,0,1",
                "--view-angle", "30", "--size", f"{WIDTH}x{HEIGHT}", "--background", "black", "--no-legend",
                "--no-triad", "--termination", "0", "-o", volpost_png]
+    if ELEMENT:
+        command[3:3] = ["--interpolation", "element"]
     if os.environ.get("VOLPOST_PV_SHOW_COMMAND"):
         print(" ".join(command))
     done = subprocess.run(command, capture_output=True, text=True)
