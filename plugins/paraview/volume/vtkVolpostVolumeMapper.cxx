@@ -193,13 +193,13 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
       }
     }
     const bool element = this->Interpolation == 1;
-    if (element && sourcePerCell)
-      vtkWarningMacro("The cells' own field needs values at the nodes: a cell array is drawn constant per cell.");
     const std::string key = std::string(scalars->GetName() ? scalars->GetName() : "") +
                             (sourcePerCell ? " cells" : " points") + (element ? " element" : " tets") +
                             std::to_string(reinterpret_cast<std::uintptr_t>(cells));
     if (!s.walk || s.gridTime != cells->GetMTime() || s.key != key) {
       buildWalk(s, *cells, *scalars, sourcePerCell != 0, element && !sourcePerCell);
+      if (element && sourcePerCell)
+        vtkWarningMacro("The cells' own field needs values at the nodes: a cell array is drawn constant per cell.");
       if (s.skippedCells > 0)
         vtkWarningMacro(<< s.skippedCells << " cells are not drawn: volpost draws tetrahedra, hexahedra, wedges, "
                         << "pyramids and their quadratic forms.");
