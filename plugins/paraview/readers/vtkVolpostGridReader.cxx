@@ -2,6 +2,7 @@
 #include "vtkVolpostGridReader.h"
 
 #include "ModelToVtk.h"
+#include "ReaderPipeline.h"
 #include "VolpostReading.h"
 
 #include <vtkDataObject.h>
@@ -57,14 +58,9 @@ int vtkVolpostGridReader::RequestInformation(vtkInformation*, vtkInformationVect
       {"cdp-y-byte", this->CdpYByte},    {"scalar-byte", this->ScalarByte},       {"offset-byte", this->OffsetByte}};
   volpost::paraview::ImageGeometry geometry{};
   try {
-    const volpost::Progress progress([this](double fraction, const std::string&) {
-      this->UpdateProgress(fraction);
-      return !this->GetAbortExecute();
-    });
-    const bool read = this->Cache->load(this->FileName, optionsOf(bytes, this->Offset), progress);
-    if (read)
-      for (const volpost::Diagnostic& d : this->Cache->model().diagnostics)
-        if (d.severity == volpost::Severity::Warning) vtkWarningMacro(<< this->FileName << ": " << d.message);
+    const bool read =
+        this->Cache->load(this->FileName, optionsOf(bytes, this->Offset), volpost::paraview::progressOf(*this));
+    if (read) volpost::paraview::reportFindings(*this, this->Cache->model(), this->FileName);
     const volpost::Model& model = this->Cache->model();
     if (!model.grid) {
       vtkErrorMacro(<< this->FileName << ": the file holds cells, not a regular grid of samples: open it with the "
@@ -90,15 +86,7 @@ int vtkVolpostGridReader::RequestInformation(vtkInformation*, vtkInformationVect
   info->Set(vtkDataObject::DIRECTION(), geometry.direction, 9);
   // Every rank reads the file and keeps the part of the grid ParaView gives it.
   info->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
-  const auto& times = this->Cache->steps().times;
-  if (times.empty()) {
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  } else {
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), int(times.size()));
-    const double range[2] = {times.front(), times.back()};
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
+  volpost::paraview::announceTimes(*info, this->Cache->steps().times);
   return 1;
 }
 
@@ -107,9 +95,7 @@ int vtkVolpostGridReader::RequestData(vtkInformation*, vtkInformationVector**, v
   vtkImageData* output = vtkImageData::GetData(info);
   if (!output || !this->Cache->holds()) return 0;
   const volpost::paraview::TimeSteps& steps = this->Cache->steps();
-  double time = steps.times.empty() ? 0.0 : steps.times.front();
-  if (!steps.times.empty() && info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    time = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  const double time = volpost::paraview::requestedTime(*info, steps);
   try {
     volpost::paraview::fillImageData(
         this->Cache->model(),

@@ -2,6 +2,7 @@
 #include "vtkVolpostReader.h"
 
 #include "ModelToVtk.h"
+#include "ReaderPipeline.h"
 #include "VolpostReading.h"
 
 #include <vtkInformation.h>
@@ -14,17 +15,6 @@
 #include <exception>
 
 vtkStandardNewMacro(vtkVolpostReader);
-
-namespace {
-
-volpost::Progress progressOf(vtkAlgorithm& algorithm) {
-  return volpost::Progress([&algorithm](double fraction, const std::string&) {
-    algorithm.UpdateProgress(fraction);
-    return !algorithm.GetAbortExecute();
-  });
-}
-
-}  // namespace
 
 vtkVolpostReader::vtkVolpostReader() : Cache(new vtkVolpostModelCache) { this->SetNumberOfInputPorts(0); }
 
@@ -49,26 +39,16 @@ int vtkVolpostReader::RequestInformation(vtkInformation*, vtkInformationVector**
   }
   bool read = false;
   const std::string error =
-      volpost::paraview::readOnFirstRank(*this->Cache, this->FileName, {}, progressOf(*this), read);
+      volpost::paraview::readOnFirstRank(*this->Cache, this->FileName, {}, volpost::paraview::progressOf(*this), read);
   if (!error.empty()) {
     // The first rank says what is wrong; the others fail without repeating it.
     vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
     if (!controller || controller->GetLocalProcessId() == 0) vtkErrorMacro(<< error);
     return 0;
   }
-  if (read)
-    for (const volpost::Diagnostic& d : this->Cache->model().diagnostics)
-      if (d.severity == volpost::Severity::Warning) vtkWarningMacro(<< this->FileName << ": " << d.message);
+  if (read) volpost::paraview::reportFindings(*this, this->Cache->model(), this->FileName);
   vtkInformation* info = outputs->GetInformationObject(0);
-  const auto& times = this->Cache->announced.times;
-  if (times.empty()) {
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  } else {
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), int(times.size()));
-    const double range[2] = {times.front(), times.back()};
-    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
+  volpost::paraview::announceTimes(*info, this->Cache->announced.times);
   // The first rank reads the whole file and gives it as piece 0; the other pieces are empty
   // (ParaView's Redistribute DataSet filter spreads the cells over the ranks).
   info->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
@@ -83,9 +63,7 @@ int vtkVolpostReader::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
   if (!this->Cache->holds()) return 0;
 
   const volpost::paraview::TimeSteps& steps = this->Cache->steps();
-  double time = steps.times.empty() ? 0.0 : steps.times.front();
-  if (!steps.times.empty() && info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-    time = info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  const double time = volpost::paraview::requestedTime(*info, steps);
   try {
     volpost::paraview::fillUnstructuredGrid(
         this->Cache->model(),

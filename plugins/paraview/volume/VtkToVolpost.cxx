@@ -49,17 +49,13 @@ Mesh meshOf(vtkUnstructuredGrid& grid, std::size_t& skipped, std::vector<std::si
   return mesh;
 }
 
-std::vector<double> valuesOf(vtkDataArray& array, int component) {
+std::vector<double> valuesOf(vtkDataArray& array) {
   const int components = array.GetNumberOfComponents();
   std::vector<double> values(std::size_t(array.GetNumberOfTuples()));
   for (vtkIdType t = 0; t < array.GetNumberOfTuples(); ++t) {
-    if (components == 1 || (component >= 0 && component < components)) {
-      values[std::size_t(t)] = array.GetComponent(t, components == 1 ? 0 : component);
-    } else {
-      double sum = 0.0;
-      for (int k = 0; k < components; ++k) sum += array.GetComponent(t, k) * array.GetComponent(t, k);
-      values[std::size_t(t)] = std::sqrt(sum);
-    }
+    double sum = 0.0;
+    for (int k = 0; k < components; ++k) sum += array.GetComponent(t, k) * array.GetComponent(t, k);
+    values[std::size_t(t)] = components == 1 ? array.GetComponent(t, 0) : std::sqrt(sum);
   }
   return values;
 }

@@ -25,9 +25,9 @@ namespace volpost::paraview {
 /// `skipped` counts the others (polyhedra, 2D cells, ...), which are not drawn.
 Mesh meshOf(vtkUnstructuredGrid& grid, std::size_t& skipped, std::vector<std::size_t>& keptCells);
 
-/// One value per tuple: the component asked for, or the magnitude when `component` < 0 (or
-/// the array has one component).
-std::vector<double> valuesOf(vtkDataArray& array, int component);
+/// One value per tuple: the array's value, or its magnitude when it has several components
+/// (as ParaView's Volume draws vectors by default).
+std::vector<double> valuesOf(vtkDataArray& array);
 
 /// ParaView's color map and opacity function as volpost's transfer function. The opacity o
 /// given for ParaView's unit distance d becomes the extinction -ln(1 - o) / d (a slab of

@@ -88,7 +88,7 @@ void buildWalk(vtkVolpostVolumeState& s, vtkUnstructuredGrid& grid, vtkDataArray
   s.bounds = s.mesh->bounds();
   s.field.reset();
   s.element.reset();
-  const std::vector<double> all = volpost::paraview::valuesOf(array, -1);
+  const std::vector<double> all = volpost::paraview::valuesOf(array);
   if (perCell) {
     std::vector<double> values(kept.size());
     for (std::size_t c = 0; c < kept.size(); ++c) values[c] = all[kept[c]];

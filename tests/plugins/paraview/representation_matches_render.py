@@ -26,11 +26,9 @@ import numpy as np
 from paraview import servermanager
 from paraview.simple import (GetColorTransferFunction, GetOpacityTransferFunction, LoadPlugin, OpenDataFile,
                              Render, SaveScreenshot, Show, CreateView, XMLUnstructuredGridReader)
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from kuhn_grid import hex_block, kuhn_grid  # noqa: E402
+from scenes import hex_block, kuhn_grid, png  # noqa: E402
 
 ELEMENT = "--element" in sys.argv  # the cells' own field on both sides
 HEXAHEDRA = "--hexahedra" in sys.argv  # the made grid of hexahedra rather than tetrahedra
@@ -56,15 +54,6 @@ def volpost_tf(rgb_points, opacity_points, unit):
         extinction = 1e20 if o >= 1.0 else min(-math.log1p(-o) / unit, 1e20)
         points.append({"value": float(v), "color": color, "extinction": extinction})
     return {"format": "volpost-tf", "version": 1, "points": points}
-
-
-def png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
 
 
 cases = list(zip(arguments[4::2], arguments[5::2]))

@@ -15,11 +15,9 @@ import sys
 import numpy as np
 from paraview.simple import (Box, CreateView, GetColorTransferFunction, GetOpacityTransferFunction, LegacyVTKReader,
                              LoadPlugin, Render, SaveScreenshot, Show)
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from kuhn_grid import kuhn_grid  # noqa: E402
+from scenes import kuhn_grid, png  # noqa: E402
 
 plugin, outdir = sys.argv[1:3]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -69,12 +67,7 @@ def picture(name, with_volume, with_box):
     Render(view)
     path = os.path.join(outdir, name + ".png")
     SaveScreenshot(path, view, ImageResolution=[WIDTH, HEIGHT])
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(int)
+    return png(path)
 
 
 both = picture("both", True, True)
