@@ -97,7 +97,7 @@ for path, array in cases:
     display.SetRepresentationType("volpost Volume")
     display.EarlyTermination = 0.0
     if ELEMENT:
-        display.Interpolation = "Cells' own field"
+        display.CellInterpolation = "Cells' own field"
     Render(view)  # ParaView fits the camera to the data on a view's first picture: then set ours
     view.CameraPosition = eye
     view.CameraFocalPoint = center
