@@ -68,7 +68,13 @@ int runSurface(const QStringList& args) {
   const QCommandLineOption step("step", "Load case / time step, 1-based (default 1).", "K", "1");
   const QCommandLineOption readerOption = readerOptionOption();
   const QCommandLineOption formula = formulaOption();
-  parser.addOptions({field, iso, step, readerOption, formula});
+  const QCommandLineOption interpolation(
+      "interpolation",
+      "With --field, on meshes: the field whose level set is drawn. tetrahedra (default): linear on the tetrahedra "
+      "each cell is split into; element: each cell's own shape functions, as the solver computed the field "
+      "(trilinear in a hex8, quadratic in a tet10 or hex20), its surface followed to 1/1000 of the values' range.",
+      "HOW");
+  parser.addOptions({field, iso, step, readerOption, formula, interpolation});
   if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2) {
@@ -87,6 +93,17 @@ int runSurface(const QStringList& args) {
   }
   const auto stepIndex = parseStep(parser, step);
   if (!stepIndex) return 2;
+  const auto how = fieldInterpolationFromString(parser.value(interpolation).toStdString());
+  if (parser.isSet(interpolation) && !how) {
+    printError(
+        QString("--interpolation %1 is not one of: %2").arg(parser.value(interpolation), kFieldInterpolationChoices));
+    return 2;
+  }
+  if (parser.isSet(interpolation) && !parser.isSet(field)) {
+    printError("--interpolation goes with --field and --iso: the boundary surface has no values to interpolate");
+    return 2;
+  }
+  bool ownField = how == FieldInterpolation::Element;
   auto plugins = loadPluginsForCli();
   const auto saidHow = [&](const SurfaceWriteResult& r) {
     const QString ext = QFileInfo(files[1]).suffix().toLower();
@@ -110,16 +127,37 @@ int runSurface(const QStringList& args) {
       return 1;
     }
     const Model& model = session->model();
-    const auto surface = !model.meshBuilt()  // a grid: its cells split on the fly, no tetrahedra built
-                             ? extractIsoSurface(*model.grid, view.values, isoValue, terminalProgress("extracting"))
-                             : extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue,
-                                                 terminalProgress("extracting"));
+    if (ownField && !model.meshBuilt()) {
+      printError(QString("--interpolation element: %1 is a regular grid, whose cells have no shape functions of "
+                         "their own: leave the option out")
+                     .arg(files[0]));
+      return 2;
+    }
+    ownField = ownField && hasNonlinearCells(model.mesh());  // tet4 cells: their split is their own field
+    std::vector<double> converted;
+    const auto surface =
+        !model.meshBuilt()  // a grid: its cells split on the fly, no tetrahedra built
+            ? extractIsoSurface(*model.grid, view.values, isoValue, terminalProgress("extracting"))
+            : ownField ? extractIsoSurface(optics::ElementField(model.mesh(), view.values.doubles(converted),
+                                                                session->tetrahedra(), glm::dvec3(0.0)),
+                                           isoValue, RefinementLimits{}, terminalProgress("extracting"))
+                       : extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue,
+                                           terminalProgress("extracting"));
+    if (ownField && !surface.toleranceReached)
+      std::fprintf(stderr,
+                   "volpost: warning: the cells' own field is followed to %.2g of the values' range, not 1/1000: "
+                   "the cells crossed are too many or too curved to refine further\n",
+                   surface.deviation);
     if (surface.mesh.n_faces() == 0)
       std::fprintf(stderr, "volpost: warning: %s = %g is outside the values [%g, %g]: the iso-surface is empty\n",
                    qPrintable(parser.value(field)), isoValue, view.range.min, view.range.max);
     saidHow(writeSurface(surface.mesh, surface.origin, pathBytes(files[1])));
-    std::printf("%s: %s = %g, %zu triangles\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
-                surface.mesh.n_faces());
+    std::printf("%s: %s = %g, %zu triangles%s\n", qPrintable(files[1]), qPrintable(parser.value(field)), isoValue,
+                surface.mesh.n_faces(),
+                ownField ? qPrintable(QString(", the cells' own field (the split's tetrahedra cut %1 times along each "
+                                              "edge)")
+                                          .arg(surface.refinement))
+                         : "");
     return 0;
   });
 }

@@ -29,7 +29,13 @@ int runStreamlines(const QStringList& args) {
   const StreamlineOptions lineOptions;
   const QCommandLineOption readerOption = readerOptionOption();
   const QCommandLineOption formula = formulaOption();
-  parser.addOptions({field, step, output, readerOption, formula});
+  const QCommandLineOption interpolation(
+      "interpolation",
+      "How the vectors vary inside a cell: tetrahedra (default): linear on the tetrahedra each cell is split into; "
+      "element: each cell's own shape functions, as the solver computed the field (trilinear in a hex8, quadratic "
+      "in a tet10 or hex20). The colors follow too.",
+      "HOW");
+  parser.addOptions({field, step, output, readerOption, formula, interpolation});
   for (const auto& o : lineOptions.all()) parser.addOption(o);
   if (const auto code = parseArguments(parser, "volpost streamlines", args)) return *code;
   if (parser.positionalArguments().size() != 1 || !parser.isSet(field) || !parser.isSet(lineOptions.seeds) ||
@@ -41,6 +47,12 @@ int runStreamlines(const QStringList& args) {
   const int stepNumber = parser.value(step).toInt(&okStep);
   if (!okStep || stepNumber < 1) {
     printError(QString("--step %1 is not a step number (1, 2, ...)").arg(parser.value(step)));
+    return 2;
+  }
+  const auto how = fieldInterpolationFromString(parser.value(interpolation).toStdString());
+  if (parser.isSet(interpolation) && !how) {
+    printError(
+        QString("--interpolation %1 is not one of: %2").arg(parser.value(interpolation), kFieldInterpolationChoices));
     return 2;
   }
   const std::string out = pathBytes(parser.value(output));
@@ -69,6 +81,7 @@ int runStreamlines(const QStringList& args) {
       state.step = std::size_t(stepNumber - 1);
       state.quantity.clear();
       state.streamlines = layer;
+      if (how) state.volume.interpolation = *how;
       scene.applyState(state);
     } catch (const std::invalid_argument& e) {
       printError(e.what());

@@ -53,6 +53,8 @@ void BoundaryRenderer::release() {
 
 void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   session_ = std::move(session);
+  elementField_.reset();
+  elementFieldFor_.reset();
   isoCorners_.clear();
   cutFor_.reset();
   slicesFor_.reset();
@@ -79,7 +81,7 @@ void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range) {
 void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,
                                DisplayRange range) {
   if (!initialized_ || !session_) return;
-  const CutKey key{planes, viewVersion, range, view != nullptr};
+  const CutKey key{planes, viewVersion, range, view != nullptr, interpolation_};
   if (cutFor_ == key) return;
   cutFor_ = key;
   const double tolerance = 1e-5 * std::max(session_->model().bounds().diagonal(), 1e-300);
@@ -88,11 +90,30 @@ void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const Scala
   surface_.setClipPlanes(planes, tolerance);
   sections_.setClipPlanes(planes, tolerance);
   for (auto& r : isoRenderers_) r->setClipPlanes(planes, tolerance);
-  sectionTriangles_ = uploadCrossSections(sections_, planes, view, range);
+  sectionTriangles_ = uploadCrossSections(sections_, planes, view, viewVersion, range);
+}
+
+std::shared_ptr<const optics::ElementField> BoundaryRenderer::elementField(const ScalarView* view,
+                                                                           std::uint64_t viewVersion) const {
+  const Model& model = session_->model();
+  if (interpolation_ != FieldInterpolation::Element || !model.meshBuilt() || !hasNonlinearCells(model.mesh()))
+    return nullptr;
+  const bool perNode = view && view->location == FieldLocation::Node;
+  const std::uint64_t key = perNode ? viewVersion : 0;
+  if (elementField_ && elementFieldFor_ == key) return elementField_;
+  std::vector<double> converted;
+  const std::span<const double> values =
+      perNode ? view->values.doubles(converted)
+              : std::span<const double>(converted = std::vector<double>(model.mesh().nodeCount(), 0.0));
+  elementField_ =
+      std::make_shared<const optics::ElementField>(model.mesh(), values, session_->tetrahedra(), glm::dvec3(0.0));
+  elementFieldFor_ = key;
+  return elementField_;
 }
 
 std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes,
-                                                  const ScalarView* view, DisplayRange range) const {
+                                                  const ScalarView* view, std::uint64_t viewVersion,
+                                                  DisplayRange range) const {
   std::vector<glm::dvec3> corners;
   std::vector<double> values;
   const Model& model = session_->model();
@@ -103,6 +124,16 @@ std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const
       SectionTriangles cut = cutGrid(*model.grid, gridValues, perNode, plane);
       corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
       values.insert(values.end(), cut.values.begin(), cut.values.end());
+    }
+  } else if (const auto field = planes.empty() ? nullptr : elementField(view, viewVersion)) {
+    // The cells' own shapes, colored by their own field (or their element results).
+    std::vector<double> converted;
+    const bool perCell = view && view->location != FieldLocation::Node;
+    const std::span<const double> cellValues = perCell ? view->values.doubles(converted) : std::span<const double>();
+    for (const ClipPlane& plane : planes) {
+      SectionTriangles cut = cutCells(*field, cellValues, plane);
+      corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
+      if (view) values.insert(values.end(), cut.values.begin(), cut.values.end());
     }
   } else if (!planes.empty()) {
     const TetMesh& tets = session_->tetrahedra();
@@ -126,10 +157,10 @@ void BoundaryRenderer::setSlices(const std::vector<ClipPlane>& planes, const std
   // Cut by the clip planes and box as the surface and the volume are (what lies on a plane
   // of the box is kept: a slice on its face).
   slices_.setClipPlanes(clipPlanes, 1e-5 * std::max(session_->model().bounds().diagonal(), 1e-300));
-  const CutKey key{planes, viewVersion, range, view != nullptr};
+  const CutKey key{planes, viewVersion, range, view != nullptr, interpolation_};
   if (slicesFor_ == key) return;
   slicesFor_ = key;
-  sliceTriangles_ = uploadCrossSections(slices_, planes, view, range);
+  sliceTriangles_ = uploadCrossSections(slices_, planes, view, viewVersion, range);
 }
 
 void BoundaryRenderer::renderSlices(const RenderContext& ctx) {
@@ -150,6 +181,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
   std::vector<double> key;
   if (view && view->location == FieldLocation::Node)  // extraction needs values at the nodes
     for (const auto& iso : surfaces) key.insert(key.end(), {iso.value, iso.color.r, iso.color.g, iso.color.b, iso.opacity});
+  if (!key.empty()) key.push_back(double(int(interpolation_)));
   if (isoFor_ && isoFor_->first == key && isoFor_->second == viewVersion) return;
   isoFor_ = std::pair(key, viewVersion);
   for (auto& r : isoRenderers_) r->release();
@@ -159,10 +191,12 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
   if (key.empty()) return;
   const Model& model = session_->model();
   const bool grid = !model.meshBuilt();  // a grid's cells are split on the fly, no tetrahedra built
-  const std::vector<double> values = grid ? std::vector<double>() : session_->tetValues(*view);
+  const auto field = grid ? nullptr : elementField(view, viewVersion);
+  const std::vector<double> values = grid || field ? std::vector<double>() : session_->tetValues(*view);
   for (const auto& iso : surfaces) {
-    const ExtractedSurface extracted = grid ? extractIsoSurface(*model.grid, view->values, iso.value)
-                                            : extractIsoSurface(session_->tetrahedra(), values, iso.value);
+    const ExtractedSurface extracted = grid    ? extractIsoSurface(*model.grid, view->values, iso.value)
+                                       : field ? extractIsoSurface(*field, iso.value)
+                                               : extractIsoSurface(session_->tetrahedra(), values, iso.value);
     std::vector<glm::dvec3> corners;
     corners.reserve(extracted.mesh.n_faces() * 3);
     for (const auto f : extracted.mesh.faces())

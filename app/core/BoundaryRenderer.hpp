@@ -7,6 +7,7 @@
 #include "ModelSession.hpp"
 #include "SceneState.hpp"
 
+#include <volpost/core/optics/ElementField.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 
 #include <volpost/core/ColorMap.hpp>
@@ -28,6 +29,12 @@ class BoundaryRenderer {
   bool initialized() const { return initialized_; }
 
   void setSession(std::shared_ptr<const ModelSession> session);
+  /// How node values vary inside a cell for sections and iso-surfaces: with the cells'
+  /// own shape functions, a mesh of other cells than tet4 has its sections cut through the
+  /// cells' own (curved) shapes and colored by their own field, and its iso-surfaces
+  /// found in that field (ElementRefinement). Takes effect at the next setCuts,
+  /// setSlices and setIsoSurfaces.
+  void setFieldInterpolation(FieldInterpolation interpolation) { interpolation_ = interpolation; }
   /// Colors by the view's values; nullptr shows the plain surface.
   void setScalars(const ScalarView* view, DisplayRange range);
   void setOutOfRangeColors(std::optional<glm::vec3> below, std::optional<glm::vec3> above) {
@@ -115,8 +122,15 @@ class BoundaryRenderer {
     std::uint64_t viewVersion = 0;
     DisplayRange range;
     bool hasView = false;
+    FieldInterpolation interpolation = FieldInterpolation::Tetrahedra;
     bool operator==(const CutKey&) const = default;
   };
+  /// The cells' own field of the view's node values (zeros for geometry alone) when
+  /// sections and iso-surfaces follow it; nullptr when they use the split.
+  std::shared_ptr<const optics::ElementField> elementField(const ScalarView* view, std::uint64_t viewVersion) const;
+  FieldInterpolation interpolation_ = FieldInterpolation::Tetrahedra;
+  mutable std::shared_ptr<const optics::ElementField> elementField_;
+  mutable std::optional<std::uint64_t> elementFieldFor_;  ///< its view version (0: geometry alone)
   std::optional<CutKey> cutFor_;  ///< what the sections now uploaded were cut for
   std::optional<CutKey> slicesFor_;  ///< and the slices
   std::size_t sliceTriangles_ = 0;
@@ -132,7 +146,7 @@ class BoundaryRenderer {
   /// The model's cross-sections on these planes into `target`, colored by the view's
   /// values (sections and slices); returns their triangle count.
   std::size_t uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes, const ScalarView* view,
-                                  DisplayRange range) const;
+                                  std::uint64_t viewVersion, DisplayRange range) const;
   bool surfaceUploaded_ = false;
   // The view is the caller's (the Scene's), not a copy: a volume picture of a large grid
   // must not hold its values twice for a surface nobody draws. Every change of the view

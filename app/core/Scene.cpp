@@ -1227,7 +1227,7 @@ bool Scene::streamlinesNeedTracing() const {
   const StreamlineLayer& l = state_.streamlines;
   if (!l.shown || !session_) return false;
   return !streamlineResult_ || streamlineResult_->session != session_.get() || streamlineResult_->step != state_.step ||
-         !streamlineResult_->layer.sameLinesAs(l);
+         streamlineResult_->interpolation != state_.volume.interpolation || !streamlineResult_->layer.sameLinesAs(l);
 }
 
 bool Scene::streamlinesDrawn() const {
@@ -1236,7 +1236,7 @@ bool Scene::streamlinesDrawn() const {
 
 std::shared_ptr<const StreamlineResult> Scene::traceStreamlines(const Progress& progress) const {
   if (!session_) throw std::invalid_argument("open a model first");
-  return traceStreamlineLayer(*session_, state_.streamlines, state_.step, progress);
+  return traceStreamlineLayer(*session_, state_.streamlines, state_.step, state_.volume.interpolation, progress);
 }
 
 void Scene::setStreamlineResult(std::shared_ptr<const StreamlineResult> result) {

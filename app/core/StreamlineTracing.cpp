@@ -3,7 +3,10 @@
 
 #include "StreamlineSeeds.hpp"
 
+#include "host/ElementRefinement.hpp"
 #include "host/PointLocator.hpp"
+
+#include <volpost/core/optics/ElementField.hpp>
 
 #include <glm/geometric.hpp>
 
@@ -12,12 +15,14 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace volpost::app {
 
 std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& l,
-                                                             std::size_t wantedStep, const Progress& progress) {
+                                                             std::size_t wantedStep, FieldInterpolation interpolation,
+                                                             const Progress& progress) {
   const auto start = std::chrono::steady_clock::now();
   const ModelSession* session_ = &session;
   const Model& model = session_->model();
@@ -27,12 +32,14 @@ std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession&
   std::vector<double> nodal = f->values(step);
   if (f->location() == FieldLocation::Cell) nodal = averageCellVectorsToNodes(model.mesh(), nodal);
   const TetMesh& tets = session_->tetrahedra();
-  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh(), nodal));
+  const bool own = interpolation == FieldInterpolation::Element;
+  const StreamlineTracer tracer(tets, tetNodeVectors(tets, model.mesh(), nodal), own ? &model.mesh() : nullptr);
   const std::vector<glm::dvec3> seeds = seedPoints(l.seeds, *session_);
   auto result = std::make_shared<StreamlineResult>();
   result->layer = l;
   result->session = session_;
   result->step = wantedStep;
+  result->interpolation = interpolation;
   result->seeds = seeds.size();
   result->lines = tracer.traceAll(seeds, l.settings, &result->outside, progress);
   if (!seeds.empty() && result->outside == seeds.size()) {
@@ -57,13 +64,28 @@ std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession&
     result->valueName = view.quantity.displayName();
     const std::vector<double> values = session_->tetValues(view);
     const PointLocator locator(tets);
+    // The cells' own field, where asked for and the values are at the nodes.
+    std::vector<double> converted;
+    const bool ownValues = own && view.location == FieldLocation::Node && hasNonlinearCells(model.mesh());
+    const std::optional<optics::ElementField> field =
+        ownValues ? std::optional<optics::ElementField>(std::in_place, model.mesh(), view.values.doubles(converted),
+                                                        tets, glm::dvec3(0.0))
+                  : std::nullopt;
+    const auto valueAt = [&](const PointLocation& at, const glm::dvec3& p) {
+      if (view.location != FieldLocation::Node) return values[at.tet];
+      if (field) {
+        const std::uint32_t cell = tets.sourceCell(at.tet);
+        glm::dvec3 xi = field->start(cell);
+        if (!field->linearIn(cell))
+          if (const auto v = field->value(cell, p, xi)) return *v;
+      }
+      return PointLocator::interpolateNodal(at, values);
+    };
     for (const Streamline& line : result->lines) {
       std::vector<double> v;
       for (const glm::dvec3& p : line.points) {
         const auto at = locator.locate(p, 1e-6);
-        v.push_back(!at                                    ? std::nan("")
-                    : view.location == FieldLocation::Node ? PointLocator::interpolateNodal(*at, values)
-                                                           : values[at->tet]);
+        v.push_back(at ? valueAt(*at, p) : std::nan(""));
       }
       result->values.push_back(std::move(v));
     }

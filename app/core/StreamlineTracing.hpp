@@ -20,9 +20,10 @@ namespace volpost::app {
 
 /// Streamlines traced for a StreamlineLayer, and the values they are colored by.
 struct StreamlineResult {
-  StreamlineLayer layer;                  ///< what they were traced for
-  const ModelSession* session = nullptr;  ///< on which model
-  std::size_t step = 0;                   ///< and step
+  StreamlineLayer layer;                                              ///< what they were traced for
+  const ModelSession* session = nullptr;                              ///< on which model
+  std::size_t step = 0;                                               ///< and step
+  FieldInterpolation interpolation = FieldInterpolation::Tetrahedra;  ///< and field inside the cells
   std::vector<Streamline> lines;
   std::vector<std::vector<double>> values;  ///< per point of each line
   std::string valueName;                    ///< "velocity speed", or the quantity's name
@@ -31,9 +32,12 @@ struct StreamlineResult {
   double milliseconds = 0.0;                ///< tracing time
 };
 
-/// Traces a streamline layer's lines on a model at a step (no GL; any thread). Throws
+/// Traces a streamline layer's lines on a model at a step (no GL; any thread), the velocity
+/// and the values they are colored by interpolated inside the cells as `interpolation`
+/// says (the cells' own shape functions, or linear on their split). Throws
 /// std::invalid_argument for a field or seeds that do not fit; Cancelled on request.
 std::shared_ptr<const StreamlineResult> traceStreamlineLayer(const ModelSession& session, const StreamlineLayer& layer,
-                                                             std::size_t step, const Progress& progress = {});
+                                                             std::size_t step, FieldInterpolation interpolation,
+                                                             const Progress& progress = {});
 
 }  // namespace volpost::app

@@ -136,10 +136,11 @@ void StreamlineActions::trace() {
   const std::shared_ptr<const ModelSession> session = scene_.sharedSession();
   const StreamlineLayer layer = scene_.streamlines();
   const std::size_t step = scene_.step();
+  const FieldInterpolation interpolation = scene_.volume().interpolation;
   runWithProgress<std::shared_ptr<const StreamlineResult>>(
       window_, "Tracing streamlines", 500,
-      [session, layer, step](const Progress& progress) {
-        return traceStreamlineLayer(*session, layer, step, progress);
+      [session, layer, step, interpolation](const Progress& progress) {
+        return traceStreamlineLayer(*session, layer, step, interpolation, progress);
       },
       [this](WorkOutcome<std::shared_ptr<const StreamlineResult>> t) {
         tracing_ = false;

@@ -48,7 +48,8 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
   interpolation_->setCheckable(true);
   interpolation_->setToolTip(
       "Draw the field as the solver defines it in each cell (trilinear in a hexahedron, quadratic in a "
-      "10-node tetrahedron); off: linear on the tetrahedra the cells are split into");
+      "10-node tetrahedron) in the volume, sections, slices, iso-surfaces and streamlines, and cut sections "
+      "through the cells' own curved shapes; off: linear on the tetrahedra the cells are split into");
   connect(interpolation_, &QAction::toggled, this, &VolumeActions::drawCellsOwnField);
   tolerance_ = view.addAction(QString());  // the text shows the value (syncToScene)
   tolerance_->setObjectName("elementToleranceAction");
@@ -114,8 +115,10 @@ void VolumeActions::drawCellsOwnField(bool on) {
   } else if (changeScene_([on](Scene& s) {
                s.setInterpolation(on ? FieldInterpolation::Element : FieldInterpolation::Tetrahedra);
              })) {
-    QString message = on ? "The volume shows each cell's own interpolation of the node values"
-                         : "The volume shows the field linear on the tetrahedra the cells are split into";
+    QString message = on ? "The volume, sections, iso-surfaces and streamlines show each cell's own interpolation "
+                           "of the node values"
+                         : "The volume, sections, iso-surfaces and streamlines show the field linear on the "
+                           "tetrahedra the cells are split into";
     if (on)
       for (const std::string& note : cellsDrawnBySplit()) message += "; " + QString::fromStdString(note);
     window_.statusBar()->showMessage(message);

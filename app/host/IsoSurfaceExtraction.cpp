@@ -157,4 +157,35 @@ ExtractedSurface extractIsoSurface(const RegularGrid& grid, SampleView values, d
   return out;
 }
 
+ExtractedSurface extractIsoSurface(const optics::ElementField& field, double iso, const RefinementLimits& limits,
+                                   const Progress& progress) {
+  const TetMesh& split = field.split();
+  const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
+  // Whether each cell's field can reach the value: -1 not yet known, 0 no, 1 yes.
+  std::vector<signed char> reaches(field.mesh().cellCount(), -1);
+  std::vector<std::uint32_t> chosen;
+  for (std::size_t t = 0; t < split.mesh.cellCount(); ++t) {
+    const std::uint32_t cell = split.sourceCell(t);
+    if (field.linearIn(cell)) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (NodeIndex n : split.mesh.cellNodes(t)) lo = std::min(lo, splitValues[n]), hi = std::max(hi, splitValues[n]);
+      if (lo <= iso && iso <= hi) chosen.push_back(std::uint32_t(t));
+      continue;
+    }
+    if (reaches[cell] < 0) {
+      const auto bound = field.valueBound(cell);
+      reaches[cell] = bound && bound->first <= iso && iso <= bound->second ? 1 : 0;
+    }
+    if (reaches[cell] == 1) chosen.push_back(std::uint32_t(t));
+  }
+  Progress refining = progress;
+  refining.setStage("refining cells");
+  const RefinedTetrahedra refined = refineTetrahedra(field, chosen, limits, refining);
+  ExtractedSurface out = extractIsoSurface(refined.tets, refined.values, iso, progress);
+  out.refinement = refined.level;
+  out.deviation = refined.deviation;
+  out.toleranceReached = refined.toleranceReached;
+  return out;
+}
+
 }  // namespace volpost

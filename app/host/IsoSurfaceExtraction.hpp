@@ -8,6 +8,7 @@
 #include <volpost/core/Tetrahedralize.hpp>
 
 #include "host/BoundarySurface.hpp"
+#include "host/ElementRefinement.hpp"
 
 #include <span>
 
@@ -20,6 +21,12 @@ struct ExtractedSurface {
   /// Triangles kept with vertices of their own where sheets touch at one vertex (a node
   /// exactly at the iso-value between two of them), which a manifold mesh cannot share.
   std::size_t separatedFaces = 0;
+  /// From the cells' own field: the subdivisions of the split's tetrahedra along each edge
+  /// (0: the split's field as it is), the deviation estimated to be left (relative, see
+  /// RefinedTetrahedra) and whether it is within the tolerance asked for.
+  int refinement = 0;
+  double deviation = 0.0;
+  bool toleranceReached = true;
 };
 
 /// The surface value == iso of a nodal field given on `tets.mesh`'s nodes (see
@@ -28,6 +35,13 @@ struct ExtractedSurface {
 /// values. Tets with a NaN value are left out. Throws std::invalid_argument on a value
 /// count that is not one per node.
 ExtractedSurface extractIsoSurface(const TetMesh& tets, std::span<const double> nodeValues, double iso,
+                                   const Progress& progress = {});
+
+/// The level set of the cells' own field (`field`: their shape functions, trilinear in a
+/// hex8, quadratic in a tet10), not of its split's linear field: the split's tetrahedra in
+/// cells whose field can reach `iso` (ElementField::valueBound) are refined to `limits`
+/// (ElementRefinement) and the pieces contoured. Closed and oriented like the split's.
+ExtractedSurface extractIsoSurface(const optics::ElementField& field, double iso, const RefinementLimits& limits = {},
                                    const Progress& progress = {});
 
 /// The same for a regular grid's point values without building its cells or tetrahedra:

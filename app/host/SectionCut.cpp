@@ -97,6 +97,46 @@ SectionTriangles cutTetrahedra(const TetMesh& tets, std::span<const double> valu
   return out;
 }
 
+SectionTriangles cutCells(const optics::ElementField& field, std::span<const double> cellValues, const ClipPlane& plane,
+                          const RefinementLimits& limits) {
+  const double length = glm::length(plane.normal);
+  if (!(length > 0.0) || !std::isfinite(length)) return {};
+  const glm::dvec3 normal = plane.normal / length;
+  const Mesh& cells = field.mesh();
+  const TetMesh& split = field.split();
+  // A curved cell bulges past its nodes by less than a quarter of their spread across the
+  // plane (a midside node's Bezier control point lies twice as far off the chord).
+  std::vector<signed char> crossed(cells.cellCount(), -1);
+  std::vector<std::uint32_t> chosen;
+  for (std::size_t t = 0; t < split.mesh.cellCount(); ++t) {
+    const std::uint32_t cell = split.sourceCell(t);
+    if (crossed[cell] < 0) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (NodeIndex n : cells.cellNodes(cell)) {
+        const double d = signedDistance(cells.nodes[n], plane, normal);
+        lo = std::min(lo, d), hi = std::max(hi, d);
+      }
+      const double margin = 0.25 * (hi - lo);
+      crossed[cell] = lo - margin <= 0.0 && 0.0 <= hi + margin ? 1 : 0;
+    }
+    if (crossed[cell] == 1) chosen.push_back(std::uint32_t(t));
+  }
+  const RefinedTetrahedra refined = refineTetrahedra(field, chosen, limits);
+  std::vector<double> pieceValues;
+  if (!cellValues.empty()) {
+    pieceValues.resize(refined.tets.mesh.cellCount());
+    for (std::size_t p = 0; p < pieceValues.size(); ++p) {
+      const std::uint32_t cell = refined.tets.sourceCell(p);
+      pieceValues[p] = cell < cellValues.size() ? cellValues[cell] : std::numeric_limits<double>::quiet_NaN();
+    }
+  }
+  SectionTriangles out = cellValues.empty() ? cutTetrahedra(refined.tets, refined.values, true, plane)
+                                            : cutTetrahedra(refined.tets, pieceValues, false, plane);
+  out.refinement = refined.level;
+  out.toleranceReached = refined.toleranceReached;
+  return out;
+}
+
 // Each cell the plane crosses is split into the six tets around its diagonal from corner
 // (0,0,0) to (1,1,1) (Freudenthal's split: the same in every cell, so neighbours' pieces
 // meet), positions and distances from the cell's indices, no hexahedra needed.

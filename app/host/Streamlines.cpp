@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "host/Streamlines.hpp"
+#include "host/ElementRefinement.hpp"
+
+#include <volpost/core/CellShape.hpp>
 
 #include <volpost/core/TetAdjacency.hpp>
 #include <volpost/core/WorkerThreads.hpp>
@@ -69,8 +72,19 @@ const char* describe(StreamlineStop stop) {
   return "?";
 }
 
-StreamlineTracer::StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors)
+StreamlineTracer::StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors, const Mesh* cells)
     : tets_(tets), vectors_(std::move(vectors)), neighbors_(faceNeighbors(tets.mesh)), locator_(tets) {
+  if (cells && hasNonlinearCells(*cells)) {
+    cells_ = cells;
+    ownField_.assign(cells->cellCount(), 0);
+    std::vector<glm::dvec3> nodes;
+    for (std::size_t c = 0; c < cells->cellCount(); ++c) {
+      if (cells->cellType(c) == CellType::Tet4) continue;
+      nodes.clear();
+      for (NodeIndex n : cells->cellNodes(c)) nodes.push_back(cells->nodes[n]);
+      ownField_[c] = mapInvertible(cells->cellType(c), nodes);  // else its split's field, as the volume draws it
+    }
+  }
   if (vectors_.size() != tets.mesh.nodeCount())
     throw std::invalid_argument("streamlines: " + std::to_string(vectors_.size()) + " vectors for " +
                                 std::to_string(tets.mesh.nodeCount()) + " nodes");
@@ -95,9 +109,32 @@ glm::dvec4 StreamlineTracer::barycentric(std::uint32_t tet, const glm::dvec3& p)
 
 glm::dvec3 StreamlineTracer::velocityIn(std::uint32_t tet, const glm::dvec3& p) const {
   const glm::dvec4 w = barycentric(tet, p);
+  if (cells_ && ownField_[tets_.sourceCell(tet)])
+    if (const auto v = ownVelocity(tet, w, p)) return *v;
   const auto n = tets_.mesh.cellNodes(tet);
   glm::dvec3 v(0.0);
   for (int k = 0; k < 4; ++k) v += std::clamp(w[k], -1e-6, 1.0 + 1e-6) * vectors_[n[std::size_t(k)]];
+  return v;
+}
+
+std::optional<glm::dvec3> StreamlineTracer::ownVelocity(std::uint32_t tet, const glm::dvec4& w,
+                                                        const glm::dvec3& p) const {
+  const std::uint32_t cell = tets_.sourceCell(tet);
+  const CellType type = cells_->cellType(cell);
+  const auto ids = cells_->cellNodes(cell);
+  std::array<glm::dvec3, kMaxCellNodes> nodes;
+  const std::size_t count = std::min<std::size_t>(ids.size(), kMaxCellNodes);
+  for (std::size_t i = 0; i < count; ++i) nodes[i] = cells_->nodes[ids[i]];
+  // Newton's method starts where the split's tet puts the point: close, so few steps.
+  glm::dvec3 start(0.0);
+  const auto corners = tets_.mesh.cellNodes(tet);
+  for (int k = 0; k < 4; ++k)
+    start += std::clamp(w[k], 0.0, 1.0) * naturalCoordinatesOfSplitNode(*cells_, cell, corners[std::size_t(k)]);
+  const auto xi = naturalCoordinates(type, std::span<const glm::dvec3>(nodes.data(), count), p, start);
+  if (!xi) return std::nullopt;
+  const ShapeValues n = shapeFunctions(type, clampToReference(type, *xi));
+  glm::dvec3 v(0.0);
+  for (std::size_t i = 0; i < count; ++i) v += n[i] * vectors_[ids[i]];
   return v;
 }
 

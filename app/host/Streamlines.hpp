@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,8 +66,12 @@ struct Streamline {
 
 class StreamlineTracer {
  public:
-  /// `vectors`: one per node of tets.mesh (original nodes, then Steiner points).
-  StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors);
+  /// `vectors`: one per node of tets.mesh (original nodes, then Steiner points). With
+  /// `cells` (the mesh `tets` splits), the velocity inside a cell other than a tet4 is the
+  /// cells' own interpolation of the node vectors (trilinear in a hex8, quadratic in a tet10;
+  /// its natural coordinates found by Newton's method from the split's), not the split's
+  /// linear one; the walk still goes through the split's tetrahedra. `cells` must outlive this.
+  StreamlineTracer(const TetMesh& tets, std::vector<glm::dvec3> vectors, const Mesh* cells = nullptr);
 
   /// Throws std::invalid_argument naming the point when the seed is not in the mesh.
   /// `pointsLeft`, where given, is shared by lines traced together: each point written takes
@@ -81,7 +86,7 @@ class StreamlineTracer {
 
   double modelSize() const { return modelSize_; }
   double maxSpeed() const { return maxSpeed_; }
-  /// The field at a point inside `tet` (linear interpolation).
+  /// The field at a point inside `tet` (linear interpolation, or its cell's own).
   glm::dvec3 velocityIn(std::uint32_t tet, const glm::dvec3& p) const;
 
  private:
@@ -101,8 +106,14 @@ class StreamlineTracer {
                    std::size_t& steps, std::size_t& rejected, double& length, double& closure,
                    std::atomic<std::int64_t>* pointsLeft) const;
 
+  /// The cell's own interpolation at p, barycentric weights `w` in the split's `tet`;
+  /// nullopt where the cell's map is not inverted there.
+  std::optional<glm::dvec3> ownVelocity(std::uint32_t tet, const glm::dvec4& w, const glm::dvec3& p) const;
+
   const TetMesh& tets_;
   std::vector<glm::dvec3> vectors_;
+  const Mesh* cells_ = nullptr;
+  std::vector<char> ownField_;  ///< per cell: drawn by its own shape functions
   std::vector<glm::ivec4> neighbors_;
   PointLocator locator_;
   double modelSize_ = 1.0, maxSpeed_ = 0.0;

@@ -4,6 +4,7 @@
 // analytic flow around the post of ../shared/data (against the exact field integrated
 // with a tight tolerance), plus the ways a line ends: leaving the mesh (on the boundary
 // face), stagnation, a seed outside the mesh.
+#include "support/HexLattice.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 #include "support/TetGrid.hpp"
@@ -179,6 +180,44 @@ TEST(Streamlines, LinearFieldKeepsTheInvariantOfItsExactSolution) {
     EXPECT_LT(worst, 1e-4) << toString(method);
     EXPECT_EQ(line.forwardStop, StreamlineStop::LeftMesh);
     EXPECT_EQ(line.backwardStop, StreamlineStop::LeftMesh);
+  }
+}
+
+TEST(Streamlines, InHexahedraTheCellsOwnTrilinearVelocityIsFollowed) {
+  // v = (1, 0, y z) is its own trilinear interpolant in hex8 cells: z = z0 e^(y0 x) along the
+  // line from x = 0. The split's linear pieces of y z bend the line off it; the cells' own
+  // field keeps it to the integration tolerance. Straight and bent cells alike.
+  for (const bool bent : {false, true}) {
+    SCOPED_TRACE(bent ? "bent cells" : "straight cells");
+    const Mesh mesh = test::hexLattice(CellType::Hex8, 4, [bent](const glm::dvec3& g) {
+      const glm::dvec3 p = g / 4.0;
+      return bent ? p + 0.04 * glm::dvec3(0.0, std::sin(3.0 * p.x), std::sin(3.0 * p.y)) * (p.x * (1.0 - p.x)) : p;
+    });
+    std::vector<double> nodal;
+    for (const glm::dvec3& p : mesh.nodes) nodal.insert(nodal.end(), {1.0, 0.0, p.y * p.z});
+    const TetMesh tets = tetrahedralize(mesh);
+    const StreamlineTracer own(tets, tetNodeVectors(tets, mesh, nodal), &mesh);
+    const StreamlineTracer split(tets, tetNodeVectors(tets, mesh, nodal));
+    StreamlineSettings settings;
+    settings.direction = StreamlineDirection::Forward;
+    settings.tolerance = 1e-8;
+    const glm::dvec3 seed(0.0, 0.7, 0.3);
+    const auto miss = [&](const Streamline& line) {
+      double worst = 0.0;
+      for (const glm::dvec3& p : line.points) worst = std::max(worst, std::abs(p.z - seed.z * std::exp(seed.y * p.x)));
+      return worst;
+    };
+    const Streamline a = own.trace(seed, settings), b = split.trace(seed, settings);
+    EXPECT_NEAR(a.points.back().x, 1.0, 1e-9);
+    if (!bent) {  // bent cells carry another field (the nodes moved, the values at them not)
+      EXPECT_LT(miss(a), 1e-6);
+      EXPECT_GT(miss(b), 1e-4);
+    } else {
+      EXPECT_GT(std::abs(a.points.back().z - b.points.back().z), 1e-5);
+    }
+    // The line's own velocities are the trilinear field at its points.
+    for (std::size_t k = 0; k < a.points.size() && !bent; ++k)
+      EXPECT_NEAR(a.velocity[k].z, a.points[k].y * a.points[k].z, 1e-9);
   }
 }
 

@@ -31,6 +31,10 @@ class ElementField {
   ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin);
 
   std::uint32_t cellOfTet(std::size_t tet) const { return tets_.sourceCell(tet); }
+  const Mesh& mesh() const { return mesh_; }
+  const TetMesh& split() const { return tets_; }
+  /// The node values, one per node of mesh().
+  std::span<const double> values() const { return values_; }
   /// Where the split's linear field is the whole story: a tet4, or a cell whose map cannot
   /// be inverted (folded, inverted, collapsed: drawn by its split and listed).
   bool linearIn(std::uint32_t cell) const { return !elementCells_[cell]; }

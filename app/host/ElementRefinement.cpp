@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+#include "host/ElementRefinement.hpp"
+
+#include <volpost/core/CellShape.hpp>
+#include <volpost/core/optics/ElementField.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+namespace volpost {
+namespace {
+
+// A point of the lattice on a split tetrahedron, named by the split's nodes it is a
+// weighted mean of (weights out of the level): the same name from every tetrahedron that
+// shares the face or edge it lies on, so neighbours share it.
+using LatticeKey = std::array<std::uint64_t, 4>;
+
+struct LatticeKeyHash {
+  std::size_t operator()(const LatticeKey& k) const {
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (std::uint64_t v : k) h = (h ^ v) * 0x100000001B3ull, h ^= h >> 29;
+    return std::size_t(h);
+  }
+};
+
+LatticeKey latticeKey(const std::array<NodeIndex, 4>& corners, const std::array<int, 4>& weights) {
+  LatticeKey key;
+  key.fill(std::numeric_limits<std::uint64_t>::max());
+  int used = 0;
+  for (int k = 0; k < 4; ++k)
+    if (weights[std::size_t(k)] > 0)
+      key[std::size_t(used++)] = (std::uint64_t(corners[std::size_t(k)]) << 8) | std::uint64_t(weights[std::size_t(k)]);
+  for (int i = 1; i < used; ++i)  // at most four: an insertion sort
+    for (int j = i; j > 0 && key[std::size_t(j - 1)] > key[std::size_t(j)]; --j)
+      std::swap(key[std::size_t(j - 1)], key[std::size_t(j)]);
+  return key;
+}
+
+// One cell of the model as the refinement sees it: its map and field, or (linear) the
+// split tetrahedron's own corners.
+class CellMap {
+ public:
+  CellMap(const Mesh& cells, const optics::ElementField& field, const TetMesh& split,
+          std::span<const double> splitValues)
+      : cells_(cells), field_(field), split_(split), splitValues_(splitValues) {}
+
+  /// Prepares for split tetrahedron `tet`; false when its cell is drawn linearly.
+  bool select(std::size_t tet) {
+    cell_ = split_.sourceCell(tet);
+    const auto tetNodes = split_.mesh.cellNodes(tet);
+    for (int k = 0; k < 4; ++k) corners_[std::size_t(k)] = tetNodes[std::size_t(k)];
+    linear_ = field_.linearIn(cell_);
+    if (linear_) return false;
+    type_ = cells_.cellType(cell_);
+    const auto ids = cells_.cellNodes(cell_);
+    count_ = int(ids.size());
+    for (int i = 0; i < count_; ++i) nodes_[std::size_t(i)] = cells_.nodes[ids[std::size_t(i)]];
+    for (int k = 0; k < 4; ++k)
+      xi_[std::size_t(k)] = naturalCoordinatesOfSplitNode(cells_, cell_, corners_[std::size_t(k)]);
+    return true;
+  }
+
+  const std::array<NodeIndex, 4>& corners() const { return corners_; }
+  std::uint32_t cell() const { return cell_; }
+
+  /// The point at barycentric weights `w` (summing to 1) of the split tetrahedron.
+  void at(const std::array<double, 4>& w, glm::dvec3& position, double& value) const {
+    if (linear_) {
+      position = glm::dvec3(0.0);
+      value = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        position += w[std::size_t(k)] * split_.mesh.nodes[corners_[std::size_t(k)]];
+        value += w[std::size_t(k)] * splitValues_[corners_[std::size_t(k)]];
+      }
+      return;
+    }
+    glm::dvec3 xi(0.0);
+    for (int k = 0; k < 4; ++k) xi += w[std::size_t(k)] * xi_[std::size_t(k)];
+    position = positionAt(type_, std::span<const glm::dvec3>(nodes_.data(), std::size_t(count_)), xi);
+    value = field_.valueAt(cell_, xi);
+  }
+
+ private:
+  const Mesh& cells_;
+  const optics::ElementField& field_;
+  const TetMesh& split_;
+  std::span<const double> splitValues_;
+  std::uint32_t cell_ = 0;
+  std::array<NodeIndex, 4> corners_{};
+  bool linear_ = true;
+  CellType type_ = CellType::Tet4;
+  int count_ = 0;
+  std::array<glm::dvec3, kMaxCellNodes> nodes_{};
+  std::array<glm::dvec3, 4> xi_{};
+};
+
+// How far the split tetrahedron's straight edges and linear values stray from the cell's
+// map and field, the larger of the two, relative: at the midpoints of its six edges and of
+// the diagonal its pieces get (from the middle of edge 0-1 to the middle of edge 2-3; a
+// piece's diagonal is twice as long, relative to the level, so it strays 4 times as far).
+double deviationOf(const CellMap& map, double valueScale) {
+  struct Segment {
+    std::array<double, 4> from, to;
+    double weight;
+  };
+  static const Segment kSegments[] = {{{1, 0, 0, 0}, {0, 1, 0, 0}, 1},        {{1, 0, 0, 0}, {0, 0, 1, 0}, 1},
+                                      {{1, 0, 0, 0}, {0, 0, 0, 1}, 1},        {{0, 1, 0, 0}, {0, 0, 1, 0}, 1},
+                                      {{0, 1, 0, 0}, {0, 0, 0, 1}, 1},        {{0, 0, 1, 0}, {0, 0, 0, 1}, 1},
+                                      {{0.5, 0.5, 0, 0}, {0, 0, 0.5, 0.5}, 4}};
+  double worst = 0.0;
+  for (const Segment& s : kSegments) {
+    std::array<double, 4> mid;
+    for (int k = 0; k < 4; ++k) mid[std::size_t(k)] = 0.5 * (s.from[std::size_t(k)] + s.to[std::size_t(k)]);
+    glm::dvec3 a, b, m;
+    double fa = 0.0, fb = 0.0, fm = 0.0;
+    map.at(s.from, a, fa), map.at(s.to, b, fb), map.at(mid, m, fm);
+    const double length = glm::length(b - a);
+    if (length > 0.0) worst = std::max(worst, s.weight * glm::length(m - 0.5 * (a + b)) / length);
+    const double fd = s.weight * std::abs(fm - 0.5 * (fa + fb)) / valueScale;
+    if (std::isfinite(fd)) worst = std::max(worst, fd);
+  }
+  return worst;
+}
+
+// The n^3 pieces of a tetrahedron subdivided n times along each edge, as lattice points
+// (a, b, c) (weights n - a - b - c, a, b, c on its corners): an upright piece at every
+// point, the octahedron between them cut into four along one diagonal, and an inverted piece.
+template <typename Emit>
+void forEachPiece(int n, Emit emit) {
+  using P = std::array<int, 3>;
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; a + b < n; ++b)
+      for (int c = 0; a + b + c < n; ++c) {
+        emit(P{a, b, c}, P{a + 1, b, c}, P{a, b + 1, c}, P{a, b, c + 1});
+        if (a + b + c > n - 2) continue;
+        const P A{a + 1, b, c}, B{a, b + 1, c}, C{a, b, c + 1};
+        const P D{a + 1, b + 1, c}, E{a + 1, b, c + 1}, F{a, b + 1, c + 1};
+        emit(A, F, B, D), emit(A, F, D, E), emit(A, F, E, C), emit(A, F, C, B);
+        if (a + b + c <= n - 3) emit(D, E, F, P{a + 1, b + 1, c + 1});
+      }
+}
+
+int levelFor(double deviation, const RefinementLimits& limits, std::size_t chosen) {
+  const double tolerance = std::max(limits.tolerance, 1e-12);
+  int level = deviation <= tolerance ? 1 : int(std::ceil(std::sqrt(deviation / tolerance) - 1e-9));
+  level = std::clamp(level, 1, std::max(limits.maxLevel, 1));
+  while (level > 1 && double(chosen) * level * level * level > double(limits.maxTetrahedra)) --level;
+  return level;
+}
+
+}  // namespace
+
+glm::dvec3 naturalCoordinatesOfSplitNode(const Mesh& cells, std::uint32_t cell, NodeIndex node) {
+  const CellType type = cells.cellType(cell);
+  const auto ids = cells.cellNodes(cell);
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] == node) return naturalCoordinatesOfNode(type, int(i));
+  const int corners = topology(type).cornerCount;
+  glm::dvec3 mean(0.0);
+  for (int i = 0; i < corners; ++i) mean += naturalCoordinatesOfNode(type, i);
+  return mean / double(corners);
+}
+
+bool hasNonlinearCells(const Mesh& cells) {
+  for (CellType type : cells.cellTypes())
+    if (type != CellType::Tet4) return true;
+  return false;
+}
+
+RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<const std::uint32_t> chosen,
+                                   const RefinementLimits& limits, const Progress& progress) {
+  const TetMesh& split = field.split();
+  const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
+  CellMap map(field.mesh(), field, split, splitValues);
+
+  double worst = 0.0;
+  for (std::size_t i = 0; i < chosen.size(); ++i)
+    if (map.select(chosen[i])) worst = std::max(worst, deviationOf(map, field.valueScale()));
+  RefinedTetrahedra out;
+  const int n = out.level = levelFor(worst, limits, chosen.size());
+  out.deviation = worst / double(n * n);
+  out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
+
+  std::unordered_map<LatticeKey, NodeIndex, LatticeKeyHash> known;
+  std::vector<NodeIndex> lattice(std::size_t((n + 1) * (n + 1) * (n + 1)));
+  const auto slot = [n](const std::array<int, 3>& p) { return std::size_t((p[0] * (n + 1) + p[1]) * (n + 1) + p[2]); };
+  std::vector<NodeIndex> connectivity;
+  connectivity.reserve(chosen.size() * std::size_t(n * n * n) * 4);
+  out.tets.cellOfTet.reserve(chosen.size() * std::size_t(n * n * n));
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    if (i % 4096 == 0) progress.report(double(i) / double(chosen.size()));
+    map.select(chosen[i]);
+    for (int a = 0; a <= n; ++a)
+      for (int b = 0; a + b <= n; ++b)
+        for (int c = 0; a + b + c <= n; ++c) {
+          const std::array<int, 4> weights{n - a - b - c, a, b, c};
+          const auto [it, added] = known.try_emplace(latticeKey(map.corners(), weights), NodeIndex(out.values.size()));
+          if (added) {
+            glm::dvec3 position;
+            double value = 0.0;
+            map.at({weights[0] / double(n), a / double(n), b / double(n), c / double(n)}, position, value);
+            out.tets.mesh.nodes.push_back(position);
+            out.values.push_back(value);
+          }
+          lattice[slot({a, b, c})] = it->second;
+        }
+    forEachPiece(n, [&](const auto& p0, const auto& p1, const auto& p2, const auto& p3) {
+      std::array<NodeIndex, 4> piece{lattice[slot(p0)], lattice[slot(p1)], lattice[slot(p2)], lattice[slot(p3)]};
+      const auto& x = out.tets.mesh.nodes;
+      // Positive, as the split's tetrahedra are (the cell's map keeps orientation).
+      if (glm::dot(x[piece[1]] - x[piece[0]], glm::cross(x[piece[2]] - x[piece[0]], x[piece[3]] - x[piece[0]])) < 0.0)
+        std::swap(piece[2], piece[3]);
+      connectivity.insert(connectivity.end(), piece.begin(), piece.end());
+      out.tets.cellOfTet.push_back(map.cell());
+    });
+  }
+  out.tets.mesh.takeCells(CellType::Tet4, std::move(connectivity));
+  out.tets.originalNodes = out.tets.mesh.nodes.size();
+  progress.report(1.0);
+  return out;
+}
+
+}  // namespace volpost

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// The cells' own field and shape, on tetrahedra that surfaces are drawn from. Each chosen
+// tetrahedron of a cell's split is subdivided n times along every edge in the cell's
+// natural coordinates; its new points are placed by the cell's isoparametric map and take
+// the value of the cell's shape functions there. Marching tetrahedra over the result then
+// finds the finite-element field's own level set (rounded where a hex8's trilinear field
+// is, not faceted like its split's) and the section of a curved cell by a plane, colored
+// by the cell's interpolation, to the tolerance (docs/methods/element_field.md).
+#pragma once
+
+#include <volpost/core/Mesh.hpp>
+#include <volpost/core/Progress.hpp>
+#include <volpost/core/Tetrahedralize.hpp>
+#include <volpost/core/optics/ElementField.hpp>
+
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace volpost {
+
+struct RefinementLimits {
+  /// The most a linear piece may stray from the cell's field (a fraction of the values'
+  /// range) and from its shape (a fraction of the piece's edge), estimated at edge midpoints.
+  double tolerance = 1e-3;
+  int maxLevel = 8;                       ///< subdivisions along an edge at most
+  std::size_t maxTetrahedra = 4'000'000;  ///< the level is lowered to stay below this
+};
+
+struct RefinedTetrahedra {
+  /// The pieces: tet4 cells; cellOfTet names each piece's cell of the model. Points shared
+  /// by neighbouring pieces (across cells too) are one node, so surfaces stay closed.
+  TetMesh tets;
+  std::vector<double> values;  ///< one per node of tets.mesh: the cell's field there
+  int level = 1;               ///< subdivisions along each edge of the split's tetrahedra
+  /// The estimated largest deviation left (of the field, relative to the values' range, or
+  /// of the shape, relative to a piece's edge) and the tolerance it was measured against.
+  double deviation = 0.0;
+  bool toleranceReached = true;  ///< false where maxLevel or maxTetrahedra stopped it
+};
+
+/// The tetrahedra `chosen` (indices into field.split()), refined in their cells of
+/// field.mesh(). Tet4 cells and cells whose map cannot be inverted are subdivided linearly
+/// (their field and shape are the split's). Throws volpost::Cancelled when `progress` cancels.
+RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<const std::uint32_t> chosen,
+                                   const RefinementLimits& limits = {}, const Progress& progress = {});
+
+/// The natural coordinates, in `cell` of `cells`, of a node of the cell's split: the cell's
+/// own node's, or for a point the split added, the mean of the cell's corners'.
+glm::dvec3 naturalCoordinatesOfSplitNode(const Mesh& cells, std::uint32_t cell, NodeIndex node);
+
+/// Whether any cell of `cells` has a field or shape of its own beyond its split's (a cell
+/// other than a tet4).
+bool hasNonlinearCells(const Mesh& cells);
+
+}  // namespace volpost

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Sections and iso-surfaces of the cells' own field and shape from the command line: a
+// quarter cylinder of hex20 cells whose midside nodes sit on the arcs, cut by a plane and
+// drawn from above. The section of the cells' own (curved) shapes is the round quarter
+// annulus; the split's is bounded by chords across each cell. `volpost surface
+// --interpolation element` writes the level set of the cells' own field.
+#include "ProcessRunner.hpp"
+
+#include <QImage>
+#include <QRect>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using volpost::test::runVolpost;
+
+namespace {
+
+// VTK's quadratic hexahedron: the natural coordinates of its 20 nodes, in its order.
+constexpr int kHex20[20][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1},  {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1},
+                               {-1, 1, 1},   {0, -1, -1}, {1, 0, -1},  {0, 1, -1},  {-1, 0, -1}, {0, -1, 1}, {1, 0, 1},
+                               {0, 1, 1},    {-1, 0, 1},  {-1, -1, 0}, {1, -1, 0},  {1, 1, 0},   {-1, 1, 0}};
+
+// r in [1, 2], theta in [0, 90 degrees], z in [0, 1], n cells each way; T = z (x + 2 y).
+std::string writeQuarterCylinder(const std::string& path, int n) {
+  std::map<std::array<int, 3>, int> index;  // by position in half-cell steps
+  std::ostringstream points, values, cells;
+  int pointCount = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) {
+        cells << 20;
+        for (const auto& xi : kHex20) {
+          const std::array<int, 3> g{2 * i + xi[0] + 1, 2 * j + xi[1] + 1, 2 * k + xi[2] + 1};
+          const auto [it, fresh] = index.emplace(g, pointCount);
+          if (fresh) {
+            const double r = 1.0 + g[0] / (2.0 * n), theta = std::numbers::pi / 2.0 * g[1] / (2.0 * n);
+            const double x = r * std::cos(theta), y = r * std::sin(theta), z = g[2] / (2.0 * n);
+            points << x << ' ' << y << ' ' << z << '\n';
+            values << z * (x + 2.0 * y) << '\n';
+            ++pointCount;
+          }
+          cells << ' ' << it->second;
+        }
+        cells << '\n';
+      }
+  const int count = n * n * n;
+  std::ofstream out(path);
+  out.precision(17);
+  out << "# vtk DataFile Version 4.2\nquarter cylinder\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << pointCount
+      << " double\n"
+      << points.str() << "CELLS " << count << ' ' << 21 * count << '\n'
+      << cells.str() << "CELL_TYPES " << count << '\n';
+  for (int c = 0; c < count; ++c) out << "25\n";
+  out << "POINT_DATA " << pointCount << "\nSCALARS T double 1\nLOOKUP_TABLE default\n" << values.str();
+  return path;
+}
+
+bool covered(const QImage& image, int x, int y) {
+  const QRgb background = image.pixel(0, 0), p = image.pixel(x, y);
+  return std::abs(qRed(p) - qRed(background)) + std::abs(qGreen(p) - qGreen(background)) +
+             std::abs(qBlue(p) - qBlue(background)) >
+         12;
+}
+
+// Pixels drawn inside the hole of the quarter annulus (radius below `radius`), the picture
+// framed by `frame` (the pixel box the annulus [0, 2] x [0, 2] covers).
+long drawnInsideRadius(const QImage& image, const QRect& frame, double radius) {
+  long drawn = 0;
+  for (int y = frame.top(); y <= frame.bottom(); ++y)
+    for (int x = frame.left(); x <= frame.right(); ++x) {
+      const double mx = 2.0 * (x + 0.5 - frame.left()) / frame.width();
+      const double my = 2.0 * (frame.bottom() + 0.5 - y) / frame.height();
+      drawn += std::hypot(mx, my) < radius && covered(image, x, y);
+    }
+  return drawn;
+}
+
+QRect coveredBox(const QImage& image) {
+  QRect box;
+  for (int y = 0; y < image.height(); ++y)
+    for (int x = 0; x < image.width(); ++x)
+      if (covered(image, x, y)) box |= QRect(x, y, 1, 1);
+  return box;
+}
+
+}  // namespace
+
+TEST(ElementSurfacesCommand, TheSectionOfCurvedCellsIsRoundWithTheirOwnShapes) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeQuarterCylinder(dir + "/quarter.vtk", 3);
+  // From above, parallel projection, the part below z = 0.4 kept: only the section shows.
+  const std::string common = "render " + model +
+                             " --field T --size 400x400 --eye 1,1,5 --target 1,1,0.4 --up 0,1,0 --camera ortho "
+                             "--clip 0,0,0.4,0,0,-1 --no-edges --no-legend --no-triad --flat";
+  const auto ownRun = runVolpost(common + " --interpolation element -o " + dir + "/own.png");
+  ASSERT_EQ(ownRun.exitCode, 0) << ownRun.output;
+  const auto splitRun = runVolpost(common + " --interpolation tetrahedra -o " + dir + "/split.png");
+  ASSERT_EQ(splitRun.exitCode, 0) << splitRun.output;
+  const QImage ownPicture(QString::fromStdString(dir + "/own.png"));
+  const QImage splitPicture(QString::fromStdString(dir + "/split.png"));
+  ASSERT_FALSE(ownPicture.isNull());
+  ASSERT_FALSE(splitPicture.isNull());
+  const QRect frame = coveredBox(ownPicture);
+  ASSERT_GT(frame.width(), 200);
+  EXPECT_LE(std::abs(frame.width() - frame.height()), 2) << "the annulus is as wide as it is high";
+  // The hole is round: the split's chords across 30 degrees cut into it (their middles at
+  // radius cos 15 degrees = 0.966); the cells' own shapes keep to radius 1.
+  const long own = drawnInsideRadius(ownPicture, frame, 0.985), split = drawnInsideRadius(splitPicture, frame, 0.985);
+  EXPECT_LT(own, 15) << "pixels of the cells' own section inside radius 0.985";
+  EXPECT_GT(split, 150) << "pixels of the split's section inside radius 0.985";
+  // A surface picture with nothing the interpolation changes refuses it, saying what it changes.
+  const auto nothing =
+      runVolpost("render " + model + " --field T --size 40x40 --interpolation element -o " + dir + "/nothing.png");
+  EXPECT_EQ(nothing.exitCode, 2);
+  EXPECT_NE(nothing.output.find("changes a surface picture's sections"), std::string::npos) << nothing.output;
+  EXPECT_FALSE(QImage(QString::fromStdString(dir + "/nothing.png")).width() > 0);
+}
+
+TEST(ElementSurfacesCommand, SurfaceWritesTheLevelSetOfTheCellsOwnField) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeQuarterCylinder(dir + "/quarter_iso.vtk", 2);
+  const auto own = runVolpost("surface " + model + " " + dir + "/own.obj --field T --iso 0.8 --interpolation element");
+  ASSERT_EQ(own.exitCode, 0) << own.output;
+  EXPECT_NE(own.output.find("the cells' own field"), std::string::npos) << own.output;
+  // Every vertex of the written surface on T = z (x + 2 y) = 0.8: the field is quadratic in
+  // the hex20's natural coordinates, only near z (x + 2 y), so within a few hundredths.
+  std::ifstream in(dir + "/own.obj");
+  std::string line;
+  int vertices = 0;
+  double worst = 0.0;
+  while (std::getline(in, line))
+    if (line.rfind("v ", 0) == 0) {
+      std::istringstream v(line.substr(2));
+      double x = 0, y = 0, z = 0;
+      v >> x >> y >> z;
+      worst = std::max(worst, std::abs(z * (x + 2.0 * y) - 0.8));
+      ++vertices;
+    }
+  EXPECT_GT(vertices, 100);
+  EXPECT_LT(worst, 0.03);
+  // Refused, with the reason: an unknown choice, and the option without a field.
+  const auto unknown = runVolpost("surface " + model + " " + dir + "/x.obj --field T --iso 0.8 --interpolation cubic");
+  EXPECT_EQ(unknown.exitCode, 2);
+  EXPECT_NE(unknown.output.find("--interpolation cubic is not one of: element, tetrahedra"), std::string::npos)
+      << unknown.output;
+  const auto alone = runVolpost("surface " + model + " " + dir + "/y.obj --interpolation element");
+  EXPECT_EQ(alone.exitCode, 2);
+  EXPECT_NE(alone.output.find("goes with --field"), std::string::npos) << alone.output;
+  EXPECT_FALSE(std::ifstream(dir + "/x.obj").good());
+  EXPECT_FALSE(std::ifstream(dir + "/y.obj").good());
+}
