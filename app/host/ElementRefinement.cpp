@@ -81,7 +81,22 @@ class CellMap {
     }
     glm::dvec3 xi(0.0);
     for (int k = 0; k < 4; ++k) xi += w[std::size_t(k)] * xi_[std::size_t(k)];
-    position = positionAt(type_, std::span<const glm::dvec3>(nodes_.data(), std::size_t(count_)), xi);
+    const std::span<const glm::dvec3> nodes(nodes_.data(), std::size_t(count_));
+    if (type_ == CellType::Pyramid5) {
+      // A pyramid's natural coordinates span a cube whose top face is the apex: straight
+      // pieces there would not tile it. Its edges are straight, so the pieces are placed
+      // in space and the point's coordinates found by the inverse map.
+      position = glm::dvec3(0.0);
+      double linear = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        position += w[std::size_t(k)] * split_.mesh.nodes[corners_[std::size_t(k)]];
+        linear += w[std::size_t(k)] * splitValues_[corners_[std::size_t(k)]];
+      }
+      const auto found = naturalCoordinates(type_, nodes, position, xi);
+      value = found ? field_.valueAt(cell_, clampToReference(type_, *found)) : linear;  // the apex: its own value
+      return;
+    }
+    position = positionAt(type_, nodes, xi);
     value = field_.valueAt(cell_, xi);
   }
 

@@ -8,6 +8,7 @@
 #include "host/IsoSurfaceExtraction.hpp"
 #include "host/SectionCut.hpp"
 #include "support/HexLattice.hpp"
+#include "support/ReferenceCells.hpp"
 #include "support/TetGrid.hpp"
 
 #include <volpost/core/CellShape.hpp>
@@ -211,6 +212,36 @@ TEST(ElementRefinement, PiecesTileTheirCellsAndNeighboursShareTheirPoints) {
       if (!bent) EXPECT_NEAR(volume, 8.0, 1e-12);  // no gaps, no overlaps
       for (std::size_t p = 0; p < r.tets.mesh.cellCount(); p += 17)
         EXPECT_EQ(r.tets.sourceCell(p), split.sourceCell(all[p / std::size_t(level * level * level)]));
+    }
+  }
+}
+
+TEST(ElementRefinement, EveryCellTypeIsTiledAndCarriesItsOwnField) {
+  // One straight cell of each type: the pieces fill it exactly and close over its faces,
+  // and every piece's corner carries the cell's own field at that point (a field with a
+  // quadratic part, which the split's linear pieces would not carry).
+  for (CellType type : kAllCellTypes) {
+    SCOPED_TRACE(std::string(cellTypeName(type)));
+    const auto [mesh, volume] = test::referenceCell(type);
+    const auto f = [](const glm::dvec3& p) { return p.x + 2.0 * p.y * p.z - p.x * p.x + 3.0 * p.x * p.y; };
+    const std::vector<double> values = sampled(mesh, f);
+    const TetMesh split = tetrahedralize(mesh);
+    const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+    std::vector<std::uint32_t> all(split.mesh.cellCount());
+    for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
+    const RefinedTetrahedra r = refineTetrahedra(field, all, RefinementLimits{1e-12, 3});
+    ASSERT_EQ(r.level, type == CellType::Tet4 ? 1 : 3) << "a tet4's linear field needs no refinement";
+    double sum = 0.0;
+    for (std::size_t t = 0; t < r.tets.mesh.cellCount(); ++t) sum += signedCellVolume(r.tets.mesh, t);
+    EXPECT_NEAR(sum, volume, 1e-12) << "positive pieces, no gaps, no overlaps";
+    const BoundarySurface outside = extractBoundary(r.tets.mesh);
+    EXPECT_EQ(outside.nonManifoldFaceCount, 0u);
+    for (const auto e : outside.mesh.edges()) EXPECT_FALSE(outside.mesh.is_boundary(e)) << "closed";
+    for (std::size_t n = 0; n < r.tets.mesh.nodeCount(); ++n) {
+      glm::dvec3 xi = field.start(0);
+      const auto own = field.value(0, r.tets.mesh.nodes[n], xi);
+      ASSERT_TRUE(own.has_value());
+      EXPECT_NEAR(r.values[n], *own, 1e-9);
     }
   }
 }
