@@ -6,8 +6,9 @@ The grid is a Kuhn grid of tetrahedra carrying a smooth wave, or a file given on
 line (tetrahedra: ParaView hands every volume mapper tetrahedra, splitting other cells its own
 way, so only tetrahedral meshes draw the same field as `volpost render`). Under MPI (mpirun
 -np N pvbatch --mpi) the picture would be the ranks' pieces composited by ParaView, allowed
-2/255; ParaView 5.11 on Debian 12 cannot yet move the pieces between ranks
-(docs/user/paraview.md). ParaView's color
+2/255 (ParaView 5.11 on Debian 12 moves pieces between ranks only with
+libvolpost_expat_eager.so preloaded, and the composite is not yet that close everywhere:
+parallel_composite.py measures it). ParaView's color
 map (linear RGB) and opacity function become volpost's transfer function by the rule
 docs/user/paraview.md states, written here independently: control points at every node and
 at 257 evenly spaced values, extinction -ln(1 - opacity) / unit distance.
