@@ -480,7 +480,7 @@ std::vector<Streamline> StreamlineTracer::traceAll(const std::vector<glm::dvec3>
   std::vector<char> missed(seeds.size(), 0);
   std::atomic<std::size_t> next{0}, done{0};
   std::atomic<bool> cancelled{false};
-  runOnThreads(std::max(1u, std::thread::hardware_concurrency()), [&](unsigned worker) {
+  runOnThreads(usableCores(), [&](unsigned worker) {
     for (std::size_t i; !cancelled && (i = next++) < seeds.size();) {
       try {
         lines[i] = trace(seeds[i], settings, &pointsLeft);

@@ -153,7 +153,7 @@ ReferenceImage renderPixelRays(const Camera& camera, int width, int height, cons
     const glm::dvec4 p = toModel * glm::dvec4(x, y, z, 1.0);
     return glm::dvec3(p) / p.w;
   };
-  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  if (threads <= 0) threads = int(usableCores());
   std::atomic<int> nextRow{0}, rowsDone{0};
   std::atomic<bool> stop{false};
   const auto work = [&](unsigned worker) {

@@ -317,7 +317,7 @@ CpuImage renderCpuGrid(const GridSamples& grid, const TransferFunction& tf, cons
   image.height = height;
   image.rgba.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
   if (width <= 0 || height <= 0) return image;
-  const unsigned threads = threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = threadCount > 0 ? unsigned(threadCount) : usableCores();
   const auto start = Clock::now();
   const PiecewiseIntegrator integrator(tf);
   const std::vector<std::uint8_t> clear = clearBricks(grid, integrator, settings.isoSurfaces, settings.transferFunction2D);

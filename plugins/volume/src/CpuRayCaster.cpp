@@ -603,9 +603,7 @@ void clipWindow(const std::vector<ClipPlane>& planes, const glm::dvec3& origin, 
 }  // namespace
 
 namespace {
-unsigned threadsFor(int threadCount) {
-  return threadCount > 0 ? unsigned(threadCount) : std::max(1u, std::thread::hardware_concurrency());
-}
+unsigned threadsFor(int threadCount) { return threadCount > 0 ? unsigned(threadCount) : usableCores(); }
 }  // namespace
 
 VisiblePart findVisiblePart(const TetWalkMesh& mesh, const TransferFunction& tf,

@@ -153,7 +153,7 @@ void VisibilitySorter::imageSpaceRelations(const Camera& camera, int width, int 
     for (int y = box[t][2]; y <= box[t][3]; ++y)
       for (int x = box[t][0]; x <= box[t][1]; ++x) items[fill[std::size_t(y) * std::size_t(width) + std::size_t(x)]++] = t;
 
-  const unsigned workers = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
+  const unsigned workers = std::clamp(usableCores(), 1u, 16u);
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(workers);
   std::atomic<int> nextRow{0};
   runOnThreads(workers, [&](unsigned w) {

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include <volpost/core/WorkerThreads.hpp>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+#include <algorithm>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -8,6 +13,15 @@
 #include <vector>
 
 namespace volpost {
+
+unsigned usableCores() {
+#if defined(__linux__)
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return unsigned(CPU_COUNT(&set));
+#endif
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 unsigned runOnThreads(unsigned count, const std::function<void(unsigned worker)>& work) {
   std::exception_ptr failure;

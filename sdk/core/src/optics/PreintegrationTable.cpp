@@ -129,7 +129,7 @@ PreintegrationTable::PreintegrationTable(const TransferFunction& original, doubl
       values_(std::size_t(scalarResolution) * std::size_t(scalarResolution) * std::size_t(depthResolution) * 3) {
   if (ns_ < 2 || nd_ < 2 || !(sMax > sMin))
     throw std::invalid_argument("pre-integration table: resolutions must be >= 2 and the range non-empty");
-  if (threads <= 0) threads = int(std::max(1u, std::thread::hardware_concurrency()));
+  if (threads <= 0) threads = int(usableCores());
   const TransferFunction tf = forTable(original, sMin, sMax, scalarResolution);
   // One (sFront, sBack) pair per task: its pieces are found once and reused for every depth.
   std::atomic<int> next{0};
