@@ -552,6 +552,78 @@ class MainWindowTest : public QObject {
     QFile::remove(model);
   }
 
+  void theCellsOwnSectionsAndIsoSurfacesAreDrawnInTheWindowAsHeadless() {
+    // A block of 2 x 2 x 2 hex8 cells carrying x y z, in the surface view, cut by a clip
+    // plane and holding the iso-surface xyz = 0.1: with the cells' own interpolation the
+    // section is colored by the trilinear field and the iso-surface is its level set; the
+    // split's are other pictures, and `volpost render --state` draws the window's.
+    const QString model = QDir::temp().filePath("volpost_gui_hex_block_xyz.vtk");
+    {
+      QFile f(model);
+      QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Text));
+      QTextStream out(&f);
+      out << "# vtk DataFile Version 4.2\nhex8 xyz\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 27 double\n";
+      for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) out << 0.5 * i << ' ' << 0.5 * j << ' ' << 0.5 * k << '\n';
+      const auto id = [](int i, int j, int k) { return (k * 3 + j) * 3 + i; };
+      out << "CELLS 8 72\n";
+      for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+          for (int i = 0; i < 2; ++i)
+            out << "8 " << id(i, j, k) << ' ' << id(i + 1, j, k) << ' ' << id(i + 1, j + 1, k) << ' ' << id(i, j + 1, k)
+                << ' ' << id(i, j, k + 1) << ' ' << id(i + 1, j, k + 1) << ' ' << id(i + 1, j + 1, k + 1) << ' '
+                << id(i, j + 1, k + 1) << '\n';
+      out << "CELL_TYPES 8\n";
+      for (int c = 0; c < 8; ++c) out << "12\n";
+      out << "POINT_DATA 27\nSCALARS T double 1\nLOOKUP_TABLE default\n";
+      for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) out << 0.125 * i * j * k << '\n';
+    }
+    QVERIFY(open(model));
+    QVERIFY(window_->selectQuantity("T"));
+    window_->findChild<QAction*>("triadAction")->setChecked(false);
+    Viewport* view = window_->viewport();
+    view->scene().setShowLegend(false);
+    window_->findChild<QAction*>("volumeAction")->setChecked(false);
+    auto* handle = window_->findChild<QAction*>("planeHandle");
+    const bool handleWasShown = handle->isChecked();
+    handle->setChecked(false);  // the window's handle on the plane is not part of the picture
+    view->scene().setClipPlanes({ClipPlane{{0.6, 0.6, 0.6}, {-1.0, -1.0, -1.0}}});
+    view->scene().setIsoSurfaces({optics::IsoSurface{0.1, {0.9, 0.5, 0.2}, 1.0}});
+    view->scene().camera().orbit(25.0, 15.0);
+    view->update();
+    const QImage split = settled(view).convertToFormat(QImage::Format_RGB32);
+    auto* own = window_->findChild<QAction*>("elementInterpolationAction");
+    own->setChecked(true);
+    QVERIFY(own->isChecked());
+    QVERIFY(view->scene().volume().interpolation == FieldInterpolation::Element);
+    view->update();
+    const QImage shown = settled(view).convertToFormat(QImage::Format_RGB32);
+    const int changed = pixelsApart(shown, split).first;
+    QVERIFY2(changed > 50, qPrintable(QString("the cells' own section and iso-surface differ from the split's in "
+                                              "%1 pixels")
+                                          .arg(changed)));
+    const QString state = QDir::temp().filePath("volpost_gui_element_sections.json");
+    const QString png = QDir::temp().filePath("volpost_gui_element_sections.png");
+    QVERIFY(window_->saveStateFile(state));
+    QString error;
+    const QImage headless = renderedHeadless(state, png, shown.size(), error);
+    QVERIFY2(!headless.isNull(), qPrintable(error));
+    const int different = pixelsApart(shown, headless).first;
+    QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ").arg(different)));
+    own->setChecked(false);
+    view->update();
+    QVERIFY2(pixelsApart(settled(view).convertToFormat(QImage::Format_RGB32), split).first == 0, "the split's again");
+    view->scene().setIsoSurfaces({});
+    view->scene().setClipPlanes({});
+    handle->setChecked(handleWasShown);
+    QFile::remove(state);
+    QFile::remove(png);
+    QFile::remove(model);
+  }
+
   void transferFunctionPanelEditsTheVolumeLive() {
     QVERIFY(window_->selectQuantity("S.mises"));
     auto* dock = window_->findChild<QDockWidget*>("panel:Transfer Function");
