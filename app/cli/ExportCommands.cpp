@@ -128,8 +128,8 @@ int runSurface(const QStringList& args) {
     }
     const Model& model = session->model();
     if (ownField && !model.meshBuilt()) {
-      printError(QString("--interpolation element: %1 is a regular grid, whose cells have no shape functions of "
-                         "their own: leave the option out")
+      printError(QString("--interpolation element works on meshes; %1 is a regular grid, whose iso-surfaces are "
+                         "found on six tetrahedra in each cell: leave the option out")
                      .arg(files[0]));
       return 2;
     }
