@@ -366,7 +366,9 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
                   std::to_string(kMostTracePositionsPerTrace) +
                   " for each trace. The inline and crossline numbers (bytes " + std::to_string(at.inlineNumber) +
                   " and " + std::to_string(at.crosslineNumber) +
-                  ") may be elsewhere in this file's trace headers: --reader-option inline-byte=N crossline-byte=M");
+                  ") may be elsewhere in this file's trace headers: set the reader options inline-byte=N and "
+                  "crossline-byte=M (--reader-option inline-byte=N crossline-byte=M on the command line, File > "
+                  "Reader Options... in the window, Inline Byte and Crossline Byte in ParaView)");
   const std::size_t points = checkedProduct(cells, b.samplesPerTrace, path, "the grid");
   // The samples as stored and a renderer's copy of them; the grid holds no cells until
   // something needs them (Model::mesh checks those).
@@ -386,8 +388,10 @@ std::unique_ptr<Model> readSegy(const std::string& path, const SegyOptions& opti
         file.fail(dataStart + chosen[c] * traceBytes + std::uint64_t(at.offset - 1),
                   "pre-stack data: " + std::to_string(offsets.size()) + " offsets (" + offsetList(offsets) +
                       ") at one trace position (inline " + std::to_string(k.inlineNumber) + ", crossline " +
-                      std::to_string(k.crosslineNumber) + "); volpost renders stacked volumes: choose one offset (reader option offset=N: "
-                      "--reader-option offset=N, or File > Reader Options... in the window)");
+                      std::to_string(k.crosslineNumber) +
+                      "); volpost renders stacked volumes: choose one offset (reader option offset=N: "
+                      "--reader-option offset=N on the command line, File > Reader Options... in the window, Offset in "
+                      "ParaView)");
       file.fail(dataStart + chosen[c] * traceBytes,
                 "trace " + std::to_string(chosen[c] + 1) + " repeats inline " + std::to_string(k.inlineNumber) +
                     ", crossline " + std::to_string(k.crosslineNumber) + " of trace " + std::to_string(slot + 1));
