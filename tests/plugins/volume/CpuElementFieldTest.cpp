@@ -6,6 +6,7 @@
 #include "VolumeImageFixture.hpp"
 
 #include "CpuRayCaster.hpp"
+#include "support/HexLattice.hpp"
 #include "support/ReferenceCells.hpp"
 
 #include <volpost/core/CellShape.hpp>
@@ -25,22 +26,7 @@ using ClosedForm = std::function<double(const glm::dvec3&)>;
 
 // [0,1]^3 cut into n^3 cells of `type` (hex8 or hex20), nodes shared, straight edges.
 Mesh boxOf(CellType type, int n) {
-  Mesh mesh;
-  std::map<std::array<int, 3>, NodeIndex> index;  // by position in half-cell steps
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      for (int k = 0; k < n; ++k) {
-        std::vector<NodeIndex> ids;
-        for (int node = 0; node < topology(type).nodeCount; ++node) {
-          const glm::dvec3 g = 2.0 * glm::dvec3(i, j, k) + naturalCoordinatesOfNode(type, node) + 1.0;
-          const std::array<int, 3> key{int(g.x), int(g.y), int(g.z)};
-          const auto [it, fresh] = index.emplace(key, NodeIndex(mesh.nodes.size()));
-          if (fresh) mesh.nodes.push_back(g / (2.0 * n));
-          ids.push_back(it->second);
-        }
-        mesh.addCell(type, ids);
-      }
-  return mesh;
+  return hexLattice(type, n, [n](const glm::dvec3& g) { return g / double(n); });
 }
 
 std::vector<double> sampled(const Mesh& mesh, const ClosedForm& f) {
