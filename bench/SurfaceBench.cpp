@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     app::BoundaryRenderer scene;
     scene.initialize();
     scene.setSession(session);
-    scene.setScalars(&view, app::autoRange(view));
+    scene.setScalars(&view, app::autoRange(view), 1);
     Camera camera;
     camera.setView(StandardView::Isometric);
     camera.fit(session->model().mesh().bounds());

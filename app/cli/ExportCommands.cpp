@@ -6,6 +6,7 @@
 #include "Commands.hpp"
 
 #include "host/AtomicFile.hpp"
+#include "host/ElementRefinement.hpp"
 #include "host/IsoSurfaceExtraction.hpp"
 #include "host/SurfaceWriter.hpp"
 #include "host/VtuWriter.hpp"
@@ -57,6 +58,42 @@ int runConvert(const QStringList& args) {
   });
 }
 
+namespace {
+
+// The boundary as it is stored (flat faces through the nodes), or with `ownShapes` in the
+// cells' own shapes: a quadratic cell's faces curved through its midside nodes.
+template <typename SaidHow>
+int writeBoundary(const ModelSession& session, bool ownShapes, const QStringList& files, const SaidHow& saidHow) {
+  const Model& model = session.model();
+  if (!ownShapes || !model.meshBuilt() || !hasNonlinearCells(model.mesh())) {
+    if (ownShapes && !model.meshBuilt())
+      std::fprintf(stderr,
+                   "volpost: note: %s is a regular grid: its faces are flat, --interpolation element changes "
+                   "nothing\n",
+                   qPrintable(files[0]));
+    saidHow(writeSurface(session.surface().mesh, session.surface().origin, pathBytes(files[1])));
+    std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session.surface().mesh.n_faces());
+    return 0;
+  }
+  const std::vector<double> noValues(model.mesh().nodeCount(), 0.0);
+  const optics::ElementField shapes(model.mesh(), noValues, session.tetrahedra(), glm::dvec3(0.0));
+  const RefinedSurface curved =
+      refineBoundary(shapes, session.surface(), RefinementLimits{}, terminalProgress("following the cells' shapes"));
+  if (!curved.toleranceReached)
+    std::fprintf(stderr,
+                 "volpost: warning: the cells' faces are followed to %.2g of their size, not 1/1000: the surface "
+                 "has too many faces to refine further\n",
+                 curved.deviation);
+  saidHow(writeSurface(curved.surface.mesh, curved.surface.origin, pathBytes(files[1])));
+  std::printf(
+      "%s: boundary in the cells' own shapes, %zu triangles (the faces' triangles cut %d times along each "
+      "side)\n",
+      qPrintable(files[1]), curved.surface.mesh.n_faces(), curved.level);
+  return 0;
+}
+
+}  // namespace
+
 int runSurface(const QStringList& args) {
   QCommandLineParser parser;
   parser.setApplicationDescription(
@@ -70,9 +107,10 @@ int runSurface(const QStringList& args) {
   const QCommandLineOption formula = formulaOption();
   const QCommandLineOption interpolation(
       "interpolation",
-      "With --field, on meshes: the field whose level set is drawn. tetrahedra (default): linear on the tetrahedra "
-      "each cell is split into; element: each cell's own shape functions, as the solver computed the field "
-      "(trilinear in a hex8, quadratic in a tet10 or hex20), its surface followed to 1/1000 of the values' range.",
+      "Meshes: the shapes and field the surface follows. tetrahedra (default): the boundary's faces flat through "
+      "their nodes, the level set linear on the tetrahedra each cell is split into; element: each cell's own shape "
+      "functions, as the solver computed the field (trilinear in a hex8, quadratic in a tet10 or hex20): the "
+      "boundary's curved faces and the level set followed to 1/1000 of the cell's size and of the values' range.",
       "HOW");
   parser.addOptions({field, iso, step, readerOption, formula, interpolation});
   if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
@@ -99,10 +137,6 @@ int runSurface(const QStringList& args) {
         QString("--interpolation %1 is not one of: %2").arg(parser.value(interpolation), kFieldInterpolationChoices));
     return 2;
   }
-  if (parser.isSet(interpolation) && !parser.isSet(field)) {
-    printError("--interpolation goes with --field and --iso: the boundary surface has no values to interpolate");
-    return 2;
-  }
   bool ownField = how == FieldInterpolation::Element;
   auto plugins = loadPluginsForCli();
   const auto saidHow = [&](const SurfaceWriteResult& r) {
@@ -115,11 +149,7 @@ int runSurface(const QStringList& args) {
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
     const auto session = loadWithFormulas(plugins->readers(), pathBytes(files[0]), parser, readerOption, formula);
-    if (!parser.isSet(field)) {
-      saidHow(writeSurface(session->surface().mesh, session->surface().origin, pathBytes(files[1])));
-      std::printf("%s: boundary, %zu triangles\n", qPrintable(files[1]), session->surface().mesh.n_faces());
-      return 0;
-    }
+    if (!parser.isSet(field)) return writeBoundary(*session, ownField, files, saidHow);
     const Quantity q = session->findQuantity(parser.value(field).toStdString());
     const ScalarView view = session->evaluate(q, *stepIndex);
     if (view.location != FieldLocation::Node) {

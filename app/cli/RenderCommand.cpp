@@ -165,10 +165,10 @@ struct Options {
                                                 "(default 0.002; 0: never).", "T"};
   QCommandLineOption interpolation{
       "interpolation",
-      "Meshes: how node values vary inside a cell, in the volume, sections, slices and iso-surfaces. tetrahedra "
-      "(default): linear on the tetrahedra each cell is split into; element: each cell's own shape functions, as "
-      "the solver computed the field (trilinear in a hex8, quadratic in a tet10 or hex20), and sections through "
-      "the cells' own curved shapes.",
+      "Meshes: how node values vary inside a cell, in the volume, the boundary surface, sections, slices, "
+      "iso-surfaces and streamlines. tetrahedra (default): linear on the tetrahedra each cell is split into, the "
+      "faces flat; element: each cell's own shape functions, as the solver computed the field (trilinear in a hex8, "
+      "quadratic in a tet10 or hex20), and the cells' own curved shapes.",
       "HOW"};
   QCommandLineOption elementTolerance{
       "element-tolerance",
@@ -605,13 +605,8 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep,
                                              &o.termination, &o.shading, &o.floatOut, &o.threads, &o.elementTolerance})
       refuse(*option, why);
-    // The surface picture's sections, slices and iso-surfaces follow the interpolation.
-    if (!p.isSet(o.clip) && !p.isSet(o.clipBox) && !p.isSet(o.iso) && !p.isSet(o.slice) && !p.isSet(o.streamlines) &&
-        !p.isSet(o.state))
-      refuse(o.interpolation,
-             "changes a surface picture's sections, slices, iso-surfaces and streamlines (--clip, "
-             "--clip-box, --slice, --iso, --streamlines), or a volume (--renderer " +
-                 chosen.namesWhere([](const RendererEntry&) { return true; }) + ")");
+    // The surface picture's boundary, sections, slices, iso-surfaces and streamlines
+    // follow the interpolation.
     return;
   }
   refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");

@@ -25,15 +25,35 @@ void BoundaryRenderer::initialize() {
 // The boundary goes to the GPU (and is extracted, when the session has not yet) the
 // first time it is drawn: a volume picture never pays for it.
 void BoundaryRenderer::ensureSurface() {
-  if (surfaceUploaded_ || !initialized_ || !session_) return;
-  surface_.setSurface(session_->surface());
-  if (pendingScalars_)
-    surface_.setScalars(pendingScalars_->view->location, pendingScalars_->view->values, pendingScalars_->range.min,
-                        pendingScalars_->range.max);
-  else
-    surface_.clearScalars();
-  pendingScalars_.reset();
-  surfaceUploaded_ = true;
+  if (!initialized_ || !session_) return;
+  const auto field = curvedSurfaceWanted()
+                         ? elementField(scalars_ ? scalars_->view : nullptr, scalars_ ? scalars_->version : 0)
+                         : nullptr;
+  const std::optional<std::uint64_t> wanted = field ? elementFieldFor_ : std::nullopt;
+  if (!surfaceUploaded_ || wanted != curvedFor_) {
+    if (field) {
+      RefinedSurface curved = refineBoundary(*field, session_->surface());
+      surface_.setSurface(curved.surface);
+      curvedValues_ = std::move(curved.values);
+    } else {
+      surface_.setSurface(session_->surface());
+      curvedValues_ = {};
+    }
+    curvedFor_ = wanted;
+    surfaceUploaded_ = true;
+    scalarsUploaded_ = false;
+  }
+  if (scalarsUploaded_) return;
+  if (!scalars_) surface_.clearScalars();
+  else if (curvedFor_ && scalars_->view->location == FieldLocation::Node)
+    surface_.setScalars(FieldLocation::Node, SampleView(curvedValues_), scalars_->range.min, scalars_->range.max);
+  else surface_.setScalars(scalars_->view->location, scalars_->view->values, scalars_->range.min, scalars_->range.max);
+  scalarsUploaded_ = true;
+}
+
+bool BoundaryRenderer::curvedSurfaceWanted() const {
+  return interpolation_ == FieldInterpolation::Element && !showPoints_ && session_->model().meshBuilt() &&
+         hasNonlinearCells(session_->model().mesh());
 }
 
 void BoundaryRenderer::release() {
@@ -48,6 +68,7 @@ void BoundaryRenderer::release() {
   isoTriangles_ = 0;  // the corners stay: a headless picture's iso-surfaces can still be picked
   cutFor_.reset();
   surfaceUploaded_ = false;
+  curvedFor_.reset();
   initialized_ = false;
 }
 
@@ -61,21 +82,18 @@ void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   sliceTriangles_ = 0;
   isoFor_.reset();
   surface_.clearScalars();
-  pendingScalars_.reset();
+  scalars_.reset();
+  scalarsUploaded_ = false;
   surfaceUploaded_ = false;
+  curvedFor_.reset();
+  curvedValues_ = {};
 }
 
-void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range) {
-  if (!surfaceUploaded_) {  // kept until the surface is first drawn
-    pendingScalars_.reset();
-    if (view) pendingScalars_ = PendingScalars{view, range};
-    return;
-  }
-  if (!view) {
-    surface_.clearScalars();
-    return;
-  }
-  surface_.setScalars(view->location, view->values, range.min, range.max);
+// Kept until the surface is next drawn (a volume picture never uploads them).
+void BoundaryRenderer::setScalars(const ScalarView* view, DisplayRange range, std::uint64_t viewVersion) {
+  scalars_.reset();
+  if (view) scalars_ = ShownScalars{view, range, viewVersion};
+  scalarsUploaded_ = false;
 }
 
 void BoundaryRenderer::setCuts(const std::vector<ClipPlane>& planes, const ScalarView* view, std::uint64_t viewVersion,

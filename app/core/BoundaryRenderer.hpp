@@ -32,11 +32,13 @@ class BoundaryRenderer {
   /// How node values vary inside a cell for sections and iso-surfaces: with the cells'
   /// own shape functions, a mesh of other cells than tet4 has its sections cut through the
   /// cells' own (curved) shapes and colored by their own field, and its iso-surfaces
-  /// found in that field (ElementRefinement). Takes effect at the next setCuts,
-  /// setSlices and setIsoSurfaces.
+  /// found in that field, and its boundary surface drawn in the cells' own shapes and
+  /// field (ElementRefinement). Takes effect at the next setCuts, setSlices and
+  /// setIsoSurfaces, and for the surface at the next draw.
   void setFieldInterpolation(FieldInterpolation interpolation) { interpolation_ = interpolation; }
-  /// Colors by the view's values; nullptr shows the plain surface.
-  void setScalars(const ScalarView* view, DisplayRange range);
+  /// Colors by the view's values (`viewVersion` changes with them); nullptr shows the plain
+  /// surface.
+  void setScalars(const ScalarView* view, DisplayRange range, std::uint64_t viewVersion);
   void setOutOfRangeColors(std::optional<glm::vec3> below, std::optional<glm::vec3> above) {
     surface_.setOutOfRangeColors(below, above);
     sections_.setOutOfRangeColors(below, above);
@@ -86,7 +88,10 @@ class BoundaryRenderer {
   /// Faces off: render() draws only the element edges (the opaque geometry over a volume).
   void setShowFaces(bool show) { surface_.setShowFaces(show); }
   /// The surface's nodes as points (device pixels) instead of its faces.
-  void setShowPoints(bool show, float pixels) { surface_.setShowPoints(show, pixels); }
+  void setShowPoints(bool show, float pixels) {
+    showPoints_ = show;
+    surface_.setShowPoints(show, pixels);
+  }
   void setFadeDenseEdges(bool on) { surface_.setFadeDenseEdges(on); }
   /// The surface's element edges in the result's colors (a wireframe).
   void setColorEdgesByValue(bool on) { surface_.setColorEdgesByValue(on); }
@@ -142,7 +147,17 @@ class BoundaryRenderer {
   bool surfaceShown_ = true;
   std::size_t sectionTriangles_ = 0;
   bool initialized_ = false;
+  /// Uploads the boundary (the session's, or in the cells' own shapes and field) and its
+  /// colors where they are not current.
   void ensureSurface();
+  /// Whether the surface is drawn in the cells' own shapes and field (faces, not the nodes
+  /// as points, of a mesh with other cells than tet4).
+  bool curvedSurfaceWanted() const;
+  bool showPoints_ = false;
+  /// The view version the uploaded curved surface was refined for (0: geometry alone);
+  /// none: the session's own surface is uploaded.
+  std::optional<std::uint64_t> curvedFor_;
+  std::vector<double> curvedValues_;  ///< the field at the curved surface's points
   /// The model's cross-sections on these planes into `target`, colored by the view's
   /// values (sections and slices); returns their triangle count.
   std::size_t uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes, const ScalarView* view,
@@ -151,11 +166,13 @@ class BoundaryRenderer {
   // The view is the caller's (the Scene's), not a copy: a volume picture of a large grid
   // must not hold its values twice for a surface nobody draws. Every change of the view
   // reaches setScalars before the next draw, so the pointer is current when it is used.
-  struct PendingScalars {
+  struct ShownScalars {
     const ScalarView* view;
     DisplayRange range;
+    std::uint64_t version;
   };
-  std::optional<PendingScalars> pendingScalars_;  ///< colors for the surface not yet uploaded
+  std::optional<ShownScalars> scalars_;  ///< what the surface is colored by; none: plain
+  bool scalarsUploaded_ = false;
 };
 
 }  // namespace volpost::app

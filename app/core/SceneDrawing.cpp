@@ -134,7 +134,7 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   const bool model = catchUp(drawn_.model, now.model);
   const bool scalars = catchUp(drawn_.scalars, now.scalars);
   if (model) boundary_.setSession(scene.sharedSession());
-  if (model || scalars) boundary_.setScalars(values.view, range);
+  if (model || scalars) boundary_.setScalars(values.view, range, values.version);
   if (catchUp(drawn_.colorMap, now.colorMap)) {
     const auto asFloat = [](const std::optional<glm::dvec3>& c) {
       return c ? std::optional<glm::vec3>(glm::vec3(*c)) : std::nullopt;

@@ -48,8 +48,9 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
   interpolation_->setCheckable(true);
   interpolation_->setToolTip(
       "Draw the field as the solver defines it in each cell (trilinear in a hexahedron, quadratic in a "
-      "10-node tetrahedron) in the volume, sections, slices, iso-surfaces and streamlines, and cut sections "
-      "through the cells' own curved shapes; off: linear on the tetrahedra the cells are split into");
+      "10-node tetrahedron) in the volume, the boundary surface, sections, slices, iso-surfaces and streamlines, "
+      "and draw the surface and sections in the cells' own curved shapes; off: linear on the tetrahedra the cells "
+      "are split into, the faces flat through their nodes");
   connect(interpolation_, &QAction::toggled, this, &VolumeActions::drawCellsOwnField);
   tolerance_ = view.addAction(QString());  // the text shows the value (syncToScene)
   tolerance_->setObjectName("elementToleranceAction");

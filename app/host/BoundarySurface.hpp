@@ -28,6 +28,11 @@ struct BoundarySurface {
   OpenMesh::FPropHandleT<std::uint32_t> cellOfFace;    ///< cell each triangle comes from
   /// Element edges on the boundary (pairs of mesh node indices, through midside nodes).
   std::vector<std::array<NodeIndex, 2>> edges;
+  /// Where element edges are drawn in pieces (a curved cell's), how far apart the edges
+  /// are near each piece: the shortest element edge at either end of the edge it is a piece
+  /// of, so dense edges fade as the cells crowd, not as the pieces do. Empty: found from
+  /// the edges themselves.
+  std::vector<float> edgeSpacing;
   std::size_t boundaryFaceCount = 0;      ///< cell faces (tri or quad) on the boundary
   std::size_t nonManifoldFaceCount = 0;   ///< faces OpenMesh could not attach, split off
 };

@@ -51,9 +51,15 @@ class CellMap {
 
   /// Prepares for split tetrahedron `tet`; false when its cell is drawn linearly.
   bool select(std::size_t tet) {
-    cell_ = split_.sourceCell(tet);
     const auto tetNodes = split_.mesh.cellNodes(tet);
-    for (int k = 0; k < 4; ++k) corners_[std::size_t(k)] = tetNodes[std::size_t(k)];
+    return select(split_.sourceCell(tet), {tetNodes[0], tetNodes[1], tetNodes[2], tetNodes[3]});
+  }
+
+  /// Prepares for the simplex of these nodes of `cell` (the split's: the cell's own nodes
+  /// and the points its split added); a triangle repeats its last corner, with no weight.
+  bool select(std::uint32_t cell, const std::array<NodeIndex, 4>& corners) {
+    cell_ = cell;
+    corners_ = corners;
     linear_ = field_.linearIn(cell_);
     if (linear_) return false;
     type_ = cells_.cellType(cell_);
@@ -236,6 +242,166 @@ RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<
   }
   out.tets.mesh.takeCells(CellType::Tet4, std::move(connectivity));
   out.tets.originalNodes = out.tets.mesh.nodes.size();
+  progress.report(1.0);
+  return out;
+}
+
+namespace {
+
+// How far a boundary triangle's straight sides and linear values stray from its cell's map
+// and field: at the midpoints of its sides and at its centre.
+double triangleDeviation(const CellMap& map, double valueScale) {
+  struct Probe {
+    std::array<double, 4> from, to, at;
+    double t;  ///< how far along from `from` to `to` the probe `at` lies
+  };
+  constexpr double third = 1.0 / 3.0;
+  static const Probe kProbes[] = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0.5, 0.5, 0, 0}, 0.5},
+                                  {{0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0.5, 0.5, 0}, 0.5},
+                                  {{0, 0, 1, 0}, {1, 0, 0, 0}, {0.5, 0, 0.5, 0}, 0.5},
+                                  // the centre, a third of the way from a side's middle to the far corner
+                                  {{0.5, 0.5, 0, 0}, {0, 0, 1, 0}, {third, third, third, 0}, third}};
+  double worst = 0.0;
+  for (const Probe& s : kProbes) {
+    glm::dvec3 a, b, m;
+    double fa = 0.0, fb = 0.0, fm = 0.0;
+    map.at(s.from, a, fa), map.at(s.to, b, fb), map.at(s.at, m, fm);
+    const double t = s.t;
+    const double length = glm::length(b - a);
+    if (length > 0.0) worst = std::max(worst, glm::length(m - ((1.0 - t) * a + t * b)) / length);
+    const double fd = std::abs(fm - ((1.0 - t) * fa + t * fb)) / valueScale;
+    if (std::isfinite(fd)) worst = std::max(worst, fd);
+  }
+  return worst;
+}
+
+int surfaceLevelFor(double deviation, const RefinementLimits& limits, std::size_t chosen) {
+  const double tolerance = std::max(limits.tolerance, 1e-12);
+  int level = deviation <= tolerance ? 1 : int(std::ceil(std::sqrt(deviation / tolerance) - 1e-9));
+  level = std::clamp(level, 1, std::max(limits.maxLevel, 1));
+  while (level > 1 && double(chosen) * level * level > double(limits.maxTriangles)) --level;
+  return level;
+}
+
+struct BoundaryTriangle {
+  std::uint32_t cell;
+  std::array<NodeIndex, 3> nodes;
+};
+
+std::vector<BoundaryTriangle> trianglesOf(const BoundarySurface& boundary) {
+  const SurfaceMesh& m = boundary.mesh;
+  std::vector<BoundaryTriangle> out;
+  out.reserve(m.n_faces());
+  for (const auto f : m.faces()) {
+    BoundaryTriangle t{m.property(boundary.cellOfFace, f), {}};
+    int k = 0;
+    for (const auto v : f.vertices())
+      if (k < 3) t.nodes[std::size_t(k++)] = m.property(boundary.nodeOfVertex, v);
+    if (k == 3) out.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace
+
+RefinedSurface refineBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
+                              const RefinementLimits& limits, const Progress& progress) {
+  const TetMesh& split = field.split();
+  const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
+  CellMap map(field.mesh(), field, split, splitValues);
+  const auto cornersOf = [](const BoundaryTriangle& t) {
+    return std::array<NodeIndex, 4>{t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]};
+  };
+  const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
+  double worst = 0.0;
+  std::size_t curved = 0;
+  for (const BoundaryTriangle& t : triangles)
+    if (map.select(t.cell, cornersOf(t))) worst = std::max(worst, triangleDeviation(map, field.valueScale())), ++curved;
+
+  RefinedSurface out;
+  const int n = out.level = surfaceLevelFor(worst, limits, curved);
+  out.deviation = worst / double(n * n);
+  out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
+  BoundarySurface& surface = out.surface;
+  surface.origin = boundary.origin;
+  surface.boundaryFaceCount = boundary.boundaryFaceCount;
+  surface.mesh.add_property(surface.nodeOfVertex, "volpost:node");
+  surface.mesh.add_property(surface.cellOfFace, "volpost:cell");
+
+  std::unordered_map<LatticeKey, NodeIndex, LatticeKeyHash> known;
+  std::vector<SurfaceMesh::VertexHandle> vertexOfPoint;
+  const auto newVertex = [&](NodeIndex point, const glm::dvec3& position) {
+    const glm::dvec3 p = position - surface.origin;
+    const auto v = surface.mesh.add_vertex(SurfaceMesh::Point(float(p.x), float(p.y), float(p.z)));
+    surface.mesh.property(surface.nodeOfVertex, v) = point;
+    return v;
+  };
+  std::vector<glm::dvec3> positions;  // of the points, to place duplicates of non-manifold faces
+  std::vector<NodeIndex> lattice(std::size_t((n + 1) * (n + 1)));
+  const auto slot = [n](int i, int j) { return std::size_t(i * (n + 1) + j); };
+  std::vector<char> edgeDone(boundary.edges.size(), 0);
+  std::unordered_map<NodeIndex, float> shortestAt;  // the element edges' spacing, for their fading
+  for (const auto& e : boundary.edges) {
+    const float length = float(glm::length(split.mesh.nodes[e[1]] - split.mesh.nodes[e[0]]));
+    for (NodeIndex node : e) {
+      const auto [it, added] = shortestAt.try_emplace(node, length);
+      if (!added) it->second = std::min(it->second, length);
+    }
+  }
+  for (std::size_t ti = 0; ti < triangles.size(); ++ti) {
+    if (ti % 4096 == 0) progress.report(double(ti) / double(triangles.size()));
+    const BoundaryTriangle& t = triangles[ti];
+    // A cell drawn linearly keeps its triangle, its corners named as the pieces' are.
+    const int level = map.select(t.cell, cornersOf(t)) ? n : 1;
+    const int scale = n / level;
+    for (int i = 0; i <= level; ++i)
+      for (int j = 0; i + j <= level; ++j) {
+        const std::array<int, 4> weights{(level - i - j) * scale, i * scale, j * scale, 0};
+        const auto [it, added] = known.try_emplace(latticeKey(map.corners(), weights), NodeIndex(out.values.size()));
+        if (added) {
+          glm::dvec3 position;
+          double value = 0.0;
+          map.at({(level - i - j) / double(level), i / double(level), j / double(level), 0.0}, position, value);
+          out.values.push_back(value);
+          positions.push_back(position);
+          vertexOfPoint.push_back(newVertex(it->second, position));
+        }
+        lattice[slot(i, j)] = it->second;
+      }
+    const auto addFace = [&](NodeIndex a, NodeIndex b, NodeIndex c) {
+      auto f = surface.mesh.add_face(vertexOfPoint[a], vertexOfPoint[b], vertexOfPoint[c]);
+      if (!f.is_valid()) {  // as the boundary did: a face of its own where it could not attach
+        f = surface.mesh.add_face(newVertex(a, positions[a]), newVertex(b, positions[b]), newVertex(c, positions[c]));
+        ++surface.nonManifoldFaceCount;
+      }
+      if (f.is_valid()) surface.mesh.property(surface.cellOfFace, f) = t.cell;
+    };
+    for (int i = 0; i < level; ++i)
+      for (int j = 0; i + j < level; ++j) {
+        addFace(lattice[slot(i, j)], lattice[slot(i + 1, j)], lattice[slot(i, j + 1)]);
+        if (i + j <= level - 2) addFace(lattice[slot(i + 1, j)], lattice[slot(i + 1, j + 1)], lattice[slot(i, j + 1)]);
+      }
+    // The element edges along this triangle's sides, in pieces, each once.
+    for (int side = 0; side < 3; ++side) {
+      const NodeIndex a = t.nodes[std::size_t(side)], b = t.nodes[std::size_t((side + 1) % 3)];
+      const std::array<NodeIndex, 2> edge{std::min(a, b), std::max(a, b)};
+      const auto found = std::lower_bound(boundary.edges.begin(), boundary.edges.end(), edge);
+      if (found == boundary.edges.end() || *found != edge) continue;
+      char& done = edgeDone[std::size_t(found - boundary.edges.begin())];
+      if (done) continue;
+      done = 1;
+      const float near = std::min(shortestAt[a], shortestAt[b]);
+      const auto along = [&](int s) {  // step s of `level` from the side's first corner
+        return side == 0 ? lattice[slot(s, 0)] : side == 1 ? lattice[slot(level - s, s)] : lattice[slot(0, level - s)];
+      };
+      for (int s = 0; s < level; ++s) {
+        surface.edges.push_back({along(s), along(s + 1)});
+        surface.edgeSpacing.push_back(near);
+      }
+    }
+  }
+  surface.mesh.request_face_normals();
+  surface.mesh.update_face_normals();
   progress.report(1.0);
   return out;
 }

@@ -8,6 +8,8 @@
 // by the cell's interpolation, to the tolerance (docs/methods/element_field.md).
 #pragma once
 
+#include "host/BoundarySurface.hpp"
+
 #include <volpost/core/Mesh.hpp>
 #include <volpost/core/Progress.hpp>
 #include <volpost/core/Tetrahedralize.hpp>
@@ -28,6 +30,7 @@ struct RefinementLimits {
   double tolerance = 1e-3;
   int maxLevel = 8;                       ///< subdivisions along an edge at most
   std::size_t maxTetrahedra = 4'000'000;  ///< the level is lowered to stay below this
+  std::size_t maxTriangles = 4'000'000;   ///< and for a surface, below this
 };
 
 struct RefinedTetrahedra {
@@ -47,6 +50,24 @@ struct RefinedTetrahedra {
 /// (their field and shape are the split's). Throws volpost::Cancelled when `progress` cancels.
 RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<const std::uint32_t> chosen,
                                    const RefinementLimits& limits = {}, const Progress& progress = {});
+
+struct RefinedSurface {
+  /// The boundary with each triangle of a cell other than tet4 subdivided n times along
+  /// each side in the cell's natural coordinates, placed by the cell's map (curved where a
+  /// quadratic cell's faces are): a vertex's node is its point's index in `values`, a face
+  /// keeps its cell of the model, and the element edges follow the curved sides in pieces.
+  BoundarySurface surface;
+  std::vector<double> values;  ///< the cell's field at each point
+  int level = 1;               ///< subdivisions along each side of the boundary's triangles
+  double deviation = 0.0;      ///< the estimated largest deviation left, as RefinedTetrahedra's
+  bool toleranceReached = true;
+};
+
+/// The boundary surface `boundary` (of field.mesh()) in its cells' own shape and field,
+/// one level for the whole surface (shared edges then meet), the smallest that is within
+/// the tolerance. Throws volpost::Cancelled when `progress` cancels.
+RefinedSurface refineBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
+                              const RefinementLimits& limits = {}, const Progress& progress = {});
 
 /// The natural coordinates, in `cell` of `cells`, of a node of the cell's split: the cell's
 /// own node's, or for a point the split added, the mean of the cell's corners'.

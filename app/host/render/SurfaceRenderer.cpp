@@ -141,21 +141,25 @@ void SurfaceRenderer::setSurface(const BoundarySurface& surface) {
   const auto lengthOf = [&](const std::array<NodeIndex, 2>& e) {
     return glm::length(nodePos.at(e[1]) - nodePos.at(e[0]));
   };
+  const bool spacingGiven = surface.edgeSpacing.size() == surface.edges.size();
   std::vector<float> spacing;
   for (const auto& e : surface.edges) {
-    if (!nodePos.count(e[0]) || !nodePos.count(e[1])) continue;
+    if (spacingGiven || !nodePos.count(e[0]) || !nodePos.count(e[1])) continue;
     const float length = lengthOf(e);
     for (NodeIndex n : e) {
       const auto [it, added] = shortestAt.try_emplace(n, length);
       if (!added) it->second = std::min(it->second, length);
     }
   }
-  for (const auto& e : surface.edges) {
+  for (std::size_t i = 0; i < surface.edges.size(); ++i) {
+    const auto& e = surface.edges[i];
     const auto a = nodePos.find(e[0]), b = nodePos.find(e[1]);
     if (a == nodePos.end() || b == nodePos.end()) continue;
     edgeData.insert(edgeData.end(), {a->second.x, a->second.y, a->second.z, b->second.x, b->second.y, b->second.z});
+    // Over the segment's own length: the shader scales it by the segment as projected.
     const float length = lengthOf(e);
-    spacing.push_back(length > 0.0f ? std::min(shortestAt[e[0]], shortestAt[e[1]]) / length : 1.0f);
+    const float near = spacingGiven ? surface.edgeSpacing[i] : std::min(shortestAt[e[0]], shortestAt[e[1]]);
+    spacing.push_back(length > 0.0f ? near / length : 1.0f);
     // A face on the edge gives its element's value; none found (an edge the triangles do
     // not follow): no value per element.
     const auto va = vertexOf.at(e[0]), vb = vertexOf.at(e[1]);

@@ -5,6 +5,8 @@
 #include "ProcessRunner.hpp"
 #include "support/TestSupport.hpp"
 
+#include <QImage>
+
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -121,8 +123,15 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.output.find("--interpolation quadratic is not one of: element, tetrahedra"), std::string::npos)
       << bad.output;
-  const auto surface = runVolpost("render " + model + " --field T --interpolation element -o " + png);
-  EXPECT_EQ(surface.exitCode, 2) << surface.output;
+  // A surface picture takes it: the hex8 faces colored by their bilinear field, not by the
+  // two triangles each face is otherwise drawn as.
+  const std::string ownSurface = dir + "/own_surface.png", splitSurface = dir + "/split_surface.png";
+  const std::string picture = "render " + model + " --field T --size 200x150 --no-edges --no-legend --no-triad --flat ";
+  const auto surface = runVolpost(picture + "--interpolation element -o " + ownSurface);
+  ASSERT_EQ(surface.exitCode, 0) << surface.output;
+  ASSERT_EQ(runVolpost(picture + "-o " + splitSurface).exitCode, 0);
+  EXPECT_NE(QImage(QString::fromStdString(ownSurface)), QImage(QString::fromStdString(splitSurface)));
+  EXPECT_FALSE(QImage(QString::fromStdString(ownSurface)).isNull());
 
   const std::string state = dir + "/element.json", first = dir + "/state_first.npy", again = dir + "/state_again.npy";
   const auto saved = runVolpost("render " + model +

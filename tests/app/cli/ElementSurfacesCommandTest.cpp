@@ -9,6 +9,8 @@
 #include <QImage>
 #include <QRect>
 
+#include <glm/vec3.hpp>
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -117,12 +119,19 @@ TEST(ElementSurfacesCommand, TheSectionOfCurvedCellsIsRoundWithTheirOwnShapes) {
   const long own = drawnInsideRadius(ownPicture, frame, 0.985), split = drawnInsideRadius(splitPicture, frame, 0.985);
   EXPECT_LT(own, 15) << "pixels of the cells' own section inside radius 0.985";
   EXPECT_GT(split, 150) << "pixels of the split's section inside radius 0.985";
-  // A surface picture with nothing the interpolation changes refuses it, saying what it changes.
-  const auto nothing =
-      runVolpost("render " + model + " --field T --size 40x40 --interpolation element -o " + dir + "/nothing.png");
-  EXPECT_EQ(nothing.exitCode, 2);
-  EXPECT_NE(nothing.output.find("changes a surface picture's sections"), std::string::npos) << nothing.output;
-  EXPECT_FALSE(QImage(QString::fromStdString(dir + "/nothing.png")).width() > 0);
+  // Without the cut, the top face's inner outline: the boundary in the cells' own shapes
+  // is round as well, the flat faces through the nodes are not.
+  const std::string top = "render " + model +
+                          " --field T --size 400x400 --eye 1,1,5 --target 1,1,0.4 --up 0,1,0 --camera ortho "
+                          "--no-edges --no-legend --no-triad --flat";
+  ASSERT_EQ(runVolpost(top + " --interpolation element -o " + dir + "/top_own.png").exitCode, 0);
+  ASSERT_EQ(runVolpost(top + " -o " + dir + "/top_split.png").exitCode, 0);
+  const QImage topOwn(QString::fromStdString(dir + "/top_own.png"));
+  const QImage topSplit(QString::fromStdString(dir + "/top_split.png"));
+  ASSERT_FALSE(topOwn.isNull());
+  ASSERT_FALSE(topSplit.isNull());
+  EXPECT_LT(drawnInsideRadius(topOwn, coveredBox(topOwn), 0.995), 15) << "the own boundary inside radius 0.995";
+  EXPECT_GT(drawnInsideRadius(topSplit, coveredBox(topSplit), 0.995), 60) << "the flat one inside radius 0.995";
 }
 
 TEST(ElementSurfacesCommand, SurfaceWritesTheLevelSetOfTheCellsOwnField) {
@@ -152,9 +161,45 @@ TEST(ElementSurfacesCommand, SurfaceWritesTheLevelSetOfTheCellsOwnField) {
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("--interpolation cubic is not one of: element, tetrahedra"), std::string::npos)
       << unknown.output;
-  const auto alone = runVolpost("surface " + model + " " + dir + "/y.obj --interpolation element");
-  EXPECT_EQ(alone.exitCode, 2);
-  EXPECT_NE(alone.output.find("goes with --field"), std::string::npos) << alone.output;
   EXPECT_FALSE(std::ifstream(dir + "/x.obj").good());
-  EXPECT_FALSE(std::ifstream(dir + "/y.obj").good());
+}
+
+namespace {
+
+// The smallest distance from the z axis of a triangle's middle in an .obj file.
+double innermostMiddle(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<glm::dvec3> points;
+  std::string line;
+  double innermost = INFINITY;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line.substr(2));
+    if (line.rfind("v ", 0) == 0) {
+      glm::dvec3 p;
+      fields >> p.x >> p.y >> p.z;
+      points.push_back(p);
+    } else if (line.rfind("f ", 0) == 0) {
+      glm::dvec3 middle(0.0);
+      std::string corner;
+      while (fields >> corner) middle += points.at(std::size_t(std::stoul(corner) - 1)) / 3.0;
+      innermost = std::min(innermost, std::hypot(middle.x, middle.y));
+    }
+  }
+  return innermost;
+}
+
+}  // namespace
+
+TEST(ElementSurfacesCommand, SurfaceWritesTheBoundaryInTheCellsOwnShapes) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeQuarterCylinder(dir + "/quarter_boundary.vtk", 2);
+  const auto own = runVolpost("surface " + model + " " + dir + "/own_boundary.obj --interpolation element");
+  ASSERT_EQ(own.exitCode, 0) << own.output;
+  EXPECT_NE(own.output.find("boundary in the cells' own shapes"), std::string::npos) << own.output;
+  const auto flat = runVolpost("surface " + model + " " + dir + "/flat_boundary.obj");
+  ASSERT_EQ(flat.exitCode, 0) << flat.output;
+  // The inner cylinder (radius 1): the flat faces' triangles, across 22.5 degrees between
+  // nodes, sag inside it; the cells' own faces follow it.
+  EXPECT_GT(innermostMiddle(dir + "/own_boundary.obj"), 0.999);
+  EXPECT_LT(innermostMiddle(dir + "/flat_boundary.obj"), 0.995);
 }

@@ -245,3 +245,140 @@ TEST(ElementRefinement, EveryCellTypeIsTiledAndCarriesItsOwnField) {
     }
   }
 }
+
+namespace {
+
+double surfaceArea(const BoundarySurface& s) {
+  double sum = 0.0;
+  for (const auto f : s.mesh.faces()) sum += double(s.mesh.calc_face_area(f));
+  return sum;
+}
+
+glm::dvec3 positionOf(const BoundarySurface& s, SurfaceMesh::VertexHandle v) {
+  const auto p = s.mesh.point(v);
+  return s.origin + glm::dvec3(p[0], p[1], p[2]);
+}
+
+}  // namespace
+
+TEST(ElementRefinement, TheBoundaryOfAHex20QuarterCylinderIsRoundClosedAndColoredByItsField) {
+  // r in [1, 2], theta in [0, pi/2], z in [0, 1], 3 cells each way, every node on its arc.
+  const auto place = [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 3.0, theta = std::numbers::pi / 2.0 * g.y / 3.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 3.0);
+  };
+  const Mesh mesh = test::hexLattice(CellType::Hex20, 3, place);
+  const std::vector<double> values = sampled(mesh, [](const glm::dvec3& p) { return p.z * (p.x + 2.0 * p.y); });
+  const TetMesh split = tetrahedralize(mesh);
+  const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+  const BoundarySurface boundary = extractBoundary(mesh);
+  // Three cells over 90 degrees are coarse: the default 8 levels leave just over 1/1000.
+  const RefinedSurface curved = refineBoundary(field, boundary, RefinementLimits{1e-3, 12});
+  const BoundarySurface& s = curved.surface;
+  EXPECT_TRUE(curved.toleranceReached);
+  EXPECT_GT(curved.level, 1);
+  EXPECT_EQ(s.nonManifoldFaceCount, 0u);
+  for (const auto e : s.mesh.edges()) ASSERT_FALSE(s.mesh.is_boundary(e)) << "closed: neighbours share their points";
+  // The inner and outer cylinders (pi/2 and pi), the two ends (3 pi / 4 each), the two flat
+  // sides (1 each). The flat triangles through the nodes zigzag across the cylinders (a
+  // Schwarz lantern) and miss it by more than 1/1000.
+  const double exact = 3.0 * std::numbers::pi + 2.0;
+  EXPECT_NEAR(surfaceArea(s), exact, 2e-4 * exact);
+  EXPECT_GT(std::abs(exact - surfaceArea(boundary)), 1e-3 * exact);
+  // The pieces' middles on the inner cylinder lie on it (the chords' sag 1 - cos 7.5 deg).
+  double worstInner = 0.0, worstInnerOfNodes = 0.0;
+  const auto innerMiss = [](const BoundarySurface& b, SurfaceMesh::FaceHandle f, double& worst) {
+    glm::dvec3 middle(0.0);
+    for (const auto v : b.mesh.fv_range(f)) {
+      const glm::dvec3 p = positionOf(b, v);
+      if (std::hypot(p.x, p.y) > 1.0 + 1e-5) return;
+      middle += p / 3.0;
+    }
+    worst = std::max(worst, 1.0 - std::hypot(middle.x, middle.y));
+  };
+  for (const auto f : s.mesh.faces()) innerMiss(s, f, worstInner);
+  for (const auto f : boundary.mesh.faces()) innerMiss(boundary, f, worstInnerOfNodes);
+  EXPECT_LT(worstInner, 1e-3);
+  EXPECT_GT(worstInnerOfNodes, 4e-3);
+  // The points carry the cells' own field, as found at their place by the inverse map.
+  ASSERT_EQ(curved.values.size(), s.mesh.n_vertices());
+  for (const auto v : s.mesh.vertices()) {
+    if (v.idx() % 11 != 0) continue;
+    const glm::dvec3 p = positionOf(s, v);
+    double best = INFINITY;
+    for (std::uint32_t cell = 0; cell < mesh.cellCount(); ++cell) {
+      glm::dvec3 xi = field.start(cell);
+      const auto own = field.value(cell, p, xi);
+      if (own && outsideReference(mesh.cellType(cell), xi) < 1e-4)
+        best = std::min(best, std::abs(*own - curved.values[s.mesh.property(s.nodeOfVertex, v)]));
+    }
+    EXPECT_LT(best, 1e-5 * field.valueScale());
+  }
+  // Every element edge on the boundary, drawn in `level` pieces.
+  EXPECT_EQ(s.edges.size(), boundary.edges.size() * std::size_t(curved.level));
+  EXPECT_EQ(s.edgeSpacing.size(), s.edges.size());
+}
+
+TEST(ElementRefinement, TheBoundaryOfAHex8BlockIsColoredByItsTrilinearField) {
+  // f = xyz is the hex8 field exactly: across each piece of a face the colors are linear
+  // between its corners; they stay within 1/1000 of the range of xyz at the piece's
+  // middle, where the two flat triangles of each face miss it by far more.
+  const Mesh mesh = test::hexLattice(CellType::Hex8, 2, [](const glm::dvec3& g) { return g; });
+  const auto f = [](const glm::dvec3& p) { return p.x * p.y * p.z; };
+  const std::vector<double> values = sampled(mesh, f);
+  const TetMesh split = tetrahedralize(mesh);
+  const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+  const BoundarySurface boundary = extractBoundary(mesh);
+  const RefinedSurface curved = refineBoundary(field, boundary);
+  const auto worstMiddle = [&](const BoundarySurface& b, const auto& valueOfVertex) {
+    double worst = 0.0;
+    for (const auto face : b.mesh.faces()) {
+      glm::dvec3 middle(0.0);
+      double mean = 0.0;
+      for (const auto v : face.vertices()) middle += positionOf(b, v) / 3.0, mean += valueOfVertex(v) / 3.0;
+      worst = std::max(worst, std::abs(mean - f(middle)) / 8.0);
+    }
+    return worst;
+  };
+  const BoundarySurface& s = curved.surface;
+  for (const auto v : s.mesh.vertices()) {
+    const glm::dvec3 p = positionOf(s, v);
+    EXPECT_NEAR(curved.values[s.mesh.property(s.nodeOfVertex, v)], f(p), 1e-5);  // float positions
+  }
+  EXPECT_LT(worstMiddle(s, [&](auto v) { return curved.values[s.mesh.property(s.nodeOfVertex, v)]; }), 1e-3);
+  EXPECT_GT(worstMiddle(boundary, [&](auto v) { return values[boundary.mesh.property(boundary.nodeOfVertex, v)]; }),
+            1e-2);
+}
+
+TEST(ElementRefinement, ATet4BoundaryIsLeftAsItIs) {
+  const Mesh mesh = test::referenceCell(CellType::Tet4).first;
+  const TetMesh split = tetrahedralize(mesh);
+  const optics::ElementField field(mesh, sampled(mesh, [](const glm::dvec3& p) { return p.x; }), split,
+                                   glm::dvec3(0.0));
+  const BoundarySurface boundary = extractBoundary(mesh);
+  const RefinedSurface curved = refineBoundary(field, boundary);
+  EXPECT_EQ(curved.level, 1);
+  EXPECT_EQ(curved.surface.mesh.n_faces(), boundary.mesh.n_faces());
+  EXPECT_EQ(curved.surface.edges.size(), boundary.edges.size());
+}
+
+TEST(ElementRefinement, EveryCellTypesBoundaryClosesAndCarriesItsOwnField) {
+  for (CellType type : kAllCellTypes) {
+    SCOPED_TRACE(std::string(cellTypeName(type)));
+    const Mesh mesh = test::referenceCell(type).first;
+    const std::vector<double> values =
+        sampled(mesh, [](const glm::dvec3& p) { return p.x + 2.0 * p.y * p.z - p.x * p.x + 3.0 * p.x * p.y; });
+    const TetMesh split = tetrahedralize(mesh);
+    const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+    const RefinedSurface curved = refineBoundary(field, extractBoundary(mesh), RefinementLimits{1e-12, 3});
+    const BoundarySurface& s = curved.surface;
+    EXPECT_EQ(s.nonManifoldFaceCount, 0u);
+    for (const auto e : s.mesh.edges()) EXPECT_FALSE(s.mesh.is_boundary(e)) << "closed";
+    for (const auto v : s.mesh.vertices()) {
+      glm::dvec3 xi = field.start(0);
+      const auto own = field.value(0, positionOf(s, v), xi);
+      ASSERT_TRUE(own.has_value());
+      EXPECT_NEAR(curved.values[s.mesh.property(s.nodeOfVertex, v)], *own, 1e-5);  // float positions
+    }
+  }
+}
