@@ -299,9 +299,10 @@ void SurfaceRenderer::render(const RenderContext& ctx) {
   glBindTextureUnit(0, colorMap_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scalars_.id());
   glBindVertexArray(surfaceVao_.id());
-  // Push the faces back a little so element edges drawn on them are not z-fighting.
+  // Push the faces back a little so element edges drawn on them are not z-fighting (by 2,
+  // not 1: a curved cell's edges come in short pieces, whose ends otherwise dip behind).
   glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1.0f, 1.0f);
+  glPolygonOffset(2.0f, 2.0f);
   if (showFaces_ && !showPoints_ && opacity_ < 1.0f) {
     // See-through: blended over what is drawn, hiding nothing behind it (no depth write).
     glEnable(GL_BLEND);
