@@ -328,8 +328,14 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   surface.mesh.add_property(surface.nodeOfVertex, "volpost:node");
   surface.mesh.add_property(surface.cellOfFace, "volpost:cell");
 
+  // Points on a triangle's sides may be shared with its neighbours and are found by their
+  // key; points inside it are its own.
+  const std::size_t pieces = curved * std::size_t(n * n) + (triangles.size() - curved);
   std::unordered_map<LatticeKey, NodeIndex, LatticeKeyHash> known;
+  known.reserve(triangles.size() * std::size_t(3 * n) / 2 + 16);
+  surface.mesh.reserve(pieces / 2 + 16, pieces * 3 / 2 + 16, pieces);
   std::vector<SurfaceMesh::VertexHandle> vertexOfPoint;
+  vertexOfPoint.reserve(pieces / 2 + 16);
   const auto newVertex = [&](NodeIndex point, const glm::dvec3& position) {
     const glm::dvec3 p = position - surface.origin;
     const auto v = surface.mesh.add_vertex(SurfaceMesh::Point(float(p.x), float(p.y), float(p.z)));
@@ -337,6 +343,7 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
     return v;
   };
   std::vector<glm::dvec3> positions;  // of the points, to place duplicates of non-manifold faces
+  positions.reserve(pieces / 2 + 16);
   std::vector<NodeIndex> lattice(std::size_t((n + 1) * (n + 1)));
   const auto slot = [n](int i, int j) { return std::size_t(i * (n + 1) + j); };
   std::vector<char> edgeDone(boundary.edges.size(), 0);
@@ -356,17 +363,22 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
     const int scale = n / level;
     for (int i = 0; i <= level; ++i)
       for (int j = 0; i + j <= level; ++j) {
-        const std::array<int, 4> weights{(level - i - j) * scale, i * scale, j * scale, 0};
-        const auto [it, added] = known.try_emplace(latticeKey(map.corners(), weights), NodeIndex(out.values.size()));
-        if (added) {
+        const NodeIndex next = NodeIndex(out.values.size());
+        const bool inside = i > 0 && j > 0 && i + j < level;
+        NodeIndex point = next;
+        if (!inside) {
+          const std::array<int, 4> weights{(level - i - j) * scale, i * scale, j * scale, 0};
+          point = known.try_emplace(latticeKey(map.corners(), weights), next).first->second;
+        }
+        if (point == next) {
           glm::dvec3 position;
           double value = 0.0;
           map.at({(level - i - j) / double(level), i / double(level), j / double(level), 0.0}, position, value);
           out.values.push_back(value);
           positions.push_back(position);
-          vertexOfPoint.push_back(newVertex(it->second, position));
+          vertexOfPoint.push_back(newVertex(point, position));
         }
-        lattice[slot(i, j)] = it->second;
+        lattice[slot(i, j)] = point;
       }
     const auto addFace = [&](NodeIndex a, NodeIndex b, NodeIndex c) {
       auto f = surface.mesh.add_face(vertexOfPoint[a], vertexOfPoint[b], vertexOfPoint[c]);
