@@ -8,6 +8,9 @@
 #include <volpost/core/CellShape.hpp>
 #include "core/Probe.hpp"
 #include "core/ScenePick.hpp"
+#include "host/ElementRefinement.hpp"
+#include "host/IsoSurfaceExtraction.hpp"
+#include "host/SectionCut.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -276,4 +279,49 @@ TEST(Probe, AGridIsProbedTrilinearlyWithoutBuildingItsCells) {
   EXPECT_FALSE(probeAt(*session, g.position(2, 2, 3.2), 0).inside());
   EXPECT_FALSE(model->meshBuilt()) << "the probe needed no cells";
   EXPECT_FALSE(model->fields[0]->isLoaded(0)) << "nor a double copy of the samples";
+}
+
+// The cells' own field is one field: the boundary surface, a section and an iso-surface
+// drawn with it carry, at their points, what the probe (and plot over line, which probes)
+// reads there. A quarter ring of curved hex20, f = x^2 + y z (quadratic in space, so the
+// hex20's serendipity field differs from it only slightly, and from its split by more).
+TEST(Probe, TheCellsOwnSurfacesCarryWhatTheProbeReads) {
+  const auto ring = quarterRing(6, 2);
+  const Mesh& mesh = ring->model().mesh();
+  const std::vector<double>& f = ring->model().fields[0]->values(0);
+  const optics::ElementField field(mesh, f, ring->tetrahedra(), glm::dvec3(0.0));
+  const double range = field.valueScale();
+  const auto probed = [&](const glm::dvec3& p) {
+    const ProbeResult r = probeAt(*ring, p, 0);
+    EXPECT_TRUE(r.inside()) << p.x << " " << p.y << " " << p.z;
+    return r.value("f").value_or(NAN);
+  };
+  // The boundary in the cells' own shapes: its points are on the model and carry the probe's value.
+  const RefinedSurface boundary = refineBoundary(field, ring->surface());
+  const BoundarySurface& s = boundary.surface;
+  ASSERT_GT(boundary.level, 1);
+  int checked = 0;
+  for (const auto v : s.mesh.vertices()) {
+    if (v.idx() % 13 != 0) continue;
+    const auto q = s.mesh.point(v);
+    const glm::dvec3 p = s.origin + glm::dvec3(q[0], q[1], q[2]);
+    EXPECT_NEAR(probed(p), boundary.values[s.mesh.property(s.nodeOfVertex, v)], 1e-5 * range);  // float positions
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  // A section's colors: linear between the refined pieces' points, so to the refinement's
+  // tolerance (1/1000 of the range).
+  const SectionTriangles section = cutCells(field, {}, ClipPlane{{0.0, 0.0, 0.3}, {0.0, 0.0, 1.0}});
+  ASSERT_GT(section.positions.size(), 100u);
+  for (std::size_t k = 0; k < section.positions.size(); k += 11)
+    EXPECT_NEAR(probed(section.positions[k]), section.values[k], 1e-3 * range);
+  // An iso-surface's vertices lie where the probe reads the iso-value, to the same tolerance.
+  const double iso = 1.2;
+  const ExtractedSurface shell = extractIsoSurface(field, iso);
+  ASSERT_GT(shell.mesh.n_vertices(), 100u);
+  for (const auto v : shell.mesh.vertices()) {
+    if (v.idx() % 7 != 0) continue;
+    const auto q = shell.mesh.point(v);
+    EXPECT_NEAR(probed(shell.origin + glm::dvec3(q[0], q[1], q[2])), iso, 1e-3 * range);
+  }
 }
