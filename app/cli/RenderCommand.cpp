@@ -706,6 +706,12 @@ void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRend
 // The model is known: options this renderer takes on one kind of model but not the other.
 void refuseWhatTheRendererIgnoresOnThisModel(const QCommandLineParser& p, const Options& o,
                                              const ChosenRenderer& chosen, bool grid) {
+  // A mesh's boundary follows the interpolation; a regular grid's flat faces do not.
+  if (!chosen.volume && grid && p.isSet(o.interpolation) && !p.isSet(o.clip) && !p.isSet(o.clipBox) &&
+      !p.isSet(o.iso) && !p.isSet(o.slice) && !p.isSet(o.streamlines) && !p.isSet(o.state))
+    throw UsageError(
+        "--interpolation changes a mesh's surface, its sections, slices, iso-surfaces and streamlines, "
+        "or a volume; this model is a regular grid, whose surface picture it does not change");
   if (!chosen.volume || !p.isSet(o.samplingStep)) return;
   const VolumeRendererTraits& t = chosen.volume->traits;
   if (!grid && !t.samplingStepOnMeshes)

@@ -132,6 +132,13 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   ASSERT_EQ(runVolpost(picture + "-o " + splitSurface).exitCode, 0);
   EXPECT_NE(QImage(QString::fromStdString(ownSurface)), QImage(QString::fromStdString(splitSurface)));
   EXPECT_FALSE(QImage(QString::fromStdString(ownSurface)).isNull());
+  // A regular grid's surface picture has nothing it changes: refused, no picture written.
+  const std::string gridPicture = dir + "/grid_surface.png";
+  const auto grid = runVolpost("render " + std::string(VOLPOST_TEST_DATA) +
+                               "/formats/image_ascii.vti --interpolation element -o " + gridPicture);
+  EXPECT_EQ(grid.exitCode, 2) << grid.output;
+  EXPECT_NE(grid.output.find("this model is a regular grid"), std::string::npos) << grid.output;
+  EXPECT_FALSE(std::filesystem::exists(gridPicture));
 
   const std::string state = dir + "/element.json", first = dir + "/state_first.npy", again = dir + "/state_again.npy";
   const auto saved = runVolpost("render " + model +
