@@ -26,12 +26,14 @@ void BoundaryRenderer::initialize() {
 // first time it is drawn: a volume picture never pays for it.
 void BoundaryRenderer::ensureSurface() {
   if (!initialized_ || !session_) return;
-  const auto field = curvedSurfaceWanted()
-                         ? elementField(scalars_ ? scalars_->view : nullptr, scalars_ ? scalars_->version : 0)
-                         : nullptr;
-  const std::optional<std::uint64_t> wanted = field ? elementFieldFor_ : std::nullopt;
+  // Keyed as elementField() keys the field (the iso-surfaces may have asked it for another
+  // view since): the field is built only when the surface must be refined again.
+  std::optional<std::uint64_t> wanted;
+  if (curvedSurfaceWanted())
+    wanted = scalars_ && scalars_->view->location == FieldLocation::Node ? scalars_->version : 0;
   if (!surfaceUploaded_ || wanted != curvedFor_) {
-    if (field) {
+    if (wanted) {
+      const auto field = elementField(scalars_ ? scalars_->view : nullptr, scalars_ ? scalars_->version : 0);
       RefinedSurface curved = refineBoundary(*field, session_->surface());
       surface_.setSurface(curved.surface);
       curvedValues_ = std::move(curved.values);
