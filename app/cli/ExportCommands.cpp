@@ -85,10 +85,14 @@ int writeBoundary(const ModelSession& session, bool ownShapes, const QStringList
                  "has too many faces to refine further\n",
                  curved.deviation);
   saidHow(writeSurface(curved.surface.mesh, curved.surface.origin, pathBytes(files[1])));
-  std::printf(
-      "%s: boundary in the cells' own shapes, %zu triangles (the faces' triangles cut %d times along each "
-      "side)\n",
-      qPrintable(files[1]), curved.surface.mesh.n_faces(), curved.level);
+  if (curved.level == 1)
+    std::printf("%s: boundary in the cells' own shapes, %zu triangles (its faces are flat: drawn as they are)\n",
+                qPrintable(files[1]), curved.surface.mesh.n_faces());
+  else
+    std::printf(
+        "%s: boundary in the cells' own shapes, %zu triangles (the faces' triangles cut %d times along "
+        "each side)\n",
+        qPrintable(files[1]), curved.surface.mesh.n_faces(), curved.level);
   return 0;
 }
 

@@ -249,18 +249,28 @@ RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<
 namespace {
 
 // How far a boundary triangle's straight sides and linear values stray from its cell's map
-// and field: at the midpoints of its sides and at its centre.
-double triangleDeviation(const CellMap& map, double valueScale) {
+// and field: at the midpoints of its sides and at its centre. A side that is an element
+// edge counts whole (it may bend within the surface: an outline); elsewhere only the part
+// across the surface counts, as points moved within a flat face draw the same face (a
+// trapezoid's bilinear map moves its diagonal's middle without bending anything).
+double triangleDeviation(const CellMap& map, double valueScale, const std::array<bool, 3>& sideIsEdge) {
   struct Probe {
     std::array<double, 4> from, to, at;
     double t;  ///< how far along from `from` to `to` the probe `at` lies
+    int side;  ///< the triangle's side it is the middle of; -1: the centre
   };
   constexpr double third = 1.0 / 3.0;
-  static const Probe kProbes[] = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0.5, 0.5, 0, 0}, 0.5},
-                                  {{0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0.5, 0.5, 0}, 0.5},
-                                  {{0, 0, 1, 0}, {1, 0, 0, 0}, {0.5, 0, 0.5, 0}, 0.5},
+  static const Probe kProbes[] = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0.5, 0.5, 0, 0}, 0.5, 0},
+                                  {{0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0.5, 0.5, 0}, 0.5, 1},
+                                  {{0, 0, 1, 0}, {1, 0, 0, 0}, {0.5, 0, 0.5, 0}, 0.5, 2},
                                   // the centre, a third of the way from a side's middle to the far corner
-                                  {{0.5, 0.5, 0, 0}, {0, 0, 1, 0}, {third, third, third, 0}, third}};
+                                  {{0.5, 0.5, 0, 0}, {0, 0, 1, 0}, {third, third, third, 0}, third, -1}};
+  glm::dvec3 corner[3];
+  double ignored = 0.0;
+  map.at({1, 0, 0, 0}, corner[0], ignored), map.at({0, 1, 0, 0}, corner[1], ignored),
+      map.at({0, 0, 1, 0}, corner[2], ignored);
+  const glm::dvec3 across = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
+  const double area2 = glm::length(across);
   double worst = 0.0;
   for (const Probe& s : kProbes) {
     glm::dvec3 a, b, m;
@@ -268,7 +278,10 @@ double triangleDeviation(const CellMap& map, double valueScale) {
     map.at(s.from, a, fa), map.at(s.to, b, fb), map.at(s.at, m, fm);
     const double t = s.t;
     const double length = glm::length(b - a);
-    if (length > 0.0) worst = std::max(worst, glm::length(m - ((1.0 - t) * a + t * b)) / length);
+    const glm::dvec3 off = m - ((1.0 - t) * a + t * b);
+    const bool whole = s.side >= 0 && sideIsEdge[std::size_t(s.side)];
+    const double stray = whole || area2 == 0.0 ? glm::length(off) : std::abs(glm::dot(off, across)) / area2;
+    if (length > 0.0) worst = std::max(worst, stray / length);
     const double fd = std::abs(fm - ((1.0 - t) * fa + t * fb)) / valueScale;
     if (std::isfinite(fd)) worst = std::max(worst, fd);
   }
@@ -315,8 +328,17 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
   double worst = 0.0;
   std::size_t curved = 0;
+  const auto isEdge = [&](NodeIndex a, NodeIndex b) {
+    return std::binary_search(boundary.edges.begin(), boundary.edges.end(),
+                              std::array<NodeIndex, 2>{std::min(a, b), std::max(a, b)});
+  };
   for (const BoundaryTriangle& t : triangles)
-    if (map.select(t.cell, cornersOf(t))) worst = std::max(worst, triangleDeviation(map, field.valueScale())), ++curved;
+    if (map.select(t.cell, cornersOf(t))) {
+      const std::array<bool, 3> sideIsEdge{isEdge(t.nodes[0], t.nodes[1]), isEdge(t.nodes[1], t.nodes[2]),
+                                           isEdge(t.nodes[2], t.nodes[0])};
+      worst = std::max(worst, triangleDeviation(map, field.valueScale(), sideIsEdge));
+      ++curved;
+    }
 
   RefinedSurface out;
   const int n = out.level = surfaceLevelFor(worst, limits, curved);

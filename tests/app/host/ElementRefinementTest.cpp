@@ -382,3 +382,21 @@ TEST(ElementRefinement, EveryCellTypesBoundaryClosesAndCarriesItsOwnField) {
     }
   }
 }
+
+TEST(ElementRefinement, FlatFacesOfDistortedCellsAreNotCutWarpedOnesAre) {
+  // Trapezoids: x stretched with y keeps every face of the hex8 cells flat; their bilinear
+  // maps move points within the faces only, which draws the same faces.
+  const auto shapesOf = [](const Mesh& mesh) {
+    const TetMesh split = tetrahedralize(mesh);
+    const optics::ElementField field(mesh, std::vector<double>(mesh.nodeCount(), 0.0), split, glm::dvec3(0.0));
+    return refineBoundary(field, extractBoundary(mesh));
+  };
+  const RefinedSurface flat = shapesOf(test::hexLattice(
+      CellType::Hex8, 2, [](const glm::dvec3& g) { return glm::dvec3(g.x * (1.0 + 0.3 * g.y), g.y, g.z); }));
+  EXPECT_EQ(flat.level, 1);
+  // The top lifted by x y: its faces warp, and are cut to follow them.
+  const RefinedSurface warped = shapesOf(test::hexLattice(
+      CellType::Hex8, 2, [](const glm::dvec3& g) { return glm::dvec3(g.x, g.y, g.z + 0.1 * g.z * g.x * g.y); }));
+  EXPECT_GT(warped.level, 1);
+  EXPECT_TRUE(warped.toleranceReached);
+}
