@@ -68,7 +68,22 @@ class CellMap {
     for (int i = 0; i < count_; ++i) nodes_[std::size_t(i)] = cells_.nodes[ids[std::size_t(i)]];
     for (int k = 0; k < 4; ++k)
       xi_[std::size_t(k)] = naturalCoordinatesOfSplitNode(cells_, cell_, corners_[std::size_t(k)]);
+    flatFaced_ = type_ == CellType::Pyramid5 || flatFacedCell(type_, {nodes_.data(), std::size_t(count_)});
     return true;
+  }
+
+  /// Whether the cell's map bends none of its faces (a linear cell whose faces are flat):
+  /// it then only moves points within the cell, and straight pieces placed by it fill the
+  /// cell as they should.
+  bool flatFaced() const { return linear_ || flatFaced_; }
+
+  /// The field's gradient in space at barycentric weights `w` (zero where the pieces are
+  /// placed in space: their points do not move).
+  glm::dvec3 gradient(const std::array<double, 4>& w) const {
+    if (linear_ || type_ == CellType::Pyramid5) return glm::dvec3(0.0);
+    glm::dvec3 xi(0.0);
+    for (int k = 0; k < 4; ++k) xi += w[std::size_t(k)] * xi_[std::size_t(k)];
+    return field_.gradient(cell_, xi);
   }
 
   const std::array<NodeIndex, 4>& corners() const { return corners_; }
@@ -118,6 +133,20 @@ class CellMap {
   int count_ = 0;
   std::array<glm::dvec3, kMaxCellNodes> nodes_{};
   std::array<glm::dvec3, 4> xi_{};
+  bool flatFaced_ = false;
+
+  static bool flatFacedCell(CellType type, std::span<const glm::dvec3> nodes) {
+    const CellTopology& topo = topology(type);
+    if (topo.quadratic) return false;
+    for (const CellFace& f : topo.faces) {
+      if (f.size != 4) continue;
+      const glm::dvec3 a = nodes[f.corners[0]], b = nodes[f.corners[1]], c = nodes[f.corners[2]],
+                       d = nodes[f.corners[3]];
+      const double size = glm::length(c - a) + glm::length(d - b);
+      if (std::abs(glm::dot(b - a, glm::cross(c - a, d - a))) > 1e-9 * size * size * size) return false;
+    }
+    return true;
+  }
 };
 
 // How far the split tetrahedron's straight edges and linear values stray from the cell's
@@ -141,8 +170,14 @@ double deviationOf(const CellMap& map, double valueScale) {
     double fa = 0.0, fb = 0.0, fm = 0.0;
     map.at(s.from, a, fa), map.at(s.to, b, fb), map.at(mid, m, fm);
     const double length = glm::length(b - a);
-    if (length > 0.0) worst = std::max(worst, s.weight * glm::length(m - 0.5 * (a + b)) / length);
-    const double fd = s.weight * std::abs(fm - 0.5 * (fa + fb)) / valueScale;
+    const glm::dvec3 straight = 0.5 * (a + b), moved = straight - m;
+    // The shape counts where the map bends a face; inside a flat-faced cell it only moves
+    // the point, which the field's term below sees.
+    if (length > 0.0 && !map.flatFaced()) worst = std::max(worst, s.weight * glm::length(moved) / length);
+    // The straight piece gives its straight middle the mean of the ends; the field there is
+    // the value at m carried along the gradient by the move (to first order: a field linear
+    // in space on a distorted flat-faced cell needs no pieces).
+    const double fd = s.weight * std::abs(fm + glm::dot(map.gradient(mid), moved) - 0.5 * (fa + fb)) / valueScale;
     if (std::isfinite(fd)) worst = std::max(worst, fd);
   }
   return worst;

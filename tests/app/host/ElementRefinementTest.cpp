@@ -400,3 +400,25 @@ TEST(ElementRefinement, FlatFacesOfDistortedCellsAreNotCutWarpedOnesAre) {
   EXPECT_GT(warped.level, 1);
   EXPECT_TRUE(warped.toleranceReached);
 }
+
+TEST(ElementRefinement, AFieldLinearInSpaceOnDistortedFlatFacedCellsNeedsNoPieces) {
+  // Trapezoid hex8 cells carrying f = x + 2 y - z: their own field is that linear function
+  // in space (their map is the same trilinear form), which the split's tetrahedra already
+  // carry. Their bilinear maps move points within the cells without bending a face, which
+  // neither the field nor the shape sees; warped faces still call for pieces.
+  const auto levelFor = [](const Mesh& mesh) {
+    const TetMesh split = tetrahedralize(mesh);
+    const optics::ElementField field(mesh, sampled(mesh, [](const glm::dvec3& p) { return p.x + 2.0 * p.y - p.z; }),
+                                     split, glm::dvec3(0.0));
+    std::vector<std::uint32_t> all(split.mesh.cellCount());
+    for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
+    return refineTetrahedra(field, all).level;
+  };
+  EXPECT_EQ(levelFor(test::hexLattice(
+                CellType::Hex8, 2, [](const glm::dvec3& g) { return glm::dvec3(g.x * (1.0 + 0.3 * g.y), g.y, g.z); })),
+            1);
+  EXPECT_GT(
+      levelFor(test::hexLattice(CellType::Hex8, 2,
+                                [](const glm::dvec3& g) { return glm::dvec3(g.x, g.y, g.z + 0.1 * g.z * g.x * g.y); })),
+      1);
+}
