@@ -317,7 +317,9 @@ double triangleDeviation(const CellMap& map, double valueScale, const std::array
     const bool whole = s.side >= 0 && sideIsEdge[std::size_t(s.side)];
     const double stray = whole || area2 == 0.0 ? glm::length(off) : std::abs(glm::dot(off, across)) / area2;
     if (length > 0.0) worst = std::max(worst, stray / length);
-    const double fd = std::abs(fm - ((1.0 - t) * fa + t * fb)) / valueScale;
+    // As for tetrahedra: the field at the straight point is the value at m carried back
+    // along the gradient.
+    const double fd = std::abs(fm - glm::dot(map.gradient(s.at), off) - ((1.0 - t) * fa + t * fb)) / valueScale;
     if (std::isfinite(fd)) worst = std::max(worst, fd);
   }
   return worst;
