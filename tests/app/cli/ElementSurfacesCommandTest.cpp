@@ -134,6 +134,36 @@ TEST(ElementSurfacesCommand, TheSectionOfCurvedCellsIsRoundWithTheirOwnShapes) {
   EXPECT_GT(drawnInsideRadius(topSplit, coveredBox(topSplit), 0.995), 60) << "the flat one inside radius 0.995";
 }
 
+namespace {
+
+// The vertices and triangles (0-based corners) of an .obj file as `volpost surface` writes it.
+struct ObjSurface {
+  std::vector<glm::dvec3> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+};
+
+ObjSurface readObj(const std::string& path) {
+  ObjSurface out;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line.size() > 2 ? line.substr(2) : std::string());
+    if (line.rfind("v ", 0) == 0) {
+      glm::dvec3 p(0.0);
+      fields >> p.x >> p.y >> p.z;
+      out.points.push_back(p);
+    } else if (line.rfind("f ", 0) == 0) {
+      std::array<std::size_t, 3> t{};
+      std::string corner;
+      for (std::size_t k = 0; k < 3 && fields >> corner; ++k) t[k] = std::size_t(std::stoul(corner) - 1);
+      out.triangles.push_back(t);
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 TEST(ElementSurfacesCommand, SurfaceWritesTheLevelSetOfTheCellsOwnField) {
   const std::string dir = ::testing::TempDir();
   const std::string model = writeQuarterCylinder(dir + "/quarter_iso.vtk", 2);
@@ -142,21 +172,12 @@ TEST(ElementSurfacesCommand, SurfaceWritesTheLevelSetOfTheCellsOwnField) {
   EXPECT_NE(own.output.find("the cells' own field"), std::string::npos) << own.output;
   // Every vertex of the written surface on T = z (x + 2 y) = 0.8: the field is quadratic in
   // the hex20's natural coordinates, only near z (x + 2 y), so within a few hundredths.
-  std::ifstream in(dir + "/own.obj");
-  std::string line;
-  int vertices = 0;
+  const std::vector<glm::dvec3> vertices = readObj(dir + "/own.obj").points;
   double worst = 0.0;
-  while (std::getline(in, line))
-    if (line.rfind("v ", 0) == 0) {
-      std::istringstream v(line.substr(2));
-      double x = 0, y = 0, z = 0;
-      v >> x >> y >> z;
-      worst = std::max(worst, std::abs(z * (x + 2.0 * y) - 0.8));
-      ++vertices;
-    }
-  EXPECT_GT(vertices, 100);
+  for (const glm::dvec3& p : vertices) worst = std::max(worst, std::abs(p.z * (p.x + 2.0 * p.y) - 0.8));
+  EXPECT_GT(vertices.size(), 100u);
   EXPECT_LT(worst, 0.03);
-  // Refused, with the reason: an unknown choice, and the option without a field.
+  // Refused, with the reason: an unknown choice.
   const auto unknown = runVolpost("surface " + model + " " + dir + "/x.obj --field T --iso 0.8 --interpolation cubic");
   EXPECT_EQ(unknown.exitCode, 2);
   EXPECT_NE(unknown.output.find("--interpolation cubic is not one of: element, tetrahedra"), std::string::npos)
@@ -168,22 +189,11 @@ namespace {
 
 // The smallest distance from the z axis of a triangle's middle in an .obj file.
 double innermostMiddle(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<glm::dvec3> points;
-  std::string line;
+  const ObjSurface surface = readObj(path);
   double innermost = INFINITY;
-  while (std::getline(in, line)) {
-    std::istringstream fields(line.substr(2));
-    if (line.rfind("v ", 0) == 0) {
-      glm::dvec3 p;
-      fields >> p.x >> p.y >> p.z;
-      points.push_back(p);
-    } else if (line.rfind("f ", 0) == 0) {
-      glm::dvec3 middle(0.0);
-      std::string corner;
-      while (fields >> corner) middle += points.at(std::size_t(std::stoul(corner) - 1)) / 3.0;
-      innermost = std::min(innermost, std::hypot(middle.x, middle.y));
-    }
+  for (const auto& t : surface.triangles) {
+    const glm::dvec3 middle = (surface.points.at(t[0]) + surface.points.at(t[1]) + surface.points.at(t[2])) / 3.0;
+    innermost = std::min(innermost, std::hypot(middle.x, middle.y));
   }
   return innermost;
 }
