@@ -441,148 +441,189 @@ void stopIfCancelled(const Progress& progress, std::atomic<bool>& stop) {
   }
 }
 
-// One ray per pixel, left uninitialized until the workers fill them (a frame's tens of MB
-// are not zeroed first, and each page is first touched by the thread that fills it).
-class PixelRays {
+// The ray through the centre of pixel (x, y), the same rays as every other renderer. Made
+// per tile as it is walked: a frame keeps no array of rays (at 1024x768 it was 70 MB,
+// fresh pages whose first touches and release cost a fifth of the frame).
+class PixelRayMaker {
  public:
-  explicit PixelRays(std::size_t count) : rays_(new PixelRay[count]), count_(count) {}
-  std::size_t size() const { return count_; }
-  PixelRay& operator[](std::size_t i) { return rays_[i]; }
-  const PixelRay& operator[](std::size_t i) const { return rays_[i]; }
+  PixelRayMaker(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
+                const std::vector<float>& sceneDepth)
+      : toModel_(glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix())),
+        eye_(camera.eye()),
+        origin_(mesh.origin()),
+        ortho_(camera.projection() == Camera::Projection::Orthographic),
+        width_(width),
+        height_(height),
+        depth_(sceneDepth.size() == std::size_t(width) * std::size_t(height) ? &sceneDepth : nullptr) {}
+
+  PixelRay operator()(int x, int y) const {
+    const double nx = 2.0 * (x + 0.5) / width_ - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height_;
+    const glm::dvec3 nearPoint = unproject(nx, ny, -1.0), farPoint = unproject(nx, ny, 1.0);
+    const glm::dvec3 start = ortho_ ? nearPoint : eye_;
+    const glm::dvec3 dir = farPoint - start;
+    const double length = glm::length(dir);
+    // Parameters count from the ray's point nearest the mesh centre: the vectors from it to
+    // the vertices stay short, so float products and parameters keep their precision.
+    const glm::dvec3 unit = dir / length;
+    const double shift = -glm::dot(start - origin_, unit);
+    PixelRay r;
+    r.exactO = start - origin_ + shift * unit;
+    r.exactD = unit;
+    r.o = glm::vec3(r.exactO);
+    r.d = glm::vec3(unit);
+    r.tEye = float(-shift);
+    r.tStart = float((ortho_ ? 0.0 : glm::length(nearPoint - start)) - shift);
+    double end = length;
+    if (depth_) {  // stop at the opaque geometry in front
+      const double z = (*depth_)[std::size_t(height_ - 1 - y) * std::size_t(width_) + std::size_t(x)];
+      if (z < 1.0) end = std::min(end, glm::dot(unproject(nx, ny, 2.0 * z - 1.0) - start, unit));
+    }
+    r.tEnd = float(end - shift);
+    return r;
+  }
 
  private:
-  std::unique_ptr<PixelRay[]> rays_;
-  std::size_t count_;
+  glm::dvec3 unproject(double x, double y, double z) const {
+    const glm::dvec4 p = toModel_ * glm::dvec4(x, y, z, 1.0);
+    return glm::dvec3(p) / p.w;
+  }
+  glm::dmat4 toModel_;
+  glm::dvec3 eye_, origin_;
+  bool ortho_;
+  int width_, height_;
+  const std::vector<float>* depth_;
 };
 
-PixelRays pixelRays(const TetWalkMesh& mesh, const Camera& camera, int width, int height,
-                                const std::vector<float>& sceneDepth, unsigned threads, const Progress& progress) {
-  PixelRays rays(std::size_t(width) * std::size_t(height));
-  const glm::dmat4 toModel = glm::inverse(camera.projectionMatrix(double(width) / height) * camera.viewMatrix());
-  const bool ortho = camera.projection() == Camera::Projection::Orthographic;
-  const auto unproject = [&](double x, double y, double z) {
-    const glm::dvec4 p = toModel * glm::dvec4(x, y, z, 1.0);
-    return glm::dvec3(p) / p.w;
-  };
-  std::atomic<int> nextRow{0};
-  std::atomic<bool> stop{false};
-  runOnThreads(threads, [&](unsigned worker) {
-  for (int y; !stop && (y = nextRow++) < height;) {
-    if (worker == 0 && y % 16 == 0) stopIfCancelled(progress, stop);  // a cancelled frame stops here too
-    for (int x = 0; x < width; ++x) {
-      const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (y + 0.5) / height;
-      const glm::dvec3 nearPoint = unproject(nx, ny, -1.0), farPoint = unproject(nx, ny, 1.0);
-      const glm::dvec3 start = ortho ? nearPoint : camera.eye();
-      const glm::dvec3 dir = farPoint - start;
-      const double length = glm::length(dir);
-      PixelRay& r = rays[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-      // Parameters count from the ray's point nearest the mesh centre: the vectors from it to
-      // the vertices stay short, so float products and parameters keep their precision.
-      const glm::dvec3 unit = dir / length;
-      const double shift = -glm::dot(start - mesh.origin(), unit);
-      r.exactO = start - mesh.origin() + shift * unit;
-      r.exactD = unit;
-      r.o = glm::vec3(r.exactO);
-      r.d = glm::vec3(unit);
-      r.tEye = float(-shift);
-      r.tStart = float((ortho ? 0.0 : glm::length(nearPoint - start)) - shift);
-      double end = length;
-      if (sceneDepth.size() == rays.size()) {  // stop at the opaque geometry in front
-        const double z = sceneDepth[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)];
-        if (z < 1.0) end = std::min(end, glm::dot(unproject(nx, ny, 2.0 * z - 1.0) - start, unit));
-      }
-      r.tEnd = float(end - shift);
-    }
+constexpr int kTile = 16;  ///< pixels are shared out in tiles of kTile x kTile
+
+// The pixels of one tile, [x0, x1) x [y0, y1).
+struct Tile {
+  int x0, y0, x1, y1;
+  int local(int x, int y) const { return (y - y0) * kTile + (x - x0); }
+};
+
+// The pixels whose rays may enter the visible part through a face: [x0, x1] x [y0, y1],
+// empty (x0 > x1) for a face no ray can enter.
+struct Footprint {
+  int x0 = 1, y0 = 1, x1 = 0, y1 = 0;
+};
+
+// Every boundary face of the visible part, projected once per frame: where on the image
+// its rays may enter (back faces and faces off the image enter none), and each tile's list
+// of the faces whose footprint it meets.
+struct FaceTiles {
+  std::vector<Footprint> footprint;  ///< per face
+  std::vector<std::uint32_t> first;  ///< tile i's faces: faces[first[i], first[i + 1])
+  std::vector<std::uint32_t> faces;  ///< face indices, tile by tile
+  bool eyeInside = false;            ///< rays may start inside the mesh (entered behind the eye)
+};
+
+Footprint footprintOf(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dmat4& viewProjection,
+                      bool ortho, const glm::dvec3& eye, const glm::dvec3& viewDir, bool eyeInside, int width,
+                      int height) {
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  int front = 0;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const glm::dvec3& p : {a, b, c}) {
+    const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
+    front += clip.w > 0.0;
+    // Also right for corners behind the eye: the line through the eye and the pixel.
+    const double px = (clip.x / clip.w + 1.0) * 0.5 * width - 0.5, py = (1.0 - clip.y / clip.w) * 0.5 * height - 0.5;
+    lo[0] = std::min(lo[0], px), hi[0] = std::max(hi[0], px);
+    lo[1] = std::min(lo[1], py), hi[1] = std::max(hi[1], py);
   }
-  });
-  return rays;
+  const bool behind = !ortho && front == 0, straddles = !ortho && front > 0 && front < 3;
+  // Faces behind the eye matter only to rays that start inside the mesh (entered behind).
+  if (behind && !eyeInside) return {};
+  // Back faces cannot be entered: every ray passes through the eye, so a face turns the
+  // same side to all of them (the other side when it lies behind the eye).
+  const double facing = glm::dot(n, ortho ? viewDir : a - eye);
+  if (!straddles && (behind ? facing < 0.0 : facing > 0.0)) return {};
+  if (straddles) return {0, 0, width - 1, height - 1};  // its projection is no bounding box: every pixel
+  if (!(hi[0] >= -1.0 && lo[0] <= width && hi[1] >= -1.0 && lo[1] <= height)) return {};
+  return {std::max(0, int(std::floor(lo[0]))), std::max(0, int(std::floor(lo[1]))),
+          std::min(width - 1, int(std::ceil(hi[0]))), std::min(height - 1, int(std::ceil(hi[1])))};
 }
 
-// Every boundary face tested against the pixels its projection covers: the entries of
-// each pixel's ray into the mesh, sorted by pixel then parameter.
-struct Entries {
-  std::vector<Entry> list;            ///< by pixel, then parameter
-  std::vector<std::uint32_t> first;   ///< pixel p's entries: [first[p], first[p + 1])
-};
-
-Entries findEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& faces, const Camera& camera, int width,
-                    int height, const PixelRays& rays, unsigned threads, const Progress& progress) {
+FaceTiles faceTiles(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& faces, const Camera& camera, int width,
+                    int height, unsigned threads, const Progress& progress) {
   const glm::dmat4 viewProjection = camera.projectionMatrix(double(width) / height) * camera.viewMatrix(mesh.origin());
   const bool ortho = camera.projection() == Camera::Projection::Orthographic;
   const glm::dvec3 eye = camera.eye() - mesh.origin();
   const glm::dvec3 viewDir = camera.viewDirection();
   const auto& pos = mesh.exactPositions();
+  FaceTiles out;
   // Is the eye inside the mesh's box? Then rays may start inside the mesh: they are walked
   // from where they entered behind the eye, and integrated from the near plane on.
   glm::dvec3 boxLo(INFINITY), boxHi(-INFINITY);
   for (const glm::dvec3& p : pos) boxLo = glm::min(boxLo, p), boxHi = glm::max(boxHi, p);
-  const bool eyeInside = !ortho && glm::all(glm::greaterThanEqual(eye, boxLo)) && glm::all(glm::lessThanEqual(eye, boxHi));
-  std::vector<std::vector<Entry>> perThread(threads);
+  out.eyeInside = !ortho && glm::all(glm::greaterThanEqual(eye, boxLo)) && glm::all(glm::lessThanEqual(eye, boxHi));
+  out.footprint.resize(faces.size());
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
-  constexpr std::size_t kChunk = 256;
+  constexpr std::size_t kChunk = 1024;
   runOnThreads(threads, [&](unsigned worker) {
-    std::vector<Entry>& out = perThread[worker];
     for (std::size_t first; !stop && (first = next.fetch_add(kChunk)) < faces.size();) {
       if (worker == 0) stopIfCancelled(progress, stop);  // a cancelled frame stops here too
       for (std::size_t fi = first; fi < std::min(first + kChunk, faces.size()); ++fi) {
         const BoundaryFace& f = faces[fi];
-        const glm::dvec3 a = pos[f.v[0]], b = pos[f.v[1]], c = pos[f.v[2]];
-        const glm::dvec3 n = glm::cross(b - a, c - a);
-        int x0 = 0, x1 = width - 1, y0 = 0, y1 = height - 1;
-        int front = 0;
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        for (const glm::dvec3& p : {a, b, c}) {
-          const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
-          front += clip.w > 0.0;
-          // Also right for corners behind the eye: the line through the eye and the pixel.
-          const double px = (clip.x / clip.w + 1.0) * 0.5 * width - 0.5, py = (1.0 - clip.y / clip.w) * 0.5 * height - 0.5;
-          lo[0] = std::min(lo[0], px), hi[0] = std::max(hi[0], px);
-          lo[1] = std::min(lo[1], py), hi[1] = std::max(hi[1], py);
-        }
-        const bool behind = !ortho && front == 0, straddles = !ortho && front > 0 && front < 3;
-        // Faces behind the eye matter only to rays that start inside the mesh (entered behind).
-        if (behind && !eyeInside) continue;
-        // Back faces cannot be entered: every ray passes through the eye, so a face turns
-        // the same side to all of them (the other side when it lies behind the eye).
-        const double facing = glm::dot(n, ortho ? viewDir : a - eye);
-        if (!straddles && (behind ? facing < 0.0 : facing > 0.0)) continue;
-        if (!straddles) {  // else the projection is no bounding box: test every pixel
-          if (!(hi[0] >= -1.0 && lo[0] <= width && hi[1] >= -1.0 && lo[1] <= height)) continue;
-          x0 = std::max(0, int(std::floor(lo[0]))), x1 = std::min(width - 1, int(std::ceil(hi[0])));
-          y0 = std::max(0, int(std::floor(lo[1]))), y1 = std::min(height - 1, int(std::ceil(hi[1])));
-        }
-        for (int y = y0; y <= y1; ++y)
-          for (int x = x0; x <= x1; ++x) {
-            const std::uint32_t pixel = std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(x);
-            const EntryFace e = boundaryEntry(mesh, f, rays[pixel]);
-            if (e.ab.positive || e.bc.positive || e.ca.positive) continue;  // not entering through this face
-            float t, s;
-            if (!crossing(mesh, rays[pixel], e, t, s, true)) continue;
-            if (!eyeInside && t < rays[pixel].tEye) continue;  // behind the eye
-            out.push_back({pixel, t, std::uint32_t(fi)});
-          }
+        out.footprint[fi] = footprintOf(pos[f.v[0]], pos[f.v[1]], pos[f.v[2]], viewProjection, ortho, eye, viewDir,
+                                        out.eyeInside, width, height);
       }
     }
   });
-  std::size_t total = 0;
-  for (const auto& v : perThread) total += v.size();
-  // Counting sort by pixel, then each pixel's few entries by parameter.
-  Entries out;
-  out.first.assign(rays.size() + 1, 0);
-  for (const auto& v : perThread)
-    for (const Entry& e : v) ++out.first[e.pixel + 1];
+  // Each tile's faces by a counting sort, faces in ascending order within a tile.
+  const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+  out.first.assign(std::size_t(tilesX) * std::size_t(tilesY) + 1, 0);
+  const auto eachTile = [&](const Footprint& p, auto&& visit) {
+    for (int ty = p.y0 / kTile; ty <= p.y1 / kTile; ++ty)
+      for (int tx = p.x0 / kTile; tx <= p.x1 / kTile; ++tx)
+        visit(std::size_t(ty) * std::size_t(tilesX) + std::size_t(tx));
+  };
+  for (const Footprint& p : out.footprint)
+    if (p.x0 <= p.x1) eachTile(p, [&](std::size_t tile) { ++out.first[tile + 1]; });
   for (std::size_t i = 1; i < out.first.size(); ++i) out.first[i] += out.first[i - 1];
-  out.list.resize(total);
+  out.faces.resize(out.first.back());
   std::vector<std::uint32_t> fill(out.first.begin(), out.first.end() - 1);
-  for (auto& v : perThread) {
-    for (const Entry& e : v) out.list[fill[e.pixel]++] = e;
-    std::vector<Entry>().swap(v);
-  }
-  for (std::size_t p = 0; p < rays.size(); ++p)
-    if (out.first[p + 1] - out.first[p] > 1)
-      std::sort(out.list.begin() + out.first[p], out.list.begin() + out.first[p + 1]);
+  for (std::size_t fi = 0; fi < faces.size(); ++fi)
+    if (out.footprint[fi].x0 <= out.footprint[fi].x1)
+      eachTile(out.footprint[fi], [&](std::size_t tile) { out.faces[fill[tile]++] = std::uint32_t(fi); });
   return out;
+}
+
+// Where a tile's rays enter the visible part: each face of the tile's list tested against
+// the rays of the pixels its footprint shares with the tile. Listed by pixel (the tile's
+// own index), then parameter: pixel p's entries are list[first[p], first[p + 1]).
+struct TileEntries {
+  std::vector<Entry> list;
+  std::uint32_t first[kTile * kTile + 1];
+};
+
+void findTileEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& faces, const FaceTiles& bins,
+                     std::size_t tileIndex, const Tile& tile, const PixelRay* rays, TileEntries& out) {
+  out.list.clear();
+  for (std::uint32_t i = bins.first[tileIndex]; i < bins.first[tileIndex + 1]; ++i) {
+    const std::uint32_t fi = bins.faces[i];
+    const Footprint& p = bins.footprint[fi];
+    const BoundaryFace& f = faces[fi];
+    for (int y = std::max(p.y0, tile.y0); y <= std::min(p.y1, tile.y1 - 1); ++y)
+      for (int x = std::max(p.x0, tile.x0); x <= std::min(p.x1, tile.x1 - 1); ++x) {
+        const int pixel = tile.local(x, y);
+        const PixelRay& ray = rays[pixel];
+        const EntryFace e = boundaryEntry(mesh, f, ray);
+        if (e.ab.positive || e.bc.positive || e.ca.positive) continue;  // not entering through this face
+        float t, s;
+        if (!crossing(mesh, ray, e, t, s, true)) continue;
+        if (!bins.eyeInside && t < ray.tEye) continue;  // behind the eye
+        out.list.push_back({std::uint32_t(pixel), t, fi});
+      }
+  }
+  std::sort(out.list.begin(), out.list.end());
+  std::size_t at = 0;
+  for (std::uint32_t p = 0; p <= std::uint32_t(kTile * kTile); ++p) {
+    out.first[p] = std::uint32_t(at);
+    while (at < out.list.size() && out.list[at].pixel == p) ++at;
+  }
 }
 
 // Where the clip half-spaces leave the ray: [t0, t1] (empty when t0 >= t1).
@@ -626,16 +667,13 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
   CpuImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height) * 4, 0.0f), {}};
   const unsigned threads = threadsFor(threadCount);
   const auto entryStart = Clock::now();
-  const PixelRays rays = pixelRays(mesh, camera, width, height, settings.sceneDepth, threads, progress);
-  progress.report(0.0);  // a cancelled frame stops between its stages too
   const PiecewiseIntegrator integrator(tf);
   const std::vector<std::uint8_t>& visible = part.tets;
   const std::vector<BoundaryFace>& faces = part.faces;
-  const Entries found = findEntries(mesh, faces, camera, width, height, rays, threads, progress);
-  progress.report(0.0);
-  const std::vector<Entry>& entries = found.list;
-  const std::vector<std::uint32_t>& firstEntry = found.first;
-  image.stats.entryMs = msSince(entryStart);
+  const FaceTiles bins = faceTiles(mesh, faces, camera, width, height, threads, progress);
+  progress.report(0.0);  // a cancelled frame stops between its stages too
+  const PixelRayMaker makeRay(mesh, camera, width, height, settings.sceneDepth);
+  const double binMs = msSince(entryStart);
 
   const CpuElementField* element = settings.element.get();
   if (element && (element->cellOfTet.size() != mesh.tetCount() || mesh.cellValues()))
@@ -654,26 +692,36 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
                       element ? optics::toleratedStretches(*element->field, tf, !settings.isoSurfaces.empty(),
                                                            settings.elementTolerance)
                               : optics::StretchAccuracy{}};
-  constexpr int kTile = 16;
   const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
   std::atomic<int> nextTile{0}, tilesDone{0};
   std::atomic<bool> stop{false};
   std::mutex totalsMutex;
   RayTotals all;
   std::size_t raysHit = 0;
+  double entrySeconds = 0.0;  // all threads together
   const auto walkStart = Clock::now();
   const unsigned ran = runOnThreads(threads, [&](unsigned worker) {
     RayTotals totals;
     std::size_t hit = 0;
+    PixelRay rays[kTile * kTile];
+    TileEntries entries;
+    Clock::duration inEntries{};
     try {
-      for (int tile; !stop && (tile = nextTile++) < tilesX * tilesY;) {
-        const int tx = tile % tilesX, ty = tile / tilesX;
-        for (int y = ty * kTile; y < std::min(height, (ty + 1) * kTile); ++y)
-          for (int x = tx * kTile; x < std::min(width, (tx + 1) * kTile); ++x) {
-            const std::size_t pixel = std::size_t(y) * std::size_t(width) + std::size_t(x);
-            const std::uint32_t begin = firstEntry[pixel], end = firstEntry[pixel + 1];
+      for (int tileIndex; !stop && (tileIndex = nextTile++) < tilesX * tilesY;) {
+        const int tx = tileIndex % tilesX, ty = tileIndex / tilesX;
+        const Tile tile{tx * kTile, ty * kTile, std::min(width, (tx + 1) * kTile), std::min(height, (ty + 1) * kTile)};
+        const auto tileStart = Clock::now();
+        if (bins.first[std::size_t(tileIndex)] != bins.first[std::size_t(tileIndex) + 1])  // else no ray enters
+          for (int y = tile.y0; y < tile.y1; ++y)
+            for (int x = tile.x0; x < tile.x1; ++x) rays[tile.local(x, y)] = makeRay(x, y);
+        findTileEntries(mesh, faces, bins, std::size_t(tileIndex), tile, rays, entries);
+        inEntries += Clock::now() - tileStart;
+        for (int y = tile.y0; y < tile.y1; ++y)
+          for (int x = tile.x0; x < tile.x1; ++x) {
+            const int local = tile.local(x, y);
+            const std::uint32_t begin = entries.first[local], end = entries.first[local + 1];
             if (begin == end) continue;
-            const PixelRay& ray = rays[pixel];
+            const PixelRay& ray = rays[local];
             float w0 = ray.tStart, w1 = ray.tEnd;
             clipWindow(settings.clipPlanes, mesh.origin(), ray, w0, w1);
             if (!(w0 < w1)) continue;
@@ -681,7 +729,7 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
             optics::SegmentLight light;
             float leftAt = -std::numeric_limits<float>::infinity();
             for (std::uint32_t i = begin; i < end; ++i) {
-              const Entry& e = entries[i];
+              const Entry& e = entries.list[i];
               if (e.t < leftAt - shared.reentryTolerance) continue;  // inside what was walked already
               if (e.t >= w1) break;
               const BoundaryFace& f = faces[e.face];
@@ -691,7 +739,7 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
               leftAt = walk(shared, ray, in, f.tet, t, s, w0, w1, light, totals);
               if (std::isinf(leftAt)) break;
             }
-            float* out = &image.rgba[4 * pixel];
+            float* out = &image.rgba[4 * (std::size_t(y) * std::size_t(width) + std::size_t(x))];
             out[0] = float(light.color.r), out[1] = float(light.color.g), out[2] = float(light.color.b);
             out[3] = float(1.0 - light.transmittance);
           }
@@ -703,11 +751,16 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
       throw;
     }
     const std::lock_guard lock(totalsMutex);
+    entrySeconds += std::chrono::duration<double>(inEntries).count();
     all.steps += totals.steps, all.stopped += totals.stopped, all.ambiguous += totals.ambiguous;
     all.capped += totals.capped, all.maxStop = std::max(all.maxStop, totals.maxStop);
     raysHit += hit;
   });
-  image.stats.walkMs = msSince(walkStart);
+  // The entries are found tile by tile as the rays are walked: their share of the wall time
+  // is their share of the threads' time.
+  const double tilesMs = msSince(walkStart), entryShare = std::min(1e3 * entrySeconds / std::max(ran, 1u), tilesMs);
+  image.stats.entryMs = binMs + entryShare;
+  image.stats.walkMs = tilesMs - entryShare;
   image.stats.rays = raysHit;
   image.stats.visibleTets = std::size_t(std::count(visible.begin(), visible.end(), std::uint8_t(1)));
   image.stats.steps = all.steps;
