@@ -155,7 +155,8 @@ void exportCase(const std::filesystem::path& dir, const Case& c, const TransferF
   Model model;
   model.mesh() = c.mesh;
   model.fields.push_back(Field::fromValues("s", c.location, 1, {c.values}));
-  writeVtu(model, (dir / (slug + ".vtu")).string());
+  // Inline: what VTK 9.2 reads where the XML parser defers parsing (VtuWriter.hpp).
+  writeVtu(model, (dir / (slug + ".vtu")).string(), {}, VtuLayout::Inline);
   std::ofstream(dir / (slug + ".tf.json")) << tf.toJson();
   const glm::dvec3 e = camera.eye(), t = camera.target(), u = camera.up();
   std::ofstream(dir / (slug + ".camera.json"))

@@ -47,6 +47,8 @@ def render(case, mapper_name, frames):
     reader.SetFileName(case + ".vtu")
     reader.Update()
     grid = reader.GetOutput()
+    if grid.GetNumberOfCells() == 0 or grid.GetPointData().GetArray("s") is None:
+        sys.exit("%s.vtu: VTK read no cells or no field s (see its messages above)" % case)
     grid.GetPointData().SetActiveScalars("s")
     color, opacity = transfer_functions(case + ".tf.json")
     prop = vtk.vtkVolumeProperty()
