@@ -9,6 +9,22 @@
 
 namespace volpost::app {
 
+namespace {
+
+// Three corners per triangle, back in model coordinates.
+std::vector<glm::dvec3> cornersOf(const BoundarySurface& surface) {
+  std::vector<glm::dvec3> corners;
+  corners.reserve(3 * surface.mesh.n_faces());
+  for (const auto face : surface.mesh.faces())
+    for (const auto vertex : surface.mesh.fv_range(face)) {
+      const auto& p = surface.mesh.point(vertex);
+      corners.push_back(surface.origin + glm::dvec3(p[0], p[1], p[2]));
+    }
+  return corners;
+}
+
+}  // namespace
+
 void BoundaryRenderer::initialize() {
   surface_.initialize();
   sections_.initialize();
@@ -37,9 +53,11 @@ void BoundaryRenderer::ensureSurface() {
       RefinedSurface curved = refineBoundary(*field, session_->surface());
       surface_.setSurface(curved.surface);
       curvedValues_ = std::move(curved.values);
+      curvedCorners_ = cornersOf(curved.surface);
     } else {
       surface_.setSurface(session_->surface());
       curvedValues_ = {};
+      curvedCorners_ = {};
     }
     curvedFor_ = wanted;
     surfaceUploaded_ = true;
@@ -89,6 +107,7 @@ void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   surfaceUploaded_ = false;
   curvedFor_.reset();
   curvedValues_ = {};
+  curvedCorners_ = {};
 }
 
 // Kept until the surface is next drawn (a volume picture never uploads them).

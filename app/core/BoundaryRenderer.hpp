@@ -81,6 +81,10 @@ class BoundaryRenderer {
   std::size_t isoTriangles() const { return isoTriangles_; }
   /// The iso-surfaces' triangles now drawn, three corners each, model coordinates (picking).
   const std::vector<glm::dvec3>& isoCorners() const { return isoCorners_; }
+  /// The boundary's triangles as last drawn in the cells' own shapes, three corners each,
+  /// model coordinates (picking: a click lands on the curved face the user sees); empty
+  /// when the surface is drawn with the model's own flat faces.
+  const std::vector<glm::dvec3>& curvedCorners() const { return curvedCorners_; }
   /// Triangles of the cross-sections now shown (for tests and the status bar).
   std::size_t sectionTriangles() const { return sectionTriangles_; }
   void setShowEdges(bool show) { surface_.setShowEdges(show); }
@@ -158,6 +162,7 @@ class BoundaryRenderer {
   /// none: the session's own surface is uploaded.
   std::optional<std::uint64_t> curvedFor_;
   std::vector<double> curvedValues_;  ///< the field at the curved surface's points
+  std::vector<glm::dvec3> curvedCorners_;
   /// The model's cross-sections on these planes into `target`, colored by the view's
   /// values (sections and slices); returns their triangle count.
   std::size_t uploadCrossSections(SurfaceRenderer& target, const std::vector<ClipPlane>& planes, const ScalarView* view,

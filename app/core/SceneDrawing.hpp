@@ -58,6 +58,8 @@ class SceneDrawing {
   std::size_t isoTriangles() const { return boundary_.isoTriangles(); }
   /// The surface view's iso-surface triangles as last drawn (three corners each).
   const std::vector<glm::dvec3>& isoSurfaceCorners() const { return boundary_.isoCorners(); }
+  /// The boundary as last drawn in the cells' own shapes (BoundaryRenderer::curvedCorners).
+  const std::vector<glm::dvec3>& curvedBoundaryCorners() const { return boundary_.curvedCorners(); }
   /// The cells' own field the volume renderer draws (null: it draws the tetrahedra's).
   const optics::ElementField* elementField() const { return volumeDrawn_ ? elementField_.get() : nullptr; }
   /// The volume renderer is still refining or building tables off the GUI thread.

@@ -48,6 +48,7 @@ SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay) {
     pixels = target.readPixels();
     out.volumeRgba = drawing.readVolumeImage();
     out.isoSurfaceCorners = drawing.isoSurfaceCorners();
+    out.curvedBoundaryCorners = drawing.curvedBoundaryCorners();
     if (const optics::ElementField* field = drawing.elementField())
       out.notes = elementFieldNotes(*field, scene.session()->model().mesh());
   }

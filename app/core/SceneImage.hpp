@@ -19,8 +19,9 @@ struct SceneImage {
   QImage picture;                 ///< RGBA8, what the window would show at this size
   int width = 0, height = 0;
   std::vector<float> volumeRgba;  ///< premultiplied RGBA, top row first; empty without a volume
-  std::vector<glm::dvec3> isoSurfaceCorners;  ///< the surface view's iso-surface triangles as drawn
-  std::vector<std::string> notes;             ///< what the user should know about how it was drawn
+  std::vector<glm::dvec3> isoSurfaceCorners;      ///< the surface view's iso-surface triangles as drawn
+  std::vector<glm::dvec3> curvedBoundaryCorners;  ///< the boundary as drawn in the cells' own shapes
+  std::vector<std::string> notes;                 ///< what the user should know about how it was drawn
 };
 
 /// Draws the scene with its GPU renderers in a headless context of its own (a SceneDrawing

@@ -66,8 +66,28 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
   return best;
 }
 
+namespace {
+
+// The nearest crossing of the ray with the triangles (three corners each) that `kept`
+// accepts, nearer than `nearest` (then lowered to it).
+std::optional<glm::dvec3> pickTriangles(const PickRay& ray, std::span<const glm::dvec3> corners,
+                                        const std::function<bool(const glm::dvec3&)>& kept, double& nearest) {
+  std::optional<glm::dvec3> best;
+  for (std::size_t i = 0; i + 2 < corners.size(); i += 3)
+    if (const auto t = rayHitsTriangle(ray, corners[i], corners[i + 1], corners[i + 2]); t && *t < nearest) {
+      const glm::dvec3 point = ray.origin + *t * ray.direction;
+      if (!kept(point)) continue;
+      nearest = *t;
+      best = point;
+    }
+  return best;
+}
+
+}  // namespace
+
 std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
-                                         std::span<const glm::dvec3> isoSurfaceCorners) {
+                                         std::span<const glm::dvec3> isoSurfaceCorners,
+                                         std::span<const glm::dvec3> curvedBoundaryCorners) {
   const ModelSession* session = scene.session();
   if (!session) return std::nullopt;
   const std::vector<ClipPlane> slices = scene.slicePlanes();
@@ -81,22 +101,17 @@ std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
       if (glm::dot(p - c.point, glm::normalize(c.normal)) < -tolerance) return false;
     return true;
   };
-  if (scene.state().surfaceShown)  // a hidden surface cannot be clicked on
-    if (const auto hit = pickSurface(*session, ray, kept)) {
+  if (scene.state().surfaceShown) {  // a hidden surface cannot be clicked on
+    if (!curvedBoundaryCorners.empty()) {
+      best = pickTriangles(ray, curvedBoundaryCorners, kept, nearest);
+    } else if (const auto hit = pickSurface(*session, ray, kept)) {
       best = hit->point;
       nearest = hit->distance;
     }
-  // Iso-surfaces as drawn in the surface view (already cut by the same planes).
-  if (!scene.volumeShown()) {
-    const std::span<const glm::dvec3> iso = isoSurfaceCorners;
-    for (std::size_t i = 0; i + 2 < iso.size(); i += 3)
-      if (const auto t = rayHitsTriangle(ray, iso[i], iso[i + 1], iso[i + 2]); t && *t < nearest) {
-        const glm::dvec3 point = ray.origin + *t * ray.direction;
-        if (!kept(point)) continue;
-        nearest = *t;
-        best = point;
-      }
   }
+  // Iso-surfaces as drawn in the surface view (already cut by the same planes).
+  if (!scene.volumeShown())
+    if (const auto hit = pickTriangles(ray, isoSurfaceCorners, kept, nearest)) best = hit;
   for (const ClipPlane& cut : cuts) {
     const auto t = rayHitsPlane(ray, cut);
     if (!t || *t >= nearest) continue;

@@ -37,8 +37,11 @@ std::optional<SurfacePick> pickSurface(const ModelSession& session, const PickRa
 /// The first point along the ray of what the scene shows to click on: the boundary surface
 /// where the clip planes and box keep it, the section faces they cut, the iso-surfaces of
 /// the surface view (their triangles as last drawn: SceneDrawing::isoSurfaceCorners), a
-/// regular grid's slices; not the surface while it is hidden. nullopt: a miss.
+/// regular grid's slices; not the surface while it is hidden. Where the boundary is drawn in
+/// the cells' own curved shapes, `curvedBoundaryCorners` (SceneDrawing::curvedBoundaryCorners)
+/// are its triangles, picked instead of the model's flat faces. nullopt: a miss.
 std::optional<glm::dvec3> pickScenePoint(const Scene& scene, const PickRay& ray,
-                                         std::span<const glm::dvec3> isoSurfaceCorners = {});
+                                         std::span<const glm::dvec3> isoSurfaceCorners = {},
+                                         std::span<const glm::dvec3> curvedBoundaryCorners = {});
 
 }  // namespace volpost::app

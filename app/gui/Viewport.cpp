@@ -286,7 +286,7 @@ std::optional<glm::dvec3> Viewport::surfacePointAt(const QPointF& pixel) const {
   if (!scene_.session()) return std::nullopt;
   return pickScenePoint(scene_,
                         pixelRay(scene_.pictureCamera(width(), height()), pixel.x(), pixel.y(), width(), height()),
-                        drawing_.isoSurfaceCorners());
+                        drawing_.isoSurfaceCorners(), drawing_.curvedBoundaryCorners());
 }
 
 void Viewport::mousePressEvent(QMouseEvent* event) {

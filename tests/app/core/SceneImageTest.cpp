@@ -13,10 +13,13 @@
 #include "core/ScenePick.hpp"
 
 #include "support/HeadlessGl.hpp"
+#include "support/HexLattice.hpp"
 
 #include <volpost/render/HeadlessContext.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
+
+#include <numbers>
 
 using namespace volpost;
 using namespace volpost::app;
@@ -328,6 +331,44 @@ TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
       EXPECT_NEAR(r.value("U.x").value(), iso, 1e-5 * std::abs(iso)) << "pixel " << x << ", " << y;
     }
   EXPECT_GT(hits, 20) << "clicks land on the iso-surface";
+}
+
+// Where the boundary is drawn in the cells' own (curved) shapes, a click lands on the curved
+// face drawn, not on the flat faces through the nodes: a quarter annulus of hex20 cells
+// whose midside nodes sit on the arcs, clicked from its axis onto the inner cylinder
+// (radius 1). The flat faces sag inside it by up to 1 - cos(11.25 degrees) = 0.019; the
+// drawn surface follows the cells' own faces (parabolas through three points of each 45
+// degree arc: within 7.3e-4 of the circle) to the refinement's tolerance (1/1000 of the
+// 0.79 long side). The probe reads the clicked point inside the model.
+TEST(ScenePick, ClicksLandOnTheCurvedFacesDrawn) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  auto model = std::make_shared<Model>();
+  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
+  });
+  std::vector<double> t;
+  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::fromModel(model));
+  scene.setResult("T", 0);
+  scene.setInterpolation(FieldInterpolation::Element);
+  const SceneImage drawn = renderSceneImage(scene, 64, 64);
+  ASSERT_GT(drawn.curvedBoundaryCorners.size(), 0u) << "the boundary is drawn curved";
+  double curvedWorst = 0.0, flatWorst = 0.0;
+  for (double degrees = 2.0; degrees < 90.0; degrees += 1.7) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    const PickRay fromAxis{{0.0, 0.0, 0.5}, {std::cos(a), std::sin(a), 0.0}};
+    const auto curved = pickScenePoint(scene, fromAxis, {}, drawn.curvedBoundaryCorners);
+    const auto flat = pickScenePoint(scene, fromAxis);
+    ASSERT_TRUE(curved && flat) << degrees << " degrees";
+    curvedWorst = std::max(curvedWorst, std::abs(std::hypot(curved->x, curved->y) - 1.0));
+    flatWorst = std::max(flatWorst, std::abs(std::hypot(flat->x, flat->y) - 1.0));
+    EXPECT_TRUE(probeAt(*scene.session(), *curved, 0).inside()) << degrees << " degrees";
+  }
+  EXPECT_LT(curvedWorst, 7.3e-4 + 0.79e-3);
+  EXPECT_GT(flatWorst, 1e-2);
 }
 
 // A log scale: S.xx = 100 in the bar's middle sits halfway between 10 and 1000 in log
