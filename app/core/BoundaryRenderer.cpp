@@ -50,13 +50,23 @@ void BoundaryRenderer::ensureSurface() {
   if (!surfaceUploaded_ || wanted != curvedFor_) {
     if (wanted) {
       const auto field = elementField(scalars_ ? scalars_->view : nullptr, scalars_ ? scalars_->version : 0);
-      RefinedSurface curved = refineBoundary(*field, session_->surface());
-      surface_.setSurface(curved.surface);
-      curvedValues_ = std::move(curved.values);
-      curvedCorners_ = cornersOf(curved.surface);
+      // Other node values on the same curved surface (the next step): its points stay where
+      // they are unless the new field needs another level.
+      std::optional<RefinedValues> revalued;
+      if (surfaceUploaded_ && curvedFor_) revalued = revalueBoundary(*field, session_->surface(), curved_);
+      if (revalued) {
+        curved_.values = std::move(revalued->values);
+        curved_.deviation = revalued->deviation;
+        curved_.toleranceReached = revalued->toleranceReached;
+      } else {
+        curved_ = refineBoundary(*field, session_->surface());
+        surface_.setSurface(curved_.surface);
+        curvedCorners_ = cornersOf(curved_.surface);
+        curved_.surface = BoundarySurface();  // on the GPU now; the points' values and origins stay
+      }
     } else {
       surface_.setSurface(session_->surface());
-      curvedValues_ = {};
+      curved_ = RefinedSurface();
       curvedCorners_ = {};
     }
     curvedFor_ = wanted;
@@ -66,7 +76,7 @@ void BoundaryRenderer::ensureSurface() {
   if (scalarsUploaded_) return;
   if (!scalars_) surface_.clearScalars();
   else if (curvedFor_ && scalars_->view->location == FieldLocation::Node)
-    surface_.setScalars(FieldLocation::Node, SampleView(curvedValues_), scalars_->range.min, scalars_->range.max);
+    surface_.setScalars(FieldLocation::Node, SampleView(curved_.values), scalars_->range.min, scalars_->range.max);
   else surface_.setScalars(scalars_->view->location, scalars_->view->values, scalars_->range.min, scalars_->range.max);
   scalarsUploaded_ = true;
 }
@@ -106,7 +116,7 @@ void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
   scalarsUploaded_ = false;
   surfaceUploaded_ = false;
   curvedFor_.reset();
-  curvedValues_ = {};
+  curved_ = RefinedSurface();
   curvedCorners_ = {};
 }
 

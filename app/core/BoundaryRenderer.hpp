@@ -11,6 +11,7 @@
 #include <volpost/core/optics/IsoTables.hpp>
 
 #include <volpost/core/ColorMap.hpp>
+#include "host/ElementRefinement.hpp"
 #include "host/render/SurfaceRenderer.hpp"
 
 #include <glm/vec3.hpp>
@@ -161,7 +162,7 @@ class BoundaryRenderer {
   /// The view version the uploaded curved surface was refined for (0: geometry alone);
   /// none: the session's own surface is uploaded.
   std::optional<std::uint64_t> curvedFor_;
-  std::vector<double> curvedValues_;  ///< the field at the curved surface's points
+  RefinedSurface curved_;  ///< the curved surface drawn: its points' values and origins (its mesh is on the GPU)
   std::vector<glm::dvec3> curvedCorners_;
   /// The model's cross-sections on these planes into `target`, colored by the view's
   /// values (sections and slices); returns their triangle count.

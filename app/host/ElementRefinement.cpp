@@ -352,6 +352,34 @@ std::vector<BoundaryTriangle> trianglesOf(const BoundarySurface& boundary) {
   return out;
 }
 
+// The worst deviation of the boundary's triangles of curved cells (those the map draws in
+// their own shape and field), and how many there are.
+struct SurfaceDeviation {
+  double worst = 0.0;
+  std::size_t curved = 0;
+};
+
+std::array<NodeIndex, 4> cornersOf(const BoundaryTriangle& t) {
+  return {t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]};
+}
+
+SurfaceDeviation surfaceDeviation(CellMap& map, const optics::ElementField& field, const BoundarySurface& boundary,
+                                  const std::vector<BoundaryTriangle>& triangles) {
+  const auto isEdge = [&](NodeIndex a, NodeIndex b) {
+    return std::binary_search(boundary.edges.begin(), boundary.edges.end(),
+                              std::array<NodeIndex, 2>{std::min(a, b), std::max(a, b)});
+  };
+  SurfaceDeviation out;
+  for (const BoundaryTriangle& t : triangles)
+    if (map.select(t.cell, cornersOf(t))) {
+      const std::array<bool, 3> sideIsEdge{isEdge(t.nodes[0], t.nodes[1]), isEdge(t.nodes[1], t.nodes[2]),
+                                           isEdge(t.nodes[2], t.nodes[0])};
+      out.worst = std::max(out.worst, triangleDeviation(map, field.valueScale(), sideIsEdge));
+      ++out.curved;
+    }
+  return out;
+}
+
 }  // namespace
 
 RefinedSurface refineBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
@@ -359,23 +387,8 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   const TetMesh& split = field.split();
   const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
   CellMap map(field.mesh(), field, split, splitValues);
-  const auto cornersOf = [](const BoundaryTriangle& t) {
-    return std::array<NodeIndex, 4>{t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]};
-  };
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
-  double worst = 0.0;
-  std::size_t curved = 0;
-  const auto isEdge = [&](NodeIndex a, NodeIndex b) {
-    return std::binary_search(boundary.edges.begin(), boundary.edges.end(),
-                              std::array<NodeIndex, 2>{std::min(a, b), std::max(a, b)});
-  };
-  for (const BoundaryTriangle& t : triangles)
-    if (map.select(t.cell, cornersOf(t))) {
-      const std::array<bool, 3> sideIsEdge{isEdge(t.nodes[0], t.nodes[1]), isEdge(t.nodes[1], t.nodes[2]),
-                                           isEdge(t.nodes[2], t.nodes[0])};
-      worst = std::max(worst, triangleDeviation(map, field.valueScale(), sideIsEdge));
-      ++curved;
-    }
+  const auto [worst, curved] = surfaceDeviation(map, field, boundary, triangles);
 
   RefinedSurface out;
   const int n = out.level = surfaceLevelFor(worst, limits, curved);
@@ -434,6 +447,7 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
           double value = 0.0;
           map.at({(level - i - j) / double(level), i / double(level), j / double(level), 0.0}, position, value);
           out.values.push_back(value);
+          out.points.push_back({std::uint32_t(ti), std::uint16_t(i), std::uint16_t(j)});
           positions.push_back(position);
           vertexOfPoint.push_back(newVertex(point, position));
         }
@@ -473,6 +487,40 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   }
   surface.mesh.request_face_normals();
   surface.mesh.update_face_normals();
+  progress.report(1.0);
+  return out;
+}
+
+std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
+                                             const RefinedSurface& refined, const RefinementLimits& limits,
+                                             const Progress& progress) {
+  const TetMesh& split = field.split();
+  const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
+  CellMap map(field.mesh(), field, split, splitValues);
+  const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
+  const auto [worst, curved] = surfaceDeviation(map, field, boundary, triangles);
+  const int n = refined.level;
+  if (surfaceLevelFor(worst, limits, curved) != n) return std::nullopt;  // these values need another level
+  RefinedValues out;
+  out.deviation = worst / double(n * n);
+  out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
+  out.values.reserve(refined.points.size());
+  std::uint32_t selected = std::numeric_limits<std::uint32_t>::max();
+  int level = n;
+  for (std::size_t k = 0; k < refined.points.size(); ++k) {
+    if (k % 65536 == 0) progress.report(double(k) / double(refined.points.size()));
+    const RefinedPoint& p = refined.points[k];
+    if (p.triangle >= triangles.size()) return std::nullopt;  // another boundary
+    if (p.triangle != selected) {                             // points come triangle by triangle
+      const BoundaryTriangle& t = triangles[p.triangle];
+      level = map.select(t.cell, cornersOf(t)) ? n : 1;
+      selected = p.triangle;
+    }
+    glm::dvec3 position;
+    double value = 0.0;
+    map.at({(level - p.i - p.j) / double(level), p.i / double(level), p.j / double(level), 0.0}, position, value);
+    out.values.push_back(value);
+  }
   progress.report(1.0);
   return out;
 }

@@ -19,6 +19,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -51,15 +52,30 @@ struct RefinedTetrahedra {
 RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<const std::uint32_t> chosen,
                                    const RefinementLimits& limits = {}, const Progress& progress = {});
 
+/// Where a point of a refined surface comes from: its triangle of the boundary (in the
+/// boundary's face order) and its place (i, j) on that triangle's lattice.
+struct RefinedPoint {
+  std::uint32_t triangle = 0;
+  std::uint16_t i = 0, j = 0;
+};
+
 struct RefinedSurface {
   /// The boundary with each triangle of a cell other than tet4 subdivided n times along
   /// each side in the cell's natural coordinates, placed by the cell's map (curved where a
   /// quadratic cell's faces are): a vertex's node is its point's index in `values`, a face
   /// keeps its cell of the model, and the element edges follow the curved sides in pieces.
   BoundarySurface surface;
-  std::vector<double> values;  ///< the cell's field at each point
-  int level = 1;               ///< subdivisions along each side of the boundary's triangles
-  double deviation = 0.0;      ///< the estimated largest deviation left, as RefinedTetrahedra's
+  std::vector<double> values;        ///< the cell's field at each point
+  std::vector<RefinedPoint> points;  ///< where each point comes from (revalueBoundary)
+  int level = 1;                     ///< subdivisions along each side of the boundary's triangles
+  double deviation = 0.0;            ///< the estimated largest deviation left, as RefinedTetrahedra's
+  bool toleranceReached = true;
+};
+
+/// The field at a refined surface's points for other node values (another step).
+struct RefinedValues {
+  std::vector<double> values;  ///< one per point of the surface
+  double deviation = 0.0;
   bool toleranceReached = true;
 };
 
@@ -68,6 +84,14 @@ struct RefinedSurface {
 /// the tolerance. Throws volpost::Cancelled when `progress` cancels.
 RefinedSurface refineBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
                               const RefinementLimits& limits = {}, const Progress& progress = {});
+
+/// `refined` (refineBoundary of the same boundary and mesh) colored by `field`, another
+/// field on the same cells (the next step): the points stay, only their values are
+/// evaluated, far quicker than refining again. nullopt where `field` needs another level
+/// than refined.level (then refine again). Throws volpost::Cancelled when `progress` cancels.
+std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
+                                             const RefinedSurface& refined, const RefinementLimits& limits = {},
+                                             const Progress& progress = {});
 
 /// The natural coordinates, in `cell` of `cells`, of a node of the cell's split: the cell's
 /// own node's, or for a point the split added, the mean of the cell's corners'.

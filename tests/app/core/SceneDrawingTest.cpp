@@ -3,6 +3,7 @@
 // a second drawing of one scene, or a drawing handed another scene, draws everything.
 #include "support/BarSession.hpp"
 #include "support/HeadlessGl.hpp"
+#include "support/HexLattice.hpp"
 #include "support/QtGuiEnvironment.hpp"
 #include "support/RayCasterScene.hpp"
 #include "support/ReaderSupport.hpp"
@@ -12,6 +13,8 @@
 
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
+
+#include <numbers>
 
 using namespace volpost;
 using namespace volpost::app;
@@ -109,5 +112,45 @@ TEST(SceneDrawing, ARendererThatDrawsApartIsRefusedNamingThoseThatDrawHere) {
               std::string::npos)
         << e.what();
   }
+  drawing.release();
+}
+
+// With the cells' own interpolation, another quantity or step on a quadratic model recolors
+// the curved boundary already drawn (its points stay where the level stays): the picture is
+// the one a fresh drawing makes of it, and going back gives the first picture again.
+TEST(SceneDrawing, AnotherQuantityOnTheCurvedBoundaryDrawsWhatAFreshDrawingDraws) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(64, 48);
+  auto model = std::make_shared<Model>();
+  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
+  });
+  std::vector<double> first, second;
+  for (const glm::dvec3& p : model->mesh().nodes) {
+    first.push_back(p.z * (p.x + 2.0 * p.y));
+    second.push_back(2.0 - p.z * (2.0 * p.x + p.y));
+  }
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {first, second}));
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::fromModel(model));
+  scene.setInterpolation(FieldInterpolation::Element);
+  scene.setResult("T", 0);
+  SceneDrawing drawing;
+  drawing.initialize();
+  const auto stepOne = draw(drawing, scene, target);
+  const std::vector<glm::dvec3> corners = drawing.curvedBoundaryCorners();
+  ASSERT_FALSE(corners.empty());
+  scene.setResult("T", 1);
+  const auto stepTwo = draw(drawing, scene, target);
+  EXPECT_NE(stepTwo, stepOne) << "recolored";
+  EXPECT_EQ(drawing.curvedBoundaryCorners(), corners) << "the points stayed";
+  SceneDrawing fresh;
+  fresh.initialize();
+  EXPECT_EQ(draw(fresh, scene, target), stepTwo);
+  scene.setResult("T", 0);
+  EXPECT_EQ(draw(drawing, scene, target), stepOne);
+  fresh.release();
   drawing.release();
 }

@@ -422,3 +422,41 @@ TEST(ElementRefinement, AFieldLinearInSpaceOnDistortedFlatFacedCellsNeedsNoPiece
                                 [](const glm::dvec3& g) { return glm::dvec3(g.x, g.y, g.z + 0.1 * g.z * g.x * g.y); })),
       1);
 }
+
+// Another step on the same curved surface: the points stay and take the new field's values,
+// the very values a fresh refinement gives them; a field that needs another level is
+// refused (refine again).
+TEST(ElementRefinement, AnotherStepRecolorsTheRefinedBoundaryWithoutMovingItsPoints) {
+  const auto place = [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
+  };
+  const Mesh mesh = test::hexLattice(CellType::Hex20, 2, place);
+  const TetMesh split = tetrahedralize(mesh);
+  const BoundarySurface boundary = extractBoundary(mesh);
+  const auto fieldOf = [&](const std::function<double(const glm::dvec3&)>& f) {
+    return optics::ElementField(mesh, sampled(mesh, f), split, glm::dvec3(0.0));
+  };
+  const optics::ElementField first = fieldOf([](const glm::dvec3& p) { return p.z * (p.x + 2.0 * p.y); });
+  const RefinementLimits limits{1e-3, 16};
+  const RefinedSurface refined = refineBoundary(first, boundary, limits);
+  ASSERT_GT(refined.level, 1);
+  ASSERT_LT(refined.level, 16);
+  ASSERT_EQ(refined.points.size(), refined.values.size());
+  // The next step: the same field scaled and shifted needs the same level.
+  const optics::ElementField next = fieldOf([](const glm::dvec3& p) { return 3.0 * p.z * (p.x + 2.0 * p.y) - 1.0; });
+  const RefinedSurface fresh = refineBoundary(next, boundary, limits);
+  ASSERT_EQ(fresh.level, refined.level);
+  const auto revalued = revalueBoundary(next, boundary, refined, limits);
+  ASSERT_TRUE(revalued.has_value());
+  ASSERT_EQ(revalued->values.size(), fresh.values.size());
+  for (std::size_t k = 0; k < fresh.values.size(); ++k)
+    ASSERT_EQ(revalued->values[k], fresh.values[k]) << "point " << k;
+  EXPECT_EQ(revalued->deviation, fresh.deviation);
+  EXPECT_EQ(revalued->toleranceReached, fresh.toleranceReached);
+  // A field that bends far more within each cell needs more pieces: refused.
+  const optics::ElementField wavy =
+      fieldOf([](const glm::dvec3& p) { return std::sin(9.0 * p.x) * std::cos(7.0 * p.y); });
+  ASSERT_NE(refineBoundary(wavy, boundary, limits).level, refined.level);
+  EXPECT_FALSE(revalueBoundary(wavy, boundary, refined, limits).has_value());
+}
