@@ -19,6 +19,8 @@
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLState.h>
 #include <vtkPiecewiseFunction.h>
+#include <vtkPlane.h>
+#include <vtkPlaneCollection.h>
 #include <vtkPointData.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
@@ -27,14 +29,17 @@
 #include <vtkVolumeProperty.h>
 #include <vtk_glew.h>
 
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <exception>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 /// What is kept between frames: the grid in volpost's terms and its walk mesh (rebuilt when
@@ -166,6 +171,23 @@ void drawOver(vtkRenderer& renderer, const volpost::volume::CpuImage& image) {
                      image.width - 1, image.height - 1, image.width, image.height, 4, VTK_FLOAT, bottomFirst.data());
 }
 
+// VTK's clipping planes as volpost's: both keep the side the normal points to.
+std::vector<volpost::ClipPlane> clipPlanesOf(vtkPlaneCollection* planes) {
+  std::vector<volpost::ClipPlane> out;
+  if (!planes) return out;
+  planes->InitTraversal();
+  while (vtkPlane* plane = planes->GetNextItem()) {
+    double origin[3], normal[3];
+    plane->GetOrigin(origin);
+    plane->GetNormal(normal);
+    const glm::dvec3 n(normal[0], normal[1], normal[2]);
+    if (!(glm::length(n) > 0.0) || !std::isfinite(glm::length(n)) || !std::isfinite(origin[0] + origin[1] + origin[2]))
+      throw std::invalid_argument("a clip plane needs a finite origin and a nonzero normal");
+    out.push_back({glm::dvec3(origin[0], origin[1], origin[2]), glm::normalize(n)});
+  }
+  return out;
+}
+
 }  // namespace
 
 void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
@@ -233,6 +255,7 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
     settings.sceneDepth = sceneDepthOf(*renderer, camera, size[0], size[1]);
     settings.element = s.element;
     settings.elementTolerance = s.element ? this->ElementTolerance : 0.0;
+    settings.clipPlanes = clipPlanesOf(this->ClippingPlanes);
     const volpost::volume::CpuImage image =
         volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, size[0], size[1], settings);
     drawOver(*renderer, image);

@@ -39,6 +39,9 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   /// the mapper draws that same grid (one process: the same points), it walks volpost's own
   /// split of these cells instead of ParaView's.
   void SetSourceGrid(vtkUnstructuredGrid* grid);
+  /// The clipping planes (vtkAbstractMapper::AddClippingPlane, in the data's coordinates)
+  /// cut each ray's stretch exactly: the side a plane's normal points away from is cut away,
+  /// as VTK's mappers do. A plane with a zero normal is refused with an error.
 
   void Render(vtkRenderer* renderer, vtkVolume* volume) override;
   void ReleaseGraphicsResources(vtkWindow*) override {}

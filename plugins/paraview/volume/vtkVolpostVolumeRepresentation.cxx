@@ -6,6 +6,7 @@
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPlane.h>
 #include <vtkUnstructuredGrid.h>
 
 namespace {
@@ -48,6 +49,34 @@ void vtkVolpostVolumeRepresentation::SetElementTolerance(double tolerance) {
     mapper->SetElementTolerance(tolerance);
     this->MarkModified();
   }
+}
+
+void vtkVolpostVolumeRepresentation::SetClipping(int on) {
+  this->Clipping = on != 0;
+  this->UpdateClipping();
+}
+
+void vtkVolpostVolumeRepresentation::SetClipOrigin(double x, double y, double z) {
+  this->ClipOrigin[0] = x, this->ClipOrigin[1] = y, this->ClipOrigin[2] = z;
+  this->UpdateClipping();
+}
+
+void vtkVolpostVolumeRepresentation::SetClipNormal(double x, double y, double z) {
+  this->ClipNormal[0] = x, this->ClipNormal[1] = y, this->ClipNormal[2] = z;
+  this->UpdateClipping();
+}
+
+void vtkVolpostVolumeRepresentation::UpdateClipping() {
+  auto* mapper = vtkVolpostVolumeMapper::SafeDownCast(this->GetActiveVolumeMapper());
+  if (!mapper) return;
+  mapper->RemoveAllClippingPlanes();
+  if (this->Clipping) {
+    vtkNew<vtkPlane> plane;
+    plane->SetOrigin(this->ClipOrigin);
+    plane->SetNormal(this->ClipNormal);
+    mapper->AddClippingPlane(plane);
+  }
+  this->MarkModified();
 }
 
 void vtkVolpostVolumeRepresentation::SetEarlyTermination(double transmittance) {

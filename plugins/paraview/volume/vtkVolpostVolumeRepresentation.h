@@ -24,6 +24,11 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeRepresentation : public vtkUn
   void SetEarlyTermination(double transmittance);
   void SetInterpolation(int interpolation);
   void SetElementTolerance(double tolerance);
+  /// A clip plane: the volume on the side the normal points away from is cut away, each
+  /// ray's stretch through the rest integrated exactly. Off by default.
+  void SetClipping(int on);
+  void SetClipOrigin(double x, double y, double z);
+  void SetClipNormal(double x, double y, double z);
 
  protected:
   vtkVolpostVolumeRepresentation();
@@ -31,10 +36,15 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeRepresentation : public vtkUn
 
   /// Hands the ray caster the grid as it came, before ParaView splits its cells.
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Hands the mapper the plane, or none.
+  void UpdateClipping();
 
  private:
   vtkVolpostVolumeRepresentation(const vtkVolpostVolumeRepresentation&) = delete;
   void operator=(const vtkVolpostVolumeRepresentation&) = delete;
+  bool Clipping = false;
+  double ClipOrigin[3] = {0.0, 0.0, 0.0};
+  double ClipNormal[3] = {1.0, 0.0, 0.0};
 };
 
 #endif

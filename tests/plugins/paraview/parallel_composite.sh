@@ -11,8 +11,9 @@ script="$(dirname "$0")/parallel_composite.py"
 mkdir -p "$outdir"
 rm -f "$outdir"/*.png "$outdir"/*.log
 for ranks in 1 2 4; do
-  for representation in "volpost Volume" "Volume"; do
-    log="$outdir/${representation// /_}$ranks.log"
+  for representation in "volpost Volume" "volpost Volume, clipped" "Volume"; do
+    name=${representation//, /_}
+    log="$outdir/${name// /_}$ranks.log"
     if ! "$mpirun" --allow-run-as-root --oversubscribe -np "$ranks" -x LD_PRELOAD="$preload" \
         "$pvbatch" --mpi "$script" render "$plugin" "$representation" "$outdir" >"$log" 2>&1; then
       echo "FAIL: $representation on $ranks rank(s) (log: $log)"; tail -20 "$log"; exit 1

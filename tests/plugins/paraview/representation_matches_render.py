@@ -13,9 +13,11 @@ map (linear RGB) and opacity function become volpost's transfer function by the 
 docs/user/paraview.md states, written here independently: control points at every node and
 at 257 evenly spaced values, extinction -ln(1 - opacity) / unit distance.
 
-Usage: pvbatch representation_matches_render.py [--hexahedra] [--element] PLUGIN VOLPOST OUTDIR [FILE ARRAY]...
+Usage: pvbatch representation_matches_render.py [--hexahedra] [--element] [--clip] PLUGIN VOLPOST OUTDIR [FILE ARRAY]...
 (--hexahedra: the made grid is of hexahedra, which volpost splits itself in one process;
---element: both sides draw the cells' own field, default tolerance.)
+--element: both sides draw the cells' own field, default tolerance; --clip: both sides cut
+the volume with the same oblique plane through the grid's centre, ParaView's by the
+representation's Clip properties, volpost's by --clip.)
 """
 import json
 import math
@@ -33,7 +35,8 @@ from scenes import hex_block, kuhn_grid, png  # noqa: E402
 
 ELEMENT = "--element" in sys.argv  # the cells' own field on both sides
 HEXAHEDRA = "--hexahedra" in sys.argv  # the made grid of hexahedra rather than tetrahedra
-arguments = [a for a in sys.argv if a not in ("--element", "--hexahedra")]
+CLIP = "--clip" in sys.argv  # an oblique clip plane through the centre on both sides
+arguments = [a for a in sys.argv if a not in ("--element", "--hexahedra", "--clip")]
 plugin, volpost, outdir = arguments[1:4]
 RANKS = servermanager.vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
 ALLOWED = 1 if RANKS == 1 else 2
@@ -99,25 +102,33 @@ for path, array in cases:
     display.EarlyTermination = 0.0
     if ELEMENT:
         display.CellInterpolation = "Cells' own field"
+    clip_normal = [0.8, 0.5, -0.33]  # keeps the far side from the eye: the cut face shows
+    if CLIP:
+        display.Clipping = 1
+        display.ClipOrigin = center
+        display.ClipNormal = clip_normal
     Render(view)  # ParaView fits the camera to the data on a view's first picture: then set ours
     view.CameraPosition = eye
     view.CameraFocalPoint = center
     view.CameraViewUp = up
     view.CameraViewAngle = 30.0
     Render(view)
-    paraview_png = os.path.join(outdir, f"{name}{'.element' if ELEMENT else ''}.paraview{RANKS}.png")
+    variant = (".element" if ELEMENT else "") + (".clip" if CLIP else "")
+    paraview_png = os.path.join(outdir, f"{name}{variant}.paraview{RANKS}.png")
     SaveScreenshot(paraview_png, view, ImageResolution=[WIDTH, HEIGHT])
 
     tf_path = os.path.join(outdir, name + ".tf.json")
     with open(tf_path, "w") as f:
         json.dump(volpost_tf(rgb_points, opacity_points, unit), f)
-    volpost_png = os.path.join(outdir, name + (".element" if ELEMENT else "") + ".volpost.png")
+    volpost_png = os.path.join(outdir, name + variant + ".volpost.png")
     command = [volpost, "render", path, "--renderer", "cpu", "--field", array, "--tf", tf_path,
                "--eye", ",".join(map(repr, eye)), "--target", ",".join(map(repr, center)), "--up", "0,0,1",
                "--view-angle", "30", "--size", f"{WIDTH}x{HEIGHT}", "--background", "black", "--no-legend",
                "--no-triad", "--termination", "0", "-o", volpost_png]
     if ELEMENT:
         command[3:3] = ["--interpolation", "element"]
+    if CLIP:
+        command[3:3] = ["--clip", ",".join(map(repr, center + clip_normal))]
     if os.environ.get("VOLPOST_PV_SHOW_COMMAND"):
         print(" ".join(command))
     done = subprocess.run(command, capture_output=True, text=True)
@@ -131,6 +142,16 @@ for path, array in cases:
           f"off by more than 1, {lit} lit pixels")
     if lit < WIDTH * HEIGHT // 20:
         failures.append(f"{name}: the volpost picture is nearly empty ({lit} lit pixels)")
+    if CLIP:
+        # The cut must show: the same scene without the plane differs by far more than the allowance.
+        display.Clipping = 0
+        Render(view)
+        whole_png = os.path.join(outdir, f"{name}{variant}.unclipped{RANKS}.png")
+        SaveScreenshot(whole_png, view, ImageResolution=[WIDTH, HEIGHT])
+        cut = int((np.abs(png(whole_png) - a) > 16).any(axis=2).sum())
+        print(f"{name}: the plane changed {cut} pixels by more than 16/255")
+        if cut < WIDTH * HEIGHT // 20:
+            failures.append(f"{name}: the clip plane changed only {cut} pixels")
     if difference.max() > ALLOWED:
         failures.append(f"{name}: ParaView's picture ({RANKS} ranks) differs from volpost render's by "
                         f"{difference.max()}/255, more than {ALLOWED}")
