@@ -42,36 +42,63 @@ void BoundaryRenderer::initialize() {
 // first time it is drawn: a volume picture never pays for it.
 void BoundaryRenderer::ensureSurface() {
   if (!initialized_ || !session_) return;
+  surfaceDrawn_ = true;
   // Keyed as elementField() keys the field (the iso-surfaces may have asked it for another
   // view since): the field is built only when the surface must be refined again.
   std::optional<std::uint64_t> wanted;
   if (curvedSurfaceWanted())
     wanted = scalars_ && scalars_->view->location == FieldLocation::Node ? scalars_->version : 0;
+  // A refinement on a worker thread: dropped when the values it was for are no longer
+  // wanted, shown when done.
+  if (refining_ && refining_->key != wanted) stopRefining();
+  if (refining_ && refining_->result.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    std::future<RefinedSurface> done = std::move(refining_->result);
+    refining_.reset();
+    showCurved(done.get(), wanted);
+  }
   if (!surfaceUploaded_ || wanted != curvedFor_) {
     if (wanted) {
       const auto field = elementField(scalars_ ? scalars_->view : nullptr, scalars_ ? scalars_->version : 0);
+      const BoundarySurface& boundary = session_->surface();  // extracted here, not on the worker
       // Other node values on the same curved surface (the next step): its points stay where
       // they are unless the new field needs another level.
       std::optional<RefinedValues> revalued;
-      if (surfaceUploaded_ && curvedFor_) revalued = revalueBoundary(*field, session_->surface(), curved_);
+      if (surfaceUploaded_ && curvedFor_) revalued = revalueBoundary(*field, boundary, curved_);
       if (revalued) {
         curved_.values = std::move(revalued->values);
         curved_.deviation = revalued->deviation;
         curved_.toleranceReached = revalued->toleranceReached;
+        curvedFor_ = wanted;
+        scalarsUploaded_ = false;
+      } else if (asynchronous_) {
+        if (!refining_) {
+          auto cancel = std::make_shared<std::atomic<bool>>(false);
+          refining_ =
+              Refining{wanted, cancel, std::async(std::launch::async, [field, session = session_, cancel] {
+                         return refineBoundary(*field, session->surface(), {},
+                                               Progress([cancel](double, const std::string&) { return !*cancel; }));
+                       })};
+        }
+        // Meanwhile the model's flat faces, with the values wanted.
+        if (!surfaceUploaded_ || curvedFor_) {
+          surface_.setSurface(boundary);
+          curved_ = RefinedSurface();
+          curvedCorners_ = {};
+          curvedFor_.reset();
+          surfaceUploaded_ = true;
+          scalarsUploaded_ = false;
+        }
       } else {
-        curved_ = refineBoundary(*field, session_->surface());
-        surface_.setSurface(curved_.surface);
-        curvedCorners_ = cornersOf(curved_.surface);
-        curved_.surface = BoundarySurface();  // on the GPU now; the points' values and origins stay
+        showCurved(refineBoundary(*field, boundary), wanted);
       }
     } else {
       surface_.setSurface(session_->surface());
       curved_ = RefinedSurface();
       curvedCorners_ = {};
+      curvedFor_ = wanted;
+      surfaceUploaded_ = true;
+      scalarsUploaded_ = false;
     }
-    curvedFor_ = wanted;
-    surfaceUploaded_ = true;
-    scalarsUploaded_ = false;
   }
   if (scalarsUploaded_) return;
   if (!scalars_) surface_.clearScalars();
@@ -81,12 +108,39 @@ void BoundaryRenderer::ensureSurface() {
   scalarsUploaded_ = true;
 }
 
+void BoundaryRenderer::showCurved(RefinedSurface curved, std::optional<std::uint64_t> key) {
+  curved_ = std::move(curved);
+  surface_.setSurface(curved_.surface);
+  curvedCorners_ = cornersOf(curved_.surface);
+  curved_.surface = BoundarySurface();  // on the GPU now; the points' values and origins stay
+  curvedFor_ = key;
+  surfaceUploaded_ = true;
+  scalarsUploaded_ = false;
+}
+
+bool BoundaryRenderer::pending() const {
+  if (!refining_) return false;
+  return surfaceDrawn_ || refining_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+}
+
+void BoundaryRenderer::stopRefining() {
+  if (!refining_) return;
+  *refining_->cancel = true;
+  try {
+    refining_->result.get();  // waits for the worker, which stops at its next report
+  } catch (...) {
+    // Cancelled, or failed: nothing of it is shown.
+  }
+  refining_.reset();
+}
+
 bool BoundaryRenderer::curvedSurfaceWanted() const {
   return interpolation_ == FieldInterpolation::Element && !showPoints_ && session_->model().meshBuilt() &&
          hasNonlinearCells(session_->model().mesh());
 }
 
 void BoundaryRenderer::release() {
+  stopRefining();
   surface_.release();
   sections_.release();
   slices_.release();
@@ -103,6 +157,7 @@ void BoundaryRenderer::release() {
 }
 
 void BoundaryRenderer::setSession(std::shared_ptr<const ModelSession> session) {
+  stopRefining();
   session_ = std::move(session);
   elementField_.reset();
   elementFieldFor_.reset();

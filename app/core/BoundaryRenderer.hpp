@@ -16,7 +16,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <atomic>
 #include <cstdint>
+#include <future>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,7 +27,21 @@ namespace volpost::app {
 
 class BoundaryRenderer {
  public:
+  BoundaryRenderer() = default;
+  BoundaryRenderer(const BoundaryRenderer&) = delete;
+  BoundaryRenderer& operator=(const BoundaryRenderer&) = delete;
+  ~BoundaryRenderer() { stopRefining(); }
   void initialize();
+  /// On (the window): a surface in the cells' own shapes that must be refined anew is refined
+  /// on a worker thread while the model's flat faces are drawn with the same values;
+  /// pending() until it can be drawn. Off (pictures): refined before the frame is drawn.
+  void setAsynchronousUpdates(bool on) { asynchronous_ = on; }
+  /// A curved surface still being refined on a worker thread, or refined and not yet shown
+  /// while the surface is drawn: draw again later to show it.
+  bool pending() const;
+  /// A frame begins: pending() then counts a refined surface as waiting only once the
+  /// frame has drawn the surface (a volume view does not wait for it).
+  void frameStarted() { surfaceDrawn_ = false; }
   void release();
   bool initialized() const { return initialized_; }
 
@@ -155,6 +171,19 @@ class BoundaryRenderer {
   /// Uploads the boundary (the session's, or in the cells' own shapes and field) and its
   /// colors where they are not current.
   void ensureSurface();
+  /// The curved surface refined on a worker thread for `key` (curvedFor_'s meaning).
+  struct Refining {
+    std::optional<std::uint64_t> key;
+    std::shared_ptr<std::atomic<bool>> cancel;
+    std::future<RefinedSurface> result;
+  };
+  std::optional<Refining> refining_;
+  bool asynchronous_ = false;
+  bool surfaceDrawn_ = false;  ///< this frame drew the surface
+  /// Cancels the refinement under way, if any, and waits for its thread.
+  void stopRefining();
+  /// Uploads a curved surface refined for `key`.
+  void showCurved(RefinedSurface curved, std::optional<std::uint64_t> key);
   /// Whether the surface is drawn in the cells' own shapes and field (faces, not the nodes
   /// as points, of a mesh with other cells than tet4).
   bool curvedSurfaceWanted() const;

@@ -116,6 +116,7 @@ void SceneDrawing::release() {
 
 void SceneDrawing::setAsynchronousUpdates(bool on) {
   asynchronous_ = on;
+  boundary_.setAsynchronousUpdates(on);
   if (volume_) volume_->setAsynchronousUpdates(on);
 }
 
@@ -334,6 +335,7 @@ void SceneDrawing::render(const Scene& scene, const RenderContext& target) {
     drawn_.scene = scene.revisions().scene;
   }
   boundary_.background = scene.background();
+  boundary_.frameStarted();
   RenderContext ctx = target;
   const double ratio = scene.devicePixelRatio();
   ctx.camera = scene.pictureCamera(ctx.width / ratio, ctx.height / ratio);

@@ -62,8 +62,9 @@ class SceneDrawing {
   const std::vector<glm::dvec3>& curvedBoundaryCorners() const { return boundary_.curvedCorners(); }
   /// The cells' own field the volume renderer draws (null: it draws the tetrahedra's).
   const optics::ElementField* elementField() const { return volumeDrawn_ ? elementField_.get() : nullptr; }
-  /// The volume renderer is still refining or building tables off the GUI thread.
-  bool hasPendingWork() const { return volume_ && volume_->hasPendingWork(); }
+  /// The volume renderer is still refining or building tables off the GUI thread, or the
+  /// surface in the cells' own shapes is still refined (asynchronous updates).
+  bool hasPendingWork() const { return (volume_ && volume_->hasPendingWork()) || boundary_.pending(); }
 
  private:
   void applyToBoundary(const Scene& scene);

@@ -154,3 +154,47 @@ TEST(SceneDrawing, AnotherQuantityOnTheCurvedBoundaryDrawsWhatAFreshDrawingDraws
   fresh.release();
   drawing.release();
 }
+
+// In the window (asynchronous updates) the surface in the cells' own shapes is refined on a
+// worker thread: the first frame draws the flat faces at once and says work is pending; the
+// frames after it draw what a synchronous drawing draws.
+TEST(SceneDrawing, TheCurvedBoundaryIsRefinedOffTheWindowsThread) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(64, 48);
+  auto model = std::make_shared<Model>();
+  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
+  });
+  std::vector<double> t;
+  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::fromModel(model));
+  scene.setResult("T", 0);
+  SceneDrawing synchronous;
+  synchronous.initialize();
+  const auto flat = draw(synchronous, scene, target);
+  scene.setInterpolation(FieldInterpolation::Element);
+  const auto curved = draw(synchronous, scene, target);
+  ASSERT_NE(curved, flat);
+  scene.setInterpolation(FieldInterpolation::Tetrahedra);
+  SceneDrawing window;
+  window.initialize();
+  window.setAsynchronousUpdates(true);
+  EXPECT_EQ(draw(window, scene, target), flat);
+  scene.setInterpolation(FieldInterpolation::Element);
+  RenderContext ctx;
+  ctx.width = target.width();
+  ctx.height = target.height();
+  ctx.framebuffer = target.framebuffer();
+  window.render(scene, ctx);
+  EXPECT_TRUE(window.curvedBoundaryCorners().empty()) << "the flat faces first";
+  EXPECT_EQ(target.readPixels(), flat);
+  EXPECT_EQ(draw(window, scene, target), curved) << "then the curved surface, once refined";
+  EXPECT_FALSE(window.hasPendingWork());
+  EXPECT_FALSE(window.curvedBoundaryCorners().empty());
+  window.release();
+  synchronous.release();
+}
