@@ -174,7 +174,8 @@ struct Options {
       "element-tolerance",
       "With --interpolation element: the most each pixel's color or opacity (0..1) may differ from the exact "
       "picture of the cells' own field (default 0.01, a bound the pictures stay well under; 0: exact, slower; "
-      "at least 1e-05 otherwise). Renderers that draw it exactly (reference) take no tolerance.",
+      "at least 1e-05 otherwise). Renderers that draw it exactly (reference) take no tolerance. The boundary, "
+      "sections and iso-surfaces follow the cells' shapes and field to a tenth of it.",
       "E"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
                                        "FILE.pfm (RGB over the background).", "FILE"};
@@ -603,10 +604,11 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
     const QString why =
         "works with volume renderers (--renderer " + chosen.namesWhere([](const RendererEntry&) { return true; }) + ")";
     for (const QCommandLineOption* option : {&o.mode, &o.tf, &o.tf2d, &o.volumeEdges, &o.volumeOutline, &o.samplingStep,
-                                             &o.termination, &o.shading, &o.floatOut, &o.threads, &o.elementTolerance})
+                                             &o.termination, &o.shading, &o.floatOut, &o.threads})
       refuse(*option, why);
     // The surface picture's boundary, sections, slices, iso-surfaces and streamlines
-    // follow the interpolation.
+    // follow the interpolation, and its boundary, sections and iso-surfaces the element
+    // tolerance.
     return;
   }
   refuse(o.noEdges, "hides the surface's edges; volume pictures have none unless --volume-edges asks");
@@ -1179,6 +1181,10 @@ int runRender(const QStringList& args) {
       refuseWhatTheRendererIgnoresOnThisModel(parser, o, chosen, session->model().grid.has_value());
       if (parser.isSet(o.elementTolerance) && scene.state().volume.interpolation != FieldInterpolation::Element)
         throw UsageError("--element-tolerance applies to the cells' own field: add --interpolation element");
+      if (parser.isSet(o.elementTolerance) && !chosen.volume && session->model().grid)
+        throw UsageError(
+            "--element-tolerance: a regular grid's surface picture draws its cells as they are "
+            "(nothing follows the tolerance); it applies to its volume");
       try {
         if (glVolume) scene.setVolumeRenderer(rendererName.toStdString());
       } catch (const std::invalid_argument& e) {

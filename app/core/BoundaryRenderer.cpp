@@ -63,7 +63,7 @@ void BoundaryRenderer::ensureSurface() {
       // Other node values on the same curved surface (the next step): its points stay where
       // they are unless the new field needs another level.
       std::optional<RefinedValues> revalued;
-      if (surfaceUploaded_ && curvedFor_) revalued = revalueBoundary(*field, boundary, curved_);
+      if (surfaceUploaded_ && curvedFor_) revalued = revalueBoundary(*field, boundary, curved_, limits_);
       if (revalued) {
         curved_.values = std::move(revalued->values);
         curved_.deviation = revalued->deviation;
@@ -73,11 +73,11 @@ void BoundaryRenderer::ensureSurface() {
       } else if (asynchronous_) {
         if (!refining_) {
           auto cancel = std::make_shared<std::atomic<bool>>(false);
-          refining_ =
-              Refining{wanted, cancel, std::async(std::launch::async, [field, session = session_, cancel] {
-                         return refineBoundary(*field, session->surface(), {},
-                                               Progress([cancel](double, const std::string&) { return !*cancel; }));
-                       })};
+          refining_ = Refining{
+              wanted, cancel, std::async(std::launch::async, [field, session = session_, cancel, limits = limits_] {
+                return refineBoundary(*field, session->surface(), limits,
+                                      Progress([cancel](double, const std::string&) { return !*cancel; }));
+              })};
         }
         // Meanwhile the model's flat faces, with the values wanted.
         if (!surfaceUploaded_ || curvedFor_) {
@@ -89,7 +89,7 @@ void BoundaryRenderer::ensureSurface() {
           scalarsUploaded_ = false;
         }
       } else {
-        showCurved(refineBoundary(*field, boundary), wanted);
+        showCurved(refineBoundary(*field, boundary, limits_), wanted);
       }
     } else {
       surface_.setSurface(session_->surface());
@@ -132,6 +132,24 @@ void BoundaryRenderer::stopRefining() {
     // Cancelled, or failed: nothing of it is shown.
   }
   refining_.reset();
+}
+
+void BoundaryRenderer::setRefinementLimits(const RefinementLimits& limits) {
+  if (limits.tolerance == limits_.tolerance && limits.maxLevel == limits_.maxLevel &&
+      limits.maxTetrahedra == limits_.maxTetrahedra && limits.maxTriangles == limits_.maxTriangles)
+    return;
+  limits_ = limits;
+  // Whatever followed the cells' own field is followed again to the new limits.
+  stopRefining();
+  if (curvedFor_) surfaceUploaded_ = false;
+  curvedFor_.reset();
+  curved_ = RefinedSurface();
+  curvedCorners_ = {};
+  if (interpolation_ == FieldInterpolation::Element) {
+    cutFor_.reset();
+    slicesFor_.reset();
+    isoFor_.reset();
+  }
 }
 
 bool BoundaryRenderer::curvedSurfaceWanted() const {
@@ -235,7 +253,7 @@ std::size_t BoundaryRenderer::uploadCrossSections(SurfaceRenderer& target, const
     const bool perCell = view && view->location != FieldLocation::Node;
     const std::span<const double> cellValues = perCell ? view->values.doubles(converted) : std::span<const double>();
     for (const ClipPlane& plane : planes) {
-      SectionTriangles cut = cutCells(*field, cellValues, plane);
+      SectionTriangles cut = cutCells(*field, cellValues, plane, limits_);
       corners.insert(corners.end(), cut.positions.begin(), cut.positions.end());
       if (view) values.insert(values.end(), cut.values.begin(), cut.values.end());
     }
@@ -299,7 +317,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
   const std::vector<double> values = grid || field ? std::vector<double>() : session_->tetValues(*view);
   for (const auto& iso : surfaces) {
     const ExtractedSurface extracted = grid    ? extractIsoSurface(*model.grid, view->values, iso.value)
-                                       : field ? extractIsoSurface(*field, iso.value)
+                                       : field ? extractIsoSurface(*field, iso.value, limits_)
                                                : extractIsoSurface(session_->tetrahedra(), values, iso.value);
     std::vector<glm::dvec3> corners;
     corners.reserve(extracted.mesh.n_faces() * 3);

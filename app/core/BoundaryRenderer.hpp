@@ -53,6 +53,9 @@ class BoundaryRenderer {
   /// field (ElementRefinement). Takes effect at the next setCuts, setSlices and
   /// setIsoSurfaces, and for the surface at the next draw.
   void setFieldInterpolation(FieldInterpolation interpolation) { interpolation_ = interpolation; }
+  /// How finely the cells' own shapes and field are followed (limitsForElementTolerance):
+  /// another tolerance refines the boundary, sections and iso-surfaces again.
+  void setRefinementLimits(const RefinementLimits& limits);
   /// Colors by the view's values (`viewVersion` changes with them); nullptr shows the plain
   /// surface.
   void setScalars(const ScalarView* view, DisplayRange range, std::uint64_t viewVersion);
@@ -155,6 +158,7 @@ class BoundaryRenderer {
   /// sections and iso-surfaces follow it; nullptr when they use the split.
   std::shared_ptr<const optics::ElementField> elementField(const ScalarView* view, std::uint64_t viewVersion) const;
   FieldInterpolation interpolation_ = FieldInterpolation::Tetrahedra;
+  RefinementLimits limits_;
   mutable std::shared_ptr<const optics::ElementField> elementField_;
   mutable std::optional<std::uint64_t> elementFieldFor_;  ///< its view version (0: geometry alone)
   std::optional<CutKey> cutFor_;  ///< what the sections now uploaded were cut for

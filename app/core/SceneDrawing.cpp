@@ -155,6 +155,7 @@ void SceneDrawing::applyToBoundary(const Scene& scene) {
   // Section cuts in the surface view: the volume's planes and box cut the surface too.
   const std::vector<ClipPlane> cuts = s.volume.allClipPlanes();
   boundary_.setFieldInterpolation(s.volume.interpolation);
+  boundary_.setRefinementLimits(limitsForElementTolerance(s.volume.elementTolerance));
   boundary_.setCuts(s.volume.shown ? std::vector<ClipPlane>{} : cuts, values.view, values.version, range);
   const VersionedView iso = scene.isoSurfaceValues();
   boundary_.setIsoSurfaces(s.volume.shown ? std::vector<optics::IsoSurface>{} : s.volume.isoSurfaces, iso.view,

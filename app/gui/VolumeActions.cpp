@@ -57,7 +57,8 @@ VolumeActions::VolumeActions(QMainWindow& window, Scene& scene, QMenu& view, boo
   tolerance_->setToolTip(
       "How far each pixel's color or opacity may stray from the exact picture of the cells' own field: a "
       "bound the pictures stay well under; 0 draws it exactly (slower). The reference renderer always "
-      "draws it exactly");
+      "draws it exactly. The boundary, sections and iso-surfaces follow the cells' shapes and field to a "
+      "tenth of it");
   connect(tolerance_, &QAction::triggered, this, &VolumeActions::askElementTolerance);
 
   edges_ = view.addAction("Element &Edges over the Volume");

@@ -211,6 +211,12 @@ int levelFor(double deviation, const RefinementLimits& limits, std::size_t chose
 
 }  // namespace
 
+RefinementLimits limitsForElementTolerance(double perChannel) {
+  RefinementLimits limits;
+  limits.tolerance = perChannel > 0.0 ? 0.1 * perChannel : 1e-12;
+  return limits;
+}
+
 glm::dvec3 naturalCoordinatesOfSplitNode(const Mesh& cells, std::uint32_t cell, NodeIndex node) {
   const CellType type = cells.cellType(cell);
   const auto ids = cells.cellNodes(cell);

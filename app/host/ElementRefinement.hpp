@@ -34,6 +34,14 @@ struct RefinementLimits {
   std::size_t maxTriangles = 4'000'000;   ///< and for a surface, below this
 };
 
+/// The limits surfaces of the cells' own field are refined to for the element tolerance
+/// `perChannel` (the most a pixel's channel may differ from the exact picture, as the volume
+/// takes it): the field within a tenth of it relative to the values' range (a color map
+/// changes a channel by at most 10 per unit of its range: the usual maps by 1.5 to 4), the
+/// shape within a tenth of it relative to a piece's side; 0 (exact): as finely as the level
+/// and triangle limits allow. The default 0.01 gives RefinementLimits' 1/1000.
+RefinementLimits limitsForElementTolerance(double perChannel);
+
 struct RefinedTetrahedra {
   /// The pieces: tet4 cells; cellOfTet names each piece's cell of the model. Points shared
   /// by neighbouring pieces (across cells too) are one node, so surfaces stay closed.

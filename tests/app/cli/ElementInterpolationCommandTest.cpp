@@ -139,6 +139,14 @@ TEST(ElementInterpolationCommand, RenderersThatDrawTetrahedraOnlyRefuseItAndTheS
   EXPECT_EQ(grid.exitCode, 2) << grid.output;
   EXPECT_NE(grid.output.find("this model is a regular grid"), std::string::npos) << grid.output;
   EXPECT_FALSE(std::filesystem::exists(gridPicture));
+  // Nor does the element tolerance, where a section makes the interpolation count.
+  const auto gridTolerance = runVolpost("render " + std::string(VOLPOST_TEST_DATA) +
+                                        "/formats/image_ascii.vti --interpolation element --clip 0.5,0.5,0.5,1,0,0 "
+                                        "--element-tolerance 0.05 -o " +
+                                        gridPicture);
+  EXPECT_EQ(gridTolerance.exitCode, 2) << gridTolerance.output;
+  EXPECT_NE(gridTolerance.output.find("draws its cells as they are"), std::string::npos) << gridTolerance.output;
+  EXPECT_FALSE(std::filesystem::exists(gridPicture));
 
   const std::string state = dir + "/element.json", first = dir + "/state_first.npy", again = dir + "/state_again.npy";
   const auto saved = runVolpost("render " + model +
@@ -227,4 +235,11 @@ TEST(ElementInterpolationCommand, TheCpuRayCasterKeepsItsToleranceAndTheStateKee
   EXPECT_NE(split.output.find("add --interpolation element"), std::string::npos) << split.output;
   const auto surface = runVolpost("render " + model + " --field T --element-tolerance 0.01 -o " + png);
   EXPECT_EQ(surface.exitCode, 2) << surface.output;
+  // A surface picture with the cells' own field takes it too: its boundary follows the field
+  // more coarsely with a larger one.
+  const std::string fine = dir + "/tolerance_fine.png", coarse = dir + "/tolerance_coarse.png";
+  const std::string surfacePicture = "render " + model + " --field T --size 80x64 --interpolation element -o ";
+  ASSERT_EQ(runVolpost(surfacePicture + fine).exitCode, 0);
+  ASSERT_EQ(runVolpost(surfacePicture + coarse + " --element-tolerance 0.1").exitCode, 0);
+  EXPECT_NE(readText(fine), readText(coarse)) << "the tolerance is honoured, not ignored";
 }

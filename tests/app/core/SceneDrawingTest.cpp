@@ -198,3 +198,35 @@ TEST(SceneDrawing, TheCurvedBoundaryIsRefinedOffTheWindowsThread) {
   window.release();
   synchronous.release();
 }
+
+// The element tolerance sets how finely surfaces follow the cells' own shapes and field: a
+// coarser one draws the curved boundary in fewer pieces, and going back draws the first again.
+TEST(SceneDrawing, TheElementToleranceSetsHowFinelyTheCurvedBoundaryIsDrawn) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(64, 48);
+  auto model = std::make_shared<Model>();
+  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
+  });
+  std::vector<double> t;
+  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
+  Scene scene([](const std::string&) { return nullptr; });
+  scene.setSession(ModelSession::fromModel(model));
+  scene.setResult("T", 0);
+  scene.setInterpolation(FieldInterpolation::Element);
+  SceneDrawing drawing;
+  drawing.initialize();
+  const auto fine = draw(drawing, scene, target);
+  const std::size_t fineCorners = drawing.curvedBoundaryCorners().size();
+  scene.setElementTolerance(0.1);  // the field and shape within 1/100
+  const auto coarse = draw(drawing, scene, target);
+  EXPECT_LT(4 * drawing.curvedBoundaryCorners().size(), fineCorners);
+  EXPECT_NE(coarse, fine);
+  scene.setElementTolerance(0.01);
+  EXPECT_EQ(draw(drawing, scene, target), fine);
+  EXPECT_EQ(drawing.curvedBoundaryCorners().size(), fineCorners);
+  drawing.release();
+}
