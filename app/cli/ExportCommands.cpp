@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `volpost convert` and `volpost surface`: models out to other tools
 // (VTU for ParaView, OBJ/PLY/STL surfaces).
+#include "../core/SceneState.hpp"
 #include "../core/VolumeSpecs.hpp"
 #include "CliSupport.hpp"
 #include "Commands.hpp"
@@ -63,7 +64,8 @@ namespace {
 // The boundary as it is stored (flat faces through the nodes), or with `ownShapes` in the
 // cells' own shapes: a quadratic cell's faces curved through its midside nodes.
 template <typename SaidHow>
-int writeBoundary(const ModelSession& session, bool ownShapes, const QStringList& files, const SaidHow& saidHow) {
+int writeBoundary(const ModelSession& session, bool ownShapes, const RefinementLimits& limits, const QStringList& files,
+                  const SaidHow& saidHow) {
   const Model& model = session.model();
   if (!ownShapes || !model.meshBuilt() || !hasNonlinearCells(model.mesh())) {
     if (ownShapes && !model.meshBuilt())
@@ -78,12 +80,12 @@ int writeBoundary(const ModelSession& session, bool ownShapes, const QStringList
   const std::vector<double> noValues(model.mesh().nodeCount(), 0.0);
   const optics::ElementField shapes(model.mesh(), noValues, session.tetrahedra(), glm::dvec3(0.0));
   const RefinedSurface curved =
-      refineBoundary(shapes, session.surface(), RefinementLimits{}, terminalProgress("following the cells' shapes"));
+      refineBoundary(shapes, session.surface(), limits, terminalProgress("following the cells' shapes"));
   if (!curved.toleranceReached)
     std::fprintf(stderr,
-                 "volpost: warning: the cells' faces are followed to %.2g of their size, not 1/1000: the surface "
+                 "volpost: warning: the cells' faces are followed to %.2g of their size, not %.2g: the surface "
                  "has too many faces to refine further\n",
-                 curved.deviation);
+                 curved.deviation, limits.tolerance);
   saidHow(writeSurface(curved.surface.mesh, curved.surface.origin, pathBytes(files[1])));
   if (curved.level == 1)
     std::printf("%s: boundary in the cells' own shapes, %zu triangles (its faces are flat: drawn as they are)\n",
@@ -114,9 +116,16 @@ int runSurface(const QStringList& args) {
       "Meshes: the shapes and field the surface follows. tetrahedra (default): the boundary's faces flat through "
       "their nodes, the level set linear on the tetrahedra each cell is split into; element: each cell's own shape "
       "functions, as the solver computed the field (trilinear in a hex8, quadratic in a tet10 or hex20): the "
-      "boundary's curved faces and the level set followed to 1/1000 of the cell's size and of the values' range.",
+      "boundary's curved faces and the level set followed to 1/1000 of the cell's size and of the values' range "
+      "(a tenth of --element-tolerance).",
       "HOW");
-  parser.addOptions({field, iso, step, readerOption, formula, interpolation});
+  const QCommandLineOption elementTolerance(
+      "element-tolerance",
+      "With --interpolation element: the most a color channel of a picture of it may stray (default 0.01; 0: as "
+      "finely as the limits allow; at least 1e-05 otherwise); the surface follows the cells' shapes and field to a "
+      "tenth of it, as volpost render's surfaces do.",
+      "E");
+  parser.addOptions({field, iso, step, readerOption, formula, interpolation, elementTolerance});
   if (const auto code = parseArguments(parser, "volpost surface", args)) return *code;
   const QStringList files = parser.positionalArguments();
   if (files.size() != 2) {
@@ -142,6 +151,20 @@ int runSurface(const QStringList& args) {
     return 2;
   }
   bool ownField = how == FieldInterpolation::Element;
+  RefinementLimits limits;
+  if (parser.isSet(elementTolerance)) {
+    bool ok = false;
+    const double e = parser.value(elementTolerance).toDouble(&ok);
+    if (!ok || !validElementTolerance(e)) {
+      printError(QString("--element-tolerance %1 %2").arg(parser.value(elementTolerance), kElementToleranceRule));
+      return 2;
+    }
+    if (!ownField) {
+      printError("--element-tolerance applies to the cells' own field: add --interpolation element");
+      return 2;
+    }
+    limits = limitsForElementTolerance(e);
+  }
   auto plugins = loadPluginsForCli();
   const auto saidHow = [&](const SurfaceWriteResult& r) {
     const QString ext = QFileInfo(files[1]).suffix().toLower();
@@ -153,7 +176,7 @@ int runSurface(const QStringList& args) {
   return exitCodeOf([&] {
     checkWritable(pathBytes(files[1]));  // before the reading, not after it
     const auto session = loadWithFormulas(plugins->readers(), pathBytes(files[0]), parser, readerOption, formula);
-    if (!parser.isSet(field)) return writeBoundary(*session, ownField, files, saidHow);
+    if (!parser.isSet(field)) return writeBoundary(*session, ownField, limits, files, saidHow);
     const Quantity q = session->findQuantity(parser.value(field).toStdString());
     const ScalarView view = session->evaluate(q, *stepIndex);
     if (view.location != FieldLocation::Node) {
@@ -174,14 +197,14 @@ int runSurface(const QStringList& args) {
             ? extractIsoSurface(*model.grid, view.values, isoValue, terminalProgress("extracting"))
             : ownField ? extractIsoSurface(optics::ElementField(model.mesh(), view.values.doubles(converted),
                                                                 session->tetrahedra(), glm::dvec3(0.0)),
-                                           isoValue, RefinementLimits{}, terminalProgress("extracting"))
+                                           isoValue, limits, terminalProgress("extracting"))
                        : extractIsoSurface(session->tetrahedra(), session->tetValues(view), isoValue,
                                            terminalProgress("extracting"));
     if (ownField && !surface.toleranceReached)
       std::fprintf(stderr,
-                   "volpost: warning: the cells' own field is followed to %.2g of the values' range, not 1/1000: "
+                   "volpost: warning: the cells' own field is followed to %.2g of the values' range, not %.2g: "
                    "the cells crossed are too many or too curved to refine further\n",
-                   surface.deviation);
+                   surface.deviation, limits.tolerance);
     if (surface.mesh.n_faces() == 0)
       std::fprintf(stderr, "volpost: warning: %s = %g is outside the values [%g, %g]: the iso-surface is empty\n",
                    qPrintable(parser.value(field)), isoValue, view.range.min, view.range.max);

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -212,4 +213,31 @@ TEST(ElementSurfacesCommand, SurfaceWritesTheBoundaryInTheCellsOwnShapes) {
   // nodes, sag inside it; the cells' own faces follow it.
   EXPECT_GT(innermostMiddle(dir + "/own_boundary.obj"), 0.999);
   EXPECT_LT(innermostMiddle(dir + "/flat_boundary.obj"), 0.995);
+}
+
+// `volpost surface` follows the element tolerance as pictures do: a coarser one gives fewer
+// pieces; it needs the cells' own field and a valid value.
+TEST(ElementSurfacesCommand, TheElementToleranceSetsHowFinelyTheSurfaceFollowsTheCells) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeQuarterCylinder(dir + "/quarter_tolerance.vtk", 2);
+  const auto triangles = [](const std::string& output) {
+    const auto at = output.find("own shapes, ");
+    return at == std::string::npos ? 0L : std::stol(output.substr(at + 12));
+  };
+  const auto fine = runVolpost("surface " + model + " " + dir + "/fine.obj --interpolation element");
+  ASSERT_EQ(fine.exitCode, 0) << fine.output;
+  const auto coarse =
+      runVolpost("surface " + model + " " + dir + "/coarse.obj --interpolation element --element-tolerance 0.1");
+  ASSERT_EQ(coarse.exitCode, 0) << coarse.output;
+  EXPECT_GT(triangles(coarse.output), 0);
+  EXPECT_LT(4 * triangles(coarse.output), triangles(fine.output)) << coarse.output << fine.output;
+  EXPECT_LT(innermostMiddle(dir + "/fine.obj"), 1.0);
+  const auto flat = runVolpost("surface " + model + " " + dir + "/flat.obj --element-tolerance 0.1");
+  EXPECT_EQ(flat.exitCode, 2);
+  EXPECT_NE(flat.output.find("add --interpolation element"), std::string::npos) << flat.output;
+  const auto big =
+      runVolpost("surface " + model + " " + dir + "/big.obj --interpolation element --element-tolerance 2");
+  EXPECT_EQ(big.exitCode, 2);
+  EXPECT_NE(big.output.find("must be 0 (exact) or lie in [1e-05, 0.1]"), std::string::npos) << big.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/big.obj"));
 }
