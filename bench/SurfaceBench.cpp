@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Loading and surface rendering on the real meshes: read, check, boundary extraction,
-// and frame time of the boundary view at 512x512 along an orbit. Prints a Markdown table.
+// and frame time of the boundary view at 512x512 along an orbit. Prints a Markdown table,
+// then one of the boundary drawn in the cells' own shapes and field as the quantity shown
+// changes (refined again, or recolored where the level stays).
 //   volpost_bench [--frames N] [--size N]
 #include "BenchUsage.hpp"
 
@@ -14,12 +16,13 @@
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 
+#include <sys/resource.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <sys/resource.h>
+#include <vector>
 
 using namespace volpost;
 using Clock = std::chrono::steady_clock;
@@ -41,6 +44,56 @@ const Case kCases[] = {
     {"bracket tet10", "bracket/tet10/bracket_tet10.vtu", "T"},
     {"post coarse", "post/coarse/post_coarse.vtu", "pressure"}, {"post fine", "post/fine/post_fine.vtu", "pressure"},
 };
+
+// The quantities shown one after another on a model of quadratic or mixed cells.
+struct CurvedCase {
+  const char* name;
+  const char* file;
+  std::vector<const char*> quantities;
+};
+
+const CurvedCase kCurvedCases[] = {
+    {"bracket tet10", "bracket/tet10/bracket_tet10.vtu", {"S.mises", "T", "U.magnitude", "S.mises", "T"}},
+    {"wheel mixed", "wheel/mixed/wheel_mixed.vtu", {"S.mises", "U.magnitude", "U.x", "S.mises"}},
+    {"bar tet10", "bar/tet10/bar_tet10.vtu", {"S.mises", "U.magnitude", "S.mises"}},
+};
+
+// The first draw after each change of quantity, with the cells' own interpolation: the
+// boundary refined for it or recolored, then drawn (synchronously, as a picture is).
+void curvedBoundaryTable(const ReaderRegistry& readers, int size) {
+  std::printf(
+      "\nThe boundary in the cells' own shapes and field, %dx%d, the first draw after each change of "
+      "quantity:\n\n| mesh | quantity | draw ms | triangles |\n|---|---|---:|---:|\n",
+      size, size);
+  for (const CurvedCase& c : kCurvedCases) {
+    const std::string path = std::string(VOLPOST_SHARED_DATA) + "/" + c.file;
+    const auto session = app::ModelSession::load(readers, path);
+    OffscreenTarget target(size, size);
+    app::BoundaryRenderer scene;
+    scene.initialize();
+    scene.setSession(session);
+    scene.setFieldInterpolation(FieldInterpolation::Element);
+    Camera camera;
+    camera.setView(StandardView::Isometric);
+    camera.fit(session->model().mesh().bounds());
+    std::uint64_t version = 0;
+    for (const char* quantity : c.quantities) {
+      const app::ScalarView view = session->evaluate(session->findQuantity(quantity), 0);
+      RenderContext ctx;
+      ctx.camera = camera;
+      ctx.width = ctx.height = size;
+      ctx.framebuffer = target.framebuffer();
+      const auto a = Clock::now();
+      scene.setScalars(&view, app::autoRange(view), ++version);
+      scene.render(ctx);
+      glFinish();
+      std::printf("| %s | %s | %.0f | %zu |\n", c.name, quantity, ms(a, Clock::now()),
+                  scene.curvedCorners().size() / 3);
+      scene.setScalars(nullptr, {}, 0);  // the view goes out of scope
+    }
+    scene.release();
+  }
+}
 
 }  // namespace
 
@@ -109,6 +162,7 @@ int main(int argc, char** argv) {
                 sharedModel->mesh().cellCount(), std::size_t(surface.mesh.n_faces()), ms(t0, t1), ms(t1, t2), ms(t2, t3),
                 times.front(), median, times.back(), double(surface.mesh.n_faces()) / median / 1e3);
   }
+  if (shared) curvedBoundaryTable(readers, size);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   std::printf("\npeak resident memory: %.0f MiB\n", usage.ru_maxrss / 1024.0);
