@@ -153,10 +153,15 @@ int runSurface(const QStringList& args) {
   bool ownField = how == FieldInterpolation::Element;
   RefinementLimits limits;
   if (parser.isSet(elementTolerance)) {
-    bool ok = false;
-    const double e = parser.value(elementTolerance).toDouble(&ok);
-    if (!ok || !validElementTolerance(e)) {
-      printError(QString("--element-tolerance %1 %2").arg(parser.value(elementTolerance), kElementToleranceRule));
+    bool isNumber = false;  // Qt reads "nan" and "inf" as numbers: the range refuses them
+    const double e = parser.value(elementTolerance).toDouble(&isNumber);
+    if (!isNumber) {
+      printError(QString("--element-tolerance %1 is not a number").arg(parser.value(elementTolerance)));
+      return 2;
+    }
+    if (!validElementTolerance(e)) {
+      printError(QString("--element-tolerance %1: the tolerance of the cells' own field %2")
+                     .arg(parser.value(elementTolerance), kElementToleranceRule));
       return 2;
     }
     if (!ownField) {

@@ -11,14 +11,15 @@ namespace volpost::app {
 
 namespace {
 
-// Three corners per triangle, back in model coordinates.
-std::vector<glm::dvec3> cornersOf(const BoundarySurface& surface) {
+// Three corners per triangle of `mesh` (float positions relative to `origin`), back in
+// model coordinates.
+std::vector<glm::dvec3> cornersOf(const SurfaceMesh& mesh, const glm::dvec3& origin) {
   std::vector<glm::dvec3> corners;
-  corners.reserve(3 * surface.mesh.n_faces());
-  for (const auto face : surface.mesh.faces())
-    for (const auto vertex : surface.mesh.fv_range(face)) {
-      const auto& p = surface.mesh.point(vertex);
-      corners.push_back(surface.origin + glm::dvec3(p[0], p[1], p[2]));
+  corners.reserve(3 * mesh.n_faces());
+  for (const auto face : mesh.faces())
+    for (const auto vertex : mesh.fv_range(face)) {
+      const auto& p = mesh.point(vertex);
+      corners.push_back(origin + glm::dvec3(p[0], p[1], p[2]));
     }
   return corners;
 }
@@ -111,7 +112,7 @@ void BoundaryRenderer::ensureSurface() {
 void BoundaryRenderer::showCurved(RefinedSurface curved, std::optional<std::uint64_t> key) {
   curved_ = std::move(curved);
   surface_.setSurface(curved_.surface);
-  curvedCorners_ = cornersOf(curved_.surface);
+  curvedCorners_ = cornersOf(curved_.surface.mesh, curved_.surface.origin);
   curved_.surface = BoundarySurface();  // on the GPU now; the points' values and origins stay
   curvedFor_ = key;
   surfaceUploaded_ = true;
@@ -135,9 +136,7 @@ void BoundaryRenderer::stopRefining() {
 }
 
 void BoundaryRenderer::setRefinementLimits(const RefinementLimits& limits) {
-  if (limits.tolerance == limits_.tolerance && limits.maxLevel == limits_.maxLevel &&
-      limits.maxTetrahedra == limits_.maxTetrahedra && limits.maxTriangles == limits_.maxTriangles)
-    return;
+  if (limits == limits_) return;
   limits_ = limits;
   // Whatever followed the cells' own field is followed again to the new limits.
   stopRefining();
@@ -319,13 +318,7 @@ void BoundaryRenderer::setIsoSurfaces(const std::vector<optics::IsoSurface>& sur
     const ExtractedSurface extracted = grid    ? extractIsoSurface(*model.grid, view->values, iso.value)
                                        : field ? extractIsoSurface(*field, iso.value, limits_)
                                                : extractIsoSurface(session_->tetrahedra(), values, iso.value);
-    std::vector<glm::dvec3> corners;
-    corners.reserve(extracted.mesh.n_faces() * 3);
-    for (const auto f : extracted.mesh.faces())
-      for (const auto v : f.vertices()) {
-        const auto p = extracted.mesh.point(v);
-        corners.push_back(extracted.origin + glm::dvec3(p[0], p[1], p[2]));
-      }
+    const std::vector<glm::dvec3> corners = cornersOf(extracted.mesh, extracted.origin);
     auto renderer = std::make_unique<SurfaceRenderer>();
     renderer->initialize();
     renderer->setShowEdges(false);

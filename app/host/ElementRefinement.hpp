@@ -32,6 +32,7 @@ struct RefinementLimits {
   int maxLevel = 8;                       ///< subdivisions along an edge at most
   std::size_t maxTetrahedra = 4'000'000;  ///< the level is lowered to stay below this
   std::size_t maxTriangles = 4'000'000;   ///< and for a surface, below this
+  bool operator==(const RefinementLimits&) const = default;
 };
 
 /// The limits surfaces of the cells' own field are refined to for the element tolerance

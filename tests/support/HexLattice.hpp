@@ -4,13 +4,18 @@
 #pragma once
 
 #include <volpost/core/CellShape.hpp>
+#include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
+#include <volpost/core/Model.hpp>
 
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
+#include <numbers>
 #include <vector>
 
 namespace volpost::test {
@@ -34,6 +39,28 @@ inline Mesh hexLattice(CellType type, int n, const std::function<glm::dvec3(cons
         mesh.addCell(type, ids);
       }
   return mesh;
+}
+
+// n^3 hex20 cells of the quarter annulus r in [1, 2], theta in [0, 90 degrees], z in [0, 1],
+// every node (the midside ones too) on its arc.
+inline Mesh hex20QuarterAnnulus(int n) {
+  return hexLattice(CellType::Hex20, n, [n](const glm::dvec3& g) {
+    const double r = 1.0 + g.x / n, theta = std::numbers::pi / 2.0 * g.y / n;
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / n);
+  });
+}
+
+// The quarter annulus of n^3 hex20 cells carrying the node field T, one step per function
+// of the position.
+inline std::shared_ptr<Model> quarterAnnulusModel(int n,
+                                                  const std::vector<std::function<double(const glm::dvec3&)>>& steps) {
+  auto model = std::make_shared<Model>();
+  model->mesh() = hex20QuarterAnnulus(n);
+  std::vector<std::vector<double>> values(steps.size());
+  for (const glm::dvec3& p : model->mesh().nodes)
+    for (std::size_t s = 0; s < steps.size(); ++s) values[s].push_back(steps[s](p));
+  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, values));
+  return model;
 }
 
 }  // namespace volpost::test

@@ -240,4 +240,8 @@ TEST(ElementSurfacesCommand, TheElementToleranceSetsHowFinelyTheSurfaceFollowsTh
   EXPECT_EQ(big.exitCode, 2);
   EXPECT_NE(big.output.find("must be 0 (exact) or lie in [1e-05, 0.1]"), std::string::npos) << big.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/big.obj"));
+  const auto word =
+      runVolpost("surface " + model + " " + dir + "/word.obj --interpolation element --element-tolerance fine");
+  EXPECT_EQ(word.exitCode, 2);
+  EXPECT_NE(word.output.find("--element-tolerance fine is not a number"), std::string::npos) << word.output;
 }

@@ -14,7 +14,6 @@
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 
-#include <numbers>
 
 using namespace volpost;
 using namespace volpost::app;
@@ -41,6 +40,15 @@ std::vector<std::uint8_t> draw(SceneDrawing& drawing, const Scene& scene, const 
   ctx.framebuffer = target.framebuffer();
   for (int i = 0; i == 0 || (i < 10000 && drawing.hasPendingWork()); ++i) drawing.render(scene, ctx);
   return target.readPixels();
+}
+
+double annulusT(const glm::dvec3& p) { return p.z * (p.x + 2.0 * p.y); }
+
+// A quarter annulus of 2^3 hex20 cells whose midside nodes sit on the arcs, showing its node
+// field T (one step per function) at the first step.
+void showAnnulus(Scene& scene, const std::vector<std::function<double(const glm::dvec3&)>>& steps) {
+  scene.setSession(ModelSession::fromModel(test::quarterAnnulusModel(2, steps)));
+  scene.setResult("T", 0);
 }
 
 }  // namespace
@@ -122,21 +130,9 @@ TEST(SceneDrawing, AnotherQuantityOnTheCurvedBoundaryDrawsWhatAFreshDrawingDraws
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
   OffscreenTarget target(64, 48);
-  auto model = std::make_shared<Model>();
-  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
-    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
-  });
-  std::vector<double> first, second;
-  for (const glm::dvec3& p : model->mesh().nodes) {
-    first.push_back(p.z * (p.x + 2.0 * p.y));
-    second.push_back(2.0 - p.z * (2.0 * p.x + p.y));
-  }
-  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {first, second}));
   Scene scene([](const std::string&) { return nullptr; });
-  scene.setSession(ModelSession::fromModel(model));
+  showAnnulus(scene, {annulusT, [](const glm::dvec3& p) { return 2.0 - p.z * (2.0 * p.x + p.y); }});
   scene.setInterpolation(FieldInterpolation::Element);
-  scene.setResult("T", 0);
   SceneDrawing drawing;
   drawing.initialize();
   const auto stepOne = draw(drawing, scene, target);
@@ -162,17 +158,8 @@ TEST(SceneDrawing, TheCurvedBoundaryIsRefinedOffTheWindowsThread) {
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
   OffscreenTarget target(64, 48);
-  auto model = std::make_shared<Model>();
-  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
-    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
-  });
-  std::vector<double> t;
-  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
-  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
   Scene scene([](const std::string&) { return nullptr; });
-  scene.setSession(ModelSession::fromModel(model));
-  scene.setResult("T", 0);
+  showAnnulus(scene, {annulusT});
   SceneDrawing synchronous;
   synchronous.initialize();
   const auto flat = draw(synchronous, scene, target);
@@ -205,17 +192,8 @@ TEST(SceneDrawing, TheElementToleranceSetsHowFinelyTheCurvedBoundaryIsDrawn) {
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
   OffscreenTarget target(64, 48);
-  auto model = std::make_shared<Model>();
-  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
-    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
-  });
-  std::vector<double> t;
-  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
-  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
   Scene scene([](const std::string&) { return nullptr; });
-  scene.setSession(ModelSession::fromModel(model));
-  scene.setResult("T", 0);
+  showAnnulus(scene, {annulusT});
   scene.setInterpolation(FieldInterpolation::Element);
   SceneDrawing drawing;
   drawing.initialize();

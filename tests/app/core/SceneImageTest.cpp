@@ -342,16 +342,9 @@ TEST(ScenePick, ClicksPickIsoSurfacesInTheSurfaceView) {
 // 0.79 long side). The probe reads the clicked point inside the model.
 TEST(ScenePick, ClicksLandOnTheCurvedFacesDrawn) {
   VOLPOST_SKIP_WITHOUT_GL();
-  auto model = std::make_shared<Model>();
-  model->mesh() = test::hexLattice(CellType::Hex20, 2, [](const glm::dvec3& g) {
-    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
-  });
-  std::vector<double> t;
-  for (const glm::dvec3& p : model->mesh().nodes) t.push_back(p.z * (p.x + 2.0 * p.y));
-  model->fields.push_back(Field::fromValues("T", FieldLocation::Node, 1, {t}));
   Scene scene([](const std::string&) { return nullptr; });
-  scene.setSession(ModelSession::fromModel(model));
+  scene.setSession(ModelSession::fromModel(
+      test::quarterAnnulusModel(2, {[](const glm::dvec3& p) { return p.z * (p.x + 2.0 * p.y); }})));
   scene.setResult("T", 0);
   scene.setInterpolation(FieldInterpolation::Element);
   const SceneImage drawn = renderSceneImage(scene, 64, 64);

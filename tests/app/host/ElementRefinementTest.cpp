@@ -427,11 +427,7 @@ TEST(ElementRefinement, AFieldLinearInSpaceOnDistortedFlatFacedCellsNeedsNoPiece
 // the very values a fresh refinement gives them; a field that needs another level is
 // refused (refine again).
 TEST(ElementRefinement, AnotherStepRecolorsTheRefinedBoundaryWithoutMovingItsPoints) {
-  const auto place = [](const glm::dvec3& g) {
-    const double r = 1.0 + g.x / 2.0, theta = std::numbers::pi / 2.0 * g.y / 2.0;
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), g.z / 2.0);
-  };
-  const Mesh mesh = test::hexLattice(CellType::Hex20, 2, place);
+  const Mesh mesh = test::hex20QuarterAnnulus(2);
   const TetMesh split = tetrahedralize(mesh);
   const BoundarySurface boundary = extractBoundary(mesh);
   const auto fieldOf = [&](const std::function<double(const glm::dvec3&)>& f) {
