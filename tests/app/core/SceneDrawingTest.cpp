@@ -14,7 +14,6 @@
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
 
-
 using namespace volpost;
 using namespace volpost::app;
 
