@@ -4,7 +4,7 @@
 // change to the new frame, GPU memory, and the image error against the exact CPU
 // reference renderer (same camera, same transfer function). Prints a Markdown table and
 // writes a CSV for the speed-versus-error plot.
-//   volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]
+//   volpost_volume_bench [--size N|WxH] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]
 //                        [--error-images DIR]  (one PGM per row: white = off by 0.05 or more)
 #include "AllReaders.hpp"
 #include "CellProjector.hpp"
@@ -47,13 +47,13 @@ namespace {
 
 // Where a renderer is off, as a picture: |error| (the worst channel) scaled so that 0.05
 // and above is white. Binary PGM needs no image library.
-void writeErrorImage(const std::filesystem::path& path, const std::vector<double>& errors, int size) {
+void writeErrorImage(const std::filesystem::path& path, const std::vector<double>& errors, int width, int height) {
   FILE* f = std::fopen(path.string().c_str(), "wb");
   if (!f) {
     std::fprintf(stderr, "cannot write %s\n", path.string().c_str());
     return;
   }
-  std::fprintf(f, "P5\n%d %d\n255\n", size, size);
+  std::fprintf(f, "P5\n%d %d\n255\n", width, height);
   for (double e : errors) std::fputc(int(std::lround(std::min(1.0, e / 0.05) * 255.0)), f);
   std::fclose(f);
 }
@@ -162,7 +162,7 @@ void exportCase(const std::filesystem::path& dir, const Case& c, const TransferF
   std::ofstream(dir / (slug + ".camera.json"))
       << "{\"eye\": [" << e.x << ", " << e.y << ", " << e.z << "], \"target\": [" << t.x << ", " << t.y << ", " << t.z
       << "], \"up\": [" << u.x << ", " << u.y << ", " << u.z << "], \"viewAngle\": " << camera.fieldOfView()
-      << ", \"size\": " << reference.width << "}\n";
+      << ", \"size\": [" << reference.width << ", " << reference.height << "]}\n";
   std::vector<float> rgba;
   for (const glm::dvec4& p : reference.pixels)
     for (int k = 0; k < 4; ++k) rgba.push_back(float(p[k]));
@@ -196,7 +196,7 @@ TransferFunction benchTf(const std::vector<double>& values, double diagonal) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  int size = 512, frames = 5;
+  int width = 512, height = 512, frames = 5;
   const char* csvPath = nullptr;
   bool quick = false;
   const char* only = nullptr;  // --mesh SUBSTRING: just the meshes whose name contains it
@@ -211,8 +211,15 @@ int main(int argc, char** argv) {
   std::optional<glm::dvec3> eye, lookAt, up;  // --eye/--target/--up X,Y,Z: an explicit camera
   double viewAngle = 0.0;  // --export DIR: each case's mesh, TF, camera and reference for other programs
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--size") && i + 1 < argc) size = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+    if (!std::strcmp(argv[i], "--size") && i + 1 < argc) {
+      // N (square) or WxH
+      const char* text = argv[++i];
+      char tail = 0;
+      if (std::sscanf(text, "%dx%d%c", &width, &height, &tail) != 2) {
+        if (std::sscanf(text, "%d%c", &width, &tail) != 1) width = 0;
+        height = width;
+      }
+    } else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc) csvPath = argv[++i];
     else if (!std::strcmp(argv[i], "--quick")) quick = true;
     else if (!std::strcmp(argv[i], "--mesh") && i + 1 < argc) only = argv[++i];
@@ -252,12 +259,12 @@ int main(int argc, char** argv) {
       const bool help = !std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h");
       std::fprintf(help ? stdout : stderr,
                    "%svolpost_volume_bench: speed against error of every volume renderer and integration mode\n"
-                   "usage: volpost_volume_bench [--size N] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
+                   "usage: volpost_volume_bench [--size N|WxH] [--frames N] [--csv FILE] [--quick] [--mesh SUBSTRING]\n"
                    "                            [--error-images DIR] [--export DIR] [--cpu-only] [--modes LIST]\n"
                    "                            [--interactive]\n"
                    "                            [--model FILE --field NAME] [--tf FILE]\n"
                    "                            [--eye X,Y,Z --target X,Y,Z [--up X,Y,Z] [--view-angle DEG]]\n"
-                   "  --size N            image N x N (default 512)\n"
+                   "  --size N|WxH        image N x N or W x H pixels (default 512)\n"
                    "  --frames N          frames along the orbit (default 5)\n"
                    "  --csv FILE          also write mesh, mode, median ms, RMSE, max error (for the plot)\n"
                    "  --quick             leave out the largest meshes\n"
@@ -300,20 +307,22 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "volpost_volume_bench: %s\n", e.what());
     return 1;
   }
-  if (size < 8 || size > 8192 || frames < 1) {
-    std::fprintf(stderr, "volpost_volume_bench: --size must lie in 8..8192 and --frames be at least 1\n");
+  if (width < 8 || width > 8192 || height < 8 || height > 8192 || frames < 1) {
+    std::fprintf(stderr, "volpost_volume_bench: --size must be N or WxH, each in 8..8192, and --frames at least 1\n");
     return 2;
   }
   HeadlessContext context;
-  std::printf("device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
-              "premultiplied RGBA in 0..1\n\n", gl::describeContext().c_str(), size, size, frames);
+  std::printf(
+      "device: %s\nimage %dx%d, %d frames orbiting 360 degrees; errors against the CPU reference, "
+      "premultiplied RGBA in 0..1\n\n",
+      gl::describeContext().c_str(), width, height, frames);
   std::printf(
       "| mesh | tets | renderer / mode | ms/frame min / median / max | CPU ms/frame | sort ms | tets/s | TF update ms "
       "| GPU MB (mesh B/tet) | RMSE | max error |\n");
   std::printf("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   FILE* csv = csvPath ? std::fopen(csvPath, "w") : nullptr;
   if (csv) std::fprintf(csv, "mesh,mode,median_ms,rmse,max_error\n");
-  OffscreenTarget target(size, size);
+  OffscreenTarget target(width, height);
   for (Case& c : modelPath ? std::move(chosen) : cases(quick)) {
     if (only && c.name.find(only) == std::string::npos) continue;
     const double diagonal = c.mesh.bounds().diagonal();
@@ -328,7 +337,7 @@ int main(int argc, char** argv) {
     const auto refStart = Clock::now();
     const double refCpuStart = processCpuMs();
     const optics::TetVolume volume(c.mesh, c.location, c.values);
-    const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, size, size);
+    const optics::ReferenceImage reference = optics::renderReference(volume, tf, camera, width, height);
     const double refMs = msSince(refStart), refCpuMs = processCpuMs() - refCpuStart;
     if (exportDir) exportCase(exportDir, c, tf, camera, reference);
     std::printf("| %s | %zu | CPU reference (exact, %u threads) | %.0f | %.0f | - | %.3g | - | - | 0 | 0 |\n",
@@ -342,7 +351,7 @@ int main(int argc, char** argv) {
       for (double stopAt : {0.0, 1e-4, volume::CpuRaySettings{}.terminationTransmittance}) {
         volume::CpuRaySettings settings;
         settings.terminationTransmittance = stopAt;
-        const volume::CpuImage first = volume::renderCpu(walkMesh, tf, camera, size, size, settings);
+        const volume::CpuImage first = volume::renderCpu(walkMesh, tf, camera, width, height, settings);
         double sum = 0.0, worst = 0.0;
         for (std::size_t i = 0; i < reference.pixels.size(); ++i)
           for (int k = 0; k < 4; ++k) {
@@ -356,7 +365,7 @@ int main(int argc, char** argv) {
         for (int f = 0; f < frames; ++f) {
           const auto t0 = Clock::now();
           const double cpu0 = processCpuMs();
-          (void)volume::renderCpu(walkMesh, tf, orbit, size, size, settings);
+          (void)volume::renderCpu(walkMesh, tf, orbit, width, height, settings);
           times.push_back(msSince(t0));
           cpuTimes.push_back(processCpuMs() - cpu0);
           orbit.orbit(360.0 / frames, 0.0);
@@ -459,7 +468,8 @@ int main(int argc, char** argv) {
       const auto tfStart = Clock::now();
       caster->setTransferFunction(tf);
       RenderContext ctx;
-      ctx.width = ctx.height = size;
+      ctx.width = width;
+      ctx.height = height;
       ctx.framebuffer = target.framebuffer();
       ctx.camera = camera;
       caster->render(ctx);
@@ -481,13 +491,14 @@ int main(int argc, char** argv) {
         if (pixelError > worst) worst = pixelError, worstPixel = i;
       }
       // Pixels far from the reference (a lost ray would show here), for the record.
-      if (bad) std::fprintf(stderr, "%s %s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(), label,
-                            toString(mode).data(), bad, worstPixel % std::size_t(size), worstPixel / std::size_t(size));
+      if (bad)
+        std::fprintf(stderr, "%s %s %s: %zu pixel(s) off by > 0.05, worst at (%zu, %zu)\n", c.name.c_str(), label,
+                     toString(mode).data(), bad, worstPixel % std::size_t(width), worstPixel / std::size_t(width));
       if (errorImages) {
         std::string name = c.name + " " + (caster == &raycaster ? "raycast" : caster == &vicp ? "vicp" : "vicp-exact") + " " + std::string(toString(mode));
         std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)) && ch != '-'; }, '_');
         std::filesystem::create_directories(errorImages);
-        writeErrorImage(std::filesystem::path(errorImages) / (name + ".pgm"), pixelErrors, size);
+        writeErrorImage(std::filesystem::path(errorImages) / (name + ".pgm"), pixelErrors, width, height);
       }
       const double rmse = std::sqrt(sum / double(reference.pixels.size() * 4));
       std::vector<double> times, sorts, cpuTimes;

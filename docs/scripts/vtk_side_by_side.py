@@ -43,6 +43,7 @@ def transfer_functions(tf_path):
 def render(case, mapper_name, frames):
     camera_spec = json.load(open(case + ".camera.json"))
     size = camera_spec["size"]
+    width, height = (size, size) if isinstance(size, int) else size  # N (older exports) or [W, H]
     reader = vtk.vtkXMLUnstructuredGridReader()
     reader.SetFileName(case + ".vtu")
     reader.Update()
@@ -88,7 +89,7 @@ def render(case, mapper_name, frames):
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetAlphaBitPlanes(1)
-    window.SetSize(size, size)
+    window.SetSize(width, height)
     window.AddRenderer(renderer)
     camera = renderer.GetActiveCamera()
     camera.SetPosition(*camera_spec["eye"])
@@ -105,7 +106,7 @@ def render(case, mapper_name, frames):
     grab.ReadFrontBufferOff()
     grab.Update()
     image = grab.GetOutput()
-    rgba = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(size, size, 4)[::-1] / 255.0
+    rgba = numpy_support.vtk_to_numpy(image.GetPointData().GetScalars()).reshape(height, width, 4)[::-1] / 255.0
     walls, cpus = [], []
     for _ in range(frames):
         camera.Azimuth(360.0 / frames)
@@ -123,18 +124,26 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("cases", help="the folder volpost_volume_bench --export wrote")
     parser.add_argument("--frames", type=int, default=5)
+    parser.add_argument("--mappers", default="all",
+                        help="comma-separated: projected, raycast, zsweep, resampled (default all)")
     parser.add_argument("--one", nargs=2, metavar=("CASE", "MAPPER"), help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.one:  # one mapper in a process of its own: VTK's GPU mapper does not share a process well
         print(json.dumps(render(args.one[0], args.one[1], args.frames)))
         return
+    names = {"projected": "projected tetrahedra", "raycast": "ray cast, partial pre-integration",
+             "zsweep": "z-sweep", "resampled": "resampled to 256^3 + GPU ray caster"}
+    wanted = list(names) if args.mappers == "all" else args.mappers.split(",")
+    unknown = [m for m in wanted if m not in names]
+    if unknown:
+        sys.exit("--mappers: %s is not one of %s" % (", ".join(unknown), ", ".join(names)))
+    chosen = [names[m] for m in wanted]
     print("VTK %s, %s" % (vtk.vtkVersion.GetVTKVersion(), os.uname().nodename))
     print("| case | VTK mapper | setup + first frame ms | ms/frame (wall, median) | process CPU ms/frame | RMSE | max error |")
     print("|---|---|---:|---:|---:|---:|---:|")
     for case in sorted(glob.glob(os.path.join(args.cases, "*.vtu"))):
         case = case[:-4]
-        for mapper in ("projected tetrahedra", "ray cast, partial pre-integration", "z-sweep",
-                       "resampled to 256^3 + GPU ray caster"):
+        for mapper in chosen:
             run = subprocess.run([sys.executable, __file__, args.cases, "--frames", str(args.frames), "--one", case, mapper],
                                  capture_output=True, text=True)
             if run.returncode != 0:

@@ -150,7 +150,7 @@ double faceValue(const glm::dvec3& n, const glm::dvec3& a, const glm::dvec3& b, 
 
 struct Entry {
   std::uint32_t pixel;
-  float t;
+  float t, s;  ///< where the ray crosses the face, and the value there (found in double)
   std::uint32_t face;
   bool operator<(const Entry& o) const { return pixel < o.pixel || (pixel == o.pixel && t < o.t); }
 };
@@ -615,7 +615,7 @@ void findTileEntries(const TetWalkMesh& mesh, const std::vector<BoundaryFace>& f
         float t, s;
         if (!crossing(mesh, ray, e, t, s, true)) continue;
         if (!bins.eyeInside && t < ray.tEye) continue;  // behind the eye
-        out.list.push_back({std::uint32_t(pixel), t, fi});
+        out.list.push_back({std::uint32_t(pixel), t, s, fi});
       }
   }
   std::sort(out.list.begin(), out.list.end());
@@ -733,10 +733,8 @@ CpuImage renderCpu(const TetWalkMesh& mesh, const VisiblePart& part, const Trans
               if (e.t < leftAt - shared.reentryTolerance) continue;  // inside what was walked already
               if (e.t >= w1) break;
               const BoundaryFace& f = faces[e.face];
-              const EntryFace in = boundaryEntry(mesh, f, ray);
-              float t, s;
-              if (!crossing(mesh, ray, in, t, s, true)) continue;
-              leftAt = walk(shared, ray, in, f.tet, t, s, w0, w1, light, totals);
+              // The crossing was found with the entry (in double): only the face's products again.
+              leftAt = walk(shared, ray, boundaryEntry(mesh, f, ray), f.tet, e.t, e.s, w0, w1, light, totals);
               if (std::isinf(leftAt)) break;
             }
             float* out = &image.rgba[4 * (std::size_t(y) * std::size_t(width) + std::size_t(x))];

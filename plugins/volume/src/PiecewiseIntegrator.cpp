@@ -8,9 +8,6 @@
 #include <limits>
 
 namespace volpost::volume {
-namespace {
-
-}  // namespace
 
 std::vector<double> zeroExtinctionRuns(const std::vector<double>& values, const std::vector<double>& taus) {
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -78,14 +75,24 @@ optics::SegmentLight PiecewiseIntegrator::integrate(double sFront, double sBack,
   if (!std::isfinite(sFront) || !std::isfinite(sBack)) return total;
   glm::dvec3 c0, c1;
   double t0, t1;
-  int piece = pieceOf(sFront);
+  const double lo = std::min(sFront, sBack), hi = std::max(sFront, sBack);
+  const int low = pieceOf(lo);
   // Transparent over the whole range (zero extinction): nothing emitted, nothing absorbed.
-  if (std::max(sFront, sBack) <= zeroUntil_[std::size_t(pieceOf(std::min(sFront, sBack)) + 1)]) return total;
+  if (hi <= zeroUntil_[std::size_t(low + 1)]) return total;
   if (sFront == sBack) {
-    at(piece, sFront, c0, t0);
+    at(low, sFront, c0, t0);
     lit(c0, sFront);
     return t0 > 0.0 ? optics::constantSegment(c0, t0, length) : total;
   }
+  // No control point within the segment (most segments of a fine mesh): one linear piece.
+  if (low + 1 < int(values_.size()) && hi < values_[std::size_t(low) + 1]) {
+    at(low, sFront, c0, t0);
+    at(low, sBack, c1, t1);
+    lit(c0, sFront);
+    lit(c1, sBack);
+    return t0 > 0.0 || t1 > 0.0 ? optics::quickLinearSegment(c0, t0, c1, t1, length) : total;
+  }
+  int piece = sFront == lo ? low : pieceOf(sFront);
   const bool rising = sBack > sFront;
   const double perValue = length / std::abs(sBack - sFront);
   double x0 = sFront;

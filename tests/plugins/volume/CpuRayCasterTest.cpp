@@ -369,6 +369,19 @@ TEST(CpuRayCastIntegration, ThinPieceSeriesMatchesTheExactPsi) {
   EXPECT_LE(worst, 6e-9);
 }
 
+TEST(CpuRayCastIntegration, ThinPieceTransmittanceMatchesExp) {
+  // The transmittance of a thin piece comes from a series too: it multiplies everything
+  // behind the piece, so it must stay at rounding level, thin and thick alike.
+  double worst = 0.0;
+  for (double tf = 0.0; tf <= 2.4; tf += 0.01)
+    for (double tb = 0.0; tb <= 2.4; tb += 0.01) {
+      const optics::SegmentLight s = optics::quickLinearSegment({1, 1, 1}, tf, {1, 1, 1}, tb, 1.0);
+      worst = std::max(worst, std::abs(s.transmittance - std::exp(-0.5 * (tf + tb))));
+    }
+  std::printf("thin-piece transmittance series: worst error %.3g\n", worst);
+  EXPECT_LE(worst, 2e-11);
+}
+
 TEST(CpuRayCastIntegration, PiecesMatchTheExactSegmentIntegral) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> value(-1.0, 7.0), length(0.0, 3.0);
