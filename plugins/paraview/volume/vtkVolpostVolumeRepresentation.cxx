@@ -3,10 +3,14 @@
 
 #include "vtkVolpostVolumeMapper.h"
 
+#include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPVRenderView.h>
+#include <vtkPVView.h>
 #include <vtkPlane.h>
+#include <vtkRenderer.h>
 #include <vtkUnstructuredGrid.h>
 
 namespace {
@@ -35,6 +39,14 @@ int vtkVolpostVolumeRepresentation::RequestData(vtkInformation* request, vtkInfo
     mapper->SetSourceGrid(grid);
   }
   return this->Superclass::RequestData(request, inputs, outputs);
+}
+
+int vtkVolpostVolumeRepresentation::ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo,
+                                                       vtkInformation* outInfo) {
+  if (request == vtkPVView::REQUEST_RENDER() && this->GetVisibility())
+    if (auto* view = vtkPVRenderView::SafeDownCast(inInfo->Get(vtkPVView::VIEW())))
+      if (vtkRenderer* renderer = view->GetRenderer()) renderer->SetUseDepthPeelingForVolumes(false);
+  return this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
 }
 
 void vtkVolpostVolumeRepresentation::SetInterpolation(int interpolation) {

@@ -30,6 +30,13 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeRepresentation : public vtkUn
   void SetClipOrigin(double x, double y, double z);
   void SetClipNormal(double x, double y, double z);
 
+  /// Before each render: turns the view's depth peeling of volumes off. The ray caster
+  /// draws its finished picture over the view; inside the peeling pass (the window's
+  /// default) that picture would be blended once per peel into buffers it cannot write,
+  /// and the window showed garbage around the volume. Volumes are then drawn after the
+  /// translucent surfaces, as without depth peeling.
+  int ProcessViewRequest(vtkInformationRequestKey* request, vtkInformation* inInfo, vtkInformation* outInfo) override;
+
  protected:
   vtkVolpostVolumeRepresentation();
   ~vtkVolpostVolumeRepresentation() override;

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: MIT
 """Run by pvbatch: an opaque box between the eye and a volume drawn by "volpost Volume" hides
-the volume behind it, and the volume elsewhere is what it is without the box.
+the volume behind it, and the volume elsewhere is what it is without the box. And the view's
+depth peeling of volumes (on by default in ParaView's window, where the ray caster's picture
+drawn inside the peeling pass showed as garbage around the volume) is off while it draws.
 
 Three pictures with one camera: the box alone, the volume alone, both. Where the box covers
 the picture (its outline, blended by multisampling, left out), both must equal the box alone;
@@ -41,10 +43,14 @@ opacity = GetOpacityTransferFunction("wave")
 opacity.Points = [-0.9, 0.0, 0.5, 0.0, 0.3, 0.6, 0.5, 0.0, 1.5, 0.15, 0.5, 0.0]
 
 
+views = []
+
+
 def picture(name, with_volume, with_box):
     """One view of its own per picture: ParaView fits the camera on a view's first picture
     (and again when what it shows changes), so each view gets ours after that."""
     view = CreateView("RenderView")
+    views.append(view)
     view.ViewSize = [WIDTH, HEIGHT]
     view.OrientationAxesVisibility = 0
     view.UseColorPaletteForBackground = 0
@@ -93,6 +99,12 @@ if behind > 1:
     failures.append(f"the volume shows through the box in front of it ({behind}/255)")
 if elsewhere > 1:
     failures.append(f"the volume beside the box changed ({elsewhere}/255)")
+# Each view starts with ParaView's default (peel volumes too); the one with the volume drew it
+# with volume peeling off, the one without is left as it was.
+peeling = [(bool(v.DepthPeelingForVolumes), bool(v.GetRenderer().GetUseDepthPeelingForVolumes())) for v in views]
+print(f"depth peeling of volumes (the view's setting, the renderer's while drawing): {peeling}")
+if peeling != [(True, False), (True, True), (True, False)]:
+    failures.append("the views with volpost Volume still peel volumes (or the setting is not ParaView's default)")
 for f in failures:
     print("FAIL:", f)
 if failures:
