@@ -34,6 +34,7 @@
 #include <glm/vec4.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <exception>
@@ -60,6 +61,7 @@ class vtkVolpostVolumeState {
   std::size_t skippedCells = 0;
   volpost::TransferFunction tf;
   std::optional<volpost::volume::VisiblePart> visible;
+  double msPerPixel = 0.0;  ///< the last picture's wall time per pixel (for interactive renders)
 };
 
 vtkStandardNewMacro(vtkVolpostVolumeMapper);
@@ -79,6 +81,8 @@ void vtkVolpostVolumeMapper::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "EarlyTermination: " << this->EarlyTermination << "\n";
   os << indent << "Interpolation: " << (this->Interpolation ? "cells' own field" : "tetrahedra") << "\n";
   os << indent << "ElementTolerance: " << this->ElementTolerance << "\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "LastReduction: " << this->LastReduction << "\n";
 }
 
 namespace {
@@ -115,39 +119,45 @@ void buildWalk(vtkVolpostVolumeState& s, vtkUnstructuredGrid& grid, vtkDataArray
 }
 
 /// Where the view's opaque geometry lies, as volpost's window depth for `camera` (0..1,
-/// bottom row first): rays end there, so a surface in front hides the volume behind it.
+/// bottom row first) at width x height: rays end there, so a surface in front hides the
+/// volume behind it. The view is `reduction` times larger each way (at most; its last
+/// row and column may be cut); each picture pixel takes the view pixel under its centre.
 /// Empty when nothing opaque was drawn.
-std::vector<float> sceneDepthOf(vtkRenderer& renderer, const volpost::Camera& camera, int width, int height) {
+std::vector<float> sceneDepthOf(vtkRenderer& renderer, const volpost::Camera& camera, int width, int height,
+                                int reduction) {
   const int* origin = renderer.GetOrigin();
-  std::vector<float> depth(std::size_t(width) * std::size_t(height), 1.0f);
-  if (!renderer.GetRenderWindow()->GetZbufferData(origin[0], origin[1], origin[0] + width - 1, origin[1] + height - 1,
-                                                  depth.data()))
+  const int* view = renderer.GetSize();
+  std::vector<float> drawn(std::size_t(view[0]) * std::size_t(view[1]), 1.0f);
+  if (!renderer.GetRenderWindow()->GetZbufferData(origin[0], origin[1], origin[0] + view[0] - 1,
+                                                  origin[1] + view[1] - 1, drawn.data()))
     return {};
   vtkNew<vtkMatrix4x4> toWorld;
   toWorld->DeepCopy(
       renderer.GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer.GetTiledAspectRatio(), -1, 1));
   toWorld->Invert();
   const glm::dmat4 toVolpost = camera.projectionMatrix(double(width) / double(height)) * camera.viewMatrix();
+  std::vector<float> depth(std::size_t(width) * std::size_t(height), 1.0f);
   bool any = false;
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      float& d = depth[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-      if (!(d < 1.0f)) {
-        d = 1.0f;
-        continue;
-      }
-      const double ndc[4] = {(x + 0.5) / width * 2.0 - 1.0, (y + 0.5) / height * 2.0 - 1.0, 2.0 * d - 1.0, 1.0};
+      const int vx = std::min(int((x + 0.5) * reduction), view[0] - 1);
+      const int vy = std::min(int((y + 0.5) * reduction), view[1] - 1);
+      const float d = drawn[std::size_t(vy) * std::size_t(view[0]) + std::size_t(vx)];
+      if (!(d < 1.0f)) continue;
+      const double ndc[4] = {(vx + 0.5) / view[0] * 2.0 - 1.0, (vy + 0.5) / view[1] * 2.0 - 1.0, 2.0 * d - 1.0, 1.0};
       double world[4];
       toWorld->MultiplyPoint(ndc, world);
       const glm::dvec4 clip =
           toVolpost * glm::dvec4(world[0] / world[3], world[1] / world[3], world[2] / world[3], 1.0);
-      d = float(std::clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0));
+      depth[std::size_t(y) * std::size_t(width) + std::size_t(x)] = float(std::clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0));
       any = true;
     }
   return any ? depth : std::vector<float>{};
 }
 
-/// Premultiplied RGBA over what the view holds, bottom row first as OpenGL draws.
+/// Premultiplied RGBA over what the view holds, bottom row first as OpenGL draws, stretched
+/// over the whole view (a reduced picture: its pixels cover about n x n of the view's; never
+/// beyond the view, where another view of the layout may lie).
 void drawOver(vtkRenderer& renderer, const volpost::volume::CpuImage& image) {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(renderer.GetRenderWindow());
   if (!window || image.width <= 0 || image.height <= 0) return;
@@ -167,8 +177,9 @@ void drawOver(vtkRenderer& renderer, const volpost::volume::CpuImage& image) {
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   const int* origin = renderer.GetOrigin();
-  window->DrawPixels(origin[0], origin[1], origin[0] + image.width - 1, origin[1] + image.height - 1, 0, 0,
-                     image.width - 1, image.height - 1, image.width, image.height, 4, VTK_FLOAT, bottomFirst.data());
+  const int* view = renderer.GetSize();
+  window->DrawPixels(origin[0], origin[1], origin[0] + view[0] - 1, origin[1] + view[1] - 1, 0, 0, image.width - 1,
+                     image.height - 1, image.width, image.height, 4, VTK_FLOAT, bottomFirst.data());
 }
 
 // VTK's clipping planes as volpost's: both keep the side the normal points to.
@@ -248,16 +259,27 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
     }
     const int* size = renderer->GetSize();
     if (size[0] <= 0 || size[1] <= 0) return;
-    const volpost::Camera camera =
-        volpost::paraview::cameraOf(*renderer->GetActiveCamera(), s.bounds, size[0], size[1]);
+    // While the view turns: fewer rays, as many as keep up with the rate asked for.
+    int reduction = 1;
+    const double rate = renderer->GetRenderWindow() ? renderer->GetRenderWindow()->GetDesiredUpdateRate() : 0.0;
+    if (this->InteractiveUpdateRate > 0.0 && rate >= this->InteractiveUpdateRate && s.msPerPixel > 0.0) {
+      const double fullMs = s.msPerPixel * double(size[0]) * double(size[1]);
+      reduction = std::clamp(int(std::ceil(std::sqrt(fullMs * rate / 1000.0))), 1, 16);
+    }
+    const int width = (size[0] + reduction - 1) / reduction, height = (size[1] + reduction - 1) / reduction;
+    const volpost::Camera camera = volpost::paraview::cameraOf(*renderer->GetActiveCamera(), s.bounds, width, height);
     volpost::volume::CpuRaySettings settings;
     settings.terminationTransmittance = this->EarlyTermination;
-    settings.sceneDepth = sceneDepthOf(*renderer, camera, size[0], size[1]);
+    settings.sceneDepth = sceneDepthOf(*renderer, camera, width, height, reduction);
     settings.element = s.element;
     settings.elementTolerance = s.element ? this->ElementTolerance : 0.0;
     settings.clipPlanes = clipPlanesOf(this->ClippingPlanes);
+    const auto start = std::chrono::steady_clock::now();
     const volpost::volume::CpuImage image =
-        volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, size[0], size[1], settings);
+        volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, width, height, settings);
+    s.msPerPixel = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() /
+                   (double(width) * double(height));
+    this->LastReduction = reduction;
     drawOver(*renderer, image);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< "volpost Volume: " << e.what());

@@ -39,6 +39,16 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   /// the mapper draws that same grid (one process: the same points), it walks volpost's own
   /// split of these cells instead of ParaView's.
   void SetSourceGrid(vtkUnstructuredGrid* grid);
+
+  /// While the view turns (the render window's desired update rate at least this, as VTK's
+  /// interactor sets it during a drag) the picture is drawn with one ray per n x n pixels,
+  /// n chosen from the last pictures' cost per pixel so that a frame keeps up with that
+  /// rate; the still render that ends the drag draws every pixel. 0: every pixel always.
+  /// Default 1 frame per second, as vtkSmartVolumeMapper's.
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, 1e6);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  /// n of the last picture drawn (1: a ray per pixel).
+  vtkGetMacro(LastReduction, int);
   /// The clipping planes (vtkAbstractMapper::AddClippingPlane, in the data's coordinates)
   /// cut each ray's stretch exactly: the side a plane's normal points away from is cut away,
   /// as VTK's mappers do. A plane with a zero normal is refused with an error.
@@ -57,6 +67,8 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   double EarlyTermination = 0.002;
   int Interpolation = 0;
   double ElementTolerance = 0.01;
+  double InteractiveUpdateRate = 1.0;
+  int LastReduction = 1;
   vtkVolpostVolumeState* State;
 };
 
