@@ -1240,6 +1240,11 @@ int runRender(const QStringList& args) {
         std::fprintf(stderr, "volpost: note: drawn deformed: %s x %.6g%s\n", scene.deformation().field.c_str(),
                      scene.deformationScale(),
                      scene.deformation().scale ? "" : " (automatic: the largest displacement is 10% of the model's size)");
+      if (const auto& view = scene.view(); view && view->range.nanCount)
+        std::fprintf(stderr, "volpost: note: %zu values of %s are not numbers (NaN or infinite): %s\n",
+                     view->range.nanCount, view->quantity.displayName().c_str(),
+                     scene.volumeShown() ? "the volume leaves out the tetrahedra that have one"
+                                         : "drawn gray, outside the color map");
       if (scene.volumeShown() && scene.view() && scene.state().volume.transferFunction)
         if (const auto note = transferFunctionRangeNote(scene.transferFunction(), *scene.view()))
           std::fprintf(stderr, "volpost: warning: %s\n", note->c_str());

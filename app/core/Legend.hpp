@@ -39,6 +39,8 @@ struct LegendContent {
   QString subtitle;   ///< step label and location, e.g. "step 1 · per node"
   double min = 0.0, max = 1.0;   ///< the bar's range (a typed range, or the data's)
   std::size_t noValueCount = 0;  ///< NaN values, drawn in the no-value color
+  /// Where those values show: gray on surfaces; a volume leaves the cells touching them out.
+  QString noValueShown = "gray";
   /// The data's own extremes, named in the footer whatever the bar's range.
   std::optional<double> dataMin, dataMax;
   /// No color bar (a 2D transfer function's colors depend on more than the value): this

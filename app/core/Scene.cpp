@@ -1076,6 +1076,7 @@ std::vector<LegendPicture> Scene::legends() const {
     content.subtitle = stepAndLocation(*view_);
     content.noValueCount = view_->range.nanCount;
     if (view_->range.valid()) content.dataMin = view_->range.min, content.dataMax = view_->range.max;
+    if (state_.volume.shown) content.noValueShown = "left out of the volume";
     if (state_.volume.shown && state_.volume.transferFunction2D) {
       // A 2D transfer function's colors depend on the gradient too: no bar over the values
       // could say what a color means; the legend says where they come from.

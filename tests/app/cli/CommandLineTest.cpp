@@ -1234,3 +1234,25 @@ TEST(SetsOnTheCommandLine, InfoListsThemAndRenderShowsOrHidesThem) {
   refused("--hide-set NALL", "'NALL' is a set of 37 nodes");
   refused("--hide-set E_HEX --hide-set E_WEDGE --hide-set E_TET", "leaves no element to draw");
 }
+
+// Values that are not numbers (a diverged solver's, or a formula's outside its domain) are
+// said on the terminal and in the legend, with what becomes of them: gray on the surface,
+// left out of the volume.
+TEST(RenderCommand, SaysHowManyValuesAreNotNumbersAndWhatBecomesOfThem) {
+  const std::string common = "render " + dataFile("bar/bar_tet4.vtu") +
+                             " --formula \"r=sqrt(S11-100)\" --field r --size 96x64 -o " + ::testing::TempDir() +
+                             "/nan.png";
+  const auto surface = runVolpost(common);
+  ASSERT_EQ(surface.exitCode, 0) << surface.output;
+  EXPECT_NE(surface.output.find("note: 439 values of r are not numbers (NaN or infinite): drawn gray"),
+            std::string::npos)
+      << surface.output;
+  const auto volume = runVolpost(common + " --renderer cpu");
+  ASSERT_EQ(volume.exitCode, 0) << volume.output;
+  EXPECT_NE(volume.output.find("439 values of r are not numbers (NaN or infinite): the volume leaves out"),
+            std::string::npos)
+      << volume.output;
+  const auto clean = runVolpost("render " + dataFile("bar/bar_tet4.vtu") + " --field S11 --size 32x32 -o " +
+                                ::testing::TempDir() + "/clean.png");
+  EXPECT_EQ(clean.output.find("not numbers"), std::string::npos) << clean.output;
+}

@@ -2,6 +2,7 @@
 // The calculator's formulas in the scene: shown like any result, kept in the state file,
 // refused without changing what is shown, and what showed a removed formula falls back.
 #include "support/BarSession.hpp"
+#include "support/RayCasterScene.hpp"
 #include "support/ReaderSupport.hpp"
 #include "support/TestSupport.hpp"
 
@@ -57,4 +58,20 @@ TEST(SceneFormulas, ABadFormulaChangesNothingAndARemovedOneFallsBack) {
   scene.setFormulas({{"ratio", "S.mises / 250"}});
   scene.setSession(barSession());
   EXPECT_TRUE(scene.formulas().empty());
+}
+
+// Values that are not numbers are counted in the legend with what becomes of them: gray on
+// the surface, left out of the volume (which draws no gray).
+TEST(SceneFormulas, TheLegendSaysWhereValuesThatAreNotNumbersGo) {
+  Scene scene{volpost::test::rayCasterOnly()};
+  scene.setSession(barSession());
+  scene.setFormulas({{"root", "sqrt(S11 - 100)"}});
+  scene.setResult("root", 0);
+  ASSERT_TRUE(scene.view());
+  const std::size_t notNumbers = scene.view()->range.nanCount;
+  EXPECT_GT(notNumbers, 0u);
+  EXPECT_EQ(scene.legends().front().content.noValueCount, notNumbers);
+  EXPECT_EQ(scene.legends().front().content.noValueShown, QString("gray"));
+  scene.setVolumeShown(true);
+  EXPECT_EQ(scene.legends().front().content.noValueShown, QString("left out of the volume"));
 }
