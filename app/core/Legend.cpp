@@ -262,7 +262,8 @@ void paintLegend(QPainter& painter, const QRect& area, const ColorMap& map, cons
                      Qt::AlignRight | Qt::AlignVCenter, rangeText);
     if (c.noValueCount)
       painter.drawText(QRect(area.left(), y + fm.height(), area.right() - 4 - area.left(), fm.height()),
-                       Qt::AlignRight | Qt::AlignVCenter, QString("%1 without value (%2)").arg(c.noValueCount).arg(c.noValueShown));
+                       Qt::AlignRight | Qt::AlignVCenter,
+                       QString("%1 without value (%2)").arg(c.noValueCount).arg(c.noValueShown));
   };
   if (!c.noBarNote.isEmpty()) {
     const QRect titleRect(area.left(), area.top() + 4, area.right() - 4 - area.left(), fm.height());
