@@ -7,9 +7,13 @@
 // Prints a Markdown table.
 // The own field is drawn at each tolerance asked for (0: integrated to rounding).
 //   volpost_element_field_bench [--size N] [--frames N] [--cubes N,N,...] [--threads N] [--cells TYPE]
-//                               [--tolerances E,E,...]
+//                               [--tolerances E,E,...] [--refined]
+// --refined adds a table of the other path: the split refined in the cells' natural
+// coordinates to the tolerance (what the renderers of tetrahedra are given), its pieces
+// drawn linear by the CPU ray caster, against the same reference.
 #include "BenchUsage.hpp"
 #include "CpuRayCaster.hpp"
+#include "host/ElementRefinement.hpp"
 #include "host/optics/ReferenceRenderer.hpp"
 
 #include <volpost/core/CellShape.hpp>
@@ -199,6 +203,18 @@ Timing timeFrames(const volume::TetWalkMesh& walk, const volume::VisiblePart& pa
   return t;
 }
 
+struct RefinedRow {
+  std::string cells;
+  int n = 0;
+  std::size_t count = 0, tets = 0;
+  double tolerance = 0.0;
+  int level = 1;
+  std::size_t pieces = 0;
+  double refineMs = 0.0, wallMs = 0.0, cpuMs = 0.0;
+  std::size_t bytes = 0;
+  double rmse = 0.0, largest = 0.0, deviation = 0.0;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -206,6 +222,8 @@ int main(int argc, char** argv) {
   std::vector<int> cubes{8, 16};
   std::string only;  // one cell type's name, or all
   std::vector<double> tolerances{1e-3, 0.0};
+  bool refinedRows = false;
+  std::vector<RefinedRow> refinedTable;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool more = i + 1 < argc;
@@ -214,6 +232,7 @@ int main(int argc, char** argv) {
     else if (a == "--threads" && more) threads = std::atoi(argv[++i]);
     else if (a == "--cells" && more) only = argv[++i];
     else if (a == "--tolerances" && more) tolerances = numbersIn(argv[++i]);
+    else if (a == "--refined") refinedRows = true;
     else if (a == "--cubes" && more) {
       cubes.clear();
       for (const char* p = argv[++i]; *p;) {
@@ -232,7 +251,9 @@ int main(int argc, char** argv) {
           "  --threads N     threads (default: all cores)\n"
           "  --cells TYPE    one cell type only (tet4, tet10, hex8, hex20, wedge6, wedge15, pyramid5)\n"
           "  --tolerances E,...  the own field's tolerances per pixel channel (default 1e-3,0; 0: to "
-          "rounding)\n");
+          "rounding)\n"
+          "  --refined       also the split refined to each tolerance (what raycast and vicp draw), its "
+          "pieces drawn linear\n");
     }
   }
   if (size < 8 || frames < 1 || cubes.empty() || tolerances.empty() ||
@@ -291,6 +312,34 @@ int main(int argc, char** argv) {
                     field.uninvertibleCells().size());
         std::fflush(stdout);
       }
+      if (refinedRows) {
+        for (const double tolerance : tolerances) {
+          if (tolerance <= 0.0) continue;  // pieces cannot be exact
+          std::vector<std::uint32_t> all(split.mesh.cellCount());
+          for (std::size_t t = 0; t < all.size(); ++t) all[t] = std::uint32_t(t);
+          const auto start = Clock::now();
+          const RefinedTetrahedra refined = refineTetrahedra(field, all, limitsForElementTolerance(tolerance));
+          const double refineMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+          const volume::TetWalkMesh pieces(refined.tets.mesh, FieldLocation::Node, refined.values);
+          const volume::VisiblePart part = volume::findVisiblePart(pieces, tf, {}, threads);
+          const Timing c = timeFrames(pieces, part, tf, camera, size, linear, frames, threads);
+          refinedTable.push_back({std::string(cellTypeName(type)), n, model.mesh.cellCount(), walk.tetCount(),
+                                  tolerance, refined.level, refined.tets.mesh.cellCount(), refineMs, c.wallMs, c.cpuMs,
+                                  pieces.bytes(), rmse(c.first, reference), largestError(c.first, reference),
+                                  refined.deviation});
+        }
+      }
     }
+  if (!refinedTable.empty()) {
+    std::printf(
+        "\nThe cells' own field on the split refined to the tolerance (what the renderers of tetrahedra, "
+        "raycast and vicp, are given), drawn here by the CPU ray caster as linear pieces\n\n"
+        "| cells | n | count | tets | tolerance | level | pieces | refine ms | ms wall / CPU | bytes | RMSE | "
+        "largest | estimated deviation |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const RefinedRow& r : refinedTable)
+      std::printf("| %s | %d | %zu | %zu | %g | %d | %zu | %.0f | %.1f / %.1f | %zu | %.2g | %.2g | %.2g |\n",
+                  r.cells.c_str(), r.n, r.count, r.tets, r.tolerance, r.level, r.pieces, r.refineMs, r.wallMs, r.cpuMs,
+                  r.bytes, r.rmse, r.largest, r.deviation);
+  }
   return 0;
 }

@@ -175,7 +175,9 @@ struct Options {
       "With --interpolation element: the most each pixel's color or opacity (0..1) may differ from the exact "
       "picture of the cells' own field (default 0.01, a bound the pictures stay well under; 0: exact, slower; "
       "at least 1e-05 otherwise). Renderers that draw it exactly (reference) take no tolerance. The boundary, "
-      "sections and iso-surfaces follow the cells' shapes and field to a tenth of it.",
+      "sections and iso-surfaces follow the cells' shapes and field to a tenth of it, and so does the volume of "
+      "renderers that draw tetrahedra only (raycast, vicp: the cells are cut into pieces that small, an estimate "
+      "rather than a bound on pixels; they cannot draw 0).",
       "E"};
   QCommandLineOption floatOut{"float", "Also write the volume's float image: FILE.npy (premultiplied RGBA) or "
                                        "FILE.pfm (RGB over the background).", "FILE"};
@@ -668,12 +670,14 @@ void refuseWhatTheRendererIgnores(const QCommandLineParser& p, const Options& o,
 void refuseLayersTheRendererCannotDraw(const SceneState& state, const ChosenRenderer& chosen) {
   if (!chosen.volume) return;
   const QString name = chosen.volume->name;
-  if (state.volume.interpolation == FieldInterpolation::Element && !chosen.volume->traits.elementInterpolation)
-    throw UsageError(("the cells' own interpolation (--interpolation element, or \"volume.interpolation\" in a state "
-                      "file) is drawn by " +
-                      chosen.namesWhere([](const RendererEntry& e) { return e.traits.elementInterpolation; }) +
-                      ", not by " + name + ": choose one of those, or --interpolation tetrahedra")
-                         .toStdString());
+  if (state.volume.interpolation == FieldInterpolation::Element && !chosen.volume->traits.elementInterpolation &&
+      !chosen.volume->drawsSceneLayers)
+    throw UsageError(
+        ("the cells' own interpolation (--interpolation element, or \"volume.interpolation\" in a state "
+         "file) is drawn by " +
+         chosen.namesWhere([](const RendererEntry& e) { return e.traits.elementInterpolation || e.drawsSceneLayers; }) +
+         ", not by " + name + ": choose one of those, or --interpolation tetrahedra")
+            .toStdString());
   if (chosen.volume->drawsSceneLayers) return;
   const bool slices =
       std::any_of(state.gridSlices.begin(), state.gridSlices.end(), [](const auto& s) { return bool(s); });
@@ -1181,6 +1185,15 @@ int runRender(const QStringList& args) {
       refuseWhatTheRendererIgnoresOnThisModel(parser, o, chosen, session->model().grid.has_value());
       if (parser.isSet(o.elementTolerance) && scene.state().volume.interpolation != FieldInterpolation::Element)
         throw UsageError("--element-tolerance applies to the cells' own field: add --interpolation element");
+      if (chosen.volume && chosen.volume->drawsSceneLayers && !chosen.volume->traits.elementInterpolation &&
+          !session->model().grid && scene.state().volume.interpolation == FieldInterpolation::Element &&
+          scene.state().volume.elementTolerance == 0.0)
+        throw UsageError(("--element-tolerance 0 (exact): " + rendererName +
+                          " draws the cells' own field on tetrahedra refined to a tolerance above 0; the exact "
+                          "field is drawn by " +
+                          chosen.namesWhere([](const RendererEntry& e) {
+                            return e.traits.elementInterpolation;
+                          })).toStdString());
       if (parser.isSet(o.elementTolerance) && !chosen.volume && session->model().grid)
         throw UsageError(
             "--element-tolerance: a regular grid's surface picture draws its cells as they are "

@@ -25,12 +25,11 @@
 namespace volpost::app {
 namespace {
 
-// A renderer that draws the tetrahedra's field only, asked for the cells' own.
+// A renderer that draws apart (its pictures made without the scene's refined tetrahedra) and
+// draws the tetrahedra's field only, asked for the cells' own.
 std::string elementInterpolationRefusal(const VolumeRendererFactory& factory, const std::string& renderer) {
   return "volume renderer '" + renderer + "' draws the field linear on the tetrahedra the cells are split into; " +
-         "the cells' own interpolation is drawn by " +
-         factory.namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; }) +
-         " (or draw the tetrahedra's field)";
+         "the cells' own interpolation is drawn by " + factory.namesDrawnHere() + " (or draw the tetrahedra's field)";
 }
 
 QString stepAndLocation(const ScalarView& view) {
@@ -335,7 +334,8 @@ void Scene::setVolumeRenderer(const std::string& name) {
     throw std::invalid_argument("the volume renderer '" + name +
                                 "' draws regular grids (SEG-Y, image data); this model is a mesh: choose another");
   if (gridsOnly && view_ && view_->location != FieldLocation::Node) throw std::invalid_argument(perCellRefusal(name));
-  if (state_.volume.interpolation == FieldInterpolation::Element && !traits->elementInterpolation)
+  if (state_.volume.interpolation == FieldInterpolation::Element && !traits->elementInterpolation &&
+      factory_.drawsApart(name))
     throw std::invalid_argument("the " + elementInterpolationRefusal(factory_, name));
   if (name == state_.volume.renderer) return;
   state_.volume.renderer = name;
@@ -694,7 +694,7 @@ void Scene::applyState(const SceneState& s, std::shared_ptr<const ModelSession> 
   if (s.volume.shown && !factory_.traitsOf(s.volume.renderer))
     throw std::invalid_argument("no volume renderer named '" + s.volume.renderer + "' is loaded");
   if (s.volume.shown && s.volume.interpolation == FieldInterpolation::Element &&
-      !factory_.traitsOf(s.volume.renderer)->elementInterpolation)
+      !factory_.traitsOf(s.volume.renderer)->elementInterpolation && factory_.drawsApart(s.volume.renderer))
     throw std::invalid_argument("the state's " + elementInterpolationRefusal(factory_, s.volume.renderer));
   checkStreamlines(s.streamlines, checked);
   checkGlyphLayer(checked, s.glyphs);

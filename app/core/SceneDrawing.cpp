@@ -2,6 +2,7 @@
 #include "SceneDrawing.hpp"
 
 #include "FeatureEdges.hpp"
+#include "ReferenceVolumeImage.hpp"
 
 #include <volpost/core/ResourceLimits.hpp>
 
@@ -75,6 +76,8 @@ void SceneDrawing::forgetAll() {
 
 void SceneDrawing::forgetVolume() {
   drawn_.geometry = drawn_.values = drawn_.tables = drawn_.planes = drawn_.iso = drawn_.mode = kNever;
+  refinedShown_.reset();
+  refinedVolume_.stop();
   culled_.reset();
   culledFor_.clear();
   elementField_.reset();
@@ -231,7 +234,12 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
             : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
               "(SEG-Y, image data); this model is a mesh");
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
-  const bool geometry = drawn_.geometry != now.geometry || cullPlanes != culledFor_;
+  if (refinesElementField(scene) && applyRefinedElementField(scene, cullPlanes)) return;
+  bool geometry = drawn_.geometry != now.geometry || cullPlanes != culledFor_;
+  if (refinedShown_) {  // the renderer holds refined pieces: the split goes again
+    refinedShown_.reset();
+    geometry = true;
+  }
   const bool values = drawn_.values != now.values;
   const Mesh& tets = session.tetrahedra().mesh;
   if (geometry) {
@@ -251,6 +259,70 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
   }
   if (geometry || values || drawn_.mode != now.mode) applyElementField(scene, geometry || values);
   applyVolumeSettings(scene);
+}
+
+bool SceneDrawing::refinesElementField(const Scene& scene) const {
+  return !volumeTraits_.elementInterpolation && scene.shown().volume.interpolation == FieldInterpolation::Element &&
+         scene.view()->location == FieldLocation::Node && hasNonlinearCells(scene.session()->model().mesh());
+}
+
+// The cells' own field for a renderer that draws tetrahedra only: the split refined to the
+// tolerance, handed over as a tet mesh of its own. False while it is refined on a worker
+// thread (the split's field is drawn meanwhile).
+bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vector<ClipPlane>& cullPlanes) {
+  const SceneRevisions& now = scene.revisions();
+  const VolumeLayer& v = scene.shown().volume;
+  if (v.elementTolerance == 0.0)
+    throw std::invalid_argument(
+        "the volume renderer '" + v.renderer +
+        "' draws the cells' own field on tetrahedra refined to a tolerance above 0; the "
+        "exact field (tolerance 0) is drawn by " +
+        scene.volumeRenderers().namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; }));
+  const RefinedElementKey key{now.geometry, now.values, cullPlanes, v.elementTolerance};
+  const auto work = [session = scene.sharedSession(), view = *scene.view(), cullPlanes,
+                     limits = limitsForElementTolerance(v.elementTolerance)](const Progress& progress) {
+    RefinedElementMesh out;
+    out.session = session;
+    out.limits = limits;
+    std::vector<double> converted;
+    const auto values = view.values.doubles(converted);
+    out.nodeValues.assign(values.begin(), values.end());
+    const TetMesh& split = session->tetrahedra();
+    out.field = std::make_shared<const optics::ElementField>(session->model().mesh(), out.nodeValues, split,
+                                                             split.mesh.bounds().center());
+    std::vector<std::uint32_t> chosen;
+    if (cullPlanes.empty()) {
+      chosen.resize(split.mesh.cellCount());
+      for (std::size_t t = 0; t < chosen.size(); ++t) chosen[t] = std::uint32_t(t);
+    } else {
+      const CulledMesh culled = cullToClipPlanes(split.mesh, cullPlanes);
+      chosen.assign(culled.cellOf.begin(), culled.cellOf.end());
+    }
+    Progress refining = progress;
+    refining.setStage("refining the cells");
+    out.refined = refineTetrahedra(*out.field, chosen, limits, refining);
+    return out;
+  };
+  const auto refined = refinedVolume_.wanted(key, work, asynchronous_);
+  if (!refined) return false;
+  if (refinedShown_ != refined) {
+    requireVolumeMemory(scene.session()->model(), refined->refined.tets.mesh);
+    volume_->setVolume(refined->refined.tets.mesh, FieldLocation::Node, refined->refined.values);
+    refinedShown_ = refined;
+    culled_.reset();
+    culledFor_.clear();
+    elementField_.reset();
+  }
+  applyVolumeSettings(scene);
+  return true;
+}
+
+std::vector<std::string> SceneDrawing::refinedVolumeNotes() const {
+  if (!volumeDrawn_ || !refinedShown_) return {};
+  std::vector<std::string> notes = app::refinedVolumeNotes(*refinedShown_);
+  for (std::string& note : elementFieldNotes(*refinedShown_->field, refinedShown_->field->mesh()))
+    notes.push_back(std::move(note));
+  return notes;
 }
 
 void SceneDrawing::applyElementField(const Scene& scene, bool volumeSent) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "BoundaryRenderer.hpp"
+#include "RefinedElementVolume.hpp"
 #include "Scene.hpp"
 
 #include "host/ClipCulling.hpp"
@@ -64,7 +65,12 @@ class SceneDrawing {
   const optics::ElementField* elementField() const { return volumeDrawn_ ? elementField_.get() : nullptr; }
   /// The volume renderer is still refining or building tables off the GUI thread, or the
   /// surface in the cells' own shapes is still refined (asynchronous updates).
-  bool hasPendingWork() const { return (volume_ && volume_->hasPendingWork()) || boundary_.pending(); }
+  bool hasPendingWork() const {
+    return (volume_ && volume_->hasPendingWork()) || boundary_.pending() || refinedVolume_.pending();
+  }
+  /// What the last frame's volume says of the cells' own field it drew on refined
+  /// tetrahedra (empty: it drew none).
+  std::vector<std::string> refinedVolumeNotes() const;
 
  private:
   void applyToBoundary(const Scene& scene);
@@ -75,6 +81,9 @@ class SceneDrawing {
   /// The cells' own field to a renderer that draws it (or none, for the tetrahedra's field),
   /// built again only where `volumeSent` (setVolume or setValues dropped it) or it was off.
   void applyElementField(const Scene& scene, bool volumeSent);
+  /// The scene asks for the cells' own field of a renderer that draws the tetrahedra's only.
+  bool refinesElementField(const Scene& scene) const;
+  bool applyRefinedElementField(const Scene& scene, const std::vector<ClipPlane>& cullPlanes);
   void renderSurface(const Scene& scene, const RenderContext& ctx);
   void renderVolume(const Scene& scene, const RenderContext& ctx);
   void drawUndeformedOutline(const Scene& scene, const RenderContext& ctx);
@@ -113,6 +122,8 @@ class SceneDrawing {
   std::vector<ClipPlane> culledFor_;                          ///< the planes culled_ was made for
   std::shared_ptr<const optics::ElementField> elementField_;  ///< what the renderer draws, if the cells' own field
   std::unique_ptr<OffscreenTarget> depthTarget_;              ///< depth of the edges drawn over a volume
+  RefinedElementVolume refinedVolume_;  ///< the cells' own field refined for a renderer of tetrahedra
+  std::shared_ptr<const RefinedElementMesh> refinedShown_;  ///< what the renderer holds of it, if anything
   bool initialized_ = false;
 };
 

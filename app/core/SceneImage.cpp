@@ -51,6 +51,7 @@ SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay) {
     out.curvedBoundaryCorners = drawing.curvedBoundaryCorners();
     if (const optics::ElementField* field = drawing.elementField())
       out.notes = elementFieldNotes(*field, scene.session()->model().mesh());
+    for (std::string& note : drawing.refinedVolumeNotes()) out.notes.push_back(std::move(note));
   }
   out.picture = QImage(width, height, QImage::Format_RGBA8888);
   for (int y = 0; y < height; ++y)

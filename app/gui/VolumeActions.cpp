@@ -4,6 +4,7 @@
 #include "../core/ReferenceVolumeImage.hpp"
 #include "../core/Scene.hpp"
 
+#include "host/ElementRefinement.hpp"
 #include "host/TextFile.hpp"
 
 #include <QAction>
@@ -107,7 +108,7 @@ void VolumeActions::syncToScene() {
 void VolumeActions::drawCellsOwnField(bool on) {
   const std::string renderer = scene_.volume().renderer;
   const auto traits = scene_.volumeRenderers().traitsOf(renderer);
-  if (on && traits && !traits->elementInterpolation) {
+  if (on && traits && !traits->elementInterpolation && scene_.volumeRenderers().drawsApart(renderer)) {
     const std::string drawing =
         scene_.volumeRenderers().namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; });
     window_.statusBar()->showMessage(
@@ -121,6 +122,10 @@ void VolumeActions::drawCellsOwnField(bool on) {
                            "of the node values"
                          : "The volume, sections, iso-surfaces and streamlines show the field linear on the "
                            "tetrahedra the cells are split into";
+    if (on && traits && !traits->elementInterpolation && scene_.session() &&
+        hasNonlinearCells(scene_.session()->model().mesh()))
+      message += QString("; %1 draws it on tetrahedra refined to the tolerance")
+                     .arg(QString::fromStdString(traits->label.empty() ? renderer : traits->label));
     if (on)
       for (const std::string& note : cellsDrawnBySplit()) message += "; " + QString::fromStdString(note);
     window_.statusBar()->showMessage(message);
@@ -129,6 +134,18 @@ void VolumeActions::drawCellsOwnField(bool on) {
 }
 
 bool VolumeActions::setElementTolerance(double tolerance) {
+  const auto traits = scene_.volumeRenderers().traitsOf(scene_.volume().renderer);
+  if (tolerance == 0.0 && scene_.volumeShown() && scene_.volume().interpolation == FieldInterpolation::Element &&
+      traits && !traits->elementInterpolation) {
+    window_.statusBar()->showMessage(QString::fromStdString(
+        traits->label +
+        " draws the cells' own field on tetrahedra refined to a tolerance "
+        "above 0; to draw it exactly choose " +
+        scene_.volumeRenderers().namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; }) +
+        " in Volume Renderer"));
+    syncToScene();
+    return false;
+  }
   const bool changed = changeScene_([tolerance](Scene& s) { s.setElementTolerance(tolerance); });
   if (changed)
     window_.statusBar()->showMessage(

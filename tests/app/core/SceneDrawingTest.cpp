@@ -207,3 +207,57 @@ TEST(SceneDrawing, TheElementToleranceSetsHowFinelyTheCurvedBoundaryIsDrawn) {
   EXPECT_EQ(drawing.curvedBoundaryCorners().size(), fineCorners);
   drawing.release();
 }
+
+// The GPU ray caster draws tetrahedra only: asked for the cells' own field of a curved hex20
+// model, it is handed the split refined to the tolerance. In the window (asynchronous
+// updates) that refinement runs on a worker thread: the first frame draws the split's field
+// and says work is pending, the frames after it draw what a synchronous drawing draws; a new
+// step and going back to the split's field draw what a fresh drawing draws.
+TEST(SceneDrawing, TheGpuRayCasterDrawsTheCellsOwnFieldOnRefinedPiecesMadeOffTheWindowsThread) {
+  VOLPOST_SKIP_WITHOUT_GL();
+  HeadlessContext context;
+  OffscreenTarget target(48, 40);
+  Scene scene(rayCasterOnly());
+  showAnnulus(scene, {annulusT, [](const glm::dvec3& p) { return 2.0 - p.z * (2.0 * p.x + p.y); }});
+  scene.setVolumeRenderer("raycast");
+  scene.setVolumeShown(true);
+  SceneDrawing synchronous;
+  synchronous.initialize();
+  const auto split = draw(synchronous, scene, target);
+  EXPECT_TRUE(synchronous.refinedVolumeNotes().empty());
+  scene.setInterpolation(FieldInterpolation::Element);
+  const auto own = draw(synchronous, scene, target);
+  ASSERT_NE(own, split) << "the cells' own field is another picture";
+  ASSERT_EQ(synchronous.refinedVolumeNotes().size(), 1u);
+  EXPECT_NE(synchronous.refinedVolumeNotes()[0].find("the cells' own field drawn on"), std::string::npos);
+
+  scene.setInterpolation(FieldInterpolation::Tetrahedra);
+  SceneDrawing window;
+  window.initialize();
+  window.setAsynchronousUpdates(true);
+  EXPECT_EQ(draw(window, scene, target), split);
+  scene.setInterpolation(FieldInterpolation::Element);
+  RenderContext ctx;
+  ctx.width = target.width();
+  ctx.height = target.height();
+  ctx.framebuffer = target.framebuffer();
+  window.render(scene, ctx);
+  EXPECT_TRUE(window.hasPendingWork());
+  EXPECT_TRUE(window.refinedVolumeNotes().empty()) << "the split's field first";
+  EXPECT_EQ(draw(window, scene, target), own) << "then the refined pieces";
+  EXPECT_FALSE(window.hasPendingWork());
+
+  scene.setResult("T", 1);
+  const auto stepTwo = draw(window, scene, target);
+  EXPECT_NE(stepTwo, own);
+  SceneDrawing fresh;
+  fresh.initialize();
+  EXPECT_EQ(draw(fresh, scene, target), stepTwo);
+  scene.setResult("T", 0);
+  scene.setInterpolation(FieldInterpolation::Tetrahedra);
+  EXPECT_EQ(draw(window, scene, target), split) << "the split again";
+  EXPECT_TRUE(window.refinedVolumeNotes().empty());
+  fresh.release();
+  window.release();
+  synchronous.release();
+}

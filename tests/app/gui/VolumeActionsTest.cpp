@@ -99,12 +99,15 @@ class VolumeActionsTest : public QObject {
     QCOMPARE(status(), QString("Volume colors from the 1D transfer function"));
   }
 
-  void theCellsOwnInterpolationNeedsARendererThatDrawsIt() {
+  // Every renderer the window draws with takes the cells' own interpolation: the CPU ray
+  // caster draws it itself, the GPU ray caster on refined tetrahedra, which the status says.
+  void theCellsOwnInterpolationIsDrawnByEveryRendererOfTheWindow() {
     QAction* entry = window_->findChild<QAction*>("elementInterpolationAction");
-    entry->setChecked(true);  // the GPU ray caster alone: it draws the tetrahedra's field
-    QVERIFY(!entry->isChecked());
+    entry->setChecked(true);  // the GPU ray caster alone
+    QVERIFY(entry->isChecked());
+    QVERIFY(scene_->volume().interpolation == FieldInterpolation::Element);
+    entry->setChecked(false);
     QVERIFY(scene_->volume().interpolation == FieldInterpolation::Tetrahedra);
-    QVERIFY2(status().contains("no loaded renderer draws the cells' own interpolation"), qPrintable(status()));
 
     QMainWindow window;
     Scene scene(app::VolumeRendererFactory{[](const std::string& name) -> std::unique_ptr<VolumeRenderer> {
@@ -116,23 +119,16 @@ class VolumeActionsTest : public QObject {
     QMenu* view = window.menuBar()->addMenu("View");
     auto* actions = new VolumeActions(window, scene, *view, true, volpost::test::changingScene(window, scene), {});
     scene.setSession(volpost::test::loadTestModel("bar/bar_tet4.vtu"));
-    QAction* own = window.findChild<QAction*>("elementInterpolationAction");
-    own->setChecked(true);
-    QVERIFY(!own->isChecked());
-    QVERIFY2(window.statusBar()->currentMessage().contains("choose cpu in Volume Renderer"),
-             qPrintable(window.statusBar()->currentMessage()));
     scene.setVolumeRenderer("cpu");
+    QAction* own = window.findChild<QAction*>("elementInterpolationAction");
     own->setChecked(true);
     QVERIFY(own->isChecked());
     QVERIFY(scene.volume().interpolation == FieldInterpolation::Element);
-    bool refused = false;  // the GPU ray caster would draw the tetrahedra's field under the checked entry
-    try {
-      scene.setVolumeRenderer("raycast");
-    } catch (const std::invalid_argument&) {
-      refused = true;
-    }
-    QVERIFY(refused);
-    QCOMPARE(scene.volume().renderer, std::string("cpu"));
+    QVERIFY2(!window.statusBar()->currentMessage().contains("refined"),
+             qPrintable(window.statusBar()->currentMessage()));
+    scene.setVolumeRenderer("raycast");  // taken: it draws the cells' field on refined pieces
+    QCOMPARE(scene.volume().renderer, std::string("raycast"));
+    QVERIFY(scene.volume().interpolation == FieldInterpolation::Element);
     own->setChecked(false);
     QVERIFY(scene.volume().interpolation == FieldInterpolation::Tetrahedra);
     scene.setInterpolation(FieldInterpolation::Element);  // as a state file would
@@ -153,6 +149,9 @@ class VolumeActionsTest : public QObject {
     QVERIFY2(window.statusBar()->currentMessage().contains(
                  "1 cell folded, inverted or collapsed (no inverse map): drawn linear on their tetrahedra; cell id 1"),
              qPrintable(window.statusBar()->currentMessage()));
+    QVERIFY2(window.statusBar()->currentMessage().contains("Ray casting draws it on tetrahedra refined to the "
+                                                           "tolerance"),
+             qPrintable(window.statusBar()->currentMessage()));
     std::filesystem::remove(folded);
   }
 
@@ -168,8 +167,19 @@ class VolumeActionsTest : public QObject {
     QCOMPARE(scene_->volume().elementTolerance, 1e-3);
     QVERIFY2(status().contains("must be 0 (exact) or lie in [1e-05, 0.1]"), qPrintable(status()));
     QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.001..."));
+    // Exact is for renderers that draw the cells' field themselves, not the GPU ray caster's
+    // refined pieces; the surfaces take it.
+    scene_->setResult("S.mises", 0);
+    scene_->setVolumeShown(true);
+    scene_->setInterpolation(FieldInterpolation::Element);
+    QVERIFY(!actions_->setElementTolerance(0.0));
+    QCOMPARE(scene_->volume().elementTolerance, 1e-3);
+    QVERIFY2(status().contains("Ray casting draws the cells' own field on tetrahedra refined to a tolerance above 0"),
+             qPrintable(status()));
+    scene_->setVolumeShown(false);
     QVERIFY(actions_->setElementTolerance(0.0));
     QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: exact..."));
+    scene_->setInterpolation(FieldInterpolation::Tetrahedra);
     scene_->setElementTolerance(0.05);  // as a state file would
     actions_->syncToScene();
     QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.05..."));

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "RefinedElementVolume.hpp"
+
+#include <volpost/core/Progress.hpp>
+
+#include <chrono>
+#include <cstdio>
+
+namespace volpost::app {
+namespace {
+
+std::string withThousands(std::size_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", v);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> refinedVolumeNotes(const RefinedElementMesh& mesh) {
+  const RefinedTetrahedra& r = mesh.refined;
+  std::string note = "the cells' own field drawn on " + withThousands(r.tets.mesh.cellCount()) +
+                     " tetrahedra (the split's cut " + std::to_string(r.level) + " times along each edge), within " +
+                     shortNumber(r.deviation) + " of the field's range and a piece's size (estimated)";
+  if (!r.toleranceReached)
+    note += r.level >= mesh.limits.maxLevel
+                ? "; finer than that is drawn by the cpu renderer, which draws the cells' field itself"
+                : "; the tolerance would need more than " + withThousands(mesh.limits.maxTetrahedra) +
+                      " tetrahedra: the cpu renderer draws the cells' field itself";
+  return {note};
+}
+
+std::shared_ptr<const RefinedElementMesh> RefinedElementVolume::wanted(const RefinedElementKey& key, const Work& work,
+                                                                       bool asynchronous) {
+  if (readyFor_ == key) return ready_;
+  if (running_ && running_->key != key) stop();
+  if (!asynchronous) {
+    auto done = std::make_shared<const RefinedElementMesh>(work(Progress()));
+    readyFor_ = key;
+    return ready_ = done;
+  }
+  if (!running_) {
+    auto cancel = std::make_shared<std::atomic<bool>>(false);
+    running_ = Running{key, cancel, std::async(std::launch::async, [work, cancel] {
+                         return work(Progress([cancel](double, const std::string&) { return !*cancel; }));
+                       })};
+  }
+  if (running_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;
+  std::future<RefinedElementMesh> result = std::move(running_->result);
+  running_.reset();
+  auto done = std::make_shared<const RefinedElementMesh>(result.get());  // the worker's error, if any, is the frame's
+  readyFor_ = key;
+  return ready_ = done;
+}
+
+void RefinedElementVolume::stop() {
+  readyFor_.reset();
+  ready_.reset();
+  if (!running_) return;
+  *running_->cancel = true;
+  try {
+    running_->result.get();  // waits for the worker, which stops at its next report
+  } catch (...) {
+    // Cancelled, or failed: nothing of it is shown.
+  }
+  running_.reset();
+}
+
+}  // namespace volpost::app

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// The cells' own field for a volume renderer that draws tetrahedra only (the GPU ray caster,
+// cell projection): the split's tetrahedra refined in the cells' natural coordinates until
+// the linear pieces follow the cells' field and shape to the element tolerance
+// (ElementRefinement.hpp), handed to the renderer as an ordinary tet mesh. In the window the
+// refinement runs on a worker thread while the split's field is drawn; a headless picture
+// waits for it.
+#pragma once
+
+#include "host/ElementRefinement.hpp"
+
+#include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/optics/ElementField.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volpost::app {
+
+class ModelSession;
+
+/// A refined volume and what it was made of (the field names cells it could not invert).
+struct RefinedElementMesh {
+  std::shared_ptr<const ModelSession> session;  ///< keeps the cells and the split the field references
+  std::vector<double> nodeValues;               ///< the field's node values (the field references them)
+  std::shared_ptr<const optics::ElementField> field;
+  RefinedTetrahedra refined;
+  RefinementLimits limits;
+};
+
+/// What a refinement is for: the scene's geometry and values, the tets the clip box keeps,
+/// the tolerance.
+struct RefinedElementKey {
+  std::uint64_t geometry = 0, values = 0;
+  std::vector<ClipPlane> cullPlanes;
+  double tolerance = 0.0;
+  bool operator==(const RefinedElementKey&) const = default;
+};
+
+/// The user's words for a refined volume: how many pieces, within what, and where the
+/// limits stopped short of the tolerance.
+std::vector<std::string> refinedVolumeNotes(const RefinedElementMesh& mesh);
+
+class RefinedElementVolume {
+ public:
+  using Work = std::function<RefinedElementMesh(const Progress&)>;
+  RefinedElementVolume() = default;
+  RefinedElementVolume(const RefinedElementVolume&) = delete;
+  RefinedElementVolume& operator=(const RefinedElementVolume&) = delete;
+  ~RefinedElementVolume() { stop(); }
+
+  /// The refined volume for `key` when it is ready; otherwise starts `work` for it (on a
+  /// worker thread when `asynchronous`, else here, and then returns its result) and returns
+  /// nullptr. A refinement under way for another key is cancelled.
+  std::shared_ptr<const RefinedElementMesh> wanted(const RefinedElementKey& key, const Work& work, bool asynchronous);
+  /// A refinement is under way.
+  bool pending() const { return running_.has_value(); }
+  /// Cancels the refinement under way and forgets the last result.
+  void stop();
+
+ private:
+  struct Running {
+    RefinedElementKey key;
+    std::shared_ptr<std::atomic<bool>> cancel;
+    std::future<RefinedElementMesh> result;
+  };
+  std::optional<Running> running_;
+  std::optional<RefinedElementKey> readyFor_;
+  std::shared_ptr<const RefinedElementMesh> ready_;
+};
+
+}  // namespace volpost::app
