@@ -235,11 +235,9 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
               "(SEG-Y, image data); this model is a mesh");
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
   if (refinesElementField(scene) && applyRefinedElementField(scene, cullPlanes)) return;
-  bool geometry = drawn_.geometry != now.geometry || cullPlanes != culledFor_;
-  if (refinedShown_) {  // the renderer holds refined pieces: the split goes again
-    refinedShown_.reset();
-    geometry = true;
-  }
+  // Where the renderer holds refined pieces the split goes again; the pieces stay alive
+  // until it has (the renderer reads them when it next draws).
+  const bool geometry = drawn_.geometry != now.geometry || cullPlanes != culledFor_ || refinedShown_;
   const bool values = drawn_.values != now.values;
   const Mesh& tets = session.tetrahedra().mesh;
   if (geometry) {
@@ -253,6 +251,7 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
       volume_->setVolume(culled_->mesh, view.location, culled_->values(view.location, tetValues));
     }
     culledFor_ = cullPlanes;
+    refinedShown_.reset();
   } else if (values) {
     const std::vector<double> tetValues = session.tetValues(view);
     volume_->setValues(culled_ ? culled_->values(view.location, tetValues) : tetValues);  // only the values travel
