@@ -27,6 +27,10 @@ std::string shortNumber(double v) {
 }  // namespace
 
 std::vector<std::string> refinedVolumeNotes(const RefinedElementMesh& mesh) {
+  if (mesh.unrefined)
+    return {"the cells' own field would take more than " + withThousands(mesh.limits.maxTetrahedra) +
+            " refined tetrahedra (twice as fine as the split's " + withThousands(mesh.chosen) +
+            "): drawn linear on the split; the cpu renderer draws the cells' field itself"};
   const RefinedTetrahedra& r = mesh.refined;
   std::string note = "the cells' own field drawn on " + withThousands(r.tets.mesh.cellCount()) +
                      " tetrahedra (the split's cut " + std::to_string(r.level) + " times along each edge), within " +

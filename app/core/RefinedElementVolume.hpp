@@ -32,6 +32,10 @@ struct RefinedElementMesh {
   std::shared_ptr<const optics::ElementField> field;
   RefinedTetrahedra refined;
   RefinementLimits limits;
+  /// Not refined at all: one cut along each edge would already pass limits.maxTetrahedra
+  /// (`chosen` of the split's tetrahedra); the split's field is drawn, and the note says so.
+  bool unrefined = false;
+  std::size_t chosen = 0;
 };
 
 /// What a refinement is for: the scene's geometry and values, the tets the clip box keeps,

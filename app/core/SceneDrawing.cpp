@@ -77,6 +77,7 @@ void SceneDrawing::forgetAll() {
 void SceneDrawing::forgetVolume() {
   drawn_.geometry = drawn_.values = drawn_.tables = drawn_.planes = drawn_.iso = drawn_.mode = kNever;
   refinedShown_.reset();
+  refinedSkipped_.reset();
   refinedVolume_.stop();
   culled_.reset();
   culledFor_.clear();
@@ -234,7 +235,8 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
             : "2D transfer functions (over the value and its gradient) are drawn on regular grids "
               "(SEG-Y, image data); this model is a mesh");
   const std::vector<ClipPlane> cullPlanes = v.clipBox ? clipBoxPlanes(*v.clipBox) : std::vector<ClipPlane>{};
-  if (refinesElementField(scene) && applyRefinedElementField(scene, cullPlanes)) return;
+  if (!refinesElementField(scene)) refinedSkipped_.reset();
+  else if (applyRefinedElementField(scene, cullPlanes)) return;
   // Where the renderer holds refined pieces the split goes again; the pieces stay alive
   // until it has (the renderer reads them when it next draws).
   const bool geometry = drawn_.geometry != now.geometry || cullPlanes != culledFor_ || refinedShown_;
@@ -283,12 +285,7 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
     RefinedElementMesh out;
     out.session = session;
     out.limits = limits;
-    std::vector<double> converted;
-    const auto values = view.values.doubles(converted);
-    out.nodeValues.assign(values.begin(), values.end());
     const TetMesh& split = session->tetrahedra();
-    out.field = std::make_shared<const optics::ElementField>(session->model().mesh(), out.nodeValues, split,
-                                                             split.mesh.bounds().center());
     std::vector<std::uint32_t> chosen;
     if (cullPlanes.empty()) {
       chosen.resize(split.mesh.cellCount());
@@ -297,13 +294,25 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
       const CulledMesh culled = cullToClipPlanes(split.mesh, cullPlanes);
       chosen.assign(culled.cellOf.begin(), culled.cellOf.end());
     }
+    out.chosen = chosen.size();
+    // Two cuts per edge make 8 pieces of each: past the limit, no copy of the split is made.
+    if (8.0 * double(chosen.size()) > double(limits.maxTetrahedra)) {
+      out.unrefined = true;
+      return out;
+    }
+    std::vector<double> converted;
+    const auto values = view.values.doubles(converted);
+    out.nodeValues.assign(values.begin(), values.end());
+    out.field = std::make_shared<const optics::ElementField>(session->model().mesh(), out.nodeValues, split,
+                                                             split.mesh.bounds().center());
     Progress refining = progress;
     refining.setStage("refining the cells");
     out.refined = refineTetrahedra(*out.field, chosen, limits, refining);
     return out;
   };
   const auto refined = refinedVolume_.wanted(key, work, asynchronous_);
-  if (!refined) return false;
+  refinedSkipped_ = refined && refined->unrefined ? refined : nullptr;
+  if (!refined || refined->unrefined) return false;
   if (refinedShown_ != refined) {
     requireVolumeMemory(scene.session()->model(), refined->refined.tets.mesh);
     volume_->setVolume(refined->refined.tets.mesh, FieldLocation::Node, refined->refined.values);
@@ -317,6 +326,7 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
 }
 
 std::vector<std::string> SceneDrawing::refinedVolumeNotes() const {
+  if (volumeDrawn_ && refinedSkipped_) return app::refinedVolumeNotes(*refinedSkipped_);
   if (!volumeDrawn_ || !refinedShown_) return {};
   std::vector<std::string> notes = app::refinedVolumeNotes(*refinedShown_);
   for (std::string& note : elementFieldNotes(*refinedShown_->field, refinedShown_->field->mesh()))

@@ -261,3 +261,27 @@ TEST(SceneDrawing, TheGpuRayCasterDrawsTheCellsOwnFieldOnRefinedPiecesMadeOffThe
   window.release();
   synchronous.release();
 }
+
+// What a refined volume says: how many pieces and how close, where the limits stopped short
+// of the tolerance, and where even one cut would pass the limit (the split is drawn).
+TEST(RefinedElementVolume, ItsNoteSaysWhatWasDrawn) {
+  RefinedElementMesh mesh;
+  mesh.refined.level = 3;
+  mesh.refined.deviation = 0.00088;
+  mesh.refined.tets.mesh.takeCells(CellType::Tet4, std::vector<NodeIndex>(4 * 27, 0));
+  const std::vector<std::string> reached = refinedVolumeNotes(mesh);
+  ASSERT_EQ(reached.size(), 1u);
+  EXPECT_EQ(reached[0],
+            "the cells' own field drawn on 27 tetrahedra (the split's cut 3 times along each edge), within 0.00088 of "
+            "the field's range and a piece's size (estimated)");
+  mesh.refined.toleranceReached = false;
+  EXPECT_NE(refinedVolumeNotes(mesh)[0].find("; the tolerance would need more than 4,000,000 tetrahedra"),
+            std::string::npos);
+  mesh.refined.level = mesh.limits.maxLevel;
+  EXPECT_NE(refinedVolumeNotes(mesh)[0].find("; finer than that is drawn by the cpu renderer"), std::string::npos);
+  mesh.unrefined = true;
+  mesh.chosen = 750000;
+  EXPECT_EQ(refinedVolumeNotes(mesh)[0],
+            "the cells' own field would take more than 4,000,000 refined tetrahedra (twice as fine as the split's "
+            "750,000): drawn linear on the split; the cpu renderer draws the cells' field itself");
+}
