@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <volpost/core/optics/QuickSegment.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
 
 #include <algorithm>
@@ -35,27 +36,6 @@ double glPanel(double tf, double d, double a, double b) {
   return sum * half;
 }
 
-// Thin segments (optical depth E(1) <= 0.1): psi = sum_k (-1)^k / k! integral_0^1 (a x + d x^2)^k dx,
-// with the binomial expansion integrated term by term; 9 terms leave < 0.1^9 / 9! = 3e-15.
-double psiSeries(double a, double d) {
-  double apow[9] = {1}, dpow[9] = {1};
-  for (int i = 1; i < 9; ++i) {
-    apow[i] = apow[i - 1] * a;
-    dpow[i] = dpow[i - 1] * d;
-  }
-  double sum = 0.0, factorial = 1.0;
-  for (int k = 0; k <= 8; ++k) {
-    if (k > 0) factorial *= k;
-    double term = 0.0, binomial = 1.0;
-    for (int j = 0; j <= k; ++j) {
-      term += binomial * apow[k - j] * dpow[j] / (k + j + 1);
-      binomial = binomial * (k - j) / (j + 1);
-    }
-    sum += (k % 2 ? -term : term) / factorial;
-  }
-  return sum;
-}
-
 }  // namespace
 
 double zeta(double tf, double tb) { return std::exp(-0.5 * (tf + tb)); }
@@ -66,7 +46,9 @@ double psi(double tf, double tb) {
   if (tf == tb) return tf == 0.0 ? 1.0 : -std::expm1(-tf) / tf;
   const double d = 0.5 * (tb - tf);
   const double total = 0.5 * (tf + tb);  // E(1)
-  if (total <= 0.1) return psiSeries(tf, d);
+  // Thin segments: the series QuickSegment.hpp also uses, cut after k = 8, whose rest is
+  // below 0.1^9 / 9! = 3e-15 here.
+  if (total <= 0.1) return quick_segment_detail::series<quick_segment_detail::kOrder>(tf, d);
   const double depth = std::min(total, kCutDepth);
   const double end = total <= kCutDepth ? 1.0 : depthToX(tf, d, kCutDepth);
   const int panels = std::max(1, int(std::ceil(depth / kPanelDepth)));
