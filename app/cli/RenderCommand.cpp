@@ -16,6 +16,7 @@
 #include "Commands.hpp"
 
 #include "host/AtomicFile.hpp"
+#include "host/ElementRefinement.hpp"
 #include "host/TextFile.hpp"
 
 #include <QCommandLineParser>
@@ -1187,7 +1188,7 @@ int runRender(const QStringList& args) {
         throw UsageError("--element-tolerance applies to the cells' own field: add --interpolation element");
       if (chosen.volume && chosen.volume->drawsSceneLayers && !chosen.volume->traits.elementInterpolation &&
           !session->model().grid && scene.state().volume.interpolation == FieldInterpolation::Element &&
-          scene.state().volume.elementTolerance == 0.0)
+          scene.state().volume.elementTolerance == 0.0 && hasNonlinearCells(session->model().mesh()))
         throw UsageError(("--element-tolerance 0 (exact): " + rendererName +
                           " draws the cells' own field on tetrahedra refined to a tolerance above 0; the exact "
                           "field is drawn by " +

@@ -136,7 +136,8 @@ void VolumeActions::drawCellsOwnField(bool on) {
 bool VolumeActions::setElementTolerance(double tolerance) {
   const auto traits = scene_.volumeRenderers().traitsOf(scene_.volume().renderer);
   if (tolerance == 0.0 && scene_.volumeShown() && scene_.volume().interpolation == FieldInterpolation::Element &&
-      traits && !traits->elementInterpolation) {
+      traits && !traits->elementInterpolation && scene_.session() && !scene_.session()->model().grid &&
+      hasNonlinearCells(scene_.session()->model().mesh())) {
     window_.statusBar()->showMessage(QString::fromStdString(
         traits->label +
         " draws the cells' own field on tetrahedra refined to a tolerance "

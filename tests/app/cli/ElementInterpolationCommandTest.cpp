@@ -145,6 +145,13 @@ TEST(ElementInterpolationCommand, RenderersOfTetrahedraDrawItOnRefinedPieces) {
             std::string::npos)
       << exact.output;
   EXPECT_FALSE(std::filesystem::exists(dir + "/refined_exact.npy"));
+  // A mesh of tet4 cells is its own split: drawn exactly, so 0 is taken.
+  const auto tets = runVolpost("render " + dataFile("bar/bar_tet4.vtu") +
+                               " --field S11 --size 32x24 --renderer raycast --interpolation element "
+                               "--element-tolerance 0 -o " +
+                               dir + "/refined_tet4.png");
+  EXPECT_EQ(tets.exitCode, 0) << tets.output;
+  EXPECT_EQ(tets.output.find("note:"), std::string::npos) << "nothing refined: " << tets.output;
 }
 
 TEST(ElementInterpolationCommand, SurfacesTakeItAndTheStateKeepsIt) {

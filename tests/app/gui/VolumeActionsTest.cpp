@@ -169,7 +169,14 @@ class VolumeActionsTest : public QObject {
     QCOMPARE(entry->text(), QString("Tolerance of the Cells' Own Field: 0.001..."));
     // Exact is for renderers that draw the cells' field themselves, not the GPU ray caster's
     // refined pieces; the surfaces take it.
-    scene_->setResult("S.mises", 0);
+    const std::string hex = (std::filesystem::temp_directory_path() / "volpost_one_hex.vtk").string();
+    std::ofstream(hex) << "# vtk DataFile Version 4.2\nhex\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n"
+                          "0 0 0  1 0 0  1 1 0  0 1 0  0 0 1  1 0 1  1 1 1  0 1 1\n"
+                          "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n12\n"
+                          "POINT_DATA 8\nSCALARS T double 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n";
+    scene_->setSession(volpost::test::loadTestModel(hex));
+    std::filesystem::remove(hex);
+    scene_->setResult("T", 0);
     scene_->setVolumeShown(true);
     scene_->setInterpolation(FieldInterpolation::Element);
     QVERIFY(!actions_->setElementTolerance(0.0));
