@@ -54,8 +54,12 @@ std::shared_ptr<const RefinedElementMesh> RefinedElementVolume::wanted(const Ref
   }
   if (!running_) {
     auto cancel = std::make_shared<std::atomic<bool>>(false);
-    running_ = Running{key, cancel, std::async(std::launch::async, [work, cancel] {
-                         return work(Progress([cancel](double, const std::string&) { return !*cancel; }));
+    auto fraction = std::make_shared<std::atomic<double>>(0.0);
+    running_ = Running{key, cancel, fraction, std::async(std::launch::async, [work, cancel, fraction] {
+                         return work(Progress([cancel, fraction](double done, const std::string&) {
+                           *fraction = done;
+                           return !*cancel;
+                         }));
                        })};
   }
   if (running_->result.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return nullptr;

@@ -65,6 +65,10 @@ class RefinedElementVolume {
   std::shared_ptr<const RefinedElementMesh> wanted(const RefinedElementKey& key, const Work& work, bool asynchronous);
   /// A refinement is under way.
   bool pending() const { return running_.has_value(); }
+  /// How far the refinement under way has got (0..1); nullopt when none is.
+  std::optional<double> progress() const {
+    return running_ ? std::optional<double>(running_->fraction->load()) : std::nullopt;
+  }
   /// Cancels the refinement under way and forgets the last result.
   void stop();
 
@@ -72,6 +76,7 @@ class RefinedElementVolume {
   struct Running {
     RefinedElementKey key;
     std::shared_ptr<std::atomic<bool>> cancel;
+    std::shared_ptr<std::atomic<double>> fraction;  ///< reported by the worker
     std::future<RefinedElementMesh> result;
   };
   std::optional<Running> running_;

@@ -68,6 +68,9 @@ class SceneDrawing {
   bool hasPendingWork() const {
     return (volume_ && volume_->hasPendingWork()) || boundary_.pending() || refinedVolume_.pending();
   }
+  /// How far the cells' own field is refined for the volume on a worker thread (0..1);
+  /// nullopt when no refinement is under way.
+  std::optional<double> volumeRefinement() const { return refinedVolume_.progress(); }
   /// What the last frame's volume says of the cells' own field it drew on refined
   /// tetrahedra (empty: it drew none).
   std::vector<std::string> refinedVolumeNotes() const;

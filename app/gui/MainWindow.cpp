@@ -118,6 +118,7 @@ MainWindow::MainWindow(PluginManager& plugins, QWidget* parent) : QMainWindow(pa
   refiningLabel_->setVisible(false);
   statusBar()->addPermanentWidget(refiningLabel_);
   connect(viewport_, &Viewport::refining, refiningLabel_, &QLabel::setVisible);
+  connect(viewport_, &Viewport::refiningMessage, refiningLabel_, &QLabel::setText);
   connect(viewport_, &Viewport::renderFailed, this, [this](const QString& m) {
     statusBar()->showMessage("Rendering error: " + m);
   });

@@ -166,6 +166,10 @@ void Viewport::paintGL() {
   // A table or a full frame still computed on worker threads: draw again when it may be there.
   const bool pending = drawing_.hasPendingWork();
   if (pending) QTimer::singleShot(30, this, [this] { update(); });
+  const std::optional<double> refined = drawing_.volumeRefinement();
+  const QString message = refined ? QString("Refining the cells' own field: %1%...").arg(int(*refined * 100.0))
+                                  : QString("Refining the picture...");
+  if (pending && message != refiningMessage_) emit refiningMessage(refiningMessage_ = message);
   if (pending != refining_) emit refining(refining_ = pending);
   if (overlayReady_) drawLegend(ctx.width, ctx.height);
   ++paintedFrames_;

@@ -102,6 +102,8 @@ class Viewport : public QOpenGLWidget {
   void glInfo(const QString& description);
   /// The picture shown is a quick one; the renderer is computing the full one (or is done).
   void refining(bool on);
+  /// What the refinement under way is, for the status bar ("Refining the cells' field: 40%").
+  void refiningMessage(const QString& message);
   void renderFailed(const QString& message);
   /// The seeds of a rake dragged across the view (model coordinates, in order).
   void rakePlaced(std::vector<glm::dvec3> seeds);
@@ -142,6 +144,7 @@ class Viewport : public QOpenGLWidget {
   OverlayRenderer overlay_;
   bool overlayReady_ = false;
   bool refining_ = false;  ///< last said by refining()
+  QString refiningMessage_;  ///< last said by refiningMessage()
   std::size_t paintedFrames_ = 0;
   QPoint lastMouse_;
   bool rakeMode_ = false;

@@ -11,8 +11,13 @@
 
 #include "core/SceneDrawing.hpp"
 
+#include <volpost/core/Progress.hpp>
 #include <volpost/render/HeadlessContext.hpp>
 #include <volpost/render/OffscreenTarget.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
 
 using namespace volpost;
 using namespace volpost::app;
@@ -284,4 +289,47 @@ TEST(RefinedElementVolume, ItsNoteSaysWhatWasDrawn) {
   EXPECT_EQ(refinedVolumeNotes(mesh)[0],
             "the cells' own field would take more than 4,000,000 refined tetrahedra (twice as fine as the split's "
             "750,000): drawn linear on the split; the cpu renderer draws the cells' field itself");
+}
+
+// A refinement on the worker thread says how far it has got, is cancelled by a refinement
+// for another key (its result never shown), and hands over its result once done.
+TEST(RefinedElementVolume, AWorkerSaysHowFarItHasGotAndGivesWayToNewerWork) {
+  RefinedElementVolume volume;
+  std::atomic<bool> release{false};
+  const auto slow = [&release](const Progress& progress) {
+    progress.report(0.5);
+    for (int i = 0; i < 20000 && !release; ++i) {  // at most 20 s: a broken test must not hang
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      progress.report(0.5);
+    }
+    RefinedElementMesh out;
+    out.chosen = 1;
+    return out;
+  };
+  RefinedElementKey first;
+  first.values = 1;
+  EXPECT_EQ(volume.wanted(first, slow, true), nullptr);
+  for (int i = 0; i < 2000 && volume.progress().value_or(0.0) < 0.5; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(volume.progress(), std::optional<double>(0.5));
+  RefinedElementKey second = first;
+  second.values = 2;
+  const auto quick = [](const Progress&) {
+    RefinedElementMesh out;
+    out.chosen = 2;
+    return out;
+  };
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(volume.wanted(second, quick, true), nullptr) << "the first is cancelled, the second started";
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "cancelled, not waited out";
+  std::shared_ptr<const RefinedElementMesh> done;
+  for (int i = 0; i < 10000 && !done; ++i) {
+    done = volume.wanted(second, quick, true);
+    if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ASSERT_NE(done, nullptr);
+  EXPECT_EQ(done->chosen, 2u);
+  EXPECT_FALSE(volume.progress().has_value());
+  EXPECT_EQ(volume.wanted(second, quick, true), done) << "kept for its key";
+  release = true;
 }
