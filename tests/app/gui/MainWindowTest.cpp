@@ -542,6 +542,26 @@ class MainWindowTest : public QObject {
     QCOMPARE(headless.size(), shown.size());
     const int different = pixelsApart(shown, headless).first;
     QVERIFY2(different == 0, qPrintable(QString("%1 pixels differ").arg(different)));
+    // The GPU ray caster draws it on refined pieces, made on a worker thread: the status bar
+    // says so while they are made, and the settled picture is the one `volpost render
+    // --state` draws.
+    QSignalSpy said(view, &Viewport::refiningMessage);
+    window_->findChild<QAction*>("renderer:raycast")->trigger();
+    QCOMPARE(view->scene().volume().renderer, std::string("raycast"));
+    QVERIFY(own->isChecked());
+    const QImage onGpu = settled(view).convertToFormat(QImage::Format_RGB32);
+    QStringList messages;
+    for (const QList<QVariant>& message : said) messages << message.at(0).toString();
+    QVERIFY2(messages.filter("Refining the cells' own field: ").size() > 0, qPrintable(messages.join(" | ")));
+    QVERIFY(!window_->findChild<QLabel*>("refiningLabel")->isVisible());
+    QVERIFY2(onGpu != split, "the refined pieces are not the split");
+    QVERIFY(window_->saveStateFile(state));
+    const QImage gpuHeadless = renderedHeadless(state, png, onGpu.size(), error);
+    QVERIFY2(!gpuHeadless.isNull(), qPrintable(error));
+    const int gpuDifferent = pixelsApart(onGpu, gpuHeadless).first;
+    QVERIFY2(gpuDifferent == 0, qPrintable(QString("%1 pixels differ on the GPU ray caster").arg(gpuDifferent)));
+    window_->findChild<QAction*>("renderer:cpu")->trigger();
+    QCOMPARE(view->scene().volume().renderer, std::string("cpu"));
     // Turned off again, the renderer drops the cells' own field: the split's picture.
     own->setChecked(false);
     view->update();
