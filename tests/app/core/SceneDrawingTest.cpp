@@ -46,6 +46,15 @@ std::vector<std::uint8_t> draw(SceneDrawing& drawing, const Scene& scene, const 
   return target.readPixels();
 }
 
+// One frame, not waited for: what a window's paint draws.
+void renderOnce(SceneDrawing& drawing, const Scene& scene, const OffscreenTarget& target) {
+  RenderContext ctx;
+  ctx.width = target.width();
+  ctx.height = target.height();
+  ctx.framebuffer = target.framebuffer();
+  drawing.render(scene, ctx);
+}
+
 double annulusT(const glm::dvec3& p) { return p.z * (p.x + 2.0 * p.y); }
 
 // A quarter annulus of 2^3 hex20 cells whose midside nodes sit on the arcs, showing its node
@@ -176,11 +185,7 @@ TEST(SceneDrawing, TheCurvedBoundaryIsRefinedOffTheWindowsThread) {
   window.setAsynchronousUpdates(true);
   EXPECT_EQ(draw(window, scene, target), flat);
   scene.setInterpolation(FieldInterpolation::Element);
-  RenderContext ctx;
-  ctx.width = target.width();
-  ctx.height = target.height();
-  ctx.framebuffer = target.framebuffer();
-  window.render(scene, ctx);
+  renderOnce(window, scene, target);
   EXPECT_TRUE(window.curvedBoundaryCorners().empty()) << "the flat faces first";
   EXPECT_EQ(target.readPixels(), flat);
   EXPECT_EQ(draw(window, scene, target), curved) << "then the curved surface, once refined";
@@ -242,11 +247,7 @@ TEST(SceneDrawing, TheGpuRayCasterDrawsTheCellsOwnFieldOnRefinedPiecesMadeOffThe
   window.setAsynchronousUpdates(true);
   EXPECT_EQ(draw(window, scene, target), split);
   scene.setInterpolation(FieldInterpolation::Element);
-  RenderContext ctx;
-  ctx.width = target.width();
-  ctx.height = target.height();
-  ctx.framebuffer = target.framebuffer();
-  window.render(scene, ctx);
+  renderOnce(window, scene, target);
   EXPECT_TRUE(window.hasPendingWork());
   EXPECT_TRUE(window.refinedVolumeNotes().empty()) << "the split's field first";
   EXPECT_EQ(draw(window, scene, target), own) << "then the refined pieces";
