@@ -49,6 +49,7 @@ struct RefinedTetrahedra {
   TetMesh tets;
   std::vector<double> values;  ///< one per node of tets.mesh: the cell's field there
   int level = 1;               ///< subdivisions along each edge of the split's tetrahedra
+  int bisections = 0;          ///< where pieces were bisected instead: the most times one was halved
   /// The estimated largest deviation left (of the field, relative to the values' range, or
   /// of the shape, relative to a piece's edge) and the tolerance it was measured against.
   double deviation = 0.0;
