@@ -28,18 +28,18 @@ std::string shortNumber(double v) {
 
 std::vector<std::string> refinedVolumeNotes(const RefinedElementMesh& mesh) {
   if (mesh.unrefined)
-    return {"the cells' own field would take more than " + withThousands(mesh.limits.maxTetrahedra) +
-            " refined tetrahedra (twice as fine as the split's " + withThousands(mesh.chosen) +
-            "): drawn linear on the split; the cpu renderer draws the cells' field itself"};
+    return {"the cells' own field would be cut from a copy of the split's " + withThousands(mesh.chosen) +
+            " tetrahedra, more than half of the " + withThousands(mesh.goal.maxTetrahedra) +
+            " pieces it may take: drawn linear on the split; the cpu renderer draws the cells' field itself"};
   const RefinedTetrahedra& r = mesh.refined;
   std::string note = "the cells' own field drawn on " + withThousands(r.tets.mesh.cellCount()) +
-                     " tetrahedra (the split's cut " + std::to_string(r.level) + " times along each edge), within " +
-                     shortNumber(r.deviation) + " of the field's range and a piece's size (estimated)";
+                     " tetrahedra (the split's " + withThousands(mesh.chosen) + ", halved up to " +
+                     std::to_string(r.bisections) +
+                     " times where the transfer function shows the field), a pixel's channel within " +
+                     shortNumber(r.deviation) + " of it (estimated)";
   if (!r.toleranceReached)
-    note += r.level >= mesh.limits.maxLevel
-                ? "; finer than that is drawn by the cpu renderer, which draws the cells' field itself"
-                : "; the tolerance would need more than " + withThousands(mesh.limits.maxTetrahedra) +
-                      " tetrahedra: the cpu renderer draws the cells' field itself";
+    note += "; the tolerance " + shortNumber(mesh.goal.perChannel) + " would need more than " +
+            withThousands(mesh.goal.maxTetrahedra) + " tetrahedra: the cpu renderer draws the cells' field itself";
   return {note};
 }
 

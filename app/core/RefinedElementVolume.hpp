@@ -7,9 +7,11 @@
 // waits for it.
 #pragma once
 
+#include "host/AdaptiveElementRefinement.hpp"
 #include "host/ElementRefinement.hpp"
 
 #include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/ElementField.hpp>
 
 #include <atomic>
@@ -31,20 +33,26 @@ struct RefinedElementMesh {
   std::vector<double> nodeValues;               ///< the field's node values (the field references them)
   std::shared_ptr<const optics::ElementField> field;
   RefinedTetrahedra refined;
-  RefinementLimits limits;
-  /// Not refined at all: one cut along each edge would already pass limits.maxTetrahedra
-  /// (`chosen` of the split's tetrahedra); the split's field is drawn, and the note says so.
+  VolumeRefinementGoal goal;  ///< its transfer function is not kept
+  /// Not refined at all: the split's `chosen` tetrahedra leave too little room in
+  /// goal.maxTetrahedra to cut; the split's field is drawn, and the note says so.
   bool unrefined = false;
   std::size_t chosen = 0;
 };
 
 /// What a refinement is for: the scene's geometry and values, the tets the clip box keeps,
-/// the tolerance.
+/// the tolerance and the transfer function (which decides where the pieces are cut).
 struct RefinedElementKey {
   std::uint64_t geometry = 0, values = 0;
   std::vector<ClipPlane> cullPlanes;
   double tolerance = 0.0;
+  TransferFunction transferFunction;
   bool operator==(const RefinedElementKey&) const = default;
+  /// Pieces refined for `other` draw the same field (refined for another transfer function
+  /// or tolerance, perhaps).
+  bool sameField(const RefinedElementKey& other) const {
+    return geometry == other.geometry && values == other.values && cullPlanes == other.cullPlanes;
+  }
 };
 
 /// The user's words for a refined volume: how many pieces, within what, and where the

@@ -279,12 +279,13 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
         "' draws the cells' own field on tetrahedra refined to a tolerance above 0; the "
         "exact field (tolerance 0) is drawn by " +
         scene.volumeRenderers().namesWhere([](const VolumeRendererTraits& t) { return t.elementInterpolation; }));
-  const RefinedElementKey key{now.geometry, now.values, cullPlanes, v.elementTolerance};
-  const auto work = [session = scene.sharedSession(), view = *scene.view(), cullPlanes,
-                     limits = limitsForElementTolerance(v.elementTolerance)](const Progress& progress) {
+  const TransferFunction transferFunction = scene.transferFunction();
+  const RefinedElementKey key{now.geometry, now.values, cullPlanes, v.elementTolerance, transferFunction};
+  const auto work = [session = scene.sharedSession(), view = *scene.view(), cullPlanes, transferFunction,
+                     tolerance = v.elementTolerance](const Progress& progress) {
     RefinedElementMesh out;
     out.session = session;
-    out.limits = limits;
+    out.goal.perChannel = tolerance;
     const TetMesh& split = session->tetrahedra();
     std::vector<std::uint32_t> chosen;
     if (cullPlanes.empty()) {
@@ -295,8 +296,9 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
       chosen.assign(culled.cellOf.begin(), culled.cellOf.end());
     }
     out.chosen = chosen.size();
-    // Two cuts per edge make 8 pieces of each: past the limit, no copy of the split is made.
-    if (8.0 * double(chosen.size()) > double(limits.maxTetrahedra)) {
+    // The pieces are bisected from a copy of the chosen tetrahedra; past half the budget
+    // there is too little room left to cut, and the split is drawn with no copy made.
+    if (2 * chosen.size() > out.goal.maxTetrahedra) {
       out.unrefined = true;
       return out;
     }
@@ -307,13 +309,22 @@ bool SceneDrawing::applyRefinedElementField(const Scene& scene, const std::vecto
                                                              split.mesh.bounds().center());
     Progress refining = progress;
     refining.setStage("refining the cells");
-    out.refined = refineTetrahedra(*out.field, chosen, limits, refining);
+    VolumeRefinementGoal goal = out.goal;
+    goal.transferFunction = &transferFunction;
+    out.refined = refineVolumeAdaptively(*out.field, chosen, goal, refining);
     return out;
   };
   const auto refined = refinedVolume_.wanted(key, work, asynchronous_);
+  if (!refined && refinedShown_ && shownKey_ && shownKey_->sameField(key)) {
+    // Only the transfer function or the tolerance changed: the pieces held draw the same
+    // field, refined for the other, while the new ones are made.
+    applyVolumeSettings(scene);
+    return true;
+  }
   refinedSkipped_ = refined && refined->unrefined ? refined : nullptr;
   if (!refined || refined->unrefined) return false;
   if (refinedShown_ != refined) {
+    shownKey_ = key;
     requireVolumeMemory(scene.session()->model(), refined->refined.tets.mesh);
     volume_->setVolume(refined->refined.tets.mesh, FieldLocation::Node, refined->refined.values);
     refinedShown_ = refined;

@@ -127,6 +127,7 @@ class SceneDrawing {
   std::unique_ptr<OffscreenTarget> depthTarget_;              ///< depth of the edges drawn over a volume
   RefinedElementVolume refinedVolume_;  ///< the cells' own field refined for a renderer of tetrahedra
   std::shared_ptr<const RefinedElementMesh> refinedShown_;    ///< what the renderer holds of it, if anything
+  std::optional<RefinedElementKey> shownKey_;                 ///< what refinedShown_ was made for
   std::shared_ptr<const RefinedElementMesh> refinedSkipped_;  ///< too many pieces: the split is drawn, and said
   bool initialized_ = false;
 };
