@@ -3,17 +3,18 @@
 // The options (or a state file saved by the window) make a SceneState; the Scene draws it
 // exactly as the window does.
 #include "../core/AnimationFrames.hpp"
+#include "../core/CameraSpec.hpp"
 #include "../core/FloatImageFile.hpp"
 #include "../core/PictureFile.hpp"
 #include "../core/PluginRenderers.hpp"
 #include "../core/Probe.hpp"
+#include "../core/RefinedElementVolume.hpp"
 #include "../core/SceneImage.hpp"
 #include "../core/VolumeDefaults.hpp"
 #include "../core/VolumeSpecs.hpp"
-#include "../core/CameraSpec.hpp"
 #include "CliSupport.hpp"
-#include "StreamlineOptions.hpp"
 #include "Commands.hpp"
+#include "StreamlineOptions.hpp"
 
 #include "host/AtomicFile.hpp"
 #include "host/ElementRefinement.hpp"
@@ -1186,9 +1187,9 @@ int runRender(const QStringList& args) {
       refuseWhatTheRendererIgnoresOnThisModel(parser, o, chosen, session->model().grid.has_value());
       if (parser.isSet(o.elementTolerance) && scene.state().volume.interpolation != FieldInterpolation::Element)
         throw UsageError("--element-tolerance applies to the cells' own field: add --interpolation element");
-      if (chosen.volume && chosen.volume->drawsSceneLayers && !chosen.volume->traits.elementInterpolation &&
-          !session->model().grid && scene.state().volume.interpolation == FieldInterpolation::Element &&
-          scene.state().volume.elementTolerance == 0.0 && hasNonlinearCells(session->model().mesh()))
+      if (chosen.volume && chosen.volume->drawsSceneLayers && scene.state().volume.elementTolerance == 0.0 &&
+          app::drawsCellsFieldOnPieces(chosen.volume->traits, scene.state().volume.interpolation,
+                                       scene.view()->location, session->model()))
         throw UsageError(("--element-tolerance 0 (exact): " + rendererName +
                           " draws the cells' own field on tetrahedra refined to a tolerance above 0; the exact "
                           "field is drawn by " +

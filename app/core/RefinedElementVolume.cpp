@@ -26,6 +26,14 @@ std::string shortNumber(double v) {
 
 }  // namespace
 
+bool drawsCellsFieldOnPieces(const VolumeRendererTraits& traits, FieldInterpolation interpolation,
+                             FieldLocation location, const Model& model) {
+  if (traits.elementInterpolation || interpolation != FieldInterpolation::Element || location != FieldLocation::Node)
+    return false;
+  if (model.grid && traits.drawsGrids) return false;  // drawn as the grid it is
+  return hasNonlinearCells(model.mesh());
+}
+
 std::vector<std::string> refinedVolumeNotes(const RefinedElementMesh& mesh) {
   if (mesh.unrefined)
     return {"the cells' own field would be cut from a copy of the split's " + withThousands(mesh.chosen) +

@@ -11,8 +11,11 @@
 #include "host/ElementRefinement.hpp"
 
 #include <volpost/core/ClipPlane.hpp>
+#include <volpost/core/Model.hpp>
 #include <volpost/core/TransferFunction.hpp>
 #include <volpost/core/optics/ElementField.hpp>
+#include <volpost/render/FieldInterpolation.hpp>
+#include <volpost/render/VolumeRendererTraits.hpp>
 
 #include <atomic>
 #include <cstdint>
@@ -54,6 +57,14 @@ struct RefinedElementKey {
     return geometry == other.geometry && values == other.values && cullPlanes == other.cullPlanes;
   }
 };
+
+/// Whether a volume renderer with `traits` draws `model`'s field on pieces refined to the
+/// element tolerance (and so cannot take the exact tolerance, 0): it has no cells' own field
+/// of its own (the elementInterpolation trait), the cells' own field of a node field is
+/// asked for, the model is not drawn as a grid, and it has cells other than tet4 (a tet4 mesh
+/// is its own split). The command line, the window and the drawing all ask this.
+bool drawsCellsFieldOnPieces(const VolumeRendererTraits& traits, FieldInterpolation interpolation,
+                             FieldLocation location, const Model& model);
 
 /// The user's words for a refined volume: how many pieces, within what, and where the
 /// limits stopped short of the tolerance.

@@ -263,8 +263,8 @@ void SceneDrawing::applyToVolume(const Scene& scene) {
 }
 
 bool SceneDrawing::refinesElementField(const Scene& scene) const {
-  return !volumeTraits_.elementInterpolation && scene.shown().volume.interpolation == FieldInterpolation::Element &&
-         scene.view()->location == FieldLocation::Node && hasNonlinearCells(scene.session()->model().mesh());
+  return drawsCellsFieldOnPieces(volumeTraits_, scene.shown().volume.interpolation, scene.view()->location,
+                                 scene.session()->model());
 }
 
 // The cells' own field for a renderer that draws tetrahedra only: the split refined to the

@@ -2,6 +2,7 @@
 #include "VolumeActions.hpp"
 
 #include "../core/ReferenceVolumeImage.hpp"
+#include "../core/RefinedElementVolume.hpp"
 #include "../core/Scene.hpp"
 
 #include "host/ElementRefinement.hpp"
@@ -122,8 +123,9 @@ void VolumeActions::drawCellsOwnField(bool on) {
                            "of the node values"
                          : "The volume, sections, iso-surfaces and streamlines show the field linear on the "
                            "tetrahedra the cells are split into";
-    if (on && traits && !traits->elementInterpolation && scene_.session() &&
-        hasNonlinearCells(scene_.session()->model().mesh()))
+    if (on && traits && scene_.session() && scene_.view() &&
+        drawsCellsFieldOnPieces(*traits, FieldInterpolation::Element, scene_.view()->location,
+                                scene_.session()->model()))
       message += QString("; %1 draws it on tetrahedra refined to the tolerance")
                      .arg(QString::fromStdString(traits->label.empty() ? renderer : traits->label));
     if (on)
@@ -135,9 +137,9 @@ void VolumeActions::drawCellsOwnField(bool on) {
 
 bool VolumeActions::setElementTolerance(double tolerance) {
   const auto traits = scene_.volumeRenderers().traitsOf(scene_.volume().renderer);
-  if (tolerance == 0.0 && scene_.volumeShown() && scene_.volume().interpolation == FieldInterpolation::Element &&
-      traits && !traits->elementInterpolation && scene_.session() && !scene_.session()->model().grid &&
-      hasNonlinearCells(scene_.session()->model().mesh())) {
+  if (tolerance == 0.0 && scene_.volumeShown() && traits && scene_.session() && scene_.view() &&
+      drawsCellsFieldOnPieces(*traits, scene_.volume().interpolation, scene_.view()->location,
+                              scene_.session()->model())) {
     window_.statusBar()->showMessage(QString::fromStdString(
         traits->label +
         " draws the cells' own field on tetrahedra refined to a tolerance "

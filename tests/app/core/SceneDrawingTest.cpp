@@ -365,3 +365,28 @@ TEST(RefinedElementVolume, AWorkerSaysHowFarItHasGotAndGivesWayToNewerWork) {
   EXPECT_EQ(volume.wanted(second, quick, true), done) << "kept for its key";
   release = true;
 }
+
+// Which renderers draw the cells' own field on refined pieces (and so refuse the exact
+// tolerance): the command line, the window and the drawing ask the same question.
+TEST(RefinedElementVolume, OnlyARendererWithoutTheCellsFieldOfItsOwnDrawsItOnPieces) {
+  Model hexes;
+  hexes.mesh() = test::hexLattice(CellType::Hex8, 1, [](const glm::dvec3& g) { return g; });
+  Model tets;
+  tets.mesh() = tetrahedralize(hexes.mesh()).mesh;
+  VolumeRendererTraits gpu;
+  gpu.drawsGrids = true;
+  VolumeRendererTraits own;
+  own.elementInterpolation = true;
+  const auto element = FieldInterpolation::Element;
+  EXPECT_TRUE(drawsCellsFieldOnPieces(gpu, element, FieldLocation::Node, hexes));
+  EXPECT_FALSE(drawsCellsFieldOnPieces(own, element, FieldLocation::Node, hexes)) << "draws the field itself";
+  EXPECT_FALSE(drawsCellsFieldOnPieces(gpu, FieldInterpolation::Tetrahedra, FieldLocation::Node, hexes));
+  EXPECT_FALSE(drawsCellsFieldOnPieces(gpu, element, FieldLocation::Cell, hexes)) << "one value per cell";
+  EXPECT_FALSE(drawsCellsFieldOnPieces(gpu, element, FieldLocation::Node, tets)) << "a tet4 mesh is its own split";
+  Model grid;
+  grid.grid = RegularGrid{};
+  grid.grid->dims = {3, 3, 3};
+  EXPECT_FALSE(drawsCellsFieldOnPieces(gpu, element, FieldLocation::Node, grid)) << "drawn as a grid";
+  VolumeRendererTraits meshesOnly;
+  EXPECT_TRUE(drawsCellsFieldOnPieces(meshesOnly, element, FieldLocation::Node, grid)) << "its hexahedra, split";
+}
