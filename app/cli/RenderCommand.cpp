@@ -17,7 +17,6 @@
 #include "StreamlineOptions.hpp"
 
 #include "host/AtomicFile.hpp"
-#include "host/ElementRefinement.hpp"
 #include "host/TextFile.hpp"
 
 #include <QCommandLineParser>

@@ -5,7 +5,6 @@
 #include "../core/RefinedElementVolume.hpp"
 #include "../core/Scene.hpp"
 
-#include "host/ElementRefinement.hpp"
 #include "host/TextFile.hpp"
 
 #include <QAction>

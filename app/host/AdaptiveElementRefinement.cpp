@@ -183,7 +183,6 @@ class Bisection {
     out.tets.mesh.takeCells(CellType::Tet4, std::move(connectivity));
     out.tets.originalNodes = out.tets.mesh.nodes.size();
     out.values = std::move(values_);
-    out.level = 1 + (deepest + 2) / 3;
     out.bisections = deepest;
     out.toleranceReached = out.deviation <= goal_.perChannel;
     return out;

@@ -43,9 +43,8 @@ double pixelChangePerValue(const TransferFunction& tf, double lo, double hi);
 
 /// The tetrahedra `chosen` (indices into field.split()) bisected in their cells of
 /// field.mesh() toward `goal`. The result's deviation is the largest estimated change of a
-/// pixel's channel left (in the goal's units), its level the most times a piece of the
-/// split was halved across any edge (bisections / 3, rounded up: comparable with the
-/// uniform level). Throws volpost::Cancelled when `progress` cancels.
+/// pixel's channel left (in the goal's units), its bisections the most times one piece of
+/// the split was halved (its level stays 1). Throws volpost::Cancelled when `progress` cancels.
 RefinedTetrahedra refineVolumeAdaptively(const optics::ElementField& field, std::span<const std::uint32_t> chosen,
                                          const VolumeRefinementGoal& goal, const Progress& progress = {});
 

@@ -4,9 +4,9 @@
 // exactly two pieces), carry the cells' own field, and are cut where the transfer function
 // changes, not where it is flat or transparent.
 #include "host/AdaptiveElementRefinement.hpp"
-#include "host/BoundarySurface.hpp"
 #include "support/HexLattice.hpp"
 #include "support/ReferenceCells.hpp"
+#include "support/RefinedPieces.hpp"
 
 #include <volpost/core/CellShape.hpp>
 
@@ -21,12 +21,6 @@
 using namespace volpost;
 
 namespace {
-
-std::vector<std::uint32_t> everyTet(const TetMesh& split) {
-  std::vector<std::uint32_t> all(split.mesh.cellCount());
-  for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
-  return all;
-}
 
 std::vector<double> sampled(const Mesh& mesh, double (*f)(const glm::dvec3&)) {
   std::vector<double> values;
@@ -81,7 +75,7 @@ TEST(AdaptiveElementRefinement, PiecesTileTheCellsWithNoHangingPointsAndCarryThe
   VolumeRefinementGoal goal;
   goal.transferFunction = &tf;
   goal.maxTetrahedra = 40000;
-  const RefinedTetrahedra r = refineVolumeAdaptively(field, everyTet(split), goal);
+  const RefinedTetrahedra r = refineVolumeAdaptively(field, test::everyTet(split), goal);
   const Mesh& pieces = r.tets.mesh;
   ASSERT_GT(pieces.cellCount(), 4 * split.mesh.cellCount());
   EXPECT_LE(pieces.cellCount(), goal.maxTetrahedra + goal.maxTetrahedra / 2) << "near the budget, not far past it";
@@ -116,7 +110,7 @@ TEST(AdaptiveElementRefinement, CutsWhereTheTransferFunctionChangesNotWhereItIsF
     VolumeRefinementGoal goal;
     goal.transferFunction = &tf;
     goal.maxTetrahedra = 40000;
-    return refineVolumeAdaptively(field, everyTet(split), goal);
+    return refineVolumeAdaptively(field, test::everyTet(split), goal);
   };
   // Transparent over the values, or the same color and extinction everywhere: the
   // field's error shows nowhere, and the split's pieces stay as they are.
@@ -155,13 +149,13 @@ TEST(AdaptiveElementRefinement, MeetsTheToleranceWhereTheBudgetAllowsAndSaysWhen
   const TransferFunction ramp = TransferFunction::ramp(0.0, 8.0, "viridis", 1.0);
   VolumeRefinementGoal goal;
   goal.transferFunction = &ramp;
-  const RefinedTetrahedra enough = refineVolumeAdaptively(field, everyTet(split), goal);
+  const RefinedTetrahedra enough = refineVolumeAdaptively(field, test::everyTet(split), goal);
   EXPECT_TRUE(enough.toleranceReached);
   EXPECT_LE(enough.deviation, goal.perChannel);
   EXPECT_GT(enough.tets.mesh.cellCount(), split.mesh.cellCount());
 
   goal.maxTetrahedra = 100;
-  const RefinedTetrahedra short_ = refineVolumeAdaptively(field, everyTet(split), goal);
+  const RefinedTetrahedra short_ = refineVolumeAdaptively(field, test::everyTet(split), goal);
   EXPECT_FALSE(short_.toleranceReached);
   EXPECT_GT(short_.deviation, goal.perChannel);
   EXPECT_LT(short_.tets.mesh.cellCount(), enough.tets.mesh.cellCount());
@@ -181,20 +175,9 @@ TEST(AdaptiveElementRefinement, EveryCellTypeIsTiledAndCarriesItsOwnField) {
     VolumeRefinementGoal goal;
     goal.transferFunction = &ramp;
     goal.maxTetrahedra = 5000;
-    const RefinedTetrahedra r = refineVolumeAdaptively(field, everyTet(split), goal);
+    const RefinedTetrahedra r = refineVolumeAdaptively(field, test::everyTet(split), goal);
     if (type == CellType::Tet4) EXPECT_EQ(r.tets.mesh.cellCount(), 1u) << "a tet4's linear field needs no cuts";
-    double sum = 0.0;
-    for (std::size_t t = 0; t < r.tets.mesh.cellCount(); ++t) sum += signedCellVolume(r.tets.mesh, t);
-    EXPECT_NEAR(sum, volume, 1e-12) << "positive pieces, no gaps, no overlaps";
-    const BoundarySurface outside = extractBoundary(r.tets.mesh);
-    EXPECT_EQ(outside.nonManifoldFaceCount, 0u);
-    for (const auto e : outside.mesh.edges()) EXPECT_FALSE(outside.mesh.is_boundary(e)) << "closed";
-    for (std::size_t n = 0; n < r.tets.mesh.nodeCount(); ++n) {
-      glm::dvec3 xi = field.start(0);
-      const auto own = field.value(0, r.tets.mesh.nodes[n], xi);
-      ASSERT_TRUE(own.has_value());
-      EXPECT_NEAR(r.values[n], *own, 1e-9);
-    }
+    test::expectTheCellTiledWithItsOwnField(r, field, volume);
   }
 }
 

@@ -9,6 +9,7 @@
 #include "host/SectionCut.hpp"
 #include "support/HexLattice.hpp"
 #include "support/ReferenceCells.hpp"
+#include "support/RefinedPieces.hpp"
 #include "support/TetGrid.hpp"
 
 #include <volpost/core/CellShape.hpp>
@@ -227,22 +228,9 @@ TEST(ElementRefinement, EveryCellTypeIsTiledAndCarriesItsOwnField) {
     const std::vector<double> values = sampled(mesh, f);
     const TetMesh split = tetrahedralize(mesh);
     const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
-    std::vector<std::uint32_t> all(split.mesh.cellCount());
-    for (std::uint32_t t = 0; t < all.size(); ++t) all[t] = t;
-    const RefinedTetrahedra r = refineTetrahedra(field, all, RefinementLimits{1e-12, 3});
+    const RefinedTetrahedra r = refineTetrahedra(field, test::everyTet(split), RefinementLimits{1e-12, 3});
     ASSERT_EQ(r.level, type == CellType::Tet4 ? 1 : 3) << "a tet4's linear field needs no refinement";
-    double sum = 0.0;
-    for (std::size_t t = 0; t < r.tets.mesh.cellCount(); ++t) sum += signedCellVolume(r.tets.mesh, t);
-    EXPECT_NEAR(sum, volume, 1e-12) << "positive pieces, no gaps, no overlaps";
-    const BoundarySurface outside = extractBoundary(r.tets.mesh);
-    EXPECT_EQ(outside.nonManifoldFaceCount, 0u);
-    for (const auto e : outside.mesh.edges()) EXPECT_FALSE(outside.mesh.is_boundary(e)) << "closed";
-    for (std::size_t n = 0; n < r.tets.mesh.nodeCount(); ++n) {
-      glm::dvec3 xi = field.start(0);
-      const auto own = field.value(0, r.tets.mesh.nodes[n], xi);
-      ASSERT_TRUE(own.has_value());
-      EXPECT_NEAR(r.values[n], *own, 1e-9);
-    }
+    test::expectTheCellTiledWithItsOwnField(r, field, volume);
   }
 }
 
