@@ -42,7 +42,19 @@ std::vector<std::uint8_t> draw(SceneDrawing& drawing, const Scene& scene, const 
   ctx.width = target.width();
   ctx.height = target.height();
   ctx.framebuffer = target.framebuffer();
-  for (int i = 0; i == 0 || (i < 10000 && drawing.hasPendingWork()); ++i) drawing.render(scene, ctx);
+  // Until nothing is pending: a refinement on a worker may take seconds while frames are
+  // quick (a count of frames ran out first here, and the picture shown was the old pieces'),
+  // so the wait is timed, and a test that never settles fails rather than hangs.
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  drawing.render(scene, ctx);
+  while (drawing.hasPendingWork()) {
+    if (std::chrono::steady_clock::now() > giveUp) {
+      ADD_FAILURE() << "the drawing still had work pending after 120 s";
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    drawing.render(scene, ctx);
+  }
   return target.readPixels();
 }
 
@@ -267,17 +279,7 @@ TEST(SceneDrawing, TheGpuRayCasterDrawsTheCellsOwnFieldOnRefinedPiecesMadeOffThe
   {
     SceneDrawing fresh;
     fresh.initialize();
-    const auto fresher = draw(fresh, scene, target);
-    int differ = 0, most = 0;
-    for (std::size_t k = 0; k < fresher.size(); ++k) {
-      const int d = std::abs(int(fresher[k]) - int(denser[k]));
-      differ += d > 0, most = std::max(most, d);
-    }
-    // What a fresh drawing draws, but for a few pixels off by 1/255 or 2/255 (measured: 177
-    // channels of 7,680, at most 2): the GPU ray caster drawing one set of pieces after
-    // another does not come out bit for bit as a fresh one.
-    EXPECT_LE(most, 2) << differ << " channels differ";
-    EXPECT_LT(differ, int(fresher.size()) / 20);
+    EXPECT_EQ(draw(fresh, scene, target), denser) << "what a fresh drawing draws";
     fresh.release();
   }
   scene.setTransferFunction(before);
