@@ -42,7 +42,11 @@ class CellMap {
     type_ = cells_.cellType(cell_);
     const auto ids = cells_.cellNodes(cell_);
     count_ = int(ids.size());
-    for (int i = 0; i < count_; ++i) nodes_[std::size_t(i)] = cells_.nodes[ids[std::size_t(i)]];
+    const std::span<const double> values = field_.values();
+    for (int i = 0; i < count_; ++i) {
+      nodes_[std::size_t(i)] = cells_.nodes[ids[std::size_t(i)]];
+      values_[std::size_t(i)] = values[ids[std::size_t(i)]];
+    }
     for (int k = 0; k < 4; ++k)
       xi_[std::size_t(k)] = naturalCoordinatesOfSplitNode(cells_, cell_, corners_[std::size_t(k)]);
     flatFaced_ = type_ == CellType::Pyramid5 || flatFacedCell(type_, {nodes_.data(), std::size_t(count_)});
@@ -94,8 +98,17 @@ class CellMap {
       value = found ? field_.valueAt(cell_, clampToReference(type_, *found)) : linear;  // the apex: its own value
       return;
     }
-    position = positionAt(type_, nodes, xi);
-    value = field_.valueAt(cell_, xi);
+    // The shape functions once for both (they were half of the refinement's time): the
+    // same sums as positionAt and ElementField::valueAt, so the same numbers.
+    const ShapeValues n = shapeFunctions(type_, xi);
+    const glm::dvec3 origin = nodes_[0];
+    glm::dvec3 x(0.0);
+    value = 0.0;
+    for (std::size_t i = 0; i < std::size_t(count_); ++i) {
+      x += n[i] * (nodes_[i] - origin);
+      value += n[i] * values_[i];
+    }
+    position = origin + x;
   }
 
  private:
@@ -109,6 +122,7 @@ class CellMap {
   CellType type_ = CellType::Tet4;
   int count_ = 0;
   std::array<glm::dvec3, kMaxCellNodes> nodes_{};
+  std::array<double, kMaxCellNodes> values_{};  ///< the field at the cell's nodes
   std::array<glm::dvec3, 4> xi_{};
   bool flatFaced_ = false;
 
