@@ -7,7 +7,7 @@
 // Prints a Markdown table.
 // The own field is drawn at each tolerance asked for (0: integrated to rounding).
 //   volpost_element_field_bench [--size N] [--frames N] [--cubes N,N,...] [--threads N] [--cells TYPE]
-//                               [--tolerances E,E,...] [--refined]
+//                               [--tolerances E,E,...] [--refined] [--bent]
 // --refined adds a table of the other path: the split refined in the cells' natural
 // coordinates to the tolerance (what the renderers of tetrahedra are given), its pieces
 // drawn linear by the CPU ray caster, against the same reference.
@@ -99,7 +99,15 @@ struct Model {
   std::vector<double> values;
 };
 
-Model modelOf(CellType type, int n) {
+// The cube [0,1]^3 bent into a quarter of an annulus (radii 1 to 2 about the z axis): every
+// node, midside nodes too, goes through it, so quadratic cells follow the arcs with their
+// curved edges and faces, and the corners of linear cells lie on them.
+glm::dvec3 bent(const glm::dvec3& p) {
+  const double r = 1.0 + p.x, angle = 0.5 * std::acos(-1.0) * p.y;
+  return {r * std::cos(angle), r * std::sin(angle), p.z};
+}
+
+Model modelOf(CellType type, int n, bool bend) {
   Model m;
   std::map<Lattice, NodeIndex> index;
   const auto node = [&](const Lattice& l) {
@@ -133,6 +141,8 @@ Model modelOf(CellType type, int n) {
             break;
           }
         }
+  if (bend)
+    for (glm::dvec3& p : m.mesh.nodes) p = bent(p);
   for (const glm::dvec3& p : m.mesh.nodes) m.values.push_back(wave(p));
   return m;
 }
@@ -223,7 +233,7 @@ int main(int argc, char** argv) {
   std::vector<int> cubes{8, 16};
   std::string only;  // one cell type's name, or all
   std::vector<double> tolerances{1e-3, 0.0};
-  bool refinedRows = false;
+  bool refinedRows = false, bend = false;
   std::vector<RefinedRow> refinedTable;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -234,6 +244,7 @@ int main(int argc, char** argv) {
     else if (a == "--cells" && more) only = argv[++i];
     else if (a == "--tolerances" && more) tolerances = numbersIn(argv[++i]);
     else if (a == "--refined") refinedRows = true;
+    else if (a == "--bent") bend = true;
     else if (a == "--cubes" && more) {
       cubes.clear();
       for (const char* p = argv[++i]; *p;) {
@@ -254,7 +265,9 @@ int main(int argc, char** argv) {
           "  --tolerances E,...  the own field's tolerances per pixel channel (default 1e-3,0; 0: to "
           "rounding)\n"
           "  --refined       also the split refined to each tolerance (what raycast and vicp draw), its "
-          "pieces drawn linear\n");
+          "pieces drawn linear\n"
+          "  --bent          the meshes bent into a quarter of an annulus (radii 1 to 2), every node on it: "
+          "curved quadratic cells\n");
     }
   }
   if (size < 8 || frames < 1 || cubes.empty() || tolerances.empty() ||
@@ -266,8 +279,9 @@ int main(int argc, char** argv) {
   std::printf(
       "CPU ray caster, %dx%d, iso camera orbiting a quarter turn (median of %d frames), transfer function "
       "peaked at 0.4 (extinction 40); error: RMSE of premultiplied RGBA against the reference drawing the "
-      "cells' own field\n\n",
-      size, size, frames);
+      "cells' own field; %s\n\n",
+      size, size, frames,
+      bend ? "the cubes bent into a quarter annulus (radii 1 to 2), midside nodes on its arcs" : "straight cubes");
   std::printf(
       "| cells | n | count | tets | split: ms wall / CPU | split: bytes | split: RMSE | tolerance | own field: ms "
       "wall / CPU | own field: bytes | own field: RMSE | own field: largest | drawn by the split "
@@ -275,7 +289,7 @@ int main(int argc, char** argv) {
   for (const int n : cubes)
     for (const CellType type : kAllCellTypes) {
       if (!only.empty() && only != cellTypeName(type)) continue;
-      const Model model = modelOf(type, n);
+      const Model model = modelOf(type, n, bend);
       const TetMesh split = tetrahedralize(model.mesh);
       const std::vector<double> tetValues = split.nodeValues(model.mesh, model.values);
       const volume::TetWalkMesh walk(split.mesh, FieldLocation::Node, tetValues);

@@ -13,6 +13,7 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <volpost/core/WorkerThreads.hpp>
@@ -20,9 +21,12 @@
 namespace volpost::optics {
 namespace {
 
+// A tet's part of the ray, or (tet == kOwnShape) a curved cell's, found on its own shape.
+constexpr std::uint32_t kOwnShape = 0xffffffffu;
 struct Interval {
   double t0, t1;
   std::uint32_t tet;
+  std::uint32_t cell = 0;  ///< with kOwnShape
   bool operator<(const Interval& o) const { return t0 < o.t0 || (t0 == o.t0 && t1 < o.t1); }
 };
 
@@ -59,6 +63,37 @@ struct LocalRay {
   glm::dvec3 o, d;
   double tMin, tMax;
 };
+
+// The ray's parts as the volume draws them, front to back: the split's tets, except that a
+// curved cell's tets make way for the stretches inside the cell's own shape (clipped as
+// they are); those tets go to `aside`, for a stretch whose field cannot be fitted.
+std::vector<Interval> rayIntervals(const TetVolume& volume, const LocalRay& r, const RaySettings& settings,
+                                   std::vector<Interval>& aside) {
+  std::vector<Interval> list = intervals(volume, r.o, r.d, r.tMin, r.tMax, settings);
+  const CurvedCells* curved = settings.elementField ? settings.curvedCells : nullptr;
+  if (!curved || curved->empty()) return list;
+  const ElementField& field = *settings.elementField;
+  const auto ofCurvedCell = [&](const Interval& i) {
+    return curved->curved(field.cellOfTet(volume.tet(i.tet).source));
+  };
+  for (const Interval& i : list)
+    if (ofCurvedCell(i)) aside.push_back(i);
+  list.erase(std::remove_if(list.begin(), list.end(), ofCurvedCell), list.end());
+  std::vector<double> seeds;
+  for (const Interval& i : aside) seeds.insert(seeds.end(), {i.t0, 0.5 * (i.t0 + i.t1), i.t1});
+  std::vector<CellStretch> stretches;
+  curved->stretches(r.o, r.d, r.tMin, r.tMax, seeds, stretches);
+  for (CellStretch& c : stretches) {
+    bool kept = true;
+    for (const ClipPlane& p : settings.clipPlanes) {
+      const glm::dvec3 point = p.point - volume.origin();
+      kept = kept && clipHalfSpace(glm::dot(p.normal, r.o - point), glm::dot(p.normal, r.d), true, c.t0, c.t1);
+    }
+    if (kept) list.push_back({c.t0, c.t1, kOwnShape, c.cell});
+  }
+  std::sort(list.begin(), list.end());
+  return list;
+}
 
 LocalRay localRay(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {
   const double len = glm::length(direction);
@@ -102,6 +137,24 @@ SegmentLight linearTetSegment(const TetVolume& volume, const TransferFunction& t
   return segmentWithSurfaces(tf, settings, sFront, sBack, i.t1 - i.t0, tet.gradient, r.d);
 }
 
+// A curved cell's stretch on its own shape, its field fitted along it; where the map cannot
+// be inverted along it, the split's tets of the cell within the stretch, linear.
+SegmentLight ownShapeStretch(const TetVolume& volume, const TransferFunction& tf, const RaySettings& settings,
+                             const LocalRay& r, const Interval& stretch, const std::vector<Interval>& aside) {
+  const ElementField& field = *settings.elementField;
+  if (const auto light = integrateElementStretch(field, stretch.cell, tf, settings.isoSurfaces, r.o, r.d, stretch.t0,
+                                                 stretch.t1, exactStretches(field)))
+    return *light;
+  field.countFallback();
+  SegmentLight total;
+  for (Interval i : aside) {
+    if (field.cellOfTet(volume.tet(i.tet).source) != stretch.cell) continue;
+    i.t0 = std::max(i.t0, stretch.t0), i.t1 = std::min(i.t1, stretch.t1);
+    if (i.t1 > i.t0) compositeBehind(total, linearTetSegment(volume, tf, settings, r, i));
+  }
+  return total;
+}
+
 }  // namespace
 
 SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, glm::dvec3 origin, glm::dvec3 direction,
@@ -109,8 +162,13 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
   const LocalRay r = localRay(volume, origin, direction, tMin, tMax);
   const ElementField* field = settings.elementField;
   SegmentLight total;
-  const std::vector<Interval> list = intervals(volume, r.o, r.d, r.tMin, r.tMax, settings);
+  std::vector<Interval> aside;
+  const std::vector<Interval> list = rayIntervals(volume, r, settings, aside);
   for (std::size_t i = 0; i < list.size() && total.transmittance >= settings.terminationTransmittance; ++i) {
+    if (list[i].tet == kOwnShape) {
+      compositeBehind(total, ownShapeStretch(volume, tf, settings, r, list[i], aside));
+      continue;
+    }
     const std::uint32_t cell = field ? field->cellOfTet(volume.tet(list[i].tet).source) : 0;
     if (!field || field->linearIn(cell)) {
       compositeBehind(total, linearTetSegment(volume, tf, settings, r, list[i]));
@@ -119,7 +177,7 @@ SegmentLight integrateRay(const TetVolume& volume, const TransferFunction& tf, g
     // The cell's tets the ray crosses one after another make one stretch of the cell.
     std::size_t last = i;
     double end = list[i].t1;
-    while (last + 1 < list.size() && list[last + 1].t0 <= end &&
+    while (last + 1 < list.size() && list[last + 1].t0 <= end && list[last + 1].tet != kOwnShape &&
            field->cellOfTet(volume.tet(list[last + 1].tet).source) == cell)
       end = std::max(end, list[++last].t1);
     if (const auto light = integrateElementStretch(*field, cell, tf, settings.isoSurfaces, r.o, r.d, list[i].t0, end,
@@ -139,7 +197,8 @@ double lengthInside(const TetVolume& volume, glm::dvec3 origin, glm::dvec3 direc
                     const RaySettings& settings) {
   const LocalRay r = localRay(volume, origin, direction, tMin, tMax);
   double length = 0.0;
-  for (const Interval& i : intervals(volume, r.o, r.d, r.tMin, r.tMax, settings)) length += i.t1 - i.t0;
+  std::vector<Interval> aside;
+  for (const Interval& i : rayIntervals(volume, r, settings, aside)) length += i.t1 - i.t0;
   return length;
 }
 
@@ -186,10 +245,17 @@ ReferenceImage renderPixelRays(const Camera& camera, int width, int height, cons
 
 ReferenceImage renderReference(const TetVolume& volume, const TransferFunction& tf, const Camera& camera, int width,
                                int height, const RaySettings& settings, const Progress& progress, int threads) {
+  // The curved cells' shapes, found once for the picture.
+  std::optional<CurvedCells> curved;
+  RaySettings withShapes = settings;
+  if (settings.elementField && !settings.curvedCells) {
+    curved.emplace(*settings.elementField);
+    withShapes.curvedCells = &*curved;
+  }
   return renderPixelRays(
       camera, width, height,
       [&](glm::dvec3 origin, glm::dvec3 direction, double tMin, double tMax) {
-        return integrateRay(volume, tf, origin, direction, tMin, tMax, settings);
+        return integrateRay(volume, tf, origin, direction, tMin, tMax, withShapes);
       },
       progress, threads);
 }

@@ -16,6 +16,7 @@
 #include <volpost/core/optics/ElementField.hpp>
 #include <volpost/core/optics/IsoTables.hpp>
 #include <volpost/core/optics/SegmentIntegral.hpp>
+#include "host/optics/CurvedCells.hpp"
 #include "host/optics/TetVolume.hpp"
 
 #include <glm/vec4.hpp>
@@ -38,6 +39,9 @@ struct RaySettings {
   /// The field as the cells' own shape functions interpolate it (null: linear on the
   /// tetrahedra). It must be built on the same split and origin as the volume.
   const ElementField* elementField = nullptr;
+  /// With elementField: its curved cells, whose own shape the rays follow (renderReference
+  /// finds them when null; integrateRay alone then draws them as the split's facets).
+  const CurvedCells* curvedCells = nullptr;
 };
 
 /// Integrates one ray: origin in model coordinates, direction of any length (distances

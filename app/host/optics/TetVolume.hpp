@@ -5,6 +5,8 @@
 // double precision, relative to the mesh center.
 #pragma once
 
+#include "host/optics/BoxTree.hpp"
+
 #include <volpost/core/Field.hpp>
 #include <volpost/core/Mesh.hpp>
 
@@ -13,6 +15,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace volpost::optics {
@@ -49,36 +52,15 @@ class TetVolume {
   void forEachCandidate(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax, Visit&& visit) const;
 
  private:
-  struct Node {
-    glm::dvec3 lo, hi;
-    std::uint32_t first, count;  ///< leaf: tets [first, first+count); inner: count == 0, children first, first+1
-  };
-  void buildBvh(std::vector<std::array<glm::dvec3, 2>>& boxes);
-  static bool hitsBox(const Node& n, const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax);
-
   glm::dvec3 origin_{0.0};
   std::vector<PreparedTet> tets_;
-  std::vector<std::uint32_t> order_;  ///< tet indices in BVH leaf order
-  std::vector<Node> nodes_;
+  BoxTree boxes_;  ///< one box per tet, in the order of tets_
   std::size_t skipped_ = 0;
 };
 
 template <typename Visit>
 void TetVolume::forEachCandidate(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax, Visit&& visit) const {
-  if (nodes_.empty()) return;
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& n = nodes_[stack[--top]];
-    if (!hitsBox(n, o, d, tMin, tMax)) continue;
-    if (n.count > 0) {
-      for (std::uint32_t i = n.first; i < n.first + n.count; ++i) visit(order_[i]);
-    } else if (top + 2 <= 128) {
-      stack[top++] = n.first;
-      stack[top++] = n.first + 1;
-    }
-  }
+  boxes_.forEachCandidate(o, d, tMin, tMax, std::forward<Visit>(visit));
 }
 
 }  // namespace volpost::optics

@@ -139,6 +139,14 @@ class BothFields {
             integrateRay(volume_, tf, o, d, 0.0, 100.0, settings)};
   }
   const ElementField& field() const { return field_; }
+  /// The cells' own field along the cells' own shapes (curved faces followed).
+  SegmentLight shaped(const TransferFunction& tf, glm::dvec3 o, glm::dvec3 d) const {
+    RaySettings element;
+    element.elementField = &field_;
+    element.curvedCells = &curved_;
+    return integrateRay(volume_, tf, o, d, 0.0, 100.0, element);
+  }
+  const CurvedCells& curved() const { return curved_; }
 
  private:
   Mesh mesh_;
@@ -146,6 +154,7 @@ class BothFields {
   TetMesh tets_;
   TetVolume volume_;
   ElementField field_;
+  CurvedCells curved_{field_};
 };
 
 // Random rays from outside through the box [0.2, 1.3] x [-0.4, 0.9] x [0.1, 1.0].
@@ -396,4 +405,72 @@ TEST(ElementReference, AnAffineCellsFieldAlongALineIsItsPolynomial) {
             << cellTypeName(type) << " u " << u;
     }
   }
+}
+
+// Two hex20 cells side by side filling [-1, 1]^3 bent by x -> (x, y, z + a (1 - x^2) (1 + z) / 2):
+// quadratic, so the cells' nodes placed by it reproduce it exactly, and the top is the curved
+// surface z = 1 + a (1 - x^2) where the split's facets are flat at z = 1. The field is the
+// height z, which the cells also represent exactly. The truth: each ray's exact path (the
+// slabs and the top's quadratic along the ray) summed by the midpoint rule.
+TEST(ElementReference, CurvedHex20CellsAreDrawnToTheirOwnCurvedFacesNotTheSplitsFacets) {
+  constexpr double a = 0.3;
+  const auto bend = [](const glm::dvec3& x) {
+    return glm::dvec3(x.x, x.y, x.z + a * (1.0 - x.x * x.x) * (1.0 + x.z) / 2.0);
+  };
+  Mesh mesh = boxOfHexes(CellType::Hex20, glm::dvec3(-1.0), glm::dvec3(1.0), 2);
+  for (glm::dvec3& x : mesh.nodes) x = bend(x);
+  const ClosedForm height = [](const glm::dvec3& x) { return x.z; };
+  BothFields both(mesh, sampled(mesh, height));
+  ASSERT_TRUE(both.field().uninvertibleCells().empty());
+  EXPECT_EQ(both.curved().count(), 8u) << "every cell reaches the curved top";
+  const TransferFunction tf = peakTf(-1.0, 1.0 + a);
+  // Where o + t d is inside: within the side slabs and the bottom, under the top.
+  const auto path = [&](glm::dvec3 o, glm::dvec3 d) {
+    auto [t0, t1] = throughBox(glm::dvec3(-1.0, -1.0, -1.0), glm::dvec3(1.0, 1.0, 10.0), o, d);
+    // g(t) = 1 + a (1 - x(t)^2) - z(t) >= 0: a quadratic in t opening downward (or a line).
+    const double qa = -a * d.x * d.x, qb = -2.0 * a * o.x * d.x - d.z, qc = 1.0 + a * (1.0 - o.x * o.x) - o.z;
+    if (qa == 0.0) {
+      const double root = -qc / qb;
+      (qb > 0.0 ? t0 : t1) = qb > 0.0 ? std::max(t0, root) : std::min(t1, root);
+    } else {
+      const double disc = std::sqrt(qb * qb - 4.0 * qa * qc);
+      const double r1 = (-qb + disc) / (2.0 * qa), r2 = (-qb - disc) / (2.0 * qa);
+      t0 = std::max(t0, std::min(r1, r2)), t1 = std::min(t1, std::max(r1, r2));
+    }
+    return std::pair{t0, t1};
+  };
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> rays;
+  for (double x0 : {-0.8, -0.35, 0.0, 0.2, 0.65}) rays.push_back({{x0, 0.3, 4.0}, {0.0, 0.0, -1.0}});  // down
+  for (double z0 : {1.05, 1.15, 1.25}) rays.push_back({{-4.0, -0.2, z0}, {1.0, 0.0, 0.0}});            // only the bulge
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  while (rays.size() < 30) {
+    const glm::dvec3 target(0.9 * u(random), 0.9 * u(random), 0.6 + 0.5 * u(random));
+    const glm::dvec3 d = glm::normalize(glm::dvec3(u(random), u(random), u(random)));
+    rays.push_back({target - 5.0 * d, d});
+  }
+  double worst = 0.0, splitWorst = 0.0;
+  for (const auto& [o, d] : rays) {
+    const auto [t0, t1] = path(o, d);
+    const SegmentLight truth = t1 > t0 ? independent(tf, height, o, d, t0, t1) : SegmentLight{};
+    worst = std::max(worst, difference(both.shaped(tf, o, d), truth));
+    splitWorst = std::max(splitWorst, difference(both.ray(tf, o, d).element, truth));
+  }
+  EXPECT_LT(worst, 1e-7);                                                  // measured 3.4e-9
+  EXPECT_GT(splitWorst, 0.05) << "the split's flat top is another shape";  // measured 0.32
+  EXPECT_EQ(both.field().fallbacks(), 0u);
+}
+
+// A cell whose split draws it as it is: flat faces and midside nodes at the middles.
+TEST(ElementReference, OnlyCellsTheSplitDoesNotFollowAreCurved) {
+  const Mesh straight = boxOfHexes(CellType::Hex20, glm::dvec3(0.0), glm::dvec3(1.0), 1);
+  std::vector<glm::dvec3> nodes = straight.nodes;
+  EXPECT_TRUE(splitFollowsCell(CellType::Hex20, nodes));
+  nodes[8].z += 0.01;  // a midside node off its edge
+  EXPECT_FALSE(splitFollowsCell(CellType::Hex20, nodes));
+  const Mesh hex8 = boxOfHexes(CellType::Hex8, glm::dvec3(0.0), glm::dvec3(1.0), 1);
+  nodes = hex8.nodes;
+  EXPECT_TRUE(splitFollowsCell(CellType::Hex8, nodes));
+  nodes[6].z += 0.05;  // one corner out of its faces' planes: warped faces
+  EXPECT_FALSE(splitFollowsCell(CellType::Hex8, nodes));
 }

@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "host/optics/CurvedCells.hpp"
+
+#include <volpost/core/CellShape.hpp>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace volpost::optics {
+namespace {
+
+// A point counts as inside the cell this close to the reference cell (natural units): the
+// ends of a stretch are where this changes, found to rounding by bisection.
+constexpr double kInside = 1e-12;
+
+double cellSize(std::span<const glm::dvec3> nodes) {
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::dvec3& x : nodes) lo = glm::min(lo, x), hi = glm::max(hi, x);
+  return glm::length(hi - lo);
+}
+
+// A box holding the whole cell: the map sampled over the reference cell (corners, edges,
+// faces and inside, 9 points along each natural axis), widened by a fifth of its size on
+// every side (a quadratic surface strays from the samples by far less), since a box that
+// misses part of the cell would lose that part.
+BoxTree::Box boxOf(CellType type, std::span<const glm::dvec3> nodes) {
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::dvec3& x : nodes) lo = glm::min(lo, x), hi = glm::max(hi, x);
+  constexpr int n = 8;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      for (int k = 0; k <= n; ++k) {
+        const glm::dvec3 u(double(i) / n, double(j) / n, double(k) / n);
+        glm::dvec3 xi = u;
+        if (type == CellType::Hex8 || type == CellType::Hex20) xi = 2.0 * u - 1.0;
+        else if (type == CellType::Wedge6 || type == CellType::Wedge15) xi.z = 2.0 * u.z - 1.0;
+        xi = clampToReference(type, xi);
+        const glm::dvec3 x = positionAt(type, nodes, xi);
+        lo = glm::min(lo, x), hi = glm::max(hi, x);
+      }
+  const glm::dvec3 pad = 0.2 * (hi - lo) + glm::dvec3(1e-12 * glm::length(hi - lo) + 1e-300);
+  return {lo - pad, hi + pad};
+}
+
+}  // namespace
+
+bool splitFollowsCell(CellType type, std::span<const glm::dvec3> nodes) {
+  const CellTopology& topo = topology(type);
+  if (int(nodes.size()) != topo.nodeCount) return false;
+  const double size = cellSize(nodes);
+  for (const CellEdge& e : topo.edges)
+    if (e.mid >= 0 && glm::length(nodes[std::size_t(e.mid)] -
+                                  0.5 * (nodes[std::size_t(e.a)] + nodes[std::size_t(e.b)])) > 1e-9 * size)
+      return false;
+  for (const CellFace& f : topo.faces) {
+    if (f.size != 4) continue;
+    const glm::dvec3 a = nodes[f.corners[0]], b = nodes[f.corners[1]], c = nodes[f.corners[2]], d = nodes[f.corners[3]];
+    if (std::abs(glm::dot(b - a, glm::cross(c - a, d - a))) > 1e-9 * size * size * size) return false;
+  }
+  return true;
+}
+
+CurvedCells::CurvedCells(const ElementField& field) {
+  const Mesh& mesh = field.mesh();
+  isCurved_.assign(mesh.cellCount(), false);
+  std::vector<glm::dvec3> at;
+  for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
+    if (field.linearIn(std::uint32_t(c))) continue;
+    const CellType type = mesh.cellType(c);
+    at.clear();
+    for (NodeIndex n : mesh.cellNodes(c)) at.push_back(mesh.nodes[n] - field.origin());
+    if (splitFollowsCell(type, at)) continue;
+    isCurved_[c] = true;
+    cells_.push_back({std::uint32_t(c), type, std::uint32_t(nodes_.size()), int(at.size())});
+    nodes_.insert(nodes_.end(), at.begin(), at.end());
+    cellBoxes_.push_back(boxOf(type, at));
+  }
+  boxes_ = BoxTree(cellBoxes_);
+}
+
+void CurvedCells::stretches(const glm::dvec3& o, const glm::dvec3& d, double tMin, double tMax,
+                            std::span<const double> seeds, std::vector<CellStretch>& out) const {
+  std::vector<double> samples;
+  boxes_.forEachCandidate(o, d, tMin, tMax, [&](std::uint32_t index) {
+    double t0 = tMin, t1 = tMax;  // the candidate's own box: the tree only says it may be met
+    if (!BoxTree::clipToBox(cellBoxes_[index], o, d, t0, t1)) return;
+    samples.clear();
+    for (int k = 0; k <= kSamples; ++k) samples.push_back(t0 + (t1 - t0) * double(k) / kSamples);
+    for (double t : seeds)
+      if (t > t0 && t < t1) samples.push_back(t);
+    std::sort(samples.begin(), samples.end());
+    stretchesIn(cells_[index], o, d, samples, out);
+  });
+}
+
+void CurvedCells::stretchesIn(const Cell& cell, const glm::dvec3& o, const glm::dvec3& d,
+                              const std::vector<double>& samples, std::vector<CellStretch>& out) const {
+  const std::span<const glm::dvec3> nodes(nodes_.data() + cell.firstNode, std::size_t(cell.nodeCount));
+  const glm::dvec3 centre = referenceCentre(cell.type);
+  glm::dvec3 guess = centre;  // natural coordinates of the last point found inside
+  // Newton's method from the last point inside, and where that says outside (it may have
+  // run to another preimage of the map's extension beyond the cell), from the centre too.
+  const auto inside = [&](double t) {
+    const glm::dvec3 p = o + t * d;
+    for (const glm::dvec3& start : {guess, centre}) {
+      const std::optional<glm::dvec3> xi = naturalCoordinates(cell.type, nodes, p, start);
+      if (xi && outsideReference(cell.type, *xi) <= kInside) {
+        guess = *xi;
+        return true;
+      }
+      if (start == centre) break;
+    }
+    return false;
+  };
+  bool wasInside = inside(samples.front());
+  double previous = samples.front(), open = previous;
+  for (std::size_t k = 1; k < samples.size(); ++k) {
+    const double t = samples[k];
+    const bool isInside = inside(t);
+    if (isInside != wasInside) {
+      double lo = previous, hi = t;  // lo on the earlier sample's side
+      for (int i = 0; i < 80; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;  // to rounding
+        (inside(mid) == wasInside ? lo : hi) = mid;
+      }
+      const double crossing = 0.5 * (lo + hi);
+      if (isInside) open = crossing;
+      else if (crossing > open) out.push_back({open, crossing, cell.id});
+    }
+    wasInside = isInside;
+    previous = t;
+  }
+  if (wasInside && previous > open) out.push_back({open, previous, cell.id});
+}
+
+}  // namespace volpost::optics
