@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace volpost::optics {
@@ -16,6 +17,28 @@ namespace {
 // A point counts as inside the cell this close to the reference cell (natural units): the
 // ends of a stretch are where this changes, found to rounding by bisection.
 constexpr double kInside = 1e-12;
+// Samples nearer than this to the reference cell (natural units) without entering it are
+// searched between for a point inside.
+constexpr double kGrazing = 0.25;
+
+// How far natural coordinates lie outside the reference cell: negative inside, the least
+// margin to its faces (outsideReference without the floor at 0).
+double signedOutside(CellType type, const glm::dvec3& x) {
+  switch (type) {
+    case CellType::Tet4:
+    case CellType::Tet10:
+      return std::max({-x.x, -x.y, -x.z, x.x + x.y + x.z - 1.0});
+    case CellType::Hex8:
+    case CellType::Hex20:
+      return std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}) - 1.0;
+    case CellType::Wedge6:
+    case CellType::Wedge15:
+      return std::max({-x.x, -x.y, x.x + x.y - 1.0, std::abs(x.z) - 1.0});
+    case CellType::Pyramid5:
+      return std::max({-x.x, x.x - 1.0, -x.y, x.y - 1.0, -x.z, x.z - 1.0});
+  }
+  return 0.0;
+}
 
 double cellSize(std::span<const glm::dvec3> nodes) {
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
@@ -102,40 +125,70 @@ void CurvedCells::stretchesIn(const Cell& cell, const glm::dvec3& o, const glm::
   const std::span<const glm::dvec3> nodes(nodes_.data() + cell.firstNode, std::size_t(cell.nodeCount));
   const glm::dvec3 centre = referenceCentre(cell.type);
   glm::dvec3 guess = centre;  // natural coordinates of the last point found inside
-  // Newton's method from the last point inside, and where that says outside (it may have
-  // run to another preimage of the map's extension beyond the cell), from the centre too.
-  const auto inside = [&](double t) {
+  // How far outside the reference cell the point at t lies (negative inside; +inf where no
+  // natural coordinates are found): Newton's method from the last point inside, and where
+  // that says outside (it may have run to another preimage of the map's extension beyond
+  // the cell), from the centre too.
+  const auto outside = [&](double t) {
     const glm::dvec3 p = o + t * d;
+    double best = std::numeric_limits<double>::infinity();
     for (const glm::dvec3& start : {guess, centre}) {
       const std::optional<glm::dvec3> xi = naturalCoordinates(cell.type, nodes, p, start);
-      if (xi && outsideReference(cell.type, *xi) <= kInside) {
+      if (xi) best = std::min(best, signedOutside(cell.type, *xi));
+      if (best <= kInside) {
         guess = *xi;
-        return true;
+        break;
       }
       if (start == centre) break;
     }
-    return false;
+    return best;
   };
-  bool wasInside = inside(samples.front());
-  double previous = samples.front(), open = previous;
-  for (std::size_t k = 1; k < samples.size(); ++k) {
-    const double t = samples[k];
-    const bool isInside = inside(t);
+  std::vector<double> ts = samples, h(ts.size());
+  for (std::size_t k = 0; k < ts.size(); ++k) h[k] = outside(ts[k]);
+  // A ray grazing the cell (its corner, or a bulge beyond the split) may be inside only
+  // between two samples: where the samples come nearest without entering, the nearest point
+  // between the neighbours is searched (golden section), and a point found inside is added.
+  const std::size_t n = ts.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool nearest =
+        h[k] > kInside && h[k] < kGrazing && (k == 0 || h[k - 1] >= h[k]) && (k + 1 == n || h[k + 1] >= h[k]);
+    if (!nearest) continue;
+    double a = ts[k == 0 ? 0 : k - 1], b = ts[k + 1 == n ? k : k + 1];
+    constexpr double g = 0.6180339887498949;
+    double c = b - g * (b - a), e = a + g * (b - a), hc = outside(c), he = outside(e);
+    for (int i = 0; i < 40 && std::min(hc, he) > kInside; ++i) {
+      if (hc < he) b = e, e = c, he = hc, c = b - g * (b - a), hc = outside(c);
+      else a = c, c = e, hc = he, e = a + g * (b - a), he = outside(e);
+    }
+    if (std::min(hc, he) <= kInside) ts.push_back(hc <= kInside ? c : e), h.push_back(kInside);
+  }
+  if (ts.size() > n) {  // back in order along the ray
+    std::vector<std::size_t> order(ts.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return ts[x] < ts[y]; });
+    std::vector<double> sortedT, sortedH;
+    for (std::size_t k : order) sortedT.push_back(ts[k]), sortedH.push_back(h[k]);
+    ts.swap(sortedT), h.swap(sortedH);
+  }
+  // Between two samples that disagree, the end by bisection to rounding.
+  bool wasInside = h[0] <= kInside;
+  double open = ts[0];
+  for (std::size_t k = 1; k < ts.size(); ++k) {
+    const bool isInside = h[k] <= kInside;
     if (isInside != wasInside) {
-      double lo = previous, hi = t;  // lo on the earlier sample's side
+      double lo = ts[k - 1], hi = ts[k];  // lo on the earlier sample's side
       for (int i = 0; i < 80; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;  // to rounding
-        (inside(mid) == wasInside ? lo : hi) = mid;
+        ((outside(mid) <= kInside) == wasInside ? lo : hi) = mid;
       }
       const double crossing = 0.5 * (lo + hi);
       if (isInside) open = crossing;
       else if (crossing > open) out.push_back({open, crossing, cell.id});
     }
     wasInside = isInside;
-    previous = t;
   }
-  if (wasInside && previous > open) out.push_back({open, previous, cell.id});
+  if (wasInside && ts.back() > open) out.push_back({open, ts.back(), cell.id});
 }
 
 }  // namespace volpost::optics

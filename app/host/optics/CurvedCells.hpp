@@ -50,7 +50,7 @@ class CurvedCells {
   /// Even samples along a cell's part of a ray between which the ends are searched (with
   /// the seeds): a stretch between two of them that no seed falls in (a ray grazing a bulge
   /// beyond the split) can be missed.
-  static constexpr int kSamples = 96;
+  static constexpr int kSamples = 32;
 
  private:
   struct Cell {

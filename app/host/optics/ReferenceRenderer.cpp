@@ -83,15 +83,32 @@ std::vector<Interval> rayIntervals(const TetVolume& volume, const LocalRay& r, c
   for (const Interval& i : aside) seeds.insert(seeds.end(), {i.t0, 0.5 * (i.t0 + i.t1), i.t1});
   std::vector<CellStretch> stretches;
   curved->stretches(r.o, r.d, r.tMin, r.tMax, seeds, stretches);
-  for (CellStretch& c : stretches) {
-    bool kept = true;
-    for (const ClipPlane& p : settings.clipPlanes) {
-      const glm::dvec3 point = p.point - volume.origin();
-      kept = kept && clipHalfSpace(glm::dot(p.normal, r.o - point), glm::dot(p.normal, r.d), true, c.t0, c.t1);
+  const auto add = [&](std::vector<CellStretch>& found) {
+    for (CellStretch& c : found) {
+      bool kept = true;
+      for (const ClipPlane& p : settings.clipPlanes) {
+        const glm::dvec3 point = p.point - volume.origin();
+        kept = kept && clipHalfSpace(glm::dot(p.normal, r.o - point), glm::dot(p.normal, r.d), true, c.t0, c.t1);
+      }
+      if (kept) list.push_back({c.t0, c.t1, kOwnShape, c.cell});
     }
-    if (kept) list.push_back({c.t0, c.t1, kOwnShape, c.cell});
+    found.clear();
+    std::sort(list.begin(), list.end());
+  };
+  add(stretches);
+  // Cells tile the model: a gap between two parts of the ray may hide a stretch too short
+  // for the samples (a ray cutting a cell's corner). Each gap is searched again, sampled
+  // finely within it, until none gives more (a gap across a hollow gives nothing).
+  for (int pass = 0; pass < 4; ++pass) {
+    std::size_t before = list.size();
+    for (std::size_t k = 0; k + 1 < before; ++k) {
+      const double from = list[k].t1, to = list[k + 1].t0;
+      if (to - from > 1e-9 * (std::abs(from) + std::abs(to) + (list[k].t1 - list[k].t0)))
+        curved->stretches(r.o, r.d, from, to, {}, stretches);
+    }
+    if (stretches.empty()) break;
+    add(stretches);
   }
-  std::sort(list.begin(), list.end());
   return list;
 }
 
