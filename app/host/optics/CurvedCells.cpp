@@ -19,7 +19,7 @@ namespace {
 constexpr double kInside = 1e-12;
 // Samples nearer than this to the reference cell (natural units) without entering it are
 // searched between for a point inside.
-constexpr double kGrazing = 0.25;
+constexpr double kGrazing = 0.15;
 
 // How far natural coordinates lie outside the reference cell: negative inside, the least
 // margin to its faces (outsideReference without the floor at 0).
@@ -40,6 +40,12 @@ double signedOutside(CellType type, const glm::dvec3& x) {
   return 0.0;
 }
 
+// A midside node this near the middle of its edge, or a quadrilateral's corners this near
+// one plane, in parts of the cell's size, count as straight: files that print six digits
+// leave straight cells' midside nodes about 1e-5 off (a CalculiX .frd), and the sliver
+// between such a face and the split's facets is thinner than this.
+constexpr double kStraight = 1e-4;
+
 double cellSize(std::span<const glm::dvec3> nodes) {
   glm::dvec3 lo(INFINITY), hi(-INFINITY);
   for (const glm::dvec3& x : nodes) lo = glm::min(lo, x), hi = glm::max(hi, x);
@@ -47,7 +53,7 @@ double cellSize(std::span<const glm::dvec3> nodes) {
 }
 
 // A box holding the whole cell: the map sampled over the reference cell (corners, edges,
-// faces and inside, 9 points along each natural axis), widened by a fifth of its size on
+// faces and inside, 9 points along each natural axis), widened by a twentieth of its size on
 // every side (a quadratic surface strays from the samples by far less), since a box that
 // misses part of the cell would lose that part.
 BoxTree::Box boxOf(CellType type, std::span<const glm::dvec3> nodes) {
@@ -65,7 +71,7 @@ BoxTree::Box boxOf(CellType type, std::span<const glm::dvec3> nodes) {
         const glm::dvec3 x = positionAt(type, nodes, xi);
         lo = glm::min(lo, x), hi = glm::max(hi, x);
       }
-  const glm::dvec3 pad = 0.2 * (hi - lo) + glm::dvec3(1e-12 * glm::length(hi - lo) + 1e-300);
+  const glm::dvec3 pad = 0.05 * (hi - lo) + glm::dvec3(1e-12 * glm::length(hi - lo) + 1e-300);
   return {lo - pad, hi + pad};
 }
 
@@ -77,12 +83,12 @@ bool splitFollowsCell(CellType type, std::span<const glm::dvec3> nodes) {
   const double size = cellSize(nodes);
   for (const CellEdge& e : topo.edges)
     if (e.mid >= 0 && glm::length(nodes[std::size_t(e.mid)] -
-                                  0.5 * (nodes[std::size_t(e.a)] + nodes[std::size_t(e.b)])) > 1e-9 * size)
+                                  0.5 * (nodes[std::size_t(e.a)] + nodes[std::size_t(e.b)])) > kStraight * size)
       return false;
   for (const CellFace& f : topo.faces) {
     if (f.size != 4) continue;
     const glm::dvec3 a = nodes[f.corners[0]], b = nodes[f.corners[1]], c = nodes[f.corners[2]], d = nodes[f.corners[3]];
-    if (std::abs(glm::dot(b - a, glm::cross(c - a, d - a))) > 1e-9 * size * size * size) return false;
+    if (std::abs(glm::dot(b - a, glm::cross(c - a, d - a))) > kStraight * size * size * size) return false;
   }
   return true;
 }
