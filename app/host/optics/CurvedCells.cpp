@@ -21,37 +21,6 @@ constexpr double kInside = 1e-12;
 // searched between for a point inside.
 constexpr double kGrazing = 0.15;
 
-// How far natural coordinates lie outside the reference cell: negative inside, the least
-// margin to its faces (outsideReference without the floor at 0).
-double signedOutside(CellType type, const glm::dvec3& x) {
-  switch (type) {
-    case CellType::Tet4:
-    case CellType::Tet10:
-      return std::max({-x.x, -x.y, -x.z, x.x + x.y + x.z - 1.0});
-    case CellType::Hex8:
-    case CellType::Hex20:
-      return std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}) - 1.0;
-    case CellType::Wedge6:
-    case CellType::Wedge15:
-      return std::max({-x.x, -x.y, x.x + x.y - 1.0, std::abs(x.z) - 1.0});
-    case CellType::Pyramid5:
-      return std::max({-x.x, x.x - 1.0, -x.y, x.y - 1.0, -x.z, x.z - 1.0});
-  }
-  return 0.0;
-}
-
-// A midside node this near the middle of its edge, or a quadrilateral's corners this near
-// one plane, in parts of the cell's size, count as straight: files that print six digits
-// leave straight cells' midside nodes about 1e-5 off (a CalculiX .frd), and the sliver
-// between such a face and the split's facets is thinner than this.
-constexpr double kStraight = 1e-4;
-
-double cellSize(std::span<const glm::dvec3> nodes) {
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (const glm::dvec3& x : nodes) lo = glm::min(lo, x), hi = glm::max(hi, x);
-  return glm::length(hi - lo);
-}
-
 // A box holding the whole cell: the map sampled over the reference cell (corners, edges,
 // faces and inside, 9 points along each natural axis), widened by a twentieth of its size on
 // every side (a quadratic surface strays from the samples by far less), since a box that
@@ -77,22 +46,6 @@ BoxTree::Box boxOf(CellType type, std::span<const glm::dvec3> nodes) {
 
 }  // namespace
 
-bool splitFollowsCell(CellType type, std::span<const glm::dvec3> nodes) {
-  const CellTopology& topo = topology(type);
-  if (int(nodes.size()) != topo.nodeCount) return false;
-  const double size = cellSize(nodes);
-  for (const CellEdge& e : topo.edges)
-    if (e.mid >= 0 && glm::length(nodes[std::size_t(e.mid)] -
-                                  0.5 * (nodes[std::size_t(e.a)] + nodes[std::size_t(e.b)])) > kStraight * size)
-      return false;
-  for (const CellFace& f : topo.faces) {
-    if (f.size != 4) continue;
-    const glm::dvec3 a = nodes[f.corners[0]], b = nodes[f.corners[1]], c = nodes[f.corners[2]], d = nodes[f.corners[3]];
-    if (std::abs(glm::dot(b - a, glm::cross(c - a, d - a))) > kStraight * size * size * size) return false;
-  }
-  return true;
-}
-
 CurvedCells::CurvedCells(const ElementField& field) {
   const Mesh& mesh = field.mesh();
   isCurved_.assign(mesh.cellCount(), false);
@@ -102,7 +55,7 @@ CurvedCells::CurvedCells(const ElementField& field) {
     const CellType type = mesh.cellType(c);
     at.clear();
     for (NodeIndex n : mesh.cellNodes(c)) at.push_back(mesh.nodes[n] - field.origin());
-    if (splitFollowsCell(type, at)) continue;
+    if (!(field.bend(std::uint32_t(c)) > 0.0)) continue;
     isCurved_[c] = true;
     cells_.push_back({std::uint32_t(c), type, std::uint32_t(nodes_.size()), int(at.size())});
     nodes_.insert(nodes_.end(), at.begin(), at.end());
@@ -140,7 +93,7 @@ void CurvedCells::stretchesIn(const Cell& cell, const glm::dvec3& o, const glm::
     double best = std::numeric_limits<double>::infinity();
     for (const glm::dvec3& start : {guess, centre}) {
       const std::optional<glm::dvec3> xi = naturalCoordinates(cell.type, nodes, p, start);
-      if (xi) best = std::min(best, signedOutside(cell.type, *xi));
+      if (xi) best = std::min(best, signedOutsideReference(cell.type, *xi));
       if (best <= kInside) {
         guess = *xi;
         break;

@@ -20,11 +20,6 @@
 
 namespace volpost::optics {
 
-/// Whether every face of the cell is flat and every edge straight, as its split draws it:
-/// the corners of each quadrilateral face in one plane and each midside node at the middle
-/// of its edge, within 1e-4 of the cell's size (six printed digits leave straight cells 1e-5 off).
-bool splitFollowsCell(CellType type, std::span<const glm::dvec3> nodes);
-
 /// A ray's stretch [t0, t1] inside one cell.
 struct CellStretch {
   double t0, t1;
@@ -33,8 +28,8 @@ struct CellStretch {
 
 class CurvedCells {
  public:
-  /// The field's cells drawn through their own shape functions (field.linearIn false) whose
-  /// split does not follow them. Positions relative to the field's origin, as its rays.
+  /// The field's cells drawn through their own shape functions that bend away from their
+  /// split's facets (ElementField::bend). Positions relative to the field's origin, as its rays.
   explicit CurvedCells(const ElementField& field);
 
   bool empty() const { return cells_.empty(); }

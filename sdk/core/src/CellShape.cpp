@@ -156,6 +156,44 @@ double outsideReference(CellType type, const glm::dvec3& x) {
   return 0.0;
 }
 
+double signedOutsideReference(CellType type, const glm::dvec3& x) {
+  switch (type) {
+    case CellType::Tet4:
+    case CellType::Tet10:
+      return std::max({-x.x, -x.y, -x.z, x.x + x.y + x.z - 1.0});
+    case CellType::Hex8:
+    case CellType::Hex20:
+      return std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}) - 1.0;
+    case CellType::Wedge6:
+    case CellType::Wedge15:
+      return std::max({-x.x, -x.y, x.x + x.y - 1.0, std::abs(x.z) - 1.0});
+    case CellType::Pyramid5:
+      return std::max({-x.x, x.x - 1.0, -x.y, x.y - 1.0, -x.z, x.z - 1.0});
+  }
+  return 0.0;
+}
+
+double faceBend(CellType type, std::span<const glm::dvec3> nodes) {
+  const CellTopology& topo = topology(type);
+  if (int(nodes.size()) != topo.nodeCount) return 0.0;
+  double bend = 0.0;
+  for (const CellEdge& e : topo.edges)
+    if (e.mid >= 0)
+      bend = std::max(
+          bend, glm::length(nodes[std::size_t(e.mid)] - 0.5 * (nodes[std::size_t(e.a)] + nodes[std::size_t(e.b)])));
+  for (const CellFace& f : topo.faces) {
+    if (f.size != 4) continue;
+    for (int k = 0; k < 4; ++k) {  // each corner against the plane of the other three
+      const glm::dvec3 p = nodes[f.corners[k]], a = nodes[f.corners[(k + 1) % 4]], b = nodes[f.corners[(k + 2) % 4]],
+                       c = nodes[f.corners[(k + 3) % 4]];
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      const double area = glm::length(n);
+      if (area > 0.0) bend = std::max(bend, std::abs(glm::dot(p - a, n)) / area);
+    }
+  }
+  return bend;
+}
+
 glm::dvec3 clampToReference(CellType type, const glm::dvec3& xi) {
   glm::dvec3 x = xi;
   const auto ontoSimplex = [](double* c, int n) {  // c >= 0, sum <= 1

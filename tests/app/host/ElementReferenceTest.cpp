@@ -461,18 +461,22 @@ TEST(ElementReference, CurvedHex20CellsAreDrawnToTheirOwnCurvedFacesNotTheSplits
   EXPECT_EQ(both.field().fallbacks(), 0u);
 }
 
-// A cell whose split draws it as it is: flat faces and midside nodes at the middles.
-TEST(ElementReference, OnlyCellsTheSplitDoesNotFollowAreCurved) {
-  const Mesh straight = boxOfHexes(CellType::Hex20, glm::dvec3(0.0), glm::dvec3(1.0), 1);
-  std::vector<glm::dvec3> nodes = straight.nodes;
-  EXPECT_TRUE(splitFollowsCell(CellType::Hex20, nodes));
-  nodes[8].z += 1e-5;  // as six printed digits leave it: still straight
-  EXPECT_TRUE(splitFollowsCell(CellType::Hex20, nodes));
-  nodes[8].z += 0.01;  // a midside node off its edge
-  EXPECT_FALSE(splitFollowsCell(CellType::Hex20, nodes));
-  const Mesh hex8 = boxOfHexes(CellType::Hex8, glm::dvec3(0.0), glm::dvec3(1.0), 1);
-  nodes = hex8.nodes;
-  EXPECT_TRUE(splitFollowsCell(CellType::Hex8, nodes));
-  nodes[6].z += 0.05;  // one corner out of its faces' planes: warped faces
-  EXPECT_FALSE(splitFollowsCell(CellType::Hex8, nodes));
+// A cell whose split draws it as it is (flat faces, midside nodes at the middles) does not
+// bend; one whose midside node leaves its edge, or whose quadrilateral face warps, does.
+TEST(ElementReference, OnlyCellsTheSplitDoesNotFollowBend) {
+  const auto bendOf = [](Mesh mesh) {
+    const TetMesh tets = tetrahedralize(mesh);
+    const std::vector<double> values(mesh.nodes.size(), 1.0);
+    return ElementField(mesh, values, tets, glm::dvec3(0.0)).bend(0);
+  };
+  Mesh hex20 = boxOfHexes(CellType::Hex20, glm::dvec3(0.0), glm::dvec3(1.0), 1);
+  EXPECT_EQ(bendOf(hex20), 0.0);
+  hex20.nodes[8].z += 1e-5;  // as six printed digits leave it: still straight
+  EXPECT_EQ(bendOf(hex20), 0.0);
+  hex20.nodes[8].z += 0.01;                   // a midside node off its edge
+  EXPECT_NEAR(bendOf(hex20), 0.01001, 1e-8);  // kept as a float
+  Mesh hex8 = boxOfHexes(CellType::Hex8, glm::dvec3(0.0), glm::dvec3(1.0), 1);
+  EXPECT_EQ(bendOf(hex8), 0.0);
+  hex8.nodes[6].z += 0.05;  // one corner out of its faces' planes: warped faces
+  EXPECT_GT(bendOf(hex8), 0.01);
 }

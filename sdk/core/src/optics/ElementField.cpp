@@ -59,6 +59,11 @@ const CentreShape& centreShape(CellType type) {
   return all[std::size_t(type)];
 }
 
+// A cell whose faces leave its split's facets by less than this part of its size is drawn
+// by them: files that print six digits (a CalculiX .frd) leave straight cells' midside
+// nodes about 1e-5 off.
+constexpr double kStraightBend = 1e-4;
+
 }  // namespace
 
 ElementField::ElementField(const Mesh& mesh, std::span<const double> values, const TetMesh& tets, glm::dvec3 origin)
@@ -89,6 +94,14 @@ ElementField::ElementField(const Mesh& mesh, std::span<const double> values, con
     const std::span<const glm::dvec3> at(nodes, std::size_t(count));
     if (mapInvertible(type, at)) elementCells_[c] = affineMap(type, at) ? kAffine : 1;
     else uninvertible_.push_back(std::uint32_t(c));
+    if (!elementCells_[c]) continue;
+    glm::dvec3 cellLow(INFINITY), cellHigh(-INFINITY);
+    for (const glm::dvec3& p : at) cellLow = glm::min(cellLow, p), cellHigh = glm::max(cellHigh, p);
+    const double bend = faceBend(type, at);
+    if (bend > kStraightBend * glm::length(cellHigh - cellLow)) {
+      if (bends_.empty()) bends_.assign(mesh.cellCount(), 0.0f);
+      bends_[c] = float(bend);
+    }
   }
 }
 

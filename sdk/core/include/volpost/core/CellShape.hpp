@@ -37,6 +37,15 @@ glm::dvec3 referenceCentre(CellType type);
 /// How far `xi` lies outside the reference cell, in natural units (0 inside or on it).
 double outsideReference(CellType type, const glm::dvec3& xi);
 
+/// How far `xi` lies outside the reference cell, negative inside: the least margin to its
+/// faces (outsideReference without its floor at 0), smooth across each face.
+double signedOutsideReference(CellType type, const glm::dvec3& xi);
+
+/// How far the cell's faces leave the flat facets of its split: the largest distance of a
+/// midside node from its edge's middle and of a quadrilateral face's corner from the plane
+/// of its other three (0 for a cell with straight edges and flat faces).
+double faceBend(CellType type, std::span<const glm::dvec3> nodes);
+
 /// A point of the reference cell near `xi` (xi itself when inside): each coordinate clamped
 /// to the cell's range, a simplex part scaled back onto its slanted face.
 glm::dvec3 clampToReference(CellType type, const glm::dvec3& xi);

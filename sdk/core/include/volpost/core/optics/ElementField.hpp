@@ -38,6 +38,11 @@ class ElementField {
   /// Where the split's linear field is the whole story: a tet4, or a cell whose map cannot
   /// be inverted (folded, inverted, collapsed: drawn by its split and listed).
   bool linearIn(std::uint32_t cell) const { return !elementCells_[cell]; }
+  /// How far a cell drawn by its own field bends away from its split's flat facets (the
+  /// largest midside node's distance from its edge's middle, a quadrilateral's corner's from
+  /// its face's plane); 0 where that is within 1e-4 of the cell's size (six printed digits
+  /// leave straight cells 1e-5 off) or the cell is drawn by its split.
+  double bend(std::uint32_t cell) const { return bends_.empty() ? 0.0 : double(bends_[cell]); }
   /// The cells whose map cannot be inverted, ascending.
   const std::vector<std::uint32_t>& uninvertibleCells() const { return uninvertible_; }
   /// The values' range (what tolerances are relative to; 1 when they are all equal).
@@ -94,6 +99,7 @@ class ElementField {
   static constexpr char kAffine = 2;  ///< in elementCells_: drawn by its own field, map affine
   std::vector<char> elementCells_;    ///< per cell: 0 the split's field, 1 its own, kAffine its own (affine map)
   std::vector<std::uint32_t> uninvertible_;
+  std::vector<float> bends_;  ///< per cell (empty when no cell bends)
   double scale_ = 1.0;
   double diagonal_ = 0.0;
   mutable std::atomic<std::size_t> fallbacks_{0};
