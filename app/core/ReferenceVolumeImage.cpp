@@ -3,6 +3,12 @@
 
 #include "host/optics/GridReference.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,8 +17,29 @@
 namespace volpost::app {
 
 // Cells whose map cannot be inverted are drawn by their split, and the user is told which.
-std::vector<std::string> elementFieldNotes(const optics::ElementField& field, const Mesh& mesh) {
+std::vector<std::string> elementFieldNotes(const optics::ElementField& field, const Mesh& mesh, BentCells bent) {
   std::vector<std::string> notes;
+  std::size_t bentCount = 0;
+  double most = 0.0;  // the largest bend, in parts of its cell's size
+  for (std::uint32_t c = 0; c < mesh.cellCount(); ++c) {
+    if (!(field.bend(c) > 0.0)) continue;
+    ++bentCount;
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (NodeIndex n : mesh.cellNodes(c)) lo = glm::min(lo, mesh.nodes[n]), hi = glm::max(hi, mesh.nodes[n]);
+    most = std::max(most, field.bend(c) / glm::length(hi - lo));
+  }
+  if (bentCount > 0) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.2g%%", 100.0 * most);
+    const bool one = bentCount == 1;
+    notes.push_back(std::to_string(bentCount) + (one ? " cell bends" : " cells bend") +
+                    " away from the flat faces of " + (one ? "its" : "their") + " tetrahedra (by up to " + share +
+                    " of a cell): " +
+                    (bent == BentCells::Followed
+                         ? std::string("drawn to ") + (one ? "its" : "their") + " own curved faces"
+                         : std::string("this renderer draws the field within the tetrahedra's flat faces; the "
+                                       "reference renderer and the GPU renderers follow the curved faces")));
+  }
   const auto& cells = field.uninvertibleCells();
   if (!cells.empty()) {
     std::string ids;

@@ -50,7 +50,7 @@ SceneImage drawSceneImage(Scene& scene, int width, int height, bool overlay) {
     out.isoSurfaceCorners = drawing.isoSurfaceCorners();
     out.curvedBoundaryCorners = drawing.curvedBoundaryCorners();
     if (const optics::ElementField* field = drawing.elementField())
-      out.notes = elementFieldNotes(*field, scene.session()->model().mesh());
+      out.notes = elementFieldNotes(*field, scene.session()->model().mesh(), BentCells::Flat);  // the CPU ray caster
     for (std::string& note : drawing.refinedVolumeNotes()) out.notes.push_back(std::move(note));
   }
   out.picture = QImage(width, height, QImage::Format_RGBA8888);

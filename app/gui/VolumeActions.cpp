@@ -122,13 +122,15 @@ void VolumeActions::drawCellsOwnField(bool on) {
                            "of the node values"
                          : "The volume, sections, iso-surfaces and streamlines show the field linear on the "
                            "tetrahedra the cells are split into";
-    if (on && traits && scene_.session() && scene_.view() &&
-        drawsCellsFieldOnPieces(*traits, FieldInterpolation::Element, scene_.view()->location,
-                                scene_.session()->model()))
+    const bool pieces = traits && scene_.session() && scene_.view() &&
+                        drawsCellsFieldOnPieces(*traits, FieldInterpolation::Element, scene_.view()->location,
+                                                scene_.session()->model());
+    if (on && pieces)
       message += QString("; %1 draws it on tetrahedra refined to the tolerance")
                      .arg(QString::fromStdString(traits->label.empty() ? renderer : traits->label));
     if (on)
-      for (const std::string& note : cellsDrawnBySplit()) message += "; " + QString::fromStdString(note);
+      for (const std::string& note : cellsDrawnBySplit(pieces ? BentCells::Followed : BentCells::Flat))
+        message += "; " + QString::fromStdString(note);
     window_.statusBar()->showMessage(message);
   }
   syncToScene();
@@ -169,14 +171,14 @@ void VolumeActions::askElementTolerance() {
   if (ok) setElementTolerance(tolerance);
 }
 
-std::vector<std::string> VolumeActions::cellsDrawnBySplit() const {
+std::vector<std::string> VolumeActions::cellsDrawnBySplit(BentCells bent) const {
   const ModelSession* session = scene_.session();
   const std::optional<ScalarView>& view = scene_.view();
   if (!session || !view || view->location != FieldLocation::Node || session->model().grid) return {};
   std::vector<double> converted;
   const TetMesh& split = session->tetrahedra();
   const optics::ElementField field(session->model().mesh(), view->values.doubles(converted), split, glm::dvec3(0.0));
-  return elementFieldNotes(field, session->model().mesh());
+  return elementFieldNotes(field, session->model().mesh(), bent);
 }
 
 void VolumeActions::show(bool on) {

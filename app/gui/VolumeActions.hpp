@@ -4,6 +4,7 @@
 // (grids)... and Use the 1D Transfer Function. The scene is the one record of them; the entries show it.
 #pragma once
 
+#include "../core/ReferenceVolumeImage.hpp"
 #include "ChangeScene.hpp"
 
 #include <volpost/core/TransferFunction2D.hpp>
@@ -73,7 +74,7 @@ class VolumeActions : public QObject {
   void drawCellsOwnField(bool on);
   /// What the user should know of the cells' own field on this model: the cells drawn by
   /// their split (folded, inverted or collapsed), named.
-  std::vector<std::string> cellsDrawnBySplit() const;
+  std::vector<std::string> cellsDrawnBySplit(BentCells bent) const;
 };
 
 }  // namespace volpost::app

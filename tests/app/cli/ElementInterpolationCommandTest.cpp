@@ -21,9 +21,10 @@ using volpost::test::runVolpost;
 namespace {
 
 // A legacy VTK file of n^3 hex8 cells on [0,1]^3 with the point field T = f(x, y, z);
-// `moveFirstCorner` pulls cell 0's corner at the origin through the cell (the map folds).
+// `moveFirstCorner` pulls cell 0's corner at the origin through the cell (the map folds);
+// `liftFirstCorner` raises it out of its faces' planes (the cell's faces warp).
 std::string writeHexBlock(const std::string& path, int n, const std::function<double(double, double, double)>& f,
-                          bool moveFirstCorner = false) {
+                          bool moveFirstCorner = false, double liftFirstCorner = 0.0) {
   const int m = n + 1;
   std::ostringstream points, values, cells;
   for (int k = 0; k < m; ++k)
@@ -31,7 +32,8 @@ std::string writeHexBlock(const std::string& path, int n, const std::function<do
       for (int i = 0; i < m; ++i) {
         const double x = double(i) / n, y = double(j) / n, z = double(k) / n;
         const bool moved = moveFirstCorner && i == 0 && j == 0 && k == 0;
-        points << (moved ? 0.9 : x) << ' ' << (moved ? 0.4 : y) << ' ' << (moved ? 0.45 : z) << '\n';
+        const double lift = i == 0 && j == 0 && k == 0 ? liftFirstCorner : 0.0;
+        points << (moved ? 0.9 : x) << ' ' << (moved ? 0.4 : y) << ' ' << (moved ? 0.45 : z + lift) << '\n';
         values << f(x, y, z) << '\n';
       }
   const auto id = [m](int i, int j, int k) { return (k * m + j) * m + i; };
@@ -109,6 +111,33 @@ TEST(ElementInterpolationCommand, AFoldedCellIsDrawnLinearAndNamed) {
                           "tetrahedra; cell id 1"),
             std::string::npos)
       << r.output;
+}
+
+// A cell whose faces warp away from its tetrahedra's flat faces: the reference follows its
+// own faces and says so; the CPU ray caster says it draws the field within the flat faces.
+TEST(ElementInterpolationCommand, EachRendererSaysHowItDrawsCellsThatBendFromTheirSplit) {
+  const std::string dir = ::testing::TempDir();
+  const std::string model = writeHexBlock(
+      dir + "/hex_warped.vtk", 2, [](double x, double y, double z) { return x + y * z; }, false, 0.1);
+  const std::string common = "render " + model + " --field T --size 32x24 --interpolation element -o " + dir + "/w.png";
+  const auto reference = runVolpost(common + " --renderer reference");
+  ASSERT_EQ(reference.exitCode, 0) << reference.output;
+  EXPECT_NE(reference.output.find("note: 1 cell bends away from the flat faces of its tetrahedra (by up to 12% of a "
+                                  "cell): drawn to its own curved faces"),
+            std::string::npos)
+      << reference.output;
+  const auto cpu = runVolpost(common + " --renderer cpu");
+  ASSERT_EQ(cpu.exitCode, 0) << cpu.output;
+  EXPECT_NE(cpu.output.find("note: 1 cell bends away from the flat faces of its tetrahedra (by up to 12% of a cell): "
+                            "this renderer draws the field within the tetrahedra's flat faces; the reference renderer "
+                            "and the GPU renderers follow the curved faces"),
+            std::string::npos)
+      << cpu.output;
+  const auto straight = runVolpost(
+      "render " + writeHexBlock(dir + "/hex_straight.vtk", 2, [](double x, double y, double z) { return x + y * z; }) +
+      " --field T --size 32x24 --interpolation element --renderer reference -o " + dir + "/s.png");
+  ASSERT_EQ(straight.exitCode, 0) << straight.output;
+  EXPECT_EQ(straight.output.find("bends away"), std::string::npos) << straight.output;
 }
 
 // Renderers that draw tetrahedra only (the GPU ray caster, cell projection) are given the

@@ -250,8 +250,12 @@ TEST(SceneDrawing, TheGpuRayCasterDrawsTheCellsOwnFieldOnRefinedPiecesMadeOffThe
   scene.setInterpolation(FieldInterpolation::Element);
   const auto own = draw(synchronous, scene, target);
   ASSERT_NE(own, split) << "the cells' own field is another picture";
-  ASSERT_EQ(synchronous.refinedVolumeNotes().size(), 1u);
+  ASSERT_EQ(synchronous.refinedVolumeNotes().size(), 2u);
   EXPECT_NE(synchronous.refinedVolumeNotes()[0].find("the cells' own field drawn on"), std::string::npos);
+  EXPECT_NE(synchronous.refinedVolumeNotes()[1].find("cells bend away from the flat faces of their tetrahedra"),
+            std::string::npos)
+      << "the annulus' cells are curved: the pieces follow their faces";
+  EXPECT_NE(synchronous.refinedVolumeNotes()[1].find("drawn to their own curved faces"), std::string::npos);
 
   scene.setInterpolation(FieldInterpolation::Tetrahedra);
   SceneDrawing window;
