@@ -46,17 +46,14 @@ BoxTree::Box boxOf(CellType type, std::span<const glm::dvec3> nodes) {
 
 }  // namespace
 
-CurvedCells::CurvedCells(const ElementField& field) {
+CurvedCells::CurvedCells(const ElementField& field) : field_(field) {
   const Mesh& mesh = field.mesh();
-  isCurved_.assign(mesh.cellCount(), false);
   std::vector<glm::dvec3> at;
   for (std::size_t c = 0; c < mesh.cellCount(); ++c) {
-    if (field.linearIn(std::uint32_t(c))) continue;
+    if (!curved(std::uint32_t(c))) continue;  // bend() is 0 for cells drawn by their split
     const CellType type = mesh.cellType(c);
     at.clear();
     for (NodeIndex n : mesh.cellNodes(c)) at.push_back(mesh.nodes[n] - field.origin());
-    if (!(field.bend(std::uint32_t(c)) > 0.0)) continue;
-    isCurved_[c] = true;
     cells_.push_back({std::uint32_t(c), type, std::uint32_t(nodes_.size()), int(at.size())});
     nodes_.insert(nodes_.end(), at.begin(), at.end());
     cellBoxes_.push_back(boxOf(type, at));

@@ -30,11 +30,11 @@ class CurvedCells {
  public:
   /// The field's cells drawn through their own shape functions that bend away from their
   /// split's facets (ElementField::bend). Positions relative to the field's origin, as its rays.
-  explicit CurvedCells(const ElementField& field);
+  explicit CurvedCells(const ElementField& field);  ///< referenced: it must outlive this
 
   bool empty() const { return cells_.empty(); }
   std::size_t count() const { return cells_.size(); }
-  bool curved(std::uint32_t cell) const { return cell < isCurved_.size() && isCurved_[cell]; }
+  bool curved(std::uint32_t cell) const { return field_.bend(cell) > 0.0; }
 
   /// The stretches of the ray o + t d (unit d) with t in [tMin, tMax] inside curved cells,
   /// appended to `out` (unsorted). `seeds`: parameters sampled besides the even ones (where
@@ -57,9 +57,9 @@ class CurvedCells {
   void stretchesIn(const Cell& cell, const glm::dvec3& o, const glm::dvec3& d, const std::vector<double>& samples,
                    std::vector<CellStretch>& out) const;
 
+  const ElementField& field_;  ///< referenced: it must outlive this
   std::vector<Cell> cells_;
   std::vector<glm::dvec3> nodes_;        ///< the curved cells' nodes, relative to the field's origin
-  std::vector<bool> isCurved_;           ///< per mesh cell
   std::vector<BoxTree::Box> cellBoxes_;  ///< per curved cell, holding its whole shape
   BoxTree boxes_;
 };
