@@ -347,12 +347,17 @@ TEST(RefinedElementVolume, AWorkerSaysHowFarItHasGotAndGivesWayToNewerWork) {
   RefinedElementKey first;
   first.values = 1;
   EXPECT_EQ(volume.wanted(first, slow, true), nullptr);
-  for (int i = 0; i < 2000 && volume.progress().value_or(0.0) < 0.5; ++i)
+  const auto patience = std::chrono::steady_clock::now() + std::chrono::seconds(60);  // a busy machine's thread start
+  while (volume.progress().value_or(0.0) < 0.5 && std::chrono::steady_clock::now() < patience)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   EXPECT_EQ(volume.progress(), std::optional<double>(0.5));
   RefinedElementKey second = first;
   second.values = 2;
-  const auto quick = [](const Progress&) {
+  std::atomic<bool> go{false};
+  const auto quick = [&go](const Progress&) {
+    // Held until the test has seen it running: a worker that finishes at once may hand its
+    // result over on the very call that starts it.
+    for (int i = 0; i < 20000 && !go; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     RefinedElementMesh out;
     out.chosen = 2;
     return out;
@@ -360,8 +365,9 @@ TEST(RefinedElementVolume, AWorkerSaysHowFarItHasGotAndGivesWayToNewerWork) {
   const auto start = std::chrono::steady_clock::now();
   EXPECT_EQ(volume.wanted(second, quick, true), nullptr) << "the first is cancelled, the second started";
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10)) << "cancelled, not waited out";
+  go = true;
   std::shared_ptr<const RefinedElementMesh> done;
-  for (int i = 0; i < 10000 && !done; ++i) {
+  while (!done && std::chrono::steady_clock::now() < patience) {
     done = volume.wanted(second, quick, true);
     if (!done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
