@@ -42,13 +42,13 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 /// What is kept between frames: the grid in volpost's terms and its walk mesh (rebuilt when
 /// the grid, the array or the interpolation changes) and the part of it the transfer function
 /// shows (found again when that changes).
 class vtkVolpostVolumeState {
  public:
-  vtkSmartPointer<vtkUnstructuredGrid> source;
   vtkMTimeType gridTime = 0;
   std::string key;
   std::unique_ptr<volpost::Mesh> mesh;
@@ -62,6 +62,7 @@ class vtkVolpostVolumeState {
   volpost::TransferFunction tf;
   std::optional<volpost::volume::VisiblePart> visible;
   double msPerPixel = 0.0;  ///< the last picture's wall time per pixel (for interactive renders)
+  std::vector<volpost::ClipPlane> region;  ///< this rank's cuts in parallel (SetRankRegion)
 };
 
 vtkStandardNewMacro(vtkVolpostVolumeMapper);
@@ -70,9 +71,29 @@ vtkVolpostVolumeMapper::vtkVolpostVolumeMapper() : State(new vtkVolpostVolumeSta
 
 vtkVolpostVolumeMapper::~vtkVolpostVolumeMapper() { delete this->State; }
 
-void vtkVolpostVolumeMapper::SetSourceGrid(vtkUnstructuredGrid* grid) {
-  if (this->State->source == grid) return;
-  this->State->source = grid;
+void vtkVolpostVolumeMapper::SetRankRegion(const double bounds[6], int innerFaces) {
+  std::vector<volpost::ClipPlane> region;
+  for (int face = 0; face < 6; ++face) {
+    if (!(innerFaces & (1 << face))) continue;
+    const int axis = face / 2;
+    glm::dvec3 point(0.0), normal(0.0);
+    point[axis] = bounds[face];
+    normal[axis] = face % 2 == 0 ? 1.0 : -1.0;  // keeps the inside of the box
+    region.push_back({point, normal});
+  }
+  const bool same = region.size() == this->State->region.size() &&
+                    std::equal(region.begin(), region.end(), this->State->region.begin(),
+                               [](const volpost::ClipPlane& a, const volpost::ClipPlane& b) {
+                                 return a.point == b.point && a.normal == b.normal;
+                               });
+  if (same) return;
+  this->State->region = std::move(region);
+  this->Modified();
+}
+
+void vtkVolpostVolumeMapper::ClearRankRegion() {
+  if (this->State->region.empty()) return;
+  this->State->region.clear();
   this->Modified();
 }
 
@@ -213,25 +234,13 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
   }
   vtkVolpostVolumeState& s = *this->State;
   try {
-    // The grid's own cells when this is the grid the pipeline gave (same points): volpost's
-    // split of them, and their shape functions. Otherwise (pieces moved between ranks) the
-    // tetrahedra as delivered.
-    vtkUnstructuredGrid* cells = grid;
-    int sourcePerCell = perCell;
-    if (s.source && s.source->GetNumberOfPoints() == grid->GetNumberOfPoints()) {
-      if (vtkDataArray* own = this->GetScalars(s.source, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
-                                               this->ArrayName, sourcePerCell)) {
-        cells = s.source;
-        scalars = own;
-      }
-    }
     const bool element = this->Interpolation == 1;
     const std::string key = std::string(scalars->GetName() ? scalars->GetName() : "") +
-                            (sourcePerCell ? " cells" : " points") + (element ? " element" : " tets") +
-                            std::to_string(reinterpret_cast<std::uintptr_t>(cells));
-    if (!s.walk || s.gridTime != cells->GetMTime() || s.key != key) {
-      buildWalk(s, *cells, *scalars, sourcePerCell != 0, element && !sourcePerCell);
-      if (element && sourcePerCell)
+                            (perCell ? " cells" : " points") + (element ? " element" : " tets") +
+                            std::to_string(reinterpret_cast<std::uintptr_t>(grid));
+    if (!s.walk || s.gridTime != grid->GetMTime() || s.key != key) {
+      buildWalk(s, *grid, *scalars, perCell != 0, element && !perCell);
+      if (element && perCell)
         vtkWarningMacro("The cells' own field needs values at the nodes: a cell array is drawn constant per cell.");
       if (s.skippedCells > 0)
         vtkWarningMacro(<< s.skippedCells << " cells are not drawn: volpost draws tetrahedra, hexahedra, wedges, "
@@ -240,7 +249,7 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
         vtkWarningMacro(<< s.field->uninvertibleCells().size() << " cells are folded or inverted (the first is cell "
                         << s.field->uninvertibleCells().front()
                         << "): drawn by the tetrahedra of their split, not their own field.");
-      s.gridTime = cells->GetMTime();
+      s.gridTime = grid->GetMTime();
       s.key = key;
       s.visible.reset();
     }
@@ -274,6 +283,7 @@ void vtkVolpostVolumeMapper::Render(vtkRenderer* renderer, vtkVolume* volume) {
     settings.element = s.element;
     settings.elementTolerance = s.element ? this->ElementTolerance : 0.0;
     settings.clipPlanes = clipPlanesOf(this->ClippingPlanes);
+    settings.clipPlanes.insert(settings.clipPlanes.end(), s.region.begin(), s.region.end());
     const auto start = std::chrono::steady_clock::now();
     const volpost::volume::CpuImage image =
         volpost::volume::renderCpu(*s.walk, *s.visible, tf, camera, width, height, settings);

@@ -27,7 +27,8 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
 
   /// How node values vary inside a cell: 0, linear on the tetrahedra each cell is split into;
   /// 1, the cell's own shape functions (trilinear in a hex8, quadratic in a tet10 or hex20),
-  /// within ElementTolerance per channel. Needs the grid's own cells (SetSourceGrid).
+  /// within ElementTolerance per channel. Needs the grid's own cells, as the representation
+  /// delivers them (ParaView's own Volume delivers tetrahedra of its split).
   vtkSetClampMacro(Interpolation, int, 0, 1);
   vtkGetMacro(Interpolation, int);
   /// The most a pixel's channel may differ from the exact picture of the cells' own field
@@ -35,10 +36,14 @@ class VOLPOSTPARAVIEWVOLUME_EXPORT vtkVolpostVolumeMapper : public vtkUnstructur
   vtkSetClampMacro(ElementTolerance, double, 0.0, 0.1);
   vtkGetMacro(ElementTolerance, double);
 
-  /// The grid as the pipeline gave it, before ParaView split its cells into tetrahedra. When
-  /// the mapper draws that same grid (one process: the same points), it walks volpost's own
-  /// split of these cells instead of ParaView's.
-  void SetSourceGrid(vtkUnstructuredGrid* grid);
+  /// In parallel, the box of space this rank draws (ParaView's ordered compositing gives each
+  /// rank one, and its piece holds every cell that meets the box): each ray is cut exactly at
+  /// the box's faces that it shares with another rank's box, so that the ranks' pictures,
+  /// composited in view order, add up to the one-process picture. `innerFaces` has bit
+  /// 2 * axis + (0 low, 1 high) set for each such face; the others (the outside of the whole
+  /// grid) cut nothing. ClearRankRegion: one process, nothing cut.
+  void SetRankRegion(const double bounds[6], int innerFaces);
+  void ClearRankRegion();
 
   /// While the view turns (the render window's desired update rate at least this, as VTK's
   /// interactor sets it during a drag) the picture is drawn with one ray per n x n pixels,
