@@ -27,11 +27,14 @@ std::optional<double> rayHitsTriangle(const PickRay& ray, const glm::dvec3& a, c
   const double det = glm::dot(e1, p);
   if (!(std::abs(det) > 0.0)) return std::nullopt;
   const glm::dvec3 s = ray.origin - a;
+  // A ray along the side two triangles share must land on one of them: each is widened by
+  // a rounding's worth (its own rounding could leave the ray just outside both).
+  constexpr double kSide = 1e-9;
   const double u = glm::dot(s, p) / det;
-  if (u < 0.0 || u > 1.0) return std::nullopt;
+  if (u < -kSide || u > 1.0 + kSide) return std::nullopt;
   const glm::dvec3 q = glm::cross(s, e1);
   const double w = glm::dot(ray.direction, q) / det;
-  if (w < 0.0 || u + w > 1.0) return std::nullopt;
+  if (w < -kSide || u + w > 1.0 + kSide) return std::nullopt;
   const double t = glm::dot(e2, q) / det;
   return t > 0.0 ? std::optional(t) : std::nullopt;
 }
