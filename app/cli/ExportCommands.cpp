@@ -92,8 +92,8 @@ int writeBoundary(const ModelSession& session, bool ownShapes, const RefinementL
                 qPrintable(files[1]), curved.surface.mesh.n_faces());
   else
     std::printf(
-        "%s: boundary in the cells' own shapes, %zu triangles (the faces' triangles cut %d times along "
-        "each side)\n",
+        "%s: boundary in the cells' own shapes, %zu triangles (each of the faces' triangles cut as finely as "
+        "it needs, up to %d times along a side)\n",
         qPrintable(files[1]), curved.surface.mesh.n_faces(), curved.level);
   return 0;
 }

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <numeric>
 #include <unordered_map>
 
 namespace volpost {
@@ -225,12 +227,12 @@ double triangleDeviation(const CellMap& map, double valueScale, const std::array
   return worst;
 }
 
-int surfaceLevelFor(double deviation, const RefinementLimits& limits, std::size_t chosen) {
+// A triangle's own level: the fewest subdivisions along its sides that bring `deviation`
+// (which falls as the square of the level) within the tolerance, at most `most`.
+int ownLevelFor(double deviation, const RefinementLimits& limits, int most) {
   const double tolerance = std::max(limits.tolerance, 1e-12);
-  int level = deviation <= tolerance ? 1 : int(std::ceil(std::sqrt(deviation / tolerance) - 1e-9));
-  level = std::clamp(level, 1, std::max(limits.maxLevel, 1));
-  while (level > 1 && double(chosen) * level * level > double(limits.maxTriangles)) --level;
-  return level;
+  const int level = deviation <= tolerance ? 1 : int(std::ceil(std::sqrt(deviation / tolerance) - 1e-9));
+  return std::clamp(level, 1, std::max(most, 1));
 }
 
 struct BoundaryTriangle {
@@ -252,32 +254,130 @@ std::vector<BoundaryTriangle> trianglesOf(const BoundarySurface& boundary) {
   return out;
 }
 
-// The worst deviation of the boundary's triangles of curved cells (those the map draws in
-// their own shape and field), and how many there are.
-struct SurfaceDeviation {
-  double worst = 0.0;
-  std::size_t curved = 0;
-};
-
 std::array<NodeIndex, 4> cornersOf(const BoundaryTriangle& t) {
   return {t.nodes[0], t.nodes[1], t.nodes[2], t.nodes[2]};
 }
 
-SurfaceDeviation surfaceDeviation(CellMap& map, const optics::ElementField& field, const BoundarySurface& boundary,
-                                  const std::vector<BoundaryTriangle>& triangles) {
+// How far each boundary triangle strays from its cell's own shape and field (0 for a cell
+// drawn linearly).
+std::vector<double> triangleDeviations(CellMap& map, const optics::ElementField& field, const BoundarySurface& boundary,
+                                       const std::vector<BoundaryTriangle>& triangles) {
   const auto isEdge = [&](NodeIndex a, NodeIndex b) {
     return std::binary_search(boundary.edges.begin(), boundary.edges.end(),
                               std::array<NodeIndex, 2>{std::min(a, b), std::max(a, b)});
   };
-  SurfaceDeviation out;
-  for (const BoundaryTriangle& t : triangles)
-    if (map.select(t.cell, cornersOf(t))) {
-      const std::array<bool, 3> sideIsEdge{isEdge(t.nodes[0], t.nodes[1]), isEdge(t.nodes[1], t.nodes[2]),
-                                           isEdge(t.nodes[2], t.nodes[0])};
-      out.worst = std::max(out.worst, triangleDeviation(map, field.valueScale(), sideIsEdge));
-      ++out.curved;
+  std::vector<double> out(triangles.size(), 0.0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    if (map.select(triangles[t].cell, cornersOf(triangles[t]))) {
+      const auto& n = triangles[t].nodes;
+      const std::array<bool, 3> sideIsEdge{isEdge(n[0], n[1]), isEdge(n[1], n[2]), isEdge(n[2], n[0])};
+      out[t] = triangleDeviation(map, field.valueScale(), sideIsEdge);
     }
   return out;
+}
+
+// How finely each triangle of the boundary is cut. Each triangle asks for its own level;
+// a side shared by triangles takes the largest they ask for (both draw it in the same
+// points, so the surface stays closed), and a triangle is cut inside at the largest of its
+// own and its sides' levels, stitched to sides cut more coarsely. Flat faces beside curved
+// ones are then cut only along the shared side.
+struct SurfacePlan {
+  std::vector<int> own;                   ///< per triangle, what it asks for
+  std::vector<int> inside;                ///< per triangle, the level of its inner lattice
+  std::vector<std::array<int, 3>> sides;  ///< per triangle, the level of each side (k: corner k to k + 1)
+  double deviation = 0.0;                 ///< the estimated largest deviation left
+  std::size_t triangles = 0;              ///< how many pieces
+  int most = 1;                           ///< the largest level
+};
+
+// How far side k of triangle t bends away from its chord (relative to the chord's length),
+// within the surface as well as across it.
+using SideBend = std::function<double(std::size_t t, int k)>;
+
+SurfacePlan planSurface(const std::vector<BoundaryTriangle>& triangles, const std::vector<double>& deviations,
+                        const RefinementLimits& limits, const SideBend& sideBend) {
+  std::unordered_map<std::uint64_t, std::uint32_t> sideIds;  // a side by its two nodes
+  std::vector<std::array<std::uint32_t, 3>> sideOf(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const NodeIndex a = triangles[t].nodes[std::size_t(k)], b = triangles[t].nodes[std::size_t((k + 1) % 3)];
+      const std::uint64_t key = (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
+      sideOf[t][std::size_t(k)] = sideIds.try_emplace(key, std::uint32_t(sideIds.size())).first->second;
+    }
+  std::vector<double> bend(sideIds.size(), -1.0);  // measured where needed
+  SurfacePlan plan;
+  // The most a triangle may ask for comes down until the pieces fit the limit.
+  for (int cap = std::max(limits.maxLevel, 1);; --cap) {
+    plan = SurfacePlan();
+    std::vector<int> sideLevel(sideIds.size(), 1);
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      plan.own.push_back(ownLevelFor(deviations[t], limits, cap));
+      for (std::uint32_t side : sideOf[t]) sideLevel[side] = std::max(sideLevel[side], plan.own.back());
+    }
+    // A side cut more coarsely than a triangle beside it meets that triangle's inner points,
+    // which its map places: the side must follow the map's bend within the surface too, or
+    // the stitches would fold over it. Raising a side may raise a triangle: until none moves.
+    for (bool raised = true; raised;) {
+      raised = false;
+      plan.inside.assign(triangles.size(), 1);
+      for (std::size_t t = 0; t < triangles.size(); ++t) {
+        int inside = plan.own[t];
+        for (std::uint32_t side : sideOf[t]) inside = std::max(inside, sideLevel[side]);
+        plan.inside[t] = inside;
+        for (int k = 0; k < 3; ++k) {
+          const std::uint32_t side = sideOf[t][std::size_t(k)];
+          if (sideLevel[side] >= inside) continue;
+          if (bend[side] < 0.0) bend[side] = sideBend(t, k);
+          const int follows = ownLevelFor(bend[side], limits, cap);
+          if (follows > sideLevel[side]) sideLevel[side] = follows, raised = true;
+        }
+      }
+    }
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      std::array<int, 3> sides{};
+      int inside = plan.inside[t];
+      for (int k = 0; k < 3; ++k) sides[std::size_t(k)] = sideLevel[sideOf[t][std::size_t(k)]];
+      const bool stitched = std::any_of(sides.begin(), sides.end(), [&](int s) { return s != inside; });
+      if (stitched) inside = std::max(inside, 3);  // a point inside to stitch the sides to
+      plan.inside[t] = inside;
+      plan.sides.push_back(sides);
+      plan.triangles += std::size_t(inside) * std::size_t(inside);
+      plan.most = std::max(plan.most, inside);
+      plan.deviation = std::max(plan.deviation, deviations[t] / double(plan.own[t] * plan.own[t]));
+    }
+    if (cap == 1 || double(plan.triangles) <= double(limits.maxTriangles)) return plan;
+  }
+}
+
+// The bend of a triangle's side away from its chord: at its quarter points and middle,
+// relative to its length, whichever way it bends.
+SideBend sideBendOf(CellMap& map, const std::vector<BoundaryTriangle>& triangles) {
+  return [&map, &triangles](std::size_t t, int k) {
+    if (!map.select(triangles[t].cell, cornersOf(triangles[t]))) return 0.0;
+    std::array<double, 4> from{0, 0, 0, 0}, to{0, 0, 0, 0};
+    from[std::size_t(k)] = 1.0, to[std::size_t((k + 1) % 3)] = 1.0;
+    glm::dvec3 a, b;
+    double ignored = 0.0;
+    map.at(from, a, ignored), map.at(to, b, ignored);
+    const double length = glm::length(b - a);
+    if (!(length > 0.0)) return 0.0;
+    double worst = 0.0;
+    for (double u : {0.25, 0.5, 0.75}) {
+      std::array<double, 4> w{0, 0, 0, 0};
+      w[std::size_t(k)] = 1.0 - u, w[std::size_t((k + 1) % 3)] = u;
+      glm::dvec3 m;
+      map.at(w, m, ignored);
+      worst = std::max(worst, glm::length(m - ((1.0 - u) * a + u * b)) / length);
+    }
+    return worst;
+  };
+}
+
+// A point of a boundary triangle with barycentric weights (a, b, c) / (a + b + c) on its
+// corners, named so that every triangle sharing the side or corner it lies on names it so.
+LatticeKey boundaryKey(const BoundaryTriangle& t, int a, int b, int c) {
+  const int g = std::gcd(std::gcd(a, b), c);
+  return latticeKey(cornersOf(t), {a / g, b / g, c / g, 0});
 }
 
 }  // namespace
@@ -288,11 +388,13 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
   CellMap map(field.mesh(), field, split, splitValues);
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
-  const auto [worst, curved] = surfaceDeviation(map, field, boundary, triangles);
+  const SurfacePlan plan =
+      planSurface(triangles, triangleDeviations(map, field, boundary, triangles), limits, sideBendOf(map, triangles));
 
   RefinedSurface out;
-  const int n = out.level = surfaceLevelFor(worst, limits, curved);
-  out.deviation = worst / double(n * n);
+  out.level = plan.most;
+  out.levels = plan.own;
+  out.deviation = plan.deviation;
   out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
   BoundarySurface& surface = out.surface;
   surface.origin = boundary.origin;
@@ -302,9 +404,9 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
 
   // Points on a triangle's sides may be shared with its neighbours and are found by their
   // key; points inside it are its own.
-  const std::size_t pieces = curved * std::size_t(n * n) + (triangles.size() - curved);
+  const std::size_t pieces = plan.triangles;
   std::unordered_map<LatticeKey, NodeIndex, LatticeKeyHash> known;
-  known.reserve(triangles.size() * std::size_t(3 * n) / 2 + 16);
+  known.reserve(pieces / 2 + 16);
   surface.mesh.reserve(pieces / 2 + 16, pieces * 3 / 2 + 16, pieces);
   std::vector<SurfaceMesh::VertexHandle> vertexOfPoint;
   vertexOfPoint.reserve(pieces / 2 + 16);
@@ -316,8 +418,6 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   };
   std::vector<glm::dvec3> positions;  // of the points, to place duplicates of non-manifold faces
   positions.reserve(pieces / 2 + 16);
-  std::vector<NodeIndex> lattice(std::size_t((n + 1) * (n + 1)));
-  const auto slot = [n](int i, int j) { return std::size_t(i * (n + 1) + j); };
   std::vector<char> edgeDone(boundary.edges.size(), 0);
   std::unordered_map<NodeIndex, float> shortestAt;  // the element edges' spacing, for their fading
   for (const auto& e : boundary.edges) {
@@ -327,33 +427,36 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
       if (!added) it->second = std::min(it->second, length);
     }
   }
+  // A point and where it lies in its triangle (u, v: the weights of corners 1 and 2), to
+  // keep every piece turned as the triangle is.
+  struct Placed {
+    NodeIndex point;
+    double u, v;
+  };
+  std::vector<Placed> lattice, ring;
   for (std::size_t ti = 0; ti < triangles.size(); ++ti) {
     if (ti % 4096 == 0) progress.report(double(ti) / double(triangles.size()));
     const BoundaryTriangle& t = triangles[ti];
-    // A cell drawn linearly keeps its triangle, its corners named as the pieces' are.
-    const int level = map.select(t.cell, cornersOf(t)) ? n : 1;
-    const int scale = n / level;
-    for (int i = 0; i <= level; ++i)
-      for (int j = 0; i + j <= level; ++j) {
-        const NodeIndex next = NodeIndex(out.values.size());
-        const bool inside = i > 0 && j > 0 && i + j < level;
-        NodeIndex point = next;
-        if (!inside) {
-          const std::array<int, 4> weights{(level - i - j) * scale, i * scale, j * scale, 0};
-          point = known.try_emplace(latticeKey(map.corners(), weights), next).first->second;
-        }
-        if (point == next) {
-          glm::dvec3 position;
-          double value = 0.0;
-          map.at({(level - i - j) / double(level), i / double(level), j / double(level), 0.0}, position, value);
-          out.values.push_back(value);
-          out.points.push_back({std::uint32_t(ti), std::uint16_t(i), std::uint16_t(j)});
-          positions.push_back(position);
-          vertexOfPoint.push_back(newVertex(point, position));
-        }
-        lattice[slot(i, j)] = point;
+    map.select(t.cell, cornersOf(t));
+    // The point with weights (a, b, c) / level on the triangle's corners.
+    const auto place = [&](int a, int b, int c, int level) {
+      const NodeIndex next = NodeIndex(out.values.size());
+      const bool inside = a > 0 && b > 0 && c > 0;
+      const NodeIndex point = inside ? next : known.try_emplace(boundaryKey(t, a, b, c), next).first->second;
+      if (point == next) {
+        glm::dvec3 position;
+        double value = 0.0;
+        map.at({a / double(level), b / double(level), c / double(level), 0.0}, position, value);
+        out.values.push_back(value);
+        out.points.push_back({std::uint32_t(ti), std::uint16_t(b), std::uint16_t(c), std::uint16_t(level)});
+        positions.push_back(position);
+        vertexOfPoint.push_back(newVertex(point, position));
       }
-    const auto addFace = [&](NodeIndex a, NodeIndex b, NodeIndex c) {
+      return Placed{point, b / double(level), c / double(level)};
+    };
+    const auto addFace = [&](const Placed& p, const Placed& q, const Placed& r) {
+      const bool turned = (q.u - p.u) * (r.v - p.v) - (q.v - p.v) * (r.u - p.u) < 0.0;
+      const NodeIndex a = p.point, b = turned ? r.point : q.point, c = turned ? q.point : r.point;
       auto f = surface.mesh.add_face(vertexOfPoint[a], vertexOfPoint[b], vertexOfPoint[c]);
       if (!f.is_valid()) {  // as the boundary did: a face of its own where it could not attach
         f = surface.mesh.add_face(newVertex(a, positions[a]), newVertex(b, positions[b]), newVertex(c, positions[c]));
@@ -361,26 +464,69 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
       }
       if (f.is_valid()) surface.mesh.property(surface.cellOfFace, f) = t.cell;
     };
-    for (int i = 0; i < level; ++i)
-      for (int j = 0; i + j < level; ++j) {
+    const int n = plan.inside[ti];
+    const std::array<int, 3>& sides = plan.sides[ti];
+    const bool uniform = sides[0] == n && sides[1] == n && sides[2] == n;
+    // The lattice of level n: (i, j) has weights (n - i - j, i, j). Without stitching, all
+    // of it; with, the part one step in from every side.
+    lattice.assign(std::size_t((n + 1) * (n + 1)), Placed{});
+    const auto slot = [n](int i, int j) { return std::size_t(i * (n + 1) + j); };
+    const int edge = uniform ? 0 : 1;
+    for (int i = edge; i <= n - edge; ++i)
+      for (int j = edge; i + j <= n - edge; ++j) lattice[slot(i, j)] = place(n - i - j, i, j, n);
+    for (int i = edge; i < n - edge; ++i)
+      for (int j = edge; i + j < n - edge; ++j) {
         addFace(lattice[slot(i, j)], lattice[slot(i + 1, j)], lattice[slot(i, j + 1)]);
-        if (i + j <= level - 2) addFace(lattice[slot(i + 1, j)], lattice[slot(i + 1, j + 1)], lattice[slot(i, j + 1)]);
+        if (i + j <= n - 2 - edge)
+          addFace(lattice[slot(i + 1, j)], lattice[slot(i + 1, j + 1)], lattice[slot(i, j + 1)]);
       }
+    // Each side in its own level's points, from corner k to corner k + 1.
+    std::array<std::vector<Placed>, 3> along;
+    for (int k = 0; k < 3; ++k) {
+      const int s = sides[std::size_t(k)];
+      for (int q = 0; q <= s; ++q) {
+        std::array<int, 3> w{0, 0, 0};
+        w[std::size_t(k)] = s - q, w[std::size_t((k + 1) % 3)] = q;
+        along[std::size_t(k)].push_back(uniform ? lattice[slot(w[1], w[2])] : place(w[0], w[1], w[2], s));
+      }
+    }
+    if (!uniform) {
+      // The inner lattice's sides, from the inner corner near corner k to the one near k + 1,
+      // zipped to the triangle's sides.
+      const std::array<std::array<int, 2>, 3> innerCorner{{{1, 1}, {n - 2, 1}, {1, n - 2}}};
+      for (int k = 0; k < 3; ++k) {
+        const auto [i0, j0] = innerCorner[std::size_t(k)];
+        const auto [i1, j1] = innerCorner[std::size_t((k + 1) % 3)];
+        const int m = n - 3;
+        ring.clear();
+        for (int q = 0; q <= m; ++q)
+          ring.push_back(lattice[slot(i0 + (m == 0 ? 0 : (i1 - i0) * q / m), j0 + (m == 0 ? 0 : (j1 - j0) * q / m))]);
+        const std::vector<Placed>& outer = along[std::size_t(k)];
+        const int s = int(outer.size()) - 1;
+        for (int o = 0, r = 0; o < s || r < m;) {
+          if (r == m || (o < s && (o + 1) * m <= (r + 1) * s)) {
+            addFace(outer[std::size_t(o)], outer[std::size_t(o + 1)], ring[std::size_t(r)]);
+            ++o;
+          } else {
+            addFace(outer[std::size_t(o)], ring[std::size_t(r + 1)], ring[std::size_t(r)]);
+            ++r;
+          }
+        }
+      }
+    }
     // The element edges along this triangle's sides, in pieces, each once.
     for (int side = 0; side < 3; ++side) {
       const NodeIndex a = t.nodes[std::size_t(side)], b = t.nodes[std::size_t((side + 1) % 3)];
-      const std::array<NodeIndex, 2> edge{std::min(a, b), std::max(a, b)};
-      const auto found = std::lower_bound(boundary.edges.begin(), boundary.edges.end(), edge);
-      if (found == boundary.edges.end() || *found != edge) continue;
+      const std::array<NodeIndex, 2> key{std::min(a, b), std::max(a, b)};
+      const auto found = std::lower_bound(boundary.edges.begin(), boundary.edges.end(), key);
+      if (found == boundary.edges.end() || *found != key) continue;
       char& done = edgeDone[std::size_t(found - boundary.edges.begin())];
       if (done) continue;
       done = 1;
       const float near = std::min(shortestAt[a], shortestAt[b]);
-      const auto along = [&](int s) {  // step s of `level` from the side's first corner
-        return side == 0 ? lattice[slot(s, 0)] : side == 1 ? lattice[slot(level - s, s)] : lattice[slot(0, level - s)];
-      };
-      for (int s = 0; s < level; ++s) {
-        surface.edges.push_back({along(s), along(s + 1)});
+      const std::vector<Placed>& points = along[std::size_t(side)];
+      for (std::size_t q = 0; q + 1 < points.size(); ++q) {
+        surface.edges.push_back({points[q].point, points[q + 1].point});
         surface.edgeSpacing.push_back(near);
       }
     }
@@ -398,27 +544,31 @@ std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, 
   const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
   CellMap map(field.mesh(), field, split, splitValues);
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
-  const auto [worst, curved] = surfaceDeviation(map, field, boundary, triangles);
-  const int n = refined.level;
-  if (surfaceLevelFor(worst, limits, curved) != n) return std::nullopt;  // these values need another level
+  // The pieces serve where no triangle asks for more than it was cut for.
+  const std::vector<double> deviations = triangleDeviations(map, field, boundary, triangles);
+  if (refined.levels.size() != triangles.size()) return std::nullopt;  // another boundary
   RefinedValues out;
-  out.deviation = worst / double(n * n);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const int cut = refined.levels[t];
+    if (ownLevelFor(deviations[t], limits, limits.maxLevel) > cut) return std::nullopt;
+    out.deviation = std::max(out.deviation, deviations[t] / double(cut * cut));
+  }
   out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
   out.values.reserve(refined.points.size());
   std::uint32_t selected = std::numeric_limits<std::uint32_t>::max();
-  int level = n;
   for (std::size_t k = 0; k < refined.points.size(); ++k) {
     if (k % 65536 == 0) progress.report(double(k) / double(refined.points.size()));
     const RefinedPoint& p = refined.points[k];
-    if (p.triangle >= triangles.size()) return std::nullopt;  // another boundary
-    if (p.triangle != selected) {                             // points come triangle by triangle
+    if (p.triangle >= triangles.size() || p.level == 0) return std::nullopt;  // another boundary
+    if (p.triangle != selected) {                                             // points come triangle by triangle
       const BoundaryTriangle& t = triangles[p.triangle];
-      level = map.select(t.cell, cornersOf(t)) ? n : 1;
+      map.select(t.cell, cornersOf(t));
       selected = p.triangle;
     }
+    const double level = p.level;
     glm::dvec3 position;
     double value = 0.0;
-    map.at({(level - p.i - p.j) / double(level), p.i / double(level), p.j / double(level), 0.0}, position, value);
+    map.at({(level - p.i - p.j) / level, p.i / level, p.j / level, 0.0}, position, value);
     out.values.push_back(value);
   }
   progress.report(1.0);

@@ -63,21 +63,24 @@ RefinedTetrahedra refineTetrahedra(const optics::ElementField& field, std::span<
                                    const RefinementLimits& limits = {}, const Progress& progress = {});
 
 /// Where a point of a refined surface comes from: its triangle of the boundary (in the
-/// boundary's face order) and its place (i, j) on that triangle's lattice.
+/// boundary's face order) and its place there, weights (level - i - j, i, j) / level on the
+/// triangle's corners.
 struct RefinedPoint {
   std::uint32_t triangle = 0;
   std::uint16_t i = 0, j = 0;
+  std::uint16_t level = 1;
 };
 
 struct RefinedSurface {
-  /// The boundary with each triangle of a cell other than tet4 subdivided n times along
-  /// each side in the cell's natural coordinates, placed by the cell's map (curved where a
+  /// The boundary with each triangle subdivided in the cell's natural coordinates as
+  /// finely as it and its neighbours need, placed by the cell's map (curved where a
   /// quadratic cell's faces are): a vertex's node is its point's index in `values`, a face
   /// keeps its cell of the model, and the element edges follow the curved sides in pieces.
   BoundarySurface surface;
   std::vector<double> values;        ///< the cell's field at each point
   std::vector<RefinedPoint> points;  ///< where each point comes from (revalueBoundary)
-  int level = 1;                     ///< subdivisions along each side of the boundary's triangles
+  int level = 1;                     ///< the most subdivisions along a side of a boundary triangle
+  std::vector<int> levels;           ///< what each boundary triangle asked for (revalueBoundary)
   double deviation = 0.0;            ///< the estimated largest deviation left, as RefinedTetrahedra's
   bool toleranceReached = true;
 };
@@ -90,15 +93,17 @@ struct RefinedValues {
 };
 
 /// The boundary surface `boundary` (of field.mesh()) in its cells' own shape and field,
-/// one level for the whole surface (shared edges then meet), the smallest that is within
-/// the tolerance. Throws volpost::Cancelled when `progress` cancels.
+/// each triangle subdivided along its sides the fewest times that bring it within the
+/// tolerance; a side shared by two triangles takes the larger of their levels, and a
+/// triangle cut more finely than a side is stitched to that side's points, so the surface
+/// stays closed. Throws volpost::Cancelled when `progress` cancels.
 RefinedSurface refineBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
                               const RefinementLimits& limits = {}, const Progress& progress = {});
 
 /// `refined` (refineBoundary of the same boundary and mesh) colored by `field`, another
 /// field on the same cells (the next step): the points stay, only their values are
-/// evaluated, far quicker than refining again. nullopt where `field` needs another level
-/// than refined.level (then refine again). Throws volpost::Cancelled when `progress` cancels.
+/// evaluated, far quicker than refining again. nullopt where `field` asks for a finer cut of
+/// some triangle than refined.levels (then refine again). Throws volpost::Cancelled when `progress` cancels.
 std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
                                              const RefinedSurface& refined, const RefinementLimits& limits = {},
                                              const Progress& progress = {});

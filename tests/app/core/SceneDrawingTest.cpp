@@ -149,14 +149,15 @@ TEST(SceneDrawing, ARendererThatDrawsApartIsRefusedNamingThoseThatDrawHere) {
 }
 
 // With the cells' own interpolation, another quantity or step on a quadratic model recolors
-// the curved boundary already drawn (its points stay where the level stays): the picture is
-// the one a fresh drawing makes of it, and going back gives the first picture again.
+// the curved boundary already drawn (its points stay where no triangle needs a finer cut:
+// here a step that scales the first and turns it over): the picture is the one a fresh
+// drawing makes of it, and going back gives the first picture again.
 TEST(SceneDrawing, AnotherQuantityOnTheCurvedBoundaryDrawsWhatAFreshDrawingDraws) {
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
   OffscreenTarget target(64, 48);
   Scene scene([](const std::string&) { return nullptr; });
-  showAnnulus(scene, {annulusT, [](const glm::dvec3& p) { return 2.0 - p.z * (2.0 * p.x + p.y); }});
+  showAnnulus(scene, {annulusT, [](const glm::dvec3& p) { return 2.0 - 0.5 * annulusT(p); }});
   scene.setInterpolation(FieldInterpolation::Element);
   SceneDrawing drawing;
   drawing.initialize();

@@ -302,8 +302,9 @@ TEST(ElementRefinement, TheBoundaryOfAHex20QuarterCylinderIsRoundClosedAndColore
     }
     EXPECT_LT(best, 1e-5 * field.valueScale());
   }
-  // Every element edge on the boundary, drawn in `level` pieces.
-  EXPECT_EQ(s.edges.size(), boundary.edges.size() * std::size_t(curved.level));
+  // Every element edge on the boundary, drawn in pieces (as many as its finer side needs).
+  EXPECT_GT(s.edges.size(), boundary.edges.size());
+  EXPECT_LE(s.edges.size(), boundary.edges.size() * std::size_t(curved.level));
   EXPECT_EQ(s.edgeSpacing.size(), s.edges.size());
 }
 
@@ -336,6 +337,50 @@ TEST(ElementRefinement, TheBoundaryOfAHex8BlockIsColoredByItsTrilinearField) {
   EXPECT_LT(worstMiddle(s, [&](auto v) { return curved.values[s.mesh.property(s.nodeOfVertex, v)]; }), 1e-3);
   EXPECT_GT(worstMiddle(boundary, [&](auto v) { return values[boundary.mesh.property(boundary.nodeOfVertex, v)]; }),
             1e-2);
+}
+
+// Each triangle is cut as finely as it needs: a block of hex20 cells whose right half
+// bulges on top (z = 2 + 0.3 (x - 1)(2 - x) there, which the cells represent exactly) and
+// carries a linear field is cut finely on the bulge and along the sides it shares, and not
+// elsewhere; the surface stays closed, and its area is the uniformly cut surface's (no
+// stitch folds over a side).
+TEST(ElementRefinement, EachBoundaryTriangleIsCutAsFinelyAsItNeedsAndTheSurfaceStaysClosed) {
+  const auto place = [](const glm::dvec3& g) {
+    const double bulge = g.x > 1.0 ? 0.1 * (g.x - 1.0) * (2.0 - g.x) : 0.0;
+    return glm::dvec3(g.x, g.y, g.z * (1.0 + bulge / 2.0));
+  };
+  const Mesh mesh = test::hexLattice(CellType::Hex20, 2, place);
+  const std::vector<double> values = sampled(mesh, [](const glm::dvec3& p) { return p.x + p.y - p.z; });
+  const TetMesh split = tetrahedralize(mesh);
+  const optics::ElementField field(mesh, values, split, glm::dvec3(0.0));
+  const BoundarySurface boundary = extractBoundary(mesh);
+  const RefinedSurface adaptive = refineBoundary(field, boundary);
+  RefinementLimits everywhere;  // as finely everywhere as the finest triangle
+  everywhere.tolerance = 1e-12;
+  everywhere.maxLevel = adaptive.level;
+  const RefinedSurface uniform = refineBoundary(field, boundary, everywhere);
+  ASSERT_GT(adaptive.level, 2) << "the bulge needs cutting";
+  // One level for the whole surface would cut every triangle so.
+  EXPECT_LT(adaptive.surface.mesh.n_faces(),
+            boundary.mesh.n_faces() * std::size_t(adaptive.level * adaptive.level) / 2);
+  EXPECT_TRUE(adaptive.toleranceReached);
+  const BoundarySurface& s = adaptive.surface;
+  EXPECT_EQ(s.nonManifoldFaceCount, 0u);
+  for (const auto e : s.mesh.edges()) ASSERT_FALSE(s.mesh.is_boundary(e)) << "closed: stitched sides share points";
+  EXPECT_NEAR(surfaceArea(s), surfaceArea(uniform.surface), 1e-4 * surfaceArea(uniform.surface));
+  EXPECT_GT(std::abs(surfaceArea(boundary) - surfaceArea(uniform.surface)), 1e-3) << "the bulge shows";
+  // The face x = 0, away from the bulge, keeps the boundary's triangles.
+  const auto onLeftFace = [](const BoundarySurface& b) {
+    std::size_t count = 0;
+    for (const auto f : b.mesh.faces()) {
+      bool left = true;
+      for (const auto v : f.vertices()) left = left && std::abs(positionOf(b, v).x) < 1e-6;
+      count += left ? 1 : 0;
+    }
+    return count;
+  };
+  EXPECT_GT(onLeftFace(boundary), 0u);
+  EXPECT_EQ(onLeftFace(s), onLeftFace(boundary));
 }
 
 TEST(ElementRefinement, ATet4BoundaryIsLeftAsItIs) {
