@@ -544,15 +544,13 @@ std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, 
   const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
   CellMap map(field.mesh(), field, split, splitValues);
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
-  // The pieces serve where no triangle asks for more than it was cut for.
-  const std::vector<double> deviations = triangleDeviations(map, field, boundary, triangles);
-  if (refined.levels.size() != triangles.size()) return std::nullopt;  // another boundary
+  // The points serve where every triangle asks for the cut it has: a fresh refinement would
+  // place the same points, so a recolored surface is the one `volpost render` draws.
+  const SurfacePlan plan =
+      planSurface(triangles, triangleDeviations(map, field, boundary, triangles), limits, sideBendOf(map, triangles));
+  if (plan.own != refined.levels) return std::nullopt;
   RefinedValues out;
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const int cut = refined.levels[t];
-    if (ownLevelFor(deviations[t], limits, limits.maxLevel) > cut) return std::nullopt;
-    out.deviation = std::max(out.deviation, deviations[t] / double(cut * cut));
-  }
+  out.deviation = plan.deviation;
   out.toleranceReached = out.deviation <= limits.tolerance * (1.0 + 1e-9);
   out.values.reserve(refined.points.size());
   std::uint32_t selected = std::numeric_limits<std::uint32_t>::max();

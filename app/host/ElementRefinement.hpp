@@ -102,8 +102,8 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
 
 /// `refined` (refineBoundary of the same boundary and mesh) colored by `field`, another
 /// field on the same cells (the next step): the points stay, only their values are
-/// evaluated, far quicker than refining again. nullopt where `field` asks for a finer cut of
-/// some triangle than refined.levels (then refine again). Throws volpost::Cancelled when `progress` cancels.
+/// evaluated, far quicker than refining again. nullopt where `field` asks some triangle for
+/// another cut than refined.levels (then refine again). Throws volpost::Cancelled when `progress` cancels.
 std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, const BoundarySurface& boundary,
                                              const RefinedSurface& refined, const RefinementLimits& limits = {},
                                              const Progress& progress = {});

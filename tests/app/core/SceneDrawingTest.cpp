@@ -149,9 +149,9 @@ TEST(SceneDrawing, ARendererThatDrawsApartIsRefusedNamingThoseThatDrawHere) {
 }
 
 // With the cells' own interpolation, another quantity or step on a quadratic model recolors
-// the curved boundary already drawn (its points stay where no triangle needs a finer cut:
-// here a step that scales the first and turns it over): the picture is the one a fresh
-// drawing makes of it, and going back gives the first picture again.
+// the curved boundary already drawn (its points stay where every triangle asks for the cut
+// it has: here a step that scales the first and turns it over): the picture is the one a
+// fresh drawing makes of it, and going back gives the first picture again.
 TEST(SceneDrawing, AnotherQuantityOnTheCurvedBoundaryDrawsWhatAFreshDrawingDraws) {
   VOLPOST_SKIP_WITHOUT_GL();
   HeadlessContext context;
