@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numeric>
 #include <unordered_map>
@@ -290,12 +289,30 @@ struct SurfacePlan {
   int most = 1;                           ///< the largest level
 };
 
-// How far side k of triangle t bends away from its chord (relative to the chord's length),
-// within the surface as well as across it.
-using SideBend = std::function<double(std::size_t t, int k)>;
+// How far side k of triangle t bends away from its chord: at its quarter points and middle,
+// relative to its length, whichever way it bends (within the surface as well as across it).
+double sideBend(CellMap& map, const BoundaryTriangle& triangle, int k) {
+  if (!map.select(triangle.cell, cornersOf(triangle))) return 0.0;
+  std::array<double, 4> from{0, 0, 0, 0}, to{0, 0, 0, 0};
+  from[std::size_t(k)] = 1.0, to[std::size_t((k + 1) % 3)] = 1.0;
+  glm::dvec3 a, b;
+  double ignored = 0.0;
+  map.at(from, a, ignored), map.at(to, b, ignored);
+  const double length = glm::length(b - a);
+  if (!(length > 0.0)) return 0.0;
+  double worst = 0.0;
+  for (double u : {0.25, 0.5, 0.75}) {
+    std::array<double, 4> w{0, 0, 0, 0};
+    w[std::size_t(k)] = 1.0 - u, w[std::size_t((k + 1) % 3)] = u;
+    glm::dvec3 m;
+    map.at(w, m, ignored);
+    worst = std::max(worst, glm::length(m - ((1.0 - u) * a + u * b)) / length);
+  }
+  return worst;
+}
 
-SurfacePlan planSurface(const std::vector<BoundaryTriangle>& triangles, const std::vector<double>& deviations,
-                        const RefinementLimits& limits, const SideBend& sideBend) {
+SurfacePlan planSurface(CellMap& map, const std::vector<BoundaryTriangle>& triangles,
+                        const std::vector<double>& deviations, const RefinementLimits& limits) {
   std::unordered_map<std::uint64_t, std::uint32_t> sideIds;  // a side by its two nodes
   std::vector<std::array<std::uint32_t, 3>> sideOf(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -327,7 +344,7 @@ SurfacePlan planSurface(const std::vector<BoundaryTriangle>& triangles, const st
         for (int k = 0; k < 3; ++k) {
           const std::uint32_t side = sideOf[t][std::size_t(k)];
           if (sideLevel[side] >= inside) continue;
-          if (bend[side] < 0.0) bend[side] = sideBend(t, k);
+          if (bend[side] < 0.0) bend[side] = sideBend(map, triangles[t], k);
           const int follows = ownLevelFor(bend[side], limits, cap);
           if (follows > sideLevel[side]) sideLevel[side] = follows, raised = true;
         }
@@ -349,30 +366,6 @@ SurfacePlan planSurface(const std::vector<BoundaryTriangle>& triangles, const st
   }
 }
 
-// The bend of a triangle's side away from its chord: at its quarter points and middle,
-// relative to its length, whichever way it bends.
-SideBend sideBendOf(CellMap& map, const std::vector<BoundaryTriangle>& triangles) {
-  return [&map, &triangles](std::size_t t, int k) {
-    if (!map.select(triangles[t].cell, cornersOf(triangles[t]))) return 0.0;
-    std::array<double, 4> from{0, 0, 0, 0}, to{0, 0, 0, 0};
-    from[std::size_t(k)] = 1.0, to[std::size_t((k + 1) % 3)] = 1.0;
-    glm::dvec3 a, b;
-    double ignored = 0.0;
-    map.at(from, a, ignored), map.at(to, b, ignored);
-    const double length = glm::length(b - a);
-    if (!(length > 0.0)) return 0.0;
-    double worst = 0.0;
-    for (double u : {0.25, 0.5, 0.75}) {
-      std::array<double, 4> w{0, 0, 0, 0};
-      w[std::size_t(k)] = 1.0 - u, w[std::size_t((k + 1) % 3)] = u;
-      glm::dvec3 m;
-      map.at(w, m, ignored);
-      worst = std::max(worst, glm::length(m - ((1.0 - u) * a + u * b)) / length);
-    }
-    return worst;
-  };
-}
-
 // A point of a boundary triangle with barycentric weights (a, b, c) / (a + b + c) on its
 // corners, named so that every triangle sharing the side or corner it lies on names it so.
 LatticeKey boundaryKey(const BoundaryTriangle& t, int a, int b, int c) {
@@ -388,8 +381,7 @@ RefinedSurface refineBoundary(const optics::ElementField& field, const BoundaryS
   const std::vector<double> splitValues = split.nodeValues(field.mesh(), field.values());
   CellMap map(field.mesh(), field, split, splitValues);
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
-  const SurfacePlan plan =
-      planSurface(triangles, triangleDeviations(map, field, boundary, triangles), limits, sideBendOf(map, triangles));
+  const SurfacePlan plan = planSurface(map, triangles, triangleDeviations(map, field, boundary, triangles), limits);
 
   RefinedSurface out;
   out.level = plan.most;
@@ -546,8 +538,7 @@ std::optional<RefinedValues> revalueBoundary(const optics::ElementField& field, 
   const std::vector<BoundaryTriangle> triangles = trianglesOf(boundary);
   // The points serve where every triangle asks for the cut it has: a fresh refinement would
   // place the same points, so a recolored surface is the one `volpost render` draws.
-  const SurfacePlan plan =
-      planSurface(triangles, triangleDeviations(map, field, boundary, triangles), limits, sideBendOf(map, triangles));
+  const SurfacePlan plan = planSurface(map, triangles, triangleDeviations(map, field, boundary, triangles), limits);
   if (plan.own != refined.levels) return std::nullopt;
   RefinedValues out;
   out.deviation = plan.deviation;

@@ -81,12 +81,7 @@ void vtkVolpostVolumeMapper::SetRankRegion(const double bounds[6], int innerFace
     normal[axis] = face % 2 == 0 ? 1.0 : -1.0;  // keeps the inside of the box
     region.push_back({point, normal});
   }
-  const bool same = region.size() == this->State->region.size() &&
-                    std::equal(region.begin(), region.end(), this->State->region.begin(),
-                               [](const volpost::ClipPlane& a, const volpost::ClipPlane& b) {
-                                 return a.point == b.point && a.normal == b.normal;
-                               });
-  if (same) return;
+  if (region == this->State->region) return;
   this->State->region = std::move(region);
   this->Modified();
 }
